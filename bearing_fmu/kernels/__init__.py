@@ -1,0 +1,5 @@
+"""numba-jitted physics kernels: pure functions of float64 scalars/arrays, SI units (SPEC 2).
+
+Kernels import nothing of the package but other kernels; options arrive as integer codes.
+Every kernel has a plain-Python twin in tests/reference/ and a test comparing them.
+"""

@@ -1,0 +1,183 @@
+"""The `analytic` bearing fidelity: one pure function from (speed, radial load, oil state) to outputs.
+
+Deep-groove bearing (contact angle 0), outer ring fixed, radial load F_r along psi = 0:
+1. Sjovall distribution with clearance (loaddist): inner-ring shift delta_r from F_r, ball loads
+   Q_i(psi_j) = K (delta_r cos psi_j - P_d/2)_+^1.5 with K the inner and outer Hertz contacts in
+   series, balls at psi_j = 2 pi j / Z (ball 0 on the load line, the most loaded configuration);
+2. centrifugal load superposed on the outer contacts, Q_o = Q_i + F_c (first-order: the extra
+   outer deflection is not fed back into delta_r; the quasi-static fidelity resolves it);
+3. Hertz per contact, EHL film (formula code), film parameter, regime, capacitance.
+All contacts roll purely at the entrainment speed u = omega d_m (1 - gamma^2)/4.
+"""
+import math
+
+from numba import njit
+
+from .capacitance import ball_capacitance, contact_capacitance, contact_permittivity
+from .ehl import film_parameter, film_thickness, lubrication_regime
+from .geometry import centrifugal_force, rolling_kinematics
+from .hertz import hertz_contact, hertz_stiffness, series_stiffness
+from .loaddist import load_parameter, solve_radial_shift
+from .lubricant import clausius_mossotti_constant, lubricant_state, LUB_EPS_R0
+
+# layout of the bearing parameter array (built by bearing_fmu.model)
+B_Z = 0             # number of balls (-)
+B_D = 1             # ball diameter (m)
+B_DM = 2            # pitch diameter (m)
+B_PD = 3            # diametral clearance (m)
+B_RX_I = 4          # inner contact Rx (m)
+B_RY_I = 5          # inner contact Ry (m)
+B_RX_O = 6          # outer contact Rx (m)
+B_RY_O = 7          # outer contact Ry (m)
+B_K_I = 8           # inner ellipticity a_y/b_x (-)
+B_EE_I = 9          # inner elliptic integral E (-)
+B_KK_I = 10         # inner elliptic integral K (-)
+B_K_O = 11
+B_EE_O = 12
+B_KK_O = 13
+B_E_RED = 14        # reduced modulus E' (Pa)
+B_M_BALL = 15       # ball mass (kg)
+B_SIGMA_I = 16      # composite roughness, inner contact (m)
+B_SIGMA_O = 17      # composite roughness, outer contact (m)
+B_FILM = 18         # film formula code (kernels.ehl)
+B_PRESSURE = 19     # permittivity pressure choice (kernels.capacitance)
+B_H_FLOOR = 20      # film floor for capacitance (m)
+B_C_BACKGROUND = 21 # background capacitance (F)
+B_CENTRIFUGAL = 22  # 1 = centrifugal load on, 0 = off
+B_TOL = 23          # relative tolerance of the radial equilibrium (-)
+B_SIZE = 24
+
+# layout of the output array
+O_LAMBDA_I = 0
+O_LAMBDA_O = 1
+O_HMIN_I = 2
+O_HMIN_O = 3
+O_REGIME = 4
+O_C_BEARING = 5
+O_QMAX_I = 6
+O_QMAX_O = 7
+O_PMAX = 8
+O_OMEGA_CAGE = 9
+O_OMEGA_BALL = 10
+O_N_LOADED = 11
+O_DELTA_R = 12
+O_EPS = 13
+O_HC_I = 14
+O_HC_O = 15
+O_ETA = 16
+O_XI = 17
+O_ITER = 18
+O_SIZE = 19
+
+
+@njit(cache=True)
+def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
+    """Evaluate the analytic bearing model.
+
+    omega: inner-ring speed (rad/s); F_r: radial load (N, >= 0); T_oil: oil temperature (K);
+    brg: bearing array (B_* layout); lub: lubricant array (kernels.lubricant LUB_* layout);
+    nodes, weights: Gauss-Legendre rule; out: float64[O_SIZE] (filled); ball: float64[8, Z] work
+    array filled per ball with rows Q_i, Q_o (N), h_min_i, h_min_o (m), Lambda_i, Lambda_o (-),
+    C_i, C_o (F).
+    """
+    Z = int(brg[B_Z])
+    D = brg[B_D]
+    dm = brg[B_DM]
+    Pd = brg[B_PD]
+    E_red = brg[B_E_RED]
+    Rx_i = brg[B_RX_I]
+    Ry_i = brg[B_RY_I]
+    Rx_o = brg[B_RX_O]
+    Ry_o = brg[B_RY_O]
+
+    eta, xi, rho0 = lubricant_state(T_oil, lub)
+    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], rho0)
+    w_cage, w_ball_rel, w_ball_fixed, u = rolling_kinematics(omega, D, dm, 0.0)
+    F_c = 0.0
+    if brg[B_CENTRIFUGAL] > 0.5:
+        F_c = centrifugal_force(brg[B_M_BALL], dm, w_cage)
+
+    K_i = hertz_stiffness(Rx_i, Ry_i, E_red, brg[B_K_I], brg[B_EE_I], brg[B_KK_I])
+    K_o = hertz_stiffness(Rx_o, Ry_o, E_red, brg[B_K_O], brg[B_EE_O], brg[B_KK_O])
+    K = series_stiffness(K_i, K_o)
+    delta_r, iters = solve_radial_shift(F_r, Pd, K, Z, nodes, weights, brg[B_TOL])
+
+    lam_i = math.inf
+    lam_o = math.inf
+    hmin_i = math.inf
+    hmin_o = math.inf
+    hc_i_min = math.inf
+    hc_o_min = math.inf
+    p_max = 0.0
+    q_max_i = 0.0
+    q_max_o = 0.0
+    n_loaded = 0
+    c_total = brg[B_C_BACKGROUND]
+    for j in range(Z):
+        psi = 2.0 * math.pi * j / Z
+        d = delta_r * math.cos(psi) - 0.5 * Pd
+        Q_i = K * d ** 1.5 if d > 0.0 else 0.0
+        Q_o = Q_i + F_c
+        a_i, b_i, _, p_i = hertz_contact(Q_i, Rx_i, Ry_i, E_red, brg[B_K_I], brg[B_EE_I], brg[B_KK_I])
+        a_o, b_o, _, p_o = hertz_contact(Q_o, Rx_o, Ry_o, E_red, brg[B_K_O], brg[B_EE_O], brg[B_KK_O])
+        hc_i, hm_i = film_thickness(int(brg[B_FILM]), eta, xi, E_red, u, Q_i, Rx_i, Ry_i, brg[B_K_I])
+        hc_o, hm_o = film_thickness(int(brg[B_FILM]), eta, xi, E_red, u, Q_o, Rx_o, Ry_o, brg[B_K_O])
+        L_i = film_parameter(hm_i, brg[B_SIGMA_I])
+        L_o = film_parameter(hm_o, brg[B_SIGMA_O])
+        C_i = 0.0
+        C_o = 0.0
+        if Q_i > 0.0:
+            eps_i = contact_permittivity(K_cm, rho0, p_i, int(brg[B_PRESSURE]))
+            C_i = contact_capacitance(eps_i, a_i, b_i, hc_i, brg[B_H_FLOOR])
+            lam_i = min(lam_i, L_i)
+            hmin_i = min(hmin_i, hm_i)
+            hc_i_min = min(hc_i_min, hc_i)
+        if Q_o > 0.0:
+            eps_o = contact_permittivity(K_cm, rho0, p_o, int(brg[B_PRESSURE]))
+            C_o = contact_capacitance(eps_o, a_o, b_o, hc_o, brg[B_H_FLOOR])
+            lam_o = min(lam_o, L_o)
+            hmin_o = min(hmin_o, hm_o)
+            hc_o_min = min(hc_o_min, hc_o)
+        if Q_i > 0.0 and Q_o > 0.0:
+            n_loaded += 1
+        c_total += ball_capacitance(C_i, C_o)
+        p_max = max(p_max, p_i, p_o)
+        q_max_i = max(q_max_i, Q_i)
+        q_max_o = max(q_max_o, Q_o)
+        ball[0, j] = Q_i
+        ball[1, j] = Q_o
+        ball[2, j] = hm_i
+        ball[3, j] = hm_o
+        ball[4, j] = L_i
+        ball[5, j] = L_o
+        ball[6, j] = C_i
+        ball[7, j] = C_o
+
+    # a race without any loaded contact reports 0 film (documented: no EHL contact to speak of)
+    if lam_i == math.inf:
+        lam_i = 0.0
+        hmin_i = 0.0
+        hc_i_min = 0.0
+    if lam_o == math.inf:
+        lam_o = 0.0
+        hmin_o = 0.0
+        hc_o_min = 0.0
+    out[O_LAMBDA_I] = lam_i
+    out[O_LAMBDA_O] = lam_o
+    out[O_HMIN_I] = hmin_i
+    out[O_HMIN_O] = hmin_o
+    out[O_REGIME] = lubrication_regime(min(lam_i, lam_o))
+    out[O_C_BEARING] = c_total
+    out[O_QMAX_I] = q_max_i
+    out[O_QMAX_O] = q_max_o
+    out[O_PMAX] = p_max
+    out[O_OMEGA_CAGE] = w_cage
+    out[O_OMEGA_BALL] = w_ball_fixed
+    out[O_N_LOADED] = n_loaded
+    out[O_DELTA_R] = delta_r
+    out[O_EPS] = load_parameter(delta_r, Pd)
+    out[O_HC_I] = hc_i_min
+    out[O_HC_O] = hc_o_min
+    out[O_ETA] = eta
+    out[O_XI] = xi
+    out[O_ITER] = iters

@@ -1,0 +1,130 @@
+"""EHL film thickness, film parameter, lubrication regime, friction coefficient and normal damping.
+
+SPEC 4.4. Dimensionless groups on Rx (Hamrock & Dowson 1977):
+  U = eta u / (E' Rx),  G = xi E',  W = Q / (E' Rx^2).
+Film formulas (smooth surfaces, isothermal, fully flooded), all as h / Rx:
+- Hamrock & Dowson (1977), ASME J. Lubr. Technol. 99, 264:
+    H_min = 3.63 U^0.68 G^0.49 W^-0.073 (1 - exp(-0.68 k)),
+    H_c   = 2.69 U^0.67 G^0.53 W^-0.067 (1 - 0.61 exp(-0.73 k));
+- Masjedi & Khonsari (2015), Tribol. Int. 82, 228 (smooth part; Farah 2020 eqs. 6 and 9):
+    H_min = 1.637 U^(0.711 k^-0.023) G^(0.65 k^-0.045) W^(-0.09 k^-0.15) (1 - 0.974 exp(-0.676 k)),
+    H_c   = 3.672 U^(0.663 k^-0.025) G^(0.502 k^-0.064) W^(-0.045 k^-0.18) (1 - 0.573 exp(-0.74 k));
+- Chittenden, Dowson, Dunn & Taylor (1985), Proc. R. Soc. A 397 (Wheeler 2016 thesis eq. 2.2-4),
+  entrainment along x, valid for either ellipse orientation:
+    H_c   = 4.31 U^0.68 G^0.49 W^-0.073 (1 - exp(-1.23 (Ry/Rx)^(2/3))),
+    H_min = 3.68 U^0.68 G^0.49 W^-0.073 (1 - exp(-0.67 (Ry/Rx)^(2/3))).
+k is the ellipticity a_y / b_x of the Hertz contact.
+"""
+import math
+
+from numba import njit
+
+FILM_HAMROCK_DOWSON = 0
+FILM_MASJEDI_KHONSARI = 1
+FILM_CHITTENDEN = 2
+
+REGIME_BOUNDARY = 0
+REGIME_MIXED = 1
+REGIME_FULL_FILM = 2
+
+
+@njit(cache=True)
+def dimensionless_groups(eta, xi, E_red, u, Q, Rx):
+    """(U, G, W) (-) for viscosity eta (Pa.s), pressure-viscosity xi (1/Pa), E' (Pa),
+    entrainment speed u (m/s, magnitude used), load Q (N) and radius Rx (m)."""
+    return eta * abs(u) / (E_red * Rx), xi * E_red, Q / (E_red * Rx * Rx)
+
+
+@njit(cache=True)
+def film_hamrock_dowson(U, G, W, k):
+    """Hamrock-Dowson (H_c, H_min) = (h_c/Rx, h_min/Rx) (-)."""
+    h_min = 3.63 * U ** 0.68 * G ** 0.49 * W ** -0.073 * (1.0 - math.exp(-0.68 * k))
+    h_c = 2.69 * U ** 0.67 * G ** 0.53 * W ** -0.067 * (1.0 - 0.61 * math.exp(-0.73 * k))
+    return h_c, h_min
+
+
+@njit(cache=True)
+def film_masjedi_khonsari(U, G, W, k):
+    """Masjedi-Khonsari smooth-surface (H_c, H_min) (-)."""
+    h_min = (1.637 * U ** (0.711 * k ** -0.023) * G ** (0.65 * k ** -0.045)
+             * W ** (-0.09 * k ** -0.15) * (1.0 - 0.974 * math.exp(-0.676 * k)))
+    h_c = (3.672 * U ** (0.663 * k ** -0.025) * G ** (0.502 * k ** -0.064)
+           * W ** (-0.045 * k ** -0.18) * (1.0 - 0.573 * math.exp(-0.74 * k)))
+    return h_c, h_min
+
+
+@njit(cache=True)
+def film_chittenden(U, G, W, Ry_over_Rx):
+    """Chittenden et al. (H_c, H_min) (-) for entrainment along x."""
+    base = U ** 0.68 * G ** 0.49 * W ** -0.073
+    r = Ry_over_Rx ** (2.0 / 3.0)
+    return 4.31 * base * (1.0 - math.exp(-1.23 * r)), 3.68 * base * (1.0 - math.exp(-0.67 * r))
+
+
+@njit(cache=True)
+def film_thickness(formula, eta, xi, E_red, u, Q, Rx, Ry, k):
+    """Central and minimum film thickness (h_c, h_min) in m of one contact.
+
+    formula: FILM_HAMROCK_DOWSON | FILM_MASJEDI_KHONSARI | FILM_CHITTENDEN. A contact at rest (u = 0)
+    has no film (0, 0); an open contact (Q <= 0) has no film constraint (inf, inf).
+    """
+    if Q <= 0.0:
+        return math.inf, math.inf
+    if u == 0.0 or eta <= 0.0:
+        return 0.0, 0.0
+    U, G, W = dimensionless_groups(eta, xi, E_red, u, Q, Rx)
+    if formula == FILM_MASJEDI_KHONSARI:
+        hc, hm = film_masjedi_khonsari(U, G, W, k)
+    elif formula == FILM_CHITTENDEN:
+        hc, hm = film_chittenden(U, G, W, Ry / Rx)
+    else:
+        hc, hm = film_hamrock_dowson(U, G, W, k)
+    return hc * Rx, hm * Rx
+
+
+@njit(cache=True)
+def film_parameter(h_min, sigma):
+    """Film parameter Lambda = h_min / sigma (-); sigma (m) composite roughness; inf if sigma = 0."""
+    if sigma <= 0.0:
+        return math.inf
+    return h_min / sigma
+
+
+@njit(cache=True)
+def lubrication_regime(lam):
+    """Regime code: 0 boundary (Lambda <= 1), 1 mixed (1 < Lambda <= 3), 2 full film (Lambda > 3)."""
+    if lam <= 1.0:
+        return REGIME_BOUNDARY
+    if lam <= 3.0:
+        return REGIME_MIXED
+    return REGIME_FULL_FILM
+
+
+@njit(cache=True)
+def friction_coefficient(lam):
+    """Coulomb coefficient mu(Lambda) (-): 0.1 for Lambda <= 1, linear to 0.01 on ]1, 3], 0.01 above
+    (Guessasma & Machado 2018, section 2.3)."""
+    if lam <= 1.0:
+        return 0.1
+    if lam <= 3.0:
+        return 0.1 - 0.045 * (lam - 1.0)
+    return 0.01
+
+
+@njit(cache=True)
+def normal_damping(lam, Q, alpha_e, eta, a_major, R_ball, h_min):
+    """Normal damping C_n(Lambda) (N.s/m) of one contact (Guessasma & Machado 2018, eqs. 4-5, Table 2).
+
+    C_hyst = 1.5 alpha_e K_n delta = 1.5 alpha_e Q (K_n delta is the elastic force Q, N; alpha_e in s/m);
+    C_fluid = (3 pi eta a / sqrt 2) (R_b / h_min)^1.5 (a: semi-major axis, m; R_b: ball radius, m).
+    Boundary: C_hyst; mixed: series (C_hyst^-1 + C_fluid^-1)^-1 (the text's 'parallel' is its
+    formula's series combination, SPEC 4.10); full film: C_fluid.
+    """
+    c_hyst = 1.5 * alpha_e * Q
+    regime = lubrication_regime(lam)
+    if regime == REGIME_BOUNDARY or h_min <= 0.0:
+        return c_hyst
+    c_fluid = 3.0 * math.pi * eta * a_major / math.sqrt(2.0) * (R_ball / h_min) ** 1.5
+    if regime == REGIME_FULL_FILM:
+        return c_fluid
+    return c_hyst * c_fluid / (c_hyst + c_fluid)

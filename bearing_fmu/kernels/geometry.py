@@ -1,0 +1,97 @@
+"""Ball-bearing geometry and pure-rolling kinematics (SPEC 4.1). SI units, angles in rad.
+
+Outer ring fixed, inner ring turning at omega (rad/s). gamma = D cos(alpha) / d_m.
+Harris & Kotzalas (2006), Essential Concepts of Bearing Technology, ch. 2 and 8.
+"""
+import math
+
+from numba import njit
+
+
+@njit(cache=True)
+def gamma_ratio(D, dm, alpha):
+    """gamma = D cos(alpha) / d_m (-) for ball diameter D (m), pitch diameter d_m (m), contact angle alpha (rad)."""
+    return D * math.cos(alpha) / dm
+
+
+@njit(cache=True)
+def curvature_radii(D, dm, f_i, f_o, alpha):
+    """Reduced radii (Rx_i, Ry_i, Rx_o, Ry_o) in m of the inner and outer ball-race contacts.
+
+    Rx = (D/2)(1 -/+ gamma) in the rolling direction, Ry = f D / (2 f - 1) across the groove
+    (f = groove radius / D, conformity).
+    """
+    g = gamma_ratio(D, dm, alpha)
+    Rx_i = 0.5 * D * (1.0 - g)
+    Rx_o = 0.5 * D * (1.0 + g)
+    Ry_i = f_i * D / (2.0 * f_i - 1.0)
+    Ry_o = f_o * D / (2.0 * f_o - 1.0)
+    return Rx_i, Ry_i, Rx_o, Ry_o
+
+
+@njit(cache=True)
+def free_contact_angle(D, f_i, f_o, Pd):
+    """Free contact angle alpha0 (rad) = arccos(1 - P_d / (2 A)), A = (f_i + f_o - 1) D (m).
+
+    P_d is the diametral clearance (m); P_d <= 0 (zero clearance or preload) gives 0.
+    """
+    A = (f_i + f_o - 1.0) * D
+    c = 1.0 - Pd / (2.0 * A)
+    if c >= 1.0:
+        return 0.0
+    if c <= -1.0:
+        return math.pi
+    return math.acos(c)
+
+
+@njit(cache=True)
+def free_endplay(D, f_i, f_o, Pd):
+    """Free endplay P_e (m) = 2 A sin(alpha0)."""
+    A = (f_i + f_o - 1.0) * D
+    return 2.0 * A * math.sin(free_contact_angle(D, f_i, f_o, Pd))
+
+
+@njit(cache=True)
+def rolling_kinematics(omega, D, dm, alpha):
+    """Pure-rolling speeds for inner-ring speed omega (rad/s), outer ring fixed.
+
+    Returns (omega_cage, omega_ball_rel, omega_ball_fixed, u_entrain):
+    cage speed omega (1 - gamma)/2 (rad/s); ball spin relative to the cage
+    (d_m / 2D)(1 - gamma^2) omega (rad/s); ball spin in the fixed frame, omega_ball_rel - omega_cage
+    (rad/s; opposite sense to the cage, magnitude reported); entrainment (mean rolling) speed
+    u = omega d_m (1 - gamma^2) / 4 (m/s), the same at both races.
+    """
+    g = gamma_ratio(D, dm, alpha)
+    omega_cage = 0.5 * omega * (1.0 - g)
+    omega_ball_rel = dm / (2.0 * D) * (1.0 - g * g) * omega
+    omega_ball_fixed = omega_ball_rel - omega_cage
+    u = 0.25 * omega * dm * (1.0 - g * g)
+    return omega_cage, omega_ball_rel, omega_ball_fixed, u
+
+
+@njit(cache=True)
+def defect_frequencies(omega, D, dm, alpha, Z):
+    """Bearing defect frequencies in Hz for inner-ring speed omega (rad/s), outer ring fixed.
+
+    Returns (FTF, BPFO, BPFI, BSF): fundamental train (cage), ball pass outer, ball pass inner and
+    ball spin frequency, BSF = (d_m / 2D)(1 - gamma^2) f_r (one ball revolution relative to the cage).
+    """
+    g = gamma_ratio(D, dm, alpha)
+    fr = omega / (2.0 * math.pi)
+    ftf = 0.5 * fr * (1.0 - g)
+    bpfo = 0.5 * Z * fr * (1.0 - g)
+    bpfi = 0.5 * Z * fr * (1.0 + g)
+    bsf = dm / (2.0 * D) * fr * (1.0 - g * g)
+    return ftf, bpfo, bpfi, bsf
+
+
+@njit(cache=True)
+def ball_mass(D, rho):
+    """Mass (kg) of a ball of diameter D (m) and density rho (kg/m^3)."""
+    return rho * math.pi * D ** 3 / 6.0
+
+
+@njit(cache=True)
+def centrifugal_force(m_ball, dm, omega_cage):
+    """Centrifugal force (N) F_c = m (d_m / 2) omega_c^2 of a ball orbiting at the cage speed (rad/s)."""
+    return 0.5 * m_ball * dm * omega_cage * omega_cage

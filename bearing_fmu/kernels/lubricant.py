@@ -1,0 +1,179 @@
+"""Lubricant properties: viscosity-temperature, pressure-viscosity, density and permittivity (SPEC 4.5).
+
+SI units: T in K, p in Pa, kinematic viscosity nu in m^2/s, dynamic viscosity in Pa.s.
+Temperature models are selected by integer codes (never by module state):
+  VISCOSITY_CONSTANT, VISCOSITY_WALTHER (ASTM D341), VISCOSITY_WLF (modified WLF, Bair);
+  PIEZO_CONSTANT, PIEZO_GOLD (alpha = s nu^t), PIEZO_WLF (alpha* of the WLF law).
+The per-lubricant numbers travel in one float64 array ``lub`` whose layout is fixed by
+``LUB_*`` indices below (built by bearing_fmu.params.lubricant_array).
+"""
+import math
+
+from numba import njit
+
+VISCOSITY_CONSTANT = 0
+VISCOSITY_WALTHER = 1
+VISCOSITY_WLF = 2
+
+PIEZO_CONSTANT = 0
+PIEZO_GOLD = 1
+PIEZO_WLF = 2
+
+DENSITY_LINEAR = 0
+DENSITY_MURNAGHAN = 1
+
+# layout of the lubricant parameter array
+LUB_VISC_MODEL = 0
+LUB_ETA_CONST = 1        # Pa.s
+LUB_WALTHER_A = 2        # -
+LUB_WALTHER_B = 3        # -
+LUB_PIEZO_MODEL = 4
+LUB_XI_CONST = 5         # 1/Pa
+LUB_GOLD_S = 6           # 1/Pa
+LUB_GOLD_T = 7           # -
+LUB_DENS_MODEL = 8
+LUB_RHO_REF = 9          # kg/m^3
+LUB_T_REF = 10           # K
+LUB_EXPANSION = 11       # 1/K
+LUB_EPS_R0 = 12          # -
+LUB_WLF_MU_G = 13        # Pa.s
+LUB_WLF_TG0 = 14         # K
+LUB_WLF_A1 = 15          # K
+LUB_WLF_A2 = 16          # 1/Pa
+LUB_WLF_B1 = 17          # 1/Pa
+LUB_WLF_B2 = 18          # -
+LUB_WLF_C1 = 19          # -
+LUB_WLF_C2 = 20          # K
+LUB_MURN_BETA_K = 21     # 1/K
+LUB_MURN_K_MM = 22       # Pa
+LUB_MURN_K_PRIME = 23    # -
+LUB_SIZE = 24
+
+KELVIN_OFFSET = 273.15
+
+
+@njit(cache=True)
+def walther_constants(nu1, T1, nu2, T2):
+    """ASTM D341 (Walther) constants (A, B) from two kinematic viscosities nu (m^2/s) at T (K).
+
+    log10(log10(nu_cSt + 0.7)) = A - B log10(T); valid for nu >= 2 mm^2/s.
+    """
+    z1 = math.log10(math.log10(nu1 * 1e6 + 0.7))
+    z2 = math.log10(math.log10(nu2 * 1e6 + 0.7))
+    B = (z1 - z2) / (math.log10(T2) - math.log10(T1))
+    A = z1 + B * math.log10(T1)
+    return A, B
+
+
+@njit(cache=True)
+def walther_viscosity(T, A, B):
+    """Kinematic viscosity (m^2/s) at T (K) from ASTM D341 constants."""
+    return (10.0 ** (10.0 ** (A - B * math.log10(T))) - 0.7) * 1e-6
+
+
+@njit(cache=True)
+def density_linear(T, rho_ref, T_ref, expansion):
+    """Density (kg/m^3) at p = 0: rho_ref / (1 + a (T - T_ref)), a the volumetric expansion (1/K)."""
+    return rho_ref / (1.0 + expansion * (T - T_ref))
+
+
+@njit(cache=True)
+def murnaghan_density(p, T, rho_R, T_R, a_v, beta_K, K_MM, K_prime):
+    """Murnaghan equation of state (Wheeler 2016 thesis eqs. 2.1-7, 2.1-8): density (kg/m^3) at p (Pa), T (K)."""
+    rho_0 = rho_R / (1.0 + a_v * (T - T_R))
+    K_M = K_MM * math.exp(-beta_K * T)
+    return rho_0 * (1.0 + K_prime / K_M * p) ** (1.0 / K_prime)
+
+
+@njit(cache=True)
+def wlf_viscosity(p, T, mu_G, T_g0, A1, A2, b1, b2, C1, C2):
+    """Modified WLF viscosity (Pa.s) at p (Pa), T (K) (Bair; Wheeler 2016 thesis eq. 2.1-9).
+
+    T_g(p) = T_g0 + A1 ln(1 + A2 p);  F(p) = (1 + b1 p)^b2;
+    mu = mu_G exp[-2.303 C1 (T - T_g) F / (C2 + (T - T_g) F)].
+    """
+    Tg = T_g0 + A1 * math.log(1.0 + A2 * p)
+    F = (1.0 + b1 * p) ** b2
+    dT = (T - Tg) * F
+    return mu_G * math.exp(-2.303 * C1 * dT / (C2 + dT))
+
+
+@njit(cache=True)
+def wlf_alpha_star(T, mu_G, T_g0, A1, A2, b1, b2, C1, C2):
+    """Reciprocal asymptotic isoviscous pressure-viscosity coefficient alpha* (1/Pa) of the WLF law.
+
+    alpha* = [int_0^inf mu(0)/mu(p) dp]^-1 (Blok; Bair 2007). Integrated in p = s / (1 - s) x 1 GPa
+    with 200-panel Simpson; mu(0)/mu(p) has dropped below 1e-12 long before the map saturates.
+    """
+    mu0 = wlf_viscosity(0.0, T, mu_G, T_g0, A1, A2, b1, b2, C1, C2)
+    scale = 1e9
+    n = 400
+    h = 0.999 / n
+    total = 0.0
+    for i in range(n + 1):
+        s = i * h
+        p = scale * s / (1.0 - s)
+        dp_ds = scale / ((1.0 - s) * (1.0 - s))
+        f = mu0 / wlf_viscosity(p, T, mu_G, T_g0, A1, A2, b1, b2, C1, C2) * dp_ds
+        wgt = 1.0 if (i == 0 or i == n) else (4.0 if i % 2 == 1 else 2.0)
+        total += wgt * f
+    return 1.0 / (total * h / 3.0)
+
+
+@njit(cache=True)
+def gold_pressure_viscosity(nu, s, t):
+    """Pressure-viscosity coefficient (1/Pa) alpha = s (nu / 1 mm^2/s)^t (Gold et al. 2001); nu in m^2/s."""
+    return s * (nu * 1e6) ** t
+
+
+@njit(cache=True)
+def dowson_higginson_density(rho0, p):
+    """Dowson-Higginson density (kg/m^3) at pressure p (Pa): rho0 (0.59e9 + 1.34 p) / (0.59e9 + p)."""
+    return rho0 * (0.59e9 + 1.34 * p) / (0.59e9 + p)
+
+
+@njit(cache=True)
+def clausius_mossotti_constant(eps_r0, rho0):
+    """Clausius-Mossotti constant K (m^3/kg) = (eps_r0 - 1) / ((eps_r0 + 2) rho0)."""
+    return (eps_r0 - 1.0) / ((eps_r0 + 2.0) * rho0)
+
+
+@njit(cache=True)
+def permittivity_from_density(K_cm, rho):
+    """Relative permittivity (-) eps_r = (1 + 2 K rho) / (1 - K rho) (Clausius-Mossotti)."""
+    return (1.0 + 2.0 * K_cm * rho) / (1.0 - K_cm * rho)
+
+
+@njit(cache=True)
+def lubricant_state(T, lub):
+    """Ambient-pressure state of the lubricant at temperature T (K).
+
+    Returns (eta, xi, rho0): dynamic viscosity (Pa.s), pressure-viscosity coefficient (1/Pa) and
+    density (kg/m^3) at p = 0.
+    """
+    if int(lub[LUB_DENS_MODEL]) == DENSITY_MURNAGHAN:
+        rho0 = murnaghan_density(0.0, T, lub[LUB_RHO_REF], lub[LUB_T_REF], lub[LUB_EXPANSION],
+                                 lub[LUB_MURN_BETA_K], lub[LUB_MURN_K_MM], lub[LUB_MURN_K_PRIME])
+    else:
+        rho0 = density_linear(T, lub[LUB_RHO_REF], lub[LUB_T_REF], lub[LUB_EXPANSION])
+    visc = int(lub[LUB_VISC_MODEL])
+    if visc == VISCOSITY_WALTHER:
+        nu = walther_viscosity(T, lub[LUB_WALTHER_A], lub[LUB_WALTHER_B])
+        eta = nu * rho0
+    elif visc == VISCOSITY_WLF:
+        eta = wlf_viscosity(0.0, T, lub[LUB_WLF_MU_G], lub[LUB_WLF_TG0], lub[LUB_WLF_A1],
+                            lub[LUB_WLF_A2], lub[LUB_WLF_B1], lub[LUB_WLF_B2], lub[LUB_WLF_C1],
+                            lub[LUB_WLF_C2])
+        nu = eta / rho0
+    else:
+        eta = lub[LUB_ETA_CONST]
+        nu = eta / rho0
+    piezo = int(lub[LUB_PIEZO_MODEL])
+    if piezo == PIEZO_GOLD:
+        xi = gold_pressure_viscosity(nu, lub[LUB_GOLD_S], lub[LUB_GOLD_T])
+    elif piezo == PIEZO_WLF:
+        xi = wlf_alpha_star(T, lub[LUB_WLF_MU_G], lub[LUB_WLF_TG0], lub[LUB_WLF_A1], lub[LUB_WLF_A2],
+                            lub[LUB_WLF_B1], lub[LUB_WLF_B2], lub[LUB_WLF_C1], lub[LUB_WLF_C2])
+    else:
+        xi = lub[LUB_XI_CONST]
+    return eta, xi, rho0

@@ -1,0 +1,254 @@
+"""Parameter sets: loading, validation and packing into kernel arrays.
+
+A set is named by a catalogue name (a file in bearings/ or lubricants/ beside this module) or by
+the path of a TOML file in the same format (docs/parameters.md). Every value is checked for
+presence, unit and physical range; a failure raises ParameterError naming the file, the key and
+the allowed range.
+"""
+import math
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from ..kernels import lubricant as lk
+
+CATALOGUE = Path(__file__).resolve().parent
+
+
+class ParameterError(ValueError):
+    """A parameter file is missing, malformed or holds a non-physical value."""
+
+
+@dataclass(frozen=True)
+class Spec:
+    unit: str
+    low: float
+    high: float
+    low_open: bool = False  # True: value must be > low (not >=)
+
+
+def _resolve(name_or_path, kind):
+    """Path of a catalogue entry (by name) or of a user TOML file (by path)."""
+    text = str(name_or_path)
+    folder = CATALOGUE / kind
+    candidate = folder / f"{text}.toml"
+    if candidate.is_file():
+        return candidate
+    path = Path(text).expanduser()
+    if path.suffix == ".toml" and path.is_file():
+        return path
+    names = ", ".join(sorted(p.stem for p in folder.glob("*.toml")))
+    raise ParameterError(
+        f"unknown {kind[:-1]} '{text}': give a catalogue name ({names}) or the path of a .toml file")
+
+
+def catalogue(kind):
+    """Names of the catalogue entries of a kind ('bearings' or 'lubricants')."""
+    return sorted(p.stem for p in (CATALOGUE / kind).glob("*.toml"))
+
+
+def _read(path):
+    try:
+        with open(path, "rb") as fh:
+            return tomllib.load(fh)
+    except tomllib.TOMLDecodeError as exc:
+        raise ParameterError(f"{path}: not valid TOML ({exc})") from None
+
+
+def _value(doc, dotted, spec, path, required=True, default=None):
+    """Checked value of entry `dotted` (e.g. 'geometry.ball_diameter')."""
+    node = doc
+    for part in dotted.split("."):
+        if not isinstance(node, dict) or part not in node:
+            if required:
+                raise ParameterError(f"{path}: missing key '{dotted}' ({spec.unit})")
+            return default
+        node = node[part]
+    if not isinstance(node, dict) or "value" not in node:
+        raise ParameterError(f"{path}: '{dotted}' must be a table {{ value = ..., unit = \"{spec.unit}\", source = ... }}")
+    unit = node.get("unit")
+    if unit != spec.unit:
+        raise ParameterError(f"{path}: '{dotted}' has unit '{unit}', expected '{spec.unit}'")
+    if "source" not in node:
+        raise ParameterError(f"{path}: '{dotted}' has no 'source'")
+    value = node["value"]
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise ParameterError(f"{path}: '{dotted}' = {value!r} is not a finite number")
+    low_ok = value > spec.low if spec.low_open else value >= spec.low
+    if not (low_ok and value <= spec.high):
+        bracket = "]" if spec.low_open else "["
+        raise ParameterError(
+            f"{path}: '{dotted}' = {value} {spec.unit} is outside the allowed range "
+            f"{bracket}{spec.low}, {spec.high}]")
+    return float(value)
+
+
+LENGTH = Spec("m", 0.0, 10.0, low_open=True)
+MODULUS = Spec("Pa", 1e6, 1e13, low_open=True)
+POISSON = Spec("-", 0.0, 0.5, low_open=False)
+DENSITY = Spec("kg/m^3", 100.0, 30000.0)
+
+
+@dataclass(frozen=True)
+class Material:
+    E: float    # Pa
+    nu: float   # -
+    rho: float  # kg/m^3
+
+
+@dataclass(frozen=True)
+class Bearing:
+    """Bearing geometry and materials (SI). Values documented in the TOML file."""
+    name: str
+    kind: str
+    path: str
+    D: float            # ball diameter (m)
+    dm: float           # pitch diameter (m)
+    f_i: float          # inner groove conformity (-)
+    f_o: float          # outer groove conformity (-)
+    Z: int              # number of balls (-)
+    Pd: float           # diametral clearance (m), negative = preload
+    alpha0: float       # nominal contact angle (rad)
+    ball: Material
+    ring: Material
+    Ra_inner: float     # inner race roughness Ra (m)
+    Ra_outer: float     # outer race roughness Ra (m)
+    Ra_ball: float      # ball roughness Ra (m)
+    cage_ball_radius: float = 0.0  # DEM cage-ball radius (m), 0 if absent
+    extras: dict = field(default_factory=dict)
+
+
+def _material(doc, section, path):
+    return Material(
+        E=_value(doc, f"{section}.E", MODULUS, path),
+        nu=_value(doc, f"{section}.nu", POISSON, path),
+        rho=_value(doc, f"{section}.rho", DENSITY, path))
+
+
+def load_bearing(name_or_path):
+    """Bearing set from a catalogue name ('6208', '6306', 'B7214C') or a TOML path; validated."""
+    path = _resolve(name_or_path, "bearings")
+    doc = _read(path)
+    meta = doc.get("meta", {})
+    kind = meta.get("kind", "deep_groove")
+    if kind not in ("deep_groove", "angular_contact"):
+        raise ParameterError(f"{path}: 'meta.kind' = {kind!r}, allowed: 'deep_groove', 'angular_contact'")
+    D = _value(doc, "geometry.ball_diameter", Spec("m", 0.0, 1.0, True), path)
+    dm = _value(doc, "geometry.pitch_diameter", Spec("m", 0.0, 10.0, True), path)
+    if dm <= D:
+        raise ParameterError(f"{path}: 'geometry.pitch_diameter' = {dm} m must exceed the ball diameter {D} m")
+    conf = Spec("-", 0.5, 1.0, low_open=True)
+    Z = _value(doc, "geometry.n_balls", Spec("-", 3, 200), path)
+    if Z != int(Z):
+        raise ParameterError(f"{path}: 'geometry.n_balls' = {Z} must be a whole number in [3, 200]")
+    max_clearance = 0.1 * D
+    bearing = Bearing(
+        name=str(meta.get("name", path.stem)), kind=kind, path=str(path),
+        D=D, dm=dm,
+        f_i=_value(doc, "geometry.inner_conformity", conf, path),
+        f_o=_value(doc, "geometry.outer_conformity", conf, path),
+        Z=int(Z),
+        Pd=_value(doc, "geometry.diametral_clearance", Spec("m", -max_clearance, max_clearance), path),
+        alpha0=_value(doc, "geometry.contact_angle", Spec("rad", 0.0, 1.2), path),
+        ball=_material(doc, "material.ball", path),
+        ring=_material(doc, "material.ring", path),
+        Ra_inner=_value(doc, "surface.inner_race_Ra", Spec("m", 0.0, 1e-4), path),
+        Ra_outer=_value(doc, "surface.outer_race_Ra", Spec("m", 0.0, 1e-4), path),
+        Ra_ball=_value(doc, "surface.ball_Ra", Spec("m", 0.0, 1e-4), path),
+        cage_ball_radius=_value(doc, "cage.ball_radius", Spec("m", 0.0, 1.0, True), path,
+                                required=False, default=0.0),
+    )
+    if math.pi * dm < bearing.Z * D:
+        raise ParameterError(f"{path}: {bearing.Z} balls of {D} m do not fit on the pitch circle "
+                             f"(pi d_m = {math.pi * dm:.4g} m)")
+    return bearing
+
+
+@dataclass(frozen=True)
+class Lubricant:
+    """Lubricant parameters (SI) and their packed kernel array (kernels.lubricant LUB_* layout)."""
+    name: str
+    path: str
+    array: np.ndarray
+    reference: dict = field(default_factory=dict)
+
+
+TEMPERATURE = Spec("K", 150.0, 700.0)
+
+
+def load_lubricant(name_or_path):
+    """Lubricant set from a catalogue name or a TOML path; validated and packed for the kernels."""
+    path = _resolve(name_or_path, "lubricants")
+    doc = _read(path)
+    arr = np.zeros(lk.LUB_SIZE)
+    visc = doc.get("viscosity", {}).get("model", "constant")
+    piezo = doc.get("pressure_viscosity", {}).get("model", "constant")
+    dens = doc.get("density", {}).get("model", "linear")
+
+    if dens == "murnaghan":
+        arr[lk.LUB_DENS_MODEL] = lk.DENSITY_MURNAGHAN
+        arr[lk.LUB_RHO_REF] = _value(doc, "density.rho_R", DENSITY, path)
+        arr[lk.LUB_T_REF] = _value(doc, "density.T_R", TEMPERATURE, path)
+        arr[lk.LUB_EXPANSION] = _value(doc, "density.a_v", Spec("1/K", 0.0, 1e-2), path)
+        arr[lk.LUB_MURN_BETA_K] = _value(doc, "density.beta_K", Spec("1/K", 0.0, 1.0), path)
+        arr[lk.LUB_MURN_K_MM] = _value(doc, "density.K_MM", Spec("Pa", 1e6, 1e13, True), path)
+        arr[lk.LUB_MURN_K_PRIME] = _value(doc, "density.K_M_prime", Spec("-", 0.0, 100.0, True), path)
+    elif dens == "linear":
+        arr[lk.LUB_DENS_MODEL] = lk.DENSITY_LINEAR
+        arr[lk.LUB_RHO_REF] = _value(doc, "density.rho_ref", DENSITY, path)
+        arr[lk.LUB_T_REF] = _value(doc, "density.T_ref", TEMPERATURE, path)
+        arr[lk.LUB_EXPANSION] = _value(doc, "density.thermal_expansion", Spec("1/K", 0.0, 1e-2), path)
+    else:
+        raise ParameterError(f"{path}: 'density.model' = {dens!r}, allowed: 'linear', 'murnaghan'")
+
+    if visc == "constant":
+        arr[lk.LUB_VISC_MODEL] = lk.VISCOSITY_CONSTANT
+        arr[lk.LUB_ETA_CONST] = _value(doc, "viscosity.dynamic_viscosity", Spec("Pa.s", 0.0, 1e4, True), path)
+    elif visc == "walther":
+        arr[lk.LUB_VISC_MODEL] = lk.VISCOSITY_WALTHER
+        nu_spec = Spec("m^2/s", 2e-6, 1.0)  # ASTM D341 holds for nu >= 2 mm^2/s
+        nu1 = _value(doc, "viscosity.nu_1", nu_spec, path)
+        T1 = _value(doc, "viscosity.T_1", TEMPERATURE, path)
+        nu2 = _value(doc, "viscosity.nu_2", nu_spec, path)
+        T2 = _value(doc, "viscosity.T_2", TEMPERATURE, path)
+        if not (T2 > T1 and nu2 < nu1):
+            raise ParameterError(f"{path}: Walther needs T_2 > T_1 and nu_2 < nu_1 (viscosity falls with temperature)")
+        arr[lk.LUB_WALTHER_A], arr[lk.LUB_WALTHER_B] = lk.walther_constants(nu1, T1, nu2, T2)
+    elif visc == "wlf":
+        arr[lk.LUB_VISC_MODEL] = lk.VISCOSITY_WLF
+        _pack_wlf(doc, arr, path)
+    else:
+        raise ParameterError(f"{path}: 'viscosity.model' = {visc!r}, allowed: 'constant', 'walther', 'wlf'")
+
+    if piezo == "constant":
+        arr[lk.LUB_PIEZO_MODEL] = lk.PIEZO_CONSTANT
+        arr[lk.LUB_XI_CONST] = _value(doc, "pressure_viscosity.coefficient", Spec("1/Pa", 0.0, 1e-6, True), path)
+    elif piezo == "gold":
+        arr[lk.LUB_PIEZO_MODEL] = lk.PIEZO_GOLD
+        arr[lk.LUB_GOLD_S] = _value(doc, "pressure_viscosity.s", Spec("1/Pa", 0.0, 1e-6, True), path)
+        arr[lk.LUB_GOLD_T] = _value(doc, "pressure_viscosity.t", Spec("-", -2.0, 2.0), path)
+    elif piezo == "wlf":
+        if visc != "wlf":
+            raise ParameterError(f"{path}: 'pressure_viscosity.model' = 'wlf' needs 'viscosity.model' = 'wlf'")
+        arr[lk.LUB_PIEZO_MODEL] = lk.PIEZO_WLF
+    else:
+        raise ParameterError(f"{path}: 'pressure_viscosity.model' = {piezo!r}, allowed: 'constant', 'gold', 'wlf'")
+
+    arr[lk.LUB_EPS_R0] = _value(doc, "electrical.relative_permittivity", Spec("-", 1.0, 100.0, True), path)
+    reference = {k: v["value"] for k, v in doc.get("reference_313K", {}).items()
+                 if isinstance(v, dict) and "value" in v}
+    return Lubricant(name=str(doc.get("meta", {}).get("name", path.stem)), path=str(path),
+                     array=arr, reference=reference)
+
+
+def _pack_wlf(doc, arr, path):
+    arr[lk.LUB_WLF_MU_G] = _value(doc, "viscosity.mu_G", Spec("Pa.s", 0.0, 1e20, True), path)
+    arr[lk.LUB_WLF_TG0] = _value(doc, "viscosity.T_g0", Spec("K", 0.0, 500.0, True), path)
+    arr[lk.LUB_WLF_A1] = _value(doc, "viscosity.A_1", Spec("K", 0.0, 2000.0), path)
+    arr[lk.LUB_WLF_A2] = _value(doc, "viscosity.A_2", Spec("1/Pa", 0.0, 1e-6), path)
+    arr[lk.LUB_WLF_B1] = _value(doc, "viscosity.b_1", Spec("1/Pa", 0.0, 1e-6), path)
+    arr[lk.LUB_WLF_B2] = _value(doc, "viscosity.b_2", Spec("-", -5.0, 5.0), path)
+    arr[lk.LUB_WLF_C1] = _value(doc, "viscosity.C_1", Spec("-", 0.0, 100.0, True), path)
+    arr[lk.LUB_WLF_C2] = _value(doc, "viscosity.C_2", Spec("K", 0.0, 1000.0, True), path)

@@ -1,0 +1,93 @@
+"""Scenes: the build-time choice of fidelity, physics options and outputs (SPEC 5.2).
+
+A scene is a small TOML table (or keyword arguments). `Scene.validate()` reports every
+incompatible or unknown choice at once. What a scene turns off is neither computed nor exposed.
+"""
+import tomllib
+from dataclasses import dataclass, fields, replace
+
+from .kernels.capacitance import PRESSURE_MAX, PRESSURE_MEAN
+from .kernels.ehl import FILM_CHITTENDEN, FILM_HAMROCK_DOWSON, FILM_MASJEDI_KHONSARI
+
+FIDELITIES = ("analytic",)  # quasi_static and dem arrive with their issues
+FILM_FORMULAS = {"hamrock_dowson": FILM_HAMROCK_DOWSON, "masjedi_khonsari": FILM_MASJEDI_KHONSARI,
+                 "chittenden": FILM_CHITTENDEN}
+HERTZ_SOLUTIONS = ("exact", "approximate")
+PERMITTIVITY_PRESSURES = {"max": PRESSURE_MAX, "mean": PRESSURE_MEAN}
+
+
+class SceneError(ValueError):
+    """One or more scene options are unknown or incompatible (all are listed in the message)."""
+
+
+@dataclass(frozen=True)
+class Scene:
+    """Build-time model options.
+
+    fidelity: 'analytic' (Stribeck/Sjovall + Hertz + EHL, SPEC 4.3 analytic checks).
+    film: EHL film formula, 'hamrock_dowson' (default, the seeds' choice) | 'masjedi_khonsari' | 'chittenden'.
+    hertz: 'exact' (complete elliptic integrals, default) | 'approximate' (Hamrock-Brewe).
+    centrifugal: ball centrifugal force on the outer contacts.
+    capacitance: compute and expose the bearing capacitance C_bearing.
+    permittivity_pressure: lubricant permittivity at the Hertz 'max' (default) or 'mean' pressure.
+    roughness_factor: sigma = factor x sqrt(Ra_race^2 + Ra_ball^2) (1.25: Ra -> Rq of a Gaussian
+        surface, Guessasma 2018 eq. 7).
+    film_floor: film thickness (m) below which the capacitance is bounded (estimated, docs/decisions.md).
+    background_capacitance: ring/background capacitance (F) added to the balls (Farah adds ~30 pF; off = 0).
+    tolerance: relative tolerance of the load equilibrium (-).
+    """
+    name: str = "analytic"
+    fidelity: str = "analytic"
+    film: str = "hamrock_dowson"
+    hertz: str = "exact"
+    centrifugal: bool = True
+    capacitance: bool = True
+    permittivity_pressure: str = "max"
+    roughness_factor: float = 1.25
+    film_floor: float = 10e-9
+    background_capacitance: float = 0.0
+    tolerance: float = 1e-12
+
+    def problems(self):
+        """List of human-readable problems (empty when the scene is valid)."""
+        out = []
+        if self.fidelity not in FIDELITIES:
+            out.append(f"fidelity = {self.fidelity!r}: available {list(FIDELITIES)}")
+        if self.film not in FILM_FORMULAS:
+            out.append(f"film = {self.film!r}: allowed {sorted(FILM_FORMULAS)}")
+        if self.hertz not in HERTZ_SOLUTIONS:
+            out.append(f"hertz = {self.hertz!r}: allowed {list(HERTZ_SOLUTIONS)}")
+        if self.permittivity_pressure not in PERMITTIVITY_PRESSURES:
+            out.append(f"permittivity_pressure = {self.permittivity_pressure!r}: allowed {sorted(PERMITTIVITY_PRESSURES)}")
+        if not 1.0 <= self.roughness_factor <= 2.0:
+            out.append(f"roughness_factor = {self.roughness_factor}: allowed [1, 2]")
+        if not 0.0 < self.film_floor <= 1e-6:
+            out.append(f"film_floor = {self.film_floor} m: allowed ]0, 1e-6] m")
+        if not 0.0 <= self.background_capacitance <= 1e-6:
+            out.append(f"background_capacitance = {self.background_capacitance} F: allowed [0, 1e-6] F")
+        if not 1e-15 <= self.tolerance <= 1e-3:
+            out.append(f"tolerance = {self.tolerance}: allowed [1e-15, 1e-3]")
+        if self.background_capacitance > 0.0 and not self.capacitance:
+            out.append("background_capacitance > 0 needs capacitance = true")
+        return out
+
+    def validate(self):
+        """Raise SceneError listing every problem at once; return self when valid."""
+        problems = self.problems()
+        if problems:
+            raise SceneError(f"scene '{self.name}': " + "; ".join(problems))
+        return self
+
+    @classmethod
+    def from_dict(cls, data):
+        known = {f.name for f in fields(cls)}
+        unknown = sorted(set(data) - known)
+        if unknown:
+            raise SceneError(f"unknown scene option(s) {unknown}: allowed {sorted(known)}")
+        return replace(cls(), **data).validate()
+
+    @classmethod
+    def from_toml(cls, path):
+        with open(path, "rb") as fh:
+            data = tomllib.load(fh)
+        return cls.from_dict(data.get("scene", data))
