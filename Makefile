@@ -1,0 +1,31 @@
+# Two entry points (README): `make demo` and `make test`. Both create .venv and install the project.
+PY ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+STAMP := $(VENV)/.installed
+
+.PHONY: demo test fmus bench report clean
+
+$(STAMP): pyproject.toml
+	$(PY) -m venv $(VENV)
+	$(BIN)/python -m pip install -q --upgrade pip
+	$(BIN)/python -m pip install -q -e ".[test,plot]"
+	touch $(STAMP)
+
+fmus: $(STAMP)
+	$(BIN)/python -m bearing_fmu.build
+
+demo: fmus
+	$(BIN)/python -m spindle.cli demo --out results
+
+test: fmus
+	$(BIN)/python -m pytest -q
+
+bench: fmus
+	$(BIN)/python -m benchmarks.run_all
+
+report: $(STAMP)
+	$(BIN)/python -m benchmarks.ehl_film_table
+
+clean:
+	rm -rf $(VENV) fmus/*.fmu results .pytest_cache
