@@ -1,0 +1,212 @@
+"""BearingAnalytic.fmu behaves as a well-made FMI 2.0 co-simulation FMU (SPEC 3, 5.3; issue 2).
+
+- fmpy.validate_fmu finds no problem; every variable has a description, every Real a unit;
+- fmpy simulate_fmu (with output_interval) and a hand-written FMU2Slave loop equal the Python
+  model to 1e-12 relative (same kernels in the same interpreter: only the FMI round trip and the
+  float formatting of the inputs could differ, and neither may);
+- bad inputs give a logged message naming the input and its range and fmi2Discard, the host
+  survives and a corrected input recovers; '%' in a message cannot crash the host;
+- FMU state get/set/serialise round trip is exact;
+- 30 consecutive fresh-process simulations all exit 0 (SPEC 3: scipy/numba teardown crashes).
+"""
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from fmpy import extract, read_model_description, simulate_fmu
+from fmpy.fmi2 import FMU2Slave
+from fmpy.validation import validate_fmu
+
+from bearing_fmu.model import BearingModel
+
+PROBE = Path(__file__).with_name("probe.py")
+OUTPUTS = ["Lambda_inner", "Lambda_outer", "h_min_inner", "h_min_outer", "regime", "C_bearing",
+           "Q_max_inner", "Q_max_outer", "p_max", "omega_cage", "omega_ball", "n_loaded", "y", "epsilon"]
+
+
+def _probe(fmu_path, scenario):
+    proc = subprocess.run([sys.executable, str(PROBE), str(fmu_path), scenario], capture_output=True,
+                          text=True, timeout=300)
+    assert proc.returncode == 0, (proc.returncode, proc.stderr[-2000:])
+    return json.loads(proc.stdout.strip().splitlines()[-1])
+
+
+def _close(a, b, rel=1e-12):
+    return abs(a - b) <= rel * max(abs(a), abs(b)) or a == b
+
+
+def test_validate_fmu_is_clean(analytic_fmu):
+    for path in sorted(analytic_fmu.parent.glob("*.fmu")):
+        assert validate_fmu(str(path)) == [], path
+
+
+def test_model_description_units_and_descriptions(analytic_fmu):
+    md = read_model_description(str(analytic_fmu))
+    assert md.coSimulation.canGetAndSetFMUstate and md.coSimulation.canSerializeFMUstate
+    names = {v.name for v in md.modelVariables}
+    assert set(OUTPUTS) <= names and {"omega", "F_y", "T_oil", "bearing", "lubricant", "Pd"} <= names
+    units = {u.name for u in md.unitDefinitions}
+    for v in md.modelVariables:
+        assert v.description, v.name
+        if v.type == "Real":
+            assert v.unit in units, v.name
+        if v.causality == "output":
+            assert v.initial == "exact", v.name
+
+
+def _ramp():
+    t = np.linspace(0.0, 2.0, 21)
+    return t, 800.0 * t, 1000.0 + 1500.0 * t
+
+
+def test_simulate_fmu_equals_python_model(analytic_fmu):
+    t, omega, load = _ramp()
+    signals = np.array([(a, b, c, 333.15) for a, b, c in zip(t, omega, load)],
+                       dtype=[("time", float), ("omega", float), ("F_y", float), ("T_oil", float)])
+    res = simulate_fmu(str(analytic_fmu), stop_time=2.0, output_interval=0.1, input=signals, output=OUTPUTS)
+    model = BearingModel()
+    assert len(res) == 21
+    for row in res:
+        # outputs at t_n come from the step [t_(n-1), t_n] with the inputs held at t_(n-1)
+        # (zero-order hold of the master); row 0 holds the initialisation with the inputs at t = 0
+        n = max(int(round(row["time"] / 0.1)) - 1, 0)
+        ref = model.evaluate(omega[n], load[n], 333.15)
+        for name in OUTPUTS:
+            assert _close(float(row[name]), float(ref[name])), (row["time"], name, row[name], ref[name])
+
+
+def test_hand_written_loop_equals_python_model(analytic_fmu):
+    md = read_model_description(str(analytic_fmu))
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    unzip = extract(str(analytic_fmu))
+    fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzip, modelIdentifier=md.coSimulation.modelIdentifier,
+                    instanceName="loop")
+    model = BearingModel("6208", "guessasma_oil", Pd=5e-6)
+    try:
+        fmu.instantiate()
+        fmu.setupExperiment(startTime=0.0)
+        fmu.enterInitializationMode()
+        fmu.setReal([vr["Pd"]], [5e-6])
+        fmu.exitInitializationMode()
+        real_out = [n for n in OUTPUTS if n not in ("regime", "n_loaded")]
+        for n, (w, F, T) in enumerate([(0.0, 0.0, 313.15), (10.0, 10.0, 300.0), (-500.0, 3000.0, 313.15),
+                                       (1700.0, 7500.0, 350.0), (3000.0, 500.0, 400.0)]):
+            fmu.setReal([vr["omega"], vr["F_y"], vr["T_oil"]], [w, F, T])
+            fmu.doStep(n * 0.5, 0.5)
+            got = dict(zip(real_out, fmu.getReal([vr[k] for k in real_out])))
+            got.update(zip(["regime", "n_loaded"], fmu.getInteger([vr["regime"], vr["n_loaded"]])))
+            ref = model.evaluate(w, F, T)
+            for name in OUTPUTS:
+                assert _close(got[name], ref[name]), (w, F, T, name, got[name], ref[name])
+        fmu.terminate()
+    finally:
+        fmu.freeInstance()
+        shutil.rmtree(unzip, ignore_errors=True)
+
+
+def test_state_round_trip_is_exact(analytic_fmu):
+    md = read_model_description(str(analytic_fmu))
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    unzip = extract(str(analytic_fmu))
+    fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzip, modelIdentifier=md.coSimulation.modelIdentifier,
+                    instanceName="state")
+    real_out = [vr[n] for n in OUTPUTS if n not in ("regime", "n_loaded")]
+    try:
+        fmu.instantiate()
+        fmu.setupExperiment(startTime=0.0)
+        fmu.enterInitializationMode()
+        fmu.exitInitializationMode()
+        fmu.setReal([vr["omega"], vr["F_y"]], [500.0, 3000.0])
+        fmu.doStep(0.0, 1.0)
+        saved_values = fmu.getReal(real_out)
+        state = fmu.getFMUstate()
+        blob = fmu.serializeFMUstate(state)
+        fmu.setReal([vr["omega"], vr["F_y"]], [1200.0, 6000.0])
+        fmu.doStep(1.0, 1.0)
+        assert fmu.getReal(real_out) != saved_values
+        fmu.setFMUstate(state)
+        assert fmu.getReal(real_out) == saved_values
+        assert fmu.getReal([vr["omega"], vr["F_y"]]) == [500.0, 3000.0]
+        fmu.setReal([vr["omega"]], [50.0])
+        fmu.setFMUstate(fmu.deSerializeFMUstate(blob))
+        assert fmu.getReal(real_out) == saved_values
+        fmu.doStep(1.0, 1.0)  # stepping from the restored state reproduces the saved result
+        assert fmu.getReal(real_out) == saved_values
+        fmu.freeFMUstate(state)
+        fmu.terminate()
+    finally:
+        fmu.freeInstance()
+        shutil.rmtree(unzip, ignore_errors=True)
+
+
+def test_bad_inputs_are_reported_and_host_survives(analytic_fmu):
+    report = _probe(analytic_fmu, "bad_inputs")
+    for case, result in report["results"].items():
+        if case == "recovered":
+            assert result["status"] == 0 and result["outputs"][0] > 0
+            continue
+        assert result["status"] in (2, 3), case            # fmi2Discard / fmi2Error, never fatal
+    texts = [m["message"] for m in report["messages"]]
+    assert any("omega = nan" in t and "allowed range" in t for t in texts)
+    assert any("T_oil = 0.0 K" in t and "[233.15, 473.15] K" in t for t in texts)
+    assert any("F_y = inf" in t for t in texts)
+    assert any("material limit" in t for t in texts)
+    assert all(m["status"] == 3 for m in report["messages"])  # logged as fmi2Error
+
+
+def test_unknown_bearing_is_reported(analytic_fmu):
+    report = _probe(analytic_fmu, "unknown_bearing")
+    assert report["status"] == 2
+    assert any("unknown bearing 'no_such_bearing'" in m["message"] for m in report["messages"])
+
+
+def test_percent_in_message_cannot_crash_host(analytic_fmu):
+    """pythonfmu passes log messages as printf formats: '%' is escaped to '%%' (FMI format string)."""
+    report = _probe(analytic_fmu, "percent_in_name")
+    assert report["status"] == 2
+    assert any("100%%_bearing_%%s_%%d" in m["message"] for m in report["messages"])
+
+
+def test_thirty_fresh_processes_exit_cleanly(analytic_fmu):
+    for _ in range(30):
+        report = _probe(analytic_fmu, "simulate")
+        assert report["status"] == 0
+        assert 2.12 <= report["Lambda_outer"] <= 2.15
+
+
+def test_many_instances_in_one_process(analytic_fmu):
+    """Ten sequential and three simultaneous instances in one process (a closed loop holds several
+    bearings). Guards the workaround for pythonfmu 0.7's extra Py_DECREF of the slave module's
+    namespace at each fmi2Instantiate (docs/decisions.md), which broke the third instance."""
+    md = read_model_description(str(analytic_fmu))
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+
+    def open_instance(name):
+        unzip = extract(str(analytic_fmu))
+        fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzip, modelIdentifier=md.coSimulation.modelIdentifier,
+                        instanceName=name)
+        fmu.instantiate()
+        fmu.setupExperiment(startTime=0.0)
+        fmu.enterInitializationMode()
+        fmu.exitInitializationMode()
+        return fmu, unzip
+
+    def close(fmu, unzip):
+        fmu.terminate()
+        fmu.freeInstance()
+        shutil.rmtree(unzip, ignore_errors=True)
+
+    for n in range(10):
+        close(*open_instance(f"seq{n}"))
+    group = [open_instance(f"par{n}") for n in range(3)]
+    for n, (fmu, _) in enumerate(group):
+        fmu.setReal([vr["omega"], vr["F_y"]], [100.0 * (n + 1), 3000.0])
+        fmu.doStep(0.0, 1.0)
+    lambdas = [fmu.getReal([vr["Lambda_outer"]])[0] for fmu, _ in group]
+    assert lambdas[0] < lambdas[1] < lambdas[2]  # each instance keeps its own inputs
+    for item in group:
+        close(*item)

@@ -1,0 +1,107 @@
+"""Twin of bearing_fmu.kernels.analytic: the analytic bearing as a plain loop over the balls.
+
+Calls only the other twins (never a kernel). Deep-groove bearing (contact angle 0), outer ring
+fixed, radial load along psi = 0 (SPEC 4.1-4.6):
+1. oil state (ref_lubricant), pure-rolling kinematics (ref_geometry), centrifugal force on the
+   outer contacts if switched on;
+2. load-deflection constant K of the inner and outer Hertz contacts in series (ref_hertz), radial
+   shift delta_r carrying F_r in the continuous Sjovall form (ref_loaddist, quad + brentq);
+3. ball j at psi_j = 2 pi j / Z: Q_i = K (delta_r cos psi_j - P_d/2)_+^1.5, Q_o = Q_i + F_c; per
+   contact Hertz, EHL film, film parameter and, if loaded, capacitance; ball = inner and outer
+   contacts in series, bearing = balls in parallel plus the background term;
+4. race summaries over the loaded contacts (minimum film parameter and film thickness; 0 when a
+   race has no loaded contact), worst regime, largest loads and pressure, count of balls loaded
+   on both races.
+The brg and lub arrays are read through the kernels' layout constants (B_*, LUB_*) only; the Hertz
+coefficients (k, E, K) are taken from brg as the kernel does (they are its inputs; the unit test
+checks them separately against ref_hertz).
+"""
+import math
+
+from bearing_fmu.kernels import analytic as ak  # layout constants (B_*) only
+from bearing_fmu.kernels import lubricant as lk  # layout constants (LUB_*) only
+
+from . import ref_capacitance, ref_ehl, ref_geometry, ref_hertz, ref_loaddist, ref_lubricant
+
+BALL_ROWS = ("Q_i", "Q_o", "h_min_i", "h_min_o", "Lambda_i", "Lambda_o", "C_i", "C_o")
+
+
+def analytic_bearing(omega, F_r, T_oil, brg, lub):
+    """Returns (out, balls): out maps the lower-case O_* names of kernels.analytic without the
+    'O_' prefix (e.g. 'lambda_i' for O_LAMBDA_I) to values; balls maps BALL_ROWS (the rows of the
+    kernel's work array, in order) to lists over the balls. 'iter' (the kernel's Newton iteration
+    count) has no twin: it is None here."""
+    Z = int(brg[ak.B_Z])
+    D, dm, Pd, E_red = brg[ak.B_D], brg[ak.B_DM], brg[ak.B_PD], brg[ak.B_E_RED]
+    race = {
+        "i": dict(Rx=brg[ak.B_RX_I], Ry=brg[ak.B_RY_I], k=brg[ak.B_K_I], E=brg[ak.B_EE_I],
+                  K=brg[ak.B_KK_I], sigma=brg[ak.B_SIGMA_I]),
+        "o": dict(Rx=brg[ak.B_RX_O], Ry=brg[ak.B_RY_O], k=brg[ak.B_K_O], E=brg[ak.B_EE_O],
+                  K=brg[ak.B_KK_O], sigma=brg[ak.B_SIGMA_O]),
+    }
+    film_code = int(brg[ak.B_FILM])
+    pressure_choice = int(brg[ak.B_PRESSURE])
+    h_floor = brg[ak.B_H_FLOOR]
+
+    eta, xi, rho0 = ref_lubricant.lubricant_state(T_oil, lub)
+    K_cm = ref_lubricant.clausius_mossotti_constant(lub[lk.LUB_EPS_R0], rho0)
+    omega_cage, _, omega_ball, u = ref_geometry.rolling_kinematics(omega, D, dm, 0.0)
+    F_c = ref_geometry.centrifugal_force(brg[ak.B_M_BALL], dm, omega_cage) if brg[ak.B_CENTRIFUGAL] > 0.5 else 0.0
+
+    stiff = {s: ref_hertz.hertz_stiffness(c["Rx"], c["Ry"], E_red, c["k"], c["E"], c["K"]) for s, c in race.items()}
+    K = ref_hertz.series_stiffness(stiff["i"], stiff["o"])
+    delta_r = ref_loaddist.solve_radial_shift(F_r, Pd, K, Z)
+
+    balls = {name: [] for name in BALL_ROWS}
+    loaded = {"i": [], "o": []}  # (Lambda, h_min, h_c) of the loaded contacts of each race
+    pressures = []
+    C_bearing = brg[ak.B_C_BACKGROUND]
+    n_loaded = 0
+    for j in range(Z):
+        psi = 2.0 * math.pi * j / Z
+        compression = delta_r * math.cos(psi) - Pd / 2.0
+        Q_i = K * compression ** 1.5 if compression > 0.0 else 0.0
+        loads = {"i": Q_i, "o": Q_i + F_c}
+        C = {}
+        for s, c in race.items():
+            Q = loads[s]
+            a_y, b_x, _, p_max = ref_hertz.hertz_contact(Q, c["Rx"], c["Ry"], E_red, c["k"], c["E"], c["K"])
+            h_c, h_min = ref_ehl.film_thickness(film_code, eta, xi, E_red, u, Q, c["Rx"], c["Ry"], c["k"])
+            lam = ref_ehl.film_parameter(h_min, c["sigma"])
+            C[s] = 0.0
+            if Q > 0.0:
+                eps_r = ref_capacitance.contact_permittivity(K_cm, rho0, p_max, pressure_choice)
+                C[s] = ref_capacitance.contact_capacitance(eps_r, a_y, b_x, h_c, h_floor)
+                loaded[s].append((lam, h_min, h_c))
+            pressures.append(p_max)
+            balls[f"h_min_{s}"].append(h_min)
+            balls[f"Lambda_{s}"].append(lam)
+            balls[f"C_{s}"].append(C[s])
+            balls[f"Q_{s}"].append(Q)
+        if loads["i"] > 0.0 and loads["o"] > 0.0:
+            n_loaded += 1
+        C_bearing += ref_capacitance.ball_capacitance(C["i"], C["o"])
+
+    def race_minima(s):
+        if not loaded[s]:
+            return 0.0, 0.0, 0.0  # no loaded contact on this race: no film to speak of
+        return tuple(min(values) for values in zip(*loaded[s]))
+
+    lam_i, hmin_i, hc_i = race_minima("i")
+    lam_o, hmin_o, hc_o = race_minima("o")
+    out = {
+        "lambda_i": lam_i, "lambda_o": lam_o,
+        "hmin_i": hmin_i, "hmin_o": hmin_o,
+        "regime": ref_ehl.lubrication_regime(min(lam_i, lam_o)),
+        "c_bearing": C_bearing,
+        "qmax_i": max(balls["Q_i"]), "qmax_o": max(balls["Q_o"]),
+        "pmax": max(pressures),
+        "omega_cage": omega_cage, "omega_ball": omega_ball,
+        "n_loaded": n_loaded,
+        "delta_r": delta_r,
+        "eps": ref_loaddist.load_parameter(delta_r, Pd),
+        "hc_i": hc_i, "hc_o": hc_o,
+        "eta": eta, "xi": xi,
+        "iter": None,
+    }
+    return out, balls
