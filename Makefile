@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test fmus bench report clean
+.PHONY: demo test fmus bench clean
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -23,9 +23,6 @@ test: fmus
 
 bench: fmus
 	$(BIN)/python -m benchmarks.run_all
-
-report: $(STAMP)
-	$(BIN)/python -m benchmarks.ehl_film_table
 
 clean:
 	rm -rf $(VENV) fmus/*.fmu results .pytest_cache

@@ -31,7 +31,7 @@ def curvature_radii(D, dm, f_i, f_o, alpha):
 
 
 def free_contact_angle(D, f_i, f_o, Pd):
-    """alpha0 = arccos(1 - P_d/(2A)), A = (f_i + f_o - 1) D; no clearance (P_d <= 0) -> 0.
+    """alpha0 = arccos(1 - P_d/(2A)), A = (f_i + f_o - 1) D (Harris ch. 2); no clearance (P_d <= 0) -> 0.
 
     Beyond P_d = 4A (more clearance than the grooves allow) the angle saturates at pi.
     """
@@ -40,7 +40,9 @@ def free_contact_angle(D, f_i, f_o, Pd):
         return 0.0
     if Pd >= 4.0 * A:
         return math.pi
-    return math.acos(1.0 - Pd / (2.0 * A))
+    # 1 - cos(alpha0) = 2 sin^2(alpha0/2) = P_d/(2A): the half-angle form stays accurate for tiny
+    # clearances, where arccos(1 - x) loses about eps/x of relative precision
+    return 2.0 * math.asin(math.sqrt(Pd / (4.0 * A)))
 
 
 def free_endplay(D, f_i, f_o, Pd):

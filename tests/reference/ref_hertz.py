@@ -30,8 +30,10 @@ def elliptic_integrals(m):
 def hertz_ratio_textbook(k):
     """Ry/Rx = (k^2 E(m) - K(m)) / (K(m) - E(m)), m = 1 - 1/k^2, as printed (k > 1).
 
-    Numerator and denominator both vanish like m as k -> 1: the quotient loses about
-    log10(1/m) digits there (6e-9 relative at Ry/Rx = 1 + 1e-9), so the solve uses hertz_ratio.
+    Ill-conditioned at both ends: numerator and denominator vanish like m as k -> 1 (about
+    log10(1/m) digits lost: 6e-9 relative at Ry/Rx = 1 + 1e-9), and for large k the rounding of
+    m = 1 - 1/k^2 perturbs 1 - m, on which K depends logarithmically (3e-11 at k = 1000).
+    The solve therefore uses hertz_ratio; the unit tests tie the two together in between.
     """
     m = 1.0 - 1.0 / k ** 2
     K = ellipk(m)
@@ -40,16 +42,15 @@ def hertz_ratio_textbook(k):
 
 
 def hertz_ratio(k):
-    """The same Hertz relation in Carlson's symmetric form, free of cancellation near k = 1.
+    """The same Hertz relation in Carlson's symmetric form, well conditioned for every k >= 1.
 
-    With K = R_F(0, 1-m, 1), E = R_F(0, 1-m, 1) - (m/3) R_D(0, 1-m, 1) and
-    E - (1-m) K = (m (1-m)/3) R_D(0, 1, 1-m) (DLMF 19.25.1), and k^2 = 1/(1-m):
-    K - E = (m/3) R_D(0, 1-m, 1),  k^2 E - K = (m/3) R_D(0, 1, 1-m),  so
-    Ry/Rx = R_D(0, 1, 1-m) / R_D(0, 1-m, 1)  (= 1 at k = 1). The unit tests check it against
-    hertz_ratio_textbook where the latter is well conditioned.
+    With q = 1 - m = 1/k^2 (DLMF 19.25.1): K = R_F(0, q, 1), K - E = (m/3) R_D(0, q, 1) and
+    E - q K = (m q / 3) R_D(0, 1, q), hence k^2 E - K = (E - q K)/q = (m/3) R_D(0, 1, q) and
+    Ry/Rx = R_D(0, 1, q) / R_D(0, q, 1)  (= 1 at k = 1): no difference of nearly equal numbers,
+    and q = 1/k^2 is passed without forming 1 - m.
     """
-    m = 1.0 - 1.0 / k ** 2
-    return float(elliprd(0.0, 1.0, 1.0 - m) / elliprd(0.0, 1.0 - m, 1.0))
+    q = 1.0 / k ** 2
+    return float(elliprd(0.0, 1.0, q) / elliprd(0.0, q, 1.0))
 
 
 def ellipticity_exact(Rx, Ry):

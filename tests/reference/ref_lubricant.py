@@ -47,15 +47,20 @@ def murnaghan_density(p, T, rho_R, T_R, a_v, beta_K, K_MM, K_prime):
 
 def _wlf_exponent(p, T, T_g0, A1, A2, b1, b2, C1, C2):
     """(ln(mu/mu_G), C2 + (T - T_g) F): the exponent of the WLF law and its denominator."""
-    T_g = T_g0 + A1 * math.log(1.0 + A2 * p)
-    F = (1.0 + b1 * p) ** b2
+    T_g = float(T_g0) + float(A1) * math.log(1.0 + float(A2) * p)
+    F = (1.0 + float(b1) * p) ** float(b2)
     x = (T - T_g) * F
-    return -2.303 * C1 * x / (C2 + x), C2 + x
+    denominator = float(C2) + x
+    if denominator == 0.0:
+        return math.inf, 0.0
+    return -2.303 * float(C1) * x / denominator, denominator
 
 
 def wlf_viscosity(p, T, mu_G, T_g0, A1, A2, b1, b2, C1, C2):
-    """mu(p, T) (Pa s) of the modified WLF law."""
+    """mu(p, T) (Pa s) of the modified WLF law (inf where it overflows, next to the glass singularity)."""
     exponent, _ = _wlf_exponent(p, T, T_g0, A1, A2, b1, b2, C1, C2)
+    if exponent > 709.0:
+        return math.inf
     return mu_G * math.exp(exponent)
 
 

@@ -1,0 +1,104 @@
+"""Scene validation, parameter-file validation and the facade's input checks (SPEC 2, 5.2, 5.3)."""
+import math
+
+import pytest
+
+from bearing_fmu.model import BearingModel, InputError
+from bearing_fmu.params import ParameterError, catalogue, load_bearing, load_lubricant
+from bearing_fmu.scene import Scene, SceneError
+
+
+def test_scene_reports_every_problem_at_once():
+    with pytest.raises(SceneError) as info:
+        Scene(fidelity="dem", film="nope", hertz="rough", roughness_factor=5.0).validate()
+    text = str(info.value)
+    for word in ("fidelity", "film", "hertz", "roughness_factor"):
+        assert word in text
+
+
+def test_scene_rejects_unknown_options():
+    with pytest.raises(SceneError, match="unknown scene option"):
+        Scene.from_dict({"films": "hamrock_dowson"})
+
+
+def test_capacitance_off_removes_its_output():
+    on = BearingModel(scene=Scene())
+    off = BearingModel(scene=Scene(capacitance=False))
+    assert "C_bearing" in {v.name for v in on.outputs}
+    assert "C_bearing" not in {v.name for v in off.outputs}
+    assert "C_bearing" not in off.evaluate(500.0, 3000.0, 313.15)
+    shared = set(off.evaluate(500.0, 3000.0, 313.15))
+    assert shared <= set(on.evaluate(500.0, 3000.0, 313.15))
+
+
+def test_every_catalogue_entry_loads():
+    assert {"6208", "6306", "B7214C"} <= set(catalogue("bearings"))
+    for name in catalogue("bearings"):
+        assert load_bearing(name).Z >= 3
+    for name in catalogue("lubricants"):
+        assert load_lubricant(name).array.shape == (24,)
+
+
+def _write(tmp_path, text):
+    path = tmp_path / "b.toml"
+    path.write_text(text)
+    return path
+
+
+BASE = (__import__("pathlib").Path(__file__).resolve().parents[2] / "bearing_fmu" / "params" / "bearings"
+        / "6208.toml").read_text()
+
+
+def test_missing_key_is_named(tmp_path):
+    text = BASE.replace('n_balls             = { value = 9, unit = "-", source = "Guessasma 2018 section 2: Z = 9" }\n', "")
+    with pytest.raises(ParameterError, match="missing key 'geometry.n_balls'"):
+        load_bearing(_write(tmp_path, text))
+
+
+def test_out_of_range_value_names_key_and_range(tmp_path):
+    text = BASE.replace("inner_conformity    = { value = 0.52", "inner_conformity    = { value = 0.45")
+    with pytest.raises(ParameterError, match=r"'geometry.inner_conformity' = 0.45 - is outside the allowed range \]0.5, 1.0\]"):
+        load_bearing(_write(tmp_path, text))
+
+
+def test_wrong_unit_is_named(tmp_path):
+    text = BASE.replace('ball_diameter       = { value = 12.6e-3, unit = "m"', 'ball_diameter       = { value = 12.6e-3, unit = "mm"')
+    with pytest.raises(ParameterError, match="'geometry.ball_diameter' has unit 'mm', expected 'm'"):
+        load_bearing(_write(tmp_path, text))
+
+
+def test_unknown_catalogue_name_lists_choices():
+    with pytest.raises(ParameterError, match="unknown bearing 'xyz'.*6208"):
+        load_bearing("xyz")
+
+
+def test_analytic_fidelity_refuses_angular_contact():
+    with pytest.raises(InputError, match="deep-groove"):
+        BearingModel("B7214C", "iso_vg68_mineral")
+
+
+@pytest.mark.parametrize("omega, F_y, T_oil, word", [
+    (math.nan, 100.0, 313.0, "omega"), (1e6, 100.0, 313.0, "omega"), (10.0, math.inf, 313.0, "F_y"),
+    (10.0, 100.0, 0.0, "T_oil"), (10.0, 100.0, math.nan, "T_oil"), (10.0, 1e8, 313.0, "material limit"),
+])
+def test_bad_inputs_name_input_and_range(omega, F_y, T_oil, word):
+    with pytest.raises(InputError, match=word):
+        BearingModel().evaluate(omega, F_y, T_oil)
+
+
+def test_overload_warning_above_iso76_limit():
+    m = BearingModel()
+    out = m.evaluate(100.0, 40000.0, 313.15)
+    assert 4.2e9 < out["p_max"] <= 6e9
+    assert m.warnings and "ISO 76" in m.warnings[0]
+
+
+@pytest.mark.parametrize("omega, F_y", [(0.0, 0.0), (0.0, 3000.0), (1e-9, 1e-9), (-500.0, 3000.0), (6900.0, 100.0)])
+@pytest.mark.parametrize("Pd", [-50e-6, 0.0, 50e-6])
+def test_edge_inputs_give_finite_outputs(omega, F_y, Pd):
+    """Zero speed (no film: Lambda = 0, boundary), zero load with clearance/preload, reversal and the
+    speed limit all give finite outputs (SPEC 8: never a silent NaN)."""
+    out = BearingModel(Pd=Pd).evaluate(omega, F_y, 313.15)
+    assert all(math.isfinite(v) for v in out.values())
+    if omega == 0.0:
+        assert out["Lambda_inner"] == 0.0 and out["Lambda_outer"] == 0.0 and out["regime"] == 0
