@@ -33,7 +33,8 @@ class BearingAnalytic(Fmi2Slave):
                                          "bearing catalogue name (6208, 6306) or path of a bearing TOML file"))
         self.register_variable(parameter("lubricant", self.lubricant,
                                          "lubricant catalogue name or path of a lubricant TOML file"))
-        self.register_variable(parameter("Pd", self.Pd, "diametral clearance (negative = preload), |Pd| <= 0.02 D",
+        self.register_variable(parameter("Pd", self.Pd, "diametral clearance used by the model, overrides the "
+                                         "bearing file value (negative = preload), |Pd| <= 0.02 D",
                                          unit="m"))
         for var in INPUTS:
             setattr(self, var.name, INPUT_START[var.name])

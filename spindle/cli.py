@@ -58,11 +58,11 @@ def _plot(res, path):
         axes[0].axhline(level, color="grey", lw=0.8, ls="--")
     axes[0].set_ylabel("film parameter Lambda (-)")
     axes[0].legend()
-    axes[0].set_title("6208, F_r = 3 kN, P_d = 0, Guessasma oil (BearingAnalytic.fmu via fmpy)")
+    axes[0].set_title("6208, F_r = 3 kN, P_d = 0, Guessasma oil\n(BearingAnalytic.fmu driven by fmpy)")
     axes[1].step(w, res["regime"], where="post")
     axes[1].set_yticks([0, 1, 2], ["boundary", "mixed", "full film"])
     axes[1].set_ylabel("regime (worst contact)")
-    axes[2].plot(w, res["C_bearing"] * 1e12)
+    axes[2].semilogy(w, res["C_bearing"] * 1e12)  # spans 3 decades: film floor at rest -> full film
     axes[2].set_ylabel("bearing capacitance (pF)")
     axes[2].set_xlabel("inner-ring speed omega (rad/s)")
     fig.tight_layout()
