@@ -55,7 +55,7 @@ ANALYTIC_OUTPUTS = (
     Variable("omega_ball", "rad/s", "ball spin speed about its own axis in the fixed frame (pure rolling)"),
     Variable("n_loaded", "1", "number of balls loaded on both races", "integer"),
     Variable("y", "m", "radial displacement of the inner ring along F_y"),
-    Variable("epsilon", "1", "load parameter eps = (1 - P_d/(2 delta_r))/2 (inf-free: 1e6 cap)"),
+    Variable("epsilon", "1", "load parameter eps = (1 - P_d/(2 delta_r))/2, capped at 1e6 (centred preloaded ring)"),
 )
 CAPACITANCE_OUTPUTS = ("C_bearing",)
 
@@ -84,6 +84,9 @@ class BearingModel:
             raise InputError(f"Pd = {Pd} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m (|Pd| <= 0.02 D)")
         self.omega_max = DM_N_LIMIT / (b.dm * 1e3) * 2.0 * math.pi / 60.0
         self.brg = self._pack()
+        if min(self.brg[ak.B_SIGMA_I], self.brg[ak.B_SIGMA_O]) <= 0.0:
+            raise InputError(f"bearing '{b.name}': composite roughness sigma must be > 0 (Lambda = h_min/sigma); "
+                             f"give surface.inner_race_Ra / outer_race_Ra / ball_Ra > 0 m")
         self.nodes, self.weights = gauss_legendre(GAUSS_NODES)
         self._out = np.zeros(ak.O_SIZE)
         self.ball = np.zeros((8, b.Z))
@@ -162,7 +165,7 @@ class BearingModel:
             "omega_ball": out[ak.O_OMEGA_BALL],
             "n_loaded": int(out[ak.O_N_LOADED]),
             "y": sign * out[ak.O_DELTA_R],
-            "epsilon": min(out[ak.O_EPS], 1e6),
+            "epsilon": min(max(out[ak.O_EPS], -1e6), 1e6),
         }
         if not self.scene.capacitance:
             del values["C_bearing"]

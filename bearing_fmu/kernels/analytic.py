@@ -102,6 +102,10 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     K = series_stiffness(K_i, K_o)
     delta_r, iters = solve_radial_shift(F_r, Pd, K, Z, nodes, weights, brg[B_TOL])
 
+    loaded_i = False
+    loaded_o = False
+    # cos(2 pi j / Z) is not exactly 0 at 90 deg: a compression below this is rounding, not contact
+    d_zero = 1e-12 * (abs(delta_r) + abs(Pd))
     lam_i = math.inf
     lam_o = math.inf
     hmin_i = math.inf
@@ -114,9 +118,9 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     n_loaded = 0
     c_total = brg[B_C_BACKGROUND]
     for j in range(Z):
-        psi = 2.0 * math.pi * j / Z
+        psi = 2.0 * math.pi * min(j, Z - j) / Z  # mirror balls get bit-identical angles
         d = delta_r * math.cos(psi) - 0.5 * Pd
-        Q_i = K * d ** 1.5 if d > 0.0 else 0.0
+        Q_i = K * d ** 1.5 if d > d_zero else 0.0
         Q_o = Q_i + F_c
         a_i, b_i, _, p_i = hertz_contact(Q_i, Rx_i, Ry_i, E_red, brg[B_K_I], brg[B_EE_I], brg[B_KK_I])
         a_o, b_o, _, p_o = hertz_contact(Q_o, Rx_o, Ry_o, E_red, brg[B_K_O], brg[B_EE_O], brg[B_KK_O])
@@ -127,12 +131,14 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
         C_i = 0.0
         C_o = 0.0
         if Q_i > 0.0:
+            loaded_i = True
             eps_i = contact_permittivity(K_cm, rho0, p_i, int(brg[B_PRESSURE]))
             C_i = contact_capacitance(eps_i, a_i, b_i, hc_i, brg[B_H_FLOOR])
             lam_i = min(lam_i, L_i)
             hmin_i = min(hmin_i, hm_i)
             hc_i_min = min(hc_i_min, hc_i)
         if Q_o > 0.0:
+            loaded_o = True
             eps_o = contact_permittivity(K_cm, rho0, p_o, int(brg[B_PRESSURE]))
             C_o = contact_capacitance(eps_o, a_o, b_o, hc_o, brg[B_H_FLOOR])
             lam_o = min(lam_o, L_o)
@@ -154,11 +160,11 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
         ball[7, j] = C_o
 
     # a race without any loaded contact reports 0 film (documented: no EHL contact to speak of)
-    if lam_i == math.inf:
+    if not loaded_i:
         lam_i = 0.0
         hmin_i = 0.0
         hc_i_min = 0.0
-    if lam_o == math.inf:
+    if not loaded_o:
         lam_o = 0.0
         hmin_o = 0.0
         hc_o_min = 0.0

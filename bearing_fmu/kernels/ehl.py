@@ -84,7 +84,13 @@ def film_thickness(formula, eta, xi, E_red, u, Q, Rx, Ry, k):
 
 @njit(cache=True)
 def film_parameter(h_min, sigma):
-    """Film parameter Lambda = h_min / sigma (-); sigma (m) composite roughness; inf if sigma = 0."""
+    """Film parameter Lambda = h_min / sigma (-); sigma (m) composite roughness.
+
+    No film (h_min = 0) gives 0 (boundary, SPEC 4.4) even on ideally smooth surfaces; a film on
+    ideally smooth surfaces (sigma = 0) gives inf.
+    """
+    if h_min <= 0.0:
+        return 0.0
     if sigma <= 0.0:
         return math.inf
     return h_min / sigma

@@ -55,11 +55,12 @@ def free_endplay(D, f_i, f_o, Pd):
 def rolling_kinematics(omega, D, dm, alpha):
     """Pure-rolling speeds for inner-ring speed omega (rad/s), outer ring fixed.
 
-    Returns (omega_cage, omega_ball_rel, omega_ball_fixed, u_entrain):
+    Returns (omega_cage, omega_ball_rel, omega_ball_fixed, u_entrain), all signed like omega:
     cage speed omega (1 - gamma)/2 (rad/s); ball spin relative to the cage
-    (d_m / 2D)(1 - gamma^2) omega (rad/s); ball spin in the fixed frame, omega_ball_rel - omega_cage
-    (rad/s; opposite sense to the cage, magnitude reported); entrainment (mean rolling) speed
-    u = omega d_m (1 - gamma^2) / 4 (m/s), the same at both races.
+    (d_m / 2D)(1 - gamma^2) omega (rad/s); ball spin in the fixed frame omega_ball_rel - omega_cage
+    (rad/s; the ball turns in the opposite sense to the cage; exact for alpha = 0, where both spins
+    share one axis); entrainment (mean rolling) speed u = omega d_m (1 - gamma^2) / 4 (m/s), the same
+    at both races.
     """
     g = gamma_ratio(D, dm, alpha)
     omega_cage = 0.5 * omega * (1.0 - g)

@@ -131,6 +131,8 @@ def hertz_contact(Q, Rx, Ry, E_red, k_yx, ell_E, ell_K):
     minor = (6.0 * ell_E * Q * R / (math.pi * k * E_red)) ** (1.0 / 3.0)
     t = Q / (math.pi * k * E_red)
     delta = ell_K * (4.5 / (ell_E * R) * t * t) ** (1.0 / 3.0)
+    if major * minor <= 0.0:
+        return 0.0, 0.0, 0.0, 0.0  # a load so small (< ~1e-300 N) that the contact area underflows
     p_max = 1.5 * Q / (math.pi * major * minor)
     if k_yx >= 1.0:
         return major, minor, delta, p_max

@@ -50,7 +50,9 @@ def loaded_half_angle(eps):
 
 @njit(cache=True)
 def radial_integral(eps, nodes, weights):
-    """Sjovall radial integral J_r(eps) (-) for load parameter eps > 0."""
+    """Sjovall radial integral J_r(eps) (-) for load parameter eps (0 for eps <= 0: no ball loaded)."""
+    if eps <= 0.0:
+        return 0.0
     psi_l = loaded_half_angle(eps)
     total = 0.0
     for i in range(nodes.shape[0]):
@@ -64,9 +66,15 @@ def radial_integral(eps, nodes, weights):
 
 @njit(cache=True)
 def load_parameter(delta_r, Pd):
-    """Load parameter eps = (1 - P_d/(2 delta_r))/2 (-); inf for delta_r = 0 with preload."""
+    """Load parameter eps = (1 - P_d/(2 delta_r))/2 (-).
+
+    Limits at delta_r -> 0+: 1/2 without clearance (for any shift), +inf with preload, -inf with
+    clearance (never reached by the model: with clearance the ring rests at delta_r = P_d/2, eps = 0).
+    """
+    if Pd == 0.0:
+        return 0.5
     if delta_r <= 0.0:
-        return math.inf
+        return math.inf if Pd < 0.0 else -math.inf
     return 0.5 * (1.0 - Pd / (2.0 * delta_r))
 
 
@@ -86,12 +94,14 @@ def radial_force_and_slope(delta_r, Pd, K, Z, nodes, weights):
     Continuous-ball (integral) form: F_r = Z/(2 pi) int K (delta_r cos psi - P_d/2)_+^1.5 cos psi dpsi.
     """
     if delta_r <= 0.0:
-        c = 1.0
+        if Pd >= 0.0:
+            return 0.0, 0.0      # no ball compressed
+        psi_l = math.pi          # centred preloaded ring: every ball compressed
     else:
         c = Pd / (2.0 * delta_r)
-    if c >= 1.0:
-        return 0.0, 0.0
-    psi_l = math.pi if c <= -1.0 else math.acos(c)
+        if c >= 1.0:
+            return 0.0, 0.0
+        psi_l = math.pi if c <= -1.0 else math.acos(c)
     force = 0.0
     slope = 0.0
     for i in range(nodes.shape[0]):
@@ -103,6 +113,8 @@ def radial_force_and_slope(delta_r, Pd, K, Z, nodes, weights):
             force += weights[i] * d * sd * cp
             slope += weights[i] * 1.5 * sd * cp * cp
     scale = Z * K * psi_l / (2.0 * math.pi)
+    if delta_r <= 0.0:
+        force = 0.0  # centred ring: the ball forces cancel exactly by symmetry
     return force * scale, slope * scale
 
 
@@ -120,6 +132,9 @@ def solve_radial_shift(F_r, Pd, K, Z, nodes, weights, tol):
     hi = lo + (F_r / K) ** (2.0 / 3.0) + abs(Pd)
     while radial_force_and_slope(hi, Pd, K, Z, nodes, weights)[0] < F_r:
         hi *= 2.0
+    # with preload the balls' forces cancel around the ring: the residual cannot be resolved below
+    # the rounding of that internal force (a few eps x Z K |P_d/2|^1.5), so the tolerance has that floor
+    f_tol = max(tol * F_r, 8.0 * 2.220446049250313e-16 * Z * K * abs(0.5 * Pd) ** 1.5)
     x = 0.5 * (lo + hi)
     for it in range(1, 200):
         f, df = radial_force_and_slope(x, Pd, K, Z, nodes, weights)
@@ -128,7 +143,7 @@ def solve_radial_shift(F_r, Pd, K, Z, nodes, weights, tol):
             hi = x
         else:
             lo = x
-        if abs(r) <= tol * F_r or hi - lo <= 1e-15 * hi:
+        if abs(r) <= f_tol or hi - lo <= 1e-15 * hi:
             return x, it
         x_new = x - r / df if df > 0.0 else 0.5 * (lo + hi)
         if not (lo < x_new < hi):

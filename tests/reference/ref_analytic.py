@@ -60,6 +60,10 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
     for j in range(Z):
         psi = 2.0 * math.pi * j / Z
         compression = delta_r * math.cos(psi) - Pd / 2.0
+        # model convention: a compression below 1e-12 (delta_r + |P_d|) is rounding of cos(psi) at
+        # 90 deg, not contact (the ball on the edge of the zone carries no load in exact arithmetic)
+        if compression <= 1e-12 * (abs(delta_r) + abs(Pd)):
+            compression = 0.0
         Q_i = K * compression ** 1.5 if compression > 0.0 else 0.0
         loads = {"i": Q_i, "o": Q_i + F_c}
         C = {}

@@ -5,8 +5,14 @@ delta_psi = delta_r cos(psi) - P_d/2 and carries Q = K (delta_psi)_+^1.5. With
 eps = (1 - P_d/(2 delta_r))/2 the distribution is Q_psi = Q_max [1 - (1 - cos psi)/(2 eps)]^1.5,
 the loaded arc is |psi| <= psi_l with cos(psi_l) = 1 - 2 eps, and for a continuum of Z balls
 F_r = Z/(2 pi) int K (delta_psi)_+^1.5 cos(psi) dpsi = Z J_r(eps) Q_max. The integrals are taken
-with scipy.integrate.quad over the loaded arc (the (psi_l - psi)^1.5 end point is handled by
-QUADPACK's extrapolation) and the radial shift by scipy.optimize.brentq.
+with scipy.integrate.quad over the loaded arc (the algebraic end point is handled by QUADPACK's
+extrapolation) and the radial shift by scipy.optimize.brentq.
+
+Three rewritings keep the twin accurate where the printed forms lose digits (each is checked
+against the printed form by the unit tests): 1 - cos psi = 2 sin^2(psi/2) (tiny eps, light loads
+with clearance); the loaded half-angle from sin^2(psi_l/2) = eps; and integration by parts of
+int g cos psi = -int g' sin psi (boundary terms vanish), whose integrand is positive, for
+eps >> 1 (heavy preload, J_r ~ 3/(8 eps)) where the printed integral is a small difference.
 """
 import math
 
@@ -14,7 +20,10 @@ import numpy as np
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
-QUAD_OPTS = dict(epsabs=0.0, epsrel=1e-13, limit=200)
+# integrands and integrals are O(1) after scaling; 1e-12 is 4 orders below the kernel error (1e-8)
+QUAD_OPTS = dict(epsabs=1e-14, epsrel=1e-12, limit=200)
+# the printed (cancelling) forms, kept to check the integrated-by-parts ones, reach less
+DIRECT_OPTS = dict(epsabs=1e-13, epsrel=1e-11, limit=200)
 
 
 def gauss_legendre(n):
@@ -23,27 +32,55 @@ def gauss_legendre(n):
 
 
 def loaded_half_angle(eps):
-    """psi_l: the Stribeck bracket 1 - (1 - cos psi)/(2 eps) vanishes at cos psi = 1 - 2 eps;
-    no ball loaded for eps <= 0, all for eps >= 1."""
+    """psi_l: the Stribeck bracket 1 - (1 - cos psi)/(2 eps) vanishes where 1 - cos psi = 2 eps,
+    i.e. sin^2(psi/2) = eps (half-angle form, accurate also for tiny eps); no ball loaded for
+    eps <= 0, all for eps >= 1."""
     if eps <= 0.0:
         return 0.0
     if eps >= 1.0:
         return math.pi
-    return math.acos(1.0 - 2.0 * eps)
+    return 2.0 * math.asin(math.sqrt(eps))
 
 
-def radial_integral(eps):
-    """J_r(eps) = 1/(2 pi) int_{-psi_l}^{psi_l} [1 - (1 - cos psi)/(2 eps)]^1.5 cos psi dpsi."""
+def radial_integral_direct(eps):
+    """J_r(eps) = 1/(2 pi) int_{-psi_l}^{psi_l} [1 - (1 - cos psi)/(2 eps)]^1.5 cos psi dpsi, as printed.
+
+    For eps >> 1 the integral is a small difference of O(1) contributions (J_r ~ 3/(8 eps)) and
+    loses about log10(eps) digits: radial_integral uses the equivalent form without cancellation.
+    """
     psi_l = loaded_half_angle(eps)
     if psi_l == 0.0:
         return 0.0
 
-    def integrand(psi):
-        base = 1.0 - (1.0 - math.cos(psi)) / (2.0 * eps)
+    def integrand(t):
+        psi = psi_l * t
+        base = 1.0 - math.sin(psi / 2.0) ** 2 / eps
         return max(base, 0.0) ** 1.5 * math.cos(psi)
 
-    value, _ = quad(integrand, -psi_l, psi_l, **QUAD_OPTS)
-    return value / (2.0 * math.pi)
+    value, _ = quad(integrand, -1.0, 1.0, **DIRECT_OPTS)
+    return value * psi_l / (2.0 * math.pi)
+
+
+def radial_integral(eps):
+    """J_r(eps), integrated by parts so that the integrand is positive:
+
+    with g = [1 - (1 - cos psi)/(2 eps)]^1.5, g' = -(3/(4 eps)) [.]^0.5 sin psi, and g sin psi = 0 at
+    both ends of the loaded arc (g = 0 there, or psi = +-pi), int g cos = -int g' sin, so
+      J_r = 1/(2 pi) (3/(4 eps)) int_{-psi_l}^{psi_l} [1 - (1 - cos psi)/(2 eps)]_+^0.5 sin^2 psi dpsi.
+    1 - cos psi is written 2 sin^2(psi/2) (accurate for tiny eps); the arc is mapped to
+    t = psi/psi_l in [-1, 1]. The unit tests check this against radial_integral_direct.
+    """
+    psi_l = loaded_half_angle(eps)
+    if psi_l == 0.0:
+        return 0.0
+
+    def integrand(t):
+        psi = psi_l * t
+        base = 1.0 - math.sin(psi / 2.0) ** 2 / eps
+        return max(base, 0.0) ** 0.5 * math.sin(psi) ** 2
+
+    value, _ = quad(integrand, -1.0, 1.0, **QUAD_OPTS)
+    return 3.0 / (4.0 * eps) * value * psi_l / (2.0 * math.pi)
 
 
 def load_parameter(delta_r, Pd):
@@ -59,27 +96,58 @@ def load_parameter(delta_r, Pd):
 
 
 def stribeck_load(psi, Q_max, eps):
-    """Q_psi = Q_max [1 - (1 - cos psi)/(2 eps)]_+^1.5."""
-    base = 1.0 - (1.0 - math.cos(psi)) / (2.0 * eps)
+    """Q_psi = Q_max [1 - (1 - cos psi)/(2 eps)]_+^1.5 (1 - cos psi = 2 sin^2(psi/2))."""
+    base = 1.0 - math.sin(psi / 2.0) ** 2 / eps
     return Q_max * max(base, 0.0) ** 1.5
 
 
+def _compression(psi, delta_r, Pd):
+    """delta_r cos psi - P_d/2 written (delta_r - P_d/2) - 2 delta_r sin^2(psi/2): the first
+    difference is exact when delta_r is close to P_d/2 (Sterbenz), the rest has no cancellation."""
+    return (delta_r - Pd / 2.0) - 2.0 * delta_r * math.sin(psi / 2.0) ** 2
+
+
 def _loaded_arc(delta_r, Pd):
-    """Half-angle of the arc where delta_r cos psi > P_d/2 (0: no ball loaded, pi: all loaded)."""
+    """Half-angle of the arc where delta_r cos psi > P_d/2 (0: no ball loaded, pi: all loaded):
+    sin^2(psi_l/2) = (delta_r - P_d/2) / (2 delta_r)."""
     if delta_r - Pd / 2.0 <= 0.0:      # not even the ball at psi = 0 is compressed
         return 0.0
     if -delta_r - Pd / 2.0 > 0.0:      # even the ball at psi = pi is compressed
         return math.pi
-    return math.acos(Pd / (2.0 * delta_r))
+    return 2.0 * math.asin(math.sqrt((delta_r - Pd / 2.0) / (2.0 * delta_r)))
 
 
-def _radial_force(delta_r, Pd, K, Z):
+def radial_force_direct(delta_r, Pd, K, Z):
+    """F_r = Z/(2 pi) int K (delta_r cos psi - P_d/2)_+^1.5 cos psi dpsi as printed, by quad on
+    t = psi/psi_l in [-1, 1] with the compression scaled by its peak delta_r - P_d/2. With preload
+    and delta_r << |P_d| it is a small difference of large terms (see _radial_force)."""
     psi_l = _loaded_arc(delta_r, Pd)
     if psi_l == 0.0:
         return 0.0
-    value, _ = quad(lambda psi: K * max(delta_r * math.cos(psi) - Pd / 2.0, 0.0) ** 1.5 * math.cos(psi),
-                    -psi_l, psi_l, **QUAD_OPTS)
-    return Z * value / (2.0 * math.pi)
+    peak = delta_r - Pd / 2.0
+
+    def integrand(t):
+        psi = psi_l * t
+        return max(_compression(psi, delta_r, Pd) / peak, 0.0) ** 1.5 * math.cos(psi)
+
+    value, _ = quad(integrand, -1.0, 1.0, **DIRECT_OPTS)
+    return Z * K * peak ** 1.5 * value * psi_l / (2.0 * math.pi)
+
+
+def _radial_force(delta_r, Pd, K, Z):
+    """F_r integrated by parts (c = delta_r cos psi - P_d/2, dc/dpsi = -delta_r sin psi, c^1.5 sin psi
+    = 0 at both arc ends): int c^1.5 cos psi = 1.5 delta_r int c_+^0.5 sin^2 psi, a positive integrand."""
+    psi_l = _loaded_arc(delta_r, Pd)
+    if psi_l == 0.0:
+        return 0.0
+    peak = delta_r - Pd / 2.0
+
+    def integrand(t):
+        psi = psi_l * t
+        return max(_compression(psi, delta_r, Pd) / peak, 0.0) ** 0.5 * math.sin(psi) ** 2
+
+    value, _ = quad(integrand, -1.0, 1.0, **QUAD_OPTS)
+    return Z * K * 1.5 * delta_r * peak ** 0.5 * value * psi_l / (2.0 * math.pi)
 
 
 def radial_force_and_slope(delta_r, Pd, K, Z):
@@ -91,13 +159,15 @@ def radial_force_and_slope(delta_r, Pd, K, Z):
     psi_l = _loaded_arc(delta_r, Pd)
     if psi_l == 0.0:
         return 0.0, 0.0
+    peak = delta_r - Pd / 2.0
 
-    def compression(psi):
-        return max(delta_r * math.cos(psi) - Pd / 2.0, 0.0)
+    def integrand(t):
+        psi = psi_l * t
+        return max(_compression(psi, delta_r, Pd) / peak, 0.0) ** 0.5 * math.cos(psi) ** 2
 
-    slope, _ = quad(lambda psi: 1.5 * K * compression(psi) ** 0.5 * math.cos(psi) ** 2,
-                    -psi_l, psi_l, **QUAD_OPTS)
-    return _radial_force(delta_r, Pd, K, Z), Z * slope / (2.0 * math.pi)
+    value, _ = quad(integrand, -1.0, 1.0, **QUAD_OPTS)
+    slope = 1.5 * Z * K * peak ** 0.5 * value * psi_l / (2.0 * math.pi)
+    return _radial_force(delta_r, Pd, K, Z), slope
 
 
 def solve_radial_shift(F_r, Pd, K, Z):
@@ -106,8 +176,10 @@ def solve_radial_shift(F_r, Pd, K, Z):
     lo = max(Pd / 2.0, 0.0)
     if F_r <= 0.0:
         return lo
-    hi = lo + 1e-9
-    while _radial_force(hi, Pd, K, Z) < F_r:
-        hi *= 2.0
-    return brentq(lambda d: _radial_force(d, Pd, K, Z) - F_r, lo, hi,
-                  xtol=1e-300, rtol=8.9e-16, maxiter=500)
+    # bracket: F_r(delta_r) <= Z K (delta_r - P_d/2)^1.5, so the root lies beyond lo + step; widen
+    # the step by doubling until the force is reached
+    step = (F_r / (Z * K)) ** (2.0 / 3.0)
+    while _radial_force(lo + step, Pd, K, Z) < F_r:
+        step *= 2.0
+    return brentq(lambda d: _radial_force(d, Pd, K, Z) - F_r, lo, lo + step,
+                  xtol=1e-300, rtol=8.9e-16, maxiter=5000)

@@ -29,7 +29,10 @@ def walther_constants(nu1, T1, nu2, T2):
 def walther_viscosity(T, A, B):
     """nu (m^2/s) = (10^(10^(A - B log10 T)) - 0.7) cSt."""
     z = A - B * math.log10(T)
-    nu_cst = 10.0 ** (10.0 ** z) - 0.7
+    try:
+        nu_cst = 10.0 ** (10.0 ** z) - 0.7
+    except OverflowError:  # beyond the float range (far extrapolation to the cold side)
+        return math.inf
     return nu_cst * 1e-6
 
 
