@@ -13,6 +13,7 @@ import json
 import shutil
 import subprocess
 import sys
+from contextlib import ExitStack, contextmanager
 from pathlib import Path
 
 import numpy as np
@@ -33,6 +34,29 @@ def _probe(fmu_path, scenario):
                           text=True, timeout=300)
     assert proc.returncode == 0, (proc.returncode, proc.stderr[-2000:])
     return json.loads(proc.stdout.strip().splitlines()[-1])
+
+
+@contextmanager
+def opened(fmu_path, name, parameters=None):
+    """An initialised FMU2Slave instance (own extraction), with a name -> value reference map;
+    terminated, freed and its extraction removed on exit."""
+    md = read_model_description(str(fmu_path))
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    unzip = extract(str(fmu_path))
+    fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzip, modelIdentifier=md.coSimulation.modelIdentifier,
+                    instanceName=name)
+    try:
+        fmu.instantiate()
+        fmu.setupExperiment(startTime=0.0)
+        fmu.enterInitializationMode()
+        for key, value in (parameters or {}).items():
+            fmu.setReal([vr[key]], [value])
+        fmu.exitInitializationMode()
+        yield fmu, vr
+        fmu.terminate()
+    finally:
+        fmu.freeInstance()
+        shutil.rmtree(unzip, ignore_errors=True)
 
 
 def _close(a, b, rel=1e-12):
@@ -80,18 +104,8 @@ def test_simulate_fmu_equals_python_model(analytic_fmu):
 
 
 def test_hand_written_loop_equals_python_model(analytic_fmu):
-    md = read_model_description(str(analytic_fmu))
-    vr = {v.name: v.valueReference for v in md.modelVariables}
-    unzip = extract(str(analytic_fmu))
-    fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzip, modelIdentifier=md.coSimulation.modelIdentifier,
-                    instanceName="loop")
     model = BearingModel("6208", "guessasma_oil", Pd=5e-6)
-    try:
-        fmu.instantiate()
-        fmu.setupExperiment(startTime=0.0)
-        fmu.enterInitializationMode()
-        fmu.setReal([vr["Pd"]], [5e-6])
-        fmu.exitInitializationMode()
+    with opened(analytic_fmu, "loop", {"Pd": 5e-6}) as (fmu, vr):
         real_out = [n for n in OUTPUTS if n not in ("regime", "n_loaded")]
         for n, (w, F, T) in enumerate([(0.0, 0.0, 313.15), (10.0, 10.0, 300.0), (-500.0, 3000.0, 313.15),
                                        (1700.0, 7500.0, 350.0), (3000.0, 500.0, 400.0)]):
@@ -102,24 +116,11 @@ def test_hand_written_loop_equals_python_model(analytic_fmu):
             ref = model.evaluate(w, F, T)
             for name in OUTPUTS:
                 assert _close(got[name], ref[name]), (w, F, T, name, got[name], ref[name])
-        fmu.terminate()
-    finally:
-        fmu.freeInstance()
-        shutil.rmtree(unzip, ignore_errors=True)
 
 
 def test_state_round_trip_is_exact(analytic_fmu):
-    md = read_model_description(str(analytic_fmu))
-    vr = {v.name: v.valueReference for v in md.modelVariables}
-    unzip = extract(str(analytic_fmu))
-    fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzip, modelIdentifier=md.coSimulation.modelIdentifier,
-                    instanceName="state")
-    real_out = [vr[n] for n in OUTPUTS if n not in ("regime", "n_loaded")]
-    try:
-        fmu.instantiate()
-        fmu.setupExperiment(startTime=0.0)
-        fmu.enterInitializationMode()
-        fmu.exitInitializationMode()
+    with opened(analytic_fmu, "state") as (fmu, vr):
+        real_out = [vr[n] for n in OUTPUTS if n not in ("regime", "n_loaded")]
         fmu.setReal([vr["omega"], vr["F_y"]], [500.0, 3000.0])
         fmu.doStep(0.0, 1.0)
         saved_values = fmu.getReal(real_out)
@@ -137,10 +138,6 @@ def test_state_round_trip_is_exact(analytic_fmu):
         fmu.doStep(1.0, 1.0)  # stepping from the restored state reproduces the saved result
         assert fmu.getReal(real_out) == saved_values
         fmu.freeFMUstate(state)
-        fmu.terminate()
-    finally:
-        fmu.freeInstance()
-        shutil.rmtree(unzip, ignore_errors=True)
 
 
 def test_bad_inputs_are_reported_and_host_survives(analytic_fmu):
@@ -182,31 +179,13 @@ def test_many_instances_in_one_process(analytic_fmu):
     """Ten sequential and three simultaneous instances in one process (a closed loop holds several
     bearings). Guards the workaround for pythonfmu 0.7's extra Py_DECREF of the slave module's
     namespace at each fmi2Instantiate (docs/decisions.md), which broke the third instance."""
-    md = read_model_description(str(analytic_fmu))
-    vr = {v.name: v.valueReference for v in md.modelVariables}
-
-    def open_instance(name):
-        unzip = extract(str(analytic_fmu))
-        fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzip, modelIdentifier=md.coSimulation.modelIdentifier,
-                        instanceName=name)
-        fmu.instantiate()
-        fmu.setupExperiment(startTime=0.0)
-        fmu.enterInitializationMode()
-        fmu.exitInitializationMode()
-        return fmu, unzip
-
-    def close(fmu, unzip):
-        fmu.terminate()
-        fmu.freeInstance()
-        shutil.rmtree(unzip, ignore_errors=True)
-
     for n in range(10):
-        close(*open_instance(f"seq{n}"))
-    group = [open_instance(f"par{n}") for n in range(3)]
-    for n, (fmu, _) in enumerate(group):
-        fmu.setReal([vr["omega"], vr["F_y"]], [100.0 * (n + 1), 3000.0])
-        fmu.doStep(0.0, 1.0)
-    lambdas = [fmu.getReal([vr["Lambda_outer"]])[0] for fmu, _ in group]
+        with opened(analytic_fmu, f"seq{n}"):
+            pass
+    with ExitStack() as stack:
+        group = [stack.enter_context(opened(analytic_fmu, f"par{n}")) for n in range(3)]
+        for n, (fmu, vr) in enumerate(group):
+            fmu.setReal([vr["omega"], vr["F_y"]], [100.0 * (n + 1), 3000.0])
+            fmu.doStep(0.0, 1.0)
+        lambdas = [fmu.getReal([vr["Lambda_outer"]])[0] for fmu, vr in group]
     assert lambdas[0] < lambdas[1] < lambdas[2]  # each instance keeps its own inputs
-    for item in group:
-        close(*item)
