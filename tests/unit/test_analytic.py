@@ -86,7 +86,7 @@ def xi_tolerance(T, lub):
     return 1.5 * 2e6 ** 4 / 180.0 * abs(f3) * rlub.wlf_alpha_star(T, *wlf) + 1e-10
 
 
-def compare(m, omega, F_r, T):
+def check_against_twin(m, omega, F_r, T):
     """Run kernel and twin and check every output and ball row against the propagated tolerances."""
     out, ball = run_kernel(m, omega, F_r, T)
     ref, balls = ra.analytic_bearing(omega, F_r, T, m.brg, m.lubricant.array)
@@ -149,7 +149,7 @@ def compare(m, omega, F_r, T):
 
 
 def test_twin_covers_every_output():
-    _, ref = compare(model("6208", "default", 0.0, "guessasma_oil"), 500.0, 3000.0, 313.0)
+    _, ref = check_against_twin(model("6208", "default", 0.0, "guessasma_oil"), 500.0, 3000.0, 313.0)
     assert set(OUTPUTS) == set(ref), set(OUTPUTS) ^ set(ref)
 
 
@@ -158,7 +158,7 @@ def test_twin_covers_every_output():
 @pytest.mark.parametrize("bearing", ["6208", "6306"])
 def test_analytic_on_grid(bearing, Pd, scene):
     for omega, F_r, T, lubricant in POINTS:
-        compare(model(bearing, scene, Pd, lubricant), omega, F_r, T)
+        check_against_twin(model(bearing, scene, Pd, lubricant), omega, F_r, T)
 
 
 @FAST
@@ -169,7 +169,7 @@ def test_analytic_on_grid(bearing, Pd, scene):
 def test_analytic_random(omega, F_r, T, Pd, bearing, scene, lubricant):
     """Magnitudes below 1 um/s-scale speeds, 1 uN and 1 nm clearance are physically zero and are left to
     the edge-case tests (they reach float underflow, e.g. test_subnormal_loads_do_not_crash)."""
-    compare(BearingModel(bearing, lubricant, SCENES[scene], Pd=Pd), omega, F_r, T)
+    check_against_twin(BearingModel(bearing, lubricant, SCENES[scene], Pd=Pd), omega, F_r, T)
 
 
 def test_bearing_array_matches_twin_geometry():
@@ -188,7 +188,7 @@ def test_bearing_array_matches_twin_geometry():
 def test_seed_case_6208():
     """SPEC 4.3/4.4/4.6: 6208, omega = 500 rad/s, F_r = 3 kN, P_d = 0, eta = 0.04 Pa s, xi = 2.3e-8 1/Pa:
     Q_max = 1457 N, Lambda_out at psi = 0 ~ 2.1-2.15, bearing capacitance of tens of pF."""
-    out, ref = compare(model("6208", "default", 0.0, "guessasma_oil"), 500.0, 3000.0, 313.0)
+    out, ref = check_against_twin(model("6208", "default", 0.0, "guessasma_oil"), 500.0, 3000.0, 313.0)
     assert out[ak.O_QMAX_I] == pytest.approx(1457.0, abs=0.5)
     assert 2.1 <= out[ak.O_LAMBDA_O] <= 2.15
     assert 10e-12 <= out[ak.O_C_BEARING] <= 500e-12
@@ -199,7 +199,7 @@ def test_seed_case_6208():
 def test_zero_speed():
     """u = 0: no film, Lambda = 0 on both races, boundary regime; capacitance bounded by the film floor."""
     m = model("6208", "default", 0.0, "guessasma_oil")
-    out, ref = compare(m, 0.0, 3000.0, 313.0)
+    out, ref = check_against_twin(m, 0.0, 3000.0, 313.0)
     for key in ("lambda_i", "lambda_o", "hmin_i", "hmin_o", "hc_i", "hc_o", "omega_cage", "omega_ball"):
         assert out[OUTPUTS[key]] == 0.0 == ref[key]
     assert out[ak.O_REGIME] == ek.REGIME_BOUNDARY
@@ -208,8 +208,8 @@ def test_zero_speed():
 
 def test_negative_speed_mirrors_kinematics_and_keeps_films():
     m = model("6208", "default", 12.6e-6, "iso_vg68_mineral")
-    fwd, _ = compare(m, 800.0, 3000.0, 330.0)
-    back, _ = compare(m, -800.0, 3000.0, 330.0)
+    fwd, _ = check_against_twin(m, 800.0, 3000.0, 330.0)
+    back, _ = check_against_twin(m, -800.0, 3000.0, 330.0)
     assert back[ak.O_OMEGA_CAGE] == -fwd[ak.O_OMEGA_CAGE] < 0.0
     assert back[ak.O_OMEGA_BALL] == -fwd[ak.O_OMEGA_BALL] < 0.0
     same = [v for k, v in OUTPUTS.items() if k not in ("omega_cage", "omega_ball")]
@@ -220,7 +220,7 @@ def test_no_load_with_clearance():
     """F_r = 0, P_d > 0: the ring rests at P_d/2, no ball is pinched (eps = 0); with centrifugal force
     the outer contacts still carry F_c but no ball conducts, so C_bearing is the background term."""
     m = model("6208", "mean_pressure_background", 12.6e-6, "guessasma_oil")
-    out, ref = compare(m, 500.0, 0.0, 313.0)
+    out, ref = check_against_twin(m, 500.0, 0.0, 313.0)
     assert out[ak.O_DELTA_R] == 6.3e-6 and out[ak.O_EPS] == 0.0 and out[ak.O_N_LOADED] == 0
     assert out[ak.O_QMAX_I] == 0.0 and out[ak.O_LAMBDA_I] == 0.0 and out[ak.O_HMIN_I] == 0.0
     assert out[ak.O_QMAX_O] > 0.0  # F_c on every outer contact
@@ -230,7 +230,7 @@ def test_no_load_with_clearance():
 def test_no_load_with_preload():
     """F_r = 0, P_d < 0: centred ring, every ball equally loaded (eps = inf, all balls loaded)."""
     m = model("6208", "default", -12.6e-6, "guessasma_oil")
-    out, ref = compare(m, 500.0, 0.0, 313.0)
+    out, ref = check_against_twin(m, 500.0, 0.0, 313.0)
     assert out[ak.O_DELTA_R] == 0.0 and out[ak.O_EPS] == math.inf and out[ak.O_N_LOADED] == 9
     _, ball = run_kernel(m, 500.0, 0.0, 313.0)
     assert np.all(ball[0] == ball[0][0]) and ball[0][0] > 0.0
@@ -238,7 +238,7 @@ def test_no_load_with_preload():
 
 def test_eps_above_one_loads_every_ball():
     m = model("6208", "default", -25e-6, "guessasma_oil")
-    out, _ = compare(m, 500.0, 1000.0, 313.0)
+    out, _ = check_against_twin(m, 500.0, 1000.0, 313.0)
     assert out[ak.O_EPS] >= 1.0 and out[ak.O_N_LOADED] == 9
 
 
@@ -260,7 +260,7 @@ def test_compiled_kernel_is_current():
 
 
 def test_eps_without_load_and_clearance():
-    out, ref = compare(model("6208", "default", 0.0, "guessasma_oil"), 500.0, 0.0, 313.0)
+    out, ref = check_against_twin(model("6208", "default", 0.0, "guessasma_oil"), 500.0, 0.0, 313.0)
     assert out[ak.O_EPS] == ref["eps"] == 0.5
 
 
