@@ -9,6 +9,7 @@ makes the cache hit across processes and across fmpy's fresh temporary extractio
 import argparse
 import csv
 import hashlib
+import math
 import shutil
 import sys
 import tempfile
@@ -17,6 +18,7 @@ from pathlib import Path
 from pythonfmu.builder import FmuBuilder
 
 from .model import BearingModel
+from .quasi_static import QuasiStaticModel
 from .scene import Scene
 
 PACKAGE_DIR = Path(__file__).resolve().parent
@@ -112,23 +114,39 @@ def build_fmu(scene_file, out_dir=DEFAULT_OUT):
     return Path(path)
 
 
-def reference_inputs():
-    """The reference experiment of the analytic scenes: a speed ramp at 3 kN, 40 C."""
-    return [(float(w), 3000.0, 313.15) for w in range(0, 1701, 50)]
+def reference_inputs(scene):
+    """The reference experiment of a scene (input dicts, SI): a speed ramp at constant load.
+
+    analytic: 6208 at 3 kN radial, 40 C, 0-1700 rad/s; quasi_static: B7214C at 800 N axial and
+    500 N radial (load drive) or at z = 20 um, x = 2 um (imposed), 40 C, 0-10 000 rpm."""
+    if scene.fidelity == "analytic":
+        return [{"omega": float(w), "F_y": 3000.0, "T_oil": 313.15} for w in range(0, 1701, 50)]
+    speeds = [n * 2.0 * math.pi / 60.0 for n in range(0, 10001, 500)]
+    if scene.drive == "displacement":
+        return [{"omega": w, "x": 2e-6, "z": 20e-6, "T_oil": 313.15} for w in speeds]
+    return [{"omega": w, "F_x": 500.0, "F_z": 800.0, "T_oil": 313.15} for w in speeds]
+
+
+def make_model(scene):
+    """The Python model of a scene with its FMU's default parameters."""
+    if scene.fidelity == "analytic":
+        return BearingModel(scene=scene)
+    return QuasiStaticModel(scene=scene)
 
 
 def write_reference(scene_dict, path):
     """Reference result of the Python model for the scene (regression data for users, SI units)."""
-    model = BearingModel(scene=Scene.from_dict(scene_dict))
+    scene = Scene.from_dict(scene_dict)
+    model = make_model(scene)
     rows = []
-    for omega, F_y, T_oil in reference_inputs():
-        out = model.evaluate(omega, F_y, T_oil)
-        rows.append({"omega": omega, "F_y": F_y, "T_oil": T_oil, **out})
+    for inputs in reference_inputs(scene):
+        out = model.evaluate(**inputs)
+        rows.append({**inputs, **out})
     with open(path, "w", newline="") as fh:
         writer = csv.DictWriter(fh, fieldnames=list(rows[0]))
         writer.writeheader()
         for row in rows:
-            writer.writerow({k: repr(v) for k, v in row.items()})
+            writer.writerow({k: repr(float(v)) if isinstance(v, float) else repr(v) for k, v in row.items()})
 
 
 def main(argv=None):

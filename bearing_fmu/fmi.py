@@ -5,7 +5,7 @@ in <UnitDefinitions> by its SI base-unit exponents.
 """
 from xml.etree.ElementTree import Element, SubElement
 
-from pythonfmu import Fmi2Causality, Fmi2Initial, Fmi2Variability, Integer, Real, String
+from pythonfmu import Boolean, Fmi2Causality, Fmi2Initial, Fmi2Variability, Integer, Real, String
 
 # SI base-unit exponents (FMI 2.0 BaseUnit attributes) of the units the FMUs use
 BASE_UNITS = {
@@ -57,9 +57,11 @@ def fmi_escape(message: str) -> str:
 
 
 def parameter(name, start, description, unit=None):
-    """A fixed parameter variable (Real with unit, or String when unit is None)."""
+    """A fixed parameter variable (Real with unit, Boolean for a bool start, or String when unit is None)."""
     kwargs = dict(causality=Fmi2Causality.parameter, variability=Fmi2Variability.fixed,
                   initial=Fmi2Initial.exact, start=start, description=description)
+    if isinstance(start, bool):
+        return Boolean(name, **kwargs)
     if unit is None:
         return String(name, **kwargs)
     return UnitReal(name, unit, **kwargs)
@@ -70,10 +72,10 @@ def input_variable(name, unit, start, description):
                     start=start, description=description)
 
 
-def output_variable(name, unit, description, integer=False, getter=None):
+def output_variable(name, unit, description, integer=False, getter=None, setter=None):
     """Output declared initial=exact (computed at initialisation), so `fmpy validate` is clean (SPEC 3)."""
     kwargs = dict(causality=Fmi2Causality.output, initial=Fmi2Initial.exact, description=description,
-                  getter=getter)
+                  getter=getter, setter=setter)
     if integer:
         return Integer(name, variability=Fmi2Variability.discrete, **kwargs)
     return UnitReal(name, unit, variability=Fmi2Variability.continuous, **kwargs)

@@ -1,66 +1,70 @@
-"""pythonfmu slave of the bearing model: a variables table and calls into BearingModel (SPEC 5).
+"""pythonfmu slaves of the bearing models: a variables table and calls into the model (SPEC 5).
 
-Thin on purpose: physics lives in the kernels, input checks in the model. Bad input never raises
-out of an FMI call (a Python exception becomes fmi2Fatal in pythonfmu): it is logged with its
-allowed range and reported as fmi2Error; the outputs keep their last valid values.
+Thin on purpose: physics lives in the kernels, input checks in the models. The model declares its
+inputs and outputs (bearing_fmu.model.Variable); the slave registers them, so the FMU and the
+Python model cannot drift. Bad input never raises out of an FMI call (a Python exception becomes
+fmi2Fatal in pythonfmu): it is logged with its allowed range and do_step returns False
+(fmi2Discard); the outputs keep their last valid values.
 """
 from pythonfmu import Fmi2Slave
 from pythonfmu.enums import Fmi2Status
 
 from .fmi import add_unit_definitions, fmi_escape, input_variable, output_variable, parameter
-from .model import INPUTS, BearingModel, InputError
+from .model import BearingModel, InputError
 from .params import ParameterError
+from .quasi_static import QuasiStaticModel
 from .scene import Scene, SceneError
 
-INPUT_START = {"omega": 0.0, "F_y": 0.0, "T_oil": 313.15}
+INPUT_START = {"T_oil": 313.15}  # every other input starts at 0 (at rest, unloaded, centred)
 
 
-class BearingAnalytic(Fmi2Slave):
-    """Analytic ball-bearing model (Stribeck/Sjovall + Hertz + EHL film + capacitance)."""
+class _BearingSlave(Fmi2Slave):
+    """Common FMI plumbing: parameters, inputs and outputs from the model, guarded calls, full state."""
 
     author = "bearing_fmu developers"
-    description = ("Radially loaded deep-groove ball bearing, analytic fidelity: Sjovall load distribution "
-                   "with clearance, exact Hertz contacts, Hamrock-Dowson EHL film, film parameter, regime, "
-                   "capacitance. SI units.")
     scene = Scene()
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
-        self.bearing = "6208"
-        self.lubricant = "guessasma_oil"
-        self.Pd = 0.0
-        self.register_variable(parameter("bearing", self.bearing,
-                                         "bearing catalogue name (6208, 6306) or path of a bearing TOML file"))
-        self.register_variable(parameter("lubricant", self.lubricant,
-                                         "lubricant catalogue name or path of a lubricant TOML file"))
-        self.register_variable(parameter("Pd", self.Pd, "diametral clearance used by the model, overrides the "
-                                         "bearing file value (negative = preload), |Pd| <= 0.02 D",
-                                         unit="m"))
-        for var in INPUTS:
-            setattr(self, var.name, INPUT_START[var.name])
-            self.register_variable(input_variable(var.name, var.unit, INPUT_START[var.name], var.description))
         self._model = None
         self._built_for = None
         self._ready = False
+        self._values = {}
+        self._declare_parameters()
         self._build_model()
+        for var in self._model.inputs:
+            setattr(self, var.name, INPUT_START.get(var.name, 0.0))
+            self.register_variable(input_variable(var.name, var.unit, INPUT_START.get(var.name, 0.0),
+                                                  var.description))
         for var in self._model.outputs:
-            setattr(self, var.name, 0 if var.kind == "integer" else 0.0)
-            self.register_variable(output_variable(var.name, var.unit, var.description, var.kind == "integer"))
+            self._values[var.name] = 0 if var.kind == "integer" else 0.0
+            self.register_variable(output_variable(
+                var.name, var.unit, var.description, var.kind == "integer",
+                getter=lambda n=var.name: self._values[n],
+                setter=lambda v, n=var.name: self._values.__setitem__(n, v)))
         self._update()  # start values of the outputs = the model at the default inputs
 
     # -- model ---------------------------------------------------------------------------------
+    def _declare_parameters(self):
+        raise NotImplementedError
+
+    def _model_key(self):
+        raise NotImplementedError
+
+    def _make_model(self):
+        raise NotImplementedError
+
     def _build_model(self):
-        key = (self.bearing, self.lubricant, float(self.Pd))
+        key = self._model_key()
         if self._built_for != key:
-            self._model = BearingModel(self.bearing, self.lubricant, self.scene, Pd=self.Pd)
+            self._model = self._make_model()
             self._built_for = key
 
     def _update(self):
-        values = self._model.evaluate(self.omega, self.F_y, self.T_oil)
+        values = self._model.evaluate(**{v.name: getattr(self, v.name) for v in self._model.inputs})
         for warning in self._model.warnings:
             self.log(fmi_escape(warning), Fmi2Status.warning)
-        for name, value in values.items():
-            setattr(self, name, value)
+        self._values.update(values)
 
     def _guarded(self, action):
         """Run action(); log a clear message and return False on bad input or parameters."""
@@ -86,9 +90,77 @@ class BearingAnalytic(Fmi2Slave):
                 return False
         return self._guarded(self._update)
 
+    def _get_fmu_state(self):
+        state = super()._get_fmu_state()
+        state["_solver_state"] = self._model.get_state() if self._model is not None else {}
+        return state
+
     def _set_fmu_state(self, state):
+        state = dict(state)
+        solver = state.pop("_solver_state", {})
         super()._set_fmu_state(state)
         self._ready = self._guarded(self._build_model)
+        if self._ready and solver:
+            self._model.set_state(solver)
 
     def to_xml(self, model_options=dict()):
         return add_unit_definitions(super().to_xml(model_options), self.vars.values())
+
+
+class BearingAnalytic(_BearingSlave):
+    """Analytic ball-bearing model (Stribeck/Sjovall + Hertz + EHL film + capacitance)."""
+
+    description = ("Radially loaded deep-groove ball bearing, analytic fidelity: Sjovall load distribution "
+                   "with clearance, exact Hertz contacts, Hamrock-Dowson EHL film, film parameter, regime, "
+                   "capacitance. SI units.")
+
+    def _declare_parameters(self):
+        self.bearing = "6208"
+        self.lubricant = "guessasma_oil"
+        self.Pd = 0.0
+        self.register_variable(parameter("bearing", self.bearing,
+                                         "bearing catalogue name (6208, 6306) or path of a bearing TOML file"))
+        self.register_variable(parameter("lubricant", self.lubricant,
+                                         "lubricant catalogue name or path of a lubricant TOML file"))
+        self.register_variable(parameter("Pd", self.Pd, "diametral clearance used by the model, overrides the "
+                                         "bearing file value (negative = preload), |Pd| <= 0.02 D",
+                                         unit="m"))
+
+    def _model_key(self):
+        return self.bearing, self.lubricant, float(self.Pd)
+
+    def _make_model(self):
+        return BearingModel(self.bearing, self.lubricant, self.scene, Pd=self.Pd)
+
+
+class BearingQuasiStatic(_BearingSlave):
+    """Quasi-static 5-DOF ball bearing (Jones/Harris) with film, capacitance, Houpert torque and stiffness."""
+
+    description = ("Ball bearing, quasi-static fidelity: 5-DOF inner-ring equilibrium with per-ball "
+                   "equilibrium (centrifugal force, gyroscopic moment, race control), exact Hertz contacts, "
+                   "5x5 stiffness, EHL film, regime, capacitance, Houpert friction torque and ring heat. SI units.")
+    scene = Scene(name="quasi_static", fidelity="quasi_static")
+
+    def _declare_parameters(self):
+        self.bearing = "B7214C"
+        self.lubricant = "iso_vg68_mineral"
+        self.Pd = 0.0
+        self.Pd_from_file = True
+        self.race_control = self.scene.race_control
+        self.register_variable(parameter("bearing", self.bearing, "bearing catalogue name (6208, 6306, B7214C) "
+                                         "or path of a bearing TOML file"))
+        self.register_variable(parameter("lubricant", self.lubricant,
+                                         "lubricant catalogue name or path of a lubricant TOML file"))
+        self.register_variable(parameter("Pd_from_file", self.Pd_from_file, "true: diametral clearance from the "
+                                         "bearing file; false: from the parameter Pd"))
+        self.register_variable(parameter("Pd", self.Pd, "diametral clearance used when Pd_from_file is false "
+                                         "(negative = preload), |Pd| <= 0.02 D", unit="m"))
+        self.register_variable(parameter("race_control", self.race_control, "ball race-control hypothesis: "
+                                         "outer | inner | hybrid (Rabreau 2018)"))
+
+    def _model_key(self):
+        return self.bearing, self.lubricant, bool(self.Pd_from_file), float(self.Pd), self.race_control
+
+    def _make_model(self):
+        Pd = None if self.Pd_from_file else self.Pd
+        return QuasiStaticModel(self.bearing, self.lubricant, self.scene, Pd=Pd, race_control=self.race_control)

@@ -116,6 +116,15 @@ class BearingModel:
         brg[ak.B_TOL] = s.tolerance
         return brg
 
+    inputs = INPUTS
+
+    def get_state(self):
+        """The analytic model is algebraic: no solver state beyond the FMU variables."""
+        return {}
+
+    def set_state(self, state):
+        pass
+
     @property
     def outputs(self):
         """Output variables of this scene (capacitance off removes C_bearing)."""

@@ -9,7 +9,9 @@ from dataclasses import dataclass, fields, replace
 from .kernels.capacitance import PRESSURE_MAX, PRESSURE_MEAN
 from .kernels.ehl import FILM_CHITTENDEN, FILM_HAMROCK_DOWSON, FILM_MASJEDI_KHONSARI
 
-FIDELITIES = ("analytic",)  # quasi_static and dem arrive with their issues
+FIDELITIES = ("analytic", "quasi_static")  # dem arrives with its issue
+DRIVES = ("load", "displacement", "fixed_axial")  # which DOFs are load- or displacement-controlled
+RACE_CONTROLS = ("outer", "inner", "hybrid")
 FILM_FORMULAS = {"hamrock_dowson": FILM_HAMROCK_DOWSON, "masjedi_khonsari": FILM_MASJEDI_KHONSARI,
                  "chittenden": FILM_CHITTENDEN}
 HERTZ_SOLUTIONS = ("exact", "approximate")
@@ -24,7 +26,16 @@ class SceneError(ValueError):
 class Scene:
     """Build-time model options.
 
-    fidelity: 'analytic' (Stribeck/Sjovall + Hertz + EHL, SPEC 4.3 analytic checks).
+    fidelity: 'analytic' (Stribeck/Sjovall + Hertz + EHL, SPEC 4.3 analytic checks) |
+        'quasi_static' (Jones/Harris 5-DOF ball equilibrium, SPEC 4.3).
+    drive (quasi_static): 'load' (loads in, displacements out), 'displacement' (displacements in,
+        reaction loads out) or 'fixed_axial' (radial loads and tilting moments in, axial position in:
+        a fixed-preload bearing).
+    race_control (quasi_static): default of the FMU parameter race_control, 'outer' | 'inner' | 'hybrid'.
+    gyroscopic (quasi_static): ball gyroscopic moment on.
+    torque (quasi_static): friction torque, power loss and ring heat outputs (Houpert components).
+    stiffness (quasi_static): the 5x5 stiffness outputs K[i,j].
+    thermal_inputs (quasi_static): inputs dPd_thermal (and dz_thermal when z is imposed).
     film: EHL film formula, 'hamrock_dowson' (default, the seeds' choice) | 'masjedi_khonsari' | 'chittenden'.
     hertz: 'exact' (complete elliptic integrals, default) | 'approximate' (Hamrock-Brewe).
     centrifugal: ball centrifugal force on the outer contacts.
@@ -35,6 +46,7 @@ class Scene:
     film_floor: film thickness (m) below which the capacitance is bounded (estimated, docs/decisions.md).
     background_capacitance: ring/background capacitance (F) added to the balls (Farah adds ~30 pF; off = 0).
     tolerance: relative tolerance of the load equilibrium (-).
+    max_iterations: iteration cap of the quasi-static Newton solver (never a hang).
     """
     name: str = "analytic"
     fidelity: str = "analytic"
@@ -47,6 +59,13 @@ class Scene:
     film_floor: float = 10e-9
     background_capacitance: float = 0.0
     tolerance: float = 1e-12
+    drive: str = "load"
+    race_control: str = "outer"
+    gyroscopic: bool = False
+    torque: bool = False
+    stiffness: bool = False
+    thermal_inputs: bool = False
+    max_iterations: int = 100
 
     def problems(self):
         """List of human-readable problems (empty when the scene is valid)."""
@@ -67,6 +86,18 @@ class Scene:
             out.append(f"background_capacitance = {self.background_capacitance} F: allowed [0, 1e-6] F")
         if not 1e-15 <= self.tolerance <= 1e-3:
             out.append(f"tolerance = {self.tolerance}: allowed [1e-15, 1e-3]")
+        if self.drive not in DRIVES:
+            out.append(f"drive = {self.drive!r}: allowed {list(DRIVES)}")
+        if self.race_control not in RACE_CONTROLS:
+            out.append(f"race_control = {self.race_control!r}: allowed {list(RACE_CONTROLS)}")
+        if not 5 <= self.max_iterations <= 1000:
+            out.append(f"max_iterations = {self.max_iterations}: allowed [5, 1000]")
+        if self.fidelity == "analytic":
+            for option in ("gyroscopic", "torque", "stiffness", "thermal_inputs"):
+                if getattr(self, option):
+                    out.append(f"{option} = true needs fidelity = 'quasi_static'")
+            if self.drive != "load":
+                out.append(f"drive = {self.drive!r} needs fidelity = 'quasi_static' (analytic is load-driven)")
         if self.background_capacitance > 0.0 and not self.capacitance:
             out.append("background_capacitance > 0 needs capacitance = true")
         return out

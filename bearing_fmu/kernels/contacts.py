@@ -1,0 +1,154 @@
+"""Contact outputs of a quasi-static solution: Hertz, EHL film, regime, capacitance, losses (SPEC 4.4-4.7).
+
+Takes the per-ball loads and kinematics of kernels.quasistatic and evaluates every ball-race
+contact. The contact geometry (R_x, R_y, ellipticity, elliptic integrals) is that of the free
+contact angle, as in the solver's Hertz constants (docs/quasistatic.md); rolling and spin speeds
+are those of the operating angles and the race-control hypothesis.
+
+Losses per contact (kernels.torque, Houpert 1999 components): EHL rolling resistance, elastic
+hysteresis, Heathcote (curvature) sliding with mu(Lambda), and pivoting with the contact's spin
+speed. Heat goes to the ring of the contact (the ball is adiabatic at steady state: it passes its
+heat to the rings). Torque = total power / |omega|; at rest it is 0 (no rolling, no power).
+"""
+import math
+
+from numba import njit
+
+from .capacitance import ball_capacitance, contact_capacitance, contact_permittivity
+from .ehl import film_parameter, film_thickness, friction_coefficient, lubrication_regime
+from .hertz import hertz_contact
+from .lubricant import LUB_EPS_R0, clausius_mossotti_constant, lubricant_state
+from .quasistatic import (BQ_Q_I, BQ_Q_O, BQ_SPIN_I, BQ_SPIN_O, BQ_U_I, BQ_U_O)
+from .torque import TL_SIZE, contact_losses
+
+# layout of the contact parameter array (built by the model)
+CP_RX_I = 0
+CP_RY_I = 1
+CP_K_I = 2      # ellipticity a_y/b_x (-)
+CP_EE_I = 3     # elliptic integral E (-)
+CP_KK_I = 4     # elliptic integral K (-)
+CP_RX_O = 5
+CP_RY_O = 6
+CP_K_O = 7
+CP_EE_O = 8
+CP_KK_O = 9
+CP_E_RED = 10   # reduced modulus (Pa)
+CP_SIGMA_I = 11 # composite roughness (m)
+CP_SIGMA_O = 12
+CP_FILM = 13    # film formula code
+CP_PRESSURE = 14
+CP_H_FLOOR = 15 # capacitance film floor (m)
+CP_C_BACKGROUND = 16
+CP_ALPHA_H = 17 # hysteresis loss factor (-)
+CP_F_I = 18     # inner conformity (-)
+CP_F_O = 19
+CP_D = 20       # ball diameter (m)
+CP_SIZE = 21
+
+# layout of the output array
+CO_LAMBDA_I = 0
+CO_LAMBDA_O = 1
+CO_HMIN_I = 2
+CO_HMIN_O = 3
+CO_REGIME = 4
+CO_C_BEARING = 5
+CO_QMAX_I = 6
+CO_QMAX_O = 7
+CO_PMAX = 8
+CO_N_LOADED = 9
+CO_P_LOSS = 10
+CO_Q_INNER_RING = 11
+CO_Q_OUTER_RING = 12
+CO_TORQUE = 13
+CO_P_EHL = 14        # 4 components follow in kernels.torque TL_* order
+CO_ETA = 18
+CO_XI = 19
+CO_SIZE = 20
+
+# rows of the per-contact array
+PC_HMIN_I = 0
+PC_HMIN_O = 1
+PC_LAMBDA_I = 2
+PC_LAMBDA_O = 3
+PC_P_I = 4      # loss of the inner contact (W)
+PC_P_O = 5
+PC_C_I = 6      # capacitance (F)
+PC_C_O = 7
+PC_SIZE = 8
+
+
+@njit(cache=True)
+def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
+    """Evaluate all contacts of a solved bearing.
+
+    omega: inner-ring speed (rad/s); T_oil: oil temperature (K); cp: CP_* array; lub: lubricant
+    array; balls: per-ball rows of kernels.quasistatic (BQ_*); out: CO_* outputs (filled);
+    per_contact: float64[PC_SIZE, Z] (filled); losses: float64[TL_SIZE] work array.
+    """
+    Z = balls.shape[1]
+    eta, xi, rho0 = lubricant_state(T_oil, lub)
+    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], rho0)
+    E_red = cp[CP_E_RED]
+    film = int(cp[CP_FILM])
+    lam_i = math.inf
+    lam_o = math.inf
+    hmin_i = math.inf
+    hmin_o = math.inf
+    loaded_i = False
+    loaded_o = False
+    for k in range(CO_SIZE):
+        out[k] = 0.0
+    out[CO_C_BEARING] = cp[CP_C_BACKGROUND]
+    for j in range(Z):
+        for race in range(2):
+            o = 5 * race  # inner at CP_RX_I.., outer at CP_RX_O..
+            Q = balls[BQ_Q_I + race, j]
+            u = balls[BQ_U_I, j] if race == 0 else balls[BQ_U_O, j]
+            spin = balls[BQ_SPIN_I, j] if race == 0 else balls[BQ_SPIN_O, j]
+            Rx = cp[CP_RX_I + o]
+            Ry = cp[CP_RY_I + o]
+            k = cp[CP_K_I + o]
+            a, b, _, p = hertz_contact(Q, Rx, Ry, E_red, k, cp[CP_EE_I + o], cp[CP_KK_I + o])
+            hc, hm = film_thickness(film, eta, xi, E_red, u, Q, Rx, Ry, k)
+            lam = film_parameter(hm, cp[CP_SIGMA_I + race])
+            C = 0.0
+            P = 0.0
+            if Q > 0.0:
+                eps = contact_permittivity(K_cm, rho0, p, int(cp[CP_PRESSURE]))
+                C = contact_capacitance(eps, a, b, hc, cp[CP_H_FLOOR])
+                mu = friction_coefficient(lam)
+                f = cp[CP_F_I + race]
+                P = contact_losses(Q, u, spin, Rx, Ry, a, b, cp[CP_EE_I + o], f, cp[CP_D], E_red, eta, xi,
+                                   mu, cp[CP_ALPHA_H], losses)
+                for t in range(TL_SIZE):
+                    out[CO_P_EHL + t] += losses[t]
+                out[CO_PMAX] = max(out[CO_PMAX], p)
+                if race == 0:
+                    loaded_i = True
+                    lam_i = min(lam_i, lam)
+                    hmin_i = min(hmin_i, hm)
+                    out[CO_QMAX_I] = max(out[CO_QMAX_I], Q)
+                    out[CO_Q_INNER_RING] += P
+                else:
+                    loaded_o = True
+                    lam_o = min(lam_o, lam)
+                    hmin_o = min(hmin_o, hm)
+                    out[CO_QMAX_O] = max(out[CO_QMAX_O], Q)
+                    out[CO_Q_OUTER_RING] += P
+            per_contact[PC_HMIN_I + race, j] = hm
+            per_contact[PC_LAMBDA_I + race, j] = lam
+            per_contact[PC_P_I + race, j] = P
+            per_contact[PC_C_I + race, j] = C
+        if balls[BQ_Q_I, j] > 0.0 and balls[BQ_Q_O, j] > 0.0:
+            out[CO_N_LOADED] += 1.0
+        out[CO_C_BEARING] += ball_capacitance(per_contact[PC_C_I, j], per_contact[PC_C_O, j])
+    # a race without any loaded contact reports 0 film (as the analytic fidelity, docs/decisions.md)
+    out[CO_LAMBDA_I] = lam_i if loaded_i else 0.0
+    out[CO_LAMBDA_O] = lam_o if loaded_o else 0.0
+    out[CO_HMIN_I] = hmin_i if loaded_i else 0.0
+    out[CO_HMIN_O] = hmin_o if loaded_o else 0.0
+    out[CO_REGIME] = lubrication_regime(min(out[CO_LAMBDA_I], out[CO_LAMBDA_O]))
+    out[CO_P_LOSS] = out[CO_Q_INNER_RING] + out[CO_Q_OUTER_RING]
+    out[CO_TORQUE] = out[CO_P_LOSS] / abs(omega) if omega != 0.0 else 0.0
+    out[CO_ETA] = eta
+    out[CO_XI] = xi

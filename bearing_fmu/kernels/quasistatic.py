@@ -1,0 +1,665 @@
+"""Quasi-static 5-DOF ball-bearing model (Jones 1960 / Harris & Kotzalas 2006, SPEC 4.3).
+
+Outer ring fixed, inner ring displaced by d = (x, y, z, theta_x, theta_y) (m, m, m, rad, rad) and
+rotating at omega (rad/s). Ball j sits at azimuth psi_j = 2 pi j / Z from the x axis.
+
+Per ball, in its (axial, radial) plane, A = (A1, A2) is the inner groove-curvature centre seen
+from the outer one and X = (X1, X2) the ball centre seen from the outer one (the ball unknowns):
+  A1 = A1_0 + z + Rr_i (theta_x sin psi - theta_y cos psi),  A2 = A2_0 + x cos psi + y sin psi,
+  A1_0 = A sin(alpha0) for an angular-contact bearing (z = 0 where the balls just touch), 0 for a
+  deep-groove one; A2_0 = A - (P_d + dP_d)/2; A = (f_i + f_o - 1) D; Rr_i = d_m/2 + (f_i - 1/2) D cos alpha0.
+Contacts: delta_o = |X| - (f_o - 1/2) D, delta_i = |A - X| - (f_i - 1/2) D, Q = K delta^1.5 with the
+Hertz constants K of the contacts at the free contact angle (Harris' practice: their change with
+the operating angle is below 1 %); contact angles from the directions of X and A - X.
+Ball equilibrium (Harris & Kotzalas 2006 vol. 2 eqs. 3.xx; Rabreau 2018 with its sign slip fixed,
+docs/quasistatic.md): with the gyroscopic moment M_g = J w_R w_m sin(beta) (J = m D^2/10, signed as
+Harris: w_R < 0 for omega > 0) shared by lam_i + lam_o = 2,
+  Q_i sin a_i - Q_o sin a_o + (M_g/D)(lam_o cos a_o - lam_i cos a_i) = 0
+  Q_i cos a_i - Q_o cos a_o + F_c - (M_g/D)(lam_o sin a_o - lam_i sin a_i) = 0,  F_c = m d_m w_m^2 / 2.
+The pitch angle beta comes from the race-control law (outer: tan beta = sin a_o/(cos a_o + g),
+inner: tan beta = sin a_i/(cos a_i - g), hybrid: Rabreau's law with S = (1 + g cos a_o)/(1 - g cos a_i),
+g = D/d_m); w_m and w_R follow from rolling without slip at both contact centres.
+Ring load of a ball: g_z = Q_i sin a_i - lam_i (M_g/D) cos a_i, g_r = Q_i cos a_i + lam_i (M_g/D) sin a_i,
+and the friction couple m_g = lam_i f_i M_g; the applied loads are
+  (F_x, F_y, F_z, M_x, M_y) = sum_j [g_r cos psi, g_r sin psi, g_z, (Rr_i g_z + m_g) sin psi, -(Rr_i g_z + m_g) cos psi].
+Stiffness K = dF/dd (5x5) by the chain rule with the ball equilibrium condensed (dX/dA from the
+implicit function theorem). Derivatives are analytic; those of the kinematic factors
+(beta, w_m, w_R -> F_c, M_g) w.r.t. (a_i, a_o, C) use the complex step, exact to rounding.
+"""
+import cmath
+import math
+
+import numpy as np
+from numba import njit
+
+# layout of the quasi-static bearing array (built by bearing_fmu.model)
+QS_Z = 0            # number of balls (-)
+QS_D = 1            # ball diameter (m)
+QS_DM = 2           # pitch diameter (m)
+QS_FI = 3           # inner groove conformity r_i/D (-)
+QS_FO = 4           # outer groove conformity r_o/D (-)
+QS_PD = 5           # nominal diametral clearance (m), negative = interference
+QS_ANGULAR = 6      # 1 = angular-contact (z = 0 where balls touch at alpha0), 0 = deep groove (z = 0 centred)
+QS_K_I = 7          # inner Hertz constant (N/m^1.5)
+QS_K_O = 8          # outer Hertz constant (N/m^1.5)
+QS_M_BALL = 9       # ball mass (kg)
+QS_RACE = 10        # race control code (RACE_*)
+QS_CENTRIFUGAL = 11 # 1 = centrifugal force on
+QS_GYROSCOPIC = 12  # 1 = gyroscopic moment on
+QS_C_HYB = 13       # hybrid law: a_i E_i / (a_o E_o) at equal loads (-), C = this (Q_i/Q_o)^(4/3)
+QS_TOL = 14         # relative tolerance of the global equilibrium (-)
+QS_MAXIT = 15       # iteration cap of the global Newton (-)
+QS_SIZE = 16
+
+RACE_OUTER = 0
+RACE_INNER = 1
+RACE_HYBRID = 2
+
+# rows of the per-ball output array
+BQ_Q_I = 0      # inner contact load (N)
+BQ_Q_O = 1      # outer contact load (N)
+BQ_A_I = 2      # inner contact angle (rad)
+BQ_A_O = 3      # outer contact angle (rad)
+BQ_BETA = 4     # pitch angle of the ball spin axis (rad)
+BQ_W_M = 5      # orbital (cage) speed of the ball (rad/s)
+BQ_W_R = 6      # ball spin speed relative to the cage (rad/s, Harris sign)
+BQ_F_C = 7      # centrifugal force (N)
+BQ_M_G = 8      # gyroscopic moment (N.m, Harris sign)
+BQ_X1 = 9       # ball centre, axial, from the outer groove centre (m)
+BQ_X2 = 10      # ball centre, radial, from the outer groove centre (m)
+BQ_LAM_I = 11   # share of the gyroscopic moment taken by the inner race (-)
+BQ_SPIN_I = 12  # spin speed at the inner contact (rad/s)
+BQ_SPIN_O = 13  # spin speed at the outer contact (rad/s)
+BQ_U_I = 14     # rolling (entrainment) speed at the inner contact (m/s)
+BQ_U_O = 15     # rolling (entrainment) speed at the outer contact (m/s)
+BQ_SIZE = 16
+
+# status codes of the solver
+QS_OK = 0
+QS_NOT_CONVERGED = 1       # iteration cap reached
+QS_BALL_NOT_CONVERGED = 2  # a ball equilibrium failed
+QS_NOT_FINITE = 3          # NaN or inf appeared
+
+_H_CSTEP = 1e-30  # complex-step increment: exact derivatives, no subtraction error
+_BALL_MAXIT = 60
+
+
+@njit(cache=True)
+def qs_geometry(qs, dPd):
+    """(A, r_i, r_o, A1_0, A2_0, Rr_i, alpha0) in m, m, m, m, m, m, rad for thermal clearance change dPd (m)."""
+    D = qs[QS_D]
+    A = (qs[QS_FI] + qs[QS_FO] - 1.0) * D
+    Pd = qs[QS_PD]
+    alpha0 = 0.0
+    if Pd > 0.0:
+        alpha0 = math.acos(max(-1.0, 1.0 - Pd / (2.0 * A)))
+    A1_0 = A * math.sin(alpha0) if qs[QS_ANGULAR] > 0.5 else 0.0
+    A2_0 = A - 0.5 * (Pd + dPd)
+    Rr_i = 0.5 * qs[QS_DM] + (qs[QS_FI] - 0.5) * D * math.cos(alpha0)
+    return A, (qs[QS_FI] - 0.5) * D, (qs[QS_FO] - 0.5) * D, A1_0, A2_0, Rr_i, alpha0
+
+
+@njit(cache=True)
+def kinematics(a_i, a_o, C, omega, gp, dm, D, m_ball, race, centrifugal, gyroscopic):
+    """Race-control kinematics of one ball (complex-safe: also called with complex arguments).
+
+    a_i, a_o: contact angles (rad); C: hybrid spin-moment ratio (-); omega: inner-ring speed (rad/s);
+    gp = D/d_m. Returns (F_c (N), lam_o M_g/D (N), lam_i M_g/D (N), w_m (rad/s), w_R (rad/s), beta (rad)).
+    """
+    ci = cmath.cos(a_i)
+    si = cmath.sin(a_i)
+    co = cmath.cos(a_o)
+    so = cmath.sin(a_o)
+    one = 1.0 + 0.0 * C  # complex 1 carrying the type
+    if race == RACE_OUTER:
+        tan_beta = so / (co + gp)
+        lam_o = 2.0 * one
+        lam_i = 0.0 * one
+    elif race == RACE_INNER:
+        tan_beta = si / (ci - gp)
+        lam_o = 0.0 * one
+        lam_i = 2.0 * one
+    else:
+        S = (1.0 + gp * co) / (1.0 - gp * ci)   # Rabreau's S with its lost gamma restored (SPEC 4.10)
+        Ah = gp * C * (cmath.cos(a_i - a_o) - S)
+        tan_beta = (C * (S + 1.0) * si + 2.0 * so) / (C * (S + 1.0) * ci + 2.0 * (co + gp) + Ah)
+        lam_o = 2.0 / (1.0 + C)
+        lam_i = 2.0 * C / (1.0 + C)
+    beta = cmath.atan(tan_beta)
+    n_o = (1.0 - gp * ci) * cmath.cos(a_o - beta)
+    w_m = omega * n_o / ((1.0 + gp * co) * cmath.cos(a_i - beta) + n_o)
+    w_R = -w_m * (1.0 + gp * co) / (gp * cmath.cos(a_o - beta))
+    F_c = 0.5 * m_ball * dm * w_m * w_m if centrifugal else 0.0 * one
+    Mg_D = 0.1 * m_ball * D * w_R * w_m * cmath.sin(beta) if gyroscopic else 0.0 * one  # M_g / D
+    return F_c, lam_o * Mg_D, lam_i * Mg_D, w_m, w_R, beta
+
+
+@njit(cache=True)
+def _kin_grad(a_i, a_o, C, omega, gp, dm, D, m_ball, race, cen, gyro, g):
+    """Values and partials of (F_c, Mg_o, Mg_i) w.r.t. (a_i, a_o, C) by complex step into g[3, 4].
+
+    g[k, 0] value, g[k, 1..3] partial derivatives; k = 0 F_c, 1 Mg_o = lam_o M_g/D, 2 Mg_i.
+    """
+    h = _H_CSTEP
+    r = kinematics(complex(a_i, h), complex(a_o, 0.0), complex(C, 0.0), omega, gp, dm, D, m_ball, race, cen, gyro)
+    for k in range(3):
+        g[k, 0] = r[k].real
+        g[k, 1] = r[k].imag / h
+    r = kinematics(complex(a_i, 0.0), complex(a_o, h), complex(C, 0.0), omega, gp, dm, D, m_ball, race, cen, gyro)
+    for k in range(3):
+        g[k, 2] = r[k].imag / h
+    if race == RACE_HYBRID:
+        r = kinematics(complex(a_i, 0.0), complex(a_o, 0.0), complex(C, h), omega, gp, dm, D, m_ball, race, cen, gyro)
+        for k in range(3):
+            g[k, 3] = r[k].imag / h
+    else:
+        for k in range(3):
+            g[k, 3] = 0.0
+
+
+@njit(cache=True)
+def _ball_eval(X1, X2, A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb, kg, w):
+    """Ball residual, ring load and their derivatives at ball position X for curvature-centre offset A.
+
+    Fills w: 0-1 residual r, 2-3 ring load (g_z, g_r), 4 m_g, 5-8 dr/dX (row-major), 9-12 dr/dA,
+    13-16 dg/dX, 17-20 dg/dA, 21-22 dm/dX, 23-24 dm/dA, 25 Q_i, 26 Q_o, 27 a_i, 28 a_o, 29 C.
+    """
+    L_o = math.hypot(X1, X2)
+    so = X1 / L_o
+    co = X2 / L_o
+    V1 = A1 - X1
+    V2 = A2 - X2
+    L_i = math.hypot(V1, V2)
+    si = V1 / L_i
+    ci = V2 / L_i
+    d_o = L_o - r_o
+    d_i = L_i - r_i
+    Q_o = 0.0
+    dQ_o = 0.0
+    if d_o > 0.0:
+        sq = math.sqrt(d_o)
+        Q_o = K_o * d_o * sq
+        dQ_o = 1.5 * K_o * sq
+    Q_i = 0.0
+    dQ_i = 0.0
+    if d_i > 0.0:
+        sq = math.sqrt(d_i)
+        Q_i = K_i * d_i * sq
+        dQ_i = 1.5 * K_i * sq
+    a_o = math.atan2(X1, X2)
+    a_i = math.atan2(V1, V2)
+    # gradients of the contact angles and loads: (d/dX1, d/dX2) and (d/dA1, d/dA2)
+    dao_X1 = co / L_o
+    dao_X2 = -so / L_o
+    dai_A1 = ci / L_i
+    dai_A2 = -si / L_i
+    dQo_X1 = dQ_o * so
+    dQo_X2 = dQ_o * co
+    dQi_A1 = dQ_i * si
+    dQi_A2 = dQ_i * ci
+    # hybrid spin-moment ratio C = c_hyb (Q_i/Q_o)^(4/3) (a ~ Q^(1/3)), capped where Q_o vanishes
+    C = 0.0
+    dC_Qi = 0.0
+    dC_Qo = 0.0
+    if race == RACE_HYBRID and Q_i > 0.0:
+        if Q_o > 0.0 and Q_i < 1e6 * Q_o:
+            C = c_hyb * (Q_i / Q_o) ** (4.0 / 3.0)
+            dC_Qi = 4.0 / 3.0 * C / Q_i
+            dC_Qo = -4.0 / 3.0 * C / Q_o
+        else:
+            C = c_hyb * 1e8
+    dC_X1 = -dC_Qi * dQi_A1 + dC_Qo * dQo_X1
+    dC_X2 = -dC_Qi * dQi_A2 + dC_Qo * dQo_X2
+    dC_A1 = dC_Qi * dQi_A1
+    dC_A2 = dC_Qi * dQi_A2
+    _kin_grad(a_i, a_o, C, omega, gp, dm, D, m_ball, race, cen, gyro, kg)
+    F_c = kg[0, 0]
+    Mgo = kg[1, 0]
+    Mgi = kg[2, 0]
+    # total derivatives of the kinematic terms: d/dX = p_ai (-dai_A) + p_ao dao_X + p_C dC_X
+    dFc_X1 = -kg[0, 1] * dai_A1 + kg[0, 2] * dao_X1 + kg[0, 3] * dC_X1
+    dFc_X2 = -kg[0, 1] * dai_A2 + kg[0, 2] * dao_X2 + kg[0, 3] * dC_X2
+    dFc_A1 = kg[0, 1] * dai_A1 + kg[0, 3] * dC_A1
+    dFc_A2 = kg[0, 1] * dai_A2 + kg[0, 3] * dC_A2
+    dMo_X1 = -kg[1, 1] * dai_A1 + kg[1, 2] * dao_X1 + kg[1, 3] * dC_X1
+    dMo_X2 = -kg[1, 1] * dai_A2 + kg[1, 2] * dao_X2 + kg[1, 3] * dC_X2
+    dMo_A1 = kg[1, 1] * dai_A1 + kg[1, 3] * dC_A1
+    dMo_A2 = kg[1, 1] * dai_A2 + kg[1, 3] * dC_A2
+    dMi_X1 = -kg[2, 1] * dai_A1 + kg[2, 2] * dao_X1 + kg[2, 3] * dC_X1
+    dMi_X2 = -kg[2, 1] * dai_A2 + kg[2, 2] * dao_X2 + kg[2, 3] * dC_X2
+    dMi_A1 = kg[2, 1] * dai_A1 + kg[2, 3] * dC_A1
+    dMi_A2 = kg[2, 1] * dai_A2 + kg[2, 3] * dC_A2
+    # n = (sin a, cos a), t = (cos a, -sin a); dn/da = t, dt/da = -n
+    # ring load g = Q_i n_i - Mgi t_i;  dg = n_i dQ_i + (Q_i t_i + Mgi n_i) da_i - t_i dMgi
+    gz = Q_i * si - Mgi * ci
+    gr = Q_i * ci + Mgi * si
+    pz = Q_i * ci + Mgi * si  # (Q_i t_i + Mgi n_i), axial component
+    pr = -Q_i * si + Mgi * ci
+    dgz_A1 = si * dQi_A1 + pz * dai_A1 - ci * dMi_A1
+    dgz_A2 = si * dQi_A2 + pz * dai_A2 - ci * dMi_A2
+    dgr_A1 = ci * dQi_A1 + pr * dai_A1 + si * dMi_A1
+    dgr_A2 = ci * dQi_A2 + pr * dai_A2 + si * dMi_A2
+    dgz_X1 = -si * dQi_A1 - pz * dai_A1 - ci * dMi_X1
+    dgz_X2 = -si * dQi_A2 - pz * dai_A2 - ci * dMi_X2
+    dgr_X1 = -ci * dQi_A1 - pr * dai_A1 + si * dMi_X1
+    dgr_X2 = -ci * dQi_A2 - pr * dai_A2 + si * dMi_X2
+    # residual r = g - Q_o n_o + F_c e_r + Mgo t_o
+    # d(-Q_o n_o + Mgo t_o) = -n_o dQ_o - (Q_o t_o + Mgo n_o) da_o + t_o dMgo
+    qz = Q_o * co + Mgo * so
+    qr = -Q_o * so + Mgo * co
+    w[0] = gz - Q_o * so + Mgo * co
+    w[1] = gr - Q_o * co + F_c - Mgo * so
+    w[5] = dgz_X1 - so * dQo_X1 - qz * dao_X1 + co * dMo_X1
+    w[6] = dgz_X2 - so * dQo_X2 - qz * dao_X2 + co * dMo_X2
+    w[7] = dgr_X1 - co * dQo_X1 - qr * dao_X1 - so * dMo_X1 + dFc_X1
+    w[8] = dgr_X2 - co * dQo_X2 - qr * dao_X2 - so * dMo_X2 + dFc_X2
+    w[9] = dgz_A1 + co * dMo_A1
+    w[10] = dgz_A2 + co * dMo_A2
+    w[11] = dgr_A1 - so * dMo_A1 + dFc_A1
+    w[12] = dgr_A2 - so * dMo_A2 + dFc_A2
+    w[2] = gz
+    w[3] = gr
+    w[4] = f_i * D * Mgi
+    w[13] = dgz_X1
+    w[14] = dgz_X2
+    w[15] = dgr_X1
+    w[16] = dgr_X2
+    w[17] = dgz_A1
+    w[18] = dgz_A2
+    w[19] = dgr_A1
+    w[20] = dgr_A2
+    w[21] = f_i * D * dMi_X1
+    w[22] = f_i * D * dMi_X2
+    w[23] = f_i * D * dMi_A1
+    w[24] = f_i * D * dMi_A2
+    w[25] = Q_i
+    w[26] = Q_o
+    w[27] = a_i
+    w[28] = a_o
+    w[29] = C
+
+
+@njit(cache=True)
+def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond):
+    """Solve one ball's equilibrium for curvature-centre offset (A1, A2) (m); warm start from X[:, j].
+
+    geo = (r_i, r_o, K_series) with K_series the Hertz constant of both contacts in series.
+    Fills X[:, j] and cond: 0-1 ring load (g_z, g_r) (N), 2 m_g (N.m), 3-6 dg/dA (2x2, N/m),
+    7-8 dm/dA (N), 9 Q_i, 10 Q_o (N), 11 a_i, 12 a_o (rad), 13 C (-).
+    Returns 0 (converged), 1 (unloaded ball), 2 (not converged).
+    """
+    r_i = geo[0]
+    r_o = geo[1]
+    K_s = geo[2]
+    D = qs[QS_D]
+    dm = qs[QS_DM]
+    K_i = qs[QS_K_I]
+    K_o = qs[QS_K_O]
+    race = int(qs[QS_RACE])
+    cen = qs[QS_CENTRIFUGAL] > 0.5 and omega != 0.0
+    gyro = qs[QS_GYROSCOPIC] > 0.5 and omega != 0.0
+    L = math.hypot(A1, A2)
+    n1 = A1 / L
+    n2 = A2 / L
+    delta = L - r_i - r_o
+    for k in range(14):
+        cond[k] = 0.0
+    if not (cen or gyro):
+        # static: contacts in series along the line of centres (exact closed form)
+        if delta <= 0.0:
+            X[0, j] = n1 * r_o
+            X[1, j] = n2 * r_o
+            cond[11] = math.atan2(A1, A2)
+            cond[12] = cond[11]
+            return 1
+        sq = math.sqrt(delta)
+        Q = K_s * delta * sq
+        dQ = 1.5 * K_s * sq
+        d_o = delta / (1.0 + (K_o / K_i) ** (2.0 / 3.0))
+        X[0, j] = n1 * (r_o + d_o)
+        X[1, j] = n2 * (r_o + d_o)
+        geo_t = Q / L
+        cond[0] = Q * n1
+        cond[1] = Q * n2
+        cond[3] = dQ * n1 * n1 + geo_t * (1.0 - n1 * n1)
+        cond[4] = (dQ - geo_t) * n1 * n2
+        cond[5] = cond[4]
+        cond[6] = dQ * n2 * n2 + geo_t * (1.0 - n2 * n2)
+        cond[9] = Q
+        cond[10] = Q
+        cond[11] = math.atan2(A1, A2)
+        cond[12] = cond[11]
+        return 0
+    F_c0 = 0.0
+    if cen:
+        F_c0 = 0.5 * qs[QS_M_BALL] * dm * (0.5 * omega * (1.0 - D / dm)) ** 2  # for the start only
+    if delta <= 0.0 and F_c0 <= 0.0:
+        X[0, j] = n1 * r_o
+        X[1, j] = n2 * r_o
+        cond[11] = math.atan2(A1, A2)
+        cond[12] = cond[11]
+        return 1
+    x1 = X[0, j]
+    x2 = X[1, j]
+    if not (x2 > 0.0 and math.hypot(x1, x2) > 0.5 * r_o):
+        # cold start: static split of the approach, or the ball resting on the outer race
+        if delta > 0.0:
+            d_o = delta / (1.0 + (K_o / K_i) ** (2.0 / 3.0)) + (F_c0 / K_o) ** (2.0 / 3.0)
+            x1 = n1 * (r_o + d_o)
+            x2 = n2 * (r_o + d_o)
+        else:
+            x1 = 0.0
+            x2 = r_o + (F_c0 / K_o) ** (2.0 / 3.0)
+    f_i = qs[QS_FI]
+    gp = D / dm
+    m_ball = qs[QS_M_BALL]
+    c_hyb = qs[QS_C_HYB]
+    status = 2
+    _ball_eval(x1, x2, A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb, kg, w)
+    res = math.hypot(w[0], w[1])
+    for it in range(_BALL_MAXIT):
+        scale = w[25] + w[26] + abs(F_c0) + 1e-300
+        if res <= 1e-13 * scale:
+            status = 0
+            break
+        det = w[5] * w[8] - w[6] * w[7]
+        if det == 0.0 or not math.isfinite(det):
+            break
+        s1 = -(w[8] * w[0] - w[6] * w[1]) / det
+        s2 = -(-w[7] * w[0] + w[5] * w[1]) / det
+        # cap the step at a tenth of the groove clearance, then backtrack on the residual norm
+        cap = 0.1 * (r_i + r_o)
+        norm = math.hypot(s1, s2)
+        if norm > cap:
+            s1 *= cap / norm
+            s2 *= cap / norm
+        if norm < 1e-15 * D:
+            status = 0
+            break
+        lam = 1.0
+        accepted = False
+        for _ in range(30):
+            _ball_eval(x1 + lam * s1, x2 + lam * s2, A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D,
+                       m_ball, race, cen, gyro, c_hyb, kg, w)
+            trial = math.hypot(w[0], w[1])
+            if trial < res:
+                accepted = True
+                break
+            lam *= 0.5
+        if not accepted:  # take the full step: leaves a plateau (no contact) where the norm is flat
+            lam = 1.0
+            _ball_eval(x1 + s1, x2 + s2, A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D,
+                       m_ball, race, cen, gyro, c_hyb, kg, w)
+            trial = math.hypot(w[0], w[1])
+        x1 += lam * s1
+        x2 += lam * s2
+        res = trial
+    X[0, j] = x1
+    X[1, j] = x2
+    # condensation: dX/dA = -(dr/dX)^-1 dr/dA ; total dg/dA = dg/dA + dg/dX dX/dA
+    det = w[5] * w[8] - w[6] * w[7]
+    if det == 0.0 or not math.isfinite(det):
+        return 2
+    i00 = w[8] / det
+    i01 = -w[6] / det
+    i10 = -w[7] / det
+    i11 = w[5] / det
+    x_a00 = -(i00 * w[9] + i01 * w[11])
+    x_a01 = -(i00 * w[10] + i01 * w[12])
+    x_a10 = -(i10 * w[9] + i11 * w[11])
+    x_a11 = -(i10 * w[10] + i11 * w[12])
+    cond[0] = w[2]
+    cond[1] = w[3]
+    cond[2] = w[4]
+    cond[3] = w[17] + w[13] * x_a00 + w[14] * x_a10
+    cond[4] = w[18] + w[13] * x_a01 + w[14] * x_a11
+    cond[5] = w[19] + w[15] * x_a00 + w[16] * x_a10
+    cond[6] = w[20] + w[15] * x_a01 + w[16] * x_a11
+    cond[7] = w[23] + w[21] * x_a00 + w[22] * x_a10
+    cond[8] = w[24] + w[21] * x_a01 + w[22] * x_a11
+    cond[9] = w[25]
+    cond[10] = w[26]
+    cond[11] = w[27]
+    cond[12] = w[28]
+    cond[13] = w[29]
+    if w[25] <= 0.0 and w[26] <= 0.0:
+        return 1
+    return status
+
+
+@njit(cache=True)
+def bearing_loads(d, qs, dPd, omega, X, F, K, balls):
+    """Displacement-controlled evaluation: loads F (5, N and N.m) and stiffness K = dF/dd (5x5)
+    for inner-ring displacements d (5, m and rad), clearance change dPd (m), speed omega (rad/s).
+
+    X (2, Z): ball positions, used as warm start and updated; balls (BQ_SIZE, Z): per-ball outputs.
+    Returns the worst ball status (0 all converged or unloaded, 2 a ball did not converge).
+    """
+    Z = int(qs[QS_Z])
+    D = qs[QS_D]
+    dm = qs[QS_DM]
+    A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
+    K_s = (qs[QS_K_I] ** (-2.0 / 3.0) + qs[QS_K_O] ** (-2.0 / 3.0)) ** -1.5
+    geo = (r_i, r_o, K_s)
+    kg = np.empty((3, 4))
+    w = np.empty(30)
+    cond = np.empty(14)
+    for i in range(5):
+        F[i] = 0.0
+        for k in range(5):
+            K[i, k] = 0.0
+    worst = 0
+    gp = D / dm
+    race = int(qs[QS_RACE])
+    cen = qs[QS_CENTRIFUGAL] > 0.5 and omega != 0.0
+    gyro = qs[QS_GYROSCOPIC] > 0.5 and omega != 0.0
+    for j in range(Z):
+        psi = 2.0 * math.pi * j / Z
+        cp = math.cos(psi)
+        sp = math.sin(psi)
+        A1 = A1_0 + d[2] + Rr * (d[3] * sp - d[4] * cp)
+        A2 = A2_0 + d[0] * cp + d[1] * sp
+        status = ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond)
+        if status == 2:
+            worst = 2
+        gz = cond[0]
+        gr = cond[1]
+        mg = cond[2]
+        # T = dA/dd: rows A1 -> (0, 0, 1, Rr sp, -Rr cp), A2 -> (cp, sp, 0, 0, 0)
+        t1 = (0.0, 0.0, 1.0, Rr * sp, -Rr * cp)
+        t2 = (cp, sp, 0.0, 0.0, 0.0)
+        em = (0.0, 0.0, 0.0, sp, -cp)
+        mom = Rr * gz + mg
+        F[0] += gr * cp
+        F[1] += gr * sp
+        F[2] += gz
+        F[3] += mom * sp
+        F[4] -= mom * cp
+        # dF/dd = T^T (dg/dA) T + e_m (dm/dA) T
+        for a in range(5):
+            row_z = cond[3] * t1[a] + cond[4] * t2[a]   # d g_z / dd_a
+            row_r = cond[5] * t1[a] + cond[6] * t2[a]   # d g_r / dd_a
+            row_m = cond[7] * t1[a] + cond[8] * t2[a]   # d m_g / dd_a
+            for i in range(5):
+                K[i, a] += t1[i] * row_z + t2[i] * row_r + em[i] * row_m
+        _ball_outputs(j, cond, X, A1, A2, omega, gp, dm, D, qs, race, cen, gyro, balls)
+    return worst
+
+
+@njit(cache=True)
+def _ball_outputs(j, cond, X, A1, A2, omega, gp, dm, D, qs, race, cen, gyro, balls):
+    """Per-ball loads, angles and kinematics (spin and rolling speeds at both contacts)."""
+    a_i = cond[11]
+    a_o = cond[12]
+    C = cond[13]
+    F_c, Mgo, Mgi, w_m, w_R, beta = kinematics(complex(a_i, 0.0), complex(a_o, 0.0), complex(C, 0.0), omega,
+                                               gp, dm, D, qs[QS_M_BALL], race, cen, gyro)
+    w_m = w_m.real
+    w_R = w_R.real
+    beta = beta.real
+    balls[BQ_Q_I, j] = cond[9]
+    balls[BQ_Q_O, j] = cond[10]
+    balls[BQ_A_I, j] = a_i
+    balls[BQ_A_O, j] = a_o
+    balls[BQ_BETA, j] = beta
+    balls[BQ_W_M, j] = w_m
+    balls[BQ_W_R, j] = w_R
+    balls[BQ_F_C, j] = F_c.real
+    balls[BQ_M_G, j] = (Mgo.real + Mgi.real) * D * 0.5  # lam_o + lam_i = 2
+    balls[BQ_X1, j] = X[0, j]
+    balls[BQ_X2, j] = X[1, j]
+    lam_i = 0.0
+    if race == RACE_INNER:
+        lam_i = 2.0
+    elif race == RACE_HYBRID:
+        lam_i = 2.0 * C / (1.0 + C)
+    balls[BQ_LAM_I, j] = lam_i
+    # spin = (ball - race) angular velocity along the contact normal, in the cage frame (docs/quasistatic.md)
+    balls[BQ_SPIN_O, j] = w_R * math.sin(a_o - beta) + w_m * math.sin(a_o)
+    balls[BQ_SPIN_I, j] = -w_R * math.sin(a_i - beta) + (omega - w_m) * math.sin(a_i)
+    balls[BQ_U_O, j] = abs(w_m) * 0.5 * dm * (1.0 + gp * math.cos(a_o))
+    balls[BQ_U_I, j] = abs(omega - w_m) * 0.5 * dm * (1.0 - gp * math.cos(a_i))
+
+
+@njit(cache=True)
+def _solve_small(Kr, R, n, out):
+    """Solve Kr[:n,:n] out = R[:n] by Gaussian elimination with partial pivoting (in place on Kr, R).
+
+    Returns False when the matrix is numerically singular."""
+    for c in range(n):
+        p = c
+        best = abs(Kr[c, c])
+        for r in range(c + 1, n):
+            if abs(Kr[r, c]) > best:
+                best = abs(Kr[r, c])
+                p = r
+        if best == 0.0 or not math.isfinite(best):
+            return False
+        if p != c:
+            for k in range(n):
+                tmp = Kr[c, k]
+                Kr[c, k] = Kr[p, k]
+                Kr[p, k] = tmp
+            tmp = R[c]
+            R[c] = R[p]
+            R[p] = tmp
+        for r in range(c + 1, n):
+            f = Kr[r, c] / Kr[c, c]
+            for k in range(c, n):
+                Kr[r, k] -= f * Kr[c, k]
+            R[r] -= f * R[c]
+    for c in range(n - 1, -1, -1):
+        s = R[c]
+        for k in range(c + 1, n):
+            s -= Kr[c, k] * out[k]
+        out[c] = s / Kr[c, c]
+    return True
+
+
+@njit(cache=True)
+def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
+    """Global equilibrium by damped Newton with the analytic Jacobian.
+
+    F_applied (5): loads (N, N.m) on the load-controlled DOFs; control (5): 1 = load-controlled,
+    0 = displacement-controlled (d holds the imposed value); d (5, m and rad): warm start, solution
+    on return. F, K, X, balls as in bearing_loads (F = reactions at the solution).
+    Returns (status, iterations, residual): status QS_* code, residual = max scaled load error (N).
+    """
+    A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
+    tol = qs[QS_TOL]
+    maxit = int(qs[QS_MAXIT])
+    scale = np.array([1.0, 1.0, 1.0, Rr, Rr])   # rotations as arc lengths at Rr, moments as forces
+    idx = np.empty(5, np.int64)
+    n = 0
+    for i in range(5):
+        if control[i] > 0.5:
+            idx[n] = i
+            n += 1
+    K_s = (qs[QS_K_I] ** (-2.0 / 3.0) + qs[QS_K_O] ** (-2.0 / 3.0)) ** -1.5
+    k_floor = 1e-6 * K_s * math.sqrt(1e-3 * qs[QS_D])  # regularises a bearing with no loaded ball
+    step_cap = 0.05 * A
+    Kr = np.empty((5, 5))
+    R = np.empty(5)
+    Rw = np.empty(5)
+    step = np.empty(5)
+    d_try = np.empty(5)
+    X_try = X.copy()
+    ball_status = bearing_loads(d, qs, dPd, omega, X, F, K, balls)
+    res = _residual_norm(F_applied, F, idx, n, scale)
+    f_ref = 1e-3
+    for i in range(n):
+        f_ref = max(f_ref, abs(F_applied[idx[i]]) / scale[idx[i]])
+    for it in range(maxit + 1):
+        if not math.isfinite(res):
+            return QS_NOT_FINITE, it, res
+        if res <= tol * max(f_ref, _mean_ball_load(balls)) or n == 0:
+            return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), it, res
+        if it == maxit:
+            break
+        kmax = 0.0
+        for a in range(n):
+            kmax = max(kmax, K[idx[a], idx[a]] / (scale[idx[a]] ** 2))
+        for a in range(n):
+            ia = idx[a]
+            R[a] = (F_applied[ia] - F[ia]) / scale[ia]
+            for b in range(n):
+                ib = idx[b]
+                Kr[a, b] = K[ia, ib] / (scale[ia] * scale[ib])
+            Kr[a, a] += 1e-12 * kmax + k_floor
+        if not _solve_small(Kr, R, n, Rw):
+            return QS_NOT_FINITE, it, res
+        big = 0.0
+        for a in range(n):
+            big = max(big, abs(Rw[a]))
+        if big < 1e-15 * A:
+            return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), it, res
+        f = 1.0 if big <= step_cap else step_cap / big
+        for a in range(5):
+            step[a] = 0.0
+        for a in range(n):
+            step[idx[a]] = f * Rw[a] / scale[idx[a]]
+        # backtracking on the residual norm; if nothing decreases (a plateau without contact), take the step
+        lam = 1.0
+        accepted = False
+        for _ in range(40):
+            for a in range(5):
+                d_try[a] = d[a] + lam * step[a]
+            X_try[:, :] = X
+            st = bearing_loads(d_try, qs, dPd, omega, X_try, F, K, balls)
+            trial = _residual_norm(F_applied, F, idx, n, scale)
+            if trial < res:
+                accepted = True
+                break
+            lam *= 0.5
+        if not accepted:
+            for a in range(5):
+                d_try[a] = d[a] + step[a]
+            X_try[:, :] = X
+            st = bearing_loads(d_try, qs, dPd, omega, X_try, F, K, balls)
+            trial = _residual_norm(F_applied, F, idx, n, scale)
+        for a in range(5):
+            d[a] = d_try[a]
+        X[:, :] = X_try
+        ball_status = st
+        res = trial
+    return QS_NOT_CONVERGED, maxit, res
+
+
+@njit(cache=True)
+def _residual_norm(F_applied, F, idx, n, scale):
+    """Largest load error over the load-controlled DOFs, moments scaled to forces (N)."""
+    r = 0.0
+    for a in range(n):
+        i = idx[a]
+        r = max(r, abs(F_applied[i] - F[i]) / scale[i])
+    return r
+
+
+@njit(cache=True)
+def _mean_ball_load(balls):
+    """Mean inner contact load (N): the load scale of a preloaded bearing under zero external load."""
+    Z = balls.shape[1]
+    s = 0.0
+    for j in range(Z):
+        s += balls[BQ_Q_I, j]
+    return s / Z

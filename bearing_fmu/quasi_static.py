@@ -1,0 +1,325 @@
+"""QuasiStaticModel: facade of the quasi-static fidelity (kernels.quasistatic + kernels.contacts).
+
+One bearing, lubricant and scene; inputs and outputs are SI and declared as Variable tables that
+the FMU class turns into FMI variables. The solver state (inner-ring displacements and ball
+positions) is kept between calls for warm starts and is part of the FMU state.
+"""
+import math
+
+import numpy as np
+
+from .kernels import contacts as ck
+from .kernels import quasistatic as qk
+from .kernels.geometry import ball_mass, curvature_radii, free_contact_angle
+from .kernels.hertz import (hertz_coefficients_approx, hertz_coefficients_exact, hertz_contact,
+                            hertz_stiffness, reduced_modulus)
+from .kernels.torque import ALPHA_HYSTERESIS_STEEL, TL_SIZE
+from .model import DM_N_LIMIT, P_MAX_ERROR, P_MAX_WARNING, T_OIL_RANGE, InputError, Variable
+from .params import load_bearing, load_lubricant
+from .scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, RACE_CONTROLS, Scene
+
+DOF_NAMES = ("x", "y", "z", "theta_x", "theta_y")
+DOF_UNITS = ("m", "m", "m", "rad", "rad")
+LOAD_NAMES = ("F_x", "F_y", "F_z", "M_x", "M_y")
+LOAD_UNITS = ("N", "N", "N", "N.m", "N.m")
+DOF_WORDS = ("radial displacement along x", "radial displacement along y", "axial displacement",
+             "tilt about x", "tilt about y")
+LOAD_WORDS = ("radial force along x", "radial force along y", "axial force", "moment about x", "moment about y")
+# which DOFs are load-controlled (1) for each drive (scene option)
+DRIVE_CONTROL = {"load": (1, 1, 1, 1, 1), "displacement": (0, 0, 0, 0, 0), "fixed_axial": (1, 1, 0, 1, 1)}
+RACE_CODES = {"outer": qk.RACE_OUTER, "inner": qk.RACE_INNER, "hybrid": qk.RACE_HYBRID}
+# admissible imposed displacements: a fraction of the groove clearance A = (f_i + f_o - 1) D
+DISPLACEMENT_LIMIT = 0.5   # x A (m); beyond this the Hertz loads pass any material limit
+TILT_LIMIT = 0.01          # rad
+
+
+class SolverError(InputError):
+    """The equilibrium could not be found (message says why and for which inputs)."""
+
+
+def _matrix_name(i, j):
+    return f"K[{i + 1},{j + 1}]"
+
+
+class QuasiStaticModel:
+    """Quasi-static 5-DOF bearing (SPEC 4.3) with film, capacitance and Houpert losses.
+
+    bearing, lubricant: catalogue name or TOML path; scene: Scene with fidelity 'quasi_static';
+    Pd: diametral clearance (m) overriding the bearing file, |Pd| <= 0.02 D;
+    race_control: 'outer' | 'inner' | 'hybrid' (default: the scene's).
+    """
+
+    def __init__(self, bearing="B7214C", lubricant="iso_vg68_mineral", scene=None, Pd=None, race_control=None):
+        self.scene = (scene or Scene(name="quasi_static", fidelity="quasi_static")).validate()
+        if self.scene.fidelity != "quasi_static":
+            raise InputError(f"scene '{self.scene.name}' has fidelity {self.scene.fidelity!r}: QuasiStaticModel "
+                             f"needs 'quasi_static'")
+        self.bearing = load_bearing(bearing)
+        self.lubricant = load_lubricant(lubricant)
+        b = self.bearing
+        self.Pd = b.Pd if Pd is None else float(Pd)
+        limit = 0.02 * b.D
+        if not (math.isfinite(self.Pd) and abs(self.Pd) <= limit):
+            raise InputError(f"Pd = {Pd} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m (|Pd| <= 0.02 D)")
+        self.race_control = race_control or self.scene.race_control
+        if self.race_control not in RACE_CONTROLS:
+            raise InputError(f"race_control = {self.race_control!r}: allowed {list(RACE_CONTROLS)}")
+        self.control = np.array(DRIVE_CONTROL[self.scene.drive], dtype=float)
+        self.omega_max = DM_N_LIMIT / (b.dm * 1e3) * 2.0 * math.pi / 60.0
+        self.qs, self.cp = self._pack()
+        if min(self.cp[ck.CP_SIGMA_I], self.cp[ck.CP_SIGMA_O]) <= 0.0:
+            raise InputError(f"bearing '{b.name}': composite roughness sigma must be > 0 (Lambda = h_min/sigma)")
+        self.groove = (b.f_i + b.f_o - 1.0) * b.D
+        Z = b.Z
+        self.d = np.zeros(5)
+        self.X = np.zeros((2, Z))
+        self.F = np.zeros(5)
+        self.K = np.zeros((5, 5))
+        self.balls = np.zeros((qk.BQ_SIZE, Z))
+        self.per_contact = np.zeros((ck.PC_SIZE, Z))
+        self.out = np.zeros(ck.CO_SIZE)
+        self._losses = np.zeros(TL_SIZE)
+        self.status = (qk.QS_OK, 0, 0.0)
+        self.warnings = []
+
+    # -- set-up --------------------------------------------------------------------------------
+    def _pack(self):
+        b, s = self.bearing, self.scene
+        alpha0 = free_contact_angle(b.D, b.f_i, b.f_o, self.Pd) if self.Pd > 0.0 else 0.0
+        Rx_i, Ry_i, Rx_o, Ry_o = curvature_radii(b.D, b.dm, b.f_i, b.f_o, alpha0)
+        coeff = hertz_coefficients_exact if s.hertz == "exact" else hertz_coefficients_approx
+        E_red = reduced_modulus(b.ball.E, b.ball.nu, b.ring.E, b.ring.nu)
+        ci = coeff(Rx_i, Ry_i)
+        co = coeff(Rx_o, Ry_o)
+        qs = np.zeros(qk.QS_SIZE)
+        qs[qk.QS_Z] = b.Z
+        qs[qk.QS_D] = b.D
+        qs[qk.QS_DM] = b.dm
+        qs[qk.QS_FI] = b.f_i
+        qs[qk.QS_FO] = b.f_o
+        qs[qk.QS_PD] = self.Pd
+        qs[qk.QS_ANGULAR] = 1.0 if b.kind == "angular_contact" else 0.0
+        qs[qk.QS_K_I] = hertz_stiffness(Rx_i, Ry_i, E_red, *ci)
+        qs[qk.QS_K_O] = hertz_stiffness(Rx_o, Ry_o, E_red, *co)
+        qs[qk.QS_M_BALL] = ball_mass(b.D, b.ball.rho)
+        qs[qk.QS_RACE] = RACE_CODES[self.race_control]
+        qs[qk.QS_CENTRIFUGAL] = 1.0 if s.centrifugal else 0.0
+        qs[qk.QS_GYROSCOPIC] = 1.0 if s.gyroscopic else 0.0
+        # hybrid law: C = Q_i a_i E_i / (Q_o a_o E_o); a ~ Q^(1/3) gives C = c_hyb (Q_i/Q_o)^(4/3)
+        a_i = hertz_contact(1.0, Rx_i, Ry_i, E_red, *ci)[0]
+        a_o = hertz_contact(1.0, Rx_o, Ry_o, E_red, *co)[0]
+        qs[qk.QS_C_HYB] = a_i * ci[1] / (a_o * co[1])
+        qs[qk.QS_TOL] = s.tolerance
+        qs[qk.QS_MAXIT] = s.max_iterations
+        cp = np.zeros(ck.CP_SIZE)
+        cp[ck.CP_RX_I], cp[ck.CP_RY_I] = Rx_i, Ry_i
+        cp[ck.CP_K_I], cp[ck.CP_EE_I], cp[ck.CP_KK_I] = ci
+        cp[ck.CP_RX_O], cp[ck.CP_RY_O] = Rx_o, Ry_o
+        cp[ck.CP_K_O], cp[ck.CP_EE_O], cp[ck.CP_KK_O] = co
+        cp[ck.CP_E_RED] = E_red
+        cp[ck.CP_SIGMA_I] = s.roughness_factor * math.hypot(b.Ra_inner, b.Ra_ball)
+        cp[ck.CP_SIGMA_O] = s.roughness_factor * math.hypot(b.Ra_outer, b.Ra_ball)
+        cp[ck.CP_FILM] = FILM_FORMULAS[s.film]
+        cp[ck.CP_PRESSURE] = PERMITTIVITY_PRESSURES[s.permittivity_pressure]
+        cp[ck.CP_H_FLOOR] = s.film_floor
+        cp[ck.CP_C_BACKGROUND] = s.background_capacitance
+        cp[ck.CP_ALPHA_H] = ALPHA_HYSTERESIS_STEEL
+        cp[ck.CP_F_I] = b.f_i
+        cp[ck.CP_F_O] = b.f_o
+        cp[ck.CP_D] = b.D
+        return qs, cp
+
+    # -- variables -----------------------------------------------------------------------------
+    @property
+    def inputs(self):
+        """Input variables of this scene (drive and thermal options decide which exist)."""
+        out = [Variable("omega", "rad/s", "inner-ring angular speed (outer ring fixed); |omega| <= d_m n limit")]
+        for i in range(5):
+            if self.control[i]:
+                out.append(Variable(LOAD_NAMES[i], LOAD_UNITS[i], f"applied {LOAD_WORDS[i]} on the inner ring"))
+            else:
+                out.append(Variable(DOF_NAMES[i], DOF_UNITS[i], f"imposed {DOF_WORDS[i]} of the inner ring "
+                                    f"relative to the outer ring"))
+        out.append(Variable("T_oil", "K", "oil temperature (viscosity, pressure-viscosity, density)"))
+        if self.scene.thermal_inputs:
+            out.append(Variable("dPd_thermal", "m", "change of diametral clearance from thermal and centrifugal "
+                                "growth (added to Pd, negative = tighter)"))
+            if not self.control[2]:
+                out.append(Variable("dz_thermal", "m", "imposed axial shift of the inner ring from thermal growth, "
+                                    "added to z (fixed preload)"))
+        return tuple(out)
+
+    @property
+    def outputs(self):
+        """Output variables of this scene; options that are off remove theirs."""
+        s = self.scene
+        out = []
+        for i in range(5):
+            if self.control[i]:
+                out.append(Variable(DOF_NAMES[i], DOF_UNITS[i], f"{DOF_WORDS[i]} of the inner ring at equilibrium"))
+            else:
+                out.append(Variable(LOAD_NAMES[i], LOAD_UNITS[i], f"reaction: {LOAD_WORDS[i]} the balls exert "
+                                    f"(= the load needed to hold the imposed position)"))
+        if s.stiffness:
+            for i in range(5):
+                for j in range(5):
+                    out.append(Variable(_matrix_name(i, j), _stiffness_unit(i, j),
+                                        f"stiffness dF_{i + 1}/dd_{j + 1}, (F) = (F_x, F_y, F_z, M_x, M_y), "
+                                        f"(d) = (x, y, z, theta_x, theta_y), ball equilibrium condensed"))
+        if s.torque:
+            out += [Variable("torque", "N.m", "friction torque = P_loss/|omega| (0 at rest), Houpert components"),
+                    Variable("P_loss", "W", "total power loss of the contacts"),
+                    Variable("Q_inner_ring", "W", "heat to the inner ring (losses of the inner contacts)"),
+                    Variable("Q_outer_ring", "W", "heat to the outer ring (losses of the outer contacts)")]
+        out += [
+            Variable("Lambda_inner", "1", "film parameter h_min/sigma, minimum over loaded inner contacts (0 if none)"),
+            Variable("Lambda_outer", "1", "film parameter h_min/sigma, minimum over loaded outer contacts (0 if none)"),
+            Variable("h_min_inner", "m", "minimum film thickness, minimum over loaded inner contacts"),
+            Variable("h_min_outer", "m", "minimum film thickness, minimum over loaded outer contacts"),
+            Variable("regime", "1", "lubrication regime of the worst contact: 0 boundary, 1 mixed, 2 full film",
+                     "integer")]
+        if s.capacitance:
+            out.append(Variable("C_bearing", "F", "electrical capacitance of the bearing (balls in parallel)"))
+        out += [
+            Variable("Q_max_inner", "N", "largest inner contact load"),
+            Variable("Q_max_outer", "N", "largest outer contact load"),
+            Variable("p_max", "Pa", "largest Hertz contact pressure (warning logged above 4.2 GPa)"),
+            Variable("alpha_inner", "rad", "inner contact angle of the most loaded ball"),
+            Variable("alpha_outer", "rad", "outer contact angle of the most loaded ball"),
+            Variable("omega_cage", "rad/s", "cage speed: orbital speed of the balls, mean weighted by inner load"),
+            Variable("omega_ball", "rad/s", "ball angular speed in the fixed frame (most loaded ball, sign of omega)"),
+            Variable("n_loaded", "1", "number of balls loaded on both races", "integer"),
+            Variable("iterations", "1", "Newton iterations of the last solve", "integer")]
+        return tuple(out)
+
+    # -- evaluation ----------------------------------------------------------------------------
+    def check_inputs(self, values):
+        """Raise InputError naming the first input outside its allowed range."""
+        lim = self.omega_max
+        omega = values["omega"]
+        if not (math.isfinite(omega) and abs(omega) <= lim):
+            raise InputError(f"omega = {omega} rad/s is outside the allowed range [{-lim:.6g}, {lim:.6g}] rad/s "
+                             f"(d_m n <= {DM_N_LIMIT:.0e} mm.rpm)")
+        lo, hi = T_OIL_RANGE
+        T = values["T_oil"]
+        if not (math.isfinite(T) and lo <= T <= hi):
+            raise InputError(f"T_oil = {T} K is outside the allowed range [{lo}, {hi}] K")
+        for i in range(5):
+            if self.control[i]:
+                name = LOAD_NAMES[i]
+                if not math.isfinite(values[name]):
+                    raise InputError(f"{name} = {values[name]} {LOAD_UNITS[i]} is not a finite number")
+            else:
+                name = DOF_NAMES[i]
+                limit = TILT_LIMIT if i >= 3 else DISPLACEMENT_LIMIT * self.groove
+                if not (math.isfinite(values[name]) and abs(values[name]) <= limit):
+                    raise InputError(f"{name} = {values[name]} {DOF_UNITS[i]} is outside the allowed range "
+                                     f"[{-limit:.4g}, {limit:.4g}] {DOF_UNITS[i]}")
+        limit = 0.02 * self.bearing.D
+        for name in ("dPd_thermal", "dz_thermal"):
+            v = values.get(name, 0.0)
+            if not (math.isfinite(v) and abs(v) <= limit):
+                raise InputError(f"{name} = {v} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m")
+
+    def evaluate(self, **values):
+        """Outputs (dict name -> SI value) for the inputs of self.inputs (missing ones are 0, T_oil 313.15 K).
+
+        Raises InputError for inputs out of range or loads beyond the material limit, SolverError
+        when no equilibrium is found; fills self.warnings (p_max above the ISO 76 limit)."""
+        values = {"T_oil": 313.15, **values}
+        for var in self.inputs:
+            values.setdefault(var.name, 0.0)
+        self.check_inputs(values)
+        omega = float(values["omega"])
+        applied = np.array([float(values[n]) if self.control[i] else 0.0 for i, n in enumerate(LOAD_NAMES)])
+        for i in range(5):
+            if not self.control[i]:
+                self.d[i] = float(values[DOF_NAMES[i]])
+        self.d[2] += 0.0 if self.control[2] else float(values.get("dz_thermal", 0.0))
+        dPd = float(values.get("dPd_thermal", 0.0))
+        self._solve(applied, dPd, omega, values)
+        ck.contact_outputs(omega, float(values["T_oil"]), self.cp, self.lubricant.array, self.balls, self.out,
+                           self.per_contact, self._losses)
+        return self._collect(omega, values)
+
+    def _solve(self, applied, dPd, omega, values):
+        d_start = self.d.copy()
+        X_start = self.X.copy()
+        status, iters, res = qk.solve_quasistatic(applied, self.control, self.d, self.qs, dPd, omega, self.X,
+                                                  self.F, self.K, self.balls)
+        if status != qk.QS_OK:  # the warm start can be far off after a big input jump: retry cold
+            self.d[:] = np.where(self.control > 0.5, 0.0, d_start)
+            self.X[:] = 0.0
+            status, more, res = qk.solve_quasistatic(applied, self.control, self.d, self.qs, dPd, omega, self.X,
+                                                     self.F, self.K, self.balls)
+            iters += more
+        self.status = (status, iters, res)
+        if status != qk.QS_OK:
+            self.d[:] = d_start
+            self.X[:] = X_start
+            reason = {qk.QS_NOT_CONVERGED: f"no convergence in {self.scene.max_iterations} iterations",
+                      qk.QS_BALL_NOT_CONVERGED: "a ball equilibrium did not converge",
+                      qk.QS_NOT_FINITE: "the iteration produced a non-finite value"}[status]
+            shown = ", ".join(f"{v.name} = {values[v.name]:.6g} {v.unit}" for v in self.inputs)
+            raise SolverError(f"quasi-static equilibrium not found ({reason}, load residual {res:.3g} N) for {shown}")
+
+    def _collect(self, omega, values):
+        out, balls = self.out, self.balls
+        self.warnings = []
+        if out[ck.CO_PMAX] > P_MAX_ERROR:
+            raise InputError(f"the loads give p_max = {out[ck.CO_PMAX] / 1e9:.3g} GPa, beyond the material limit "
+                             f"{P_MAX_ERROR / 1e9:.1f} GPa (allowed: loads giving p_max <= {P_MAX_ERROR / 1e9:.1f} GPa)")
+        if out[ck.CO_PMAX] > P_MAX_WARNING:
+            self.warnings.append(f"p_max = {out[ck.CO_PMAX] / 1e9:.3g} GPa exceeds {P_MAX_WARNING / 1e9:.1f} GPa "
+                                 f"(ISO 76 static limit): permanent raceway deformation expected")
+        q_i = balls[qk.BQ_Q_I]
+        j = int(np.argmax(q_i)) if q_i.max() > 0.0 else int(np.argmax(balls[qk.BQ_Q_O]))
+        w_m, w_R, beta = balls[qk.BQ_W_M, j], balls[qk.BQ_W_R, j], balls[qk.BQ_BETA, j]
+        spin_fixed = math.hypot(w_R * math.cos(beta) + w_m, w_R * math.sin(beta))
+        cage = float(np.dot(q_i, balls[qk.BQ_W_M]) / q_i.sum()) if q_i.sum() > 0.0 else float(balls[qk.BQ_W_M].mean())
+        result = {}
+        for i in range(5):
+            if self.control[i]:
+                result[DOF_NAMES[i]] = float(self.d[i])
+            else:
+                result[LOAD_NAMES[i]] = float(self.F[i])
+        if self.scene.stiffness:
+            for i in range(5):
+                for k in range(5):
+                    result[_matrix_name(i, k)] = float(self.K[i, k])
+        if self.scene.torque:
+            result.update(torque=out[ck.CO_TORQUE], P_loss=out[ck.CO_P_LOSS], Q_inner_ring=out[ck.CO_Q_INNER_RING],
+                          Q_outer_ring=out[ck.CO_Q_OUTER_RING])
+        result.update(Lambda_inner=out[ck.CO_LAMBDA_I], Lambda_outer=out[ck.CO_LAMBDA_O],
+                      h_min_inner=out[ck.CO_HMIN_I], h_min_outer=out[ck.CO_HMIN_O], regime=int(out[ck.CO_REGIME]))
+        if self.scene.capacitance:
+            result["C_bearing"] = out[ck.CO_C_BEARING]
+        result.update(Q_max_inner=out[ck.CO_QMAX_I], Q_max_outer=out[ck.CO_QMAX_O], p_max=out[ck.CO_PMAX],
+                      alpha_inner=float(balls[qk.BQ_A_I, j]), alpha_outer=float(balls[qk.BQ_A_O, j]),
+                      omega_cage=cage, omega_ball=math.copysign(spin_fixed, omega) if omega else 0.0,
+                      n_loaded=int(out[ck.CO_N_LOADED]), iterations=int(self.status[1]))
+        for name, value in result.items():
+            if not math.isfinite(value):
+                shown = ", ".join(f"{v.name} = {values[v.name]:.6g}" for v in self.inputs)
+                raise SolverError(f"output {name} is not finite ({value}) for {shown}: please report this case")
+        return result
+
+    # -- state (FMU get/set state, rollback) ---------------------------------------------------
+    def get_state(self):
+        """Solver state as plain lists (JSON-serialisable): displacements and ball positions."""
+        return {"d": self.d.tolist(), "X": self.X.tolist()}
+
+    def set_state(self, state):
+        self.d[:] = state["d"]
+        self.X[:] = state["X"]
+
+
+def _stiffness_unit(i, j):
+    """Unit of dF_i/dd_j: N/m, N (force per rad or moment per m) or N.m/rad (shown as N.m)."""
+    force_i = i < 3
+    length_j = j < 3
+    if force_i and length_j:
+        return "N/m"
+    if force_i or length_j:
+        return "N"
+    return "N.m"
