@@ -72,6 +72,23 @@ def main():
         fmu, vr, unzip = open_fmu(path, {"bearing": name})
         report["status"] = step_status(fmu, 0.0)
         fmu.setString([vr["bearing"]], ["6208"])  # a corrected parameter recovers
+    elif scenario == "qs_bad_inputs":
+        fmu, vr, unzip = open_fmu(path)
+        good = {"omega": 1047.0, "F_z": 800.0, "F_x": 200.0, "T_oil": 313.15}
+        results = {}
+        cases = [("omega", float("nan")), ("omega", 1e9), ("T_oil", 0.0), ("F_z", float("inf")),
+                 ("F_x", -float("inf")), ("F_z", 1e8), ("dPd_thermal", 1.0)]
+        for n, (name, bad) in enumerate(cases):
+            fmu.setReal([vr[k] for k in good], list(good.values()))
+            fmu.setReal([vr[name]], [bad])
+            status = step_status(fmu, 0.1 * n)
+            results[f"{name}={bad}"] = {"status": status, "outputs": fmu.getReal([vr["z"], vr["torque"]])}
+        fmu.setReal([vr[k] for k in good], list(good.values()))
+        results["recovered"] = {"status": step_status(fmu, 10.0), "outputs": fmu.getReal([vr["z"], vr["torque"]])}
+        report["results"] = results
+    elif scenario == "qs_bad_race_control":
+        fmu, vr, unzip = open_fmu(path, {"race_control": "sideways"})
+        report["status"] = step_status(fmu, 0.0)
     elif scenario == "simulate":
         fmu, vr, unzip = open_fmu(path)
         fmu.setReal([vr["omega"], vr["F_y"]], [500.0, 3000.0])

@@ -9,58 +9,17 @@
 - FMU state get/set/serialise round trip is exact;
 - 30 consecutive fresh-process simulations all exit 0 (SPEC 3: scipy/numba teardown crashes).
 """
-import json
-import shutil
-import subprocess
-import sys
-from contextlib import ExitStack, contextmanager
-from pathlib import Path
+from contextlib import ExitStack
 
 import numpy as np
-import pytest
-from fmpy import extract, read_model_description, simulate_fmu
-from fmpy.fmi2 import FMU2Slave
+from fmpy import read_model_description, simulate_fmu
 from fmpy.validation import validate_fmu
 
 from bearing_fmu.model import BearingModel
+from tests.fmu.harness import close, opened, probe
 
-PROBE = Path(__file__).with_name("probe.py")
 OUTPUTS = ["Lambda_inner", "Lambda_outer", "h_min_inner", "h_min_outer", "regime", "C_bearing",
            "Q_max_inner", "Q_max_outer", "p_max", "omega_cage", "omega_ball", "n_loaded", "y", "epsilon"]
-
-
-def _probe(fmu_path, scenario):
-    proc = subprocess.run([sys.executable, str(PROBE), str(fmu_path), scenario], capture_output=True,
-                          text=True, timeout=300)
-    assert proc.returncode == 0, (proc.returncode, proc.stderr[-2000:])
-    return json.loads(proc.stdout.strip().splitlines()[-1])
-
-
-@contextmanager
-def opened(fmu_path, name, parameters=None):
-    """An initialised FMU2Slave instance (own extraction), with a name -> value reference map;
-    terminated, freed and its extraction removed on exit."""
-    md = read_model_description(str(fmu_path))
-    vr = {v.name: v.valueReference for v in md.modelVariables}
-    unzip = extract(str(fmu_path))
-    fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzip, modelIdentifier=md.coSimulation.modelIdentifier,
-                    instanceName=name)
-    try:
-        fmu.instantiate()
-        fmu.setupExperiment(startTime=0.0)
-        fmu.enterInitializationMode()
-        for key, value in (parameters or {}).items():
-            fmu.setReal([vr[key]], [value])
-        fmu.exitInitializationMode()
-        yield fmu, vr
-        fmu.terminate()
-    finally:
-        fmu.freeInstance()
-        shutil.rmtree(unzip, ignore_errors=True)
-
-
-def _close(a, b, rel=1e-12):
-    return abs(a - b) <= rel * max(abs(a), abs(b)) or a == b
 
 
 def test_validate_fmu_is_clean(analytic_fmu):
@@ -100,7 +59,7 @@ def test_simulate_fmu_equals_python_model(analytic_fmu):
         n = max(int(round(row["time"] / 0.1)) - 1, 0)
         ref = model.evaluate(omega[n], load[n], 333.15)
         for name in OUTPUTS:
-            assert _close(float(row[name]), float(ref[name])), (row["time"], name, row[name], ref[name])
+            assert close(float(row[name]), float(ref[name])), (row["time"], name, row[name], ref[name])
 
 
 def test_hand_written_loop_equals_python_model(analytic_fmu):
@@ -115,7 +74,7 @@ def test_hand_written_loop_equals_python_model(analytic_fmu):
             got.update(zip(["regime", "n_loaded"], fmu.getInteger([vr["regime"], vr["n_loaded"]])))
             ref = model.evaluate(w, F, T)
             for name in OUTPUTS:
-                assert _close(got[name], ref[name]), (w, F, T, name, got[name], ref[name])
+                assert close(got[name], ref[name]), (w, F, T, name, got[name], ref[name])
 
 
 def test_state_round_trip_is_exact(analytic_fmu):
@@ -141,7 +100,7 @@ def test_state_round_trip_is_exact(analytic_fmu):
 
 
 def test_bad_inputs_are_reported_and_host_survives(analytic_fmu):
-    report = _probe(analytic_fmu, "bad_inputs")
+    report = probe(analytic_fmu, "bad_inputs")
     for case, result in report["results"].items():
         if case == "recovered":
             assert result["status"] == 0 and result["outputs"][0] > 0
@@ -156,21 +115,21 @@ def test_bad_inputs_are_reported_and_host_survives(analytic_fmu):
 
 
 def test_unknown_bearing_is_reported(analytic_fmu):
-    report = _probe(analytic_fmu, "unknown_bearing")
+    report = probe(analytic_fmu, "unknown_bearing")
     assert report["status"] == 2
     assert any("unknown bearing 'no_such_bearing'" in m["message"] for m in report["messages"])
 
 
 def test_percent_in_message_cannot_crash_host(analytic_fmu):
     """pythonfmu passes log messages as printf formats: '%' is escaped to '%%' (FMI format string)."""
-    report = _probe(analytic_fmu, "percent_in_name")
+    report = probe(analytic_fmu, "percent_in_name")
     assert report["status"] == 2
     assert any("100%%_bearing_%%s_%%d" in m["message"] for m in report["messages"])
 
 
 def test_thirty_fresh_processes_exit_cleanly(analytic_fmu):
     for _ in range(30):
-        report = _probe(analytic_fmu, "simulate")
+        report = probe(analytic_fmu, "simulate")
         assert report["status"] == 0
         assert 2.12 <= report["Lambda_outer"] <= 2.15
 

@@ -1,0 +1,53 @@
+"""Shared FMU test harness: open an initialised instance, run a scenario in a fresh process."""
+import json
+import shutil
+import subprocess
+import sys
+from contextlib import contextmanager
+from pathlib import Path
+
+from fmpy import extract, read_model_description
+from fmpy.fmi2 import FMU2Slave
+
+PROBE = Path(__file__).with_name("probe.py")
+
+
+def probe(fmu_path, scenario):
+    """Run tests/fmu/probe.py SCENARIO in a fresh process; its JSON report (the process must exit 0)."""
+    proc = subprocess.run([sys.executable, str(PROBE), str(fmu_path), scenario], capture_output=True,
+                          text=True, timeout=300)
+    assert proc.returncode == 0, (proc.returncode, proc.stderr[-2000:])
+    return json.loads(proc.stdout.strip().splitlines()[-1])
+
+
+@contextmanager
+def opened(fmu_path, name, parameters=None):
+    """An initialised FMU2Slave instance (own extraction), with a name -> value reference map;
+    terminated, freed and its extraction removed on exit. Parameters: str -> setString,
+    bool -> setBoolean, number -> setReal."""
+    md = read_model_description(str(fmu_path))
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    unzip = extract(str(fmu_path))
+    fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzip, modelIdentifier=md.coSimulation.modelIdentifier,
+                    instanceName=name)
+    try:
+        fmu.instantiate()
+        fmu.setupExperiment(startTime=0.0)
+        fmu.enterInitializationMode()
+        for key, value in (parameters or {}).items():
+            if isinstance(value, str):
+                fmu.setString([vr[key]], [value])
+            elif isinstance(value, bool):
+                fmu.setBoolean([vr[key]], [value])
+            else:
+                fmu.setReal([vr[key]], [value])
+        fmu.exitInitializationMode()
+        yield fmu, vr
+        fmu.terminate()
+    finally:
+        fmu.freeInstance()
+        shutil.rmtree(unzip, ignore_errors=True)
+
+
+def close(a, b, rel=1e-12):
+    return abs(a - b) <= rel * max(abs(a), abs(b)) or a == b

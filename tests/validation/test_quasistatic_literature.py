@@ -1,0 +1,100 @@
+"""Quasi-static fidelity against the literature (issue 3 acceptance, SPEC 4.3).
+
+- Load parameter eps vs clearance: Guessasma et al. 2018 App. A and Farah et al. 2020 App. A.
+- Rabreau et al. 2018 Figs. 4-5 (qualitative): the three kinematic models agree at rest and differ at
+  10 000 rpm; the outer contact angle falls and the axial stiffness changes with speed.
+- Rolling kinematics of the 6208 (Guessasma 2018 section 4): cage and ball speeds of pure rolling.
+"""
+import math
+
+import numpy as np
+import pytest
+
+from bearing_fmu.quasi_static import QuasiStaticModel
+from bearing_fmu.scene import Scene
+
+T_OIL = 313.15
+RPM = 2.0 * math.pi / 60.0
+D_6208 = 12.6e-3
+
+
+def scene(**options):
+    base = dict(name="qs", fidelity="quasi_static", centrifugal=True, gyroscopic=True, torque=True,
+                stiffness=True, tolerance=1e-12)
+    return Scene(**{**base, **options})
+
+
+@pytest.mark.parametrize("F_r, Pd, eps_published", [
+    (3000.0, -12.6e-6, 0.685), (3000.0, 0.0, 0.5), (3000.0, 12.6e-6, 0.40),
+    (5000.0, -0.0045 * D_6208, 1.70), (5000.0, 0.0, 0.5), (5000.0, 0.0045 * D_6208, 0.29),
+    (5000.0, -0.0035 * D_6208, 1.32),
+])
+def test_load_parameter_vs_clearance(F_r, Pd, eps_published):
+    """eps = (1 - P_d/(2 delta_r))/2 from the solver's radial displacement delta_r = x at omega ~ 0
+    (1e-3 rad/s: speed effects ~1e-12 of the loads): Guessasma App. A (3 kN, P_d = -12.6/0/+12.6 um
+    -> 0.685/0.5/0.40) and Farah App. A (5 kN, P_d/D = -0.0045/0/+0.0045 -> 1.70/0.5/0.29; -0.0035
+    -> 1.32). Tolerance 1 % (issue 3 acceptance): the papers print 2-3 digits from a 9-ball DEM at
+    1 rad/s; this is the same 9-ball discrete bearing, so the remaining difference is their
+    rounding and their dynamic solution."""
+    model = QuasiStaticModel("6208", "guessasma_oil", scene(), Pd=Pd)
+    out = model.evaluate(omega=1e-3, F_x=F_r, T_oil=T_OIL)
+    eps = 0.5 * (1.0 - Pd / (2.0 * out["x"]))
+    assert eps == pytest.approx(eps_published, rel=0.01)
+
+
+def test_pure_rolling_kinematics_6208():
+    """Guessasma 2018 section 4 (SPEC 4.8 checks): omega = 500 rad/s, P_d = 0, F_r = 3 kN, contact
+    angle 0: cage 198.02 rad/s, ball 952.38 rad/s in the fixed frame (printed to 5 digits: 1e-4)."""
+    model = QuasiStaticModel("6208", "guessasma_oil", scene(), Pd=0.0)
+    out = model.evaluate(omega=500.0, F_x=3000.0, T_oil=T_OIL)
+    assert out["omega_cage"] == pytest.approx(198.02, rel=1e-4)
+    assert out["omega_ball"] == pytest.approx(952.38, rel=1e-4)
+
+
+MODELS = {"ORC": ("outer", False), "ORCG": ("outer", True), "HT": ("hybrid", True)}
+
+
+def rabreau_state(label, omega, F_a):
+    race, gyro = MODELS[label]
+    model = QuasiStaticModel("B7214C", "iso_vg68_mineral", scene(gyroscopic=gyro), race_control=race)
+    return model.evaluate(omega=omega, F_z=F_a, T_oil=T_OIL)
+
+
+@pytest.mark.parametrize("F_a", [200.0, 800.0, 3500.0])
+def test_rabreau_models_agree_at_rest(F_a):
+    """Rabreau 2018 section 2.3: 'The three models are perfectly in agreement for a static state
+    (0 rpm)' -- at rest neither centrifugal force nor gyroscopic moment exists, so the contact angle
+    and axial stiffness of ORC, ORCG and HT must be identical (to rounding, 1e-12)."""
+    ref = rabreau_state("ORC", 0.0, F_a)
+    for label in ("ORCG", "HT"):
+        out = rabreau_state(label, 0.0, F_a)
+        assert out["alpha_outer"] == pytest.approx(ref["alpha_outer"], rel=1e-12)
+        assert out["K[3,3]"] == pytest.approx(ref["K[3,3]"], rel=1e-12)
+
+
+def test_rabreau_models_differ_at_speed():
+    """Rabreau 2018 Figs. 4-5 (qualitative; curves not tabulated, B7214C internal geometry
+    estimated): at 10 000 rpm centrifugal force lowers the outer contact angle below its rest value
+    for all models; the gyroscopic moment (ORCG) lowers it further; the models' axial stiffnesses
+    differ by more than 5 % ('noticeable variations between models')."""
+    rest = rabreau_state("ORC", 0.0, 800.0)
+    speed = {label: rabreau_state(label, 10000 * RPM, 800.0) for label in MODELS}
+    for out in speed.values():
+        assert out["alpha_outer"] < rest["alpha_outer"] - math.radians(2.0)
+        assert out["alpha_inner"] > rest["alpha_inner"] + math.radians(2.0)
+    assert speed["ORCG"]["alpha_outer"] < speed["ORC"]["alpha_outer"]
+    k = np.array([out["K[3,3]"] for out in speed.values()])
+    assert (k.max() - k.min()) / k.max() > 0.05
+
+
+def test_rabreau_torque_spread_of_the_three_models():
+    """Rabreau 2018 section 6: at 10 000 rpm and 800 N 'all of the BB torque models predict almost
+    the same level of the friction torque (matching within 2 %)'. We reproduce ORC vs ORCG within
+    1 %, but HT is 3.7 % below ORC (docs/reports/rabreau_preload.md): the paper's table of the
+    gyroscopic-moment distribution (its Table 1) is lost in the extraction and our hybrid split
+    lam_i = 2C/(1+C) is our choice; the B7214C internal geometry is estimated. This test pins the
+    measured spread (< 5 %) so that a change is noticed; it does not claim the 2 %."""
+    torque = {label: rabreau_state(label, 10000 * RPM, 800.0)["torque"] for label in MODELS}
+    assert torque["ORCG"] == pytest.approx(torque["ORC"], rel=0.01)
+    spread = (max(torque.values()) - min(torque.values())) / max(torque.values())
+    assert 0.02 < spread < 0.05
