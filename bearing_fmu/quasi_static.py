@@ -70,6 +70,7 @@ class QuasiStaticModel:
         if min(self.cp[ck.CP_SIGMA_I], self.cp[ck.CP_SIGMA_O]) <= 0.0:
             raise InputError(f"bearing '{b.name}': composite roughness sigma must be > 0 (Lambda = h_min/sigma)")
         self.groove = (b.f_i + b.f_o - 1.0) * b.D
+        self.load_limit = self._load_limit()
         Z = b.Z
         self.d = np.zeros(5)
         self.X = np.zeros((2, Z))
@@ -128,6 +129,19 @@ class QuasiStaticModel:
         cp[ck.CP_F_O] = b.f_o
         cp[ck.CP_D] = b.D
         return qs, cp
+
+    def _load_limit(self):
+        """Largest admissible load (N): all Z balls at the contact load giving p_max = P_MAX_ERROR.
+
+        p_max ~ Q^(1/3), so Q_lim = Q (P_MAX_ERROR / p(Q))^3; no real load distribution shares a load
+        better than equally over all balls, so a larger load certainly passes the material limit."""
+        cp = self.cp
+        q_lim = math.inf
+        for o in (0, 5):
+            p_unit = hertz_contact(1.0, cp[ck.CP_RX_I + o], cp[ck.CP_RY_I + o], cp[ck.CP_E_RED], cp[ck.CP_K_I + o],
+                                   cp[ck.CP_EE_I + o], cp[ck.CP_KK_I + o])[3]
+            q_lim = min(q_lim, (P_MAX_ERROR / p_unit) ** 3)
+        return self.bearing.Z * q_lim
 
     # -- variables -----------------------------------------------------------------------------
     @property
@@ -209,6 +223,11 @@ class QuasiStaticModel:
                 name = LOAD_NAMES[i]
                 if not math.isfinite(values[name]):
                     raise InputError(f"{name} = {values[name]} {LOAD_UNITS[i]} is not a finite number")
+                limit = self.load_limit * (1.0 if i < 3 else 0.5 * self.bearing.dm)
+                if abs(values[name]) > limit:
+                    raise InputError(f"{name} = {values[name]} {LOAD_UNITS[i]} is beyond the material limit: even "
+                                     f"shared equally by all balls it gives p_max > {P_MAX_ERROR / 1e9:.1f} GPa "
+                                     f"(allowed |{name}| <= {limit:.4g} {LOAD_UNITS[i]})")
             else:
                 name = DOF_NAMES[i]
                 limit = TILT_LIMIT if i >= 3 else DISPLACEMENT_LIMIT * self.groove

@@ -74,7 +74,7 @@ def main():
         fmu.setString([vr["bearing"]], ["6208"])  # a corrected parameter recovers
     elif scenario == "qs_bad_inputs":
         fmu, vr, unzip = open_fmu(path)
-        good = {"omega": 1047.0, "F_z": 800.0, "F_x": 200.0, "T_oil": 313.15}
+        good = {"omega": 1047.0, "F_z": 800.0, "F_x": 200.0, "T_oil": 313.15, "dPd_thermal": 0.0}
         results = {}
         cases = [("omega", float("nan")), ("omega", 1e9), ("T_oil", 0.0), ("F_z", float("inf")),
                  ("F_x", -float("inf")), ("F_z", 1e8), ("dPd_thermal", 1.0)]
