@@ -1,9 +1,9 @@
 """Run every benchmark and rewrite the reports in docs/reports/ (make bench)."""
-from . import ehl_film_table, fmu_startup, hertz_approximation, kernel_timing
+from . import ehl_film_table, fmu_startup, hertz_approximation, kernel_timing, torque_palmgren
 
 
 def main():
-    for module in (kernel_timing, hertz_approximation, ehl_film_table, fmu_startup):
+    for module in (kernel_timing, hertz_approximation, ehl_film_table, fmu_startup, torque_palmgren):
         module.main()
 
 
