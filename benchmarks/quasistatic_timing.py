@@ -291,9 +291,12 @@ def main():
         r = worst(pred, 1)
         verdict = "inside" if r[1][0] <= target else "above"
         lines.append(f"- Cold starts (not the target's case) {what}: slowest {us(r[1][0])} us ({r[0].label}), "
-                     f"{r[1][0] / target:.2f} x the warm target, {verdict} it.")
+                     f"{r[1][0] / target:.3f} x the warm target, {verdict} it.")
     lines += ["- The Jacobian is the Newton matrix of the solve, so exposing it costs nothing extra; the row "
-              "above is the measured cost of assembling it inside one load evaluation (section below).", ""]
+              "above is the measured cost of assembling it inside one load evaluation (section below), worst "
+              "case over the table (median of interleaved batch ratios; ratio of the fastest batches in "
+              "brackets). Values within a few % of zero, negative ones included (the copy is compiled on its own "
+              "and can come out slightly slower), are below the resolution of this measurement.", ""]
 
     # -- solve table
     lines += ["## solve_quasistatic", "",
@@ -318,8 +321,8 @@ def main():
               "| case | bearing_loads (us) | without K assembly (us) | Jacobian extra | also without per-ball "
               "outputs (us) |", "|---|---|---|---|---|"]
     for c, full, no_k, bare, extra in loads:
-        lines.append(f"| {c.label} | {full * 1e6:.2f} | {no_k * 1e6:.2f} | {100 * extra[0]:+.1f} % ({100 * extra[1]:+.1f} %) | "
-                     f"{bare * 1e6:.2f} |")
+        lines.append(f"| {c.label} | {full * 1e6:.2f} | {no_k * 1e6:.2f} | {100 * extra[0]:+.1f} % "
+                     f"({100 * extra[1]:+.1f} %) | {bare * 1e6:.2f} |")
     lines += ["", "What this does and does not measure, honestly:", "",
               "- The Newton solver needs K anyway: the global solve is a Newton iteration on the 5 loads with K as "
               "its matrix, so exposing K as an output costs nothing beyond the solve itself (the K of the last "
@@ -332,7 +335,7 @@ def main():
               "bounded above by the whole per-ball cost.",
               "- For comparison, a forward-difference Jacobian of the 5 DOFs would need 5 more load "
               "evaluations: about +500 % of the 'without K' time."]
-    share = [(c, 1.0 - bare / no_k) for c, full, no_k, bare, extra in loads]
+    share = [(c, max(0.0, 1.0 - bare / no_k)) for c, full, no_k, bare, extra in loads]  # noise can go < 0
     rest = [x for c, x in share if c.rpm == 0.0]
     speed = [x for c, x in share if c.rpm > 0.0]
     lines += [f"- Not the Jacobian but worth knowing: the per-ball outputs (`_ball_outputs`: kinematics, spin and "
@@ -352,9 +355,11 @@ def main():
     for c, t_step, it_step, t_same, it_same, t_contacts, t_reset in facade:
         lines.append(f"| {c.label} | {us(t_step)} | {it_step} | {us(t_same)} | {it_same} | {t_contacts * 1e6:.1f} |")
     lines += ["", f"Reset of d and X from Python, subtracted above: {facade[0][6] * 1e6:.1f} us."]
+    noise = max(t[0] / t[1] for _, t_cold, t_warm in rows for t in (t_cold, t_warm))
     lines += ["", f"Machine load (1-min load average) at start / end of the run: {load_before:.2f} / "
-              f"{os.getloadavg()[0]:.2f} on 2 cores; other jobs shared the machine, so differences of ~10 % "
-              "between single medians are noise."]
+              f"{os.getloadavg()[0]:.2f} on 2 cores. Other jobs shared the machine: the largest median / minimum ratio "
+              f"of a solve row above is {noise:.2f}; where the two differ much, the minimum is the uncontended "
+              "figure and the median the one a busy machine gives."]
     write_report("quasistatic_timing.md", "\n".join(lines) + "\n")
 
 
