@@ -27,6 +27,32 @@ class InputError(ValueError):
     """An input or parameter value is outside its allowed range (message names it and the range)."""
 
 
+def check_speed(omega, omega_max):
+    """Raise InputError unless omega (rad/s) is finite and |omega| <= omega_max (the d_m n limit)."""
+    if not (math.isfinite(omega) and abs(omega) <= omega_max):
+        raise InputError(f"omega = {omega} rad/s is outside the allowed range [{-omega_max:.6g}, {omega_max:.6g}] "
+                         f"rad/s (d_m n <= {DM_N_LIMIT:.0e} mm.rpm)")
+
+
+def check_oil_temperature(T_oil):
+    """Raise InputError unless T_oil (K) is within T_OIL_RANGE."""
+    lo, hi = T_OIL_RANGE
+    if not (math.isfinite(T_oil) and lo <= T_oil <= hi):
+        raise InputError(f"T_oil = {T_oil} K is outside the allowed range [{lo}, {hi}] K")
+
+
+def pressure_warnings(p_max, loads):
+    """Warnings for a Hertz pressure p_max (Pa) above the ISO 76 limit; InputError above the material
+    limit. `loads` names the inputs that caused it (for the message)."""
+    if p_max > P_MAX_ERROR:
+        raise InputError(f"{loads} gives p_max = {p_max / 1e9:.3g} GPa, beyond the material limit "
+                         f"{P_MAX_ERROR / 1e9:.1f} GPa (allowed: loads giving p_max <= {P_MAX_ERROR / 1e9:.1f} GPa)")
+    if p_max > P_MAX_WARNING:
+        return [f"p_max = {p_max / 1e9:.3g} GPa exceeds {P_MAX_WARNING / 1e9:.1f} GPa "
+                f"(ISO 76 static limit): permanent raceway deformation expected"]
+    return []
+
+
 @dataclass(frozen=True)
 class Variable:
     name: str         # FMI variable name
@@ -134,15 +160,10 @@ class BearingModel:
 
     def check_inputs(self, omega, F_y, T_oil):
         """Raise InputError naming the first input outside its allowed range."""
-        lim = self.omega_max
-        if not (math.isfinite(omega) and abs(omega) <= lim):
-            raise InputError(f"omega = {omega} rad/s is outside the allowed range [{-lim:.6g}, {lim:.6g}] rad/s "
-                             f"(d_m n <= {DM_N_LIMIT:.0e} mm.rpm)")
+        check_speed(omega, self.omega_max)
         if not math.isfinite(F_y):
             raise InputError(f"F_y = {F_y} N is not a finite number")
-        lo, hi = T_OIL_RANGE
-        if not (math.isfinite(T_oil) and lo <= T_oil <= hi):
-            raise InputError(f"T_oil = {T_oil} K is outside the allowed range [{lo}, {hi}] K")
+        check_oil_temperature(T_oil)
 
     def evaluate(self, omega, F_y, T_oil):
         """Outputs (dict name -> SI value) for inner-ring speed omega (rad/s), radial load F_y (N)
@@ -152,13 +173,7 @@ class BearingModel:
         out = self._out
         ak.analytic_bearing(float(omega), abs(float(F_y)), float(T_oil), self.brg, self.lubricant.array,
                             self.nodes, self.weights, out, self.ball)
-        self.warnings = []
-        if out[ak.O_PMAX] > P_MAX_ERROR:
-            raise InputError(f"F_y = {F_y} N gives p_max = {out[ak.O_PMAX] / 1e9:.3g} GPa, beyond the material "
-                             f"limit {P_MAX_ERROR / 1e9:.1f} GPa (allowed: loads giving p_max <= {P_MAX_ERROR / 1e9:.1f} GPa)")
-        if out[ak.O_PMAX] > P_MAX_WARNING:
-            self.warnings.append(f"p_max = {out[ak.O_PMAX] / 1e9:.3g} GPa exceeds {P_MAX_WARNING / 1e9:.1f} GPa "
-                                 f"(ISO 76 static limit): permanent raceway deformation expected")
+        self.warnings = pressure_warnings(out[ak.O_PMAX], f"F_y = {F_y} N")
         sign = -1.0 if F_y < 0.0 else 1.0
         values = {
             "Lambda_inner": out[ak.O_LAMBDA_I],

@@ -14,7 +14,8 @@ from .kernels.geometry import ball_mass, curvature_radii, free_contact_angle
 from .kernels.hertz import (hertz_coefficients_approx, hertz_coefficients_exact, hertz_contact,
                             hertz_stiffness, reduced_modulus)
 from .kernels.torque import ALPHA_HYSTERESIS_STEEL, TL_SIZE
-from .model import DM_N_LIMIT, P_MAX_ERROR, P_MAX_WARNING, T_OIL_RANGE, InputError, Variable
+from .model import (DM_N_LIMIT, P_MAX_ERROR, InputError, Variable, check_oil_temperature, check_speed,
+                    pressure_warnings)
 from .params import load_bearing, load_lubricant
 from .scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, RACE_CONTROLS, Scene
 
@@ -209,15 +210,8 @@ class QuasiStaticModel:
     # -- evaluation ----------------------------------------------------------------------------
     def check_inputs(self, values):
         """Raise InputError naming the first input outside its allowed range."""
-        lim = self.omega_max
-        omega = values["omega"]
-        if not (math.isfinite(omega) and abs(omega) <= lim):
-            raise InputError(f"omega = {omega} rad/s is outside the allowed range [{-lim:.6g}, {lim:.6g}] rad/s "
-                             f"(d_m n <= {DM_N_LIMIT:.0e} mm.rpm)")
-        lo, hi = T_OIL_RANGE
-        T = values["T_oil"]
-        if not (math.isfinite(T) and lo <= T <= hi):
-            raise InputError(f"T_oil = {T} K is outside the allowed range [{lo}, {hi}] K")
+        check_speed(values["omega"], self.omega_max)
+        check_oil_temperature(values["T_oil"])
         for i in range(5):
             if self.control[i]:
                 name = LOAD_NAMES[i]
@@ -284,13 +278,7 @@ class QuasiStaticModel:
 
     def _collect(self, omega, values):
         out, balls = self.out, self.balls
-        self.warnings = []
-        if out[ck.CO_PMAX] > P_MAX_ERROR:
-            raise InputError(f"the loads give p_max = {out[ck.CO_PMAX] / 1e9:.3g} GPa, beyond the material limit "
-                             f"{P_MAX_ERROR / 1e9:.1f} GPa (allowed: loads giving p_max <= {P_MAX_ERROR / 1e9:.1f} GPa)")
-        if out[ck.CO_PMAX] > P_MAX_WARNING:
-            self.warnings.append(f"p_max = {out[ck.CO_PMAX] / 1e9:.3g} GPa exceeds {P_MAX_WARNING / 1e9:.1f} GPa "
-                                 f"(ISO 76 static limit): permanent raceway deformation expected")
+        self.warnings = pressure_warnings(out[ck.CO_PMAX], "the loads")
         q_i = balls[qk.BQ_Q_I]
         j = int(np.argmax(q_i)) if q_i.max() > 0.0 else int(np.argmax(balls[qk.BQ_Q_O]))
         w_m, w_R, beta = balls[qk.BQ_W_M, j], balls[qk.BQ_W_R, j], balls[qk.BQ_BETA, j]

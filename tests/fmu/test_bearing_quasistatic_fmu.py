@@ -75,33 +75,13 @@ STEPS_LOAD = [  # omega (rad/s), F_x, F_y, F_z (N), M_x (N.m), T_oil (K), dPd_th
 ]
 
 
-def test_hand_written_loop_equals_python_model(bearing_fmu):
-    scene = scene_of("quasi_static.toml")
-    model = QuasiStaticModel(scene=scene, race_control="hybrid")
+def replay_equals_model(fmu_path, model, steps, parameters=None):
+    """Step the FMU and the model through the same history; every output must be bit-identical.
+    Returns the model's last outputs."""
     model.evaluate()  # the FMU evaluates its defaults at construction and at initialisation
     model.evaluate()
-    with opened(bearing_fmu, "loop", {"race_control": "hybrid"}) as (fmu, vr):
-        names = fmu_outputs(read_model_description(str(bearing_fmu)))
-        for n, step in enumerate(STEPS_LOAD):
-            inputs = {"T_oil": 313.15, **step}
-            for var in model.inputs:
-                fmu.setReal([vr[var.name]], [inputs.get(var.name, 0.0)])
-            fmu.doStep(0.1 * n, 0.1)
-            got = read_outputs(fmu, vr, names)
-            ref = model.evaluate(**inputs)
-            for name in names:
-                assert got[name] == ref[name], (n, name, got[name], ref[name])
-
-
-def test_displacement_fmu_equals_python_model(bearing_disp_fmu):
-    scene = scene_of("quasi_static_displacement.toml")
-    model = QuasiStaticModel(scene=scene)
-    model.evaluate()
-    model.evaluate()
-    steps = [dict(omega=0.0, z=20e-6), dict(omega=1047.0, x=3e-6, z=25e-6, theta_y=1e-4, dz_thermal=2e-6),
-             dict(omega=300.0, x=-2e-6, y=1e-6, z=10e-6)]
-    with opened(bearing_disp_fmu, "disp") as (fmu, vr):
-        names = fmu_outputs(read_model_description(str(bearing_disp_fmu)))
+    with opened(fmu_path, "loop", parameters) as (fmu, vr):
+        names = fmu_outputs(read_model_description(str(fmu_path)))
         for n, step in enumerate(steps):
             inputs = {"T_oil": 313.15, **step}
             for var in model.inputs:
@@ -111,6 +91,19 @@ def test_displacement_fmu_equals_python_model(bearing_disp_fmu):
             ref = model.evaluate(**inputs)
             for name in names:
                 assert got[name] == ref[name], (n, name, got[name], ref[name])
+    return ref
+
+
+def test_hand_written_loop_equals_python_model(bearing_fmu):
+    model = QuasiStaticModel(scene=scene_of("quasi_static.toml"), race_control="hybrid")
+    replay_equals_model(bearing_fmu, model, STEPS_LOAD, {"race_control": "hybrid"})
+
+
+def test_displacement_fmu_equals_python_model(bearing_disp_fmu):
+    model = QuasiStaticModel(scene=scene_of("quasi_static_displacement.toml"))
+    steps = [dict(omega=0.0, z=20e-6), dict(omega=1047.0, x=3e-6, z=25e-6, theta_y=1e-4, dz_thermal=2e-6),
+             dict(omega=300.0, x=-2e-6, y=1e-6, z=10e-6)]
+    ref = replay_equals_model(bearing_disp_fmu, model, steps)
     assert ref["F_z"] > 0.0 and ref["K[3,3]"] > 0.0
 
 
