@@ -7,6 +7,11 @@ import shutil
 from dataclasses import dataclass, field
 
 import numpy as np
+# pythonfmu FMUs run inside this interpreter. SPEC 3: loading scipy's compiled libraries (numba
+# imports scipy) for the first time from inside an FMU can make the process abort at exit, so load
+# both here, before any FMU. (Not sufficient on its own: see spindle.cli.run.)
+import numba  # noqa: F401, E402
+import scipy.special  # noqa: F401, E402
 from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Slave
 
