@@ -75,7 +75,7 @@ STEPS_LOAD = [  # omega (rad/s), F_x, F_y, F_z (N), M_x (N.m), T_oil (K), dPd_th
 ]
 
 
-def replay_equals_model(fmu_path, model, steps, parameters=None):
+def assert_replay_equals_model(fmu_path, model, steps, parameters=None):
     """Step the FMU and the model through the same history; every output must be bit-identical.
     Returns the model's last outputs."""
     model.evaluate()  # the FMU evaluates its defaults at construction and at initialisation
@@ -96,14 +96,14 @@ def replay_equals_model(fmu_path, model, steps, parameters=None):
 
 def test_hand_written_loop_equals_python_model(bearing_fmu):
     model = QuasiStaticModel(scene=scene_of("quasi_static.toml"), race_control="hybrid")
-    replay_equals_model(bearing_fmu, model, STEPS_LOAD, {"race_control": "hybrid"})
+    assert_replay_equals_model(bearing_fmu, model, STEPS_LOAD, {"race_control": "hybrid"})
 
 
 def test_displacement_fmu_equals_python_model(bearing_disp_fmu):
     model = QuasiStaticModel(scene=scene_of("quasi_static_displacement.toml"))
     steps = [dict(omega=0.0, z=20e-6), dict(omega=1047.0, x=3e-6, z=25e-6, theta_y=1e-4, dz_thermal=2e-6),
              dict(omega=300.0, x=-2e-6, y=1e-6, z=10e-6)]
-    ref = replay_equals_model(bearing_disp_fmu, model, steps)
+    ref = assert_replay_equals_model(bearing_disp_fmu, model, steps)
     assert ref["F_z"] > 0.0 and ref["K[3,3]"] > 0.0
 
 
