@@ -17,6 +17,7 @@ from pathlib import Path
 
 from pythonfmu.builder import FmuBuilder
 
+from .fmu import DEFAULT_FIXED_PRELOAD
 from .model import BearingModel
 from .quasi_static import QuasiStaticModel
 from .scene import Scene
@@ -40,17 +41,19 @@ sys.__dict__.setdefault("_pythonfmu_namespace_refs", []).append(globals())
 
 _HERE = Path(__file__).resolve().parent
 _BUNDLE = "{bundle}"
+_PACKAGES = {packages!r}
 
 
 def _stable_copy():
-    """Copy the bundled package once per version to a stable directory (numba cache reuse)."""
+    """Copy the bundled packages once per version to a stable directory (numba cache reuse)."""
     base = os.environ.get("BEARING_FMU_CACHE") or os.path.join(
         os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"), "bearing_fmu")
     target = Path(base) / _BUNDLE
-    if not (target / "bearing_fmu" / "__init__.py").is_file():
+    if not all((target / p / "__init__.py").is_file() for p in _PACKAGES):
         Path(base).mkdir(parents=True, exist_ok=True)
         staging = Path(tempfile.mkdtemp(prefix=".staging-", dir=base))
-        shutil.copytree(_HERE / "bearing_fmu", staging / "bearing_fmu")
+        for p in _PACKAGES:
+            shutil.copytree(_HERE / p, staging / p)
         try:
             os.replace(staging, target)  # atomic: concurrent first loads do not collide
         except OSError:
@@ -58,29 +61,53 @@ def _stable_copy():
     return str(target)
 
 
-if "bearing_fmu" not in sys.modules:
+if any(p not in sys.modules for p in _PACKAGES):
     try:
         sys.path.insert(0, _stable_copy())
     except OSError:  # read-only home: run from the extracted FMU (numba cache then misses)
         sys.path.insert(0, str(_HERE))
 
-from bearing_fmu.fmu import {base_class} as _Slave  # noqa: E402
-from bearing_fmu.scene import Scene  # noqa: E402
-
+from {module} import {base_class} as _Slave  # noqa: E402
+{imports}
 
 class {fmu_name}(_Slave):
-    scene = Scene.from_dict({scene_dict!r})
+    {body}
 '''
 
 
-def package_hash():
+def package_hash(package_dirs=(PACKAGE_DIR,)):
     """Content hash of the package sources (names and bytes): the bundle version."""
     digest = hashlib.sha256()
-    for path in sorted(PACKAGE_DIR.rglob("*")):
-        if path.is_file() and "__pycache__" not in path.parts and path.suffix in (".py", ".toml"):
-            digest.update(path.relative_to(PACKAGE_DIR).as_posix().encode())
-            digest.update(path.read_bytes())
+    for package_dir in package_dirs:
+        for path in sorted(Path(package_dir).rglob("*")):
+            if path.is_file() and "__pycache__" not in path.parts and path.suffix in (".py", ".toml"):
+                digest.update(Path(package_dir).name.encode())
+                digest.update(path.relative_to(package_dir).as_posix().encode())
+                digest.update(path.read_bytes())
     return digest.hexdigest()[:16]
+
+
+def build_python_fmu(fmu_name, module, base_class, out_dir, package_dirs=(PACKAGE_DIR,), body="pass",
+                     imports=""):
+    """Build a pythonfmu FMU whose slave class `fmu_name` derives from module.base_class, bundling
+    the given package directories in resources/ (copied to a stable cache directory at load)."""
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    package_dirs = [Path(p) for p in package_dirs]
+    with tempfile.TemporaryDirectory(prefix="bearing_fmu_build_") as tmp:
+        stage = Path(tmp)
+        for package_dir in package_dirs:
+            shutil.copytree(package_dir, stage / package_dir.name,
+                            ignore=shutil.ignore_patterns("__pycache__", "*.pyc", "*.nbi", "*.nbc"))
+        entry = stage / f"{fmu_name.lower()}_entry.py"
+        entry.write_text(ENTRY_TEMPLATE.format(fmu_name=fmu_name, bundle=package_hash(package_dirs),
+                                               packages=[p.name for p in package_dirs], module=module,
+                                               base_class=base_class, imports=imports, body=body))
+        path = FmuBuilder.build_FMU(entry, dest=out_dir / f"{fmu_name}.fmu",
+                                    project_files=[stage / p.name for p in package_dirs],
+                                    canGetAndSetFMUstate=True, canSerializeFMUstate=True)
+        sys.modules.pop(entry.stem, None)
+    return Path(path)
 
 
 def scene_files():
@@ -96,19 +123,10 @@ def build_fmu(scene_file, out_dir=DEFAULT_OUT):
     base_class = doc["fmu"]["slave"]
     scene_dict = doc["scene"]
     Scene.from_dict(scene_dict)  # fail early, listing every problem
+    path = build_python_fmu(fmu_name, "bearing_fmu.fmu", base_class, out_dir,
+                            body=f"scene = Scene.from_dict({scene_dict!r})",
+                            imports="from bearing_fmu.scene import Scene  # noqa: E402\n")
     out_dir = Path(out_dir)
-    out_dir.mkdir(parents=True, exist_ok=True)
-    with tempfile.TemporaryDirectory(prefix="bearing_fmu_build_") as tmp:
-        stage = Path(tmp)
-        shutil.copytree(PACKAGE_DIR, stage / "bearing_fmu",
-                        ignore=shutil.ignore_patterns("__pycache__", "*.pyc", "*.nbi", "*.nbc"))
-        entry = stage / f"{fmu_name.lower()}_entry.py"
-        entry.write_text(ENTRY_TEMPLATE.format(fmu_name=fmu_name, bundle=package_hash(),
-                                               base_class=base_class, scene_dict=scene_dict))
-        path = FmuBuilder.build_FMU(entry, dest=out_dir / f"{fmu_name}.fmu",
-                                    project_files=[stage / "bearing_fmu"],
-                                    canGetAndSetFMUstate=True, canSerializeFMUstate=True)
-        sys.modules.pop(entry.stem, None)
     shutil.copy2(scene_file, out_dir / f"{fmu_name}_scene.toml")
     write_reference(scene_dict, out_dir / f"{fmu_name}_ref.csv")
     return Path(path)
@@ -118,12 +136,15 @@ def reference_inputs(scene):
     """The reference experiment of a scene (input dicts, SI): a speed ramp at constant load.
 
     analytic: 6208 at 3 kN radial, 40 C, 0-1700 rad/s; quasi_static: B7214C at 800 N axial and
-    500 N radial (load drive) or at z = 20 um, x = 2 um (imposed), 40 C, 0-10 000 rpm."""
+    500 N radial (load drive) or at z = 20 um, x = 2 um (imposed) or with 500 N radial at 5 um beyond
+    the 800 N assembly offset (fixed_axial), 40 C, 0-10 000 rpm."""
     if scene.fidelity == "analytic":
         return [{"omega": float(w), "F_y": 3000.0, "T_oil": 313.15} for w in range(0, 1701, 50)]
     speeds = [n * 2.0 * math.pi / 60.0 for n in range(0, 10001, 500)]
     if scene.drive == "displacement":
         return [{"omega": w, "x": 2e-6, "z": 20e-6, "T_oil": 313.15} for w in speeds]
+    if scene.drive == "fixed_axial":  # assembly offset of the FMU's default F_preload, 5 um tighter
+        return [{"omega": w, "F_x": 500.0, "z": 5e-6, "T_oil": 313.15} for w in speeds]
     return [{"omega": w, "F_x": 500.0, "F_z": 800.0, "T_oil": 313.15} for w in speeds]
 
 
@@ -131,6 +152,8 @@ def make_model(scene):
     """The Python model of a scene with its FMU's default parameters."""
     if scene.fidelity == "analytic":
         return BearingModel(scene=scene)
+    if scene.drive == "fixed_axial":
+        return QuasiStaticModel(scene=scene, F_preload=DEFAULT_FIXED_PRELOAD)
     return QuasiStaticModel(scene=scene)
 
 

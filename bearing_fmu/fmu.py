@@ -15,6 +15,7 @@ from .params import ParameterError
 from .quasi_static import QuasiStaticModel
 from .scene import Scene, SceneError
 
+DEFAULT_FIXED_PRELOAD = 800.0  # N, Rabreau et al. 2018 rig (fixed_axial scenes only)
 INPUT_START = {"T_oil": 313.15}  # every other input starts at 0 (at rest, unloaded, centred)
 
 
@@ -157,10 +158,19 @@ class BearingQuasiStatic(_BearingSlave):
                                          "(negative = preload), |Pd| <= 0.02 D", unit="m"))
         self.register_variable(parameter("race_control", self.race_control, "ball race-control hypothesis: "
                                          "outer | inner | hybrid (Rabreau 2018)"))
+        self.F_preload = 0.0
+        if self.scene.drive == "fixed_axial":  # only a fixed-preload bearing has an assembly offset
+            self.F_preload = DEFAULT_FIXED_PRELOAD
+            self.register_variable(parameter("F_preload", self.F_preload, "axial preload set at assembly (at rest, "
+                                             "no thermal change; default: the Rabreau rig's 800 N); the input z is "
+                                             "added to the axial approach that carries it. 0 = z is the axial "
+                                             "approach itself", unit="N"))
 
     def _model_key(self):
-        return self.bearing, self.lubricant, bool(self.Pd_from_file), float(self.Pd), self.race_control
+        return (self.bearing, self.lubricant, bool(self.Pd_from_file), float(self.Pd), self.race_control,
+                float(self.F_preload))
 
     def _make_model(self):
         Pd = None if self.Pd_from_file else self.Pd
-        return QuasiStaticModel(self.bearing, self.lubricant, self.scene, Pd=Pd, race_control=self.race_control)
+        return QuasiStaticModel(self.bearing, self.lubricant, self.scene, Pd=Pd, race_control=self.race_control,
+                                F_preload=self.F_preload)

@@ -175,20 +175,8 @@ class PairAssembly:
                 raise InputError(f"F_preload = {F_preload} N is beyond the material limit of bearing "
                                  f"'{m.bearing.name}' (allowed F_preload < {m.load_limit:.4g} N)")
         # axial approach z_k0 (m) of each bearing alone carrying F_p at rest (the assembly offsets)
-        self.z0 = tuple(self._assembly_offset(m) for m in self.models)
+        self.z0 = tuple(m.axial_approach(self.F_preload) for m in self.models)
         self.set_state(None)
-
-    def _assembly_offset(self, model):
-        Z = model.bearing.Z
-        d = np.zeros(5)
-        X = np.zeros((2, Z))
-        status, _, res = qk.solve_quasistatic(self.F_preload * _AXIAL, _AXIAL, d, model.qs, 0.0, 0.0, X,
-                                              np.zeros(5), np.zeros((5, 5)), np.zeros((qk.BQ_SIZE, Z)))
-        if status != qk.QS_OK:
-            raise SolverError(f"bearing '{model.bearing.name}': axial position under the preload "
-                              f"F_preload = {self.F_preload} N at rest not found (status {status}, "
-                              f"residual {res:.3g} N)")
-        return float(d[2])
 
     # -- warm-start state ----------------------------------------------------------------------
     def get_state(self):

@@ -47,10 +47,14 @@ class QuasiStaticModel:
 
     bearing, lubricant: catalogue name or TOML path; scene: Scene with fidelity 'quasi_static';
     Pd: diametral clearance (m) overriding the bearing file, |Pd| <= 0.02 D;
-    race_control: 'outer' | 'inner' | 'hybrid' (default: the scene's).
+    race_control: 'outer' | 'inner' | 'hybrid' (default: the scene's);
+    F_preload: fixed_axial drive only, axial preload (N, >= 0) set at assembly (at rest, no thermal
+        change): the model holds the axial approach z0 (m) that carries it, and the input z (and
+        dz_thermal) is added to z0. 0 (default) = z is the axial approach itself.
     """
 
-    def __init__(self, bearing="B7214C", lubricant="iso_vg68_mineral", scene=None, Pd=None, race_control=None):
+    def __init__(self, bearing="B7214C", lubricant="iso_vg68_mineral", scene=None, Pd=None, race_control=None,
+                 F_preload=0.0):
         self.scene = (scene or Scene(name="quasi_static", fidelity="quasi_static")).validate()
         if self.scene.fidelity != "quasi_static":
             raise InputError(f"scene '{self.scene.name}' has fidelity {self.scene.fidelity!r}: QuasiStaticModel "
@@ -83,6 +87,14 @@ class QuasiStaticModel:
         self._losses = np.zeros(TL_SIZE)
         self.status = (qk.QS_OK, 0, 0.0)
         self.warnings = []
+        self.F_preload = float(F_preload)
+        if self.F_preload and self.scene.drive != "fixed_axial":
+            raise InputError(f"F_preload = {F_preload} N needs drive = 'fixed_axial' (scene '{self.scene.name}' "
+                             f"has drive {self.scene.drive!r})")
+        if not (math.isfinite(self.F_preload) and 0.0 <= self.F_preload < self.load_limit):
+            raise InputError(f"F_preload = {F_preload} N is outside the allowed range [0, {self.load_limit:.4g}) N "
+                             f"(the upper bound is the material limit)")
+        self.z0 = self.axial_approach(self.F_preload) if self.F_preload else 0.0
 
     # -- set-up --------------------------------------------------------------------------------
     def _pack(self):
@@ -144,6 +156,19 @@ class QuasiStaticModel:
             q_lim = min(q_lim, (P_MAX_ERROR / p_unit) ** 3)
         return self.bearing.Z * q_lim
 
+    def axial_approach(self, F_axial):
+        """Axial approach z (m) at which this bearing alone carries the axial load F_axial (N) at rest,
+        with no thermal change (the assembly offset of a fixed preload)."""
+        Z = self.bearing.Z
+        d = np.zeros(5)
+        axial = np.array([0.0, 0.0, 1.0, 0.0, 0.0])
+        status, _, res = qk.solve_quasistatic(F_axial * axial, axial, d, self.qs, 0.0, 0.0, np.zeros((2, Z)),
+                                              np.zeros(5), np.zeros((5, 5)), np.zeros((qk.BQ_SIZE, Z)))
+        if status != qk.QS_OK:
+            raise SolverError(f"bearing '{self.bearing.name}': axial position under F = {F_axial} N at rest not "
+                              f"found (status {status}, residual {res:.3g} N)")
+        return float(d[2])
+
     # -- variables -----------------------------------------------------------------------------
     @property
     def inputs(self):
@@ -153,8 +178,10 @@ class QuasiStaticModel:
             if self.control[i]:
                 out.append(Variable(LOAD_NAMES[i], LOAD_UNITS[i], f"applied {LOAD_WORDS[i]} on the inner ring"))
             else:
+                extra = (" (added to the assembly offset z0 of the parameter F_preload)"
+                         if i == 2 and self.scene.drive == "fixed_axial" else "")
                 out.append(Variable(DOF_NAMES[i], DOF_UNITS[i], f"imposed {DOF_WORDS[i]} of the inner ring "
-                                    f"relative to the outer ring"))
+                                    f"relative to the outer ring{extra}"))
         out.append(Variable("T_oil", "K", "oil temperature (viscosity, pressure-viscosity, density)"))
         if self.scene.thermal_inputs:
             out.append(Variable("dPd_thermal", "m", "change of diametral clearance from thermal and centrifugal "
@@ -248,7 +275,8 @@ class QuasiStaticModel:
         for i in range(5):
             if not self.control[i]:
                 self.d[i] = float(values[DOF_NAMES[i]])
-        self.d[2] += 0.0 if self.control[2] else float(values.get("dz_thermal", 0.0))
+        if not self.control[2]:
+            self.d[2] += self.z0 + float(values.get("dz_thermal", 0.0))
         dPd = float(values.get("dPd_thermal", 0.0))
         self._solve(applied, dPd, omega, values)
         ck.contact_outputs(omega, float(values["T_oil"]), self.cp, self.lubricant.array, self.balls, self.out,

@@ -1,0 +1,546 @@
+"""SpindleThermalModel: facade of the lumped thermal spindle (SPEC 4.9; docs/spindle_thermal.md).
+
+Reads a spindle TOML (a catalogue name in spindle/params/ or a path), packs it into the arrays of
+spindle.network, advances the temperatures with the exact exponential update (default) or backward
+Euler, and turns temperatures into thermal/centrifugal changes of bearing clearance and axial
+interference. Inputs and outputs are SI and declared as bearing_fmu.model.Variable tables that the
+FMU class turns into FMI variables. No scipy import on this path (SPEC 3): the eigendecomposition
+is numpy's.
+"""
+import math
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from bearing_fmu.model import InputError, Variable
+from bearing_fmu.params import ParameterError, load_bearing
+
+from . import network as nk
+
+CATALOGUE = Path(__file__).resolve().parent / "params"
+INTEGRATORS = ("exponential", "implicit_euler")
+ARRANGEMENT_SIGN = {"X": 1.0, "O": -1.0}
+# Admissible inputs (anything outside is reported, never integrated into NaN):
+OMEGA_MAX = 1e5       # rad/s (~955 000 rpm): beyond any spindle; the correlation would be meaningless
+HEAT_MAX = 1e7        # W: |heat input|, far beyond any spindle bearing or motor loss
+T_MAX = 1000.0        # K: boundary temperatures in ]0, T_MAX]
+SUBSTEPS_MAX = 100000
+
+
+class SpindleInputError(InputError):
+    """An input of the thermal spindle is outside its allowed range (the message names it and the range)."""
+
+
+DEFAULT_SPINDLE = "b7214c_x_pair"
+
+
+# ---------------------------------------------------------------------------------------------- TOML
+def network_path(name_or_path):
+    """Path of a spindle network TOML file from its catalogue name or path."""
+    return _resolve(name_or_path)
+
+
+def _resolve(name_or_path):
+    text = str(name_or_path)
+    candidate = CATALOGUE / f"{text}.toml"
+    if candidate.is_file():
+        return candidate
+    path = Path(text).expanduser()
+    if path.suffix == ".toml" and path.is_file():
+        return path
+    names = ", ".join(sorted(p.stem for p in CATALOGUE.glob("*.toml")))
+    raise ParameterError(f"unknown spindle '{text}': give a catalogue name ({names}) or the path of a .toml file")
+
+
+def _quantity(table, key, unit, where, low=0.0, high=math.inf, low_open=True):
+    """Checked value of `table[key]` = { value, unit, source [, estimated] } (where: for messages)."""
+    if key not in table:
+        raise ParameterError(f"{where}: missing key '{key}' ({unit})")
+    node = table[key]
+    if not isinstance(node, dict) or "value" not in node:
+        raise ParameterError(f"{where}: '{key}' must be a table {{ value = ..., unit = \"{unit}\", source = ... }}")
+    if node.get("unit") != unit:
+        raise ParameterError(f"{where}: '{key}' has unit '{node.get('unit')}', expected '{unit}'")
+    if "source" not in node:
+        raise ParameterError(f"{where}: '{key}' has no 'source'")
+    value = node["value"]
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise ParameterError(f"{where}: '{key}' = {value!r} is not a finite number")
+    if not ((value > low if low_open else value >= low) and value <= high):
+        raise ParameterError(f"{where}: '{key}' = {value} {unit} is outside the allowed range "
+                             f"{']' if low_open else '['}{low}, {high}]")
+    return float(value)
+
+
+# link kind -> (code, [(TOML key, unit)] in the order of the kernel's parameter row)
+LINK_KINDS = {
+    "conductance": (nk.LINK_CONDUCTANCE, [("G", "W/K")]),
+    "shell": (nk.LINK_SHELL, [("conductivity", "W/m/K"), ("length", "m"), ("r_inner", "m"), ("r_outer", "m")]),
+    "contact": (nk.LINK_CONTACT, [("h_c", "W/m^2/K"), ("area", "m^2")]),
+    "convection": (nk.LINK_CONVECTION, [("h", "W/m^2/K"), ("area", "m^2")]),
+    "rotating_shaft": (nk.LINK_ROTATING_SHAFT, [("diameter", "m"), ("area", "m^2")]),
+    "advection": (nk.LINK_ADVECTION, [("mass_flow", "kg/s"), ("specific_heat", "J/kg/K")]),
+}
+
+
+@dataclass
+class Network:
+    """A spindle network packed for the kernels (all SI)."""
+    name: str
+    path: str
+    nodes: tuple            # node names
+    C: np.ndarray           # capacities (J/K)
+    boundaries: tuple       # boundary names
+    boundary_inputs: tuple  # input name giving each boundary's temperature
+    links: tuple            # (name, kind name) per link
+    kinds: np.ndarray       # int64 link codes
+    par: np.ndarray         # (n_links, PAR_SIZE)
+    ends_i: np.ndarray      # int64, node index or n + boundary index
+    ends_j: np.ndarray
+    heat_names: tuple       # heat input names
+    heat_text: tuple        # their descriptions
+    dist: np.ndarray        # (n_nodes, n_heat) fraction of each input going to each node
+    T_ref: float            # assembly temperature (K)
+    alpha_bearing: float    # expansion coefficient of rings and balls (1/K)
+    bearings: tuple         # dicts: inner_ring, outer_ring, ball_oil (node indices), d_i, d_o, D, a, E, nu, rho
+    axial: dict | None      # s_arr, spacing, alpha_shaft, alpha_housing, shaft, housing (indices), axial_float
+
+
+def _bearing_entry(entry, index, node_index, where):
+    where = f"{where} [[bearing]] #{index}"
+    nodes = {}
+    for role in ("inner_ring", "outer_ring", "ball_oil"):
+        name = entry.get(role)
+        if name not in node_index:
+            raise ParameterError(f"{where}: '{role}' = {name!r} is not a node ({', '.join(node_index)})")
+        nodes[role] = node_index[name]
+    b = load_bearing(entry.get("bearing", ""))
+    d_i = b.dm - b.D - 0.5 * b.Pd  # groove diameters with P_d = d_o - d_i - 2 D (Harris)
+    d_o = b.dm + b.D + 0.5 * b.Pd
+    # the Bearing record does not carry the bore: read it from the bearing's own file
+    bore = _quantity(tomllib.loads(Path(b.path).read_text()).get("geometry", {}), "bore", "m",
+                     f"{b.path} [geometry]", high=d_i)
+    return dict(name=b.name, d_i=d_i, d_o=d_o, D=b.D, a=0.5 * bore, E=b.ring.E, nu=b.ring.nu, rho=b.ring.rho, **nodes)
+
+
+def load_spindle(name_or_path):
+    """Network from a catalogue name ('b7214c_x_pair') or a TOML path; validated (docs/spindle_thermal.md)."""
+    path = _resolve(name_or_path)
+    try:
+        doc = tomllib.loads(path.read_text())
+    except tomllib.TOMLDecodeError as exc:
+        raise ParameterError(f"{path}: not valid TOML ({exc})") from None
+    where = str(path)
+    nodes, C = [], []
+    for k, entry in enumerate(doc.get("node", [])):
+        name = entry.get("name")
+        if not isinstance(name, str) or not name.isidentifier():
+            raise ParameterError(f"{where}: [[node]] #{k + 1} needs a name (letters, digits, _)")
+        nodes.append(name)
+        C.append(_quantity(entry, "capacity", "J/K", f"{where} node '{name}'"))
+    boundaries, b_inputs = [], []
+    for k, entry in enumerate(doc.get("boundary", [])):
+        name, inp = entry.get("name"), entry.get("input")
+        if not isinstance(name, str) or not isinstance(inp, str) or not inp.isidentifier():
+            raise ParameterError(f"{where}: [[boundary]] #{k + 1} needs a name and an input name")
+        boundaries.append(name)
+        b_inputs.append(inp)
+    everything = nodes + boundaries
+    if not nodes or not boundaries or len(set(everything)) != len(everything):
+        raise ParameterError(f"{where}: needs >= 1 [[node]] and >= 1 [[boundary]], all names distinct")
+    index = {name: i for i, name in enumerate(everything)}
+    n = len(nodes)
+    node_index = {name: i for i, name in enumerate(nodes)}
+
+    air = doc.get("air", {})
+    links, kinds, par, ends_i, ends_j = [], [], [], [], []
+    for k, entry in enumerate(doc.get("link", [])):
+        between = entry.get("between")
+        lw = f"{where} [[link]] #{k + 1} {between}"
+        if (not isinstance(between, list) or len(between) != 2 or between[0] == between[1]
+                or any(e not in index for e in between)):
+            raise ParameterError(f"{lw}: 'between' must name two different nodes/boundaries of {everything}")
+        i, j = index[between[0]], index[between[1]]
+        if i >= n and j >= n:
+            raise ParameterError(f"{lw}: a link between two boundaries has no effect on the network")
+        if i >= n:
+            i, j = j, i  # node first
+        kind = entry.get("kind")
+        if kind == "convection" and entry.get("correlation") == "rotating_shaft":
+            kind = "rotating_shaft"
+        elif kind == "convection" and "correlation" in entry:
+            raise ParameterError(f"{lw}: correlation = {entry['correlation']!r}, allowed: 'rotating_shaft'")
+        if kind not in LINK_KINDS:
+            raise ParameterError(f"{lw}: kind = {kind!r}, allowed: {', '.join(k for k in LINK_KINDS if k != 'rotating_shaft')}")
+        if kind == "advection" and j < n:
+            raise ParameterError(f"{lw}: an advection link carries a flow from a boundary (inlet) to a node")
+        code, keys = LINK_KINDS[kind]
+        row = np.zeros(nk.PAR_SIZE)
+        for q, (key, unit) in enumerate(keys):
+            row[q] = _quantity(entry, key, unit, lw)
+        if kind == "shell" and not row[3] > row[2]:
+            raise ParameterError(f"{lw}: r_outer = {row[3]} m must exceed r_inner = {row[2]} m")
+        if kind == "rotating_shaft":
+            row[2] = _quantity(air, "conductivity", "W/m/K", f"{where} [air]")
+            row[3] = _quantity(air, "kinematic_viscosity", "m^2/s", f"{where} [air]")
+            row[4] = _quantity(air, "prandtl", "-", f"{where} [air]")
+        links.append((entry.get("name", f"{between[0]}--{between[1]}"), kind))
+        kinds.append(code)
+        par.append(row)
+        ends_i.append(i)
+        ends_j.append(j)
+    _check_paths(nodes, n, ends_i, ends_j, kinds, where)
+
+    heat_names, heat_text, columns = [], [], []
+    for k, entry in enumerate(doc.get("heat_input", [])):
+        name, split = entry.get("name"), entry.get("split")
+        hw = f"{where} [[heat_input]] '{name}'"
+        if (not isinstance(name, str) or not name.isidentifier() or name in heat_names or name in b_inputs
+                or name == "omega"):
+            raise ParameterError(f"{hw}: needs a unique name (letters, digits, _)")
+        if not isinstance(split, dict) or not split or any(t not in node_index for t in split):
+            raise ParameterError(f"{hw}: 'split' must map node names ({', '.join(nodes)}) to fractions")
+        col = np.zeros(n)
+        for target, frac in split.items():
+            if isinstance(frac, bool) or not isinstance(frac, (int, float)) or not 0.0 < frac <= 1.0:
+                raise ParameterError(f"{hw}: fraction to '{target}' = {frac!r} must be in ]0, 1]")
+            col[node_index[target]] = frac
+        if abs(col.sum() - 1.0) > 1e-12:
+            raise ParameterError(f"{hw}: fractions sum to {col.sum()}, must sum to 1")
+        if "source" not in entry:
+            raise ParameterError(f"{hw}: has no 'source'")
+        heat_names.append(name)
+        heat_text.append(str(entry.get("description", f"heat input {name}")))
+        columns.append(col)
+
+    exp = doc.get("expansion", {})
+    T_ref = _quantity(exp, "T_ref", "K", f"{where} [expansion]", high=T_MAX)
+    alpha_b = _quantity(exp, "alpha_bearing", "1/K", f"{where} [expansion]", low=0.0, high=1e-3, low_open=False)
+    bearings = tuple(_bearing_entry(e, k + 1, node_index, where) for k, e in enumerate(doc.get("bearing", [])))
+    axial = _axial(doc.get("axial"), node_index, len(bearings), where)
+    return Network(
+        name=str(doc.get("meta", {}).get("name", path.stem)), path=str(path), nodes=tuple(nodes),
+        C=np.array(C), boundaries=tuple(boundaries), boundary_inputs=tuple(b_inputs), links=tuple(links),
+        kinds=np.array(kinds, dtype=np.int64), par=np.array(par).reshape(len(par), nk.PAR_SIZE),
+        ends_i=np.array(ends_i, dtype=np.int64), ends_j=np.array(ends_j, dtype=np.int64),
+        heat_names=tuple(heat_names), heat_text=tuple(heat_text),
+        dist=np.array(columns).T.reshape(n, len(columns)), T_ref=T_ref, alpha_bearing=alpha_b,
+        bearings=bearings, axial=axial)
+
+
+def _check_paths(nodes, n, ends_i, ends_j, kinds, where):
+    """Raise unless every node reaches a boundary through links whose conductance does not vanish at rest
+    (the rotating-shaft correlation gives G = 0 at omega = 0, so it does not count)."""
+    reached, frontier = set(), []
+    adjacency = {i: set() for i in range(n)}
+    for i, j, code in zip(ends_i, ends_j, kinds):
+        if code == nk.LINK_ROTATING_SHAFT:
+            continue
+        if j >= n:
+            frontier.append(i)
+        else:
+            adjacency[i].add(j)
+            adjacency[j].add(i)
+    while frontier:
+        i = frontier.pop()
+        if i not in reached:
+            reached.add(i)
+            frontier.extend(adjacency[i] - reached)
+    for i, name in enumerate(nodes):
+        if i not in reached:
+            raise ParameterError(f"{where}: node {name} has no conductive path to a boundary: steady state undefined "
+                                 f"(the rotating-shaft convection vanishes at rest and does not count)")
+
+
+def _axial(section, node_index, n_bearings, where):
+    if section is None:
+        return None
+    aw = f"{where} [axial]"
+    if n_bearings != 2:
+        raise ParameterError(f"{aw}: the axial interference is defined for a pair: needs exactly 2 [[bearing]]")
+    arrangement = section.get("arrangement")
+    if arrangement not in ARRANGEMENT_SIGN:
+        raise ParameterError(f"{aw}: arrangement = {arrangement!r}, allowed: 'X' (face-to-face), 'O' (back-to-back)")
+    out = dict(arrangement=arrangement, s_arr=ARRANGEMENT_SIGN[arrangement])
+    for role in ("shaft", "housing"):
+        if section.get(role) not in node_index:
+            raise ParameterError(f"{aw}: '{role}' = {section.get(role)!r} is not a node")
+        out[role] = node_index[section[role]]
+    out["spacing"] = _quantity(section, "spacing", "m", aw, high=10.0)
+    out["alpha_shaft"] = _quantity(section, "alpha_shaft", "1/K", aw, low=0.0, high=1e-3, low_open=False)
+    out["alpha_housing"] = _quantity(section, "alpha_housing", "1/K", aw, low=0.0, high=1e-3, low_open=False)
+    flt = section.get("axial_float", False)
+    if not isinstance(flt, bool):
+        raise ParameterError(f"{aw}: axial_float = {flt!r} must be true or false")
+    out["axial_float"] = flt
+    return out
+
+
+# --------------------------------------------------------------------------------------------- model
+class SpindleThermalModel:
+    """Lumped thermal spindle (SPEC 4.9): temperatures, clearance and axial-interference changes.
+
+    spindle: catalogue name (spindle/params/<name>.toml) or TOML path; integrator: 'exponential'
+    (exact for inputs held over the step, default) | 'implicit_euler' (backward Euler, `substeps` >= 1
+    equal sub-steps per step); T_initial (K): start temperature of every node (default: the T_ambient
+    input, or the first boundary's input, at initialize()); axial_float: None = as the TOML's
+    [axial] section says, True/False overrides it (the fixed-preload FMU is built with True).
+    Inputs missing from a call keep their previous value (defaults: heats 0 W, omega 0, temperatures
+    T_ref, forces 0 N, stiffnesses 0 N/m), like FMU inputs.
+    """
+
+    def __init__(self, spindle=DEFAULT_SPINDLE, integrator="exponential", substeps=1, T_initial=None,
+                 axial_float=None):
+        if integrator not in INTEGRATORS:
+            raise SpindleInputError(f"integrator = {integrator!r}: allowed {list(INTEGRATORS)}")
+        if isinstance(substeps, bool) or not isinstance(substeps, (int, np.integer)) \
+                or not 1 <= substeps <= SUBSTEPS_MAX:
+            raise SpindleInputError(f"substeps = {substeps!r} must be a whole number in [1, {SUBSTEPS_MAX}]")
+        if T_initial is not None and not (math.isfinite(T_initial) and 0.0 < T_initial <= T_MAX):
+            raise SpindleInputError(f"T_initial = {T_initial} K is outside the allowed range ]0, {T_MAX}] K")
+        self.net = net = load_spindle(spindle)
+        self.integrator = integrator
+        self.substeps = int(substeps)
+        self.T_initial = None if T_initial is None else float(T_initial)
+        self.axial_float = bool(net.axial and net.axial["axial_float"]) if axial_float is None else bool(axial_float)
+        if self.axial_float and not net.axial:
+            raise SpindleInputError(f"axial_float = true needs an [axial] section in spindle '{spindle}'")
+        self.inputs = self._input_table()
+        self.outputs = self._output_table()
+        self._defaults = {v.name: (net.T_ref if v.unit == "K" else 0.0) for v in self.inputs}
+        self._u = dict(self._defaults)
+        self._cache_omega = None
+        self._op = None
+        self.T = None          # node temperatures (K); None until initialize()
+        self.T0 = None         # initial node temperatures (K) for E_stored
+        self.s = 0.0           # axial float of the shaft (m)
+        self.time = 0.0        # s
+        self._out = None
+
+    # ---------------------------------------------------------------- tables
+    def _input_table(self):
+        net = self.net
+        out = [Variable(name, "W", text) for name, text in zip(net.heat_names, net.heat_text)]
+        out.append(Variable("omega", "rad/s", "shaft angular speed (rotating-shaft convection, centrifugal growth)"))
+        out += [Variable(name, "K", f"temperature of the boundary '{b}'")
+                for name, b in zip(net.boundary_inputs, net.boundaries)]
+        if self.axial_float:
+            for k in (1, 2):
+                out.append(Variable(f"F_axial_{k}", "N", f"axial reaction of bearing {k} (axial float)"))
+            for k in (1, 2):
+                out.append(Variable(f"K_axial_{k}", "N/m", f"axial stiffness of bearing {k} (axial float), >= 0"))
+        return tuple(out)
+
+    def _output_table(self):
+        net = self.net
+        out = [Variable(f"T_{name}", "K", f"temperature of node '{name}'") for name in net.nodes]
+        names = {v.name for v in out}
+        for k, b in enumerate(net.bearings, start=1):
+            for alias, role, text in ((f"T_inner_ring_{k}", "inner_ring", "inner ring"),
+                                      (f"T_outer_ring_{k}", "outer_ring", "outer ring"),
+                                      (f"T_oil_{k}", "ball_oil", "balls and oil")):
+                if alias in names:
+                    if alias != f"T_{net.nodes[b[role]]}":
+                        raise ParameterError(f"{net.path}: output {alias} would name node '{alias[2:]}' and "
+                                             f"bearing {k}'s {role} '{net.nodes[b[role]]}': rename the node")
+                    continue
+                out.append(Variable(alias, "K", f"temperature of bearing {k}'s {text} (node '{net.nodes[b[role]]}')"))
+                names.add(alias)
+            out.append(Variable(f"dPd_thermal_{k}", "m", f"change of bearing {k}'s diametral clearance from thermal "
+                                                          f"and centrifugal growth (negative = tighter)"))
+        if net.axial:
+            out.append(Variable("dz_thermal", "m", "change of the pair's axial interference from shaft vs housing "
+                                                   "growth (> 0 tightens both bearings)"))
+            for k in (1, 2):
+                out.append(Variable(f"dz_thermal_{k}", "m", f"change of bearing {k}'s local axial approach "
+                                                            f"(dz_thermal/2 {'+' if k == 1 else '-'} axial float)"))
+        out += [Variable("P_in", "W", "sum of the heat inputs"),
+                Variable("P_out", "W", "heat flowing into the boundaries at the current temperatures"),
+                Variable("E_stored", "J", "heat stored since initialisation: sum of C (T - T_initial)")]
+        return tuple(out)
+
+    @property
+    def parameters(self):
+        """Summary of the network (for documentation): nodes, boundaries, links (G at rest), inputs, bearings."""
+        net = self.net
+        G0 = nk.link_conductances(net.kinds, net.par, 0.0)
+        names = net.nodes + net.boundaries
+        return {
+            "name": net.name, "path": net.path, "integrator": self.integrator, "substeps": self.substeps,
+            "nodes": {name: float(c) for name, c in zip(net.nodes, net.C)},
+            "boundaries": dict(zip(net.boundaries, net.boundary_inputs)),
+            "links": [{"name": ln, "kind": kind, "between": (names[i], names[j]), "G_at_rest": float(g)}
+                      for (ln, kind), i, j, g in zip(net.links, net.ends_i, net.ends_j, G0)],
+            "heat_inputs": {name: {net.nodes[i]: float(f) for i, f in enumerate(net.dist[:, q]) if f}
+                            for q, name in enumerate(net.heat_names)},
+            "T_ref": net.T_ref, "alpha_bearing": net.alpha_bearing,
+            "bearings": [{key: (net.nodes[v] if key in ("inner_ring", "outer_ring", "ball_oil") else v)
+                          for key, v in b.items()} for b in net.bearings],
+            "axial": None if net.axial is None else {
+                key: (net.nodes[v] if key in ("shaft", "housing") else v) for key, v in net.axial.items()},
+        }
+
+    # ---------------------------------------------------------------- inputs
+    def _merge(self, inputs):
+        """Current inputs updated with `inputs`, validated (SpindleInputError names the first bad one)."""
+        u = dict(self._u)
+        for name, value in inputs.items():
+            if name not in u:
+                raise SpindleInputError(f"unknown input '{name}'; inputs: {', '.join(v.name for v in self.inputs)}")
+            try:
+                u[name] = float(value)
+            except (TypeError, ValueError):
+                raise SpindleInputError(f"{name} = {value!r} is not a number") from None
+        for v in self.inputs:
+            x = u[v.name]
+            if v.unit == "W":
+                ok, allowed = math.isfinite(x) and abs(x) <= HEAT_MAX, f"[{-HEAT_MAX:g}, {HEAT_MAX:g}] W"
+            elif v.unit == "K":
+                ok, allowed = math.isfinite(x) and 0.0 < x <= T_MAX, f"]0, {T_MAX:g}] K"
+            elif v.unit == "rad/s":
+                ok, allowed = math.isfinite(x) and abs(x) <= OMEGA_MAX, f"[{-OMEGA_MAX:g}, {OMEGA_MAX:g}] rad/s"
+            elif v.unit == "N/m":
+                ok, allowed = math.isfinite(x) and x >= 0.0, "[0, inf[ N/m (finite)"
+            else:
+                ok, allowed = math.isfinite(x), f"finite {v.unit}"
+            if not ok:
+                raise SpindleInputError(f"{v.name} = {x} {v.unit} is outside the allowed range {allowed}")
+        return u
+
+    def _vectors(self, u):
+        net = self.net
+        q = np.array([u[name] for name in net.heat_names])
+        Tb = np.array([u[name] for name in net.boundary_inputs])
+        return net.dist @ q, Tb, float(q.sum())
+
+    def _operator(self, omega):
+        """Conductances, L, B, Cholesky factor of L and (exponential) eigen data at omega; cached per omega."""
+        if self._cache_omega == omega:
+            return self._op
+        net = self.net
+        G = nk.link_conductances(net.kinds, net.par, omega)
+        L, B = nk.assemble(len(net.nodes), len(net.boundaries), net.ends_i, net.ends_j, G)
+        R = nk.cholesky(L)
+        if not np.all(np.isfinite(R)):
+            raise SpindleInputError(f"the conductance matrix at omega = {omega} rad/s is singular: "
+                                    f"some node has no path to a boundary")
+        op = {"G": G, "L": L, "B": B, "R": R}
+        if self.integrator == "exponential":
+            sqrt_c = np.sqrt(net.C)
+            lam, V = np.linalg.eigh(L / np.outer(sqrt_c, sqrt_c))  # S = C^-1/2 L C^-1/2, symmetric
+            op.update(sqrt_c=sqrt_c, lam=np.ascontiguousarray(lam), V=np.ascontiguousarray(V))
+        self._cache_omega, self._op = omega, op
+        return op
+
+    # ---------------------------------------------------------------- API
+    def initialize(self, **inputs):
+        """Set inputs, all nodes to T_initial (default: T_ambient, else the first boundary input), s = 0, time = 0."""
+        u = self._merge(inputs)
+        self._u = u
+        self.T = np.full(len(self.net.nodes), self._start_temperature(u))
+        self.T0 = self.T.copy()
+        self.s, self.time = 0.0, 0.0
+        self._out = self._outputs(self.T, u)
+        return self._out
+
+    def _start_temperature(self, u):
+        if self.T_initial is not None:
+            return self.T_initial
+        return u["T_ambient"] if "T_ambient" in u else u[self.net.boundary_inputs[0]]
+
+    def step(self, h, **inputs):
+        """Advance h seconds (> 0) with `inputs` held over the step; returns the outputs."""
+        if self.T is None:
+            self.initialize()
+        if isinstance(h, bool) or not isinstance(h, (int, float)) or not (math.isfinite(h) and h > 0.0):
+            raise SpindleInputError(f"step size h = {h!r} s must be a finite number > 0")
+        u = self._merge(inputs)
+        op = self._operator(u["omega"])
+        P, Tb, _ = self._vectors(u)
+        f = nk.source_vector(op["B"], Tb, P)
+        if self.integrator == "exponential":
+            T_ss = nk.cholesky_solve(op["R"], f)
+            T = nk.exponential_step(self.T, T_ss, op["sqrt_c"], op["V"], op["lam"], float(h))
+        else:
+            T = nk.implicit_euler_step(self.net.C, op["L"], f, self.T, float(h), self.substeps)
+        bad = np.flatnonzero(~(np.isfinite(T) & (T > 0.0)))
+        if bad.size:
+            raise SpindleInputError(f"node {self.net.nodes[bad[0]]} would reach T = {T[bad[0]]} K (non-physical) "
+                                    f"with these heat inputs; state left unchanged")
+        if self.axial_float and u["K_axial_1"] > 0.0 and u["K_axial_2"] > 0.0:
+            # rigid shaft floats until both bearings carry the same axial force (one Newton step on F_1 - F_2)
+            self.s += (u["F_axial_2"] - u["F_axial_1"]) / (u["K_axial_1"] + u["K_axial_2"])
+        self._u, self.T = u, T
+        self.time += float(h)
+        self._out = self._outputs(T, u)
+        return self._out
+
+    def outputs_values(self):
+        """Outputs (dict name -> float, SI) at the current state."""
+        if self._out is None:
+            self.initialize()
+        return dict(self._out)
+
+    def steady_state(self, **inputs):
+        """Outputs at the steady state for `inputs` (merged with the current ones), by a direct solve of
+        L T = B T_b + P. The model state is not changed."""
+        u = self._merge(inputs)
+        op = self._operator(u["omega"])
+        P, Tb, _ = self._vectors(u)
+        return self._outputs(nk.cholesky_solve(op["R"], nk.source_vector(op["B"], Tb, P)), u)
+
+    def time_constants(self, omega=0.0):
+        """Time constants 1/lambda (s) of the network at omega (rad/s), slowest first (generalised
+        eigenvalues of L x = lambda C x)."""
+        sqrt_c = np.sqrt(self.net.C)
+        L = nk.assemble(len(self.net.nodes), len(self.net.boundaries), self.net.ends_i, self.net.ends_j,
+                        nk.link_conductances(self.net.kinds, self.net.par, float(omega)))[0]
+        return 1.0 / np.linalg.eigvalsh(L / np.outer(sqrt_c, sqrt_c))
+
+    def get_state(self):
+        """Complete state as plain values (JSON-serialisable): temperatures, initial temperatures, axial
+        float s, time and the held inputs."""
+        if self.T is None:
+            self.initialize()
+        return {"T": self.T.tolist(), "T0": self.T0.tolist(), "s": self.s, "time": self.time, "inputs": dict(self._u)}
+
+    def set_state(self, state):
+        n = len(self.net.nodes)
+        T, T0 = np.array(state["T"], dtype=float), np.array(state["T0"], dtype=float)
+        if T.shape != (n,) or T0.shape != (n,):
+            raise SpindleInputError(f"state holds {T.size} temperatures, the network has {n} nodes")
+        self._u = self._merge(state["inputs"])
+        self.T, self.T0 = T, T0
+        self.s, self.time = float(state["s"]), float(state["time"])
+        self._out = self._outputs(self.T, self._u)
+
+    # ---------------------------------------------------------------- outputs
+    def _outputs(self, T, u):
+        net = self.net
+        omega = u["omega"]
+        op = self._operator(omega)
+        Tb = np.array([u[name] for name in net.boundary_inputs])
+        out = {f"T_{name}": float(t) for name, t in zip(net.nodes, T)}
+        for k, b in enumerate(net.bearings, start=1):
+            out[f"T_inner_ring_{k}"] = float(T[b["inner_ring"]])
+            out[f"T_outer_ring_{k}"] = float(T[b["outer_ring"]])
+            out[f"T_oil_{k}"] = float(T[b["ball_oil"]])
+            r = 0.5 * b["d_i"]
+            u_c = nk.centrifugal_radial_growth(b["rho"], b["E"], b["nu"], omega, b["a"], r, r)
+            out[f"dPd_thermal_{k}"] = nk.clearance_change(
+                net.alpha_bearing, b["d_i"], b["d_o"], b["D"], T[b["inner_ring"]], T[b["outer_ring"]],
+                T[b["ball_oil"]], net.T_ref, u_c)
+        ax = net.axial
+        if ax:
+            dz = nk.axial_interference(ax["s_arr"], ax["alpha_shaft"], ax["alpha_housing"], ax["spacing"],
+                                       T[ax["shaft"]], T[ax["housing"]], net.T_ref)
+            out["dz_thermal"] = dz
+            out["dz_thermal_1"] = 0.5 * dz + self.s
+            out["dz_thermal_2"] = 0.5 * dz - self.s
+        out["P_in"] = float(sum(u[name] for name in net.heat_names))
+        out["P_out"] = nk.boundary_heat_flow(len(net.nodes), net.ends_i, net.ends_j, op["G"], T, Tb)
+        T0 = self.T0 if self.T0 is not None else np.full(len(T), self._start_temperature(u))
+        out["E_stored"] = float(np.dot(net.C, T - T0))
+        return out
