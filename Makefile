@@ -9,11 +9,11 @@ STAMP := $(VENV)/.installed
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e ".[test,plot]"
+	$(BIN)/python -m pip install -q -e ".[test,plot,sweep,cosim]"
 	touch $(STAMP)
 
 fmus: $(STAMP)
-	$(BIN)/python -m bearing_fmu.build
+	$(BIN)/python -m spindle.cli build
 
 demo: fmus
 	$(BIN)/python -m spindle.cli demo --out results

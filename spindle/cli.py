@@ -1,86 +1,156 @@
-"""Command line: `spindle demo` runs the demo and writes results + a plot.
+"""Command line `spindle` (SPEC 2, 6): build, run, sweep, info, demo.
 
-Until the closed thermal loop exists (issue 4), the demo drives BearingAnalytic.fmu with fmpy over
-a speed ramp at 3 kN (the Guessasma 2018 operating point) and plots film parameter, regime and
-capacitance against speed.
+    spindle build [--out fmus]                    build every FMU (bearing scenes + SpindleThermal)
+    spindle run RUNFILE [--out results] [--set KEY=VALUE ...] [--no-plot] [--progress]
+    spindle sweep RUNFILE --param KEY --values V1,V2,... [--scheduler ADDRESS] [--workers N] [--out results]
+    spindle info [FMU ...]                        what is built: variables, units, parameters
+    spindle demo [--out results]                  the closed-loop demo run (runs/closed_loop_spring.toml)
+
+Exit codes: 0 done; 1 error (message on stderr); 3 the run stopped at a limit (e.g. thermal
+runaway; results up to there are written).
 """
 import argparse
-import csv
 import os
 import sys
 from pathlib import Path
 
-import numpy as np
-
-from .master import run_with_inputs
-
 ROOT = Path(__file__).resolve().parent.parent
-DEMO_OUTPUTS = ["Lambda_inner", "Lambda_outer", "h_min_inner", "h_min_outer", "regime", "C_bearing",
-                "Q_max_inner", "Q_max_outer", "p_max", "omega_cage", "omega_ball", "n_loaded"]
+RUNS = ROOT / "runs"
+FMUS = ROOT / "fmus"
+DEMO_RUN = RUNS / "closed_loop_spring.toml"
+EXIT_LIMIT = 3
 
 
-def demo(out_dir, fmu_path):
-    out_dir = Path(out_dir)
-    out_dir.mkdir(parents=True, exist_ok=True)
-    times = np.linspace(0.0, 17.0, 171)          # s: 0.1 s communication step
-    omega = 100.0 * times                        # rad/s: ramp 0 -> 1700 rad/s (Guessasma Table 3 range)
-    inputs = {"omega": omega, "F_y": np.full_like(times, 3000.0), "T_oil": np.full_like(times, 313.15)}
-    res = run_with_inputs(str(fmu_path), times, inputs, DEMO_OUTPUTS)
-    csv_path = out_dir / "demo_analytic.csv"
-    with open(csv_path, "w", newline="") as fh:
-        writer = csv.writer(fh)
-        writer.writerow([f"{n} [{u}]" for n, u in zip(res.dtype.names, _units(res.dtype.names))])
-        for row in res:
-            writer.writerow([repr(float(v)) for v in row])
-    png_path = out_dir / "demo_analytic.png"
-    _plot(res, png_path)
-    print(f"wrote {csv_path} and {png_path}")
-    return csv_path, png_path
+def _value(text):
+    """Command-line value: number when it parses as one, else the string."""
+    try:
+        return int(text)
+    except ValueError:
+        try:
+            return float(text)
+        except ValueError:
+            return text
 
 
-UNITS = {"time": "s", "omega": "rad/s", "F_y": "N", "T_oil": "K", "h_min_inner": "m", "h_min_outer": "m",
-         "C_bearing": "F", "Q_max_inner": "N", "Q_max_outer": "N", "p_max": "Pa", "omega_cage": "rad/s",
-         "omega_ball": "rad/s"}
+def _overrides(pairs):
+    out = {}
+    for pair in pairs or []:
+        key, sep, value = pair.partition("=")
+        if not sep:
+            raise SystemExit(f"--set {pair!r}: write KEY=VALUE, e.g. --set run.step=0.5")
+        out[key.strip()] = _value(value.strip())
+    return out
 
 
-def _units(names):
-    return [UNITS.get(n, "1") for n in names]
+def cmd_build(args):
+    from .build import build_all
+    for path in build_all(args.out):
+        print(f"built {path}")
+    return 0
 
 
-def _plot(res, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(3, 1, figsize=(7, 9), sharex=True)
-    w = res["omega"]
-    axes[0].plot(w, res["Lambda_inner"], label="inner")
-    axes[0].plot(w, res["Lambda_outer"], label="outer")
-    for level in (1.0, 3.0):
-        axes[0].axhline(level, color="grey", lw=0.8, ls="--")
-    axes[0].set_ylabel("film parameter Lambda (-)")
-    axes[0].legend()
-    axes[0].set_title("6208, F_r = 3 kN, P_d = 0, Guessasma oil\n(BearingAnalytic.fmu driven by fmpy)")
-    axes[1].step(w, res["regime"], where="post")
-    axes[1].set_yticks([0, 1, 2], ["boundary", "mixed", "full film"])
-    axes[1].set_ylabel("regime (worst contact)")
-    axes[2].semilogy(w, res["C_bearing"] * 1e12)  # spans 3 decades: film floor at rest -> full film
-    axes[2].set_ylabel("bearing capacitance (pF)")
-    axes[2].set_xlabel("inner-ring speed omega (rad/s)")
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+def cmd_run(args):
+    from .master import run
+    from .runfile import load_run
+    spec = load_run(args.runfile, _overrides(args.set))
+    result = run(spec, progress=args.progress)
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    stem = Path(args.runfile).stem
+    csv_path = out / f"{stem}.csv"
+    result.write_csv(csv_path)
+    written = [csv_path]
+    if not args.no_plot:
+        from .plots import plot_run
+        written.append(plot_run(result, out / f"{stem}.png", title=f"{stem}: {spec.description}"))
+    steps = len(result.columns["time"]) - 1
+    print(f"{stem}: {steps} steps of {spec.step} s ({spec.algorithm}) in {result.wall_time:.2f} s wall "
+          f"(+ {result.setup_time:.2f} s set-up); rejected steps: {result.rejected_steps}")
+    print("wrote " + ", ".join(str(p) for p in written))
+    if result.status == "limit":
+        print(f"STOPPED: {result.message}", file=sys.stderr)
+        return EXIT_LIMIT
+    return 0
+
+
+def cmd_sweep(args):
+    from .sweep import sweep, write_table
+    values = [_value(v) for v in args.values.split(",") if v.strip()]
+    rows = sweep(args.runfile, args.param, values, scheduler=args.scheduler, n_workers=args.workers,
+                 extra=_overrides(args.set))
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    path = out / f"{Path(args.runfile).stem}_sweep_{args.param.replace('.', '_')}.csv"
+    write_table(rows, path)
+    failed = [r for r in rows if r["status"] != "ok"]
+    print(f"{len(rows)} runs, {len(failed)} not ok; wrote {path}")
+    for r in failed:
+        print(f"  {args.param} = {r[args.param]}: {r['status']}: {r['message']}")
+    return 0
+
+
+def cmd_info(args):
+    from fmpy import read_model_description
+    paths = [Path(p) for p in args.fmus] or sorted(FMUS.glob("*.fmu"))
+    if not paths:
+        print(f"no FMUs in {FMUS}: run `spindle build`")
+        return 1
+    for path in paths:
+        md = read_model_description(str(path))
+        groups = {}
+        for v in md.modelVariables:
+            groups.setdefault(v.causality, []).append(v)
+        print(f"{path.name}: FMI {md.fmiVersion} co-simulation, {len(md.modelVariables)} variables")
+        print(f"  {md.description}")
+        for causality in ("parameter", "input", "output"):
+            for v in groups.get(causality, []) if args.fmus else []:
+                print(f"  {causality:9s} {v.name:20s} [{v.unit or '-'}] {v.description or ''}")
+            if not args.fmus:
+                names = [v.name for v in groups.get(causality, [])]
+                print(f"  {causality}s ({len(names)}): {', '.join(names[:14])}{' ...' if len(names) > 14 else ''}")
+    return 0
+
+
+def cmd_demo(args):
+    args.runfile = str(DEMO_RUN)
+    args.set, args.no_plot, args.progress = [], False, False
+    return cmd_run(args)
 
 
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="spindle", description="bearing/spindle co-simulation tools")
     sub = parser.add_subparsers(dest="command", required=True)
-    p_demo = sub.add_parser("demo", help="run the demo (FMU via fmpy) and write CSV + PNG")
-    p_demo.add_argument("--out", default="results", help="output directory")
-    p_demo.add_argument("--fmu", default=str(ROOT / "fmus" / "BearingAnalytic.fmu"), help="FMU path")
+    p = sub.add_parser("build", help="build every FMU into fmus/")
+    p.add_argument("--out", default=str(FMUS))
+    p = sub.add_parser("run", help="run a run file; write CSV and PNG")
+    p.add_argument("runfile")
+    p.add_argument("--out", default="results")
+    p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override, e.g. run.step=0.5")
+    p.add_argument("--no-plot", action="store_true")
+    p.add_argument("--progress", action="store_true", help="progress bar on stderr")
+    p = sub.add_parser("sweep", help="many runs of a run file on Dask; one table")
+    p.add_argument("runfile")
+    p.add_argument("--param", required=True, help="dotted key, e.g. bearing_1.F_z or run.step")
+    p.add_argument("--values", required=True, help="comma-separated values")
+    p.add_argument("--set", action="append", metavar="KEY=VALUE", help="fixed overrides for every run")
+    p.add_argument("--scheduler", default=None, help="address of a Dask scheduler (default: local cluster)")
+    p.add_argument("--workers", type=int, default=2, help="local cluster worker processes")
+    p.add_argument("--out", default="results")
+    p = sub.add_parser("info", help="what the FMUs expose")
+    p.add_argument("fmus", nargs="*")
+    p = sub.add_parser("demo", help="closed-loop demo (runs/closed_loop_spring.toml): CSV + PNG")
+    p.add_argument("--out", default="results")
     args = parser.parse_args(argv)
-    if args.command == "demo":
-        demo(args.out, args.fmu)
-    return 0
+    handler = {"build": cmd_build, "run": cmd_run, "sweep": cmd_sweep, "info": cmd_info, "demo": cmd_demo}
+    try:
+        return handler[args.command](args)
+    except Exception as exc:  # a clear one-line message, not a traceback, for user errors
+        from .master import MasterError
+        from .runfile import RunFileError
+        if isinstance(exc, (MasterError, RunFileError, FileNotFoundError)):
+            print(f"spindle {args.command}: {exc}", file=sys.stderr)
+            return 1
+        raise
 
 
 def run():
@@ -88,11 +158,18 @@ def run():
 
     Known defect (docs/decisions.md): after a run that loaded a pythonfmu FMU, the interpreter's
     teardown aborts now and then with "corrupted double-linked list" (exit 134), after every result
-    is written. Seen on `spindle demo` in 2-6 of 8 runs, already at commit 2ba8198; pre-loading
-    numba/scipy and skipping fmi2FreeInstance did not remove it. Until the cause (in the
-    pythonfmu/numba teardown) is found, the command flushes its output and exits with os._exit,
-    which skips the teardown but not any of the work."""
-    code = main()
+    is written. Until the cause (in the pythonfmu/numba teardown) is found, the command flushes its
+    output and exits with os._exit, which skips the teardown but not any of the work."""
+    try:
+        code = main()
+    except SystemExit as exc:
+        code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
+        if not isinstance(exc.code, int) and exc.code is not None:
+            print(exc.code, file=sys.stderr)
+    except BaseException:
+        import traceback
+        traceback.print_exc()
+        code = 1
     sys.stdout.flush()
     sys.stderr.flush()
     os._exit(code)

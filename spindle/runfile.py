@@ -1,0 +1,198 @@
+"""Run files (SPEC 6): a coupled co-simulation described in TOML, read into a RunSpec.
+
+Format (every time in s; values SI in the units each FMU declares):
+
+    [run]
+    description = "..."
+    start = 0.0                 # s
+    stop = 3600.0               # s
+    step = 1.0                  # s, communication step H
+    algorithm = "gauss_seidel"  # or "jacobi"
+    order = ["bearing_1", "bearing_2", "spindle"]   # Gauss-Seidel order (default: instance order)
+    record = ["spindle.T_outer_ring_1"]             # extra variables to record (connected ones always are)
+    rollback = false            # reject a refused step, restore every FMU's state, retry in halves
+    max_halvings = 4            # how often a step may be halved
+    [run.max_change]            # optional step rejection (needs rollback): largest change per step
+    "spindle.T_inner_ring_1" = 2.0
+
+    [fmus]                      # FMU files, relative to the run file
+    bearing = "../fmus/Bearing.fmu"
+
+    [instances.bearing_1]
+    fmu = "bearing"
+    parameters = { race_control = "hybrid" }       # set in initialisation mode
+    inputs = { omega = 1047.2, F_z = 800.0 }       # constant inputs (held for the whole run)
+
+    [[connections]]             # output -> input
+    from = "spindle.T_oil_1"
+    to = "bearing_1.T_oil"
+
+    [[limits]]                  # stop the run with a clear message when a variable leaves a range
+    variable = "bearing_1.F_z"
+    max = 4000.0
+    message = "thermal runaway: the fixed preload keeps rising"
+
+`overrides` (sweeps, command line) replace values by dotted keys: "run.step", "bearing_1.F_z"
+(an input or parameter of an instance, whichever it already is; a new key becomes an input).
+"""
+import math
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+ALGORITHMS = ("gauss_seidel", "jacobi")
+
+
+class RunFileError(ValueError):
+    """The run file is inconsistent (message names the key and what is allowed)."""
+
+
+@dataclass
+class InstanceSpec:
+    name: str
+    fmu: str                                    # absolute path of the FMU file
+    parameters: dict = field(default_factory=dict)
+    inputs: dict = field(default_factory=dict)
+
+
+@dataclass
+class Limit:
+    variable: str                               # "instance.variable"
+    min: float = -math.inf
+    max: float = math.inf
+    message: str = ""
+
+
+@dataclass
+class RunSpec:
+    path: str
+    description: str
+    start: float
+    stop: float
+    step: float
+    algorithm: str
+    order: list
+    instances: dict                             # name -> InstanceSpec, in file order
+    connections: list                           # (source "inst.var", target "inst.var")
+    record: list
+    limits: list
+    rollback: bool = False
+    max_halvings: int = 4
+    max_change: dict = field(default_factory=dict)
+
+    @property
+    def n_steps(self):
+        """Number of communication steps (stop - start must be a whole number of steps)."""
+        return int(round((self.stop - self.start) / self.step))
+
+
+def split_name(qualified):
+    """'bearing_1.T_oil' -> ('bearing_1', 'T_oil')."""
+    inst, sep, var = qualified.partition(".")
+    if not sep or not inst or not var:
+        raise RunFileError(f"variable {qualified!r} must be written 'instance.variable'")
+    return inst, var
+
+
+def load_run(path, overrides=None):
+    """Read a run file; apply overrides {dotted key: value}; check it; return a RunSpec."""
+    path = Path(path).resolve()
+    try:
+        with open(path, "rb") as fh:
+            doc = tomllib.load(fh)
+    except (OSError, tomllib.TOMLDecodeError) as exc:
+        raise RunFileError(f"run file {path}: {exc}") from None
+    return parse_run(doc, path, overrides)
+
+
+def parse_run(doc, path, overrides=None):
+    base = Path(path).parent
+    run = dict(doc.get("run", {}))
+    fmus = {k: str((base / v).resolve()) for k, v in doc.get("fmus", {}).items()}
+    _no_unknown_keys("the run file", doc, {"run", "fmus", "instances", "connections", "limits"})
+    _no_unknown_keys("[run]", run, {"description", "start", "stop", "step", "algorithm", "order", "record",
+                                    "rollback", "max_halvings", "max_change"})
+    instances = {}
+    for name, inst in doc.get("instances", {}).items():
+        _no_unknown_keys(f"[instances.{name}]", inst, {"fmu", "parameters", "inputs"})
+        if inst.get("fmu") not in fmus:
+            raise RunFileError(f"instance {name}: fmu = {inst.get('fmu')!r} is not in [fmus] ({sorted(fmus)})")
+        instances[name] = InstanceSpec(name, fmus[inst["fmu"]], dict(inst.get("parameters", {})),
+                                       dict(inst.get("inputs", {})))
+    for key, value in (overrides or {}).items():
+        _apply_override(run, instances, key, value)
+    connections = []
+    for c in doc.get("connections", []):
+        if not (isinstance(c, dict) and set(c) == {"from", "to"}):
+            raise RunFileError(f"connection {c}: write [[connections]] with from = \"source.output\" and "
+                               f"to = \"target.input\"")
+        connections.append((c["from"], c["to"]))
+    limits = [Limit(**lim) for lim in doc.get("limits", [])]
+    spec = RunSpec(path=str(path), description=run.get("description", ""), start=float(run.get("start", 0.0)),
+                   stop=float(run.get("stop", 0.0)), step=float(run.get("step", 0.0)),
+                   algorithm=run.get("algorithm", "gauss_seidel"), order=list(run.get("order", instances)),
+                   instances=instances, connections=connections, record=list(run.get("record", [])),
+                   limits=limits, rollback=bool(run.get("rollback", False)),
+                   max_halvings=int(run.get("max_halvings", 4)), max_change=dict(run.get("max_change", {})))
+    check(spec)
+    return spec
+
+
+def _no_unknown_keys(where, table, allowed):
+    unknown = sorted(set(table) - allowed)
+    if unknown:
+        raise RunFileError(f"{where}: unknown key(s) {unknown}; allowed {sorted(allowed)}")
+
+
+def _apply_override(run, instances, key, value):
+    head, _, tail = key.partition(".")
+    if head == "run" and tail:
+        run[tail] = value
+    elif head in instances and tail:
+        inst = instances[head]
+        (inst.parameters if tail in inst.parameters else inst.inputs)[tail] = value
+    else:
+        raise RunFileError(f"override {key!r}: use 'run.<key>' or '<instance>.<variable>' "
+                           f"(instances: {sorted(instances)})")
+
+
+def check(spec):
+    """Raise RunFileError listing every problem of the run description at once."""
+    problems = []
+    if not spec.instances:
+        problems.append("no [instances]")
+    if spec.algorithm not in ALGORITHMS:
+        problems.append(f"run.algorithm = {spec.algorithm!r}: allowed {list(ALGORITHMS)}")
+    if not (math.isfinite(spec.step) and spec.step > 0.0):
+        problems.append(f"run.step = {spec.step} s: must be > 0")
+    elif not (math.isfinite(spec.stop) and spec.stop > spec.start):
+        problems.append(f"run.stop = {spec.stop} s: must be > run.start = {spec.start} s")
+    elif abs(spec.n_steps * spec.step - (spec.stop - spec.start)) > 1e-9 * max(1.0, spec.stop - spec.start):
+        problems.append(f"run.stop - run.start = {spec.stop - spec.start} s is not a whole number of steps "
+                        f"of {spec.step} s")
+    if sorted(spec.order) != sorted(spec.instances):
+        problems.append(f"run.order = {spec.order} must list every instance once ({list(spec.instances)})")
+    targets = set()
+    for pair in spec.connections:
+        for qualified in pair:
+            try:
+                inst, _ = split_name(qualified)
+                if inst not in spec.instances:
+                    problems.append(f"connection {pair}: unknown instance {inst!r}")
+            except RunFileError as exc:
+                problems.append(str(exc))
+        if pair[1] in targets:
+            problems.append(f"input {pair[1]} is connected twice")
+        targets.add(pair[1])
+    for name in spec.record + list(spec.max_change) + [lim.variable for lim in spec.limits]:
+        try:
+            if split_name(name)[0] not in spec.instances:
+                problems.append(f"{name}: unknown instance")
+        except RunFileError as exc:
+            problems.append(str(exc))
+    if spec.max_change and not spec.rollback:
+        problems.append("run.max_change needs run.rollback = true (a rejected step is redone from saved states)")
+    if not 0 <= spec.max_halvings <= 20:
+        problems.append(f"run.max_halvings = {spec.max_halvings}: allowed [0, 20]")
+    if problems:
+        raise RunFileError(f"run file {spec.path}: " + "; ".join(problems))

@@ -1,0 +1,73 @@
+"""Sweeps (SPEC 6): many runs of one run file with one value changed, on Dask.
+
+Each point is a full co-simulation in a Dask worker (its own process: pythonfmu FMUs run Python in
+the host process, so workers use processes, one thread each). Local cluster by default; pass the
+address of a running scheduler to use a cluster. Results are gathered into one table: the swept
+value, the status and message, the wall time and the final value of every recorded variable.
+"""
+import math
+
+from .master import run
+from .runfile import load_run
+
+
+def run_point(runfile, overrides):
+    """One run; returns a summary row (dict). Never raises: a failed run is a row with its message."""
+    row = {"status": "error", "message": "", "wall_time": math.nan}
+    try:
+        result = run(load_run(runfile, overrides))
+    except Exception as exc:  # a failed point must not lose the others
+        row["message"] = f"{type(exc).__name__}: {exc}"
+        return row
+    row.update(status=result.status, message=result.message, wall_time=result.wall_time,
+               t_end=float(result.columns["time"][-1]))
+    for name, values in result.columns.items():
+        if name != "time":
+            row[name] = float(values[-1])
+    return row
+
+
+def sweep(runfile, param, values, scheduler=None, n_workers=2, extra=None):
+    """Run `runfile` once per value of `param` (a dotted override key) on Dask; rows in input order.
+
+    scheduler: None = a LocalCluster with n_workers processes (closed afterwards), or the address
+    of an existing scheduler ("tcp://host:8786")."""
+    from dask.distributed import Client, LocalCluster
+    points = [{**(extra or {}), param: v} for v in values]
+    cluster = None
+    if scheduler is None:
+        cluster = LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
+                               dashboard_address=None)
+        client = Client(cluster)
+    else:
+        client = Client(scheduler)
+    try:
+        futures = client.map(run_point, [str(runfile)] * len(points), points, pure=False)
+        rows = client.gather(futures)
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+    return [{param: v, **row} for v, row in zip(values, rows)]
+
+
+def sequential(runfile, param, values, extra=None):
+    """The same table computed in this process, one run after the other (the check of sweep())."""
+    return [{param: v, **run_point(str(runfile), {**(extra or {}), param: v})} for v in values]
+
+
+def write_table(rows, path):
+    names = []
+    for row in rows:
+        names += [k for k in row if k not in names]
+    with open(path, "w") as fh:
+        fh.write(",".join(names) + "\n")
+        for row in rows:
+            fh.write(",".join(_cell(row.get(k, "")) for k in names) + "\n")
+
+
+def _cell(value):
+    if isinstance(value, float):
+        return repr(value)
+    text = str(value)
+    return '"' + text.replace('"', "'") + '"' if ("," in text or '"' in text) else text
