@@ -1,11 +1,11 @@
 """Run every benchmark and rewrite the reports in docs/reports/ (make bench)."""
-from . import (ehl_film_table, fmu_startup, hertz_approximation, kernel_timing, quasistatic_timing,
-               rabreau_preload, torque_palmgren)
+from . import (closed_loop, cosim_error, ehl_film_table, fixed_preload_stability, fmu_startup, hertz_approximation,
+               kernel_timing, quasistatic_timing, rabreau_preload, torque_palmgren)
 
 
 def main():
     for module in (kernel_timing, hertz_approximation, ehl_film_table, fmu_startup, torque_palmgren,
-                   quasistatic_timing, rabreau_preload):
+                   quasistatic_timing, rabreau_preload, closed_loop, cosim_error, fixed_preload_stability):
         module.main()
 
 

@@ -341,7 +341,7 @@ class Master:
             rows.append(self._values())
             times.append(t_next)
             bar.update(n + 1)
-            message = self._check_limits(t_next)
+            message = self._check_limits(t_next) or ""
             if message:
                 status = "limit"
                 break

@@ -41,3 +41,35 @@ def bearing_fmu():
 def bearing_disp_fmu():
     """The quasi-static, displacement-driven BearingDisp.fmu."""
     return _fmu("BearingDisp", "quasi_static_displacement.toml")
+
+
+@pytest.fixture(scope="session")
+def bearing_fixed_fmu():
+    """The quasi-static BearingFixed.fmu (fixed axial position: fixed-preload pairs)."""
+    return _fmu("BearingFixed", "quasi_static_fixed_preload.toml")
+
+
+def _thermal_fmu(name):
+    """Path of fmus/<name>.fmu (a thermal spindle FMU of spindle.build.THERMAL_FMUS); rebuilt if it is
+    missing or older than any source it bundles (the spindle and bearing_fmu packages)."""
+    from bearing_fmu.build import PACKAGE_DIR
+    from spindle.build import SPINDLE_DIR, THERMAL_FMUS, build_thermal_fmu
+    path = FMU_DIR / f"{name}.fmu"
+    newest_source = max(p.stat().st_mtime for d in (PACKAGE_DIR, SPINDLE_DIR) for p in d.rglob("*")
+                        if p.suffix in (".py", ".toml"))
+    if not path.is_file() or path.stat().st_mtime < newest_source:
+        network, axial_float = THERMAL_FMUS[name]
+        build_thermal_fmu(name, network, axial_float, FMU_DIR)
+    return path
+
+
+@pytest.fixture(scope="session")
+def spindle_thermal_fmu():
+    """SpindleThermal.fmu: the default spindle network without the axial-float inputs (spring preload)."""
+    return _thermal_fmu("SpindleThermal")
+
+
+@pytest.fixture(scope="session")
+def spindle_thermal_fixed_fmu():
+    """SpindleThermalFixed.fmu: the default network with the axial-float inputs (fixed preload)."""
+    return _thermal_fmu("SpindleThermalFixed")
