@@ -24,6 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
+from spindle.cli import exit_after
 from spindle.master import run
 from spindle.runfile import load_run
 
@@ -327,20 +328,5 @@ def plot(rows, by, ref):
     plt.close(fig)
 
 
-def run_and_exit():
-    """Entry of `python -m`: main(), then flush and os._exit (skips the interpreter teardown, which can
-    abort with "corrupted double-linked list" after pythonfmu FMUs were loaded: see spindle.cli.run)."""
-    code = 0
-    try:
-        main()
-    except BaseException:
-        import traceback
-        traceback.print_exc()
-        code = 1
-    sys.stdout.flush()
-    sys.stderr.flush()
-    os._exit(code)
-
-
 if __name__ == "__main__":
-    run_and_exit()
+    exit_after(main)  # skips the interpreter teardown (known pythonfmu abort, spindle.cli.exit_after)

@@ -153,15 +153,15 @@ def main(argv=None):
         raise
 
 
-def run():
-    """Console-script entry: run main() and leave without interpreter teardown.
+def exit_after(entry):
+    """Run entry() (its int return value is the exit code; None = 0), then flush and os._exit.
 
     Known defect (docs/decisions.md): after a run that loaded a pythonfmu FMU, the interpreter's
     teardown aborts now and then with "corrupted double-linked list" (exit 134), after every result
-    is written. Until the cause (in the pythonfmu/numba teardown) is found, the command flushes its
-    output and exits with os._exit, which skips the teardown but not any of the work."""
+    is written. Until the cause (in the pythonfmu/numba teardown) is found, commands and benchmark
+    scripts leave with os._exit, which skips the teardown but not any of the work."""
     try:
-        code = main()
+        code = entry() or 0
     except SystemExit as exc:
         code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
         if not isinstance(exc.code, int) and exc.code is not None:
@@ -173,6 +173,11 @@ def run():
     sys.stdout.flush()
     sys.stderr.flush()
     os._exit(code)
+
+
+def run():
+    """Console-script entry `spindle`: main() without interpreter teardown (see exit_after)."""
+    exit_after(main)
 
 
 if __name__ == "__main__":

@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from bearing_fmu.model import InputError, Variable
-from bearing_fmu.params import ParameterError, load_bearing
+from bearing_fmu.params import ParameterError, load_bearing, resolve_toml
 
 from . import network as nk
 
@@ -43,15 +43,7 @@ def network_path(name_or_path):
 
 
 def _resolve(name_or_path):
-    text = str(name_or_path)
-    candidate = CATALOGUE / f"{text}.toml"
-    if candidate.is_file():
-        return candidate
-    path = Path(text).expanduser()
-    if path.suffix == ".toml" and path.is_file():
-        return path
-    names = ", ".join(sorted(p.stem for p in CATALOGUE.glob("*.toml")))
-    raise ParameterError(f"unknown spindle '{text}': give a catalogue name ({names}) or the path of a .toml file")
+    return resolve_toml(name_or_path, CATALOGUE, "spindle")
 
 
 def _quantity(table, key, unit, where, low=0.0, high=math.inf, low_open=True):

@@ -29,19 +29,23 @@ class Spec:
     low_open: bool = False  # True: value must be > low (not >=)
 
 
-def _resolve(name_or_path, kind):
-    """Path of a catalogue entry (by name) or of a user TOML file (by path)."""
+def resolve_toml(name_or_path, folder, what):
+    """Path of a catalogue entry `folder/<name>.toml` (by name) or of a user TOML file (by path);
+    `what` names the kind of entry in the error message."""
     text = str(name_or_path)
-    folder = CATALOGUE / kind
-    candidate = folder / f"{text}.toml"
+    candidate = Path(folder) / f"{text}.toml"
     if candidate.is_file():
         return candidate
     path = Path(text).expanduser()
     if path.suffix == ".toml" and path.is_file():
         return path
-    names = ", ".join(sorted(p.stem for p in folder.glob("*.toml")))
-    raise ParameterError(
-        f"unknown {kind[:-1]} '{text}': give a catalogue name ({names}) or the path of a .toml file")
+    names = ", ".join(sorted(p.stem for p in Path(folder).glob("*.toml")))
+    raise ParameterError(f"unknown {what} '{text}': give a catalogue name ({names}) or the path of a .toml file")
+
+
+def _resolve(name_or_path, kind):
+    """Path of a catalogue entry (by name) or of a user TOML file (by path)."""
+    return resolve_toml(name_or_path, CATALOGUE / kind, kind[:-1])
 
 
 def catalogue(kind):
