@@ -5,6 +5,7 @@ the host process, so workers use processes, one thread each). Local cluster by d
 address of a running scheduler to use a cluster. Results are gathered into one table: the swept
 value, the status and message, the wall time and the final value of every recorded variable.
 """
+import csv
 import math
 
 from .master import run
@@ -57,17 +58,16 @@ def sequential(runfile, param, values, extra=None):
 
 
 def write_table(rows, path):
+    """CSV of the rows (csv module: names such as K[3,3] and messages are quoted); floats as repr."""
     names = []
     for row in rows:
         names += [k for k in row if k not in names]
-    with open(path, "w") as fh:
-        fh.write(",".join(names) + "\n")
+    with open(path, "w", newline="") as fh:
+        writer = csv.writer(fh)
+        writer.writerow(names)
         for row in rows:
-            fh.write(",".join(_cell(row.get(k, "")) for k in names) + "\n")
+            writer.writerow([_cell(row.get(k, "")) for k in names])
 
 
 def _cell(value):
-    if isinstance(value, float):
-        return repr(value)
-    text = str(value)
-    return '"' + text.replace('"', "'") + '"' if ("," in text or '"' in text) else text
+    return repr(value) if isinstance(value, float) else value

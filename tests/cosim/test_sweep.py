@@ -38,3 +38,22 @@ def test_dask_sweep_equals_sequential_table(closed_loop_fmus):
     # the swept value reached the runs: a warmer coolant gives a warmer housing, point by point
     housing = [row["spindle.T_housing"] for row in rows]
     assert all(a < b for a, b in zip(housing, housing[1:]))
+
+
+def test_sweep_table_quotes_names_and_messages_with_commas(tmp_path):
+    """The sweep table is read back by any CSV reader: a matrix entry name (K[3,3]) and a limit
+    message contain commas and must be quoted; floats are written with repr, so they read back
+    exactly. (Found on the first CLI sweep: an unquoted K[3,3] header shifted every column.)"""
+    import csv
+
+    from spindle.sweep import write_table
+    rows = [{"bearing_1.F_z": 400.0, "status": "limit", "message": "t = 3 s: x = 1, left [0, 1]",
+             "bearing_1.K[3,3]": 2.5e7 / 3.0},
+            {"bearing_1.F_z": 800.0, "status": "ok", "message": "", "bearing_1.K[3,3]": 3.1}]
+    path = tmp_path / "table.csv"
+    write_table(rows, path)
+    back = list(csv.DictReader(open(path, newline="")))
+    assert [r["status"] for r in back] == ["limit", "ok"]
+    assert back[0]["message"] == rows[0]["message"]
+    assert float(back[0]["bearing_1.K[3,3]"]) == rows[0]["bearing_1.K[3,3]"]
+    assert float(back[1]["bearing_1.F_z"]) == 800.0
