@@ -25,6 +25,7 @@ pytest.importorskip("libcosimpy", reason="libcosimpy not installed (optional ext
 from fmpy import extract, read_model_description  # noqa: E402
 from fmpy.fmi2 import FMU2Slave  # noqa: E402
 
+from tests.cosim.conftest import build_test_fmu  # noqa: E402
 from spindle.libcosim_master import LibcosimError, cross_check, libcosim_version, run_libcosim  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -102,12 +103,8 @@ def assert_same(result, reference, names, rtol=1e-12):
 # -- fixtures ----------------------------------------------------------------------------------
 @pytest.fixture(scope="module")
 def probe_fmu(tmp_path_factory):
-    out = tmp_path_factory.mktemp("probe")
-    proc = subprocess.run([sys.executable, "-m", "pythonfmu", "build", "-f",
-                           str(Path(__file__).with_name("probe_slave.py")), "-d", str(out)],
-                          capture_output=True, text=True, timeout=120)
-    assert proc.returncode == 0, proc.stderr
-    return out / "ProbeSlave.fmu"
+    """ProbeSlave.fmu built from tests/cosim/probe_slave.py."""
+    return build_test_fmu("probe_slave.py", "ProbeSlave", tmp_path_factory)
 
 
 ANALYTIC_OUTPUTS = ["Lambda_inner", "Lambda_outer", "h_min_inner", "h_min_outer", "C_bearing",
