@@ -29,6 +29,11 @@ LOAD_WORDS = ("radial force along x", "radial force along y", "axial force", "mo
 # which DOFs are load-controlled (1) for each drive (scene option)
 DRIVE_CONTROL = {"load": (1, 1, 1, 1, 1), "displacement": (0, 0, 0, 0, 0), "fixed_axial": (1, 1, 0, 1, 1)}
 RACE_CODES = {"outer": qk.RACE_OUTER, "inner": qk.RACE_INNER, "hybrid": qk.RACE_HYBRID}
+# readings of the hybrid model's gyroscopic-moment share (Python API only, for sensitivity studies;
+# the FMUs use 'spin_moments'): docs/quasistatic.md section 2, docs/reports/rabreau_torque_sensitivity.md
+HYBRID_SPLITS = {"spin_moments": qk.RACE_HYBRID, "outer": qk.RACE_HYBRID_OUTER_SPLIT,
+                 "inner": qk.RACE_HYBRID_INNER_SPLIT, "equal": qk.RACE_HYBRID_EQUAL_SPLIT,
+                 "controlling_race": qk.RACE_HYBRID_CONTROLLING}
 # admissible imposed displacements: a fraction of the groove clearance A = (f_i + f_o - 1) D
 DISPLACEMENT_LIMIT = 0.5   # x A (m); beyond this the Hertz loads pass any material limit
 TILT_LIMIT = 0.01          # rad
@@ -48,13 +53,16 @@ class QuasiStaticModel:
     bearing, lubricant: catalogue name or TOML path; scene: Scene with fidelity 'quasi_static';
     Pd: diametral clearance (m) overriding the bearing file, |Pd| <= 0.02 D;
     race_control: 'outer' | 'inner' | 'hybrid' (default: the scene's);
+    hybrid_split: with race_control 'hybrid', how the gyroscopic moment is shared between the races:
+        'spin_moments' (default, lam_i = 2C/(1+C)); 'outer', 'inner', 'equal' and 'controlling_race'
+        are the other readings of Rabreau's lost Table 1, kept for sensitivity studies (HYBRID_SPLITS);
     F_preload: fixed_axial drive only, axial preload (N, >= 0) set at assembly (at rest, no thermal
         change): the model holds the axial approach z0 (m) that carries it, and the input z (and
         dz_thermal) is added to z0. 0 (default) = z is the axial approach itself.
     """
 
     def __init__(self, bearing="B7214C", lubricant="iso_vg68_mineral", scene=None, Pd=None, race_control=None,
-                 F_preload=0.0):
+                 F_preload=0.0, hybrid_split="spin_moments"):
         self.scene = (scene or Scene(name="quasi_static", fidelity="quasi_static")).validate()
         if self.scene.fidelity != "quasi_static":
             raise InputError(f"scene '{self.scene.name}' has fidelity {self.scene.fidelity!r}: QuasiStaticModel "
@@ -69,6 +77,9 @@ class QuasiStaticModel:
         self.race_control = race_control or self.scene.race_control
         if self.race_control not in RACE_CONTROLS:
             raise InputError(f"race_control = {self.race_control!r}: allowed {list(RACE_CONTROLS)}")
+        if hybrid_split not in HYBRID_SPLITS:
+            raise InputError(f"hybrid_split = {hybrid_split!r}: allowed {list(HYBRID_SPLITS)}")
+        self.hybrid_split = hybrid_split
         self.control = np.array(DRIVE_CONTROL[self.scene.drive], dtype=float)
         self.omega_max = DM_N_LIMIT / (b.dm * 1e3) * 2.0 * math.pi / 60.0
         self.qs, self.cp = self._pack()
@@ -116,7 +127,8 @@ class QuasiStaticModel:
         qs[qk.QS_K_I] = hertz_stiffness(Rx_i, Ry_i, E_red, *ci)
         qs[qk.QS_K_O] = hertz_stiffness(Rx_o, Ry_o, E_red, *co)
         qs[qk.QS_M_BALL] = ball_mass(b.D, b.ball.rho)
-        qs[qk.QS_RACE] = RACE_CODES[self.race_control]
+        qs[qk.QS_RACE] = (HYBRID_SPLITS[self.hybrid_split] if self.race_control == "hybrid"
+                          else RACE_CODES[self.race_control])
         qs[qk.QS_CENTRIFUGAL] = 1.0 if s.centrifugal else 0.0
         qs[qk.QS_GYROSCOPIC] = 1.0 if s.gyroscopic else 0.0
         # hybrid law: C = Q_i a_i E_i / (Q_o a_o E_o); a ~ Q^(1/3) gives C = c_hyb (Q_i/Q_o)^(4/3)

@@ -53,7 +53,13 @@ QS_SIZE = 16
 
 RACE_OUTER = 0
 RACE_INNER = 1
-RACE_HYBRID = 2
+RACE_HYBRID = 2     # hybrid pitch angle, gyroscopic moment shared in proportion to the spin moments
+# Other readings of the hybrid model's moment share (Rabreau's Table 1 is lost), for sensitivity
+# studies only (docs/reports/rabreau_torque_sensitivity.md); every code >= RACE_HYBRID is hybrid:
+RACE_HYBRID_OUTER_SPLIT = 3      # lam_i = 0, lam_o = 2 (the outer race takes it all, as in ORC)
+RACE_HYBRID_INNER_SPLIT = 4      # lam_i = 2, lam_o = 0 (the inner race takes it all, as in IRC)
+RACE_HYBRID_EQUAL_SPLIT = 5      # lam_i = lam_o = 1 (Harris' convention without race control)
+RACE_HYBRID_CONTROLLING = 6      # all of it on the race with the larger spin moment (Jones' criterion)
 
 # rows of the per-ball output array
 BQ_Q_I = 0      # inner contact load (N)
@@ -100,6 +106,27 @@ def qs_geometry(qs, dPd):
 
 
 @njit(cache=True)
+def hybrid_inner_share(C, race):
+    """Share lam_i (-) of the gyroscopic moment taken by the inner race under hybrid kinematics, for the
+    spin-moment ratio C = Q_i a_i E_i / (Q_o a_o E_o) (-); lam_o = 2 - lam_i. Complex-safe.
+
+    RACE_HYBRID shares the moment in proportion to the spin moments, lam_i = 2C/(1+C): continuous, and
+    the same blend of outer (C -> 0) and inner (C -> inf) control that the hybrid pitch-angle law makes.
+    The other codes are sensitivity readings; RACE_HYBRID_CONTROLLING jumps at C = 1, where the loads
+    jump and Newton can fail (docs/reports/rabreau_torque_sensitivity.md).
+    """
+    if race == RACE_HYBRID_OUTER_SPLIT:
+        return 0.0 * C
+    if race == RACE_HYBRID_INNER_SPLIT:
+        return 2.0 + 0.0 * C
+    if race == RACE_HYBRID_EQUAL_SPLIT:
+        return 1.0 + 0.0 * C
+    if race == RACE_HYBRID_CONTROLLING:
+        return (2.0 if C.real > 1.0 else 0.0) + 0.0 * C
+    return 2.0 * C / (1.0 + C)
+
+
+@njit(cache=True)
 def kinematics(a_i, a_o, C, omega, gp, dm, D, m_ball, race, centrifugal, gyroscopic):
     """Race-control kinematics of one ball (complex-safe: also called with complex arguments).
 
@@ -123,8 +150,8 @@ def kinematics(a_i, a_o, C, omega, gp, dm, D, m_ball, race, centrifugal, gyrosco
         S = (1.0 + gp * co) / (1.0 - gp * ci)   # Rabreau's S with its lost gamma restored (SPEC 4.10)
         Ah = gp * C * (cmath.cos(a_i - a_o) - S)
         tan_beta = (C * (S + 1.0) * si + 2.0 * so) / (C * (S + 1.0) * ci + 2.0 * (co + gp) + Ah)
-        lam_o = 2.0 / (1.0 + C)
-        lam_i = 2.0 * C / (1.0 + C)
+        lam_i = hybrid_inner_share(C, race)
+        lam_o = 2.0 - lam_i
     beta = cmath.atan(tan_beta)
     n_o = (1.0 - gp * ci) * cmath.cos(a_o - beta)
     w_m = omega * n_o / ((1.0 + gp * co) * cmath.cos(a_i - beta) + n_o)
@@ -148,7 +175,7 @@ def _kin_grad(a_i, a_o, C, omega, gp, dm, D, m_ball, race, cen, gyro, g):
     r = kinematics(complex(a_i, 0.0), complex(a_o, h), complex(C, 0.0), omega, gp, dm, D, m_ball, race, cen, gyro)
     for k in range(3):
         g[k, 2] = r[k].imag / h
-    if race == RACE_HYBRID:
+    if race >= RACE_HYBRID:
         r = kinematics(complex(a_i, 0.0), complex(a_o, 0.0), complex(C, h), omega, gp, dm, D, m_ball, race, cen, gyro)
         for k in range(3):
             g[k, 3] = r[k].imag / h
@@ -201,7 +228,7 @@ def _ball_eval(X1, X2, A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball
     C = 0.0
     dC_Qi = 0.0
     dC_Qo = 0.0
-    if race == RACE_HYBRID and Q_i > 0.0:
+    if race >= RACE_HYBRID and Q_i > 0.0:
         if Q_o > 0.0 and Q_i < 1e6 * Q_o:
             C = c_hyb * (Q_i / Q_o) ** (4.0 / 3.0)
             dC_Qi = 4.0 / 3.0 * C / Q_i
@@ -511,8 +538,8 @@ def _ball_outputs(j, cond, X, A1, A2, omega, gp, dm, D, qs, race, cen, gyro, bal
     lam_i = 0.0
     if race == RACE_INNER:
         lam_i = 2.0
-    elif race == RACE_HYBRID:
-        lam_i = 2.0 * C / (1.0 + C)
+    elif race >= RACE_HYBRID:
+        lam_i = hybrid_inner_share(C, race)
     balls[BQ_LAM_I, j] = lam_i
     # spin = (ball - race) angular velocity along the contact normal, in the cage frame (docs/quasistatic.md)
     balls[BQ_SPIN_O, j] = w_R * math.sin(a_o - beta) + w_m * math.sin(a_o)

@@ -119,14 +119,35 @@ def race_control(a_i, a_o, Q_i, Q_o, p, gp):
             Ah = gp C [cos(a_i - a_o) - S];
             tan beta = (C (S+1) sin a_i + 2 sin a_o) / (C (S+1) cos a_i + 2 (cos a_o + gp) + Ah);
             lam_o = 2/(1+C), lam_i = 2C/(1+C).
+    The sensitivity readings keep the hybrid beta and share the moment otherwise:
+    hybrid_outer lam_i = 0; hybrid_inner lam_i = 2; hybrid_equal lam_i = 1;
+    hybrid_controlling lam_i = 2 if C > 1 else 0.
     """
     race = p["race"]
     if race == "outer":
         return math.atan2(math.sin(a_o), math.cos(a_o) + gp), 0.0, 2.0
     if race == "inner":
         return math.atan2(math.sin(a_i), math.cos(a_i) - gp), 2.0, 0.0
-    if race != "hybrid":
+    if race not in ("hybrid", "hybrid_outer", "hybrid_inner", "hybrid_equal", "hybrid_controlling"):
         raise ValueError(f"unknown race control {race!r}")
+    beta, C = hybrid_pitch_angle(a_i, a_o, Q_i, Q_o, p, gp)
+    if race == "hybrid_outer":
+        lam_i = 0.0
+    elif race == "hybrid_inner":
+        lam_i = 2.0
+    elif race == "hybrid_equal":
+        lam_i = 1.0
+    elif race == "hybrid_controlling":
+        lam_i = 2.0 if C > 1.0 else 0.0
+    elif math.isinf(C):
+        lam_i = 2.0
+    else:
+        lam_i = 2.0 * C / (1.0 + C)
+    return beta, lam_i, 2.0 - lam_i
+
+
+def hybrid_pitch_angle(a_i, a_o, Q_i, Q_o, p, gp):
+    """(beta, C) of Rabreau's hybrid law (see race_control)."""
     S = (1.0 + gp * math.cos(a_o)) / (1.0 - gp * math.cos(a_i))
     if Q_o > 0.0:
         C = p["c_hyb"] * (Q_i / Q_o) ** (4.0 / 3.0)
@@ -138,11 +159,11 @@ def race_control(a_i, a_o, Q_i, Q_o, p, gp):
         # the formula divided through by C, C -> inf
         num = (S + 1.0) * math.sin(a_i)
         den = (S + 1.0) * math.cos(a_i) + gp * (math.cos(a_i - a_o) - S)
-        return math.atan2(num, den), 2.0, 0.0
+        return math.atan2(num, den), C
     Ah = gp * C * (math.cos(a_i - a_o) - S)
     num = C * (S + 1.0) * math.sin(a_i) + 2.0 * math.sin(a_o)
     den = C * (S + 1.0) * math.cos(a_i) + 2.0 * (math.cos(a_o) + gp) + Ah
-    return math.atan2(num, den), 2.0 * C / (1.0 + C), 2.0 / (1.0 + C)
+    return math.atan2(num, den), C
 
 
 def cage_and_spin_speeds(a_i, a_o, beta, omega, gp):

@@ -23,7 +23,10 @@ from bearing_fmu.kernels import quasistatic as qk
 from tests.reference import ref_quasistatic as ref
 
 RPM = 2.0 * math.pi / 60.0
-RACES = {"outer": qk.RACE_OUTER, "inner": qk.RACE_INNER, "hybrid": qk.RACE_HYBRID}
+RACES = {"outer": qk.RACE_OUTER, "inner": qk.RACE_INNER, "hybrid": qk.RACE_HYBRID,
+         "hybrid_outer": qk.RACE_HYBRID_OUTER_SPLIT, "hybrid_inner": qk.RACE_HYBRID_INNER_SPLIT,
+         "hybrid_equal": qk.RACE_HYBRID_EQUAL_SPLIT,
+         "hybrid_controlling": qk.RACE_HYBRID_CONTROLLING}
 
 
 def pack(p, tol=1e-12, maxit=100):
@@ -101,6 +104,13 @@ LOAD_CASES = [
      (0.0, 0.0, 800.0, 0.0, 0.0), 10000 * RPM),
     ("B7214C hybrid 10k", ref.params_b7214c(centrifugal=True, gyroscopic=True, race="hybrid"),
      (0.0, 0.0, 800.0, 0.0, 0.0), 10000 * RPM),
+    ("B7214C hybrid outer-split 10k", ref.params_b7214c(centrifugal=True, gyroscopic=True, race="hybrid_outer"),
+     (0.0, 0.0, 800.0, 0.0, 0.0), 10000 * RPM),
+    ("B7214C hybrid inner-split 10k", ref.params_b7214c(centrifugal=True, gyroscopic=True, race="hybrid_inner"),
+     (0.0, 0.0, 800.0, 0.0, 0.0), 10000 * RPM),
+    ("B7214C hybrid equal-split 10k combined",
+     ref.params_b7214c(centrifugal=True, gyroscopic=True, race="hybrid_equal"),
+     (400.0, -200.0, 1500.0, 10.0, 5.0), 10000 * RPM),
     ("B7214C IRC 10k combined", ref.params_b7214c(centrifugal=True, gyroscopic=True, race="inner"),
      (400.0, -200.0, 1500.0, 10.0, 5.0), 10000 * RPM),
 ]
