@@ -24,11 +24,10 @@ import numpy as np
 from bearing_fmu.kernels import quasistatic as qk
 from bearing_fmu.params import load_bearing
 from bearing_fmu.quasi_static import HYBRID_SPLITS, QuasiStaticModel, SolverError
-from bearing_fmu.scene import Scene
 
 from .common import REPORTS, write_report
+from .rabreau_preload import RPM, scene
 
-RPM = 2.0 * math.pi / 60.0
 SPEED = 10000.0          # rpm
 PRELOAD = 800.0          # N
 TEMPERATURES = (313.15, 333.15)
@@ -40,11 +39,6 @@ GEOMETRIES = [(17, 15.875e-3, 0.52, 0.53), (16, 16.669e-3, 0.52, 0.53), (18, 15.
               (19, 14.288e-3, 0.52, 0.53), (17, 15.875e-3, 0.515, 0.52), (17, 15.875e-3, 0.53, 0.54),
               (17, 15.875e-3, 0.52, 0.52), (17, 15.875e-3, 0.54, 0.54)]
 SWEEP_RPM = np.arange(3000.0, 4500.0 + 1.0, 10.0)
-
-
-def scene(gyroscopic):
-    return Scene(name="rabreau", fidelity="quasi_static", centrifugal=True, gyroscopic=gyroscopic, torque=True,
-                 stiffness=True, tolerance=1e-12)
 
 
 def geometry_file(folder, Z, D, f_i, f_o):
@@ -97,9 +91,7 @@ def speed_sweep(split):
         model = model or QuasiStaticModel("B7214C", LUBRICANT, scene(True), race_control="hybrid", hybrid_split=split)
         try:
             res = model.evaluate(omega=rpm * RPM, F_z=PRELOAD, T_oil=TEMPERATURES[0])
-            Q_i, Q_o = model.balls[qk.BQ_Q_I, 0], model.balls[qk.BQ_Q_O, 0]
-            C = model.qs[qk.QS_C_HYB] * (Q_i / Q_o) ** (4.0 / 3.0)
-            rows.append([res["K[3,3]"] * 1e-6, model.balls[qk.BQ_LAM_I, 0], C])
+            rows.append([res["K[3,3]"] * 1e-6, model.balls[qk.BQ_LAM_I, 0], first_ball_ratio(model)])
         except SolverError:
             rows.append([math.nan] * 3)
             model = None
@@ -110,6 +102,11 @@ def spin_moment_ratio(split, rpm):
     """C (-) of the first ball of the HT solution with a fixed share at rpm, 800 N (cold solve)."""
     model = QuasiStaticModel("B7214C", LUBRICANT, scene(True), race_control="hybrid", hybrid_split=split)
     model.evaluate(omega=rpm * RPM, F_z=PRELOAD, T_oil=TEMPERATURES[0])
+    return first_ball_ratio(model)
+
+
+def first_ball_ratio(model):
+    """Spin-moment ratio C = c_hyb (Q_i/Q_o)^(4/3) (-) of the first ball of a solved model."""
     Q_i, Q_o = model.balls[qk.BQ_Q_I, 0], model.balls[qk.BQ_Q_O, 0]
     return model.qs[qk.QS_C_HYB] * (Q_i / Q_o) ** (4.0 / 3.0)
 
