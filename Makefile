@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test fmus bench clean
+.PHONY: demo test lint fmus bench clean
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -18,9 +18,13 @@ fmus: $(STAMP)
 demo: fmus
 	$(BIN)/python -m spindle.cli demo --out results
 
+lint: $(STAMP)
+	$(BIN)/ruff check .
+	$(BIN)/ruff format --check .
+
 # numba's cache=True does not notice edits to the kernels a cached kernel calls: start tests from a
 # clean cache (the FMUs are unaffected: their cache directory is keyed on the package's content hash)
-test: fmus
+test: lint fmus
 	find bearing_fmu -name '*.nbi' -delete -o -name '*.nbc' -delete
 	$(BIN)/python -m pytest -q
 

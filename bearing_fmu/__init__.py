@@ -2,4 +2,5 @@
 
 Layers (SPEC 2): kernels (pure, jitted) <- model (facade) <- fmu (thin pythonfmu slave) <- build.
 """
+
 __version__ = "0.1.0"

@@ -6,6 +6,7 @@ package once to a stable per-version directory (~/.cache/bearing_fmu/<hash>, or 
 and imports it from there: numba's on-disk cache is keyed on the source path, so a stable path
 makes the cache hit across processes and across fmpy's fresh temporary extractions (SPEC 3).
 """
+
 import argparse
 import csv
 import hashlib
@@ -87,8 +88,7 @@ def package_hash(package_dirs=(PACKAGE_DIR,)):
     return digest.hexdigest()[:16]
 
 
-def build_python_fmu(fmu_name, module, base_class, out_dir, package_dirs=(PACKAGE_DIR,), body="pass",
-                     imports=""):
+def build_python_fmu(fmu_name, module, base_class, out_dir, package_dirs=(PACKAGE_DIR,), body="pass", imports=""):
     """Build a pythonfmu FMU whose slave class `fmu_name` derives from module.base_class, bundling
     the given package directories in resources/ (copied to a stable cache directory at load)."""
     out_dir = Path(out_dir)
@@ -97,15 +97,30 @@ def build_python_fmu(fmu_name, module, base_class, out_dir, package_dirs=(PACKAG
     with tempfile.TemporaryDirectory(prefix="bearing_fmu_build_") as tmp:
         stage = Path(tmp)
         for package_dir in package_dirs:
-            shutil.copytree(package_dir, stage / package_dir.name,
-                            ignore=shutil.ignore_patterns("__pycache__", "*.pyc", "*.nbi", "*.nbc"))
+            shutil.copytree(
+                package_dir,
+                stage / package_dir.name,
+                ignore=shutil.ignore_patterns("__pycache__", "*.pyc", "*.nbi", "*.nbc"),
+            )
         entry = stage / f"{fmu_name.lower()}_entry.py"
-        entry.write_text(ENTRY_TEMPLATE.format(fmu_name=fmu_name, bundle=package_hash(package_dirs),
-                                               packages=[p.name for p in package_dirs], module=module,
-                                               base_class=base_class, imports=imports, body=body))
-        path = FmuBuilder.build_FMU(entry, dest=out_dir / f"{fmu_name}.fmu",
-                                    project_files=[stage / p.name for p in package_dirs],
-                                    canGetAndSetFMUstate=True, canSerializeFMUstate=True)
+        entry.write_text(
+            ENTRY_TEMPLATE.format(
+                fmu_name=fmu_name,
+                bundle=package_hash(package_dirs),
+                packages=[p.name for p in package_dirs],
+                module=module,
+                base_class=base_class,
+                imports=imports,
+                body=body,
+            )
+        )
+        path = FmuBuilder.build_FMU(
+            entry,
+            dest=out_dir / f"{fmu_name}.fmu",
+            project_files=[stage / p.name for p in package_dirs],
+            canGetAndSetFMUstate=True,
+            canSerializeFMUstate=True,
+        )
         sys.modules.pop(entry.stem, None)
     return Path(path)
 
@@ -117,15 +132,21 @@ def scene_files():
 def build_fmu(scene_file, out_dir=DEFAULT_OUT):
     """Build one FMU from a scene file; returns the FMU path."""
     import tomllib
+
     with open(scene_file, "rb") as fh:
         doc = tomllib.load(fh)
     fmu_name = doc["fmu"]["name"]
     base_class = doc["fmu"]["slave"]
     scene_dict = doc["scene"]
     Scene.from_dict(scene_dict)  # fail early, listing every problem
-    path = build_python_fmu(fmu_name, "bearing_fmu.fmu", base_class, out_dir,
-                            body=f"scene = Scene.from_dict({scene_dict!r})",
-                            imports="from bearing_fmu.scene import Scene  # noqa: E402\n")
+    path = build_python_fmu(
+        fmu_name,
+        "bearing_fmu.fmu",
+        base_class,
+        out_dir,
+        body=f"scene = Scene.from_dict({scene_dict!r})",
+        imports="from bearing_fmu.scene import Scene  # noqa: E402\n",
+    )
     out_dir = Path(out_dir)
     shutil.copy2(scene_file, out_dir / f"{fmu_name}_scene.toml")
     write_reference(scene_dict, out_dir / f"{fmu_name}_ref.csv")
@@ -177,7 +198,7 @@ def main(argv=None):
     parser.add_argument("--out", default=str(DEFAULT_OUT), help="output directory (default: fmus/)")
     parser.add_argument("scenes", nargs="*", help="scene TOML files (default: all in bearing_fmu/scenes)")
     args = parser.parse_args(argv)
-    for scene_file in (args.scenes or scene_files()):
+    for scene_file in args.scenes or scene_files():
         print(f"built {build_fmu(scene_file, args.out)}")
 
 

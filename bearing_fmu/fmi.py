@@ -3,6 +3,7 @@
 pythonfmu 0.7 writes no units; FMI 2.0 wants a `unit` attribute on each Real and the unit defined
 in <UnitDefinitions> by its SI base-unit exponents.
 """
+
 from xml.etree.ElementTree import Element, SubElement
 
 from pythonfmu import Boolean, Fmi2Causality, Fmi2Initial, Fmi2Variability, Integer, Real, String
@@ -61,8 +62,13 @@ def fmi_escape(message: str) -> str:
 
 def parameter(name, start, description, unit=None):
     """A fixed parameter variable (Real with unit, Boolean for a bool start, or String when unit is None)."""
-    kwargs = dict(causality=Fmi2Causality.parameter, variability=Fmi2Variability.fixed,
-                  initial=Fmi2Initial.exact, start=start, description=description)
+    kwargs = dict(
+        causality=Fmi2Causality.parameter,
+        variability=Fmi2Variability.fixed,
+        initial=Fmi2Initial.exact,
+        start=start,
+        description=description,
+    )
     if isinstance(start, bool):
         return Boolean(name, **kwargs)
     if unit is None:
@@ -71,14 +77,21 @@ def parameter(name, start, description, unit=None):
 
 
 def input_variable(name, unit, start, description):
-    return UnitReal(name, unit, causality=Fmi2Causality.input, variability=Fmi2Variability.continuous,
-                    start=start, description=description)
+    return UnitReal(
+        name,
+        unit,
+        causality=Fmi2Causality.input,
+        variability=Fmi2Variability.continuous,
+        start=start,
+        description=description,
+    )
 
 
 def output_variable(name, unit, description, integer=False, getter=None, setter=None):
     """Output declared initial=exact (computed at initialisation), so `fmpy validate` is clean (SPEC 3)."""
-    kwargs = dict(causality=Fmi2Causality.output, initial=Fmi2Initial.exact, description=description,
-                  getter=getter, setter=setter)
+    kwargs = dict(
+        causality=Fmi2Causality.output, initial=Fmi2Initial.exact, description=description, getter=getter, setter=setter
+    )
     if integer:
         return Integer(name, variability=Fmi2Variability.discrete, **kwargs)
     return UnitReal(name, unit, variability=Fmi2Variability.continuous, **kwargs)

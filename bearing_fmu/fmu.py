@@ -6,6 +6,7 @@ Python model cannot drift. Bad input never raises out of an FMI call (a Python e
 fmi2Fatal in pythonfmu): it is logged with its allowed range and do_step returns False
 (fmi2Discard); the outputs keep their last valid values.
 """
+
 from pythonfmu import Fmi2Slave
 from pythonfmu.enums import Fmi2Status
 
@@ -35,14 +36,19 @@ class _BearingSlave(Fmi2Slave):
         self._build_model()
         for var in self._model.inputs:
             setattr(self, var.name, INPUT_START.get(var.name, 0.0))
-            self.register_variable(input_variable(var.name, var.unit, INPUT_START.get(var.name, 0.0),
-                                                  var.description))
+            self.register_variable(input_variable(var.name, var.unit, INPUT_START.get(var.name, 0.0), var.description))
         for var in self._model.outputs:
             self._values[var.name] = 0 if var.kind == "integer" else 0.0
-            self.register_variable(output_variable(
-                var.name, var.unit, var.description, var.kind == "integer",
-                getter=lambda n=var.name: self._values[n],
-                setter=lambda v, n=var.name: self._values.__setitem__(n, v)))
+            self.register_variable(
+                output_variable(
+                    var.name,
+                    var.unit,
+                    var.description,
+                    var.kind == "integer",
+                    getter=lambda n=var.name: self._values[n],
+                    setter=lambda v, n=var.name: self._values.__setitem__(n, v),
+                )
+            )
         self._update()  # start values of the outputs = the model at the default inputs
 
     # -- model ---------------------------------------------------------------------------------
@@ -75,8 +81,7 @@ class _BearingSlave(Fmi2Slave):
         except (InputError, ParameterError, SceneError) as exc:
             self.log(fmi_escape(f"{self.instance_name}: {exc}"), Fmi2Status.error)
         except Exception as exc:  # never let an exception reach the host as fmi2Fatal
-            self.log(fmi_escape(f"{self.instance_name}: internal error {type(exc).__name__}: {exc}"),
-                     Fmi2Status.error)
+            self.log(fmi_escape(f"{self.instance_name}: internal error {type(exc).__name__}: {exc}"), Fmi2Status.error)
         return False
 
     # -- FMI -------------------------------------------------------------------------------------
@@ -104,28 +109,38 @@ class _BearingSlave(Fmi2Slave):
         if self._ready and solver:
             self._model.set_state(solver)
 
-    def to_xml(self, model_options=dict()):
-        return add_unit_definitions(super().to_xml(model_options), self.vars.values())
+    def to_xml(self, model_options=None):
+        return add_unit_definitions(super().to_xml(model_options or {}), self.vars.values())
 
 
 class BearingAnalytic(_BearingSlave):
     """Analytic ball-bearing model (Stribeck/Sjovall + Hertz + EHL film + capacitance)."""
 
-    description = ("Radially loaded deep-groove ball bearing, analytic fidelity: Sjovall load distribution "
-                   "with clearance, exact Hertz contacts, Hamrock-Dowson EHL film, film parameter, regime, "
-                   "capacitance. SI units.")
+    description = (
+        "Radially loaded deep-groove ball bearing, analytic fidelity: Sjovall load distribution "
+        "with clearance, exact Hertz contacts, Hamrock-Dowson EHL film, film parameter, regime, "
+        "capacitance. SI units."
+    )
 
     def _declare_parameters(self):
         self.bearing = "6208"
         self.lubricant = "guessasma_oil"
         self.Pd = 0.0
-        self.register_variable(parameter("bearing", self.bearing,
-                                         "bearing catalogue name (6208, 6306) or path of a bearing TOML file"))
-        self.register_variable(parameter("lubricant", self.lubricant,
-                                         "lubricant catalogue name or path of a lubricant TOML file"))
-        self.register_variable(parameter("Pd", self.Pd, "diametral clearance used by the model, overrides the "
-                                         "bearing file value (negative = preload), |Pd| <= 0.02 D",
-                                         unit="m"))
+        self.register_variable(
+            parameter("bearing", self.bearing, "bearing catalogue name (6208, 6306) or path of a bearing TOML file")
+        )
+        self.register_variable(
+            parameter("lubricant", self.lubricant, "lubricant catalogue name or path of a lubricant TOML file")
+        )
+        self.register_variable(
+            parameter(
+                "Pd",
+                self.Pd,
+                "diametral clearance used by the model, overrides the "
+                "bearing file value (negative = preload), |Pd| <= 0.02 D",
+                unit="m",
+            )
+        )
 
     def _model_key(self):
         return self.bearing, self.lubricant, float(self.Pd)
@@ -137,9 +152,11 @@ class BearingAnalytic(_BearingSlave):
 class BearingQuasiStatic(_BearingSlave):
     """Quasi-static 5-DOF ball bearing (Jones/Harris) with film, capacitance, Houpert torque and stiffness."""
 
-    description = ("Ball bearing, quasi-static fidelity: 5-DOF inner-ring equilibrium with per-ball "
-                   "equilibrium (centrifugal force, gyroscopic moment, race control), exact Hertz contacts, "
-                   "5x5 stiffness, EHL film, regime, capacitance, Houpert friction torque and ring heat. SI units.")
+    description = (
+        "Ball bearing, quasi-static fidelity: 5-DOF inner-ring equilibrium with per-ball "
+        "equilibrium (centrifugal force, gyroscopic moment, race control), exact Hertz contacts, "
+        "5x5 stiffness, EHL film, regime, capacitance, Houpert friction torque and ring heat. SI units."
+    )
     scene = Scene(name="quasi_static", fidelity="quasi_static")
 
     def _declare_parameters(self):
@@ -148,29 +165,61 @@ class BearingQuasiStatic(_BearingSlave):
         self.Pd = 0.0
         self.Pd_from_file = True
         self.race_control = self.scene.race_control
-        self.register_variable(parameter("bearing", self.bearing, "bearing catalogue name (6208, 6306, B7214C) "
-                                         "or path of a bearing TOML file"))
-        self.register_variable(parameter("lubricant", self.lubricant,
-                                         "lubricant catalogue name or path of a lubricant TOML file"))
-        self.register_variable(parameter("Pd_from_file", self.Pd_from_file, "true: diametral clearance from the "
-                                         "bearing file; false: from the parameter Pd"))
-        self.register_variable(parameter("Pd", self.Pd, "diametral clearance used when Pd_from_file is false "
-                                         "(negative = preload), |Pd| <= 0.02 D", unit="m"))
-        self.register_variable(parameter("race_control", self.race_control, "ball race-control hypothesis: "
-                                         "outer | inner | hybrid (Rabreau 2018)"))
+        self.register_variable(
+            parameter(
+                "bearing", self.bearing, "bearing catalogue name (6208, 6306, B7214C) or path of a bearing TOML file"
+            )
+        )
+        self.register_variable(
+            parameter("lubricant", self.lubricant, "lubricant catalogue name or path of a lubricant TOML file")
+        )
+        self.register_variable(
+            parameter(
+                "Pd_from_file",
+                self.Pd_from_file,
+                "true: diametral clearance from the bearing file; false: from the parameter Pd",
+            )
+        )
+        self.register_variable(
+            parameter(
+                "Pd",
+                self.Pd,
+                "diametral clearance used when Pd_from_file is false (negative = preload), |Pd| <= 0.02 D",
+                unit="m",
+            )
+        )
+        self.register_variable(
+            parameter(
+                "race_control", self.race_control, "ball race-control hypothesis: outer | inner | hybrid (Rabreau 2018)"
+            )
+        )
         self.F_preload = 0.0
         if self.scene.drive == "fixed_axial":  # only a fixed-preload bearing has an assembly offset
             self.F_preload = DEFAULT_FIXED_PRELOAD
-            self.register_variable(parameter("F_preload", self.F_preload, "axial preload set at assembly (at rest, "
-                                             "no thermal change; default: the Rabreau rig's 800 N); the input z is "
-                                             "added to the axial approach that carries it. 0 = z is the axial "
-                                             "approach itself", unit="N"))
+            self.register_variable(
+                parameter(
+                    "F_preload",
+                    self.F_preload,
+                    "axial preload set at assembly (at rest, "
+                    "no thermal change; default: the Rabreau rig's 800 N); the input z is "
+                    "added to the axial approach that carries it. 0 = z is the axial "
+                    "approach itself",
+                    unit="N",
+                )
+            )
 
     def _model_key(self):
-        return (self.bearing, self.lubricant, bool(self.Pd_from_file), float(self.Pd), self.race_control,
-                float(self.F_preload))
+        return (
+            self.bearing,
+            self.lubricant,
+            bool(self.Pd_from_file),
+            float(self.Pd),
+            self.race_control,
+            float(self.F_preload),
+        )
 
     def _make_model(self):
         Pd = None if self.Pd_from_file else self.Pd
-        return QuasiStaticModel(self.bearing, self.lubricant, self.scene, Pd=Pd, race_control=self.race_control,
-                                F_preload=self.F_preload)
+        return QuasiStaticModel(
+            self.bearing, self.lubricant, self.scene, Pd=Pd, race_control=self.race_control, F_preload=self.F_preload
+        )

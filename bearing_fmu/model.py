@@ -3,24 +3,25 @@
 Inputs and outputs are SI. The model declares its inputs and outputs (name, unit, description) in
 tables that the FMU class turns into FMI variables, so the Python model and the FMU cannot drift.
 """
+
 import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from .kernels import analytic as ak
-from .kernels.hertz import hertz_coefficients_approx, hertz_coefficients_exact, reduced_modulus
 from .kernels.geometry import ball_mass, curvature_radii
+from .kernels.hertz import hertz_coefficients_approx, hertz_coefficients_exact, reduced_modulus
 from .kernels.loaddist import gauss_legendre
 from .params import load_bearing, load_lubricant
 from .scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
 
 # Pressures that bound the admissible load (docs/decisions.md):
 P_MAX_WARNING = 4.2e9  # Pa, ISO 76 static load rating criterion for ball bearings
-P_MAX_ERROR = 6.0e9    # Pa, estimated: far beyond first yield of bearing steel; Hertz is meaningless
-DM_N_LIMIT = 4.0e6     # mm.rpm, d_m n beyond any oil-lubricated steel ball bearing (estimated)
+P_MAX_ERROR = 6.0e9  # Pa, estimated: far beyond first yield of bearing steel; Hertz is meaningless
+DM_N_LIMIT = 4.0e6  # mm.rpm, d_m n beyond any oil-lubricated steel ball bearing (estimated)
 T_OIL_RANGE = (233.15, 473.15)  # K, -40..200 C: range of the viscosity laws of mineral and PAO oils
-GAUSS_NODES = 48       # quadrature points on the loaded arc (J_r(0.5) exact to < 1e-8)
+GAUSS_NODES = 48  # quadrature points on the loaded arc (J_r(0.5) exact to < 1e-8)
 
 
 class InputError(ValueError):
@@ -30,8 +31,10 @@ class InputError(ValueError):
 def check_speed(omega, omega_max):
     """Raise InputError unless omega (rad/s) is finite and |omega| <= omega_max (the d_m n limit)."""
     if not (math.isfinite(omega) and abs(omega) <= omega_max):
-        raise InputError(f"omega = {omega} rad/s is outside the allowed range [{-omega_max:.6g}, {omega_max:.6g}] "
-                         f"rad/s (d_m n <= {DM_N_LIMIT:.0e} mm.rpm)")
+        raise InputError(
+            f"omega = {omega} rad/s is outside the allowed range [{-omega_max:.6g}, {omega_max:.6g}] "
+            f"rad/s (d_m n <= {DM_N_LIMIT:.0e} mm.rpm)"
+        )
 
 
 def check_oil_temperature(T_oil):
@@ -45,18 +48,22 @@ def pressure_warnings(p_max, loads):
     """Warnings for a Hertz pressure p_max (Pa) above the ISO 76 limit; InputError above the material
     limit. `loads` names the inputs that caused it (for the message)."""
     if p_max > P_MAX_ERROR:
-        raise InputError(f"{loads} gives p_max = {p_max / 1e9:.3g} GPa, beyond the material limit "
-                         f"{P_MAX_ERROR / 1e9:.1f} GPa (allowed: loads giving p_max <= {P_MAX_ERROR / 1e9:.1f} GPa)")
+        raise InputError(
+            f"{loads} gives p_max = {p_max / 1e9:.3g} GPa, beyond the material limit "
+            f"{P_MAX_ERROR / 1e9:.1f} GPa (allowed: loads giving p_max <= {P_MAX_ERROR / 1e9:.1f} GPa)"
+        )
     if p_max > P_MAX_WARNING:
-        return [f"p_max = {p_max / 1e9:.3g} GPa exceeds {P_MAX_WARNING / 1e9:.1f} GPa "
-                f"(ISO 76 static limit): permanent raceway deformation expected"]
+        return [
+            f"p_max = {p_max / 1e9:.3g} GPa exceeds {P_MAX_WARNING / 1e9:.1f} GPa "
+            f"(ISO 76 static limit): permanent raceway deformation expected"
+        ]
     return []
 
 
 @dataclass(frozen=True)
 class Variable:
-    name: str         # FMI variable name
-    unit: str         # SI unit ('1' for dimensionless)
+    name: str  # FMI variable name
+    unit: str  # SI unit ('1' for dimensionless)
     description: str
     kind: str = "real"  # 'real' | 'integer'
 
@@ -102,8 +109,10 @@ class BearingModel:
         self.lubricant = load_lubricant(lubricant)
         b = self.bearing
         if b.kind != "deep_groove" or b.alpha0 != 0.0:
-            raise InputError(f"bearing '{b.name}': the analytic fidelity models radially loaded "
-                             f"deep-groove bearings (contact angle 0); use the quasi-static fidelity")
+            raise InputError(
+                f"bearing '{b.name}': the analytic fidelity models radially loaded "
+                f"deep-groove bearings (contact angle 0); use the quasi-static fidelity"
+            )
         self.Pd = b.Pd if Pd is None else float(Pd)
         limit = 0.02 * b.D
         if not (math.isfinite(self.Pd) and abs(self.Pd) <= limit):
@@ -111,8 +120,10 @@ class BearingModel:
         self.omega_max = DM_N_LIMIT / (b.dm * 1e3) * 2.0 * math.pi / 60.0
         self.brg = self._pack()
         if min(self.brg[ak.B_SIGMA_I], self.brg[ak.B_SIGMA_O]) <= 0.0:
-            raise InputError(f"bearing '{b.name}': composite roughness sigma must be > 0 (Lambda = h_min/sigma); "
-                             f"give surface.inner_race_Ra / outer_race_Ra / ball_Ra > 0 m")
+            raise InputError(
+                f"bearing '{b.name}': composite roughness sigma must be > 0 (Lambda = h_min/sigma); "
+                f"give surface.inner_race_Ra / outer_race_Ra / ball_Ra > 0 m"
+            )
         self.nodes, self.weights = gauss_legendre(GAUSS_NODES)
         self._out = np.zeros(ak.O_SIZE)
         self.ball = np.zeros((8, b.Z))
@@ -171,8 +182,17 @@ class BearingModel:
         beyond the material limit; fills self.warnings (e.g. p_max above the ISO 76 limit)."""
         self.check_inputs(omega, F_y, T_oil)
         out = self._out
-        ak.analytic_bearing(float(omega), abs(float(F_y)), float(T_oil), self.brg, self.lubricant.array,
-                            self.nodes, self.weights, out, self.ball)
+        ak.analytic_bearing(
+            float(omega),
+            abs(float(F_y)),
+            float(T_oil),
+            self.brg,
+            self.lubricant.array,
+            self.nodes,
+            self.weights,
+            out,
+            self.ball,
+        )
         self.warnings = pressure_warnings(out[ak.O_PMAX], f"F_y = {F_y} N")
         sign = -1.0 if F_y < 0.0 else 1.0
         values = {
@@ -195,6 +215,8 @@ class BearingModel:
             del values["C_bearing"]
         for name, value in values.items():
             if not math.isfinite(value):
-                raise InputError(f"output {name} is not finite ({value}) for omega = {omega} rad/s, "
-                                 f"F_y = {F_y} N, T_oil = {T_oil} K: please report this case")
+                raise InputError(
+                    f"output {name} is not finite ({value}) for omega = {omega} rad/s, "
+                    f"F_y = {F_y} N, T_oil = {T_oil} K: please report this case"
+                )
         return values

@@ -63,6 +63,7 @@ warm-start state). Warnings (PairResult.warnings): p_max above the ISO 76 limit,
 angular-contact bearing loaded at a negative contact angle (the kernel's full groove then stands in
 for the bearing's low shoulder).
 """
+
 import math
 from dataclasses import dataclass, field
 
@@ -77,9 +78,9 @@ from .quasi_static import QuasiStaticModel, SolverError
 ARRANGEMENTS = ("X", "O")
 PRELOADS = ("spring", "fixed")
 MIRROR = np.diag([1.0, 1.0, -1.0, -1.0, -1.0])
-_AXIAL = np.array([0.0, 0.0, 1.0, 0.0, 0.0])     # control vector: only the local axial DOF load-controlled
-_NONE = np.zeros(5)                              # control vector: displacement-controlled
-_RADIAL = [0, 1, 3, 4]                           # DOFs kept by the condensation of the free axial DOF
+_AXIAL = np.array([0.0, 0.0, 1.0, 0.0, 0.0])  # control vector: only the local axial DOF load-controlled
+_NONE = np.zeros(5)  # control vector: displacement-controlled
+_RADIAL = [0, 1, 3, 4]  # DOFs kept by the condensation of the free axial DOF
 _BACKTRACK = 40
 
 
@@ -102,14 +103,15 @@ def condense_axial(K):
 @dataclass
 class BearingState:
     """One bearing of the pair at the solution (local frame, see the module docstring)."""
-    name: str                 # 'A' or 'B'
-    position: float           # axial position of the bearing centre a_k (m)
-    d: np.ndarray             # local displacements (x, y, z, theta_x, theta_y) (m, rad)
-    F: np.ndarray             # local loads (F_x, F_y, F_z, M_x, M_y) (N, N.m)
-    K: np.ndarray             # local stiffness dF/dd (5x5), axial DOF not condensed
-    balls: np.ndarray         # per-ball rows (kernels.quasistatic BQ_*), a copy
-    X: np.ndarray             # ball positions (2, Z) (m), a copy
-    contacts: dict            # film/contact outputs at T_oil: Lambda_*, h_min_* (m), Q_max_* (N), p_max (Pa)
+
+    name: str  # 'A' or 'B'
+    position: float  # axial position of the bearing centre a_k (m)
+    d: np.ndarray  # local displacements (x, y, z, theta_x, theta_y) (m, rad)
+    F: np.ndarray  # local loads (F_x, F_y, F_z, M_x, M_y) (N, N.m)
+    K: np.ndarray  # local stiffness dF/dd (5x5), axial DOF not condensed
+    balls: np.ndarray  # per-ball rows (kernels.quasistatic BQ_*), a copy
+    X: np.ndarray  # ball positions (2, Z) (m), a copy
+    contacts: dict  # film/contact outputs at T_oil: Lambda_*, h_min_* (m), Q_max_* (N), p_max (Pa)
 
     @property
     def axial_load(self):
@@ -120,13 +122,14 @@ class BearingState:
 @dataclass
 class PairResult:
     """Solution of a pair: shaft displacement D (global), both bearings and K_pair (global, 5x5)."""
+
     D: np.ndarray
     F_ext: np.ndarray
-    bearings: tuple           # (BearingState A, BearingState B)
+    bearings: tuple  # (BearingState A, BearingState B)
     K_pair: np.ndarray
     iterations: int
-    residual: float           # largest load error, moments / length scale (N)
-    state: dict               # warm start for the next solve (PairAssembly.set_state)
+    residual: float  # largest load error, moments / length scale (N)
+    state: dict  # warm start for the next solve (PairAssembly.set_state)
     warnings: list = field(default_factory=list)
 
     @property
@@ -153,8 +156,10 @@ class PairAssembly:
             raise InputError(f"preload = {preload!r}: allowed {list(PRELOADS)}")
         F_preload = float(F_preload)
         if not (math.isfinite(F_preload) and F_preload > 0.0):
-            raise InputError(f"F_preload = {F_preload} N must be a finite number > 0 (an unpreloaded pair has "
-                             f"no stiffness at zero load)")
+            raise InputError(
+                f"F_preload = {F_preload} N must be a finite number > 0 (an unpreloaded pair has "
+                f"no stiffness at zero load)"
+            )
         spacing = float(spacing)
         if not (math.isfinite(spacing) and spacing > 0.0):
             raise InputError(f"spacing = {spacing} m must be a finite number > 0")
@@ -172,8 +177,10 @@ class PairAssembly:
         self.max_iterations = max(m.scene.max_iterations for m in self.models)
         for m in self.models:
             if m.load_limit <= F_preload:
-                raise InputError(f"F_preload = {F_preload} N is beyond the material limit of bearing "
-                                 f"'{m.bearing.name}' (allowed F_preload < {m.load_limit:.4g} N)")
+                raise InputError(
+                    f"F_preload = {F_preload} N is beyond the material limit of bearing "
+                    f"'{m.bearing.name}' (allowed F_preload < {m.load_limit:.4g} N)"
+                )
         # axial approach z_k0 (m) of each bearing alone carrying F_p at rest (the assembly offsets)
         self.z0 = tuple(m.axial_approach(self.F_preload) for m in self.models)
         self.set_state(None)
@@ -241,8 +248,9 @@ class PairAssembly:
     def shaft_loads(self, D, omega=0.0, dPd_thermal=(0.0, 0.0), dz_thermal=0.0):
         """Loads (5, N and N.m) the shaft needs to be held at D, and K_pair there (state not touched)."""
         X = [x.copy() for x in self.X]
-        ok, total, K_pair, _ = self._evaluate(np.asarray(D, float), float(omega), tuple(map(float, dPd_thermal)),
-                                              float(dz_thermal), X, self.z_B)
+        ok, total, K_pair, _ = self._evaluate(
+            np.asarray(D, float), float(omega), tuple(map(float, dPd_thermal)), float(dz_thermal), X, self.z_B
+        )
         if not ok:
             raise SolverError(f"bearing equilibrium not found at D = {np.asarray(D).tolist()}")
         return total, K_pair
@@ -255,8 +263,11 @@ class PairAssembly:
         check_oil_temperature(T_oil)
         if len(dPd) != 2:
             raise InputError(f"dPd_thermal = {dPd} must be a pair (dPd_A, dPd_B) in m")
-        for name, v, m in (("dPd_thermal[A]", dPd[0], self.models[0]), ("dPd_thermal[B]", dPd[1], self.models[1]),
-                           ("dz_thermal", dz, self.models[0])):
+        for name, v, m in (
+            ("dPd_thermal[A]", dPd[0], self.models[0]),
+            ("dPd_thermal[B]", dPd[1], self.models[1]),
+            ("dz_thermal", dz, self.models[0]),
+        ):
             limit = 0.02 * m.bearing.D
             if not (math.isfinite(v) and abs(v) <= limit):
                 raise InputError(f"{name} = {v} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m")
@@ -275,8 +286,10 @@ class PairAssembly:
             result = self._newton(F_ext, omega, dPd, dz, np.zeros(5), [np.zeros_like(x) for x in self.X], self.z0[1])
         if not isinstance(result, tuple):
             reason = result or "no equilibrium found"
-            raise SolverError(f"pair equilibrium not found ({reason}) for F_ext = {F_ext.tolist()}, omega = {omega} "
-                              f"rad/s, {self.arrangement} arrangement, {self.preload} preload {self.F_preload} N")
+            raise SolverError(
+                f"pair equilibrium not found ({reason}) for F_ext = {F_ext.tolist()}, omega = {omega} "
+                f"rad/s, {self.arrangement} arrangement, {self.preload} preload {self.F_preload} N"
+            )
         D, X, parts, K_pair, iters, res = result
         self.D, self.X = D, X
         if self.preload == "spring":
@@ -305,11 +318,13 @@ class PairAssembly:
             except np.linalg.LinAlgError:
                 hint = ""
                 if self.preload == "spring" and F_ext[2] <= -self.F_preload:
-                    hint = (": with spring preload B always carries F_preload, so an axial load F_z <= -F_preload "
-                            "lifts bearing A off its raceways")
+                    hint = (
+                        ": with spring preload B always carries F_preload, so an axial load F_z <= -F_preload "
+                        "lifts bearing A off its raceways"
+                    )
                 return "singular pair stiffness" + hint
             big = float(np.max(np.abs(u)))
-            if big < 1e-15 * self.groove:   # at rounding level: nothing left to gain
+            if big < 1e-15 * self.groove:  # at rounding level: nothing left to gain
                 return D, X, parts, K_pair, it, res
             step = (u if big <= step_cap else u * (step_cap / big)) / s
             lam = 1.0
@@ -336,27 +351,58 @@ class PairAssembly:
             model = self.models[k]
             name = "AB"[k]
             out = np.zeros(ck.CO_SIZE)
-            ck.contact_outputs(omega, T_oil, model.cp, model.lubricant.array, balls, out,
-                               np.zeros((ck.PC_SIZE, model.bearing.Z)), np.zeros(TL_SIZE))
+            ck.contact_outputs(
+                omega,
+                T_oil,
+                model.cp,
+                model.lubricant.array,
+                balls,
+                out,
+                np.zeros((ck.PC_SIZE, model.bearing.Z)),
+                np.zeros(TL_SIZE),
+            )
             p_max = float(out[ck.CO_PMAX])
-            warnings += [f"bearing {name}: {w}" for w in
-                         pressure_warnings(p_max, f"bearing {name} ('{model.bearing.name}'): the loads")]
+            warnings += [
+                f"bearing {name}: {w}"
+                for w in pressure_warnings(p_max, f"bearing {name} ('{model.bearing.name}'): the loads")
+            ]
             loaded = balls[qk.BQ_Q_I] > 0.0
             if model.qs[qk.QS_ANGULAR] > 0.5 and np.any(balls[qk.BQ_A_I][loaded] < 0.0):
-                warnings.append(f"bearing {name}: balls loaded at a negative contact angle (axial load "
-                                f"{F[2]:.4g} N against its thrust direction): the model's full groove stands in for "
-                                f"the low shoulder of a real angular-contact bearing")
-            contacts = {"Lambda_inner": float(out[ck.CO_LAMBDA_I]), "Lambda_outer": float(out[ck.CO_LAMBDA_O]),
-                        "h_min_inner": float(out[ck.CO_HMIN_I]), "h_min_outer": float(out[ck.CO_HMIN_O]),
-                        "Q_max_inner": float(out[ck.CO_QMAX_I]), "Q_max_outer": float(out[ck.CO_QMAX_O]),
-                        "p_max": p_max, "n_loaded": int(out[ck.CO_N_LOADED])}
-            bearings.append(BearingState(name, self.positions[k], d.copy(), F.copy(), K.copy(), balls.copy(),
-                                         X[k].copy(), contacts))
+                warnings.append(
+                    f"bearing {name}: balls loaded at a negative contact angle (axial load "
+                    f"{F[2]:.4g} N against its thrust direction): the model's full groove stands in for "
+                    f"the low shoulder of a real angular-contact bearing"
+                )
+            contacts = {
+                "Lambda_inner": float(out[ck.CO_LAMBDA_I]),
+                "Lambda_outer": float(out[ck.CO_LAMBDA_O]),
+                "h_min_inner": float(out[ck.CO_HMIN_I]),
+                "h_min_outer": float(out[ck.CO_HMIN_O]),
+                "Q_max_inner": float(out[ck.CO_QMAX_I]),
+                "Q_max_outer": float(out[ck.CO_QMAX_O]),
+                "p_max": p_max,
+                "n_loaded": int(out[ck.CO_N_LOADED]),
+            }
+            bearings.append(
+                BearingState(name, self.positions[k], d.copy(), F.copy(), K.copy(), balls.copy(), X[k].copy(), contacts)
+            )
         return PairResult(D.copy(), F_ext.copy(), tuple(bearings), K_pair, iters, res, self.get_state(), warnings)
 
 
-def solve_pair(model_a, model_b, F_ext=(0.0,) * 5, omega=0.0, T_oil=313.15, arrangement="X", preload="spring",
-               F_preload=800.0, spacing=0.1, dPd_thermal=(0.0, 0.0), dz_thermal=0.0, state=None):
+def solve_pair(
+    model_a,
+    model_b,
+    F_ext=(0.0,) * 5,
+    omega=0.0,
+    T_oil=313.15,
+    arrangement="X",
+    preload="spring",
+    F_preload=800.0,
+    spacing=0.1,
+    dPd_thermal=(0.0, 0.0),
+    dz_thermal=0.0,
+    state=None,
+):
     """One-shot pair solution (builds a PairAssembly, so the fixed-preload offsets come from the
     assembly at rest): PairResult. state: a previous PairResult.state for a warm start."""
     pair = PairAssembly(model_a, model_b, arrangement, preload, F_preload, spacing)

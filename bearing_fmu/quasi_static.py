@@ -4,6 +4,7 @@ One bearing, lubricant and scene; inputs and outputs are SI and declared as Vari
 the FMU class turns into FMI variables. The solver state (inner-ring displacements and ball
 positions) is kept between calls for warm starts and is part of the FMU state.
 """
+
 import math
 
 import numpy as np
@@ -11,11 +12,15 @@ import numpy as np
 from .kernels import contacts as ck
 from .kernels import quasistatic as qk
 from .kernels.geometry import ball_mass, curvature_radii, free_contact_angle
-from .kernels.hertz import (hertz_coefficients_approx, hertz_coefficients_exact, hertz_contact,
-                            hertz_stiffness, reduced_modulus)
+from .kernels.hertz import (
+    hertz_coefficients_approx,
+    hertz_coefficients_exact,
+    hertz_contact,
+    hertz_stiffness,
+    reduced_modulus,
+)
 from .kernels.torque import ALPHA_HYSTERESIS_STEEL, TL_SIZE
-from .model import (DM_N_LIMIT, P_MAX_ERROR, InputError, Variable, check_oil_temperature, check_speed,
-                    pressure_warnings)
+from .model import DM_N_LIMIT, P_MAX_ERROR, InputError, Variable, check_oil_temperature, check_speed, pressure_warnings
 from .params import load_bearing, load_lubricant
 from .scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, RACE_CONTROLS, Scene
 
@@ -23,20 +28,29 @@ DOF_NAMES = ("x", "y", "z", "theta_x", "theta_y")
 DOF_UNITS = ("m", "m", "m", "rad", "rad")
 LOAD_NAMES = ("F_x", "F_y", "F_z", "M_x", "M_y")
 LOAD_UNITS = ("N", "N", "N", "N.m", "N.m")
-DOF_WORDS = ("radial displacement along x", "radial displacement along y", "axial displacement",
-             "tilt about x", "tilt about y")
+DOF_WORDS = (
+    "radial displacement along x",
+    "radial displacement along y",
+    "axial displacement",
+    "tilt about x",
+    "tilt about y",
+)
 LOAD_WORDS = ("radial force along x", "radial force along y", "axial force", "moment about x", "moment about y")
 # which DOFs are load-controlled (1) for each drive (scene option)
 DRIVE_CONTROL = {"load": (1, 1, 1, 1, 1), "displacement": (0, 0, 0, 0, 0), "fixed_axial": (1, 1, 0, 1, 1)}
 RACE_CODES = {"outer": qk.RACE_OUTER, "inner": qk.RACE_INNER, "hybrid": qk.RACE_HYBRID}
 # readings of the hybrid model's gyroscopic-moment share (Python API only, for sensitivity studies;
 # the FMUs use 'spin_moments'): docs/quasistatic.md section 2, docs/reports/rabreau_torque_sensitivity.md
-HYBRID_SPLITS = {"spin_moments": qk.RACE_HYBRID, "outer": qk.RACE_HYBRID_OUTER_SPLIT,
-                 "inner": qk.RACE_HYBRID_INNER_SPLIT, "equal": qk.RACE_HYBRID_EQUAL_SPLIT,
-                 "controlling_race": qk.RACE_HYBRID_CONTROLLING}
+HYBRID_SPLITS = {
+    "spin_moments": qk.RACE_HYBRID,
+    "outer": qk.RACE_HYBRID_OUTER_SPLIT,
+    "inner": qk.RACE_HYBRID_INNER_SPLIT,
+    "equal": qk.RACE_HYBRID_EQUAL_SPLIT,
+    "controlling_race": qk.RACE_HYBRID_CONTROLLING,
+}
 # admissible imposed displacements: a fraction of the groove clearance A = (f_i + f_o - 1) D
-DISPLACEMENT_LIMIT = 0.5   # x A (m); beyond this the Hertz loads pass any material limit
-TILT_LIMIT = 0.01          # rad
+DISPLACEMENT_LIMIT = 0.5  # x A (m); beyond this the Hertz loads pass any material limit
+TILT_LIMIT = 0.01  # rad
 
 
 class SolverError(InputError):
@@ -61,12 +75,21 @@ class QuasiStaticModel:
         dz_thermal) is added to z0. 0 (default) = z is the axial approach itself.
     """
 
-    def __init__(self, bearing="B7214C", lubricant="iso_vg68_mineral", scene=None, Pd=None, race_control=None,
-                 F_preload=0.0, hybrid_split="spin_moments"):
+    def __init__(
+        self,
+        bearing="B7214C",
+        lubricant="iso_vg68_mineral",
+        scene=None,
+        Pd=None,
+        race_control=None,
+        F_preload=0.0,
+        hybrid_split="spin_moments",
+    ):
         self.scene = (scene or Scene(name="quasi_static", fidelity="quasi_static")).validate()
         if self.scene.fidelity != "quasi_static":
-            raise InputError(f"scene '{self.scene.name}' has fidelity {self.scene.fidelity!r}: QuasiStaticModel "
-                             f"needs 'quasi_static'")
+            raise InputError(
+                f"scene '{self.scene.name}' has fidelity {self.scene.fidelity!r}: QuasiStaticModel needs 'quasi_static'"
+            )
         self.bearing = load_bearing(bearing)
         self.lubricant = load_lubricant(lubricant)
         b = self.bearing
@@ -100,11 +123,15 @@ class QuasiStaticModel:
         self.warnings = []
         self.F_preload = float(F_preload)
         if self.F_preload and self.scene.drive != "fixed_axial":
-            raise InputError(f"F_preload = {F_preload} N needs drive = 'fixed_axial' (scene '{self.scene.name}' "
-                             f"has drive {self.scene.drive!r})")
+            raise InputError(
+                f"F_preload = {F_preload} N needs drive = 'fixed_axial' (scene '{self.scene.name}' "
+                f"has drive {self.scene.drive!r})"
+            )
         if not (math.isfinite(self.F_preload) and 0.0 <= self.F_preload < self.load_limit):
-            raise InputError(f"F_preload = {F_preload} N is outside the allowed range [0, {self.load_limit:.4g}) N "
-                             f"(the upper bound is the material limit)")
+            raise InputError(
+                f"F_preload = {F_preload} N is outside the allowed range [0, {self.load_limit:.4g}) N "
+                f"(the upper bound is the material limit)"
+            )
         self.z0 = self.axial_approach(self.F_preload) if self.F_preload else 0.0
 
     # -- set-up --------------------------------------------------------------------------------
@@ -127,8 +154,9 @@ class QuasiStaticModel:
         qs[qk.QS_K_I] = hertz_stiffness(Rx_i, Ry_i, E_red, *ci)
         qs[qk.QS_K_O] = hertz_stiffness(Rx_o, Ry_o, E_red, *co)
         qs[qk.QS_M_BALL] = ball_mass(b.D, b.ball.rho)
-        qs[qk.QS_RACE] = (HYBRID_SPLITS[self.hybrid_split] if self.race_control == "hybrid"
-                          else RACE_CODES[self.race_control])
+        qs[qk.QS_RACE] = (
+            HYBRID_SPLITS[self.hybrid_split] if self.race_control == "hybrid" else RACE_CODES[self.race_control]
+        )
         qs[qk.QS_CENTRIFUGAL] = 1.0 if s.centrifugal else 0.0
         qs[qk.QS_GYROSCOPIC] = 1.0 if s.gyroscopic else 0.0
         # hybrid law: C = Q_i a_i E_i / (Q_o a_o E_o); a ~ Q^(1/3) gives C = c_hyb (Q_i/Q_o)^(4/3)
@@ -163,8 +191,15 @@ class QuasiStaticModel:
         cp = self.cp
         q_lim = math.inf
         for o in (0, 5):
-            p_unit = hertz_contact(1.0, cp[ck.CP_RX_I + o], cp[ck.CP_RY_I + o], cp[ck.CP_E_RED], cp[ck.CP_K_I + o],
-                                   cp[ck.CP_EE_I + o], cp[ck.CP_KK_I + o])[3]
+            p_unit = hertz_contact(
+                1.0,
+                cp[ck.CP_RX_I + o],
+                cp[ck.CP_RY_I + o],
+                cp[ck.CP_E_RED],
+                cp[ck.CP_K_I + o],
+                cp[ck.CP_EE_I + o],
+                cp[ck.CP_KK_I + o],
+            )[3]
             q_lim = min(q_lim, (P_MAX_ERROR / p_unit) ** 3)
         return self.bearing.Z * q_lim
 
@@ -174,11 +209,23 @@ class QuasiStaticModel:
         Z = self.bearing.Z
         d = np.zeros(5)
         axial = np.array([0.0, 0.0, 1.0, 0.0, 0.0])
-        status, _, res = qk.solve_quasistatic(F_axial * axial, axial, d, self.qs, 0.0, 0.0, np.zeros((2, Z)),
-                                              np.zeros(5), np.zeros((5, 5)), np.zeros((qk.BQ_SIZE, Z)))
+        status, _, res = qk.solve_quasistatic(
+            F_axial * axial,
+            axial,
+            d,
+            self.qs,
+            0.0,
+            0.0,
+            np.zeros((2, Z)),
+            np.zeros(5),
+            np.zeros((5, 5)),
+            np.zeros((qk.BQ_SIZE, Z)),
+        )
         if status != qk.QS_OK:
-            raise SolverError(f"bearing '{self.bearing.name}': axial position under F = {F_axial} N at rest not "
-                              f"found (status {status}, residual {res:.3g} N)")
+            raise SolverError(
+                f"bearing '{self.bearing.name}': axial position under F = {F_axial} N at rest not "
+                f"found (status {status}, residual {res:.3g} N)"
+            )
         return float(d[2])
 
     # -- variables -----------------------------------------------------------------------------
@@ -190,17 +237,36 @@ class QuasiStaticModel:
             if self.control[i]:
                 out.append(Variable(LOAD_NAMES[i], LOAD_UNITS[i], f"applied {LOAD_WORDS[i]} on the inner ring"))
             else:
-                extra = (" (added to the assembly offset z0 of the parameter F_preload)"
-                         if i == 2 and self.scene.drive == "fixed_axial" else "")
-                out.append(Variable(DOF_NAMES[i], DOF_UNITS[i], f"imposed {DOF_WORDS[i]} of the inner ring "
-                                    f"relative to the outer ring{extra}"))
+                extra = (
+                    " (added to the assembly offset z0 of the parameter F_preload)"
+                    if i == 2 and self.scene.drive == "fixed_axial"
+                    else ""
+                )
+                out.append(
+                    Variable(
+                        DOF_NAMES[i],
+                        DOF_UNITS[i],
+                        f"imposed {DOF_WORDS[i]} of the inner ring relative to the outer ring{extra}",
+                    )
+                )
         out.append(Variable("T_oil", "K", "oil temperature (viscosity, pressure-viscosity, density)"))
         if self.scene.thermal_inputs:
-            out.append(Variable("dPd_thermal", "m", "change of diametral clearance from thermal and centrifugal "
-                                "growth (added to Pd, negative = tighter)"))
+            out.append(
+                Variable(
+                    "dPd_thermal",
+                    "m",
+                    "change of diametral clearance from thermal and centrifugal "
+                    "growth (added to Pd, negative = tighter)",
+                )
+            )
             if not self.control[2]:
-                out.append(Variable("dz_thermal", "m", "imposed axial shift of the inner ring from thermal growth, "
-                                    "added to z (fixed preload)"))
+                out.append(
+                    Variable(
+                        "dz_thermal",
+                        "m",
+                        "imposed axial shift of the inner ring from thermal growth, added to z (fixed preload)",
+                    )
+                )
         return tuple(out)
 
     @property
@@ -212,26 +278,40 @@ class QuasiStaticModel:
             if self.control[i]:
                 out.append(Variable(DOF_NAMES[i], DOF_UNITS[i], f"{DOF_WORDS[i]} of the inner ring at equilibrium"))
             else:
-                out.append(Variable(LOAD_NAMES[i], LOAD_UNITS[i], f"reaction: {LOAD_WORDS[i]} the balls exert "
-                                    f"(= the load needed to hold the imposed position)"))
+                out.append(
+                    Variable(
+                        LOAD_NAMES[i],
+                        LOAD_UNITS[i],
+                        f"reaction: {LOAD_WORDS[i]} the balls exert (= the load needed to hold the imposed position)",
+                    )
+                )
         if s.stiffness:
             for i in range(5):
                 for j in range(5):
-                    out.append(Variable(_matrix_name(i, j), _stiffness_unit(i, j),
-                                        f"stiffness dF_{i + 1}/dd_{j + 1}, (F) = (F_x, F_y, F_z, M_x, M_y), "
-                                        f"(d) = (x, y, z, theta_x, theta_y), ball equilibrium condensed"))
+                    out.append(
+                        Variable(
+                            _matrix_name(i, j),
+                            _stiffness_unit(i, j),
+                            f"stiffness dF_{i + 1}/dd_{j + 1}, (F) = (F_x, F_y, F_z, M_x, M_y), "
+                            f"(d) = (x, y, z, theta_x, theta_y), ball equilibrium condensed",
+                        )
+                    )
         if s.torque:
-            out += [Variable("torque", "N.m", "friction torque = P_loss/|omega| (0 at rest), Houpert components"),
-                    Variable("P_loss", "W", "total power loss of the contacts"),
-                    Variable("Q_inner_ring", "W", "heat to the inner ring (losses of the inner contacts)"),
-                    Variable("Q_outer_ring", "W", "heat to the outer ring (losses of the outer contacts)")]
+            out += [
+                Variable("torque", "N.m", "friction torque = P_loss/|omega| (0 at rest), Houpert components"),
+                Variable("P_loss", "W", "total power loss of the contacts"),
+                Variable("Q_inner_ring", "W", "heat to the inner ring (losses of the inner contacts)"),
+                Variable("Q_outer_ring", "W", "heat to the outer ring (losses of the outer contacts)"),
+            ]
         out += [
             Variable("Lambda_inner", "1", "film parameter h_min/sigma, minimum over loaded inner contacts (0 if none)"),
             Variable("Lambda_outer", "1", "film parameter h_min/sigma, minimum over loaded outer contacts (0 if none)"),
             Variable("h_min_inner", "m", "minimum film thickness, minimum over loaded inner contacts"),
             Variable("h_min_outer", "m", "minimum film thickness, minimum over loaded outer contacts"),
-            Variable("regime", "1", "lubrication regime of the worst contact: 0 boundary, 1 mixed, 2 full film",
-                     "integer")]
+            Variable(
+                "regime", "1", "lubrication regime of the worst contact: 0 boundary, 1 mixed, 2 full film", "integer"
+            ),
+        ]
         if s.capacitance:
             out.append(Variable("C_bearing", "F", "electrical capacitance of the bearing (balls in parallel)"))
         out += [
@@ -243,7 +323,8 @@ class QuasiStaticModel:
             Variable("omega_cage", "rad/s", "cage speed: orbital speed of the balls, mean weighted by inner load"),
             Variable("omega_ball", "rad/s", "ball angular speed in the fixed frame (most loaded ball, sign of omega)"),
             Variable("n_loaded", "1", "number of balls loaded on both races", "integer"),
-            Variable("iterations", "1", "Newton iterations of the last solve", "integer")]
+            Variable("iterations", "1", "Newton iterations of the last solve", "integer"),
+        ]
         return tuple(out)
 
     # -- evaluation ----------------------------------------------------------------------------
@@ -258,15 +339,19 @@ class QuasiStaticModel:
                     raise InputError(f"{name} = {values[name]} {LOAD_UNITS[i]} is not a finite number")
                 limit = self.load_limit * (1.0 if i < 3 else 0.5 * self.bearing.dm)
                 if abs(values[name]) > limit:
-                    raise InputError(f"{name} = {values[name]} {LOAD_UNITS[i]} is beyond the material limit: even "
-                                     f"shared equally by all balls it gives p_max > {P_MAX_ERROR / 1e9:.1f} GPa "
-                                     f"(allowed |{name}| <= {limit:.4g} {LOAD_UNITS[i]})")
+                    raise InputError(
+                        f"{name} = {values[name]} {LOAD_UNITS[i]} is beyond the material limit: even "
+                        f"shared equally by all balls it gives p_max > {P_MAX_ERROR / 1e9:.1f} GPa "
+                        f"(allowed |{name}| <= {limit:.4g} {LOAD_UNITS[i]})"
+                    )
             else:
                 name = DOF_NAMES[i]
                 limit = TILT_LIMIT if i >= 3 else DISPLACEMENT_LIMIT * self.groove
                 if not (math.isfinite(values[name]) and abs(values[name]) <= limit):
-                    raise InputError(f"{name} = {values[name]} {DOF_UNITS[i]} is outside the allowed range "
-                                     f"[{-limit:.4g}, {limit:.4g}] {DOF_UNITS[i]}")
+                    raise InputError(
+                        f"{name} = {values[name]} {DOF_UNITS[i]} is outside the allowed range "
+                        f"[{-limit:.4g}, {limit:.4g}] {DOF_UNITS[i]}"
+                    )
         limit = 0.02 * self.bearing.D
         for name in ("dPd_thermal", "dz_thermal"):
             v = values.get(name, 0.0)
@@ -291,28 +376,40 @@ class QuasiStaticModel:
             self.d[2] += self.z0 + float(values.get("dz_thermal", 0.0))
         dPd = float(values.get("dPd_thermal", 0.0))
         self._solve(applied, dPd, omega, values)
-        ck.contact_outputs(omega, float(values["T_oil"]), self.cp, self.lubricant.array, self.balls, self.out,
-                           self.per_contact, self._losses)
+        ck.contact_outputs(
+            omega,
+            float(values["T_oil"]),
+            self.cp,
+            self.lubricant.array,
+            self.balls,
+            self.out,
+            self.per_contact,
+            self._losses,
+        )
         return self._collect(omega, values)
 
     def _solve(self, applied, dPd, omega, values):
         d_start = self.d.copy()
         X_start = self.X.copy()
-        status, iters, res = qk.solve_quasistatic(applied, self.control, self.d, self.qs, dPd, omega, self.X,
-                                                  self.F, self.K, self.balls)
+        status, iters, res = qk.solve_quasistatic(
+            applied, self.control, self.d, self.qs, dPd, omega, self.X, self.F, self.K, self.balls
+        )
         if status != qk.QS_OK:  # the warm start can be far off after a big input jump: retry cold
             self.d[:] = np.where(self.control > 0.5, 0.0, d_start)
             self.X[:] = 0.0
-            status, more, res = qk.solve_quasistatic(applied, self.control, self.d, self.qs, dPd, omega, self.X,
-                                                     self.F, self.K, self.balls)
+            status, more, res = qk.solve_quasistatic(
+                applied, self.control, self.d, self.qs, dPd, omega, self.X, self.F, self.K, self.balls
+            )
             iters += more
         self.status = (status, iters, res)
         if status != qk.QS_OK:
             self.d[:] = d_start
             self.X[:] = X_start
-            reason = {qk.QS_NOT_CONVERGED: f"no convergence in {self.scene.max_iterations} iterations",
-                      qk.QS_BALL_NOT_CONVERGED: "a ball equilibrium did not converge",
-                      qk.QS_NOT_FINITE: "the iteration produced a non-finite value"}[status]
+            reason = {
+                qk.QS_NOT_CONVERGED: f"no convergence in {self.scene.max_iterations} iterations",
+                qk.QS_BALL_NOT_CONVERGED: "a ball equilibrium did not converge",
+                qk.QS_NOT_FINITE: "the iteration produced a non-finite value",
+            }[status]
             shown = ", ".join(f"{v.name} = {values[v.name]:.6g} {v.unit}" for v in self.inputs)
             raise SolverError(f"quasi-static equilibrium not found ({reason}, load residual {res:.3g} N) for {shown}")
 
@@ -335,16 +432,32 @@ class QuasiStaticModel:
                 for k in range(5):
                     result[_matrix_name(i, k)] = float(self.K[i, k])
         if self.scene.torque:
-            result.update(torque=out[ck.CO_TORQUE], P_loss=out[ck.CO_P_LOSS], Q_inner_ring=out[ck.CO_Q_INNER_RING],
-                          Q_outer_ring=out[ck.CO_Q_OUTER_RING])
-        result.update(Lambda_inner=out[ck.CO_LAMBDA_I], Lambda_outer=out[ck.CO_LAMBDA_O],
-                      h_min_inner=out[ck.CO_HMIN_I], h_min_outer=out[ck.CO_HMIN_O], regime=int(out[ck.CO_REGIME]))
+            result.update(
+                torque=out[ck.CO_TORQUE],
+                P_loss=out[ck.CO_P_LOSS],
+                Q_inner_ring=out[ck.CO_Q_INNER_RING],
+                Q_outer_ring=out[ck.CO_Q_OUTER_RING],
+            )
+        result.update(
+            Lambda_inner=out[ck.CO_LAMBDA_I],
+            Lambda_outer=out[ck.CO_LAMBDA_O],
+            h_min_inner=out[ck.CO_HMIN_I],
+            h_min_outer=out[ck.CO_HMIN_O],
+            regime=int(out[ck.CO_REGIME]),
+        )
         if self.scene.capacitance:
             result["C_bearing"] = out[ck.CO_C_BEARING]
-        result.update(Q_max_inner=out[ck.CO_QMAX_I], Q_max_outer=out[ck.CO_QMAX_O], p_max=out[ck.CO_PMAX],
-                      alpha_inner=float(balls[qk.BQ_A_I, j]), alpha_outer=float(balls[qk.BQ_A_O, j]),
-                      omega_cage=cage, omega_ball=math.copysign(spin_fixed, omega) if omega else 0.0,
-                      n_loaded=int(out[ck.CO_N_LOADED]), iterations=int(self.status[1]))
+        result.update(
+            Q_max_inner=out[ck.CO_QMAX_I],
+            Q_max_outer=out[ck.CO_QMAX_O],
+            p_max=out[ck.CO_PMAX],
+            alpha_inner=float(balls[qk.BQ_A_I, j]),
+            alpha_outer=float(balls[qk.BQ_A_O, j]),
+            omega_cage=cage,
+            omega_ball=math.copysign(spin_fixed, omega) if omega else 0.0,
+            n_loaded=int(out[ck.CO_N_LOADED]),
+            iterations=int(self.status[1]),
+        )
         for name, value in result.items():
             if not math.isfinite(value):
                 shown = ", ".join(f"{v.name} = {values[v.name]:.6g}" for v in self.inputs)

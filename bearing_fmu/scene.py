@@ -3,6 +3,7 @@
 A scene is a small TOML table (or keyword arguments). `Scene.validate()` reports every
 incompatible or unknown choice at once. What a scene turns off is neither computed nor exposed.
 """
+
 import tomllib
 from dataclasses import dataclass, fields, replace
 
@@ -12,8 +13,11 @@ from .kernels.ehl import FILM_CHITTENDEN, FILM_HAMROCK_DOWSON, FILM_MASJEDI_KHON
 FIDELITIES = ("analytic", "quasi_static")  # dem arrives with its issue
 DRIVES = ("load", "displacement", "fixed_axial")  # which DOFs are load- or displacement-controlled
 RACE_CONTROLS = ("outer", "inner", "hybrid")
-FILM_FORMULAS = {"hamrock_dowson": FILM_HAMROCK_DOWSON, "masjedi_khonsari": FILM_MASJEDI_KHONSARI,
-                 "chittenden": FILM_CHITTENDEN}
+FILM_FORMULAS = {
+    "hamrock_dowson": FILM_HAMROCK_DOWSON,
+    "masjedi_khonsari": FILM_MASJEDI_KHONSARI,
+    "chittenden": FILM_CHITTENDEN,
+}
 HERTZ_SOLUTIONS = ("exact", "approximate")
 PERMITTIVITY_PRESSURES = {"max": PRESSURE_MAX, "mean": PRESSURE_MEAN}
 
@@ -48,6 +52,7 @@ class Scene:
     tolerance: relative tolerance of the load equilibrium (-).
     max_iterations: iteration cap of the quasi-static Newton solver (never a hang).
     """
+
     name: str = "analytic"
     fidelity: str = "analytic"
     film: str = "hamrock_dowson"
@@ -77,7 +82,9 @@ class Scene:
         if self.hertz not in HERTZ_SOLUTIONS:
             out.append(f"hertz = {self.hertz!r}: allowed {list(HERTZ_SOLUTIONS)}")
         if self.permittivity_pressure not in PERMITTIVITY_PRESSURES:
-            out.append(f"permittivity_pressure = {self.permittivity_pressure!r}: allowed {sorted(PERMITTIVITY_PRESSURES)}")
+            out.append(
+                f"permittivity_pressure = {self.permittivity_pressure!r}: allowed {sorted(PERMITTIVITY_PRESSURES)}"
+            )
         if not 1.0 <= self.roughness_factor <= 2.0:
             out.append(f"roughness_factor = {self.roughness_factor}: allowed [1, 2]")
         if not 0.0 < self.film_floor <= 1e-6:

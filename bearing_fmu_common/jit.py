@@ -9,6 +9,7 @@
 Kernels never read module globals that change at run time (numba freezes globals into the cache);
 options reach them as integer codes.
 """
+
 from numba import njit
 
 JIT_OPTIONS = {"cache": True, "fastmath": False}

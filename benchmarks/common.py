@@ -1,4 +1,5 @@
 """Timing helpers for the benchmarks: medians over repeats, never asserted in tests (SPEC 9)."""
+
 import platform
 import statistics
 import time

@@ -19,16 +19,16 @@ steps much larger than the fastest coupled time constant, tiny capacities and hu
    Euler on the same network matrices at the same steps (numpy), which blows up.
 Run: python -m benchmarks.fixed_preload_stability -> docs/reports/fixed_preload_stability.md and .png
 """
+
 import os
-import sys
 import tempfile
 import time
 from pathlib import Path
 
 import numpy as np
 
-from spindle.cli import exit_after
 from spindle import network as nk
+from spindle.cli import exit_after
 from spindle.master import run
 from spindle.model import SpindleThermalModel, network_path
 from spindle.runfile import load_run
@@ -58,14 +58,24 @@ def fixed_runs():
             c = r.columns
             t = c["time"]
             k10 = int(np.argmin(np.abs(t - (t[-1] - SETTLE))))
-            rows.append(dict(rpm=rpm, H=H, status=r.status, message=r.message, t_end=float(t[-1]),
-                             F_end=float(c["bearing_1.F_z"][-1]), F_start=float(c["bearing_1.F_z"][0]),
-                             T_end=float(c["spindle.T_inner_ring_1"][-1]),
-                             dF_10=float(c["bearing_1.F_z"][-1] - c["bearing_1.F_z"][k10]),
-                             dT_10=float(c["spindle.T_inner_ring_1"][-1] - c["spindle.T_inner_ring_1"][k10]),
-                             F_max=float(np.max(c["bearing_1.F_z"])),
-                             F_1min=float(c["bearing_1.F_z"][int(np.argmin(np.abs(t - 60.0)))]),
-                             wall=r.wall_time, cols=c))
+            rows.append(
+                dict(
+                    rpm=rpm,
+                    H=H,
+                    status=r.status,
+                    message=r.message,
+                    t_end=float(t[-1]),
+                    F_end=float(c["bearing_1.F_z"][-1]),
+                    F_start=float(c["bearing_1.F_z"][0]),
+                    T_end=float(c["spindle.T_inner_ring_1"][-1]),
+                    dF_10=float(c["bearing_1.F_z"][-1] - c["bearing_1.F_z"][k10]),
+                    dT_10=float(c["spindle.T_inner_ring_1"][-1] - c["spindle.T_inner_ring_1"][k10]),
+                    F_max=float(np.max(c["bearing_1.F_z"])),
+                    F_1min=float(c["bearing_1.F_z"][int(np.argmin(np.abs(t - 60.0)))]),
+                    wall=r.wall_time,
+                    cols=c,
+                )
+            )
     for row in rows:  # early difference to the finest step at the same speed, on the coarse run's times
         fine = next(r for r in rows if r["rpm"] == row["rpm"] and r["H"] == STEPS[0])["cols"]
         t = row["cols"]["time"]
@@ -136,24 +146,37 @@ def main():
         path = stiff_network(tmp)
         stiff_model = SpindleThermalModel(str(path))
         default_model = SpindleThermalModel("b7214c_x_pair")
-        changed = {name: (a, b) for name, a, b in zip(default_model.net.nodes, default_model.net.C, stiff_model.net.C)
-                   if a != b}
+        changed = {
+            name: (a, b)
+            for name, a, b in zip(default_model.net.nodes, default_model.net.C, stiff_model.net.C)
+            if a != b
+        }
         tau_stiff = stiff_model.time_constants(OMEGA_10K)
         tau_default = default_model.time_constants(OMEGA_10K)
         stiff = stiff_runs(path)
         # the default network through the same runs, for comparison of the steady state
         default = run(load_run(SPRING, {"run.step": 1.0, "run.stop": STIFF_STOP}))
         default_10 = run(load_run(SPRING, {"run.step": 10.0, "run.stop": STIFF_STOP}))
-        default_changes = {H: {k: sign_changes(r.columns["time"], r.columns[k], after=a)
-                               for k in r.columns if k.startswith("spindle.T_")}
-                           for H, r in ((1.0, default), (10.0, default_10)) for a in (0.0,)}
+        default_changes = {
+            H: {
+                k: sign_changes(r.columns["time"], r.columns[k], after=a)
+                for k in r.columns
+                if k.startswith("spindle.T_")
+            }
+            for H, r in ((1.0, default), (10.0, default_10))
+            for a in (0.0,)
+        }
         ss_rows, fe_rows = [], []
         for H, r in stiff:
             c = r.columns
             if r.status != "ok":
                 raise RuntimeError(f"stiff network, H = {H}: {r.status} {r.message}")
-            heat = {"Q_inner_ring_1": c["bearing_1.Q_inner_ring"][-1], "Q_outer_ring_1": c["bearing_1.Q_outer_ring"][-1],
-                    "Q_inner_ring_2": c["bearing_2.Q_inner_ring"][-1], "Q_outer_ring_2": c["bearing_2.Q_outer_ring"][-1]}
+            heat = {
+                "Q_inner_ring_1": c["bearing_1.Q_inner_ring"][-1],
+                "Q_outer_ring_1": c["bearing_1.Q_outer_ring"][-1],
+                "Q_inner_ring_2": c["bearing_2.Q_inner_ring"][-1],
+                "Q_outer_ring_2": c["bearing_2.Q_outer_ring"][-1],
+            }
             fixed_inputs = dict(omega=OMEGA_10K, T_ambient=T_AMBIENT, T_coolant=T_AMBIENT, P_motor=0.0)
             ss = SpindleThermalModel(str(path)).steady_state(**fixed_inputs, **heat)
             temps = [k for k in c if k.startswith("spindle.T_")]
@@ -184,35 +207,56 @@ def main():
                 w, V = np.linalg.eigh(L / np.outer(sq, sq))
                 y0 = V.T @ (sq * (np.full(len(C), T_AMBIENT) - T_ss))
                 T_h = T_ss + (V @ (np.exp(-w * H) * y0)) / sq
-                fe_rows.append(dict(H=H, label=label, rho=rho, dev=dev, n=n,
-                                    exact_err=float(np.max(np.abs(exact[0] - T_h))),
-                                    rise=float(np.max(exact[-1] - T_AMBIENT)),
-                                    stable_limit=2.0 / float(np.max(lam))))
+                fe_rows.append(
+                    dict(
+                        H=H,
+                        label=label,
+                        rho=rho,
+                        dev=dev,
+                        n=n,
+                        exact_err=float(np.max(np.abs(exact[0] - T_h))),
+                        rise=float(np.max(exact[-1] - T_AMBIENT)),
+                        stable_limit=2.0 / float(np.max(lam)),
+                    )
+                )
 
     # ---------------------------------------------------------------------------------------- report
-    lines = ["# Fixed-preload runaway and stiff network against the communication step (SPEC 8)", "",
-             f"Generated by `python -m benchmarks.fixed_preload_stability` on {machine()} (2 cores); load average "
-             f"{load_before:.2f} at the start. Whole benchmark: {time.perf_counter() - t_start:.0f} s. Every run "
-             "through `spindle.master.run(load_run(path, overrides))`, Gauss-Seidel (the run files' default).", "",
-             "## 1. Fixed preload (runs/closed_loop_fixed.toml)", "",
-             "800 N at assembly (ground spacers, at rest, 20 C); the inner rings grow radially more than the outer "
-             "rings and the shaft axially more than the housing, which tightens the pair: more preload, more "
-             "heat. 10 000 rpm = the file as it is; 6000 rpm = overrides `bearing_1.omega`, `bearing_2.omega`, "
-             "`spindle.omega` = 628.3185307179587 rad/s. Stop at 3600 s or at the run file's limit "
-             "(T_inner_ring_1 or _2 > 423.15 K = 150 C). Reference: none (the outcome is compared across H; "
-             "the smaller H is the more accurate).", "",
-             "| speed (rpm) | H (s) | status | time of the stop (s) | F_z bearing_1 at t = 0 (N) | final F_z "
-             "bearing_1 (N) | first minute: F_z minus the H = 0.1 s run, most negative / most positive (N, at t) | F_z at 60 s (N) | final T_inner_ring_1 (K) | F_z change over the run's last 10 min (N) | T_ir1 "
-             "change over the run's last 10 min (K) | wall time (s) |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    lines = [
+        "# Fixed-preload runaway and stiff network against the communication step (SPEC 8)",
+        "",
+        f"Generated by `python -m benchmarks.fixed_preload_stability` on {machine()} (2 cores); load average "
+        f"{load_before:.2f} at the start. Whole benchmark: {time.perf_counter() - t_start:.0f} s. Every run "
+        "through `spindle.master.run(load_run(path, overrides))`, Gauss-Seidel (the run files' default).",
+        "",
+        "## 1. Fixed preload (runs/closed_loop_fixed.toml)",
+        "",
+        "800 N at assembly (ground spacers, at rest, 20 C); the inner rings grow radially more than the outer "
+        "rings and the shaft axially more than the housing, which tightens the pair: more preload, more "
+        "heat. 10 000 rpm = the file as it is; 6000 rpm = overrides `bearing_1.omega`, `bearing_2.omega`, "
+        "`spindle.omega` = 628.3185307179587 rad/s. Stop at 3600 s or at the run file's limit "
+        "(T_inner_ring_1 or _2 > 423.15 K = 150 C). Reference: none (the outcome is compared across H; "
+        "the smaller H is the more accurate).",
+        "",
+        "| speed (rpm) | H (s) | status | time of the stop (s) | F_z bearing_1 at t = 0 (N) | final F_z "
+        "bearing_1 (N) | first minute: F_z minus the H = 0.1 s run, most negative / most positive (N, at t) | F_z at 60 s (N) | final T_inner_ring_1 (K) | F_z change over the run's last 10 min (N) | T_ir1 "
+        "change over the run's last 10 min (K) | wall time (s) |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|",
+    ]
     for row in fixed:
         stop = f"{row['t_end']:g}" if row["status"] == "limit" else "- (ran to 3600)"
-        lines.append(f"| {row['rpm']} | {row['H']:g} | {row['status']} | {stop} | {row['F_start']:.1f} | "
-                     f"{row['F_end']:.1f} | {row['dF_lo']:+.0f} ({row['t_lo']:g} s) / {row['dF_hi']:+.0f} ({row['t_hi']:g} s) | "
-                     f"{row['F_1min']:.0f} | {row['T_end']:.2f} | {row['dF_10']:+.1f} | {row['dT_10']:+.3f} | "
-                     f"{row['wall']:.2f} |")
+        lines.append(
+            f"| {row['rpm']} | {row['H']:g} | {row['status']} | {stop} | {row['F_start']:.1f} | "
+            f"{row['F_end']:.1f} | {row['dF_lo']:+.0f} ({row['t_lo']:g} s) / {row['dF_hi']:+.0f} ({row['t_hi']:g} s) | "
+            f"{row['F_1min']:.0f} | {row['T_end']:.2f} | {row['dF_10']:+.1f} | {row['dT_10']:+.3f} | "
+            f"{row['wall']:.2f} |"
+        )
     messages = sorted({(r["rpm"], r["message"].split(": ", 2)[-1] if r["message"] else "(none)") for r in fixed})
-    lines += ["", "Messages (the part after the limit's value; the full message starts with 't = ... s: "
-              "spindle.T_inner_ring_1 = ... left [-inf, 423.15]'):", ""]
+    lines += [
+        "",
+        "Messages (the part after the limit's value; the full message starts with 't = ... s: "
+        "spindle.T_inner_ring_1 = ... left [-inf, 423.15]'):",
+        "",
+    ]
     for rpm, msg in messages:
         lines.append(f"- {rpm} rpm: {msg}")
     full = [r for r in fixed if r["status"] == "limit"]
@@ -225,106 +269,149 @@ def main():
     dF = max(r["F_end"] for r in run_6k) - min(r["F_end"] for r in run_6k)
     dTi = max(r["T_end"] for r in run_6k) - min(r["T_end"] for r in run_6k)
     ref6 = run_6k[0]
-    lines += ["", "Spread over H = " + ", ".join(f"{h:g}" for h in STEPS) + " s:", "",
-              "| case | quantity | max - min over H | relative to the H = 0.1 s value |", "|---|---|---|---|",
-              f"| 10 000 rpm (runaway) | time of the stop (s) | {max(stops) - min(stops):g} | "
-              f"{100 * (max(stops) - min(stops)) / run_10k[0]['t_end']:.2f} % |",
-              f"| 6000 rpm (stable) | final F_z bearing_1 (N) | {dF:.1f} | {100 * dF / ref6['F_end']:.3f} % |",
-              f"| 6000 rpm (stable) | final T_inner_ring_1 (K) | {dTi:.2e} | "
-              f"{100 * dTi / (ref6['T_end'] - T_AMBIENT):.1e} % of the rise |", "",
-              ("**The outcome does not depend on H**: " if same_outcome else "**The outcome depends on H**: ")
-              + "runaway at 10 000 rpm for every H (stop at "
-              + ", ".join(f"{r['t_end']:g} s" for r in run_10k) + " for H = " + ", ".join(f"{h:g}" for h in STEPS)
-              + f" s; the stop time is a multiple of H, so it is resolved to H), stable at 6000 rpm for every H "
-              f"(preload {ref6['F_start']:.0f} N at t = 0 -> {ref6['F_end']:.0f} N at 3600 s). At 6000 rpm the "
-              f"preload is still creeping at the end (+{ref6['dF_10']:.0f} N, {100 * ref6['dF_10'] / ref6['F_end']:.1f} "
-              "% in the last 10 min, following the slow housing/shaft modes): it settles but has not fully settled "
-              "after one hour. The step does show in the first minute, where the inner ring heats by tens of K in "
-              "seconds and its growth tightens the pair: at t = H the recorded preload is still the one of the "
-              "start temperatures (the bearings step first and their output lags one step: "
-              f"{min(r['dF_lo'] for r in fixed):.0f} N at 10 000 rpm, H = 5 s), and H = 5 s, holding the cold "
-              "start-up heat over the whole first step, overshoots next "
-              f"(+{max(r['dF_hi'] for r in fixed):.0f} N at {max(fixed, key=lambda r: r['dF_hi'])['t_hi']:g} s); "
-              "but by 60 s the runs agree within "
-              f"{max(abs(r['F_1min'] - next(q for q in fixed if q['rpm'] == r['rpm'] and q['H'] == STEPS[0])['F_1min']) for r in fixed):.0f} N "
-              "and the overshoot does not change the outcome. At t = 0 the preload is above 800 N because the centrifugal and the clearance "
-              "effects at speed already load the pair.", ""]
+    lines += [
+        "",
+        "Spread over H = " + ", ".join(f"{h:g}" for h in STEPS) + " s:",
+        "",
+        "| case | quantity | max - min over H | relative to the H = 0.1 s value |",
+        "|---|---|---|---|",
+        f"| 10 000 rpm (runaway) | time of the stop (s) | {max(stops) - min(stops):g} | "
+        f"{100 * (max(stops) - min(stops)) / run_10k[0]['t_end']:.2f} % |",
+        f"| 6000 rpm (stable) | final F_z bearing_1 (N) | {dF:.1f} | {100 * dF / ref6['F_end']:.3f} % |",
+        f"| 6000 rpm (stable) | final T_inner_ring_1 (K) | {dTi:.2e} | "
+        f"{100 * dTi / (ref6['T_end'] - T_AMBIENT):.1e} % of the rise |",
+        "",
+        ("**The outcome does not depend on H**: " if same_outcome else "**The outcome depends on H**: ")
+        + "runaway at 10 000 rpm for every H (stop at "
+        + ", ".join(f"{r['t_end']:g} s" for r in run_10k)
+        + " for H = "
+        + ", ".join(f"{h:g}" for h in STEPS)
+        + f" s; the stop time is a multiple of H, so it is resolved to H), stable at 6000 rpm for every H "
+        f"(preload {ref6['F_start']:.0f} N at t = 0 -> {ref6['F_end']:.0f} N at 3600 s). At 6000 rpm the "
+        f"preload is still creeping at the end (+{ref6['dF_10']:.0f} N, {100 * ref6['dF_10'] / ref6['F_end']:.1f} "
+        "% in the last 10 min, following the slow housing/shaft modes): it settles but has not fully settled "
+        "after one hour. The step does show in the first minute, where the inner ring heats by tens of K in "
+        "seconds and its growth tightens the pair: at t = H the recorded preload is still the one of the "
+        "start temperatures (the bearings step first and their output lags one step: "
+        f"{min(r['dF_lo'] for r in fixed):.0f} N at 10 000 rpm, H = 5 s), and H = 5 s, holding the cold "
+        "start-up heat over the whole first step, overshoots next "
+        f"(+{max(r['dF_hi'] for r in fixed):.0f} N at {max(fixed, key=lambda r: r['dF_hi'])['t_hi']:g} s); "
+        "but by 60 s the runs agree within "
+        f"{max(abs(r['F_1min'] - next(q for q in fixed if q['rpm'] == r['rpm'] and q['H'] == STEPS[0])['F_1min']) for r in fixed):.0f} N "
+        "and the overshoot does not change the outcome. At t = 0 the preload is above 800 N because the centrifugal and the clearance "
+        "effects at speed already load the pair.",
+        "",
+    ]
 
     # stiff network
-    (n_c, (c_old, c_new)), = changed.items()
-    lines += ["## 2. Stiff network, spring preload (runs/closed_loop_spring.toml)", "",
-              f"Modified copy of `spindle/params/b7214c_x_pair.toml` (written to a temporary directory): "
-              f"{n_c} capacity x {CAP_FACTOR:g} ({c_old:g} -> {c_new:g} J/K: a thin sensor ring) and the "
-              f"{n_c}--housing contact conductance x {G_FACTOR:g} (h_c 2000 -> 2e7 W/m^2/K, G = 18.85 -> "
-              "1.885e5 W/K). The FMU's variables are fixed at build time, so the copy keeps the default nodes, "
-              "inputs and outputs: values are scaled, no node is added (a new node would be refused at "
-              "initialisation by SpindleThermal.fmu). Passed by the override `spindle.spindle = <path>`; "
-              f"`run.stop = {STIFF_STOP:g}`, H = 1 and 10 s.", "",
-              f"Time constants of the network at 10 000 rpm (s): default {', '.join(f'{x:.3g}' for x in tau_default)}; "
-              f"modified {', '.join(f'{x:.3g}' for x in tau_stiff)}. Fastest: {tau_stiff[-1]:.2e} s, i.e. "
-              f"H = 1 s is {1.0 / tau_stiff[-1]:.1e} fastest time constants.", "",
-              "| H (s) | status | wall time (s) | sign changes of dT/dt after the first minute (all recorded T) | "
-              "from t = 0 (per temperature) | max abs(T(7200 s) - steady state) (K) | T_outer_ring_1 - T_housing at "
-              "the end (K) |", "|---|---|---|---|---|---|---|"]
+    ((n_c, (c_old, c_new)),) = changed.items()
+    lines += [
+        "## 2. Stiff network, spring preload (runs/closed_loop_spring.toml)",
+        "",
+        f"Modified copy of `spindle/params/b7214c_x_pair.toml` (written to a temporary directory): "
+        f"{n_c} capacity x {CAP_FACTOR:g} ({c_old:g} -> {c_new:g} J/K: a thin sensor ring) and the "
+        f"{n_c}--housing contact conductance x {G_FACTOR:g} (h_c 2000 -> 2e7 W/m^2/K, G = 18.85 -> "
+        "1.885e5 W/K). The FMU's variables are fixed at build time, so the copy keeps the default nodes, "
+        "inputs and outputs: values are scaled, no node is added (a new node would be refused at "
+        "initialisation by SpindleThermal.fmu). Passed by the override `spindle.spindle = <path>`; "
+        f"`run.stop = {STIFF_STOP:g}`, H = 1 and 10 s.",
+        "",
+        f"Time constants of the network at 10 000 rpm (s): default {', '.join(f'{x:.3g}' for x in tau_default)}; "
+        f"modified {', '.join(f'{x:.3g}' for x in tau_stiff)}. Fastest: {tau_stiff[-1]:.2e} s, i.e. "
+        f"H = 1 s is {1.0 / tau_stiff[-1]:.1e} fastest time constants.",
+        "",
+        "| H (s) | status | wall time (s) | sign changes of dT/dt after the first minute (all recorded T) | "
+        "from t = 0 (per temperature) | max abs(T(7200 s) - steady state) (K) | T_outer_ring_1 - T_housing at "
+        "the end (K) |",
+        "|---|---|---|---|---|---|---|",
+    ]
     for row in ss_rows:
         c = row["r"].columns
-        lines.append(f"| {row['H']:g} | {row['r'].status} | {row['r'].wall_time:.2f} | "
-                     f"{sum(row['changes'].values())} | "
-                     + ", ".join(f"{k.split('.', 1)[1]}: {v}" for k, v in row["changes_all"].items() if v) + (
-                         "" if any(row["changes_all"].values()) else "0")
-                     + f" | {max(abs(v) for v in row['diff'].values()):.2e} | "
-                     f"{c['spindle.T_outer_ring_1'][-1] - c['spindle.T_housing'][-1]:.4f} |")
+        lines.append(
+            f"| {row['H']:g} | {row['r'].status} | {row['r'].wall_time:.2f} | "
+            f"{sum(row['changes'].values())} | "
+            + ", ".join(f"{k.split('.', 1)[1]}: {v}" for k, v in row["changes_all"].items() if v)
+            + ("" if any(row["changes_all"].values()) else "0")
+            + f" | {max(abs(v) for v in row['diff'].values()):.2e} | "
+            f"{c['spindle.T_outer_ring_1'][-1] - c['spindle.T_housing'][-1]:.4f} |"
+        )
     for H, ch in default_changes.items():
-        lines.append(f"| {H:g}, default network (comparison) | - | - | - | "
-                     + (", ".join(f"{k.split('.', 1)[1]}: {v}" for k, v in ch.items() if v) or "0") + " | - | - |")
-    lines += ["", "Sign changes are counted on the step increments of every recorded spindle temperature "
-              "(increments below 1e-9 K ignored). The few in the first minute at H = 10 s come from the coupling, "
-              "not from the network: the bearings' start-up heat (~3 kW each with cold oil) held over the first "
-              "10 s overshoots the oil and ring temperatures, which come back once the heat has dropped "
-              "(docs/reports/cosim_error.md); the default network shows the same at H = 10 s (comparison rows). "
-              "After the first minute every temperature rises monotonically to the steady state."]
+        lines.append(
+            f"| {H:g}, default network (comparison) | - | - | - | "
+            + (", ".join(f"{k.split('.', 1)[1]}: {v}" for k, v in ch.items() if v) or "0")
+            + " | - | - |"
+        )
+    lines += [
+        "",
+        "Sign changes are counted on the step increments of every recorded spindle temperature "
+        "(increments below 1e-9 K ignored). The few in the first minute at H = 10 s come from the coupling, "
+        "not from the network: the bearings' start-up heat (~3 kW each with cold oil) held over the first "
+        "10 s overshoots the oil and ring temperatures, which come back once the heat has dropped "
+        "(docs/reports/cosim_error.md); the default network shows the same at H = 10 s (comparison rows). "
+        "After the first minute every temperature rises monotonically to the steady state.",
+    ]
     r1 = ss_rows[0]["r"].columns
-    lines += ["", "Steady state: `SpindleThermalModel(path).steady_state(omega, T_ambient, T_coolant, P_motor = 0, "
-              "Q_* = the bearings' heat at 7200 s)`, a direct solve of L T = B T_b + P. Per temperature at "
-              f"H = {ss_rows[0]['H']:g} s (run minus steady state, K): "
-              + ", ".join(f"{k.split('.', 1)[1]} {v:+.1e}" for k, v in ss_rows[0]["diff"].items()) + ".", "",
-              f"Effect of the stiff link on the physics (t = {STIFF_STOP:g} s, H = 1 s, modified minus default "
-              "network): " + ", ".join(
-                  f"{k.split('.', 1)[1]} {r1[k][-1] - default.columns[k][-1]:+.2f} K"
-                  for k in ("spindle.T_outer_ring_1", "spindle.T_outer_ring_2", "spindle.T_inner_ring_1",
-                            "spindle.T_housing")) + ": the thin ring sits at the housing temperature; its bearing "
-              "sheds its heat to the housing better.", ""]
-    lines += ["### Explicit forward Euler on the same network (what the step would do without the exact "
-              "integrator)", "",
-              "numpy, the network's C and L from `spindle.network.link_conductances/assemble` at 10 000 rpm, the "
-              "run's final heat inputs held from the ambient start (the network alone, no bearing coupling), "
-              "600 s: T_k+1 = T_k + H C^-1 (B T_b + P - L T_k). Growth factor per step = max |1 - H lambda| over "
-              "the eigenvalues lambda = 1/tau (> 1: the step blows up). Compared with the FMU's exact exponential "
-              "update (`SpindleThermalModel.step`, same inputs and steps) step by step; that update is itself "
-              "checked against the analytic solution T_ss + exp(-C^-1 L t)(T0 - T_ss) after its first step.", "",
-              "| network | H (s) | stability limit 2 tau_min (s) | growth factor per step | forward Euler minus "
-              "exact update, max abs after 1 / 2 / 5 steps (K) | at 600 s or at the blow-up | exact update: "
-              "error of its first step (K) / largest rise at 600 s (K) |", "|---|---|---|---|---|---|---|"]
+    lines += [
+        "",
+        "Steady state: `SpindleThermalModel(path).steady_state(omega, T_ambient, T_coolant, P_motor = 0, "
+        "Q_* = the bearings' heat at 7200 s)`, a direct solve of L T = B T_b + P. Per temperature at "
+        f"H = {ss_rows[0]['H']:g} s (run minus steady state, K): "
+        + ", ".join(f"{k.split('.', 1)[1]} {v:+.1e}" for k, v in ss_rows[0]["diff"].items())
+        + ".",
+        "",
+        f"Effect of the stiff link on the physics (t = {STIFF_STOP:g} s, H = 1 s, modified minus default "
+        "network): "
+        + ", ".join(
+            f"{k.split('.', 1)[1]} {r1[k][-1] - default.columns[k][-1]:+.2f} K"
+            for k in ("spindle.T_outer_ring_1", "spindle.T_outer_ring_2", "spindle.T_inner_ring_1", "spindle.T_housing")
+        )
+        + ": the thin ring sits at the housing temperature; its bearing "
+        "sheds its heat to the housing better.",
+        "",
+    ]
+    lines += [
+        "### Explicit forward Euler on the same network (what the step would do without the exact integrator)",
+        "",
+        "numpy, the network's C and L from `spindle.network.link_conductances/assemble` at 10 000 rpm, the "
+        "run's final heat inputs held from the ambient start (the network alone, no bearing coupling), "
+        "600 s: T_k+1 = T_k + H C^-1 (B T_b + P - L T_k). Growth factor per step = max |1 - H lambda| over "
+        "the eigenvalues lambda = 1/tau (> 1: the step blows up). Compared with the FMU's exact exponential "
+        "update (`SpindleThermalModel.step`, same inputs and steps) step by step; that update is itself "
+        "checked against the analytic solution T_ss + exp(-C^-1 L t)(T0 - T_ss) after its first step.",
+        "",
+        "| network | H (s) | stability limit 2 tau_min (s) | growth factor per step | forward Euler minus "
+        "exact update, max abs after 1 / 2 / 5 steps (K) | at 600 s or at the blow-up | exact update: "
+        "error of its first step (K) / largest rise at 600 s (K) |",
+        "|---|---|---|---|---|---|---|",
+    ]
     for row in fe_rows:
         dev = row["dev"]
         early = " / ".join(f"{dev[k]:.3g}" if k < len(dev) else "-" for k in (0, 1, 4))
-        end = (f"{dev[-1]:.3g} after {len(dev)} steps" + (" (stopped: > 1e12 K)" if len(dev) < row["n"] else ""))
-        lines.append(f"| {row['label']} | {row['H']:g} | {row['stable_limit']:.3g} | {row['rho']:.3g} | {early} | "
-                     f"{end} | {row['exact_err']:.1e} / {row['rise']:.1f} |")
-    lines += ["", "The default network is itself moderately stiff: explicit Euler is stable at H = 1 s (limit "
-              f"{2 * tau_default[-1]:.2f} s) and blows up at 10 s; with the thin ring it blows up at any step above "
-              f"{2 * tau_stiff[-1]:.1e} s. The exact exponential update (like the backward Euler option, unconditionally stable) has no "
-              "step limit: the co-simulation at H = 1 and 10 s integrates the stiff network without oscillation "
-              "and ends on the direct steady state.", "",
-              "![fixed preload and stiff network](fixed_preload_stability.png)"]
+        end = f"{dev[-1]:.3g} after {len(dev)} steps" + (" (stopped: > 1e12 K)" if len(dev) < row["n"] else "")
+        lines.append(
+            f"| {row['label']} | {row['H']:g} | {row['stable_limit']:.3g} | {row['rho']:.3g} | {early} | "
+            f"{end} | {row['exact_err']:.1e} / {row['rise']:.1f} |"
+        )
+    lines += [
+        "",
+        "The default network is itself moderately stiff: explicit Euler is stable at H = 1 s (limit "
+        f"{2 * tau_default[-1]:.2f} s) and blows up at 10 s; with the thin ring it blows up at any step above "
+        f"{2 * tau_stiff[-1]:.1e} s. The exact exponential update (like the backward Euler option, unconditionally stable) has no "
+        "step limit: the co-simulation at H = 1 and 10 s integrates the stiff network without oscillation "
+        "and ends on the direct steady state.",
+        "",
+        "![fixed preload and stiff network](fixed_preload_stability.png)",
+    ]
     plot(fixed, ss_rows, default)
     write_report("fixed_preload_stability.md", "\n".join(lines) + "\n")
 
 
 def plot(fixed, ss_rows, default):
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+
     fig, axes = plt.subplots(1, 3, figsize=(16, 4.6))
     for row in fixed:
         c = row["cols"]
@@ -339,10 +426,19 @@ def plot(fixed, ss_rows, default):
     ax = axes[2]
     for row, style in zip(ss_rows, ("-", "o")):
         c = row["r"].columns
-        for name, color in (("spindle.T_housing", "C2"), ("spindle.T_inner_ring_1", "C1"),
-                            ("spindle.T_outer_ring_1", "C0")):  # the thin ring on top of the housing
-            ax.plot(c["time"] / 60.0, c[name], style if style == "o" or "outer" not in name else "--",
-                    color=color, ms=2, label=f"{name.split('.', 1)[1]}, H = {row['H']:g} s")
+        for name, color in (
+            ("spindle.T_housing", "C2"),
+            ("spindle.T_inner_ring_1", "C1"),
+            ("spindle.T_outer_ring_1", "C0"),
+        ):  # the thin ring on top of the housing
+            ax.plot(
+                c["time"] / 60.0,
+                c[name],
+                style if style == "o" or "outer" not in name else "--",
+                color=color,
+                ms=2,
+                label=f"{name.split('.', 1)[1]}, H = {row['H']:g} s",
+            )
     c = default.columns
     ax.plot(c["time"] / 60.0, c["spindle.T_outer_ring_1"], "k:", label="T_outer_ring_1, default network")
     ax.set_title("stiff network (spring preload)")

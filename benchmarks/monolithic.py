@@ -14,6 +14,7 @@ checked by halving h (the report gives the difference). The quasi-static bearing
 Same physics and parameters as runs/closed_loop_spring.toml: Bearing.fmu's scene, B7214C,
 iso_vg68_mineral, outer race control, F_z = 800 N each, 10 000 rpm, network b7214c_x_pair.
 """
+
 import math
 import time as wallclock
 
@@ -24,11 +25,19 @@ from bearing_fmu.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
 from spindle.model import SpindleThermalModel
 
-OMEGA = 10000.0 * 2.0 * math.pi / 60.0   # rad/s
-F_PRELOAD = 800.0                         # N, spring preload (each bearing)
-T_AMBIENT = 293.15                        # K (also the coolant)
-TRACKED = ("T_inner_ring_1", "T_outer_ring_1", "T_oil_1", "T_inner_ring_2", "T_outer_ring_2", "T_oil_2",
-           "T_shaft", "T_housing")
+OMEGA = 10000.0 * 2.0 * math.pi / 60.0  # rad/s
+F_PRELOAD = 800.0  # N, spring preload (each bearing)
+T_AMBIENT = 293.15  # K (also the coolant)
+TRACKED = (
+    "T_inner_ring_1",
+    "T_outer_ring_1",
+    "T_oil_1",
+    "T_inner_ring_2",
+    "T_outer_ring_2",
+    "T_oil_2",
+    "T_shaft",
+    "T_housing",
+)
 
 
 class Monolithic:
@@ -36,8 +45,9 @@ class Monolithic:
 
     def __init__(self, spindle="b7214c_x_pair", race_control="outer", omega=OMEGA, F_z=F_PRELOAD):
         scene = Scene.from_toml(SCENES_DIR / "quasi_static.toml")
-        self.bearings = [QuasiStaticModel("B7214C", "iso_vg68_mineral", scene, race_control=race_control)
-                         for _ in range(2)]
+        self.bearings = [
+            QuasiStaticModel("B7214C", "iso_vg68_mineral", scene, race_control=race_control) for _ in range(2)
+        ]
         self.spindle = SpindleThermalModel(spindle)
         self.omega, self.F_z = omega, F_z
         self.fixed = {"omega": omega, "T_ambient": T_AMBIENT, "T_coolant": T_AMBIENT, "P_motor": 0.0}
@@ -47,8 +57,12 @@ class Monolithic:
 
     def _bearings(self, thermal):
         """Bearing outputs for the temperatures and clearance changes of `thermal`."""
-        return [b.evaluate(omega=self.omega, F_z=self.F_z, T_oil=thermal[f"T_oil_{k}"],
-                           dPd_thermal=thermal[f"dPd_thermal_{k}"]) for k, b in enumerate(self.bearings, start=1)]
+        return [
+            b.evaluate(
+                omega=self.omega, F_z=self.F_z, T_oil=thermal[f"T_oil_{k}"], dPd_thermal=thermal[f"dPd_thermal_{k}"]
+            )
+            for k, b in enumerate(self.bearings, start=1)
+        ]
 
     @staticmethod
     def _heat(bearing_out, weight=1.0, into=None):

@@ -11,6 +11,7 @@ Kernel figures are medians of 15 batches of a numba loop of N calls divided by N
 the facade figures are medians of 15 batches of Python calls.
 Run: python -m benchmarks.quasistatic_timing -> docs/reports/quasistatic_timing.md
 """
+
 import math
 import os
 import statistics
@@ -31,13 +32,14 @@ T_OIL = 313.15
 TARGET_REST = 100e-6
 TARGET_SPEED = 500e-6
 TARGET_JACOBIAN = 0.50
-N_SOLVE = 200      # calls per batch inside the numba loop
+N_SOLVE = 200  # calls per batch inside the numba loop
 N_LOADS = 2000
 
 
 def scene(gyroscopic):
-    return Scene(name="qs_timing", fidelity="quasi_static", centrifugal=True, gyroscopic=gyroscopic,
-                 torque=True, stiffness=True)
+    return Scene(
+        name="qs_timing", fidelity="quasi_static", centrifugal=True, gyroscopic=gyroscopic, torque=True, stiffness=True
+    )
 
 
 # -- numba drivers: N calls, the state copied in before each ------------------------------------
@@ -120,8 +122,7 @@ class Case:
         self.Z = m.bearing.Z
         self.omega = rpm * RPM
         self.F = np.array([loads.get(n, 0.0) for n in LOAD_NAMES])
-        self.work = (np.zeros(5), np.zeros((2, self.Z)), np.zeros(5), np.zeros((5, 5)),
-                     np.zeros((qk.BQ_SIZE, self.Z)))
+        self.work = (np.zeros(5), np.zeros((2, self.Z)), np.zeros(5), np.zeros((5, 5)), np.zeros((qk.BQ_SIZE, self.Z)))
         # neighbour solution (load 1 % higher), then the solution itself, both from a cold start
         self.d_near, self.X_near, _ = self.solve(1.01 * self.F, np.zeros(5), np.zeros((2, self.Z)))
         self.d_sol, self.X_sol, _ = self.solve(self.F, np.zeros(5), np.zeros((2, self.Z)))
@@ -150,10 +151,13 @@ class Case:
         _, X, Fo, K, balls = self.work
         qs, om = self.model.qs, self.omega
         args = (self.d_sol, self.X_near, qs, 0.0, om, X, Fo)
-        full, no_k, bare, extra = paired_times([
-            lambda: _repeat_loads(N_LOADS, *args, K, balls),
-            lambda: _repeat_loads_only(N_LOADS, *args, balls, True),
-            lambda: _repeat_loads_only(N_LOADS, *args, balls, False)])
+        full, no_k, bare, extra = paired_times(
+            [
+                lambda: _repeat_loads(N_LOADS, *args, K, balls),
+                lambda: _repeat_loads_only(N_LOADS, *args, balls, True),
+                lambda: _repeat_loads_only(N_LOADS, *args, balls, False),
+            ]
+        )
         full, no_k, bare = full / N_LOADS, no_k / N_LOADS, bare / N_LOADS
         # same loads from both paths (the copy is faithful)
         F1, F2 = np.zeros(5), np.zeros(5)
@@ -186,7 +190,7 @@ def paired_times(fns, repeats=31):
     times = [[] for _ in fns]
     for r in range(repeats):
         order = list(range(len(fns)))
-        order = order[r % len(order):] + order[:r % len(order)]
+        order = order[r % len(order) :] + order[: r % len(order)]
         for k in order:
             t0 = time.perf_counter()
             fns[k]()
@@ -201,14 +205,24 @@ def cases():
         Case("6208 (Z = 9), rest, F_x = 3 kN + F_z = 1 kN", "6208", {"F_x": 3000.0, "F_z": 1000.0}, 0.0),
         Case("B7214C (Z = 17), rest, F_z = 800 N", "B7214C", {"F_z": 800.0}, 0.0),
         Case("B7214C (Z = 17), rest, F_z = 800 N + F_x = 1 kN", "B7214C", {"F_z": 800.0, "F_x": 1000.0}, 0.0),
-        Case("B7214C, 10 000 rpm, ORCG (outer + gyro), F_z = 800 N", "B7214C", {"F_z": 800.0}, 10000.0,
-             "outer", True),
-        Case("B7214C, 10 000 rpm, ORCG, F_z = 800 N + F_x = 1 kN", "B7214C", {"F_z": 800.0, "F_x": 1000.0},
-             10000.0, "outer", True),
-        Case("B7214C, 10 000 rpm, hybrid + gyro, F_z = 800 N", "B7214C", {"F_z": 800.0}, 10000.0,
-             "hybrid", True),
-        Case("B7214C, 10 000 rpm, hybrid + gyro, F_z = 800 N + F_x = 1 kN", "B7214C",
-             {"F_z": 800.0, "F_x": 1000.0}, 10000.0, "hybrid", True),
+        Case("B7214C, 10 000 rpm, ORCG (outer + gyro), F_z = 800 N", "B7214C", {"F_z": 800.0}, 10000.0, "outer", True),
+        Case(
+            "B7214C, 10 000 rpm, ORCG, F_z = 800 N + F_x = 1 kN",
+            "B7214C",
+            {"F_z": 800.0, "F_x": 1000.0},
+            10000.0,
+            "outer",
+            True,
+        ),
+        Case("B7214C, 10 000 rpm, hybrid + gyro, F_z = 800 N", "B7214C", {"F_z": 800.0}, 10000.0, "hybrid", True),
+        Case(
+            "B7214C, 10 000 rpm, hybrid + gyro, F_z = 800 N + F_x = 1 kN",
+            "B7214C",
+            {"F_z": 800.0, "F_x": 1000.0},
+            10000.0,
+            "hybrid",
+            True,
+        ),
     ]
 
 
@@ -236,8 +250,9 @@ def facade_times(case):
     t_same = median_time(lambda: m.evaluate(**inputs), number=300)
     iters_same = m.status[1]
     cp, lub = m.cp, m.lubricant.array
-    t_contacts = median_time(ck.contact_outputs, case.omega, T_OIL, cp, lub, m.balls, m.out, m.per_contact,
-                             m._losses, number=2000)
+    t_contacts = median_time(
+        ck.contact_outputs, case.omega, T_OIL, cp, lub, m.balls, m.out, m.per_contact, m._losses, number=2000
+    )
     return t_step - t_reset, iters_step, t_same, iters_same, t_contacts, t_reset
 
 
@@ -257,109 +272,154 @@ def main():
     speed_cases = [c for c in all_cases if c.rpm > 0.0]
     facade = [(c, *facade_times(c)) for c in speed_cases]
 
-    lines = ["# Quasi-static solver timing (medians)", "",
-             f"Generated by `python -m benchmarks.quasistatic_timing` on {machine()} (2 cores). Kernel figures: "
-             f"median over 15 batches of a numba loop of {N_SOLVE} solves (or {N_LOADS} load evaluations) divided "
-             "by the count, after a warm-up call that compiles; Python dispatch (~0.3 us) is not included. "
-             "Facade figures: median over 15 batches of 300 Python calls. Scene: centrifugal on, exact Hertz, "
-             "tolerance 1e-12 (the default), lubricant iso_vg68_mineral, T_oil = 313.15 K.", "",
-             "- **cold**: d = 0 and X = 0 copied in before each call (the facade's fallback after a failed warm "
-             "start).",
-             "- **warm**: d and X copied in before each call from the solution at a load 1 % higher (every "
-             "applied load x 1.01): what one co-simulation step sees.",
-             "- iterations: Newton iterations of the global solve (each costs one `bearing_loads` plus "
-             "backtracking evaluations if a step is cut).", ""]
+    lines = [
+        "# Quasi-static solver timing (medians)",
+        "",
+        f"Generated by `python -m benchmarks.quasistatic_timing` on {machine()} (2 cores). Kernel figures: "
+        f"median over 15 batches of a numba loop of {N_SOLVE} solves (or {N_LOADS} load evaluations) divided "
+        "by the count, after a warm-up call that compiles; Python dispatch (~0.3 us) is not included. "
+        "Facade figures: median over 15 batches of 300 Python calls. Scene: centrifugal on, exact Hertz, "
+        "tolerance 1e-12 (the default), lubricant iso_vg68_mineral, T_oil = 313.15 K.",
+        "",
+        "- **cold**: d = 0 and X = 0 copied in before each call (the facade's fallback after a failed warm start).",
+        "- **warm**: d and X copied in before each call from the solution at a load 1 % higher (every "
+        "applied load x 1.01): what one co-simulation step sees.",
+        "- iterations: Newton iterations of the global solve (each costs one `bearing_loads` plus "
+        "backtracking evaluations if a step is cut).",
+        "",
+    ]
 
     # -- targets
     def worst(pred, col):
         sel = [r for r in rows if pred(r[0])]
         return max(sel, key=lambda r: r[col][0])
 
-    lines += ["## Targets (SPEC 9) against the measured medians", "",
-              "| target | measured median, worst case of the tables below (minimum of the batches) | "
-              "median / target |", "|---|---|---|"]
-    for what, pred, target in (("warm solve at rest <= 100 us", lambda c: c.rpm == 0.0, TARGET_REST),
-                               ("warm solve at 10 000 rpm, centrifugal + gyroscopic <= 500 us",
-                                lambda c: c.rpm > 0.0, TARGET_SPEED)):
+    lines += [
+        "## Targets (SPEC 9) against the measured medians",
+        "",
+        "| target | measured median, worst case of the tables below (minimum of the batches) | median / target |",
+        "|---|---|---|",
+    ]
+    for what, pred, target in (
+        ("warm solve at rest <= 100 us", lambda c: c.rpm == 0.0, TARGET_REST),
+        ("warm solve at 10 000 rpm, centrifugal + gyroscopic <= 500 us", lambda c: c.rpm > 0.0, TARGET_SPEED),
+    ):
         r = worst(pred, 2)
         lines.append(f"| {what} | {us(r[2][0])} us ({us(r[2][1])}), {r[0].label} | {r[2][0] / target:.3f} |")
     j_worst = max(loads, key=lambda x: x[4][0])
-    lines += [f"| Jacobian <= 50 % extra | {100 * j_worst[4][0]:+.1f} % ({100 * j_worst[4][1]:+.1f} %), "
-              f"{j_worst[0].label} | {j_worst[4][0] / TARGET_JACOBIAN:.3f} |", ""]
-    for what, pred, target in (("at rest", lambda c: c.rpm == 0.0, TARGET_REST),
-                               ("at 10 000 rpm", lambda c: c.rpm > 0.0, TARGET_SPEED)):
+    lines += [
+        f"| Jacobian <= 50 % extra | {100 * j_worst[4][0]:+.1f} % ({100 * j_worst[4][1]:+.1f} %), "
+        f"{j_worst[0].label} | {j_worst[4][0] / TARGET_JACOBIAN:.3f} |",
+        "",
+    ]
+    for what, pred, target in (
+        ("at rest", lambda c: c.rpm == 0.0, TARGET_REST),
+        ("at 10 000 rpm", lambda c: c.rpm > 0.0, TARGET_SPEED),
+    ):
         r = worst(pred, 1)
         verdict = "inside" if r[1][0] <= target else "above"
-        lines.append(f"- Cold starts (not the target's case) {what}: slowest {us(r[1][0])} us ({r[0].label}), "
-                     f"{r[1][0] / target:.3f} x the warm target, {verdict} it.")
-    lines += ["- The Jacobian is the Newton matrix of the solve, so exposing it costs nothing extra; the row "
-              "above is the measured cost of assembling it inside one load evaluation (section below), worst "
-              "case over the table (median of interleaved batch ratios; ratio of the fastest batches in "
-              "brackets). Values within a few % of zero, negative ones included (the copy is compiled on its own "
-              "and can come out slightly slower), are below the resolution of this measurement.", ""]
+        lines.append(
+            f"- Cold starts (not the target's case) {what}: slowest {us(r[1][0])} us ({r[0].label}), "
+            f"{r[1][0] / target:.3f} x the warm target, {verdict} it."
+        )
+    lines += [
+        "- The Jacobian is the Newton matrix of the solve, so exposing it costs nothing extra; the row "
+        "above is the measured cost of assembling it inside one load evaluation (section below), worst "
+        "case over the table (median of interleaved batch ratios; ratio of the fastest batches in "
+        "brackets). Values within a few % of zero, negative ones included (the copy is compiled on its own "
+        "and can come out slightly slower), are below the resolution of this measurement.",
+        "",
+    ]
 
     # -- solve table
-    lines += ["## solve_quasistatic", "",
-              "Times per solve: median over 15 batches (minimum of the batches in brackets).", "",
-              "| case | cold (us) | iterations | warm (us) | iterations | warm target (us) | warm / target |",
-              "|---|---|---|---|---|---|---|"]
+    lines += [
+        "## solve_quasistatic",
+        "",
+        "Times per solve: median over 15 batches (minimum of the batches in brackets).",
+        "",
+        "| case | cold (us) | iterations | warm (us) | iterations | warm target (us) | warm / target |",
+        "|---|---|---|---|---|---|---|",
+    ]
     for c, t_cold, t_warm in rows:
         target = TARGET_REST if c.rpm == 0.0 else TARGET_SPEED
-        lines.append(f"| {c.label} | {us(t_cold[0])} ({us(t_cold[1])}) | {c.cold_status[1]} | {us(t_warm[0])} "
-                     f"({us(t_warm[1])}) | {c.warm_status[1]} | {us(target)} | {t_warm[0] / target:.3f} |")
+        lines.append(
+            f"| {c.label} | {us(t_cold[0])} ({us(t_cold[1])}) | {c.cold_status[1]} | {us(t_warm[0])} "
+            f"({us(t_warm[1])}) | {c.warm_status[1]} | {us(target)} | {t_warm[0] / target:.3f} |"
+        )
 
     # -- Jacobian
-    lines += ["", "## Cost of one Newton iteration and of the Jacobian", "",
-              "`bearing_loads` = per ball: ball equilibrium (at speed a 2-unknown Newton on the ball position, "
-              "warm from X), ring loads, per-ball outputs, and the condensed 5x5 stiffness. Evaluated at the "
-              "solution d with X copied in from the 1 % neighbour before each call (a Newton iteration near "
-              "convergence). The comparison loop `_loads_only` in this benchmark is a copy of `bearing_loads` "
-              "with the 5x5 K assembly removed (same `ball_equilibrium` calls, same load sums; loads checked "
-              f"equal to 1e-14). The loops are timed in 31 interleaved batches of {N_LOADS} calls; times are the "
-              "batch medians, 'Jacobian extra' the median of the batch-by-batch ratio minus 1 (in brackets: "
-              "ratio of the fastest batches minus 1).", "",
-              "| case | bearing_loads (us) | without K assembly (us) | Jacobian extra | also without per-ball "
-              "outputs (us) |", "|---|---|---|---|---|"]
+    lines += [
+        "",
+        "## Cost of one Newton iteration and of the Jacobian",
+        "",
+        "`bearing_loads` = per ball: ball equilibrium (at speed a 2-unknown Newton on the ball position, "
+        "warm from X), ring loads, per-ball outputs, and the condensed 5x5 stiffness. Evaluated at the "
+        "solution d with X copied in from the 1 % neighbour before each call (a Newton iteration near "
+        "convergence). The comparison loop `_loads_only` in this benchmark is a copy of `bearing_loads` "
+        "with the 5x5 K assembly removed (same `ball_equilibrium` calls, same load sums; loads checked "
+        f"equal to 1e-14). The loops are timed in 31 interleaved batches of {N_LOADS} calls; times are the "
+        "batch medians, 'Jacobian extra' the median of the batch-by-batch ratio minus 1 (in brackets: "
+        "ratio of the fastest batches minus 1).",
+        "",
+        "| case | bearing_loads (us) | without K assembly (us) | Jacobian extra | also without per-ball outputs (us) |",
+        "|---|---|---|---|---|",
+    ]
     for c, full, no_k, bare, extra in loads:
-        lines.append(f"| {c.label} | {full * 1e6:.2f} | {no_k * 1e6:.2f} | {100 * extra[0]:+.1f} % "
-                     f"({100 * extra[1]:+.1f} %) | {bare * 1e6:.2f} |")
-    lines += ["", "What this does and does not measure, honestly:", "",
-              "- The Newton solver needs K anyway: the global solve is a Newton iteration on the 5 loads with K as "
-              "its matrix, so exposing K as an output costs nothing beyond the solve itself (the K of the last "
-              "iteration is the output).",
-              "- The column 'without K assembly' removes only the 5x5 accumulation per ball. It still contains the "
-              "per-ball partials dr/dA, dg/dX, dg/dA and the 2x2 condensation computed inside "
-              "`ball_equilibrium`/`_ball_eval` (a few dozen flops per ball on top of a ball Newton that needs "
-              "dr/dX and the complex-step kinematic partials for itself); separating those would mean copying "
-              "the ball kernel, so the 'Jacobian extra' column is the assembly cost, and the condensation is "
-              "bounded above by the whole per-ball cost.",
-              "- For comparison, a forward-difference Jacobian of the 5 DOFs would need 5 more load "
-              "evaluations: about +500 % of the 'without K' time."]
+        lines.append(
+            f"| {c.label} | {full * 1e6:.2f} | {no_k * 1e6:.2f} | {100 * extra[0]:+.1f} % "
+            f"({100 * extra[1]:+.1f} %) | {bare * 1e6:.2f} |"
+        )
+    lines += [
+        "",
+        "What this does and does not measure, honestly:",
+        "",
+        "- The Newton solver needs K anyway: the global solve is a Newton iteration on the 5 loads with K as "
+        "its matrix, so exposing K as an output costs nothing beyond the solve itself (the K of the last "
+        "iteration is the output).",
+        "- The column 'without K assembly' removes only the 5x5 accumulation per ball. It still contains the "
+        "per-ball partials dr/dA, dg/dX, dg/dA and the 2x2 condensation computed inside "
+        "`ball_equilibrium`/`_ball_eval` (a few dozen flops per ball on top of a ball Newton that needs "
+        "dr/dX and the complex-step kinematic partials for itself); separating those would mean copying "
+        "the ball kernel, so the 'Jacobian extra' column is the assembly cost, and the condensation is "
+        "bounded above by the whole per-ball cost.",
+        "- For comparison, a forward-difference Jacobian of the 5 DOFs would need 5 more load "
+        "evaluations: about +500 % of the 'without K' time.",
+    ]
     share = [(c, max(0.0, 1.0 - bare / no_k)) for c, full, no_k, bare, extra in loads]  # noise can go < 0
     rest = [x for c, x in share if c.rpm == 0.0]
     speed = [x for c, x in share if c.rpm > 0.0]
-    lines += [f"- Not the Jacobian but worth knowing: the per-ball outputs (`_ball_outputs`: kinematics, spin and "
-              f"rolling speeds of each ball) are {100 * min(rest):.0f}-{100 * max(rest):.0f} % of a load evaluation "
-              f"at rest and {100 * min(speed):.0f}-{100 * max(speed):.0f} % at 10 000 rpm; `bearing_loads` computes "
-              "them at every Newton iteration and backtracking step although only the last one is used.", ""]
+    lines += [
+        f"- Not the Jacobian but worth knowing: the per-ball outputs (`_ball_outputs`: kinematics, spin and "
+        f"rolling speeds of each ball) are {100 * min(rest):.0f}-{100 * max(rest):.0f} % of a load evaluation "
+        f"at rest and {100 * min(speed):.0f}-{100 * max(speed):.0f} % at 10 000 rpm; `bearing_loads` computes "
+        "them at every Newton iteration and backtracking step although only the last one is used.",
+        "",
+    ]
 
     # -- facade
-    lines += ["## QuasiStaticModel.evaluate at 10 000 rpm (warm)", "",
-              "Whole facade: input checks, solve, film/Lambda/regime, capacitance, Houpert torque and heat, "
-              "output dict (25 K entries and all others). 'step' = state (d, X) reset to the 1 % neighbour "
-              "before each call (the reset's own time, measured alone, is subtracted); 'repeat' = the same "
-              "inputs again, state already at the solution. `contact_outputs` = the film, capacitance and "
-              "torque kernel alone.", "",
-              "| case | step (us) | iterations | repeat (us) | iterations | contact_outputs (us) |",
-              "|---|---|---|---|---|---|"]
-    for c, t_step, it_step, t_same, it_same, t_contacts, t_reset in facade:
+    lines += [
+        "## QuasiStaticModel.evaluate at 10 000 rpm (warm)",
+        "",
+        "Whole facade: input checks, solve, film/Lambda/regime, capacitance, Houpert torque and heat, "
+        "output dict (25 K entries and all others). 'step' = state (d, X) reset to the 1 % neighbour "
+        "before each call (the reset's own time, measured alone, is subtracted); 'repeat' = the same "
+        "inputs again, state already at the solution. `contact_outputs` = the film, capacitance and "
+        "torque kernel alone.",
+        "",
+        "| case | step (us) | iterations | repeat (us) | iterations | contact_outputs (us) |",
+        "|---|---|---|---|---|---|",
+    ]
+    for c, t_step, it_step, t_same, it_same, t_contacts, _ in facade:
         lines.append(f"| {c.label} | {us(t_step)} | {it_step} | {us(t_same)} | {it_same} | {t_contacts * 1e6:.1f} |")
     lines += ["", f"Reset of d and X from Python, subtracted above: {facade[0][6] * 1e6:.1f} us."]
     noise = max(t[0] / t[1] for _, t_cold, t_warm in rows for t in (t_cold, t_warm))
-    lines += ["", f"Machine load (1-min load average) at start / end of the run: {load_before:.2f} / "
-              f"{os.getloadavg()[0]:.2f} on 2 cores. Other jobs shared the machine: the largest median / minimum ratio "
-              f"of a solve row above is {noise:.2f}; where the two differ much, the minimum is the uncontended "
-              "figure and the median the one a busy machine gives."]
+    lines += [
+        "",
+        f"Machine load (1-min load average) at start / end of the run: {load_before:.2f} / "
+        f"{os.getloadavg()[0]:.2f} on 2 cores. Other jobs shared the machine: the largest median / minimum ratio "
+        f"of a solve row above is {noise:.2f}; where the two differ much, the minimum is the uncontended "
+        "figure and the median the one a busy machine gives.",
+    ]
     write_report("quasistatic_timing.md", "\n".join(lines) + "\n")
 
 

@@ -1,12 +1,34 @@
 """Run every benchmark and rewrite the reports in docs/reports/ (make bench)."""
-from . import (closed_loop, cosim_error, ehl_film_table, fixed_preload_stability, fmu_startup, hertz_approximation,
-               kernel_timing, quasistatic_timing, rabreau_preload, rabreau_torque_sensitivity, torque_palmgren)
+
+from . import (
+    closed_loop,
+    cosim_error,
+    ehl_film_table,
+    fixed_preload_stability,
+    fmu_startup,
+    hertz_approximation,
+    kernel_timing,
+    quasistatic_timing,
+    rabreau_preload,
+    rabreau_torque_sensitivity,
+    torque_palmgren,
+)
 
 
 def main():
-    for module in (kernel_timing, hertz_approximation, ehl_film_table, fmu_startup, torque_palmgren,
-                   quasistatic_timing, rabreau_preload, rabreau_torque_sensitivity, closed_loop, cosim_error,
-                   fixed_preload_stability):
+    for module in (
+        kernel_timing,
+        hertz_approximation,
+        ehl_film_table,
+        fmu_startup,
+        torque_palmgren,
+        quasistatic_timing,
+        rabreau_preload,
+        rabreau_torque_sensitivity,
+        closed_loop,
+        cosim_error,
+        fixed_preload_stability,
+    ):
         module.main()
 
 

@@ -4,6 +4,7 @@ SpindleThermal.fmu bundles the `spindle` and `bearing_fmu` packages (the thermal
 FMI helpers of bearing_fmu); next to it go the network it was built with and a reference result
 (the Python model's step response, regression data for users).
 """
+
 import csv
 import math
 import shutil
@@ -54,9 +55,14 @@ THERMAL_FMUS = {"SpindleThermal": (DEFAULT_SPINDLE, False), "SpindleThermalFixed
 
 
 def build_thermal_fmu(name, network, axial_float, out_dir=DEFAULT_OUT):
-    path = bearing_build.build_python_fmu(name, "spindle.fmu", "SpindleThermal", out_dir,
-                                          package_dirs=(bearing_build.PACKAGE_DIR, SPINDLE_DIR),
-                                          body=f"default_network = {network!r}\n    axial_float = {axial_float!r}")
+    path = bearing_build.build_python_fmu(
+        name,
+        "spindle.fmu",
+        "SpindleThermal",
+        out_dir,
+        package_dirs=(bearing_build.PACKAGE_DIR, SPINDLE_DIR),
+        body=f"default_network = {network!r}\n    axial_float = {axial_float!r}",
+    )
     shutil.copy2(network_path(network), Path(out_dir) / f"{name}_network.toml")
     write_reference(Path(out_dir) / f"{name}_ref.csv", network, axial_float)
     return path

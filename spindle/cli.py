@@ -9,6 +9,7 @@
 Exit codes: 0 done; 1 error (message on stderr); 3 the run stopped at a limit (e.g. thermal
 runaway; results up to there are written).
 """
+
 import argparse
 import os
 import sys
@@ -44,6 +45,7 @@ def _overrides(pairs):
 
 def cmd_build(args):
     from .build import build_all
+
     for path in build_all(args.out):
         print(f"built {path}")
     return 0
@@ -52,6 +54,7 @@ def cmd_build(args):
 def cmd_run(args):
     from .master import run
     from .runfile import load_run
+
     spec = load_run(args.runfile, _overrides(args.set))
     result = run(spec, progress=args.progress)
     out = Path(args.out)
@@ -62,10 +65,13 @@ def cmd_run(args):
     written = [csv_path]
     if not args.no_plot:
         from .plots import plot_run
+
         written.append(plot_run(result, out / f"{stem}.png", title=f"{stem}: {spec.description}"))
     steps = len(result.columns["time"]) - 1
-    print(f"{stem}: {steps} steps of {spec.step} s ({spec.algorithm}) in {result.wall_time:.2f} s wall "
-          f"(+ {result.setup_time:.2f} s set-up); rejected steps: {result.rejected_steps}")
+    print(
+        f"{stem}: {steps} steps of {spec.step} s ({spec.algorithm}) in {result.wall_time:.2f} s wall "
+        f"(+ {result.setup_time:.2f} s set-up); rejected steps: {result.rejected_steps}"
+    )
     print("wrote " + ", ".join(str(p) for p in written))
     if result.status == "limit":
         print(f"STOPPED: {result.message}", file=sys.stderr)
@@ -75,9 +81,11 @@ def cmd_run(args):
 
 def cmd_sweep(args):
     from .sweep import sweep, write_table
+
     values = [_value(v) for v in args.values.split(",") if v.strip()]
-    rows = sweep(args.runfile, args.param, values, scheduler=args.scheduler, n_workers=args.workers,
-                 extra=_overrides(args.set))
+    rows = sweep(
+        args.runfile, args.param, values, scheduler=args.scheduler, n_workers=args.workers, extra=_overrides(args.set)
+    )
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     path = out / f"{Path(args.runfile).stem}_sweep_{args.param.replace('.', '_')}.csv"
@@ -91,6 +99,7 @@ def cmd_sweep(args):
 
 def cmd_info(args):
     from fmpy import read_model_description
+
     paths = [Path(p) for p in args.fmus] or sorted(FMUS.glob("*.fmu"))
     if not paths:
         print(f"no FMUs in {FMUS}: run `spindle build`")
@@ -147,6 +156,7 @@ def main(argv=None):
     except Exception as exc:  # a clear one-line message, not a traceback, for user errors
         from .master import MasterError
         from .runfile import RunFileError
+
         if isinstance(exc, (MasterError, RunFileError, FileNotFoundError)):
             print(f"spindle {args.command}: {exc}", file=sys.stderr)
             return 1
@@ -168,6 +178,7 @@ def exit_after(entry):
             print(exc.code, file=sys.stderr)
     except BaseException:
         import traceback
+
         traceback.print_exc()
         code = 1
     sys.stdout.flush()

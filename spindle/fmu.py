@@ -6,6 +6,7 @@ The network is read from a TOML file (parameter `spindle`: catalogue name or pat
 describe their own spindle without rebuilding the FMU. Bad input or parameters are logged with
 their allowed range and the call returns Discard/Error; the host never sees an exception.
 """
+
 from pythonfmu import Fmi2Slave
 from pythonfmu.enums import Fmi2Status
 
@@ -21,23 +22,35 @@ class SpindleThermal(Fmi2Slave):
 
     author = "bearing_fmu developers"
     default_network = DEFAULT_SPINDLE  # the network whose inputs/outputs become FMI variables (build time)
-    axial_float = None                 # build time: True adds the axial-float inputs (fixed preload)
-    description = ("Lumped thermal spindle: nodes, capacities, conduction/contact/convection links from a TOML "
-                   "file, exact exponential (or implicit Euler) integration; outputs node temperatures, ring and "
-                   "oil temperatures per bearing, thermal/centrifugal change of diametral clearance and axial "
-                   "interference of a fixed-preload pair. SI units.")
+    axial_float = None  # build time: True adds the axial-float inputs (fixed preload)
+    description = (
+        "Lumped thermal spindle: nodes, capacities, conduction/contact/convection links from a TOML "
+        "file, exact exponential (or implicit Euler) integration; outputs node temperatures, ring and "
+        "oil temperatures per bearing, thermal/centrifugal change of diametral clearance and axial "
+        "interference of a fixed-preload pair. SI units."
+    )
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
         self.spindle = self.default_network
         self.integrator = "exponential"
         self.T_initial = 0.0
-        self.register_variable(parameter("spindle", self.spindle, "spindle network: catalogue name or path of a "
-                                         "spindle TOML file"))
-        self.register_variable(parameter("integrator", self.integrator, "exponential (exact for inputs held over "
-                                         "the step) | implicit_euler"))
-        self.register_variable(parameter("T_initial", self.T_initial, "initial temperature of every node; "
-                                         "0 = the ambient temperature input", unit="K"))
+        self.register_variable(
+            parameter("spindle", self.spindle, "spindle network: catalogue name or path of a spindle TOML file")
+        )
+        self.register_variable(
+            parameter(
+                "integrator", self.integrator, "exponential (exact for inputs held over the step) | implicit_euler"
+            )
+        )
+        self.register_variable(
+            parameter(
+                "T_initial",
+                self.T_initial,
+                "initial temperature of every node; 0 = the ambient temperature input",
+                unit="K",
+            )
+        )
         self._model = SpindleThermalModel(self.spindle, axial_float=self.axial_float)
         self._ready = False
         self._values = {}
@@ -48,10 +61,15 @@ class SpindleThermal(Fmi2Slave):
         self._model.initialize(**self._inputs())
         self._values.update(self._model.outputs_values())
         for var in self._model.outputs:
-            self.register_variable(output_variable(
-                var.name, var.unit, var.description,
-                getter=lambda n=var.name: self._values[n],
-                setter=lambda v, n=var.name: self._values.__setitem__(n, v)))
+            self.register_variable(
+                output_variable(
+                    var.name,
+                    var.unit,
+                    var.description,
+                    getter=lambda n=var.name: self._values[n],
+                    setter=lambda v, n=var.name: self._values.__setitem__(n, v),
+                )
+            )
 
     def _inputs(self):
         return {v.name: getattr(self, v.name) for v in self._model.inputs}
@@ -66,13 +84,17 @@ class SpindleThermal(Fmi2Slave):
 
     def _initialise(self):
         T0 = self.T_initial if self.T_initial > 0.0 else None
-        model = SpindleThermalModel(self.spindle, integrator=self.integrator, T_initial=T0,
-                                    axial_float=self.axial_float)
-        if [v.name for v in model.inputs] != [v.name for v in self._model.inputs] or \
-                [v.name for v in model.outputs] != [v.name for v in self._model.outputs]:
-            raise ValueError(f"spindle = {self.spindle!r} has other inputs/outputs than the network this FMU "
-                             f"was built with ({self.default_network!r}); FMI variables are fixed at build "
-                             f"time: add an FMU for it in spindle.build.THERMAL_FMUS")
+        model = SpindleThermalModel(
+            self.spindle, integrator=self.integrator, T_initial=T0, axial_float=self.axial_float
+        )
+        if [v.name for v in model.inputs] != [v.name for v in self._model.inputs] or [
+            v.name for v in model.outputs
+        ] != [v.name for v in self._model.outputs]:
+            raise ValueError(
+                f"spindle = {self.spindle!r} has other inputs/outputs than the network this FMU "
+                f"was built with ({self.default_network!r}); FMI variables are fixed at build "
+                f"time: add an FMU for it in spindle.build.THERMAL_FMUS"
+            )
         self._model = model
         self._model.initialize(**self._inputs())
         self._values.update(self._model.outputs_values())
@@ -82,13 +104,15 @@ class SpindleThermal(Fmi2Slave):
 
     def do_step(self, current_time, step_size):
         if not self._ready:
-            self.log(fmi_escape(f"{self.instance_name}: not initialised (see the error at initialisation)"),
-                     Fmi2Status.error)
+            self.log(
+                fmi_escape(f"{self.instance_name}: not initialised (see the error at initialisation)"), Fmi2Status.error
+            )
             return False
 
         def step():
             self._model.step(step_size, **self._inputs())
             self._values.update(self._model.outputs_values())
+
         return self._guarded(step)
 
     def _get_fmu_state(self):
@@ -103,5 +127,5 @@ class SpindleThermal(Fmi2Slave):
         if network is not None:
             self._model.set_state(network)
 
-    def to_xml(self, model_options=dict()):
-        return add_unit_definitions(super().to_xml(model_options), self.vars.values())
+    def to_xml(self, model_options=None):
+        return add_unit_definitions(super().to_xml(model_options or {}), self.vars.values())

@@ -49,13 +49,14 @@ extraction directory; a script that ends with os._exit without that leaves one b
 Cost: about 80 us per step for the execution plus 20 us per instance on top of the FMUs' own work
 (2-core machine; the worker-thread handoff and GIL acquisition dominate).
 """
+
 import ctypes
 import math
 from pathlib import Path
 
-import numpy as np
 # SPEC 3: load numba's and scipy's compiled libraries before any pythonfmu FMU does.
 import numba  # noqa: F401
+import numpy as np
 import scipy.special  # noqa: F401
 
 NANOSECONDS = 1_000_000_000
@@ -121,10 +122,10 @@ class _Run:
     """One libcosim execution (fixed step) with a time-series observer; `close()` destroys it."""
 
     def __init__(self, step, samples):
+        from libcosimpy._internal import get_last_error_message, libcosimc
         from libcosimpy.CosimExecution import CosimExecution
         from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
         from libcosimpy.CosimObserver import CosimObserver
-        from libcosimpy._internal import get_last_error_message, libcosimc
 
         self._last_error = get_last_error_message
         self._lib = libcosimc()
@@ -205,21 +206,32 @@ class _Run:
     def step(self, n_steps):
         if not self.execution.step(n_steps):
             t = self.execution.status().current_time / NANOSECONDS
-            raise LibcosimError(f"step from t = {t} s failed: {self._last_error().strip()} "
-                                "(the FMU's own message is in libcosim's log on stderr)")
+            raise LibcosimError(
+                f"step from t = {t} s failed: {self._last_error().strip()} "
+                "(the FMU's own message is in libcosim's log on stderr)"
+            )
 
     def samples(self, index, reference, kind, count):
         """`count` samples from step 0: values, step numbers, times (ns). Called through ctypes
         directly: libcosimpy's wrapper drops step 0 (it takes step number 0 for an empty slot)."""
-        c_type, fname = {"REAL": (ctypes.c_double, "cosim_observer_slave_get_real_samples"),
-                         "INTEGER": (ctypes.c_int, "cosim_observer_slave_get_integer_samples")}[kind]
+        c_type, fname = {
+            "REAL": (ctypes.c_double, "cosim_observer_slave_get_real_samples"),
+            "INTEGER": (ctypes.c_int, "cosim_observer_slave_get_integer_samples"),
+        }[kind]
         values, steps, times = (c_type * count)(), (ctypes.c_int64 * count)(), (ctypes.c_int64 * count)()
         fn = getattr(self._lib, fname)
         fn.restype = ctypes.c_int64
-        fn.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_uint32, ctypes.c_int64, ctypes.c_size_t,
-                       ctypes.POINTER(c_type), ctypes.POINTER(ctypes.c_int64), ctypes.POINTER(ctypes.c_int64)]
-        got = fn(ctypes.cast(self.observer.ptr(), ctypes.c_void_p), index, reference, 0, count,
-                 values, steps, times)
+        fn.argtypes = [
+            ctypes.c_void_p,
+            ctypes.c_int,
+            ctypes.c_uint32,
+            ctypes.c_int64,
+            ctypes.c_size_t,
+            ctypes.POINTER(c_type),
+            ctypes.POINTER(ctypes.c_int64),
+            ctypes.POINTER(ctypes.c_int64),
+        ]
+        got = fn(ctypes.cast(self.observer.ptr(), ctypes.c_void_p), index, reference, 0, count, values, steps, times)
         if got != count:
             raise LibcosimError(f"observer returned {got} of {count} samples: {self._last_error()}")
         return np.array(values), np.array(steps), np.array(times)
@@ -259,8 +271,10 @@ def run_libcosim(system, step, stop, record):
             run.connect(source, target)
         columns = run.observe(record)
         run.step(n_steps)
-        out = np.zeros(count, dtype=[("time", float)] + [(name, float if kind == "REAL" else np.int64)
-                                                         for name, _, _, kind in columns])
+        out = np.zeros(
+            count,
+            dtype=[("time", float)] + [(name, float if kind == "REAL" else np.int64) for name, _, _, kind in columns],
+        )
         times = np.arange(count) * _ticks(step, "step")
         for name, index, reference, kind in columns:
             values, steps, sample_times = run.samples(index, reference, kind, count)

@@ -19,6 +19,7 @@ with a fixed communication step H:
 - `limits` stop the run with the limit's message (e.g. thermal runaway) and keep the results so far.
 Each FMU file is extracted once per master into a private temporary directory, removed at close().
 """
+
 import csv
 import math
 import shutil
@@ -27,17 +28,21 @@ import tempfile
 import time as wallclock
 from dataclasses import dataclass, field
 
-import numpy as np
 # pythonfmu FMUs run inside this interpreter. SPEC 3: loading scipy's compiled libraries (numba
 # imports scipy) for the first time from inside an FMU can make the process abort at exit, so load
 # both here, before any FMU. (Not sufficient on its own: see spindle.cli.run.)
 import numba  # noqa: F401, E402
+import numpy as np
 import scipy.special  # noqa: F401, E402
-from fmpy import extract, read_model_description
+from fmpy import calloc, extract, free, read_model_description
 from fmpy.fmi1 import FMICallException
-from fmpy.fmi2 import (FMU2Slave, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE,
-                       fmi2CallbackFunctions, fmi2CallbackLoggerTYPE)
-from fmpy import calloc, free
+from fmpy.fmi2 import (
+    FMU2Slave,
+    fmi2CallbackAllocateMemoryTYPE,
+    fmi2CallbackFreeMemoryTYPE,
+    fmi2CallbackFunctions,
+    fmi2CallbackLoggerTYPE,
+)
 
 from .runfile import split_name
 
@@ -52,12 +57,13 @@ class MasterError(RuntimeError):
 class RunResult:
     """Recorded trajectories: columns[name] (numpy array, SI unit units[name]), one row per
     communication point from the start (after initialisation) to the end or the stop."""
+
     columns: dict
     units: dict
-    status: str = "ok"          # ok | limit
+    status: str = "ok"  # ok | limit
     message: str = ""
-    wall_time: float = 0.0      # s, stepping only (instantiation excluded)
-    setup_time: float = 0.0     # s, extraction + instantiation + initialisation
+    wall_time: float = 0.0  # s, stepping only (instantiation excluded)
+    setup_time: float = 0.0  # s, extraction + instantiation + initialisation
     rejected_steps: int = 0
     log: list = field(default_factory=list)
 
@@ -86,11 +92,12 @@ class Instance:
         # no fmpy.logging.addLoggerProxy: it keeps one global Python logger, so with several
         # instances every message would land in the last one's log; the FMI message is a printf
         # format, hence the '%%' -> '%' in _logger
-        self.slave = FMU2Slave(guid=md.guid, unzipDirectory=unzip_dir,
-                               modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name)
+        self.slave = FMU2Slave(
+            guid=md.guid, unzipDirectory=unzip_dir, modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name
+        )
         self.slave.instantiate(callbacks=self._callbacks, loggingOn=True)
-        self.cache = {}            # output name -> last value read
-        self._reads = {}           # type -> (names, value references) read into the cache
+        self.cache = {}  # output name -> last value read
+        self._reads = {}  # type -> (names, value references) read into the cache
 
     def _logger(self, env, instance, status, category, message):
         text = message.decode("utf-8", "replace") if isinstance(message, bytes) else str(message)
@@ -99,8 +106,9 @@ class Instance:
 
     def var(self, name):
         if name not in self.variables:
-            raise MasterError(f"{self.name}: no variable {name!r} (the FMU has "
-                              f"{sorted(v for v in self.variables)[:40]} ...)")
+            raise MasterError(
+                f"{self.name}: no variable {name!r} (the FMU has {sorted(v for v in self.variables)[:40]} ...)"
+            )
         return self.variables[name]
 
     def call(self, what, fn, *args):
@@ -117,9 +125,13 @@ class Instance:
         """Set variables by name (Real, Integer, Boolean, String)."""
         for name, value in values.items():
             v = self.var(name)
-            setter = {"Real": (self.slave.setReal, float), "Integer": (self.slave.setInteger, int),
-                      "Boolean": (self.slave.setBoolean, bool), "String": (self.slave.setString, str),
-                      "Enumeration": (self.slave.setInteger, int)}[v.type]
+            setter = {
+                "Real": (self.slave.setReal, float),
+                "Integer": (self.slave.setInteger, int),
+                "Boolean": (self.slave.setBoolean, bool),
+                "String": (self.slave.setString, str),
+                "Enumeration": (self.slave.setInteger, int),
+            }[v.type]
             self.call(f"set {name} = {value!r}", setter[0], [v.valueReference], [setter[1](value)])
 
     def watch(self, names):
@@ -131,8 +143,12 @@ class Instance:
         self._reads = {t: (ns, [self.variables[n].valueReference for n in ns]) for t, ns in by_type.items()}
 
     def refresh(self):
-        getters = {"Real": self.slave.getReal, "Integer": self.slave.getInteger,
-                   "Boolean": self.slave.getBoolean, "Enumeration": self.slave.getInteger}
+        getters = {
+            "Real": self.slave.getReal,
+            "Integer": self.slave.getInteger,
+            "Boolean": self.slave.getBoolean,
+            "Enumeration": self.slave.getInteger,
+        }
         for kind, (names, vrs) in self._reads.items():
             values = self.call("get outputs", getters[kind], vrs)
             self.cache.update(zip(names, values))
@@ -140,8 +156,12 @@ class Instance:
     def start_value(self, name):
         """The variable's current value read from the FMU (its start value before any step)."""
         v = self.var(name)
-        getter = {"Real": self.slave.getReal, "Integer": self.slave.getInteger,
-                  "Boolean": self.slave.getBoolean, "Enumeration": self.slave.getInteger}[v.type]
+        getter = {
+            "Real": self.slave.getReal,
+            "Integer": self.slave.getInteger,
+            "Boolean": self.slave.getBoolean,
+            "Enumeration": self.slave.getInteger,
+        }[v.type]
         return self.call(f"get {name}", getter, [v.valueReference])[0]
 
     def close(self):
@@ -191,7 +211,7 @@ class Master:
 
     def _wire(self):
         spec = self.spec
-        self.links = {name: [] for name in spec.order}        # target -> [(source inst, output, input)]
+        self.links = {name: [] for name in spec.order}  # target -> [(source inst, output, input)]
         watched = {name: set() for name in spec.order}
         for source, target in spec.connections:
             s_inst, s_var = split_name(source)
@@ -205,8 +225,12 @@ class Master:
             self.links[t_inst].append((s_inst, s_var, t_var))
             watched[s_inst].add(s_var)
         self.recorded = []
-        for qualified in list(spec.record) + [f"{s}" for s, _ in spec.connections] + list(spec.max_change) + \
-                [lim.variable for lim in spec.limits]:
+        for qualified in (
+            list(spec.record)
+            + [f"{s}" for s, _ in spec.connections]
+            + list(spec.max_change)
+            + [lim.variable for lim in spec.limits]
+        ):
             inst, var = split_name(qualified)
             self.instances[inst].var(var)
             watched[inst].add(var)
@@ -219,22 +243,29 @@ class Master:
         spec = self.spec
         for name in spec.order:
             inst = self.instances[name]
-            inst.call("setupExperiment", lambda i=inst: i.slave.setupExperiment(startTime=spec.start,
-                                                                                   stopTime=spec.stop))
+            inst.call(
+                "setupExperiment", lambda i=inst: i.slave.setupExperiment(startTime=spec.start, stopTime=spec.stop)
+            )
             inst.call("enterInitializationMode", inst.slave.enterInitializationMode)
             inst.set(spec.instances[name].parameters)
             inst.set(spec.instances[name].inputs)
         if spec.algorithm == "jacobi":  # every connected input from its source's start value
-            starts = {name: {t_var: self.instances[s].start_value(s_var) for s, s_var, t_var in self.links[name]}
-                      for name in spec.order}
+            starts = {
+                name: {t_var: self.instances[s].start_value(s_var) for s, s_var, t_var in self.links[name]}
+                for name in spec.order
+            }
             for name in spec.order:
                 self.instances[name].set(starts[name])
         exited = set()
         for name in spec.order:
             inst = self.instances[name]
             if spec.algorithm == "gauss_seidel":  # outputs of those already initialised, else start values
-                inst.set({t_var: (self.instances[s].cache[s_var] if s in exited else
-                                  self.instances[s].start_value(s_var)) for s, s_var, t_var in self.links[name]})
+                inst.set(
+                    {
+                        t_var: (self.instances[s].cache[s_var] if s in exited else self.instances[s].start_value(s_var))
+                        for s, s_var, t_var in self.links[name]
+                    }
+                )
             self._exit_initialisation(inst)
             exited.add(name)
 
@@ -313,8 +344,9 @@ class Master:
             inst, var = split_name(lim.variable)
             value = self.instances[inst].cache[var]
             if not (lim.min <= value <= lim.max) or math.isnan(value):
-                return (f"t = {t:.6g} s: {lim.variable} = {value:.6g} left [{lim.min:.6g}, {lim.max:.6g}]"
-                        + (f": {lim.message}" if lim.message else ""))
+                return f"t = {t:.6g} s: {lim.variable} = {value:.6g} left [{lim.min:.6g}, {lim.max:.6g}]" + (
+                    f": {lim.message}" if lim.message else ""
+                )
         return None
 
     def run(self, progress=False):
@@ -383,6 +415,7 @@ class _Progress:
         if enabled:
             try:
                 from tqdm import tqdm
+
                 self._bar = tqdm(total=total, unit="step", file=sys.stderr)
             except ImportError:
                 pass

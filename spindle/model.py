@@ -7,6 +7,7 @@ interference. Inputs and outputs are SI and declared as bearing_fmu.model.Variab
 FMU class turns into FMI variables. No scipy import on this path (SPEC 3): the eigendecomposition
 is numpy's.
 """
+
 import math
 import tomllib
 from dataclasses import dataclass
@@ -23,9 +24,9 @@ CATALOGUE = Path(__file__).resolve().parent / "params"
 INTEGRATORS = ("exponential", "implicit_euler")
 ARRANGEMENT_SIGN = {"X": 1.0, "O": -1.0}
 # Admissible inputs (anything outside is reported, never integrated into NaN):
-OMEGA_MAX = 1e5       # rad/s (~955 000 rpm): beyond any spindle; the correlation would be meaningless
-HEAT_MAX = 1e7        # W: |heat input|, far beyond any spindle bearing or motor loss
-T_MAX = 1000.0        # K: boundary temperatures in ]0, T_MAX]
+OMEGA_MAX = 1e5  # rad/s (~955 000 rpm): beyond any spindle; the correlation would be meaningless
+HEAT_MAX = 1e7  # W: |heat input|, far beyond any spindle bearing or motor loss
+T_MAX = 1000.0  # K: boundary temperatures in ]0, T_MAX]
 SUBSTEPS_MAX = 100000
 
 
@@ -61,8 +62,9 @@ def _quantity(table, key, unit, where, low=0.0, high=math.inf, low_open=True):
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
         raise ParameterError(f"{where}: '{key}' = {value!r} is not a finite number")
     if not ((value > low if low_open else value >= low) and value <= high):
-        raise ParameterError(f"{where}: '{key}' = {value} {unit} is outside the allowed range "
-                             f"{']' if low_open else '['}{low}, {high}]")
+        raise ParameterError(
+            f"{where}: '{key}' = {value} {unit} is outside the allowed range {']' if low_open else '['}{low}, {high}]"
+        )
     return float(value)
 
 
@@ -80,24 +82,25 @@ LINK_KINDS = {
 @dataclass
 class Network:
     """A spindle network packed for the kernels (all SI)."""
+
     name: str
     path: str
-    nodes: tuple            # node names
-    C: np.ndarray           # capacities (J/K)
-    boundaries: tuple       # boundary names
+    nodes: tuple  # node names
+    C: np.ndarray  # capacities (J/K)
+    boundaries: tuple  # boundary names
     boundary_inputs: tuple  # input name giving each boundary's temperature
-    links: tuple            # (name, kind name) per link
-    kinds: np.ndarray       # int64 link codes
-    par: np.ndarray         # (n_links, PAR_SIZE)
-    ends_i: np.ndarray      # int64, node index or n + boundary index
+    links: tuple  # (name, kind name) per link
+    kinds: np.ndarray  # int64 link codes
+    par: np.ndarray  # (n_links, PAR_SIZE)
+    ends_i: np.ndarray  # int64, node index or n + boundary index
     ends_j: np.ndarray
-    heat_names: tuple       # heat input names
-    heat_text: tuple        # their descriptions
-    dist: np.ndarray        # (n_nodes, n_heat) fraction of each input going to each node
-    T_ref: float            # assembly temperature (K)
-    alpha_bearing: float    # expansion coefficient of rings and balls (1/K)
-    bearings: tuple         # dicts: inner_ring, outer_ring, ball_oil (node indices), d_i, d_o, D, a, E, nu, rho
-    axial: dict | None      # s_arr, spacing, alpha_shaft, alpha_housing, shaft, housing (indices), axial_float
+    heat_names: tuple  # heat input names
+    heat_text: tuple  # their descriptions
+    dist: np.ndarray  # (n_nodes, n_heat) fraction of each input going to each node
+    T_ref: float  # assembly temperature (K)
+    alpha_bearing: float  # expansion coefficient of rings and balls (1/K)
+    bearings: tuple  # dicts: inner_ring, outer_ring, ball_oil (node indices), d_i, d_o, D, a, E, nu, rho
+    axial: dict | None  # s_arr, spacing, alpha_shaft, alpha_housing, shaft, housing (indices), axial_float
 
 
 def _bearing_entry(entry, index, node_index, where):
@@ -112,8 +115,9 @@ def _bearing_entry(entry, index, node_index, where):
     d_i = b.dm - b.D - 0.5 * b.Pd  # groove diameters with P_d = d_o - d_i - 2 D (Harris)
     d_o = b.dm + b.D + 0.5 * b.Pd
     # the Bearing record does not carry the bore: read it from the bearing's own file
-    bore = _quantity(tomllib.loads(Path(b.path).read_text()).get("geometry", {}), "bore", "m",
-                     f"{b.path} [geometry]", high=d_i)
+    bore = _quantity(
+        tomllib.loads(Path(b.path).read_text()).get("geometry", {}), "bore", "m", f"{b.path} [geometry]", high=d_i
+    )
     return dict(name=b.name, d_i=d_i, d_o=d_o, D=b.D, a=0.5 * bore, E=b.ring.E, nu=b.ring.nu, rho=b.ring.rho, **nodes)
 
 
@@ -151,8 +155,12 @@ def load_spindle(name_or_path):
     for k, entry in enumerate(doc.get("link", [])):
         between = entry.get("between")
         lw = f"{where} [[link]] #{k + 1} {between}"
-        if (not isinstance(between, list) or len(between) != 2 or between[0] == between[1]
-                or any(e not in index for e in between)):
+        if (
+            not isinstance(between, list)
+            or len(between) != 2
+            or between[0] == between[1]
+            or any(e not in index for e in between)
+        ):
             raise ParameterError(f"{lw}: 'between' must name two different nodes/boundaries of {everything}")
         i, j = index[between[0]], index[between[1]]
         if i >= n and j >= n:
@@ -165,7 +173,9 @@ def load_spindle(name_or_path):
         elif kind == "convection" and "correlation" in entry:
             raise ParameterError(f"{lw}: correlation = {entry['correlation']!r}, allowed: 'rotating_shaft'")
         if kind not in LINK_KINDS:
-            raise ParameterError(f"{lw}: kind = {kind!r}, allowed: {', '.join(k for k in LINK_KINDS if k != 'rotating_shaft')}")
+            raise ParameterError(
+                f"{lw}: kind = {kind!r}, allowed: {', '.join(k for k in LINK_KINDS if k != 'rotating_shaft')}"
+            )
         if kind == "advection" and j < n:
             raise ParameterError(f"{lw}: an advection link carries a flow from a boundary (inlet) to a node")
         code, keys = LINK_KINDS[kind]
@@ -186,11 +196,16 @@ def load_spindle(name_or_path):
     _check_paths(nodes, n, ends_i, ends_j, kinds, where)
 
     heat_names, heat_text, columns = [], [], []
-    for k, entry in enumerate(doc.get("heat_input", [])):
+    for entry in doc.get("heat_input", []):
         name, split = entry.get("name"), entry.get("split")
         hw = f"{where} [[heat_input]] '{name}'"
-        if (not isinstance(name, str) or not name.isidentifier() or name in heat_names or name in b_inputs
-                or name == "omega"):
+        if (
+            not isinstance(name, str)
+            or not name.isidentifier()
+            or name in heat_names
+            or name in b_inputs
+            or name == "omega"
+        ):
             raise ParameterError(f"{hw}: needs a unique name (letters, digits, _)")
         if not isinstance(split, dict) or not split or any(t not in node_index for t in split):
             raise ParameterError(f"{hw}: 'split' must map node names ({', '.join(nodes)}) to fractions")
@@ -213,13 +228,25 @@ def load_spindle(name_or_path):
     bearings = tuple(_bearing_entry(e, k + 1, node_index, where) for k, e in enumerate(doc.get("bearing", [])))
     axial = _axial(doc.get("axial"), node_index, len(bearings), where)
     return Network(
-        name=str(doc.get("meta", {}).get("name", path.stem)), path=str(path), nodes=tuple(nodes),
-        C=np.array(C), boundaries=tuple(boundaries), boundary_inputs=tuple(b_inputs), links=tuple(links),
-        kinds=np.array(kinds, dtype=np.int64), par=np.array(par).reshape(len(par), nk.PAR_SIZE),
-        ends_i=np.array(ends_i, dtype=np.int64), ends_j=np.array(ends_j, dtype=np.int64),
-        heat_names=tuple(heat_names), heat_text=tuple(heat_text),
-        dist=np.array(columns).T.reshape(n, len(columns)), T_ref=T_ref, alpha_bearing=alpha_b,
-        bearings=bearings, axial=axial)
+        name=str(doc.get("meta", {}).get("name", path.stem)),
+        path=str(path),
+        nodes=tuple(nodes),
+        C=np.array(C),
+        boundaries=tuple(boundaries),
+        boundary_inputs=tuple(b_inputs),
+        links=tuple(links),
+        kinds=np.array(kinds, dtype=np.int64),
+        par=np.array(par).reshape(len(par), nk.PAR_SIZE),
+        ends_i=np.array(ends_i, dtype=np.int64),
+        ends_j=np.array(ends_j, dtype=np.int64),
+        heat_names=tuple(heat_names),
+        heat_text=tuple(heat_text),
+        dist=np.array(columns).T.reshape(n, len(columns)),
+        T_ref=T_ref,
+        alpha_bearing=alpha_b,
+        bearings=bearings,
+        axial=axial,
+    )
 
 
 def _check_paths(nodes, n, ends_i, ends_j, kinds, where):
@@ -242,8 +269,10 @@ def _check_paths(nodes, n, ends_i, ends_j, kinds, where):
             frontier.extend(adjacency[i] - reached)
     for i, name in enumerate(nodes):
         if i not in reached:
-            raise ParameterError(f"{where}: node {name} has no conductive path to a boundary: steady state undefined "
-                                 f"(the rotating-shaft convection vanishes at rest and does not count)")
+            raise ParameterError(
+                f"{where}: node {name} has no conductive path to a boundary: steady state undefined "
+                f"(the rotating-shaft convection vanishes at rest and does not count)"
+            )
 
 
 def _axial(section, node_index, n_bearings, where):
@@ -283,12 +312,14 @@ class SpindleThermalModel:
     T_ref, forces 0 N, stiffnesses 0 N/m), like FMU inputs.
     """
 
-    def __init__(self, spindle=DEFAULT_SPINDLE, integrator="exponential", substeps=1, T_initial=None,
-                 axial_float=None):
+    def __init__(self, spindle=DEFAULT_SPINDLE, integrator="exponential", substeps=1, T_initial=None, axial_float=None):
         if integrator not in INTEGRATORS:
             raise SpindleInputError(f"integrator = {integrator!r}: allowed {list(INTEGRATORS)}")
-        if isinstance(substeps, bool) or not isinstance(substeps, (int, np.integer)) \
-                or not 1 <= substeps <= SUBSTEPS_MAX:
+        if (
+            isinstance(substeps, bool)
+            or not isinstance(substeps, (int, np.integer))
+            or not 1 <= substeps <= SUBSTEPS_MAX
+        ):
             raise SpindleInputError(f"substeps = {substeps!r} must be a whole number in [1, {SUBSTEPS_MAX}]")
         if T_initial is not None and not (math.isfinite(T_initial) and 0.0 < T_initial <= T_MAX):
             raise SpindleInputError(f"T_initial = {T_initial} K is outside the allowed range ]0, {T_MAX}] K")
@@ -305,10 +336,10 @@ class SpindleThermalModel:
         self._u = dict(self._defaults)
         self._cache_omega = None
         self._op = None
-        self.T = None          # node temperatures (K); None until initialize()
-        self.T0 = None         # initial node temperatures (K) for E_stored
-        self.s = 0.0           # axial float of the shaft (m)
-        self.time = 0.0        # s
+        self.T = None  # node temperatures (K); None until initialize()
+        self.T0 = None  # initial node temperatures (K) for E_stored
+        self.s = 0.0  # axial float of the shaft (m)
+        self.time = 0.0  # s
         self._out = None
 
     # ---------------------------------------------------------------- tables
@@ -316,8 +347,10 @@ class SpindleThermalModel:
         net = self.net
         out = [Variable(name, "W", text) for name, text in zip(net.heat_names, net.heat_text)]
         out.append(Variable("omega", "rad/s", "shaft angular speed (rotating-shaft convection, centrifugal growth)"))
-        out += [Variable(name, "K", f"temperature of the boundary '{b}'")
-                for name, b in zip(net.boundary_inputs, net.boundaries)]
+        out += [
+            Variable(name, "K", f"temperature of the boundary '{b}'")
+            for name, b in zip(net.boundary_inputs, net.boundaries)
+        ]
         if self.axial_float:
             for k in (1, 2):
                 out.append(Variable(f"F_axial_{k}", "N", f"axial reaction of bearing {k} (axial float)"))
@@ -330,27 +363,50 @@ class SpindleThermalModel:
         out = [Variable(f"T_{name}", "K", f"temperature of node '{name}'") for name in net.nodes]
         names = {v.name for v in out}
         for k, b in enumerate(net.bearings, start=1):
-            for alias, role, text in ((f"T_inner_ring_{k}", "inner_ring", "inner ring"),
-                                      (f"T_outer_ring_{k}", "outer_ring", "outer ring"),
-                                      (f"T_oil_{k}", "ball_oil", "balls and oil")):
+            for alias, role, text in (
+                (f"T_inner_ring_{k}", "inner_ring", "inner ring"),
+                (f"T_outer_ring_{k}", "outer_ring", "outer ring"),
+                (f"T_oil_{k}", "ball_oil", "balls and oil"),
+            ):
                 if alias in names:
                     if alias != f"T_{net.nodes[b[role]]}":
-                        raise ParameterError(f"{net.path}: output {alias} would name node '{alias[2:]}' and "
-                                             f"bearing {k}'s {role} '{net.nodes[b[role]]}': rename the node")
+                        raise ParameterError(
+                            f"{net.path}: output {alias} would name node '{alias[2:]}' and "
+                            f"bearing {k}'s {role} '{net.nodes[b[role]]}': rename the node"
+                        )
                     continue
                 out.append(Variable(alias, "K", f"temperature of bearing {k}'s {text} (node '{net.nodes[b[role]]}')"))
                 names.add(alias)
-            out.append(Variable(f"dPd_thermal_{k}", "m", f"change of bearing {k}'s diametral clearance from thermal "
-                                                          f"and centrifugal growth (negative = tighter)"))
+            out.append(
+                Variable(
+                    f"dPd_thermal_{k}",
+                    "m",
+                    f"change of bearing {k}'s diametral clearance from thermal "
+                    f"and centrifugal growth (negative = tighter)",
+                )
+            )
         if net.axial:
-            out.append(Variable("dz_thermal", "m", "change of the pair's axial interference from shaft vs housing "
-                                                   "growth (> 0 tightens both bearings)"))
+            out.append(
+                Variable(
+                    "dz_thermal",
+                    "m",
+                    "change of the pair's axial interference from shaft vs housing growth (> 0 tightens both bearings)",
+                )
+            )
             for k in (1, 2):
-                out.append(Variable(f"dz_thermal_{k}", "m", f"change of bearing {k}'s local axial approach "
-                                                            f"(dz_thermal/2 {'+' if k == 1 else '-'} axial float)"))
-        out += [Variable("P_in", "W", "sum of the heat inputs"),
-                Variable("P_out", "W", "heat flowing into the boundaries at the current temperatures"),
-                Variable("E_stored", "J", "heat stored since initialisation: sum of C (T - T_initial)")]
+                out.append(
+                    Variable(
+                        f"dz_thermal_{k}",
+                        "m",
+                        f"change of bearing {k}'s local axial approach "
+                        f"(dz_thermal/2 {'+' if k == 1 else '-'} axial float)",
+                    )
+                )
+        out += [
+            Variable("P_in", "W", "sum of the heat inputs"),
+            Variable("P_out", "W", "heat flowing into the boundaries at the current temperatures"),
+            Variable("E_stored", "J", "heat stored since initialisation: sum of C (T - T_initial)"),
+        ]
         return tuple(out)
 
     @property
@@ -360,18 +416,29 @@ class SpindleThermalModel:
         G0 = nk.link_conductances(net.kinds, net.par, 0.0)
         names = net.nodes + net.boundaries
         return {
-            "name": net.name, "path": net.path, "integrator": self.integrator, "substeps": self.substeps,
+            "name": net.name,
+            "path": net.path,
+            "integrator": self.integrator,
+            "substeps": self.substeps,
             "nodes": {name: float(c) for name, c in zip(net.nodes, net.C)},
             "boundaries": dict(zip(net.boundaries, net.boundary_inputs)),
-            "links": [{"name": ln, "kind": kind, "between": (names[i], names[j]), "G_at_rest": float(g)}
-                      for (ln, kind), i, j, g in zip(net.links, net.ends_i, net.ends_j, G0)],
-            "heat_inputs": {name: {net.nodes[i]: float(f) for i, f in enumerate(net.dist[:, q]) if f}
-                            for q, name in enumerate(net.heat_names)},
-            "T_ref": net.T_ref, "alpha_bearing": net.alpha_bearing,
-            "bearings": [{key: (net.nodes[v] if key in ("inner_ring", "outer_ring", "ball_oil") else v)
-                          for key, v in b.items()} for b in net.bearings],
-            "axial": None if net.axial is None else {
-                key: (net.nodes[v] if key in ("shaft", "housing") else v) for key, v in net.axial.items()},
+            "links": [
+                {"name": ln, "kind": kind, "between": (names[i], names[j]), "G_at_rest": float(g)}
+                for (ln, kind), i, j, g in zip(net.links, net.ends_i, net.ends_j, G0)
+            ],
+            "heat_inputs": {
+                name: {net.nodes[i]: float(f) for i, f in enumerate(net.dist[:, q]) if f}
+                for q, name in enumerate(net.heat_names)
+            },
+            "T_ref": net.T_ref,
+            "alpha_bearing": net.alpha_bearing,
+            "bearings": [
+                {key: (net.nodes[v] if key in ("inner_ring", "outer_ring", "ball_oil") else v) for key, v in b.items()}
+                for b in net.bearings
+            ],
+            "axial": None
+            if net.axial is None
+            else {key: (net.nodes[v] if key in ("shaft", "housing") else v) for key, v in net.axial.items()},
         }
 
     # ---------------------------------------------------------------- inputs
@@ -416,8 +483,9 @@ class SpindleThermalModel:
         L, B = nk.assemble(len(net.nodes), len(net.boundaries), net.ends_i, net.ends_j, G)
         R = nk.cholesky(L)
         if not np.all(np.isfinite(R)):
-            raise SpindleInputError(f"the conductance matrix at omega = {omega} rad/s is singular: "
-                                    f"some node has no path to a boundary")
+            raise SpindleInputError(
+                f"the conductance matrix at omega = {omega} rad/s is singular: some node has no path to a boundary"
+            )
         op = {"G": G, "L": L, "B": B, "R": R}
         if self.integrator == "exponential":
             sqrt_c = np.sqrt(net.C)
@@ -459,8 +527,10 @@ class SpindleThermalModel:
             T = nk.implicit_euler_step(self.net.C, op["L"], f, self.T, float(h), self.substeps)
         bad = np.flatnonzero(~(np.isfinite(T) & (T > 0.0)))
         if bad.size:
-            raise SpindleInputError(f"node {self.net.nodes[bad[0]]} would reach T = {T[bad[0]]} K (non-physical) "
-                                    f"with these heat inputs; state left unchanged")
+            raise SpindleInputError(
+                f"node {self.net.nodes[bad[0]]} would reach T = {T[bad[0]]} K (non-physical) "
+                f"with these heat inputs; state left unchanged"
+            )
         if self.axial_float and u["K_axial_1"] > 0.0 and u["K_axial_2"] > 0.0:
             # rigid shaft floats until both bearings carry the same axial force (one Newton step on F_1 - F_2)
             self.s += (u["F_axial_2"] - u["F_axial_1"]) / (u["K_axial_1"] + u["K_axial_2"])
@@ -487,8 +557,13 @@ class SpindleThermalModel:
         """Time constants 1/lambda (s) of the network at omega (rad/s), slowest first (generalised
         eigenvalues of L x = lambda C x)."""
         sqrt_c = np.sqrt(self.net.C)
-        L = nk.assemble(len(self.net.nodes), len(self.net.boundaries), self.net.ends_i, self.net.ends_j,
-                        nk.link_conductances(self.net.kinds, self.net.par, float(omega)))[0]
+        L = nk.assemble(
+            len(self.net.nodes),
+            len(self.net.boundaries),
+            self.net.ends_i,
+            self.net.ends_j,
+            nk.link_conductances(self.net.kinds, self.net.par, float(omega)),
+        )[0]
         return 1.0 / np.linalg.eigvalsh(L / np.outer(sqrt_c, sqrt_c))
 
     def get_state(self):
@@ -522,12 +597,27 @@ class SpindleThermalModel:
             r = 0.5 * b["d_i"]
             u_c = nk.centrifugal_radial_growth(b["rho"], b["E"], b["nu"], omega, b["a"], r, r)
             out[f"dPd_thermal_{k}"] = nk.clearance_change(
-                net.alpha_bearing, b["d_i"], b["d_o"], b["D"], T[b["inner_ring"]], T[b["outer_ring"]],
-                T[b["ball_oil"]], net.T_ref, u_c)
+                net.alpha_bearing,
+                b["d_i"],
+                b["d_o"],
+                b["D"],
+                T[b["inner_ring"]],
+                T[b["outer_ring"]],
+                T[b["ball_oil"]],
+                net.T_ref,
+                u_c,
+            )
         ax = net.axial
         if ax:
-            dz = nk.axial_interference(ax["s_arr"], ax["alpha_shaft"], ax["alpha_housing"], ax["spacing"],
-                                       T[ax["shaft"]], T[ax["housing"]], net.T_ref)
+            dz = nk.axial_interference(
+                ax["s_arr"],
+                ax["alpha_shaft"],
+                ax["alpha_housing"],
+                ax["spacing"],
+                T[ax["shaft"]],
+                T[ax["housing"]],
+                net.T_ref,
+            )
             out["dz_thermal"] = dz
             out["dz_thermal_1"] = 0.5 * dz + self.s
             out["dz_thermal_2"] = 0.5 * dz - self.s

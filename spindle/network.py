@@ -32,6 +32,7 @@ that is as fast as BLAS, and a non-positive pivot comes back as NaN instead of a
 kernel. (This module imports no scipy; numba itself imports scipy.linalg's Cython BLAS/LAPACK bindings
 on its first dispatch, which is why the master loads numba and scipy before any FMU, SPEC 3.)
 """
+
 import math
 
 import numpy as np
@@ -227,9 +228,17 @@ def centrifugal_radial_growth(rho, E, nu, omega, a, b, r):
     (kg/m^3), modulus E (Pa) and Poisson ratio nu turning at omega (rad/s), plane stress (Timoshenko &
     Goodier, rotating disc): u = rho omega^2/(8E) [(3+nu)(1-nu)(a^2+b^2) r + (3+nu)(1+nu) a^2 b^2/r - (1-nu^2) r^3]."""
     a2, b2 = a * a, b * b
-    return rho * omega * omega / (8.0 * E) * ((3.0 + nu) * (1.0 - nu) * (a2 + b2) * r
-                                              + (3.0 + nu) * (1.0 + nu) * a2 * b2 / r
-                                              - (1.0 - nu * nu) * r * r * r)
+    return (
+        rho
+        * omega
+        * omega
+        / (8.0 * E)
+        * (
+            (3.0 + nu) * (1.0 - nu) * (a2 + b2) * r
+            + (3.0 + nu) * (1.0 + nu) * a2 * b2 / r
+            - (1.0 - nu * nu) * r * r * r
+        )
+    )
 
 
 @njit(cache=True)

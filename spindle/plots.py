@@ -4,6 +4,7 @@ Columns are picked by variable name ('instance.variable'), so the same plot serv
 temperatures = variables starting with T_ (shown in C), torque, axial load (F_z) or contact angle,
 Lambda_*, C_bearing. Panels without data are left out.
 """
+
 import numpy as np
 
 PANELS = (
@@ -19,8 +20,10 @@ PANELS = (
 def plot_run(result, path, title=""):
     """Write a PNG of the recorded trajectories of a RunResult (or any object with .columns)."""
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+
     cols = result.columns
     t = cols["time"]
     scale_t, t_label = (1.0 / 60.0, "time (min)") if t[-1] > 600 else (1.0, "time (s)")

@@ -35,6 +35,7 @@ Format (every time in s; values SI in the units each FMU declares):
 `overrides` (sweeps, command line) replace values by dotted keys: "run.step", "bearing_1.F_z"
 (an input or parameter of an instance, whichever it already is; a new key becomes an input).
 """
+
 import math
 import tomllib
 from dataclasses import dataclass, field
@@ -50,14 +51,14 @@ class RunFileError(ValueError):
 @dataclass
 class InstanceSpec:
     name: str
-    fmu: str                                    # absolute path of the FMU file
+    fmu: str  # absolute path of the FMU file
     parameters: dict = field(default_factory=dict)
     inputs: dict = field(default_factory=dict)
 
 
 @dataclass
 class Limit:
-    variable: str                               # "instance.variable"
+    variable: str  # "instance.variable"
     min: float = -math.inf
     max: float = math.inf
     message: str = ""
@@ -72,8 +73,8 @@ class RunSpec:
     step: float
     algorithm: str
     order: list
-    instances: dict                             # name -> InstanceSpec, in file order
-    connections: list                           # (source "inst.var", target "inst.var")
+    instances: dict  # name -> InstanceSpec, in file order
+    connections: list  # (source "inst.var", target "inst.var")
     record: list
     limits: list
     rollback: bool = False
@@ -110,30 +111,56 @@ def parse_run(doc, path, overrides=None):
     run = dict(doc.get("run", {}))
     fmus = {k: str((base / v).resolve()) for k, v in doc.get("fmus", {}).items()}
     _no_unknown_keys("the run file", doc, {"run", "fmus", "instances", "connections", "limits"})
-    _no_unknown_keys("[run]", run, {"description", "start", "stop", "step", "algorithm", "order", "record",
-                                    "rollback", "max_halvings", "max_change"})
+    _no_unknown_keys(
+        "[run]",
+        run,
+        {
+            "description",
+            "start",
+            "stop",
+            "step",
+            "algorithm",
+            "order",
+            "record",
+            "rollback",
+            "max_halvings",
+            "max_change",
+        },
+    )
     instances = {}
     for name, inst in doc.get("instances", {}).items():
         _no_unknown_keys(f"[instances.{name}]", inst, {"fmu", "parameters", "inputs"})
         if inst.get("fmu") not in fmus:
             raise RunFileError(f"instance {name}: fmu = {inst.get('fmu')!r} is not in [fmus] ({sorted(fmus)})")
-        instances[name] = InstanceSpec(name, fmus[inst["fmu"]], dict(inst.get("parameters", {})),
-                                       dict(inst.get("inputs", {})))
+        instances[name] = InstanceSpec(
+            name, fmus[inst["fmu"]], dict(inst.get("parameters", {})), dict(inst.get("inputs", {}))
+        )
     for key, value in (overrides or {}).items():
         _apply_override(run, instances, key, value)
     connections = []
     for c in doc.get("connections", []):
         if not (isinstance(c, dict) and set(c) == {"from", "to"}):
-            raise RunFileError(f"connection {c}: write [[connections]] with from = \"source.output\" and "
-                               f"to = \"target.input\"")
+            raise RunFileError(
+                f'connection {c}: write [[connections]] with from = "source.output" and to = "target.input"'
+            )
         connections.append((c["from"], c["to"]))
     limits = [Limit(**lim) for lim in doc.get("limits", [])]
-    spec = RunSpec(path=str(path), description=run.get("description", ""), start=float(run.get("start", 0.0)),
-                   stop=float(run.get("stop", 0.0)), step=float(run.get("step", 0.0)),
-                   algorithm=run.get("algorithm", "gauss_seidel"), order=list(run.get("order", instances)),
-                   instances=instances, connections=connections, record=list(run.get("record", [])),
-                   limits=limits, rollback=bool(run.get("rollback", False)),
-                   max_halvings=int(run.get("max_halvings", 4)), max_change=dict(run.get("max_change", {})))
+    spec = RunSpec(
+        path=str(path),
+        description=run.get("description", ""),
+        start=float(run.get("start", 0.0)),
+        stop=float(run.get("stop", 0.0)),
+        step=float(run.get("step", 0.0)),
+        algorithm=run.get("algorithm", "gauss_seidel"),
+        order=list(run.get("order", instances)),
+        instances=instances,
+        connections=connections,
+        record=list(run.get("record", [])),
+        limits=limits,
+        rollback=bool(run.get("rollback", False)),
+        max_halvings=int(run.get("max_halvings", 4)),
+        max_change=dict(run.get("max_change", {})),
+    )
     check(spec)
     return spec
 
@@ -152,8 +179,9 @@ def _apply_override(run, instances, key, value):
         inst = instances[head]
         (inst.parameters if tail in inst.parameters else inst.inputs)[tail] = value
     else:
-        raise RunFileError(f"override {key!r}: use 'run.<key>' or '<instance>.<variable>' "
-                           f"(instances: {sorted(instances)})")
+        raise RunFileError(
+            f"override {key!r}: use 'run.<key>' or '<instance>.<variable>' (instances: {sorted(instances)})"
+        )
 
 
 def check(spec):
@@ -168,8 +196,9 @@ def check(spec):
     elif not (math.isfinite(spec.stop) and spec.stop > spec.start):
         problems.append(f"run.stop = {spec.stop} s: must be > run.start = {spec.start} s")
     elif abs(spec.n_steps * spec.step - (spec.stop - spec.start)) > 1e-9 * max(1.0, spec.stop - spec.start):
-        problems.append(f"run.stop - run.start = {spec.stop - spec.start} s is not a whole number of steps "
-                        f"of {spec.step} s")
+        problems.append(
+            f"run.stop - run.start = {spec.stop - spec.start} s is not a whole number of steps of {spec.step} s"
+        )
     if sorted(spec.order) != sorted(spec.instances):
         problems.append(f"run.order = {spec.order} must list every instance once ({list(spec.instances)})")
     targets = set()

@@ -5,6 +5,7 @@ the host process, so workers use processes, one thread each). Local cluster by d
 address of a running scheduler to use a cluster. Results are gathered into one table: the swept
 value, the status and message, the wall time and the final value of every recorded variable.
 """
+
 import csv
 import math
 
@@ -20,8 +21,12 @@ def run_point(runfile, overrides):
     except Exception as exc:  # a failed point must not lose the others
         row["message"] = f"{type(exc).__name__}: {exc}"
         return row
-    row.update(status=result.status, message=result.message, wall_time=result.wall_time,
-               t_end=float(result.columns["time"][-1]))
+    row.update(
+        status=result.status,
+        message=result.message,
+        wall_time=result.wall_time,
+        t_end=float(result.columns["time"][-1]),
+    )
     for name, values in result.columns.items():
         if name != "time":
             row[name] = float(values[-1])
@@ -34,11 +39,11 @@ def sweep(runfile, param, values, scheduler=None, n_workers=2, extra=None):
     scheduler: None = a LocalCluster with n_workers processes (closed afterwards), or the address
     of an existing scheduler ("tcp://host:8786")."""
     from dask.distributed import Client, LocalCluster
+
     points = [{**(extra or {}), param: v} for v in values]
     cluster = None
     if scheduler is None:
-        cluster = LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
-                               dashboard_address=None)
+        cluster = LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True, dashboard_address=None)
         client = Client(cluster)
     else:
         client = Client(scheduler)

@@ -1,4 +1,5 @@
 """Shared fixtures: paths to the reference data and the built FMUs (built once if missing)."""
+
 from pathlib import Path
 
 import pytest
@@ -18,7 +19,8 @@ def annexe_d_path():
 
 def _fmu(name, scene_file):
     """Path of fmus/<name>.fmu; built from the current sources if it is missing or stale."""
-    from bearing_fmu.build import build_fmu, SCENES_DIR, PACKAGE_DIR
+    from bearing_fmu.build import PACKAGE_DIR, SCENES_DIR, build_fmu
+
     path = FMU_DIR / f"{name}.fmu"
     newest_source = max(p.stat().st_mtime for p in PACKAGE_DIR.rglob("*") if p.suffix in (".py", ".toml"))
     if not path.is_file() or path.stat().st_mtime < newest_source:
@@ -54,9 +56,11 @@ def _thermal_fmu(name):
     missing or older than any source it bundles (the spindle and bearing_fmu packages)."""
     from bearing_fmu.build import PACKAGE_DIR
     from spindle.build import SPINDLE_DIR, THERMAL_FMUS, build_thermal_fmu
+
     path = FMU_DIR / f"{name}.fmu"
-    newest_source = max(p.stat().st_mtime for d in (PACKAGE_DIR, SPINDLE_DIR) for p in d.rglob("*")
-                        if p.suffix in (".py", ".toml"))
+    newest_source = max(
+        p.stat().st_mtime for d in (PACKAGE_DIR, SPINDLE_DIR) for p in d.rglob("*") if p.suffix in (".py", ".toml")
+    )
     if not path.is_file() or path.stat().st_mtime < newest_source:
         network, axial_float = THERMAL_FMUS[name]
         build_thermal_fmu(name, network, axial_float, FMU_DIR)

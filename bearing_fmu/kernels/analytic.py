@@ -9,6 +9,7 @@ Deep-groove bearing (contact angle 0), outer ring fixed, radial load F_r along p
 3. Hertz per contact, EHL film (formula code), film parameter, regime, capacitance.
 All contacts roll purely at the entrainment speed u = omega d_m (1 - gamma^2)/4.
 """
+
 import math
 
 from numba import njit
@@ -18,33 +19,33 @@ from .ehl import film_parameter, film_thickness, lubrication_regime
 from .geometry import centrifugal_force, rolling_kinematics
 from .hertz import hertz_contact, hertz_stiffness, series_stiffness
 from .loaddist import load_parameter, solve_radial_shift
-from .lubricant import clausius_mossotti_constant, lubricant_state, LUB_EPS_R0
+from .lubricant import LUB_EPS_R0, clausius_mossotti_constant, lubricant_state
 
 # layout of the bearing parameter array (built by bearing_fmu.model)
-B_Z = 0             # number of balls (-)
-B_D = 1             # ball diameter (m)
-B_DM = 2            # pitch diameter (m)
-B_PD = 3            # diametral clearance (m)
-B_RX_I = 4          # inner contact Rx (m)
-B_RY_I = 5          # inner contact Ry (m)
-B_RX_O = 6          # outer contact Rx (m)
-B_RY_O = 7          # outer contact Ry (m)
-B_K_I = 8           # inner ellipticity a_y/b_x (-)
-B_EE_I = 9          # inner elliptic integral E (-)
-B_KK_I = 10         # inner elliptic integral K (-)
+B_Z = 0  # number of balls (-)
+B_D = 1  # ball diameter (m)
+B_DM = 2  # pitch diameter (m)
+B_PD = 3  # diametral clearance (m)
+B_RX_I = 4  # inner contact Rx (m)
+B_RY_I = 5  # inner contact Ry (m)
+B_RX_O = 6  # outer contact Rx (m)
+B_RY_O = 7  # outer contact Ry (m)
+B_K_I = 8  # inner ellipticity a_y/b_x (-)
+B_EE_I = 9  # inner elliptic integral E (-)
+B_KK_I = 10  # inner elliptic integral K (-)
 B_K_O = 11
 B_EE_O = 12
 B_KK_O = 13
-B_E_RED = 14        # reduced modulus E' (Pa)
-B_M_BALL = 15       # ball mass (kg)
-B_SIGMA_I = 16      # composite roughness, inner contact (m)
-B_SIGMA_O = 17      # composite roughness, outer contact (m)
-B_FILM = 18         # film formula code (kernels.ehl)
-B_PRESSURE = 19     # permittivity pressure choice (kernels.capacitance)
-B_H_FLOOR = 20      # film floor for capacitance (m)
-B_C_BACKGROUND = 21 # background capacitance (F)
+B_E_RED = 14  # reduced modulus E' (Pa)
+B_M_BALL = 15  # ball mass (kg)
+B_SIGMA_I = 16  # composite roughness, inner contact (m)
+B_SIGMA_O = 17  # composite roughness, outer contact (m)
+B_FILM = 18  # film formula code (kernels.ehl)
+B_PRESSURE = 19  # permittivity pressure choice (kernels.capacitance)
+B_H_FLOOR = 20  # film floor for capacitance (m)
+B_C_BACKGROUND = 21  # background capacitance (F)
 B_CENTRIFUGAL = 22  # 1 = centrifugal load on, 0 = off
-B_TOL = 23          # relative tolerance of the radial equilibrium (-)
+B_TOL = 23  # relative tolerance of the radial equilibrium (-)
 B_SIZE = 24
 
 # layout of the output array
@@ -120,7 +121,7 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     for j in range(Z):
         psi = 2.0 * math.pi * min(j, Z - j) / Z  # mirror balls get bit-identical angles
         d = delta_r * math.cos(psi) - 0.5 * Pd
-        Q_i = K * d ** 1.5 if d > d_zero else 0.0
+        Q_i = K * d**1.5 if d > d_zero else 0.0
         Q_o = Q_i + F_c
         a_i, b_i, _, p_i = hertz_contact(Q_i, Rx_i, Ry_i, E_red, brg[B_K_I], brg[B_EE_I], brg[B_KK_I])
         a_o, b_o, _, p_o = hertz_contact(Q_o, Rx_o, Ry_o, E_red, brg[B_K_O], brg[B_EE_O], brg[B_KK_O])

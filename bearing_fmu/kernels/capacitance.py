@@ -7,14 +7,15 @@ per ball the inner and outer contacts in series; the balls in parallel (insulati
 A ball that has lost contact with either ring contributes nothing (Farah: only balls in the
 loaded zone count).
 """
+
 from numba import njit
 
 from .lubricant import dowson_higginson_density, permittivity_from_density
 
 EPSILON_0 = 8.8541878128e-12  # F/m, vacuum permittivity (CODATA 2018)
 
-PRESSURE_MAX = 0     # eps_r evaluated at the Hertz maximum pressure (default, Farah)
-PRESSURE_MEAN = 1    # eps_r evaluated at the mean Hertz pressure (2/3 p_max)
+PRESSURE_MAX = 0  # eps_r evaluated at the Hertz maximum pressure (default, Farah)
+PRESSURE_MEAN = 1  # eps_r evaluated at the mean Hertz pressure (2/3 p_max)
 
 
 @njit(cache=True)

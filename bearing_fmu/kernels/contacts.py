@@ -10,6 +10,7 @@ hysteresis, Heathcote (curvature) sliding with mu(Lambda), and pivoting with the
 speed. Heat goes to the ring of the contact (the ball is adiabatic at steady state: it passes its
 heat to the rings). Torque = total power / |omega|; at rest it is 0 (no rolling, no power).
 """
+
 import math
 
 from numba import njit
@@ -18,31 +19,31 @@ from .capacitance import ball_capacitance, contact_capacitance, contact_permitti
 from .ehl import film_parameter, film_thickness, friction_coefficient, lubrication_regime
 from .hertz import hertz_contact
 from .lubricant import LUB_EPS_R0, clausius_mossotti_constant, lubricant_state
-from .quasistatic import (BQ_Q_I, BQ_Q_O, BQ_SPIN_I, BQ_SPIN_O, BQ_U_I, BQ_U_O)
+from .quasistatic import BQ_Q_I, BQ_Q_O, BQ_SPIN_I, BQ_SPIN_O, BQ_U_I, BQ_U_O
 from .torque import TL_SIZE, contact_losses
 
 # layout of the contact parameter array (built by the model)
 CP_RX_I = 0
 CP_RY_I = 1
-CP_K_I = 2      # ellipticity a_y/b_x (-)
-CP_EE_I = 3     # elliptic integral E (-)
-CP_KK_I = 4     # elliptic integral K (-)
+CP_K_I = 2  # ellipticity a_y/b_x (-)
+CP_EE_I = 3  # elliptic integral E (-)
+CP_KK_I = 4  # elliptic integral K (-)
 CP_RX_O = 5
 CP_RY_O = 6
 CP_K_O = 7
 CP_EE_O = 8
 CP_KK_O = 9
-CP_E_RED = 10   # reduced modulus (Pa)
-CP_SIGMA_I = 11 # composite roughness (m)
+CP_E_RED = 10  # reduced modulus (Pa)
+CP_SIGMA_I = 11  # composite roughness (m)
 CP_SIGMA_O = 12
-CP_FILM = 13    # film formula code
+CP_FILM = 13  # film formula code
 CP_PRESSURE = 14
-CP_H_FLOOR = 15 # capacitance film floor (m)
+CP_H_FLOOR = 15  # capacitance film floor (m)
 CP_C_BACKGROUND = 16
-CP_ALPHA_H = 17 # hysteresis loss factor (-)
-CP_F_I = 18     # inner conformity (-)
+CP_ALPHA_H = 17  # hysteresis loss factor (-)
+CP_F_I = 18  # inner conformity (-)
 CP_F_O = 19
-CP_D = 20       # ball diameter (m)
+CP_D = 20  # ball diameter (m)
 CP_SIZE = 21
 
 # layout of the output array
@@ -60,7 +61,7 @@ CO_P_LOSS = 10
 CO_Q_INNER_RING = 11
 CO_Q_OUTER_RING = 12
 CO_TORQUE = 13
-CO_P_EHL = 14        # 4 components follow in kernels.torque TL_* order
+CO_P_EHL = 14  # 4 components follow in kernels.torque TL_* order
 CO_ETA = 18
 CO_XI = 19
 CO_SIZE = 20
@@ -70,9 +71,9 @@ PC_HMIN_I = 0
 PC_HMIN_O = 1
 PC_LAMBDA_I = 2
 PC_LAMBDA_O = 3
-PC_P_I = 4      # loss of the inner contact (W)
+PC_P_I = 4  # loss of the inner contact (W)
 PC_P_O = 5
-PC_C_I = 6      # capacitance (F)
+PC_C_I = 6  # capacitance (F)
 PC_C_O = 7
 PC_SIZE = 8
 
@@ -118,8 +119,9 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
                 C = contact_capacitance(eps, a, b, hc, cp[CP_H_FLOOR])
                 mu = friction_coefficient(lam)
                 f = cp[CP_F_I + race]
-                P = contact_losses(Q, u, spin, Rx, Ry, a, b, cp[CP_EE_I + o], f, cp[CP_D], E_red, eta, xi,
-                                   mu, cp[CP_ALPHA_H], losses)
+                P = contact_losses(
+                    Q, u, spin, Rx, Ry, a, b, cp[CP_EE_I + o], f, cp[CP_D], E_red, eta, xi, mu, cp[CP_ALPHA_H], losses
+                )
                 for t in range(TL_SIZE):
                     out[CO_P_EHL + t] += losses[t]
                 out[CO_PMAX] = max(out[CO_PMAX], p)

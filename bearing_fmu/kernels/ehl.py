@@ -15,6 +15,7 @@ Film formulas (smooth surfaces, isothermal, fully flooded), all as h / Rx:
     H_min = 3.68 U^0.68 G^0.49 W^-0.073 (1 - exp(-0.67 (Ry/Rx)^(2/3))).
 k is the ellipticity a_y / b_x of the Hertz contact.
 """
+
 import math
 
 from numba import njit
@@ -38,25 +39,35 @@ def dimensionless_groups(eta, xi, E_red, u, Q, Rx):
 @njit(cache=True)
 def film_hamrock_dowson(U, G, W, k):
     """Hamrock-Dowson (H_c, H_min) = (h_c/Rx, h_min/Rx) (-)."""
-    h_min = 3.63 * U ** 0.68 * G ** 0.49 * W ** -0.073 * (1.0 - math.exp(-0.68 * k))
-    h_c = 2.69 * U ** 0.67 * G ** 0.53 * W ** -0.067 * (1.0 - 0.61 * math.exp(-0.73 * k))
+    h_min = 3.63 * U**0.68 * G**0.49 * W**-0.073 * (1.0 - math.exp(-0.68 * k))
+    h_c = 2.69 * U**0.67 * G**0.53 * W**-0.067 * (1.0 - 0.61 * math.exp(-0.73 * k))
     return h_c, h_min
 
 
 @njit(cache=True)
 def film_masjedi_khonsari(U, G, W, k):
     """Masjedi-Khonsari smooth-surface (H_c, H_min) (-)."""
-    h_min = (1.637 * U ** (0.711 * k ** -0.023) * G ** (0.65 * k ** -0.045)
-             * W ** (-0.09 * k ** -0.15) * (1.0 - 0.974 * math.exp(-0.676 * k)))
-    h_c = (3.672 * U ** (0.663 * k ** -0.025) * G ** (0.502 * k ** -0.064)
-           * W ** (-0.045 * k ** -0.18) * (1.0 - 0.573 * math.exp(-0.74 * k)))
+    h_min = (
+        1.637
+        * U ** (0.711 * k**-0.023)
+        * G ** (0.65 * k**-0.045)
+        * W ** (-0.09 * k**-0.15)
+        * (1.0 - 0.974 * math.exp(-0.676 * k))
+    )
+    h_c = (
+        3.672
+        * U ** (0.663 * k**-0.025)
+        * G ** (0.502 * k**-0.064)
+        * W ** (-0.045 * k**-0.18)
+        * (1.0 - 0.573 * math.exp(-0.74 * k))
+    )
     return h_c, h_min
 
 
 @njit(cache=True)
 def film_chittenden(U, G, W, Ry_over_Rx):
     """Chittenden et al. (H_c, H_min) (-) for entrainment along x."""
-    base = U ** 0.68 * G ** 0.49 * W ** -0.073
+    base = U**0.68 * G**0.49 * W**-0.073
     r = Ry_over_Rx ** (2.0 / 3.0)
     return 4.31 * base * (1.0 - math.exp(-1.23 * r)), 3.68 * base * (1.0 - math.exp(-0.67 * r))
 

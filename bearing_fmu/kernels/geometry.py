@@ -3,6 +3,7 @@
 Outer ring fixed, inner ring turning at omega (rad/s). gamma = D cos(alpha) / d_m.
 Harris & Kotzalas (2006), Essential Concepts of Bearing Technology, ch. 2 and 8.
 """
+
 import math
 
 from numba import njit
@@ -89,7 +90,7 @@ def defect_frequencies(omega, D, dm, alpha, Z):
 @njit(cache=True)
 def ball_mass(D, rho):
     """Mass (kg) of a ball of diameter D (m) and density rho (kg/m^3)."""
-    return rho * math.pi * D ** 3 / 6.0
+    return rho * math.pi * D**3 / 6.0
 
 
 @njit(cache=True)

@@ -16,6 +16,7 @@ with R = Rx Ry / (Rx + Ry).  The exact k solves Ry/Rx = (k^2 E - K) / (K - E)
 E = 1 + q/alpha, K = pi/2 + q ln(alpha), q = pi/2 - 1, alpha = Ry/Rx >= 1 (the seeds print
 1 + q ln alpha: a typesetting error, SPEC 4.10).
 """
+
 import math
 
 from numba import njit
@@ -144,7 +145,7 @@ def hertz_stiffness(Rx, Ry, E_red, k_yx, ell_E, ell_K):
     """Load-deflection constant K_h (N/m^1.5) of Q = K_h delta^1.5 (secant stiffness K_h delta^0.5)."""
     R = Rx * Ry / (Rx + Ry)
     k = k_yx if k_yx >= 1.0 else 1.0 / k_yx
-    return math.pi * k * E_red * math.sqrt(2.0 * ell_E * R / (9.0 * ell_K ** 3))
+    return math.pi * k * E_red * math.sqrt(2.0 * ell_E * R / (9.0 * ell_K**3))
 
 
 @njit(cache=True)

@@ -8,6 +8,7 @@ K is the load-deflection constant of the inner and outer contacts in series (N/m
 The integrals use Gauss-Legendre quadrature on the loaded arc; nodes come from
 ``gauss_legendre`` (computed once at model set-up).
 """
+
 import math
 
 import numpy as np
@@ -59,7 +60,7 @@ def radial_integral(eps, nodes, weights):
         psi = 0.5 * psi_l * (nodes[i] + 1.0)
         base = 1.0 - (1.0 - math.cos(psi)) / (2.0 * eps)
         if base > 0.0:
-            total += weights[i] * base ** 1.5 * math.cos(psi)
+            total += weights[i] * base**1.5 * math.cos(psi)
     # symmetric arc [-psi_l, psi_l] -> 2 x [0, psi_l]; Jacobian psi_l / 2; 1/(2 pi) prefactor
     return total * psi_l / (2.0 * math.pi)
 
@@ -84,7 +85,7 @@ def stribeck_load(psi, Q_max, eps):
     base = 1.0 - (1.0 - math.cos(psi)) / (2.0 * eps)
     if base <= 0.0:
         return 0.0
-    return Q_max * base ** 1.5
+    return Q_max * base**1.5
 
 
 @njit(cache=True)
@@ -95,8 +96,8 @@ def radial_force_and_slope(delta_r, Pd, K, Z, nodes, weights):
     """
     if delta_r <= 0.0:
         if Pd >= 0.0:
-            return 0.0, 0.0      # no ball compressed
-        psi_l = math.pi          # centred preloaded ring: every ball compressed
+            return 0.0, 0.0  # no ball compressed
+        psi_l = math.pi  # centred preloaded ring: every ball compressed
     else:
         c = Pd / (2.0 * delta_r)
         if c >= 1.0:

@@ -7,6 +7,7 @@ Temperature models are selected by integer codes (never by module state):
 The per-lubricant numbers travel in one float64 array ``lub`` whose layout is fixed by
 ``LUB_*`` indices below (built by bearing_fmu.params.lubricant_array).
 """
+
 import math
 
 from numba import njit
@@ -24,29 +25,29 @@ DENSITY_MURNAGHAN = 1
 
 # layout of the lubricant parameter array
 LUB_VISC_MODEL = 0
-LUB_ETA_CONST = 1        # Pa.s
-LUB_WALTHER_A = 2        # -
-LUB_WALTHER_B = 3        # -
+LUB_ETA_CONST = 1  # Pa.s
+LUB_WALTHER_A = 2  # -
+LUB_WALTHER_B = 3  # -
 LUB_PIEZO_MODEL = 4
-LUB_XI_CONST = 5         # 1/Pa
-LUB_GOLD_S = 6           # 1/Pa
-LUB_GOLD_T = 7           # -
+LUB_XI_CONST = 5  # 1/Pa
+LUB_GOLD_S = 6  # 1/Pa
+LUB_GOLD_T = 7  # -
 LUB_DENS_MODEL = 8
-LUB_RHO_REF = 9          # kg/m^3
-LUB_T_REF = 10           # K
-LUB_EXPANSION = 11       # 1/K
-LUB_EPS_R0 = 12          # -
-LUB_WLF_MU_G = 13        # Pa.s
-LUB_WLF_TG0 = 14         # K
-LUB_WLF_A1 = 15          # K
-LUB_WLF_A2 = 16          # 1/Pa
-LUB_WLF_B1 = 17          # 1/Pa
-LUB_WLF_B2 = 18          # -
-LUB_WLF_C1 = 19          # -
-LUB_WLF_C2 = 20          # K
-LUB_MURN_BETA_K = 21     # 1/K
-LUB_MURN_K_MM = 22       # Pa
-LUB_MURN_K_PRIME = 23    # -
+LUB_RHO_REF = 9  # kg/m^3
+LUB_T_REF = 10  # K
+LUB_EXPANSION = 11  # 1/K
+LUB_EPS_R0 = 12  # -
+LUB_WLF_MU_G = 13  # Pa.s
+LUB_WLF_TG0 = 14  # K
+LUB_WLF_A1 = 15  # K
+LUB_WLF_A2 = 16  # 1/Pa
+LUB_WLF_B1 = 17  # 1/Pa
+LUB_WLF_B2 = 18  # -
+LUB_WLF_C1 = 19  # -
+LUB_WLF_C2 = 20  # K
+LUB_MURN_BETA_K = 21  # 1/K
+LUB_MURN_K_MM = 22  # Pa
+LUB_MURN_K_PRIME = 23  # -
 LUB_SIZE = 24
 
 KELVIN_OFFSET = 273.15
@@ -165,8 +166,16 @@ def lubricant_state(T, lub):
     density (kg/m^3) at p = 0.
     """
     if int(lub[LUB_DENS_MODEL]) == DENSITY_MURNAGHAN:
-        rho0 = murnaghan_density(0.0, T, lub[LUB_RHO_REF], lub[LUB_T_REF], lub[LUB_EXPANSION],
-                                 lub[LUB_MURN_BETA_K], lub[LUB_MURN_K_MM], lub[LUB_MURN_K_PRIME])
+        rho0 = murnaghan_density(
+            0.0,
+            T,
+            lub[LUB_RHO_REF],
+            lub[LUB_T_REF],
+            lub[LUB_EXPANSION],
+            lub[LUB_MURN_BETA_K],
+            lub[LUB_MURN_K_MM],
+            lub[LUB_MURN_K_PRIME],
+        )
     else:
         rho0 = density_linear(T, lub[LUB_RHO_REF], lub[LUB_T_REF], lub[LUB_EXPANSION])
     visc = int(lub[LUB_VISC_MODEL])
@@ -174,9 +183,18 @@ def lubricant_state(T, lub):
         nu = walther_viscosity(T, lub[LUB_WALTHER_A], lub[LUB_WALTHER_B])
         eta = nu * rho0
     elif visc == VISCOSITY_WLF:
-        eta = wlf_viscosity(0.0, T, lub[LUB_WLF_MU_G], lub[LUB_WLF_TG0], lub[LUB_WLF_A1],
-                            lub[LUB_WLF_A2], lub[LUB_WLF_B1], lub[LUB_WLF_B2], lub[LUB_WLF_C1],
-                            lub[LUB_WLF_C2])
+        eta = wlf_viscosity(
+            0.0,
+            T,
+            lub[LUB_WLF_MU_G],
+            lub[LUB_WLF_TG0],
+            lub[LUB_WLF_A1],
+            lub[LUB_WLF_A2],
+            lub[LUB_WLF_B1],
+            lub[LUB_WLF_B2],
+            lub[LUB_WLF_C1],
+            lub[LUB_WLF_C2],
+        )
         nu = eta / rho0
     else:
         eta = lub[LUB_ETA_CONST]
@@ -185,8 +203,17 @@ def lubricant_state(T, lub):
     if piezo == PIEZO_GOLD:
         xi = gold_pressure_viscosity(nu, lub[LUB_GOLD_S], lub[LUB_GOLD_T])
     elif piezo == PIEZO_WLF:
-        xi = wlf_alpha_star(T, lub[LUB_WLF_MU_G], lub[LUB_WLF_TG0], lub[LUB_WLF_A1], lub[LUB_WLF_A2],
-                            lub[LUB_WLF_B1], lub[LUB_WLF_B2], lub[LUB_WLF_C1], lub[LUB_WLF_C2])
+        xi = wlf_alpha_star(
+            T,
+            lub[LUB_WLF_MU_G],
+            lub[LUB_WLF_TG0],
+            lub[LUB_WLF_A1],
+            lub[LUB_WLF_A2],
+            lub[LUB_WLF_B1],
+            lub[LUB_WLF_B2],
+            lub[LUB_WLF_C1],
+            lub[LUB_WLF_C2],
+        )
     else:
         xi = lub[LUB_XI_CONST]
     return eta, xi, rho0

@@ -21,11 +21,13 @@ inner: tan beta = sin a_i/(cos a_i - g), hybrid: Rabreau's law with S = (1 + g c
 g = D/d_m); w_m and w_R follow from rolling without slip at both contact centres.
 Ring load of a ball: g_z = Q_i sin a_i - lam_i (M_g/D) cos a_i, g_r = Q_i cos a_i + lam_i (M_g/D) sin a_i,
 and the friction couple m_g = lam_i f_i M_g; the applied loads are
-  (F_x, F_y, F_z, M_x, M_y) = sum_j [g_r cos psi, g_r sin psi, g_z, (Rr_i g_z + m_g) sin psi, -(Rr_i g_z + m_g) cos psi].
+  (F_x, F_y, F_z, M_x, M_y)
+    = sum_j [g_r cos psi, g_r sin psi, g_z, (Rr_i g_z + m_g) sin psi, -(Rr_i g_z + m_g) cos psi].
 Stiffness K = dF/dd (5x5) by the chain rule with the ball equilibrium condensed (dX/dA from the
 implicit function theorem). Derivatives are analytic; those of the kinematic factors
 (beta, w_m, w_R -> F_c, M_g) w.r.t. (a_i, a_o, C) use the complex step, exact to rounding.
 """
+
 import cmath
 import math
 
@@ -33,58 +35,58 @@ import numpy as np
 from numba import njit
 
 # layout of the quasi-static bearing array (built by bearing_fmu.model)
-QS_Z = 0            # number of balls (-)
-QS_D = 1            # ball diameter (m)
-QS_DM = 2           # pitch diameter (m)
-QS_FI = 3           # inner groove conformity r_i/D (-)
-QS_FO = 4           # outer groove conformity r_o/D (-)
-QS_PD = 5           # nominal diametral clearance (m), negative = interference
-QS_ANGULAR = 6      # 1 = angular-contact (z = 0 where balls touch at alpha0), 0 = deep groove (z = 0 centred)
-QS_K_I = 7          # inner Hertz constant (N/m^1.5)
-QS_K_O = 8          # outer Hertz constant (N/m^1.5)
-QS_M_BALL = 9       # ball mass (kg)
-QS_RACE = 10        # race control code (RACE_*)
-QS_CENTRIFUGAL = 11 # 1 = centrifugal force on
+QS_Z = 0  # number of balls (-)
+QS_D = 1  # ball diameter (m)
+QS_DM = 2  # pitch diameter (m)
+QS_FI = 3  # inner groove conformity r_i/D (-)
+QS_FO = 4  # outer groove conformity r_o/D (-)
+QS_PD = 5  # nominal diametral clearance (m), negative = interference
+QS_ANGULAR = 6  # 1 = angular-contact (z = 0 where balls touch at alpha0), 0 = deep groove (z = 0 centred)
+QS_K_I = 7  # inner Hertz constant (N/m^1.5)
+QS_K_O = 8  # outer Hertz constant (N/m^1.5)
+QS_M_BALL = 9  # ball mass (kg)
+QS_RACE = 10  # race control code (RACE_*)
+QS_CENTRIFUGAL = 11  # 1 = centrifugal force on
 QS_GYROSCOPIC = 12  # 1 = gyroscopic moment on
-QS_C_HYB = 13       # hybrid law: a_i E_i / (a_o E_o) at equal loads (-), C = this (Q_i/Q_o)^(4/3)
-QS_TOL = 14         # relative tolerance of the global equilibrium (-)
-QS_MAXIT = 15       # iteration cap of the global Newton (-)
+QS_C_HYB = 13  # hybrid law: a_i E_i / (a_o E_o) at equal loads (-), C = this (Q_i/Q_o)^(4/3)
+QS_TOL = 14  # relative tolerance of the global equilibrium (-)
+QS_MAXIT = 15  # iteration cap of the global Newton (-)
 QS_SIZE = 16
 
 RACE_OUTER = 0
 RACE_INNER = 1
-RACE_HYBRID = 2     # hybrid pitch angle, gyroscopic moment shared in proportion to the spin moments
+RACE_HYBRID = 2  # hybrid pitch angle, gyroscopic moment shared in proportion to the spin moments
 # Other readings of the hybrid model's moment share (Rabreau's Table 1 is lost), for sensitivity
 # studies only (docs/reports/rabreau_torque_sensitivity.md); every code >= RACE_HYBRID is hybrid:
-RACE_HYBRID_OUTER_SPLIT = 3      # lam_i = 0, lam_o = 2 (the outer race takes it all, as in ORC)
-RACE_HYBRID_INNER_SPLIT = 4      # lam_i = 2, lam_o = 0 (the inner race takes it all, as in IRC)
-RACE_HYBRID_EQUAL_SPLIT = 5      # lam_i = lam_o = 1 (Harris without race control; from memory)
-RACE_HYBRID_CONTROLLING = 6      # all of it on the race with the larger spin moment (Jones' criterion)
+RACE_HYBRID_OUTER_SPLIT = 3  # lam_i = 0, lam_o = 2 (the outer race takes it all, as in ORC)
+RACE_HYBRID_INNER_SPLIT = 4  # lam_i = 2, lam_o = 0 (the inner race takes it all, as in IRC)
+RACE_HYBRID_EQUAL_SPLIT = 5  # lam_i = lam_o = 1 (Harris without race control; from memory)
+RACE_HYBRID_CONTROLLING = 6  # all of it on the race with the larger spin moment (Jones' criterion)
 
 # rows of the per-ball output array
-BQ_Q_I = 0      # inner contact load (N)
-BQ_Q_O = 1      # outer contact load (N)
-BQ_A_I = 2      # inner contact angle (rad)
-BQ_A_O = 3      # outer contact angle (rad)
-BQ_BETA = 4     # pitch angle of the ball spin axis (rad)
-BQ_W_M = 5      # orbital (cage) speed of the ball (rad/s)
-BQ_W_R = 6      # ball spin speed relative to the cage (rad/s, Harris sign)
-BQ_F_C = 7      # centrifugal force (N)
-BQ_M_G = 8      # gyroscopic moment (N.m, Harris sign)
-BQ_X1 = 9       # ball centre, axial, from the outer groove centre (m)
-BQ_X2 = 10      # ball centre, radial, from the outer groove centre (m)
-BQ_LAM_I = 11   # share of the gyroscopic moment taken by the inner race (-)
+BQ_Q_I = 0  # inner contact load (N)
+BQ_Q_O = 1  # outer contact load (N)
+BQ_A_I = 2  # inner contact angle (rad)
+BQ_A_O = 3  # outer contact angle (rad)
+BQ_BETA = 4  # pitch angle of the ball spin axis (rad)
+BQ_W_M = 5  # orbital (cage) speed of the ball (rad/s)
+BQ_W_R = 6  # ball spin speed relative to the cage (rad/s, Harris sign)
+BQ_F_C = 7  # centrifugal force (N)
+BQ_M_G = 8  # gyroscopic moment (N.m, Harris sign)
+BQ_X1 = 9  # ball centre, axial, from the outer groove centre (m)
+BQ_X2 = 10  # ball centre, radial, from the outer groove centre (m)
+BQ_LAM_I = 11  # share of the gyroscopic moment taken by the inner race (-)
 BQ_SPIN_I = 12  # spin speed at the inner contact (rad/s)
 BQ_SPIN_O = 13  # spin speed at the outer contact (rad/s)
-BQ_U_I = 14     # rolling (entrainment) speed at the inner contact (m/s)
-BQ_U_O = 15     # rolling (entrainment) speed at the outer contact (m/s)
+BQ_U_I = 14  # rolling (entrainment) speed at the inner contact (m/s)
+BQ_U_O = 15  # rolling (entrainment) speed at the outer contact (m/s)
 BQ_SIZE = 16
 
 # status codes of the solver
 QS_OK = 0
-QS_NOT_CONVERGED = 1       # iteration cap reached
+QS_NOT_CONVERGED = 1  # iteration cap reached
 QS_BALL_NOT_CONVERGED = 2  # a ball equilibrium failed
-QS_NOT_FINITE = 3          # NaN or inf appeared
+QS_NOT_FINITE = 3  # NaN or inf appeared
 
 _H_CSTEP = 1e-30  # complex-step increment: exact derivatives, no subtraction error
 _BALL_MAXIT = 60
@@ -147,7 +149,7 @@ def kinematics(a_i, a_o, C, omega, gp, dm, D, m_ball, race, centrifugal, gyrosco
         lam_o = 0.0 * one
         lam_i = 2.0 * one
     else:
-        S = (1.0 + gp * co) / (1.0 - gp * ci)   # Rabreau's S with its lost gamma restored (SPEC 4.10)
+        S = (1.0 + gp * co) / (1.0 - gp * ci)  # Rabreau's S with its lost gamma restored (SPEC 4.10)
         Ah = gp * C * (cmath.cos(a_i - a_o) - S)
         tan_beta = (C * (S + 1.0) * si + 2.0 * so) / (C * (S + 1.0) * ci + 2.0 * (co + gp) + Ah)
         lam_i = hybrid_inner_share(C, race)
@@ -384,7 +386,7 @@ def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond):
     status = 2
     _ball_eval(x1, x2, A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb, kg, w)
     res = math.hypot(w[0], w[1])
-    for it in range(_BALL_MAXIT):
+    for _ in range(_BALL_MAXIT):
         scale = w[25] + w[26] + abs(F_c0) + 1e-300
         if res <= 1e-13 * scale:
             status = 0
@@ -406,8 +408,28 @@ def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond):
         lam = 1.0
         accepted = False
         for _ in range(30):
-            _ball_eval(x1 + lam * s1, x2 + lam * s2, A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D,
-                       m_ball, race, cen, gyro, c_hyb, kg, w)
+            _ball_eval(
+                x1 + lam * s1,
+                x2 + lam * s2,
+                A1,
+                A2,
+                r_i,
+                r_o,
+                K_i,
+                K_o,
+                f_i,
+                omega,
+                gp,
+                dm,
+                D,
+                m_ball,
+                race,
+                cen,
+                gyro,
+                c_hyb,
+                kg,
+                w,
+            )
             trial = math.hypot(w[0], w[1])
             if trial < res:
                 accepted = True
@@ -415,8 +437,28 @@ def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond):
             lam *= 0.5
         if not accepted:  # take the full step: leaves a plateau (no contact) where the norm is flat
             lam = 1.0
-            _ball_eval(x1 + s1, x2 + s2, A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D,
-                       m_ball, race, cen, gyro, c_hyb, kg, w)
+            _ball_eval(
+                x1 + s1,
+                x2 + s2,
+                A1,
+                A2,
+                r_i,
+                r_o,
+                K_i,
+                K_o,
+                f_i,
+                omega,
+                gp,
+                dm,
+                D,
+                m_ball,
+                race,
+                cen,
+                gyro,
+                c_hyb,
+                kg,
+                w,
+            )
             trial = math.hypot(w[0], w[1])
         x1 += lam * s1
         x2 += lam * s2
@@ -504,9 +546,9 @@ def bearing_loads(d, qs, dPd, omega, X, F, K, balls):
         F[4] -= mom * cp
         # dF/dd = T^T (dg/dA) T + e_m (dm/dA) T
         for a in range(5):
-            row_z = cond[3] * t1[a] + cond[4] * t2[a]   # d g_z / dd_a
-            row_r = cond[5] * t1[a] + cond[6] * t2[a]   # d g_r / dd_a
-            row_m = cond[7] * t1[a] + cond[8] * t2[a]   # d m_g / dd_a
+            row_z = cond[3] * t1[a] + cond[4] * t2[a]  # d g_z / dd_a
+            row_r = cond[5] * t1[a] + cond[6] * t2[a]  # d g_r / dd_a
+            row_m = cond[7] * t1[a] + cond[8] * t2[a]  # d m_g / dd_a
             for i in range(5):
                 K[i, a] += t1[i] * row_z + t2[i] * row_r + em[i] * row_m
         _ball_outputs(j, cond, X, A1, A2, omega, gp, dm, D, qs, race, cen, gyro, balls)
@@ -519,8 +561,9 @@ def _ball_outputs(j, cond, X, A1, A2, omega, gp, dm, D, qs, race, cen, gyro, bal
     a_i = cond[11]
     a_o = cond[12]
     C = cond[13]
-    F_c, Mgo, Mgi, w_m, w_R, beta = kinematics(complex(a_i, 0.0), complex(a_o, 0.0), complex(C, 0.0), omega,
-                                               gp, dm, D, qs[QS_M_BALL], race, cen, gyro)
+    F_c, Mgo, Mgi, w_m, w_R, beta = kinematics(
+        complex(a_i, 0.0), complex(a_o, 0.0), complex(C, 0.0), omega, gp, dm, D, qs[QS_M_BALL], race, cen, gyro
+    )
     w_m = w_m.real
     w_R = w_R.real
     beta = beta.real
@@ -595,7 +638,7 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
     A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
     tol = qs[QS_TOL]
     maxit = int(qs[QS_MAXIT])
-    scale = np.array([1.0, 1.0, 1.0, Rr, Rr])   # rotations as arc lengths at Rr, moments as forces
+    scale = np.array([1.0, 1.0, 1.0, Rr, Rr])  # rotations as arc lengths at Rr, moments as forces
     idx = np.empty(5, np.int64)
     n = 0
     for i in range(5):

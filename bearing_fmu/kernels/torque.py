@@ -22,6 +22,7 @@ Bearing-level cross-check (note 4d): Palmgren 1959, Ball and Roller Bearing Engi
 pp. 34-41, tables as in Harris, Rolling Bearing Analysis (memory, estimated), M = M0 + M1, and the
 ISO 76 static rating C0 that enters f1.
 """
+
 import math
 
 from numba import njit
@@ -46,7 +47,7 @@ _c2 = HEATHCOTE_BAND * HEATHCOTE_BAND
 
 
 def _heathcote_primitive(s):
-    return _c2 * s - (1.0 + _c2) * s ** 3 / 3.0 + s ** 5 / 5.0
+    return _c2 * s - (1.0 + _c2) * s**3 / 3.0 + s**5 / 5.0
 
 
 HEATHCOTE_INTEGRAL = 2.0 * (2.0 * _heathcote_primitive(HEATHCOTE_BAND) - _heathcote_primitive(1.0))
@@ -65,11 +66,49 @@ LUB_OIL_JET = 2  # also oil bath with a vertical shaft
 # Hertz pressure of 4200 MPa on the governing contact (inner groove 0.52 D, outer 0.53 D,
 # E = 207 GPa, nu = 0.3, Stribeck factor 5), which the twin computes; all round to the table's
 # digit except gamma = 0.13 (15.6 here, 15.65 from Hertz).
-ISO76_F0 = (14.7, 14.9, 15.1, 15.3, 15.5, 15.7, 15.9, 16.1, 16.3, 16.5,
-            16.4, 16.1, 15.9, 15.6, 15.4, 15.2, 14.9, 14.7, 14.4, 14.2,
-            14.0, 13.7, 13.5, 13.2, 13.0, 12.8, 12.5, 12.3, 12.1, 11.8,
-            11.6, 11.4, 11.2, 10.9, 10.7, 10.5, 10.3, 10.0, 9.8, 9.6,
-            9.4)
+ISO76_F0 = (
+    14.7,
+    14.9,
+    15.1,
+    15.3,
+    15.5,
+    15.7,
+    15.9,
+    16.1,
+    16.3,
+    16.5,
+    16.4,
+    16.1,
+    15.9,
+    15.6,
+    15.4,
+    15.2,
+    14.9,
+    14.7,
+    14.4,
+    14.2,
+    14.0,
+    13.7,
+    13.5,
+    13.2,
+    13.0,
+    12.8,
+    12.5,
+    12.3,
+    12.1,
+    11.8,
+    11.6,
+    11.4,
+    11.2,
+    10.9,
+    10.7,
+    10.5,
+    10.3,
+    10.0,
+    9.8,
+    9.6,
+    9.4,
+)
 ISO76_GAMMA_STEP = 0.01
 ISO76_GAMMA_MAX = 0.40
 
@@ -88,7 +127,7 @@ def houpert_rolling_force(Q, u_mean, Rx, Ry, E_red, eta, xi):
     U = eta * abs(u_mean) / (E_red * Rx)
     W = Q / (E_red * Rx * Rx)
     G = xi * E_red
-    return 2.765 * E_red * Rx * Rx * (Ry / Rx) ** 0.35 * U ** 0.656 * W ** 0.466 * G ** 0.022
+    return 2.765 * E_red * Rx * Rx * (Ry / Rx) ** 0.35 * U**0.656 * W**0.466 * G**0.022
 
 
 @njit(cache=True)
@@ -189,8 +228,8 @@ def palmgren_viscous_torque(f0, nu_cSt, n_rpm, dm):
     """
     nn = nu_cSt * abs(n_rpm)
     if nn >= 2000.0:
-        return 0.1 * f0 * nn ** (2.0 / 3.0) * dm ** 3
-    return 16.0 * f0 * dm ** 3
+        return 0.1 * f0 * nn ** (2.0 / 3.0) * dm**3
+    return 16.0 * f0 * dm**3
 
 
 @njit(cache=True)

@@ -5,6 +5,7 @@ the path of a TOML file in the same format (docs/parameters.md). Every value is 
 presence, unit and physical range; a failure raises ParameterError naming the file, the key and
 the allowed range.
 """
+
 import math
 import tomllib
 from dataclasses import dataclass, field
@@ -71,7 +72,9 @@ def _value(doc, dotted, spec, path, required=True, default=None):
             return default
         node = node[part]
     if not isinstance(node, dict) or "value" not in node:
-        raise ParameterError(f"{path}: '{dotted}' must be a table {{ value = ..., unit = \"{spec.unit}\", source = ... }}")
+        raise ParameterError(
+            f"{path}: '{dotted}' must be a table {{ value = ..., unit = \"{spec.unit}\", source = ... }}"
+        )
     unit = node.get("unit")
     if unit != spec.unit:
         raise ParameterError(f"{path}: '{dotted}' has unit '{unit}', expected '{spec.unit}'")
@@ -84,8 +87,8 @@ def _value(doc, dotted, spec, path, required=True, default=None):
     if not (low_ok and value <= spec.high):
         bracket = "]" if spec.low_open else "["
         raise ParameterError(
-            f"{path}: '{dotted}' = {value} {spec.unit} is outside the allowed range "
-            f"{bracket}{spec.low}, {spec.high}]")
+            f"{path}: '{dotted}' = {value} {spec.unit} is outside the allowed range {bracket}{spec.low}, {spec.high}]"
+        )
     return float(value)
 
 
@@ -97,29 +100,30 @@ DENSITY = Spec("kg/m^3", 100.0, 30000.0)
 
 @dataclass(frozen=True)
 class Material:
-    E: float    # Pa
-    nu: float   # -
+    E: float  # Pa
+    nu: float  # -
     rho: float  # kg/m^3
 
 
 @dataclass(frozen=True)
 class Bearing:
     """Bearing geometry and materials (SI). Values documented in the TOML file."""
+
     name: str
     kind: str
     path: str
-    D: float            # ball diameter (m)
-    dm: float           # pitch diameter (m)
-    f_i: float          # inner groove conformity (-)
-    f_o: float          # outer groove conformity (-)
-    Z: int              # number of balls (-)
-    Pd: float           # diametral clearance (m), negative = preload
-    alpha0: float       # nominal contact angle (rad)
+    D: float  # ball diameter (m)
+    dm: float  # pitch diameter (m)
+    f_i: float  # inner groove conformity (-)
+    f_o: float  # outer groove conformity (-)
+    Z: int  # number of balls (-)
+    Pd: float  # diametral clearance (m), negative = preload
+    alpha0: float  # nominal contact angle (rad)
     ball: Material
     ring: Material
-    Ra_inner: float     # inner race roughness Ra (m)
-    Ra_outer: float     # outer race roughness Ra (m)
-    Ra_ball: float      # ball roughness Ra (m)
+    Ra_inner: float  # inner race roughness Ra (m)
+    Ra_outer: float  # outer race roughness Ra (m)
+    Ra_ball: float  # ball roughness Ra (m)
     cage_ball_radius: float = 0.0  # DEM cage-ball radius (m), 0 if absent
     extras: dict = field(default_factory=dict)
 
@@ -128,7 +132,8 @@ def _material(doc, section, path):
     return Material(
         E=_value(doc, f"{section}.E", MODULUS, path),
         nu=_value(doc, f"{section}.nu", POISSON, path),
-        rho=_value(doc, f"{section}.rho", DENSITY, path))
+        rho=_value(doc, f"{section}.rho", DENSITY, path),
+    )
 
 
 def load_bearing(name_or_path):
@@ -149,8 +154,11 @@ def load_bearing(name_or_path):
         raise ParameterError(f"{path}: 'geometry.n_balls' = {Z} must be a whole number in [3, 200]")
     max_clearance = 0.1 * D
     bearing = Bearing(
-        name=str(meta.get("name", path.stem)), kind=kind, path=str(path),
-        D=D, dm=dm,
+        name=str(meta.get("name", path.stem)),
+        kind=kind,
+        path=str(path),
+        D=D,
+        dm=dm,
         f_i=_value(doc, "geometry.inner_conformity", conf, path),
         f_o=_value(doc, "geometry.outer_conformity", conf, path),
         Z=int(Z),
@@ -161,18 +169,19 @@ def load_bearing(name_or_path):
         Ra_inner=_value(doc, "surface.inner_race_Ra", Spec("m", 0.0, 1e-4), path),
         Ra_outer=_value(doc, "surface.outer_race_Ra", Spec("m", 0.0, 1e-4), path),
         Ra_ball=_value(doc, "surface.ball_Ra", Spec("m", 0.0, 1e-4), path),
-        cage_ball_radius=_value(doc, "cage.ball_radius", Spec("m", 0.0, 1.0, True), path,
-                                required=False, default=0.0),
+        cage_ball_radius=_value(doc, "cage.ball_radius", Spec("m", 0.0, 1.0, True), path, required=False, default=0.0),
     )
     if math.pi * dm < bearing.Z * D:
-        raise ParameterError(f"{path}: {bearing.Z} balls of {D} m do not fit on the pitch circle "
-                             f"(pi d_m = {math.pi * dm:.4g} m)")
+        raise ParameterError(
+            f"{path}: {bearing.Z} balls of {D} m do not fit on the pitch circle (pi d_m = {math.pi * dm:.4g} m)"
+        )
     return bearing
 
 
 @dataclass(frozen=True)
 class Lubricant:
     """Lubricant parameters (SI) and their packed kernel array (kernels.lubricant LUB_* layout)."""
+
     name: str
     path: str
     array: np.ndarray
@@ -241,10 +250,12 @@ def load_lubricant(name_or_path):
         raise ParameterError(f"{path}: 'pressure_viscosity.model' = {piezo!r}, allowed: 'constant', 'gold', 'wlf'")
 
     arr[lk.LUB_EPS_R0] = _value(doc, "electrical.relative_permittivity", Spec("-", 1.0, 100.0, True), path)
-    reference = {k: v["value"] for k, v in doc.get("reference_313K", {}).items()
-                 if isinstance(v, dict) and "value" in v}
-    return Lubricant(name=str(doc.get("meta", {}).get("name", path.stem)), path=str(path),
-                     array=arr, reference=reference)
+    reference = {
+        k: v["value"] for k, v in doc.get("reference_313K", {}).items() if isinstance(v, dict) and "value" in v
+    }
+    return Lubricant(
+        name=str(doc.get("meta", {}).get("name", path.stem)), path=str(path), array=arr, reference=reference
+    )
 
 
 def _pack_wlf(doc, arr, path):

@@ -9,6 +9,7 @@ A step is refused (do_step returns False, with an error logged) when h > h_max o
 the message contains a '%' (escaped for pythonfmu's printf-style log) to check that a master shows
 it verbatim.
 """
+
 from pythonfmu import Fmi2Slave
 from pythonfmu.enums import Fmi2Causality, Fmi2Initial, Fmi2Status, Fmi2Variability
 from pythonfmu.variables import Integer, Real
@@ -25,29 +26,58 @@ class ClockSlave(Fmi2Slave):
         self.t_start = self.t_end = self.x = 0.0
         self.n_steps = 0
         self._n_calls = 0
-        self.register_variable(Real("u", causality=Fmi2Causality.input, variability=Fmi2Variability.continuous,
-                                    start=0.0))
+        self.register_variable(
+            Real("u", causality=Fmi2Causality.input, variability=Fmi2Variability.continuous, start=0.0)
+        )
         for name in ("h_max", "fail_at"):
-            self.register_variable(Real(name, causality=Fmi2Causality.parameter, variability=Fmi2Variability.fixed,
-                                        initial=Fmi2Initial.exact, start=1e300))
+            self.register_variable(
+                Real(
+                    name,
+                    causality=Fmi2Causality.parameter,
+                    variability=Fmi2Variability.fixed,
+                    initial=Fmi2Initial.exact,
+                    start=1e300,
+                )
+            )
         for name in ("t_start", "t_end", "x"):
-            self.register_variable(Real(name, causality=Fmi2Causality.output, variability=Fmi2Variability.continuous,
-                                        initial=Fmi2Initial.exact))
-        self.register_variable(Integer("n_steps", causality=Fmi2Causality.output,
-                                       variability=Fmi2Variability.discrete, initial=Fmi2Initial.exact))
-        self.register_variable(Integer("n_calls", causality=Fmi2Causality.output,
-                                       variability=Fmi2Variability.discrete, initial=Fmi2Initial.exact,
-                                       getter=lambda: self._n_calls, setter=lambda value: None))
+            self.register_variable(
+                Real(
+                    name,
+                    causality=Fmi2Causality.output,
+                    variability=Fmi2Variability.continuous,
+                    initial=Fmi2Initial.exact,
+                )
+            )
+        self.register_variable(
+            Integer(
+                "n_steps",
+                causality=Fmi2Causality.output,
+                variability=Fmi2Variability.discrete,
+                initial=Fmi2Initial.exact,
+            )
+        )
+        self.register_variable(
+            Integer(
+                "n_calls",
+                causality=Fmi2Causality.output,
+                variability=Fmi2Variability.discrete,
+                initial=Fmi2Initial.exact,
+                getter=lambda: self._n_calls,
+                setter=lambda value: None,
+            )
+        )
 
     def do_step(self, current_time, step_size):
         self._n_calls += 1
         if step_size > self.h_max:
-            self.log(f"{self.instance_name}: step h = {step_size!r} s > h_max = {self.h_max!r} s: refused "
-                     f"(100%% of the step)", Fmi2Status.error)
+            self.log(
+                f"{self.instance_name}: step h = {step_size!r} s > h_max = {self.h_max!r} s: refused "
+                f"(100%% of the step)",
+                Fmi2Status.error,
+            )
             return False
         if current_time >= self.fail_at:
-            self.log(f"{self.instance_name}: t = {current_time!r} s >= fail_at: refused (100%% sure)",
-                     Fmi2Status.error)
+            self.log(f"{self.instance_name}: t = {current_time!r} s >= fail_at: refused (100%% sure)", Fmi2Status.error)
             return False
         self.t_start = current_time
         self.t_end = current_time + step_size

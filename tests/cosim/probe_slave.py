@@ -5,6 +5,7 @@ initialisation mode. x: state, x += u * H in each doStep (so x shows which u a s
 n_set_inst / n_set_init / n_set: number of fmi2SetReal(u) calls in the instantiated state, in
 initialisation mode, in total.
 """
+
 from pythonfmu import Fmi2Slave
 from pythonfmu.enums import Fmi2Causality, Fmi2Initial, Fmi2Variability
 from pythonfmu.variables import Integer, Real
@@ -19,15 +20,36 @@ class ProbeSlave(Fmi2Slave):
         self._mode = "instantiated"
         self.x = 0.0
         self.n_set = self.n_set_init = self.n_set_inst = 0
-        self.register_variable(Real("u", causality=Fmi2Causality.input, variability=Fmi2Variability.continuous,
-                                    getter=lambda: self._u, setter=self._set_u))
-        self.register_variable(Real("y", causality=Fmi2Causality.output, variability=Fmi2Variability.continuous,
-                                    initial=Fmi2Initial.exact, getter=lambda: self._u + 1.0))
-        self.register_variable(Real("x", causality=Fmi2Causality.output, variability=Fmi2Variability.continuous,
-                                    initial=Fmi2Initial.exact))
+        self.register_variable(
+            Real(
+                "u",
+                causality=Fmi2Causality.input,
+                variability=Fmi2Variability.continuous,
+                getter=lambda: self._u,
+                setter=self._set_u,
+            )
+        )
+        self.register_variable(
+            Real(
+                "y",
+                causality=Fmi2Causality.output,
+                variability=Fmi2Variability.continuous,
+                initial=Fmi2Initial.exact,
+                getter=lambda: self._u + 1.0,
+            )
+        )
+        self.register_variable(
+            Real("x", causality=Fmi2Causality.output, variability=Fmi2Variability.continuous, initial=Fmi2Initial.exact)
+        )
         for name in ("n_set", "n_set_init", "n_set_inst"):
-            self.register_variable(Integer(name, causality=Fmi2Causality.output,
-                                           variability=Fmi2Variability.discrete, initial=Fmi2Initial.exact))
+            self.register_variable(
+                Integer(
+                    name,
+                    causality=Fmi2Causality.output,
+                    variability=Fmi2Variability.discrete,
+                    initial=Fmi2Initial.exact,
+                )
+            )
 
     def _set_u(self, value):
         self._u = value

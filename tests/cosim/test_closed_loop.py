@@ -12,6 +12,7 @@ Runs are in-process (the master's own process: what a user does). The fixed-prel
 H = 0.1 s are the expensive ones (about 25 s for the 1 h run at 6000 rpm, 3 s for the runaway that
 stops itself after about 12 min); everything else takes a few seconds.
 """
+
 import numpy as np
 import pytest
 
@@ -24,8 +25,16 @@ FIXED = ROOT / "runs" / "closed_loop_fixed.toml"
 OMEGA_6000 = 628.3185307179587  # rad/s
 AT_6000 = {"bearing_1.omega": OMEGA_6000, "bearing_2.omega": OMEGA_6000, "spindle.omega": OMEGA_6000}
 STEPS = (0.1, 1.0, 5.0)  # s, the communication steps of the issue; 0.1 s is the reference
-TEMPERATURES = ["spindle.T_shaft", "spindle.T_housing", "spindle.T_inner_ring_1", "spindle.T_outer_ring_1",
-                "spindle.T_inner_ring_2", "spindle.T_outer_ring_2", "spindle.T_oil_1", "spindle.T_oil_2"]
+TEMPERATURES = [
+    "spindle.T_shaft",
+    "spindle.T_housing",
+    "spindle.T_inner_ring_1",
+    "spindle.T_outer_ring_1",
+    "spindle.T_inner_ring_2",
+    "spindle.T_outer_ring_2",
+    "spindle.T_oil_1",
+    "spindle.T_oil_2",
+]
 
 
 def at(result, t):

@@ -10,6 +10,7 @@ The libcosim runs are in-process: libcosim calls the pythonfmu FMUs from its wor
 takes the GIL, and run_libcosim destroys the execution before returning. 30 consecutive fresh
 processes exited 0 when this was written; `test_fresh_processes_exit_0` keeps checking a few (SPEC 3).
 """
+
 import shutil
 import subprocess
 import sys
@@ -25,8 +26,8 @@ pytest.importorskip("libcosimpy", reason="libcosimpy not installed (optional ext
 from fmpy import extract, read_model_description  # noqa: E402
 from fmpy.fmi2 import FMU2Slave  # noqa: E402
 
-from tests.cosim.conftest import build_test_fmu  # noqa: E402
 from spindle.libcosim_master import LibcosimError, cross_check, libcosim_version, run_libcosim  # noqa: E402
+from tests.cosim.conftest import build_test_fmu  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -37,8 +38,12 @@ class _Instance:
         self.md = read_model_description(str(path))
         self.vars = {v.name: v for v in self.md.modelVariables}
         self.unzip = extract(str(path))
-        self.fmu = FMU2Slave(guid=self.md.guid, unzipDirectory=self.unzip, instanceName=name,
-                             modelIdentifier=self.md.coSimulation.modelIdentifier)
+        self.fmu = FMU2Slave(
+            guid=self.md.guid,
+            unzipDirectory=self.unzip,
+            instanceName=name,
+            modelIdentifier=self.md.coSimulation.modelIdentifier,
+        )
         self.fmu.instantiate()
 
     def get(self, name):
@@ -107,8 +112,21 @@ def probe_fmu(tmp_path_factory):
     return build_test_fmu("probe_slave.py", "ProbeSlave", tmp_path_factory)
 
 
-ANALYTIC_OUTPUTS = ["Lambda_inner", "Lambda_outer", "h_min_inner", "h_min_outer", "C_bearing",
-                    "Q_max_inner", "p_max", "omega_cage", "omega_ball", "y", "epsilon", "regime", "n_loaded"]
+ANALYTIC_OUTPUTS = [
+    "Lambda_inner",
+    "Lambda_outer",
+    "h_min_inner",
+    "h_min_outer",
+    "C_bearing",
+    "Q_max_inner",
+    "p_max",
+    "omega_cage",
+    "omega_ball",
+    "y",
+    "epsilon",
+    "regime",
+    "n_loaded",
+]
 
 
 # -- tests -------------------------------------------------------------------------------------
@@ -117,9 +135,15 @@ def test_version():
 
 
 def test_analytic_fmu_same_as_fmpy(analytic_fmu):
-    system = {"instances": {"b": {"fmu": str(analytic_fmu),
-                                  "parameters": {"bearing": "6208", "lubricant": "guessasma_oil", "Pd": 0.0},
-                                  "inputs": {"omega": 500.0, "F_y": 3000.0, "T_oil": 313.15}}}}
+    system = {
+        "instances": {
+            "b": {
+                "fmu": str(analytic_fmu),
+                "parameters": {"bearing": "6208", "lubricant": "guessasma_oil", "Pd": 0.0},
+                "inputs": {"omega": 500.0, "F_y": 3000.0, "T_oil": 313.15},
+            }
+        }
+    }
     record = [f"b.{o}" for o in ANALYTIC_OUTPUTS] + ["b.omega"]
     result = run_libcosim(system, 0.1, 0.5, record)
     assert result["time"].tolist() == pytest.approx([0.0, 0.1, 0.2, 0.3, 0.4, 0.5], abs=1e-15)
@@ -137,8 +161,9 @@ def test_parameters_of_every_type_reach_the_fmu(bearing_fmu):
     system = {"instances": {"b": {"fmu": str(bearing_fmu), "parameters": changed, "inputs": inputs}}}
     result = run_libcosim(system, 1.0, 3.0, record)
     assert_same(result, fmpy_jacobi(system, 1.0, 3.0, record), record)
-    default = fmpy_jacobi({"instances": {"b": {"fmu": str(bearing_fmu), "parameters": base, "inputs": inputs}}},
-                          1.0, 3.0, record)
+    default = fmpy_jacobi(
+        {"instances": {"b": {"fmu": str(bearing_fmu), "parameters": base, "inputs": inputs}}}, 1.0, 3.0, record
+    )
     assert result["b.torque"][-1] != default["b.torque"][-1]  # the String/Boolean/Real parameters took effect
 
 
@@ -147,15 +172,28 @@ def test_coupled_instances_jacobi_same_as_fmpy(analytic_fmu):
     initialisation-mode outputs (A's initial F_y = 3000 is overwritten by B's Q_max_inner at
     instantiation, 0) and then lag their sources by one step (Jacobi)."""
     fmu = str(analytic_fmu)
-    system = {"instances": {"A": {"fmu": fmu, "inputs": {"omega": 500.0, "F_y": 3000.0}},
-                            "B": {"fmu": fmu, "inputs": {"F_y": 2000.0}}},
-              "connections": [("A.omega_cage", "B.omega"), ("B.Q_max_inner", "A.F_y")]}
-    record = ["A.F_y", "A.Q_max_inner", "A.omega_cage", "A.Lambda_inner",
-              "B.omega", "B.omega_cage", "B.Q_max_inner", "B.Lambda_inner", "B.C_bearing"]
+    system = {
+        "instances": {
+            "A": {"fmu": fmu, "inputs": {"omega": 500.0, "F_y": 3000.0}},
+            "B": {"fmu": fmu, "inputs": {"F_y": 2000.0}},
+        },
+        "connections": [("A.omega_cage", "B.omega"), ("B.Q_max_inner", "A.F_y")],
+    }
+    record = [
+        "A.F_y",
+        "A.Q_max_inner",
+        "A.omega_cage",
+        "A.Lambda_inner",
+        "B.omega",
+        "B.omega_cage",
+        "B.Q_max_inner",
+        "B.Lambda_inner",
+        "B.C_bearing",
+    ]
     result = run_libcosim(system, 0.5, 3.0, record)
     assert_same(result, fmpy_jacobi(system, 0.5, 3.0, record), record)
     assert result["A.F_y"][0] == 0.0 and result["B.omega"][0] == 0.0
-    np.testing.assert_array_equal(result["B.omega"][1:], result["A.omega_cage"][:-1])   # one-step lag
+    np.testing.assert_array_equal(result["B.omega"][1:], result["A.omega_cage"][:-1])  # one-step lag
     np.testing.assert_array_equal(result["A.F_y"][1:], result["B.Q_max_inner"][:-1])
     _, errors = cross_check(system, 0.5, 3.0, record, fmpy_jacobi(system, 0.5, 3.0, record), rtol=1e-12)
     assert max(errors.values()) <= 1e-12
@@ -167,8 +205,10 @@ def test_algorithm_semantics_with_probe(probe_fmu):
     names = ("u", "y", "x", "n_set", "n_set_init", "n_set_inst")
     # loop A <-> B, A.u given 10: init rounds (N = 2) set A.u 10 -> 8 -> 12 and B.u 11 -> 9;
     # after exit: transfer B.u := 13, A.u := 10; steps are Jacobi
-    loop = {"instances": {"A": {"fmu": p, "inputs": {"u": 10.0}}, "B": {"fmu": p}},
-            "connections": [("A.y", "B.u"), ("B.y", "A.u")]}
+    loop = {
+        "instances": {"A": {"fmu": p, "inputs": {"u": 10.0}}, "B": {"fmu": p}},
+        "connections": [("A.y", "B.u"), ("B.y", "A.u")],
+    }
     record = [f"{i}.{n}" for i in "AB" for n in names]
     r = run_libcosim(loop, 0.5, 1.5, record)
     assert r["A.u"].tolist() == [12.0, 10.0, 14.0, 12.0]
@@ -178,8 +218,10 @@ def test_algorithm_semantics_with_probe(probe_fmu):
     assert r["A.n_set_init"][0] == 3 and r["B.n_set_init"][0] == 2  # initial value + N rounds
     assert_same(r, fmpy_jacobi(loop, 0.5, 1.5, record), record)
     # chain A -> B -> C: the N = 3 rounds carry A's initial value through the chain before t = 0
-    chain = {"instances": {"A": {"fmu": p, "inputs": {"u": 10.0}}, "B": {"fmu": p}, "C": {"fmu": p}},
-             "connections": [("A.y", "B.u"), ("B.y", "C.u")]}
+    chain = {
+        "instances": {"A": {"fmu": p, "inputs": {"u": 10.0}}, "B": {"fmu": p}, "C": {"fmu": p}},
+        "connections": [("A.y", "B.u"), ("B.y", "C.u")],
+    }
     record = [f"{i}.{n}" for i in "ABC" for n in names]
     r = run_libcosim(chain, 0.5, 1.0, record)
     assert r["C.u"].tolist() == [12.0, 12.0, 12.0] and r["C.n_set_init"][0] == 3
@@ -193,19 +235,26 @@ def test_errors_name_instance_and_variable(analytic_fmu):
     with pytest.raises(LibcosimError, match=r"c\.y: no such instance"):
         run_libcosim({"instances": {"b": {"fmu": fmu}}}, 0.1, 0.2, ["c.y"])
     with pytest.raises(LibcosimError, match=r"b\.regime -> c\.omega: types differ"):
-        run_libcosim({"instances": {"b": {"fmu": fmu}, "c": {"fmu": fmu}},
-                      "connections": [("b.regime", "c.omega")]}, 0.1, 0.2, ["b.y"])
+        run_libcosim(
+            {"instances": {"b": {"fmu": fmu}, "c": {"fmu": fmu}}, "connections": [("b.regime", "c.omega")]},
+            0.1,
+            0.2,
+            ["b.y"],
+        )
     with pytest.raises(LibcosimError, match=r"b\.omega -> c\.omega: cannot connect"):
-        run_libcosim({"instances": {"b": {"fmu": fmu}, "c": {"fmu": fmu}},
-                      "connections": [("b.omega", "c.omega")]}, 0.1, 0.2, ["b.y"])
+        run_libcosim(
+            {"instances": {"b": {"fmu": fmu}, "c": {"fmu": fmu}}, "connections": [("b.omega", "c.omega")]},
+            0.1,
+            0.2,
+            ["b.y"],
+        )
     with pytest.raises(LibcosimError, match=r"b\.omega: Real value expected"):
         run_libcosim({"instances": {"b": {"fmu": fmu, "inputs": {"omega": "100"}}}}, 0.1, 0.2, ["b.y"])
     with pytest.raises(LibcosimError, match="whole number"):
         run_libcosim({"instances": {"b": {"fmu": fmu}}}, 0.1, 0.25, ["b.y"])
     # bad input: the FMU answers fmi2Discard with a logged message; the step fails, the host survives
     with pytest.raises(LibcosimError, match="b: Step not complete"):
-        run_libcosim({"instances": {"b": {"fmu": fmu, "inputs": {"T_oil": -5.0, "omega": 100.0}}}},
-                     0.1, 0.2, ["b.y"])
+        run_libcosim({"instances": {"b": {"fmu": fmu, "inputs": {"T_oil": -5.0, "omega": 100.0}}}}, 0.1, 0.2, ["b.y"])
     assert run_libcosim({"instances": {"b": {"fmu": fmu}}}, 0.1, 0.1, ["b.y"]).shape == (2,)
 
 

@@ -12,6 +12,7 @@ uses and refuses steps on demand. Some tests drive Master's own stepping methods
 _macro_step, _values) to replay a given time grid: that is the definition of "the same run on that
 grid", which no run file can express.
 """
+
 import csv
 import math
 
@@ -30,11 +31,27 @@ from spindle.runfile import RunFileError, parse_run
 OMEGA = 1047.1975511965977  # rad/s, 10 000 rpm (runs/closed_loop_spring.toml)
 BEARING_INPUTS = {"omega": OMEGA, "F_z": 800.0}
 SPINDLE_INPUTS = {"omega": OMEGA, "T_ambient": 293.15, "T_coolant": 293.15, "P_motor": 0.0}
-LOOP = [("bearing_1.Q_inner_ring", "spindle.Q_inner_ring_1"), ("bearing_1.Q_outer_ring", "spindle.Q_outer_ring_1"),
-        ("spindle.T_oil_1", "bearing_1.T_oil"), ("spindle.dPd_thermal_1", "bearing_1.dPd_thermal")]
-RECORD = ["spindle.Q_inner_ring_1", "spindle.Q_outer_ring_1", "bearing_1.T_oil", "bearing_1.dPd_thermal",
-          "bearing_1.torque", "bearing_1.z", "bearing_1.alpha_outer", "spindle.T_inner_ring_1",
-          "spindle.T_outer_ring_1", "spindle.T_shaft", "spindle.T_housing", "spindle.P_out", "spindle.E_stored"]
+LOOP = [
+    ("bearing_1.Q_inner_ring", "spindle.Q_inner_ring_1"),
+    ("bearing_1.Q_outer_ring", "spindle.Q_outer_ring_1"),
+    ("spindle.T_oil_1", "bearing_1.T_oil"),
+    ("spindle.dPd_thermal_1", "bearing_1.dPd_thermal"),
+]
+RECORD = [
+    "spindle.Q_inner_ring_1",
+    "spindle.Q_outer_ring_1",
+    "bearing_1.T_oil",
+    "bearing_1.dPd_thermal",
+    "bearing_1.torque",
+    "bearing_1.z",
+    "bearing_1.alpha_outer",
+    "spindle.T_inner_ring_1",
+    "spindle.T_outer_ring_1",
+    "spindle.T_shaft",
+    "spindle.T_housing",
+    "spindle.P_out",
+    "spindle.E_stored",
+]
 
 
 def loop_doc(bearing, spindle, **run):
@@ -44,9 +61,12 @@ def loop_doc(bearing, spindle, **run):
     return {
         "run": {"stop": 40.0, "step": 5.0, "order": ["bearing_1", "spindle"], "record": list(RECORD), **run},
         "fmus": {"bearing": str(bearing), "spindle": str(spindle)},
-        "instances": {"bearing_1": {"fmu": "bearing", "inputs": dict(BEARING_INPUTS)},
-                      "spindle": {"fmu": "spindle", "inputs": dict(SPINDLE_INPUTS)}},
-        "connections": [{"from": s, "to": t} for s, t in LOOP]}
+        "instances": {
+            "bearing_1": {"fmu": "bearing", "inputs": dict(BEARING_INPUTS)},
+            "spindle": {"fmu": "spindle", "inputs": dict(SPINDLE_INPUTS)},
+        },
+        "connections": [{"from": s, "to": t} for s, t in LOOP],
+    }
 
 
 def spec_of(doc, overrides=None):
@@ -67,20 +87,38 @@ def _two_problems(doc):
     doc["run"]["stop"] = 41.0
 
 
-@pytest.mark.parametrize("mutate,message", [
-    (_unknown_instance, r"connection \('bearing_9\.Q_inner_ring', 'spindle\.Q_inner_ring_1'\): "
-                        r"unknown instance 'bearing_9'"),
-    (lambda d: d["run"].update(algorithm="newton"), r"run\.algorithm = 'newton': allowed \['gauss_seidel', 'jacobi'\]"),
-    (lambda d: d["run"].update(stop=41.0), r"run\.stop - run\.start = 41\.0 s is not a whole number of steps of 5\.0 s"),
-    (_twice, r"input spindle\.Q_inner_ring_1 is connected twice"),
-    (lambda d: d["run"].update(stpo=10.0), r"\[run\]: unknown key\(s\) \['stpo'\]"),
-    (lambda d: d.update(instance={}), r"the run file: unknown key\(s\) \['instance'\]"),
-    (lambda d: d["instances"]["spindle"].update(fmu="spindel"), r"instance spindle: fmu = 'spindel' is not in \[fmus\]"),
-    (lambda d: d["run"].update(order=["bearing_1"]), r"run\.order = \['bearing_1'\] must list every instance once"),
-    (lambda d: d["run"]["record"].append("spindle_T_shaft"), r"'spindle_T_shaft' must be written 'instance\.variable'"),
-    (lambda d: d["run"].update(max_change={"spindle.T_shaft": 1.0}), r"run\.max_change needs run\.rollback = true"),
-    (_two_problems, r"run\.algorithm = 'newton'.*; run\.stop - run\.start = 41\.0 s"),  # every problem at once
-])
+@pytest.mark.parametrize(
+    "mutate,message",
+    [
+        (
+            _unknown_instance,
+            r"connection \('bearing_9\.Q_inner_ring', 'spindle\.Q_inner_ring_1'\): "
+            r"unknown instance 'bearing_9'",
+        ),
+        (
+            lambda d: d["run"].update(algorithm="newton"),
+            r"run\.algorithm = 'newton': allowed \['gauss_seidel', 'jacobi'\]",
+        ),
+        (
+            lambda d: d["run"].update(stop=41.0),
+            r"run\.stop - run\.start = 41\.0 s is not a whole number of steps of 5\.0 s",
+        ),
+        (_twice, r"input spindle\.Q_inner_ring_1 is connected twice"),
+        (lambda d: d["run"].update(stpo=10.0), r"\[run\]: unknown key\(s\) \['stpo'\]"),
+        (lambda d: d.update(instance={}), r"the run file: unknown key\(s\) \['instance'\]"),
+        (
+            lambda d: d["instances"]["spindle"].update(fmu="spindel"),
+            r"instance spindle: fmu = 'spindel' is not in \[fmus\]",
+        ),
+        (lambda d: d["run"].update(order=["bearing_1"]), r"run\.order = \['bearing_1'\] must list every instance once"),
+        (
+            lambda d: d["run"]["record"].append("spindle_T_shaft"),
+            r"'spindle_T_shaft' must be written 'instance\.variable'",
+        ),
+        (lambda d: d["run"].update(max_change={"spindle.T_shaft": 1.0}), r"run\.max_change needs run\.rollback = true"),
+        (_two_problems, r"run\.algorithm = 'newton'.*; run\.stop - run\.start = 41\.0 s"),  # every problem at once
+    ],
+)
 def test_run_file_errors_name_the_key(mutate, message, bearing_fmu, spindle_thermal_fmu):
     doc = loop_doc(bearing_fmu, spindle_thermal_fmu)
     spec_of(doc)  # the unmodified document is valid
@@ -94,11 +132,14 @@ def test_bad_override_names_the_key(bearing_fmu, spindle_thermal_fmu):
         spec_of(loop_doc(bearing_fmu, spindle_thermal_fmu), {"bearing_9.F_z": 1.0})
 
 
-@pytest.mark.parametrize("source,target,message", [
-    ("bearing_1.Q_inner_ring", "bearing_1.torque", r"bearing_1\.torque is a output, not an input"),
-    ("bearing_1.omega", "spindle.Q_inner_ring_2", r"bearing_1\.omega is a input, not an output"),
-    ("bearing_1.Q_inner_ring", "spindle.nope", r"spindle: no variable 'nope'"),
-])
+@pytest.mark.parametrize(
+    "source,target,message",
+    [
+        ("bearing_1.Q_inner_ring", "bearing_1.torque", r"bearing_1\.torque is a output, not an input"),
+        ("bearing_1.omega", "spindle.Q_inner_ring_2", r"bearing_1\.omega is a input, not an output"),
+        ("bearing_1.Q_inner_ring", "spindle.nope", r"spindle: no variable 'nope'"),
+    ],
+)
 def test_connection_errors_name_the_variable(source, target, message, bearing_fmu, spindle_thermal_fmu):
     """Causality is only known from the modelDescription: the master checks it when it wires the run
     (before any step), and frees what it instantiated."""
@@ -125,10 +166,10 @@ def hand_cosimulation(algorithm, step, n_steps):
     of t_n."""
     bearing = QuasiStaticModel(scene=Scene.from_toml(SCENES_DIR / "quasi_static.toml"))
     b_in = {v.name: INPUT_START.get(v.name, 0.0) for v in bearing.inputs}
-    b_start = bearing.evaluate(**b_in)                           # instantiation
+    b_start = bearing.evaluate(**b_in)  # instantiation
     probe = SpindleThermalModel(axial_float=False)
     s_in = {v.name: (T_START if v.unit == "K" else 0.0) for v in probe.inputs}
-    s_start = probe.initialize(**s_in)                           # instantiation
+    s_start = probe.initialize(**s_in)  # instantiation
 
     def to_bearing(s_out):
         b_in.update(T_oil=s_out["T_oil_1"], dPd_thermal=s_out["dPd_thermal_1"])
@@ -138,11 +179,11 @@ def hand_cosimulation(algorithm, step, n_steps):
 
     b_in.update(BEARING_INPUTS)
     s_in.update(SPINDLE_INPUTS)
-    to_bearing(s_start)                                          # both algorithms: spindle start values
-    b_out = bearing.evaluate(**b_in)                             # bearing exits initialisation
+    to_bearing(s_start)  # both algorithms: spindle start values
+    b_out = bearing.evaluate(**b_in)  # bearing exits initialisation
     to_spindle(b_out if algorithm == "gauss_seidel" else b_start)
     spindle = SpindleThermalModel(axial_float=False)
-    s_out = spindle.initialize(**s_in)                           # spindle exits initialisation
+    s_out = spindle.initialize(**s_in)  # spindle exits initialisation
 
     def row():
         values = {f"bearing_1.{k}": v for k, v in {**b_in, **b_out}.items()}
@@ -202,9 +243,17 @@ def test_jacobi_heat_input_lags_one_step_more_than_gauss_seidel(gs_and_jacobi):
 
 # -- time ----------------------------------------------------------------------------------------
 def clock_doc(clock, **run):
-    return {"run": {"start": 0.0, "stop": 3.0, "step": 0.1,
-                    "record": ["c.t_start", "c.t_end", "c.n_steps", "c.n_calls", "c.x"], **run},
-            "fmus": {"clock": str(clock)}, "instances": {"c": {"fmu": "clock", "inputs": {"u": 1.0}}}}
+    return {
+        "run": {
+            "start": 0.0,
+            "stop": 3.0,
+            "step": 0.1,
+            "record": ["c.t_start", "c.t_end", "c.n_steps", "c.n_calls", "c.x"],
+            **run,
+        },
+        "fmus": {"clock": str(clock)},
+        "instances": {"c": {"fmu": "clock", "inputs": {"u": 1.0}}},
+    }
 
 
 @pytest.mark.parametrize("start", [0.0, 1.0])
@@ -229,11 +278,15 @@ def test_limit_stops_the_run_with_its_message(spindle_thermal_fmu):
     rows up to and including that point are kept."""
     H, T_max = 10.0, 373.15
     heat = {"Q_inner_ring_1": 1500.0, "Q_inner_ring_2": 1500.0}
-    doc = {"run": {"stop": 3600.0, "step": H, "record": ["spindle.T_inner_ring_1"]},
-           "fmus": {"spindle": str(spindle_thermal_fmu)},
-           "instances": {"spindle": {"fmu": "spindle", "inputs": {**SPINDLE_INPUTS, **heat}}},
-           "limits": [{"variable": "spindle.T_housing", "max": 1000.0, "message": "never reached"},
-                      {"variable": "spindle.T_inner_ring_1", "max": T_max, "message": "inner ring too hot"}]}
+    doc = {
+        "run": {"stop": 3600.0, "step": H, "record": ["spindle.T_inner_ring_1"]},
+        "fmus": {"spindle": str(spindle_thermal_fmu)},
+        "instances": {"spindle": {"fmu": "spindle", "inputs": {**SPINDLE_INPUTS, **heat}}},
+        "limits": [
+            {"variable": "spindle.T_housing", "max": 1000.0, "message": "never reached"},
+            {"variable": "spindle.T_inner_ring_1", "max": T_max, "message": "inner ring too hot"},
+        ],
+    }
     model = SpindleThermalModel(axial_float=False)
     inputs = {v.name: (T_START if v.unit == "K" else 0.0) for v in model.inputs}
     inputs.update(SPINDLE_INPUTS, **heat)
@@ -245,8 +298,10 @@ def test_limit_stops_the_run_with_its_message(spindle_thermal_fmu):
 
     result = run(spec_of(doc))
     assert result.status == "limit"
-    assert result.message == (f"t = {n_stop * H:.6g} s: spindle.T_inner_ring_1 = {temperatures[-1]:.6g} "
-                              f"left [-inf, {T_max:.6g}]: inner ring too hot")
+    assert result.message == (
+        f"t = {n_stop * H:.6g} s: spindle.T_inner_ring_1 = {temperatures[-1]:.6g} "
+        f"left [-inf, {T_max:.6g}]: inner ring too hot"
+    )
     np.testing.assert_array_equal(result.columns["time"], np.arange(n_stop + 1) * H)
     np.testing.assert_array_equal(result.columns["spindle.T_inner_ring_1"], temperatures)
 
@@ -256,11 +311,17 @@ def test_refused_step_raises_with_the_fmu_log(spindle_thermal_fmu):
     """-1 MW into an inner ring is an admissible input (|Q| <= 1e7 W) but would cool the ring below
     0 K within the step: the spindle refuses the step (spindle/model.py) and the master's error
     names the instance, the call and carries the FMU's own message."""
-    doc = {"run": {"stop": 2.0, "step": 1.0}, "fmus": {"spindle": str(spindle_thermal_fmu)},
-           "instances": {"spindle": {"fmu": "spindle", "inputs": {**SPINDLE_INPUTS, "Q_inner_ring_1": -1e6}}}}
-    with pytest.raises(MasterError, match=r"spindle: doStep at t = 0 s, h = 1 s returned (Discard|Error): "
-                                          r"\[Error\] spindle: node \w+ would reach T = -[0-9.e+]+ K "
-                                          r"\(non-physical\)"):
+    doc = {
+        "run": {"stop": 2.0, "step": 1.0},
+        "fmus": {"spindle": str(spindle_thermal_fmu)},
+        "instances": {"spindle": {"fmu": "spindle", "inputs": {**SPINDLE_INPUTS, "Q_inner_ring_1": -1e6}}},
+    }
+    with pytest.raises(
+        MasterError,
+        match=r"spindle: doStep at t = 0 s, h = 1 s returned (Discard|Error): "
+        r"\[Error\] spindle: node \w+ would reach T = -[0-9.e+]+ K "
+        r"\(non-physical\)",
+    ):
         run(spec_of(doc))
 
 
@@ -268,24 +329,36 @@ def test_refused_step_message_keeps_percent(clock_fmu):
     """pythonfmu logs printf formats ('%' sent as '%%'); the master shows the text as written."""
     doc = clock_doc(clock_fmu)
     doc["instances"]["c"]["parameters"] = {"fail_at": 0.5}
-    with pytest.raises(MasterError, match=r"c: doStep at t = 0\.5 s, h = 0\.1 s returned Discard: "
-                                          r"\[Error\] c: t = 0\.5 s >= fail_at: refused \(100% sure\)$"):
+    with pytest.raises(
+        MasterError,
+        match=r"c: doStep at t = 0\.5 s, h = 0\.1 s returned Discard: "
+        r"\[Error\] c: t = 0\.5 s >= fail_at: refused \(100% sure\)$",
+    ):
         run(spec_of(doc))
 
 
 def test_initialisation_failure_raises_with_the_fmu_log(spindle_thermal_fmu):
-    doc = {"run": {"stop": 2.0, "step": 1.0}, "fmus": {"spindle": str(spindle_thermal_fmu)},
-           "instances": {"spindle": {"fmu": "spindle", "parameters": {"spindle": "no_such_spindle"}}}}
-    with pytest.raises(MasterError, match=r"spindle: initialisation failed: \[Error\] spindle: unknown spindle "
-                                          r"'no_such_spindle'"):
+    doc = {
+        "run": {"stop": 2.0, "step": 1.0},
+        "fmus": {"spindle": str(spindle_thermal_fmu)},
+        "instances": {"spindle": {"fmu": "spindle", "parameters": {"spindle": "no_such_spindle"}}},
+    }
+    with pytest.raises(
+        MasterError,
+        match=r"spindle: initialisation failed: \[Error\] spindle: unknown spindle "
+        r"'no_such_spindle'",
+    ):
         run(spec_of(doc))
 
 
 def test_rollback_gives_up_after_max_halvings_with_the_reason(clock_fmu):
     doc = clock_doc(clock_fmu, rollback=True, max_halvings=2)
     doc["instances"]["c"]["parameters"] = {"fail_at": 0.5}
-    with pytest.raises(MasterError, match=r"step at t = 0\.5 s rejected after 2 halvings \(h = 0\.025 s\): "
-                                          r"c: doStep .* refused \(100% sure\)"):
+    with pytest.raises(
+        MasterError,
+        match=r"step at t = 0\.5 s rejected after 2 halvings \(h = 0\.025 s\): "
+        r"c: doStep .* refused \(100% sure\)",
+    ):
         run(spec_of(doc))
 
 
@@ -324,8 +397,7 @@ def replay(spec, grid):
             n = (t + h - spec.start) / spec.step
             if n == round(n):
                 rows.append(every[-1])
-    return ({q: np.array([r[q] for r in rows]) for q in rows[0]},
-            {q: np.array([r[q] for r in every]) for q in rows[0]})
+    return ({q: np.array([r[q] for r in rows]) for q in rows[0]}, {q: np.array([r[q] for r in every]) for q in rows[0]})
 
 
 @pytest.mark.parametrize("algorithm", ["gauss_seidel", "jacobi"])
@@ -336,8 +408,14 @@ def test_rollback_equals_a_plain_run_on_the_accepted_grid(algorithm, bearing_fmu
     accepted sub-steps, bit for bit, for either algorithm, because setFMUstate restores each FMU
     completely (the bearing's warm-start solver state included, test_bearing_quasistatic_fmu) and the
     master restores its output cache. A rejected attempt leaves no trace."""
-    doc = loop_doc(bearing_fmu, spindle_thermal_fmu, algorithm=algorithm, rollback=True,
-                   max_change={"spindle.T_oil_1": 2.0}, max_halvings=6)
+    doc = loop_doc(
+        bearing_fmu,
+        spindle_thermal_fmu,
+        algorithm=algorithm,
+        rollback=True,
+        max_change={"spindle.T_oil_1": 2.0},
+        max_halvings=6,
+    )
     spec = spec_of(doc)
     with GridMaster(spec) as master:
         result = master.run()
@@ -347,23 +425,34 @@ def test_rollback_equals_a_plain_run_on_the_accepted_grid(algorithm, bearing_fmu
     assert result.rejected_steps == len(master.attempts) - len(grid)
     assert min(steps) < 2.5 and max(steps) == 5.0  # some steps halved (some twice), some whole
     assert sum(steps) == spec.stop
-    plain, every = replay(spec_of(loop_doc(bearing_fmu, spindle_thermal_fmu, algorithm=algorithm,
-                                           record=RECORD + ["spindle.T_oil_1"])), grid)
+    plain, every = replay(
+        spec_of(loop_doc(bearing_fmu, spindle_thermal_fmu, algorithm=algorithm, record=RECORD + ["spindle.T_oil_1"])),
+        grid,
+    )
     for name in RECORD + ["spindle.T_oil_1"]:
         np.testing.assert_array_equal(result.columns[name], plain[name], err_msg=name)
     assert np.max(np.abs(np.diff(every["spindle.T_oil_1"]))) <= 2.0  # every accepted sub-step obeys max_change
 
 
 @pytest.mark.parametrize("algorithm", ["gauss_seidel", "jacobi"])
-def test_rollback_halving_every_step_equals_the_run_at_half_the_step(algorithm, bearing_fmu, spindle_thermal_fmu,
-                                                                      clock_fmu):
+def test_rollback_halving_every_step_equals_the_run_at_half_the_step(
+    algorithm, bearing_fmu, spindle_thermal_fmu, clock_fmu
+):
     """A clock instance that refuses steps longer than H/2 makes the master halve every step exactly
     once: the coupled run then equals the plain run at H/2 read at the multiples of H, bit for bit
     (both algorithms: the halves re-exchange the coupling variables at t + H/2 exactly as the run at
     H/2 does). It differs from the run at H (the coupling variables are held for H there)."""
+
     def doc(step, h_max, rollback):
-        d = loop_doc(bearing_fmu, spindle_thermal_fmu, algorithm=algorithm, step=step, rollback=rollback,
-                     max_halvings=1, order=["bearing_1", "spindle", "c"])
+        d = loop_doc(
+            bearing_fmu,
+            spindle_thermal_fmu,
+            algorithm=algorithm,
+            step=step,
+            rollback=rollback,
+            max_halvings=1,
+            order=["bearing_1", "spindle", "c"],
+        )
         d["fmus"]["clock"] = str(clock_fmu)
         d["instances"]["c"] = {"fmu": "clock", "parameters": {"h_max": h_max}}
         d["run"]["record"] += ["c.n_steps", "c.n_calls", "c.t_start"]
@@ -390,10 +479,11 @@ def test_rollback_on_max_change_alone_every_step_halved_once(spindle_thermal_fmu
     H/2 agree too, but only to rounding: 1e-12 relative bounds 60 steps of the 8-mode update with a
     few ulps each (measured: 9e-15). P_out = sum G (T - T_b) is not compared that way: the difference
     T - T_b (under 1 K early on, for T ~ 300 K) amplifies the same rounding ~300 times."""
-    doc = {"run": {"stop": 120.0, "step": 2.0, "record": ["spindle.T_inner_ring_1", "spindle.T_housing",
-                                                          "spindle.P_out"]},
-           "fmus": {"spindle": str(spindle_thermal_fmu)},
-           "instances": {"spindle": {"fmu": "spindle", "inputs": {**SPINDLE_INPUTS, "Q_inner_ring_1": 1000.0}}}}
+    doc = {
+        "run": {"stop": 120.0, "step": 2.0, "record": ["spindle.T_inner_ring_1", "spindle.T_housing", "spindle.P_out"]},
+        "fmus": {"spindle": str(spindle_thermal_fmu)},
+        "instances": {"spindle": {"fmu": "spindle", "inputs": {**SPINDLE_INPUTS, "Q_inner_ring_1": 1000.0}}},
+    }
     at_half = run(spec_of(doc, {"run.step": 1.0}))
     assert np.all(at_half.columns["spindle.P_out"] < 250.0)
     halved = run(spec_of(doc, {"run.rollback": True, "run.max_change": {"spindle.E_stored": 1500.0}}))

@@ -8,6 +8,7 @@ state between instances, the numba kernels are deterministic), so each row must 
 sweep() returns rows in input order whatever order the workers finish in. Only `wall_time`, a
 measurement, may differ. Dask teardown may print noise on stderr; the table must be complete.
 """
+
 import math
 
 import pytest
@@ -33,8 +34,7 @@ def test_dask_sweep_equals_sequential_table(closed_loop_fmus):
         assert row["t_end"] == 60.0
         assert list(row) == list(ref)  # same columns, same order
         assert math.isfinite(row["wall_time"]) and row["wall_time"] > 0.0
-        assert {k: v for k, v in row.items() if k != "wall_time"} == \
-            {k: v for k, v in ref.items() if k != "wall_time"}
+        assert {k: v for k, v in row.items() if k != "wall_time"} == {k: v for k, v in ref.items() if k != "wall_time"}
     # the swept value reached the runs: a warmer coolant gives a warmer housing, point by point
     housing = [row["spindle.T_housing"] for row in rows]
     assert all(a < b for a, b in zip(housing, housing[1:]))
@@ -47,9 +47,16 @@ def test_sweep_table_quotes_names_and_messages_with_commas(tmp_path):
     import csv
 
     from spindle.sweep import write_table
-    rows = [{"bearing_1.F_z": 400.0, "status": "limit", "message": "t = 3 s: x = 1, left [0, 1]",
-             "bearing_1.K[3,3]": 2.5e7 / 3.0},
-            {"bearing_1.F_z": 800.0, "status": "ok", "message": "", "bearing_1.K[3,3]": 3.1}]
+
+    rows = [
+        {
+            "bearing_1.F_z": 400.0,
+            "status": "limit",
+            "message": "t = 3 s: x = 1, left [0, 1]",
+            "bearing_1.K[3,3]": 2.5e7 / 3.0,
+        },
+        {"bearing_1.F_z": 800.0, "status": "ok", "message": "", "bearing_1.K[3,3]": 3.1},
+    ]
     path = tmp_path / "table.csv"
     write_table(rows, path)
     back = list(csv.DictReader(open(path, newline="")))

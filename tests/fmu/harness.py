@@ -1,4 +1,5 @@
 """Shared FMU test harness: open an initialised instance, run a scenario in a fresh process."""
+
 import json
 import shutil
 import subprocess
@@ -14,8 +15,9 @@ PROBE = Path(__file__).with_name("probe.py")
 
 def probe(fmu_path, scenario):
     """Run tests/fmu/probe.py SCENARIO in a fresh process; its JSON report (the process must exit 0)."""
-    proc = subprocess.run([sys.executable, str(PROBE), str(fmu_path), scenario], capture_output=True,
-                          text=True, timeout=300)
+    proc = subprocess.run(
+        [sys.executable, str(PROBE), str(fmu_path), scenario], capture_output=True, text=True, timeout=300
+    )
     assert proc.returncode == 0, (proc.returncode, proc.stderr[-2000:])
     return json.loads(proc.stdout.strip().splitlines()[-1])
 
@@ -28,8 +30,9 @@ def opened(fmu_path, name, parameters=None):
     md = read_model_description(str(fmu_path))
     vr = {v.name: v.valueReference for v in md.modelVariables}
     unzip = extract(str(fmu_path))
-    fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzip, modelIdentifier=md.coSimulation.modelIdentifier,
-                    instanceName=name)
+    fmu = FMU2Slave(
+        guid=md.guid, unzipDirectory=unzip, modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name
+    )
     try:
         fmu.instantiate()
         fmu.setupExperiment(startTime=0.0)

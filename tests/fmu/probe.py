@@ -4,6 +4,7 @@ Run in a subprocess so that a crash of the host (the thing we test against) cann
 down, and so that each run starts with a fresh interpreter as a user's master would.
 Usage: python probe.py FMU SCENARIO
 """
+
 import json
 import shutil
 import sys
@@ -24,11 +25,13 @@ def open_fmu(path, parameters=None):
     unzip = extract(path)
     callbacks = fmi2CallbackFunctions()
     callbacks.logger = fmi2CallbackLoggerTYPE(_logger)
-    from fmpy.fmi2 import fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE, calloc, free
+    from fmpy.fmi2 import calloc, fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE, free
+
     callbacks.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
     callbacks.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
-    fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzip, modelIdentifier=md.coSimulation.modelIdentifier,
-                    instanceName="probe")
+    fmu = FMU2Slave(
+        guid=md.guid, unzipDirectory=unzip, modelIdentifier=md.coSimulation.modelIdentifier, instanceName="probe"
+    )
     fmu.instantiate(loggingOn=True, callbacks=callbacks)
     fmu._keep = callbacks
     vr = {v.name: v.valueReference for v in md.modelVariables}
@@ -57,8 +60,14 @@ def main():
     if scenario == "bad_inputs":
         fmu, vr, unzip = open_fmu(path)
         results = {}
-        cases = [("omega", float("nan")), ("omega", 1e9), ("T_oil", 0.0), ("T_oil", -10.0),
-                 ("F_y", float("inf")), ("F_y", 1e9)]
+        cases = [
+            ("omega", float("nan")),
+            ("omega", 1e9),
+            ("T_oil", 0.0),
+            ("T_oil", -10.0),
+            ("F_y", float("inf")),
+            ("F_y", 1e9),
+        ]
         for n, (name, bad) in enumerate(cases):
             fmu.setReal([vr["omega"], vr["F_y"], vr["T_oil"]], [500.0, 3000.0, 313.15])
             fmu.setReal([vr[name]], [bad])
@@ -76,8 +85,15 @@ def main():
         fmu, vr, unzip = open_fmu(path)
         good = {"omega": 1047.0, "F_z": 800.0, "F_x": 200.0, "T_oil": 313.15, "dPd_thermal": 0.0}
         results = {}
-        cases = [("omega", float("nan")), ("omega", 1e9), ("T_oil", 0.0), ("F_z", float("inf")),
-                 ("F_x", -float("inf")), ("F_z", 1e8), ("dPd_thermal", 1.0)]
+        cases = [
+            ("omega", float("nan")),
+            ("omega", 1e9),
+            ("T_oil", 0.0),
+            ("F_z", float("inf")),
+            ("F_x", -float("inf")),
+            ("F_z", 1e8),
+            ("dPd_thermal", 1.0),
+        ]
         for n, (name, bad) in enumerate(cases):
             fmu.setReal([vr[k] for k in good], list(good.values()))
             fmu.setReal([vr[name]], [bad])

@@ -9,6 +9,7 @@
 - FMU state get/set/serialise round trip is exact;
 - 30 consecutive fresh-process simulations all exit 0 (SPEC 3: scipy/numba teardown crashes).
 """
+
 from contextlib import ExitStack
 
 import numpy as np
@@ -18,8 +19,22 @@ from fmpy.validation import validate_fmu
 from bearing_fmu.model import BearingModel
 from tests.fmu.harness import close, opened, probe
 
-OUTPUTS = ["Lambda_inner", "Lambda_outer", "h_min_inner", "h_min_outer", "regime", "C_bearing",
-           "Q_max_inner", "Q_max_outer", "p_max", "omega_cage", "omega_ball", "n_loaded", "y", "epsilon"]
+OUTPUTS = [
+    "Lambda_inner",
+    "Lambda_outer",
+    "h_min_inner",
+    "h_min_outer",
+    "regime",
+    "C_bearing",
+    "Q_max_inner",
+    "Q_max_outer",
+    "p_max",
+    "omega_cage",
+    "omega_ball",
+    "n_loaded",
+    "y",
+    "epsilon",
+]
 
 
 def test_validate_fmu_is_clean(analytic_fmu):
@@ -48,8 +63,10 @@ def _ramp():
 
 def test_simulate_fmu_equals_python_model(analytic_fmu):
     t, omega, load = _ramp()
-    signals = np.array([(a, b, c, 333.15) for a, b, c in zip(t, omega, load)],
-                       dtype=[("time", float), ("omega", float), ("F_y", float), ("T_oil", float)])
+    signals = np.array(
+        [(a, b, c, 333.15) for a, b, c in zip(t, omega, load)],
+        dtype=[("time", float), ("omega", float), ("F_y", float), ("T_oil", float)],
+    )
     res = simulate_fmu(str(analytic_fmu), stop_time=2.0, output_interval=0.1, input=signals, output=OUTPUTS)
     model = BearingModel()
     assert len(res) == 21
@@ -66,8 +83,15 @@ def test_hand_written_loop_equals_python_model(analytic_fmu):
     model = BearingModel("6208", "guessasma_oil", Pd=5e-6)
     with opened(analytic_fmu, "loop", {"Pd": 5e-6}) as (fmu, vr):
         real_out = [n for n in OUTPUTS if n not in ("regime", "n_loaded")]
-        for n, (w, F, T) in enumerate([(0.0, 0.0, 313.15), (10.0, 10.0, 300.0), (-500.0, 3000.0, 313.15),
-                                       (1700.0, 7500.0, 350.0), (3000.0, 500.0, 400.0)]):
+        for n, (w, F, T) in enumerate(
+            [
+                (0.0, 0.0, 313.15),
+                (10.0, 10.0, 300.0),
+                (-500.0, 3000.0, 313.15),
+                (1700.0, 7500.0, 350.0),
+                (3000.0, 500.0, 400.0),
+            ]
+        ):
             fmu.setReal([vr["omega"], vr["F_y"], vr["T_oil"]], [w, F, T])
             fmu.doStep(n * 0.5, 0.5)
             got = dict(zip(real_out, fmu.getReal([vr[k] for k in real_out])))
@@ -105,7 +129,7 @@ def test_bad_inputs_are_reported_and_host_survives(analytic_fmu):
         if case == "recovered":
             assert result["status"] == 0 and result["outputs"][0] > 0
             continue
-        assert result["status"] in (2, 3), case            # fmi2Discard / fmi2Error, never fatal
+        assert result["status"] in (2, 3), case  # fmi2Discard / fmi2Error, never fatal
     texts = [m["message"] for m in report["messages"]]
     assert any("omega = nan" in t and "allowed range" in t for t in texts)
     assert any("T_oil = 0.0 K" in t and "[233.15, 473.15] K" in t for t in texts)

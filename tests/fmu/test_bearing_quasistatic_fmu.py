@@ -10,6 +10,7 @@
 - bad inputs (NaN, out of range, overload, unknown race control) give a clear logged message and
   fmi2Discard, the host survives, a corrected input recovers.
 """
+
 import numpy as np
 import pytest
 from fmpy import read_model_description, simulate_fmu
@@ -47,8 +48,22 @@ def test_validate_and_variables(fixture, request):
     assert md.coSimulation.canGetAndSetFMUstate and md.coSimulation.canSerializeFMUstate
     names = {v.name for v in md.modelVariables}
     assert {f"K[{i},{j}]" for i in range(1, 6) for j in range(1, 6)} <= names
-    assert {"torque", "P_loss", "Q_inner_ring", "Q_outer_ring", "alpha_inner", "alpha_outer", "C_bearing",
-            "Lambda_inner", "Lambda_outer", "bearing", "lubricant", "Pd", "race_control", "dPd_thermal"} <= names
+    assert {
+        "torque",
+        "P_loss",
+        "Q_inner_ring",
+        "Q_outer_ring",
+        "alpha_inner",
+        "alpha_outer",
+        "C_bearing",
+        "Lambda_inner",
+        "Lambda_outer",
+        "bearing",
+        "lubricant",
+        "Pd",
+        "race_control",
+        "dPd_thermal",
+    } <= names
     drive = {"F_x", "F_y", "F_z", "M_x", "M_y"}
     dofs = {"x", "y", "z", "theta_x", "theta_y"}
     inputs = {v.name for v in md.modelVariables if v.causality == "input"}
@@ -101,18 +116,28 @@ def test_hand_written_loop_equals_python_model(bearing_fmu):
 
 def test_displacement_fmu_equals_python_model(bearing_disp_fmu):
     model = QuasiStaticModel(scene=scene_of("quasi_static_displacement.toml"))
-    steps = [dict(omega=0.0, z=20e-6), dict(omega=1047.0, x=3e-6, z=25e-6, theta_y=1e-4, dz_thermal=2e-6),
-             dict(omega=300.0, x=-2e-6, y=1e-6, z=10e-6)]
+    steps = [
+        dict(omega=0.0, z=20e-6),
+        dict(omega=1047.0, x=3e-6, z=25e-6, theta_y=1e-4, dz_thermal=2e-6),
+        dict(omega=300.0, x=-2e-6, y=1e-6, z=10e-6),
+    ]
     ref = assert_replay_equals_model(bearing_disp_fmu, model, steps)
     assert ref["F_z"] > 0.0 and ref["K[3,3]"] > 0.0
 
 
 def test_simulate_fmu_equals_python_model(bearing_fmu):
     t = np.linspace(0.0, 1.0, 11)
-    signals = np.array([(a, 1047.0 * a, 800.0 + 500.0 * a, 100.0 * a) for a in t],
-                       dtype=[("time", float), ("omega", float), ("F_z", float), ("F_x", float)])
-    res = simulate_fmu(str(bearing_fmu), stop_time=1.0, output_interval=0.1, input=signals,
-                       output=["z", "x", "theta_y", "torque", "K[3,3]", "K[1,5]", "alpha_outer", "C_bearing"])
+    signals = np.array(
+        [(a, 1047.0 * a, 800.0 + 500.0 * a, 100.0 * a) for a in t],
+        dtype=[("time", float), ("omega", float), ("F_z", float), ("F_x", float)],
+    )
+    res = simulate_fmu(
+        str(bearing_fmu),
+        stop_time=1.0,
+        output_interval=0.1,
+        input=signals,
+        output=["z", "x", "theta_y", "torque", "K[3,3]", "K[1,5]", "alpha_outer", "C_bearing"],
+    )
     model = QuasiStaticModel(scene=scene_of("quasi_static.toml"))
     for row in res[1:]:
         n = int(round(row["time"] / 0.1)) - 1  # outputs at t_n from the inputs held at t_(n-1)
@@ -159,8 +184,7 @@ def test_bad_inputs_are_reported_and_host_survives(bearing_fmu):
 def test_unknown_race_control_is_reported(bearing_fmu):
     report = probe(bearing_fmu, "qs_bad_race_control")
     assert report["status"] == 2
-    assert any("race_control = 'sideways'" in m["message"] and "hybrid" in m["message"]
-               for m in report["messages"])
+    assert any("race_control = 'sideways'" in m["message"] and "hybrid" in m["message"] for m in report["messages"])
 
 
 def test_overload_warning_is_logged():

@@ -20,6 +20,7 @@
   fresh process through tests/fmu/probe.py's helpers so a crash cannot take pytest down) and a
   corrected input recovers (SPEC 3, 5.3).
 """
+
 import json
 import math
 import subprocess
@@ -62,8 +63,7 @@ def test_validate_fmu_and_model_description(fixture, request):
             assert v.unit in units, v.name
         if v.causality == "output":
             assert v.initial == "exact", v.name  # SPEC 3: what makes validate_fmu pass on pythonfmu FMUs
-    assert {v.name for v in md.modelVariables if v.causality == "parameter"} == {"spindle", "integrator",
-                                                                                  "T_initial"}
+    assert {v.name for v in md.modelVariables if v.causality == "parameter"} == {"spindle", "integrator", "T_initial"}
 
 
 @pytest.mark.parametrize("fixture", sorted(FMUS))
@@ -96,8 +96,13 @@ STEPS = [
     (2.0, dict(Q_inner_ring_1=0.0, Q_outer_ring_1=0.0, Q_inner_ring_2=0.0, Q_outer_ring_2=0.0, P_motor=0.0)),
 ]
 # axial-float inputs of the fixed-preload FMU: unequal axial reactions make the shaft float
-AXIAL_STEPS = [dict(F_axial_1=1500.0, F_axial_2=1300.0, K_axial_1=2.0e8, K_axial_2=1.8e8),
-               dict(F_axial_1=2500.0, F_axial_2=2600.0), {}, dict(K_axial_2=0.0), dict(K_axial_2=1.9e8)]
+AXIAL_STEPS = [
+    dict(F_axial_1=1500.0, F_axial_2=1300.0, K_axial_1=2.0e8, K_axial_2=1.8e8),
+    dict(F_axial_1=2500.0, F_axial_2=2600.0),
+    {},
+    dict(K_axial_2=0.0),
+    dict(K_axial_2=1.9e8),
+]
 
 
 def start_inputs(model):
@@ -105,16 +110,22 @@ def start_inputs(model):
     return {v.name: (T_START if v.unit == "K" else 0.0) for v in model.inputs}
 
 
-@pytest.mark.parametrize("fixture,parameters", [
-    ("spindle_thermal_fmu", {}),
-    ("spindle_thermal_fixed_fmu", {}),
-    ("spindle_thermal_fmu", {"integrator": "implicit_euler", "T_initial": 300.0}),
-])
+@pytest.mark.parametrize(
+    "fixture,parameters",
+    [
+        ("spindle_thermal_fmu", {}),
+        ("spindle_thermal_fixed_fmu", {}),
+        ("spindle_thermal_fmu", {"integrator": "implicit_euler", "T_initial": 300.0}),
+    ],
+)
 def test_hand_written_loop_equals_python_model_bit_for_bit(fixture, parameters, request):
     path = request.getfixturevalue(fixture)
     axial_float = FMUS[fixture]
-    model = SpindleThermalModel(integrator=parameters.get("integrator", "exponential"),
-                                T_initial=parameters.get("T_initial"), axial_float=axial_float)
+    model = SpindleThermalModel(
+        integrator=parameters.get("integrator", "exponential"),
+        T_initial=parameters.get("T_initial"),
+        axial_float=axial_float,
+    )
     inputs = start_inputs(model)
     ref = model.initialize(**inputs)  # exit_initialization_mode: initialize() with the start values
     names = outputs_of(path)
@@ -145,8 +156,15 @@ def test_state_round_trip_is_exact(spindle_thermal_fixed_fmu):
     state also restarts a second instance of the FMU (restart from a saved run)."""
     path = spindle_thermal_fixed_fmu
     names = outputs_of(path)
-    first = dict(omega=OMEGA, Q_inner_ring_1=400.0, Q_outer_ring_1=250.0, F_axial_1=1500.0, F_axial_2=1200.0,
-                 K_axial_1=2e8, K_axial_2=2e8)
+    first = dict(
+        omega=OMEGA,
+        Q_inner_ring_1=400.0,
+        Q_outer_ring_1=250.0,
+        F_axial_1=1500.0,
+        F_axial_2=1200.0,
+        K_axial_1=2e8,
+        K_axial_2=2e8,
+    )
     second = dict(first, Q_inner_ring_1=900.0, F_axial_2=1700.0)
     third = dict(first, Q_inner_ring_1=50.0, omega=100.0, T_ambient=310.0)
 
@@ -220,8 +238,10 @@ def test_bad_inputs_are_reported_and_host_survives(fixture, request):
     assert proc.returncode == 0, (proc.returncode, proc.stderr[-3000:])
     report = json.loads(proc.stdout.strip().splitlines()[-1])
     assert report["good"] == 0
-    for name, text in (("Q_inner_ring_1", "Q_inner_ring_1 = nan W is outside the allowed range"),
-                       ("T_ambient", "T_ambient = -10.0 K is outside the allowed range ]0, 1000] K")):
+    for name, text in (
+        ("Q_inner_ring_1", "Q_inner_ring_1 = nan W is outside the allowed range"),
+        ("T_ambient", "T_ambient = -10.0 K is outside the allowed range ]0, 1000] K"),
+    ):
         case = report[name]
         assert case["status"] in (2, 3), name
         assert case["outputs"] == case["before"], name  # refused step: state and outputs unchanged

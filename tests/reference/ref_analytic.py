@@ -16,6 +16,7 @@ The brg and lub arrays are read through the kernels' layout constants (B_*, LUB_
 coefficients (k, E, K) are taken from brg as the kernel does (they are its inputs; the unit test
 checks them separately against ref_hertz).
 """
+
 import math
 
 from bearing_fmu.kernels import analytic as ak  # layout constants (B_*) only
@@ -34,10 +35,22 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
     Z = int(brg[ak.B_Z])
     D, dm, Pd, E_red = brg[ak.B_D], brg[ak.B_DM], brg[ak.B_PD], brg[ak.B_E_RED]
     race = {
-        "i": dict(Rx=brg[ak.B_RX_I], Ry=brg[ak.B_RY_I], k=brg[ak.B_K_I], E=brg[ak.B_EE_I],
-                  K=brg[ak.B_KK_I], sigma=brg[ak.B_SIGMA_I]),
-        "o": dict(Rx=brg[ak.B_RX_O], Ry=brg[ak.B_RY_O], k=brg[ak.B_K_O], E=brg[ak.B_EE_O],
-                  K=brg[ak.B_KK_O], sigma=brg[ak.B_SIGMA_O]),
+        "i": dict(
+            Rx=brg[ak.B_RX_I],
+            Ry=brg[ak.B_RY_I],
+            k=brg[ak.B_K_I],
+            E=brg[ak.B_EE_I],
+            K=brg[ak.B_KK_I],
+            sigma=brg[ak.B_SIGMA_I],
+        ),
+        "o": dict(
+            Rx=brg[ak.B_RX_O],
+            Ry=brg[ak.B_RY_O],
+            k=brg[ak.B_K_O],
+            E=brg[ak.B_EE_O],
+            K=brg[ak.B_KK_O],
+            sigma=brg[ak.B_SIGMA_O],
+        ),
     }
     film_code = int(brg[ak.B_FILM])
     pressure_choice = int(brg[ak.B_PRESSURE])
@@ -64,7 +77,7 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
         # 90 deg, not contact (the ball on the edge of the zone carries no load in exact arithmetic)
         if compression <= 1e-12 * (abs(delta_r) + abs(Pd)):
             compression = 0.0
-        Q_i = K * compression ** 1.5 if compression > 0.0 else 0.0
+        Q_i = K * compression**1.5 if compression > 0.0 else 0.0
         loads = {"i": Q_i, "o": Q_i + F_c}
         C = {}
         for s, c in race.items():
@@ -94,18 +107,24 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
     lam_i, hmin_i, hc_i = race_minima("i")
     lam_o, hmin_o, hc_o = race_minima("o")
     out = {
-        "lambda_i": lam_i, "lambda_o": lam_o,
-        "hmin_i": hmin_i, "hmin_o": hmin_o,
+        "lambda_i": lam_i,
+        "lambda_o": lam_o,
+        "hmin_i": hmin_i,
+        "hmin_o": hmin_o,
         "regime": ref_ehl.lubrication_regime(min(lam_i, lam_o)),
         "c_bearing": C_bearing,
-        "qmax_i": max(balls["Q_i"]), "qmax_o": max(balls["Q_o"]),
+        "qmax_i": max(balls["Q_i"]),
+        "qmax_o": max(balls["Q_o"]),
         "pmax": max(pressures),
-        "omega_cage": omega_cage, "omega_ball": omega_ball,
+        "omega_cage": omega_cage,
+        "omega_ball": omega_ball,
         "n_loaded": n_loaded,
         "delta_r": delta_r,
         "eps": ref_loaddist.load_parameter(delta_r, Pd),
-        "hc_i": hc_i, "hc_o": hc_o,
-        "eta": eta, "xi": xi,
+        "hc_i": hc_i,
+        "hc_o": hc_o,
+        "eta": eta,
+        "xi": xi,
         "iter": None,
     }
     return out, balls

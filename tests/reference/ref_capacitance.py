@@ -5,6 +5,7 @@ C = eps_0 eps_r(p) A / h_c with A = pi a b; eps_r from Clausius-Mossotti at the 
 density at the Hertz pressure (max, or mean = 2/3 max); inner and outer contacts of a ball in
 series, balls in parallel; a ball without contact on either ring contributes nothing.
 """
+
 import math
 
 from . import ref_lubricant
@@ -14,7 +15,7 @@ from . import ref_lubricant
 # that revision so that the capacitance comparisons can stay at closed-form precision.
 epsilon_0 = 8.8541878128e-12  # F/m
 
-PRESSURE_MAX = 0   # same codes as kernels.capacitance (checked by the unit test)
+PRESSURE_MAX = 0  # same codes as kernels.capacitance (checked by the unit test)
 PRESSURE_MEAN = 1
 
 

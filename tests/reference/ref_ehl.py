@@ -13,11 +13,12 @@ Film formulas as h / Rx, written out from the papers' expressions:
 Guessasma & Machado (2018): Lambda = h_min / sigma; regimes boundary (<= 1), mixed (]1, 3]), full
 film (> 3); mu(Lambda) 0.1 -> 0.01 linear on ]1, 3]; damping eqs. 4-5 (series for mixed, SPEC 4.10).
 """
+
 import math
 
 import numpy as np
 
-HAMROCK_DOWSON = 0      # same codes as kernels.ehl.FILM_* (checked by the unit test)
+HAMROCK_DOWSON = 0  # same codes as kernels.ehl.FILM_* (checked by the unit test)
 MASJEDI_KHONSARI = 1
 CHITTENDEN = 2
 
@@ -26,30 +27,40 @@ def dimensionless_groups(eta, xi, E_red, u, Q, Rx):
     """(U, G, W) with the entrainment speed taken in magnitude."""
     U = eta * abs(u) / (E_red * Rx)
     G = xi * E_red
-    W = Q / (E_red * Rx ** 2)
+    W = Q / (E_red * Rx**2)
     return U, G, W
 
 
 def film_hamrock_dowson(U, G, W, k):
     """(H_c, H_min) of Hamrock & Dowson (1977)."""
-    H_c = 2.69 * U ** 0.67 * G ** 0.53 * W ** (-0.067) * (1.0 - 0.61 * math.exp(-0.73 * k))
-    H_min = 3.63 * U ** 0.68 * G ** 0.49 * W ** (-0.073) * (1.0 - math.exp(-0.68 * k))
+    H_c = 2.69 * U**0.67 * G**0.53 * W ** (-0.067) * (1.0 - 0.61 * math.exp(-0.73 * k))
+    H_min = 3.63 * U**0.68 * G**0.49 * W ** (-0.073) * (1.0 - math.exp(-0.68 * k))
     return H_c, H_min
 
 
 def film_masjedi_khonsari(U, G, W, k):
     """(H_c, H_min) of Masjedi & Khonsari (2015), smooth surfaces."""
-    H_c = (3.672 * U ** (0.663 * k ** (-0.025)) * G ** (0.502 * k ** (-0.064))
-           * W ** (-0.045 * k ** (-0.18)) * (1.0 - 0.573 * math.exp(-0.74 * k)))
-    H_min = (1.637 * U ** (0.711 * k ** (-0.023)) * G ** (0.65 * k ** (-0.045))
-             * W ** (-0.09 * k ** (-0.15)) * (1.0 - 0.974 * math.exp(-0.676 * k)))
+    H_c = (
+        3.672
+        * U ** (0.663 * k ** (-0.025))
+        * G ** (0.502 * k ** (-0.064))
+        * W ** (-0.045 * k ** (-0.18))
+        * (1.0 - 0.573 * math.exp(-0.74 * k))
+    )
+    H_min = (
+        1.637
+        * U ** (0.711 * k ** (-0.023))
+        * G ** (0.65 * k ** (-0.045))
+        * W ** (-0.09 * k ** (-0.15))
+        * (1.0 - 0.974 * math.exp(-0.676 * k))
+    )
     return H_c, H_min
 
 
 def film_chittenden(U, G, W, Ry_over_Rx):
     """(H_c, H_min) of Chittenden et al. (1985), entrainment along x."""
-    H_c = 4.31 * U ** 0.68 * G ** 0.49 * W ** (-0.073) * (1.0 - math.exp(-1.23 * Ry_over_Rx ** (2.0 / 3.0)))
-    H_min = 3.68 * U ** 0.68 * G ** 0.49 * W ** (-0.073) * (1.0 - math.exp(-0.67 * Ry_over_Rx ** (2.0 / 3.0)))
+    H_c = 4.31 * U**0.68 * G**0.49 * W ** (-0.073) * (1.0 - math.exp(-1.23 * Ry_over_Rx ** (2.0 / 3.0)))
+    H_min = 3.68 * U**0.68 * G**0.49 * W ** (-0.073) * (1.0 - math.exp(-0.67 * Ry_over_Rx ** (2.0 / 3.0)))
     return H_c, H_min
 
 

@@ -4,6 +4,7 @@ Harris & Kotzalas (2006), Essential Concepts of Bearing Technology, ch. 2 (geome
 (kinematics), outer ring fixed, inner ring at omega. Written from the curvature sums and the
 textbook kinematic relations, not from the kernel.
 """
+
 import math
 
 
@@ -87,4 +88,4 @@ def ball_mass(D, rho):
 
 def centrifugal_force(m_ball, dm, omega_cage):
     """F_c = m r omega^2 with orbit radius r = d_m / 2."""
-    return m_ball * (dm / 2.0) * omega_cage ** 2
+    return m_ball * (dm / 2.0) * omega_cage**2

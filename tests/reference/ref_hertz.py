@@ -11,6 +11,7 @@ form of the same relation (see hertz_ratio). Contact size, approach and pressure
 with R = 1 / (1/Rx + 1/Ry). Hamrock & Brewe (1983): k = alpha^(2/pi), E = 1 + q/alpha,
 K = pi/2 + q ln alpha, q = pi/2 - 1 (SPEC 4.2; the seeds' 1 + q ln alpha is a typesetting error).
 """
+
 import math
 
 from scipy.optimize import brentq
@@ -19,7 +20,7 @@ from scipy.special import ellipe, ellipk, elliprd
 
 def reduced_modulus(E1, nu1, E2, nu2):
     """E' from 2/E' = (1 - nu1^2)/E1 + (1 - nu2^2)/E2."""
-    return 1.0 / (0.5 * ((1.0 - nu1 ** 2) / E1 + (1.0 - nu2 ** 2) / E2))
+    return 1.0 / (0.5 * ((1.0 - nu1**2) / E1 + (1.0 - nu2**2) / E2))
 
 
 def elliptic_integrals(m):
@@ -35,10 +36,10 @@ def hertz_ratio_textbook(k):
     m = 1 - 1/k^2 perturbs 1 - m, on which K depends logarithmically (3e-11 at k = 1000).
     The solve therefore uses hertz_ratio; the unit tests tie the two together in between.
     """
-    m = 1.0 - 1.0 / k ** 2
+    m = 1.0 - 1.0 / k**2
     K = ellipk(m)
     E = ellipe(m)
-    return (k ** 2 * E - K) / (K - E)
+    return (k**2 * E - K) / (K - E)
 
 
 def hertz_ratio(k):
@@ -49,7 +50,7 @@ def hertz_ratio(k):
     Ry/Rx = R_D(0, 1, q) / R_D(0, q, 1)  (= 1 at k = 1): no difference of nearly equal numbers,
     and q = 1/k^2 is passed without forming 1 - m.
     """
-    q = 1.0 / k ** 2
+    q = 1.0 / k**2
     return float(elliprd(0.0, 1.0, q) / elliprd(0.0, q, 1.0))
 
 
@@ -65,7 +66,7 @@ def ellipticity_exact(Rx, Ry):
 def hertz_coefficients_exact(Rx, Ry):
     """(k_yx, E, K): k_yx = a_y / b_x (> 1 when Ry > Rx), elliptic integrals at m = 1 - 1/k^2."""
     k = ellipticity_exact(Rx, Ry)
-    K, E = elliptic_integrals(1.0 - 1.0 / k ** 2)
+    K, E = elliptic_integrals(1.0 - 1.0 / k**2)
     k_yx = k if Ry >= Rx else 1.0 / k
     return k_yx, E, K
 
@@ -90,7 +91,7 @@ def hertz_contact(Q, Rx, Ry, E_red, k_yx, ell_E, ell_K):
         return 0.0, 0.0, 0.0, 0.0
     R = 1.0 / (1.0 / Rx + 1.0 / Ry)
     k = max(k_yx, 1.0 / k_yx)
-    major = (6.0 * k ** 2 * ell_E * Q * R / (math.pi * E_red)) ** (1.0 / 3.0)
+    major = (6.0 * k**2 * ell_E * Q * R / (math.pi * E_red)) ** (1.0 / 3.0)
     minor = (6.0 * ell_E * Q * R / (math.pi * k * E_red)) ** (1.0 / 3.0)
     delta = ell_K * ((9.0 / (2.0 * ell_E * R)) * (Q / (math.pi * k * E_red)) ** 2) ** (1.0 / 3.0)
     p_max = 3.0 * Q / (2.0 * math.pi * major * minor)
@@ -102,7 +103,7 @@ def hertz_contact(Q, Rx, Ry, E_red, k_yx, ell_E, ell_K):
 def hertz_stiffness(Rx, Ry, E_red, k_yx, ell_E, ell_K):
     """K_h of Q = K_h delta^1.5, read off the contact solution at Q = 1 N (delta ~ Q^(2/3) exactly)."""
     delta = hertz_contact(1.0, Rx, Ry, E_red, k_yx, ell_E, ell_K)[2]
-    return 1.0 / delta ** 1.5
+    return 1.0 / delta**1.5
 
 
 def series_stiffness(K1, K2):

@@ -14,6 +14,7 @@ with clearance); the loaded half-angle from sin^2(psi_l/2) = eps; and integratio
 int g cos psi = -int g' sin psi (boundary terms vanish), whose integrand is positive, for
 eps >> 1 (heavy preload, J_r ~ 3/(8 eps)) where the printed integral is a small difference.
 """
+
 import math
 
 import numpy as np
@@ -110,9 +111,9 @@ def _compression(psi, delta_r, Pd):
 def _loaded_arc(delta_r, Pd):
     """Half-angle of the arc where delta_r cos psi > P_d/2 (0: no ball loaded, pi: all loaded):
     sin^2(psi_l/2) = (delta_r - P_d/2) / (2 delta_r)."""
-    if delta_r - Pd / 2.0 <= 0.0:      # not even the ball at psi = 0 is compressed
+    if delta_r - Pd / 2.0 <= 0.0:  # not even the ball at psi = 0 is compressed
         return 0.0
-    if -delta_r - Pd / 2.0 > 0.0:      # even the ball at psi = pi is compressed
+    if -delta_r - Pd / 2.0 > 0.0:  # even the ball at psi = pi is compressed
         return math.pi
     return 2.0 * math.asin(math.sqrt((delta_r - Pd / 2.0) / (2.0 * delta_r)))
 
@@ -131,7 +132,7 @@ def radial_force_direct(delta_r, Pd, K, Z):
         return max(_compression(psi, delta_r, Pd) / peak, 0.0) ** 1.5 * math.cos(psi)
 
     value, _ = quad(integrand, -1.0, 1.0, **DIRECT_OPTS)
-    return Z * K * peak ** 1.5 * value * psi_l / (2.0 * math.pi)
+    return Z * K * peak**1.5 * value * psi_l / (2.0 * math.pi)
 
 
 def _radial_force(delta_r, Pd, K, Z):
@@ -147,7 +148,7 @@ def _radial_force(delta_r, Pd, K, Z):
         return max(_compression(psi, delta_r, Pd) / peak, 0.0) ** 0.5 * math.sin(psi) ** 2
 
     value, _ = quad(integrand, -1.0, 1.0, **QUAD_OPTS)
-    return Z * K * 1.5 * delta_r * peak ** 0.5 * value * psi_l / (2.0 * math.pi)
+    return Z * K * 1.5 * delta_r * peak**0.5 * value * psi_l / (2.0 * math.pi)
 
 
 def radial_force_and_slope(delta_r, Pd, K, Z):
@@ -166,7 +167,7 @@ def radial_force_and_slope(delta_r, Pd, K, Z):
         return max(_compression(psi, delta_r, Pd) / peak, 0.0) ** 0.5 * math.cos(psi) ** 2
 
     value, _ = quad(integrand, -1.0, 1.0, **QUAD_OPTS)
-    slope = 1.5 * Z * K * peak ** 0.5 * value * psi_l / (2.0 * math.pi)
+    slope = 1.5 * Z * K * peak**0.5 * value * psi_l / (2.0 * math.pi)
     return _radial_force(delta_r, Pd, K, Z), slope
 
 
@@ -181,5 +182,4 @@ def solve_radial_shift(F_r, Pd, K, Z):
     step = (F_r / (Z * K)) ** (2.0 / 3.0)
     while _radial_force(lo + step, Pd, K, Z) < F_r:
         step *= 2.0
-    return brentq(lambda d: _radial_force(d, Pd, K, Z) - F_r, lo, lo + step,
-                  xtol=1e-300, rtol=8.9e-16, maxiter=5000)
+    return brentq(lambda d: _radial_force(d, Pd, K, Z) - F_r, lo, lo + step, xtol=1e-300, rtol=8.9e-16, maxiter=5000)

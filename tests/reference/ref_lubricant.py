@@ -9,6 +9,7 @@
 - Murnaghan (thesis eqs. 2.1-7, 2.1-8), linear thermal expansion, Gold et al. (2001) alpha = s nu^t,
   Dowson-Higginson density, Clausius-Mossotti permittivity (SPEC 4.5).
 """
+
 import math
 
 import numpy as np
@@ -30,7 +31,7 @@ def walther_viscosity(T, A, B):
     """nu (m^2/s) = (10^(10^(A - B log10 T)) - 0.7) cSt."""
     z = A - B * math.log10(T)
     try:
-        nu_cst = 10.0 ** (10.0 ** z) - 0.7
+        nu_cst = 10.0 ** (10.0**z) - 0.7
     except OverflowError:  # beyond the float range (far extrapolation to the cold side)
         return math.inf
     return nu_cst * 1e-6
@@ -78,8 +79,10 @@ def wlf_ratio(p, T, mu0, mu_G, T_g0, A1, A2, b1, b2, C1, C2):
 def wlf_glass_pressure(T, T_g0, A1, A2, b1, b2, C1, C2, p_max=1e11):
     """First pressure of [0, p_max] where the WLF law turns singular (C2 + (T - T_g) F = 0), or
     p_max if it stays regular there: scan on a log grid, then brentq."""
+
     def denominator(p):
         return _wlf_exponent(p, T, T_g0, A1, A2, b1, b2, C1, C2)[1]
+
     grid = np.concatenate(([0.0], np.logspace(5, math.log10(p_max), 2000)))
     for lo, hi in zip(grid[:-1], grid[1:]):
         if denominator(hi) <= 0.0:
@@ -102,8 +105,9 @@ def wlf_alpha_star(T, mu_G, T_g0, A1, A2, b1, b2, C1, C2):
     edges = [0.0] + [e for e in (1e7, 1e8, 1e9, 1e10) if e < p_end] + [p_end]
     total = 0.0
     for lo, hi in zip(edges[:-1], edges[1:]):
-        value, _ = quad(wlf_ratio, lo, hi, args=(T, mu0, mu_G, T_g0, A1, A2, b1, b2, C1, C2),
-                        epsabs=0.0, epsrel=1e-13, limit=400)
+        value, _ = quad(
+            wlf_ratio, lo, hi, args=(T, mu0, mu_G, T_g0, A1, A2, b1, b2, C1, C2), epsabs=0.0, epsrel=1e-13, limit=400
+        )
         total += value
     return 1.0 / total
 
@@ -111,7 +115,7 @@ def wlf_alpha_star(T, mu_G, T_g0, A1, A2, b1, b2, C1, C2):
 def gold_pressure_viscosity(nu, s, t):
     """alpha = s (nu / (1 mm^2/s))^t (1/Pa)."""
     nu_mm2_per_s = nu / 1e-6
-    return s * nu_mm2_per_s ** t
+    return s * nu_mm2_per_s**t
 
 
 def dowson_higginson_density(rho0, p):
@@ -133,12 +137,31 @@ def permittivity_from_density(K_cm, rho):
 def lubricant_state(T, lub):
     """(eta, xi, rho0) at temperature T and p = 0, from the lubricant array (LUB_* layout)."""
     if int(lub[lk.LUB_DENS_MODEL]) == lk.DENSITY_MURNAGHAN:
-        rho0 = murnaghan_density(0.0, T, lub[lk.LUB_RHO_REF], lub[lk.LUB_T_REF], lub[lk.LUB_EXPANSION],
-                                 lub[lk.LUB_MURN_BETA_K], lub[lk.LUB_MURN_K_MM], lub[lk.LUB_MURN_K_PRIME])
+        rho0 = murnaghan_density(
+            0.0,
+            T,
+            lub[lk.LUB_RHO_REF],
+            lub[lk.LUB_T_REF],
+            lub[lk.LUB_EXPANSION],
+            lub[lk.LUB_MURN_BETA_K],
+            lub[lk.LUB_MURN_K_MM],
+            lub[lk.LUB_MURN_K_PRIME],
+        )
     else:
         rho0 = density_linear(T, lub[lk.LUB_RHO_REF], lub[lk.LUB_T_REF], lub[lk.LUB_EXPANSION])
-    wlf = [lub[i] for i in (lk.LUB_WLF_MU_G, lk.LUB_WLF_TG0, lk.LUB_WLF_A1, lk.LUB_WLF_A2,
-                            lk.LUB_WLF_B1, lk.LUB_WLF_B2, lk.LUB_WLF_C1, lk.LUB_WLF_C2)]
+    wlf = [
+        lub[i]
+        for i in (
+            lk.LUB_WLF_MU_G,
+            lk.LUB_WLF_TG0,
+            lk.LUB_WLF_A1,
+            lk.LUB_WLF_A2,
+            lk.LUB_WLF_B1,
+            lk.LUB_WLF_B2,
+            lk.LUB_WLF_C1,
+            lk.LUB_WLF_C2,
+        )
+    ]
     model = int(lub[lk.LUB_VISC_MODEL])
     if model == lk.VISCOSITY_WALTHER:
         nu = walther_viscosity(T, lub[lk.LUB_WALTHER_A], lub[lk.LUB_WALTHER_B])

@@ -13,6 +13,7 @@ Written from the physics (docs/spindle_thermal.md), not from the kernels:
   u = r (sigma_theta - nu sigma_r) / E;
 - clearance and axial interference from the new dimensions (P_d = d_o - d_i - 2 D; shaft minus housing length).
 """
+
 import math
 
 import numpy as np
@@ -129,30 +130,31 @@ def exact_step(C, L, f, T, h):
     M = np.zeros((2 * n + 1, 2 * n + 1))
     M[:n, :n] = A
     M[:n, n] = c
-    M[n + 1:, :n] = np.eye(n)         # d/dt (int T) = T
+    M[n + 1 :, :n] = np.eye(n)  # d/dt (int T) = T
     z0 = np.concatenate([T, [1.0], np.zeros(n)])
     z = expm(M * h) @ z0
-    return z[:n], z[n + 1:]
+    return z[:n], z[n + 1 :]
 
 
 def radau_step(C, L, f, T, h, rtol=1e-10, atol=1e-10):
     """T(h) by solve_ivp Radau on the deviation x = T - T(0) (so the tolerances act on the rise)."""
     A, c = _affine(C, L, f)
     T0 = np.array(T, dtype=float)
-    sol = solve_ivp(lambda t, x: A @ (x + T0) + c, (0.0, h), np.zeros(len(C)), method="Radau",
-                    rtol=rtol, atol=atol, jac=A)
+    sol = solve_ivp(
+        lambda t, x: A @ (x + T0) + c, (0.0, h), np.zeros(len(C)), method="Radau", rtol=rtol, atol=atol, jac=A
+    )
     return T0 + sol.y[:, -1]
 
 
 def exponential_step(T, T_ss, sqrt_c, V, lam, h):
     """Same signature as the kernel; rebuilds C, L from the eigen data and uses exact_step."""
-    C = sqrt_c ** 2
+    C = sqrt_c**2
     L = np.diag(sqrt_c) @ V @ np.diag(lam) @ V.T @ np.diag(sqrt_c)
     return exact_step(C, L, L @ T_ss, T, h)[0]
 
 
 def exponential_heat_integral(T, T_ss, sqrt_c, V, lam, h):
-    C = sqrt_c ** 2
+    C = sqrt_c**2
     L = np.diag(sqrt_c) @ V @ np.diag(lam) @ V.T @ np.diag(sqrt_c)
     return exact_step(C, L, L @ T_ss, T, h)[1]
 
@@ -163,9 +165,9 @@ def steady_state(L, B, Tb, P):
 
 def centrifugal_radial_growth(rho, E, nu, omega, a, b, r):
     """u = r (sigma_t - nu sigma_r) / E with Timoshenko & Goodier's rotating disc with a central hole."""
-    k = rho * omega ** 2 / 8.0
-    sigma_r = (3.0 + nu) * k * (b ** 2 + a ** 2 - a ** 2 * b ** 2 / r ** 2 - r ** 2)
-    sigma_t = k * ((3.0 + nu) * (b ** 2 + a ** 2 + a ** 2 * b ** 2 / r ** 2) - (1.0 + 3.0 * nu) * r ** 2)
+    k = rho * omega**2 / 8.0
+    sigma_r = (3.0 + nu) * k * (b**2 + a**2 - a**2 * b**2 / r**2 - r**2)
+    sigma_t = k * ((3.0 + nu) * (b**2 + a**2 + a**2 * b**2 / r**2) - (1.0 + 3.0 * nu) * r**2)
     return r * (sigma_t - nu * sigma_r) / E
 
 

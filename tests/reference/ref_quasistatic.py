@@ -34,6 +34,7 @@ Choices where the definition is silent (each documented where it is made):
   kinematics evaluated at a_i = a_o = the direction of A.
 - "F_c == 0" is read as "centrifugal is off or omega == 0" (F_c itself depends on the unknowns).
 """
+
 import math
 
 import numpy as np
@@ -44,12 +45,12 @@ from tests.reference import ref_hertz
 # ---------------------------------------------------------------------------------------------------
 # tolerances of the nested solves
 # ---------------------------------------------------------------------------------------------------
-BALL_XTOL = 1e-14        # scipy 'hybr' relative step tolerance on (delta_o [um], a_o [mrad])
-BALL_RTOL = 1e-10        # accepted ball residual, relative to the ball's largest contact load
-BEARING_XTOL = 1e-13     # scipy 'hybr' relative step tolerance on (x, y, z [um], theta [mrad])
-BEARING_RTOL = 1e-9      # accepted bearing residual, relative to the load scale
-UM = 1e-6                # m per scaled length unit
-MRAD = 1e-3              # rad per scaled angle unit
+BALL_XTOL = 1e-14  # scipy 'hybr' relative step tolerance on (delta_o [um], a_o [mrad])
+BALL_RTOL = 1e-10  # accepted ball residual, relative to the ball's largest contact load
+BEARING_XTOL = 1e-13  # scipy 'hybr' relative step tolerance on (x, y, z [um], theta [mrad])
+BEARING_RTOL = 1e-9  # accepted bearing residual, relative to the load scale
+UM = 1e-6  # m per scaled length unit
+MRAD = 1e-3  # rad per scaled angle unit
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -74,8 +75,7 @@ def geometry(p):
     Rr_i = dm / 2.0 + (p["f_i"] - 0.5) * D * math.cos(alpha0)
     Z = int(p["Z"])
     psi = [2.0 * math.pi * j / Z for j in range(Z)]
-    return dict(A=A, r_i=r_i, r_o=r_o, alpha0=alpha0, A1_0=A1_0, A2_0=A2_0, Rr_i=Rr_i,
-                psi=psi, gp=D / dm, Z=Z)
+    return dict(A=A, r_i=r_i, r_o=r_o, alpha0=alpha0, A1_0=A1_0, A2_0=A2_0, Rr_i=Rr_i, psi=psi, gp=D / dm, Z=Z)
 
 
 def groove_centre_offset(d, psi, g):
@@ -103,8 +103,14 @@ def contacts(X1, X2, A1, A2, p, g):
     L_i = math.hypot(V1, V2)
     delta_i = L_i - g["r_i"]
     a_i = math.atan2(V1 / L_i, V2 / L_i)
-    return dict(delta_i=delta_i, delta_o=delta_o, a_i=a_i, a_o=a_o,
-                Q_i=hertz_load(p["K_i"], delta_i), Q_o=hertz_load(p["K_o"], delta_o))
+    return dict(
+        delta_i=delta_i,
+        delta_o=delta_o,
+        a_i=a_i,
+        a_o=a_o,
+        Q_i=hertz_load(p["K_i"], delta_i),
+        Q_o=hertz_load(p["K_o"], delta_o),
+    )
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -174,8 +180,7 @@ def cage_and_spin_speeds(a_i, a_o, beta, omega, gp):
     w_R = - w_m (1 + gp cos a_o) / (gp cos(a_o - beta)).
     """
     ci, co = math.cos(a_i - beta), math.cos(a_o - beta)
-    w_m = omega * (1.0 - gp * math.cos(a_i)) * co / (
-        (1.0 + gp * math.cos(a_o)) * ci + (1.0 - gp * math.cos(a_i)) * co)
+    w_m = omega * (1.0 - gp * math.cos(a_i)) * co / ((1.0 + gp * math.cos(a_o)) * ci + (1.0 - gp * math.cos(a_i)) * co)
     w_R = -w_m * (1.0 + gp * math.cos(a_o)) / (gp * co)
     return w_m, w_R
 
@@ -184,7 +189,7 @@ def inertial_loads(w_m, w_R, beta, p):
     """(F_c, M_g): F_c = 0.5 m dm w_m^2 (if centrifugal), M_g = J w_R w_m sin(beta), J = m D^2/10
     (if gyroscopic)."""
     m = p["m_ball"]
-    F_c = 0.5 * m * p["dm"] * w_m ** 2 if p["centrifugal"] else 0.0
+    F_c = 0.5 * m * p["dm"] * w_m**2 if p["centrifugal"] else 0.0
     J = m * p["D"] ** 2 / 10.0
     M_g = J * w_R * w_m * math.sin(beta) if p["gyroscopic"] else 0.0
     return F_c, M_g
@@ -209,10 +214,13 @@ def ball_equations(c, k, D):
     """
     Q_i, Q_o, a_i, a_o = c["Q_i"], c["Q_o"], c["a_i"], c["a_o"]
     G = k["M_g"] / D
-    axial = (Q_i * math.sin(a_i) - Q_o * math.sin(a_o)
-             + G * (k["lam_o"] * math.cos(a_o) - k["lam_i"] * math.cos(a_i)))
-    radial = (Q_i * math.cos(a_i) - Q_o * math.cos(a_o) + k["F_c"]
-              - G * (k["lam_o"] * math.sin(a_o) - k["lam_i"] * math.sin(a_i)))
+    axial = Q_i * math.sin(a_i) - Q_o * math.sin(a_o) + G * (k["lam_o"] * math.cos(a_o) - k["lam_i"] * math.cos(a_i))
+    radial = (
+        Q_i * math.cos(a_i)
+        - Q_o * math.cos(a_o)
+        + k["F_c"]
+        - G * (k["lam_o"] * math.sin(a_o) - k["lam_i"] * math.sin(a_i))
+    )
     return axial, radial
 
 
@@ -251,24 +259,67 @@ def _state(X1, X2, A1, A2, p, g):
     k = kinematics(c, p, g)
     axial, radial = ball_equations(c, k, p["D"])
     g_z, g_r, m_g = ring_force(c, k, p)
-    return dict(X1=X1, X2=X2, Q_i=c["Q_i"], Q_o=c["Q_o"], a_i=c["a_i"], a_o=c["a_o"],
-                delta_i=c["delta_i"], delta_o=c["delta_o"],
-                beta=k["beta"], lam_i=k["lam_i"], lam_o=k["lam_o"], w_m=k["w_m"], w_R=k["w_R"],
-                F_c=k["F_c"], M_g=k["M_g"], g_z=g_z, g_r=g_r, m_g=m_g,
-                res_axial=axial, res_radial=radial, loaded=True)
+    return dict(
+        X1=X1,
+        X2=X2,
+        Q_i=c["Q_i"],
+        Q_o=c["Q_o"],
+        a_i=c["a_i"],
+        a_o=c["a_o"],
+        delta_i=c["delta_i"],
+        delta_o=c["delta_o"],
+        beta=k["beta"],
+        lam_i=k["lam_i"],
+        lam_o=k["lam_o"],
+        w_m=k["w_m"],
+        w_R=k["w_R"],
+        F_c=k["F_c"],
+        M_g=k["M_g"],
+        g_z=g_z,
+        g_r=g_r,
+        m_g=m_g,
+        res_axial=axial,
+        res_radial=radial,
+        loaded=True,
+    )
 
 
 def _unloaded_state(A1, A2, p, g):
     """Ball without contact: no load, no inertial load transmitted, kinematics at a = angle of A."""
     X1, X2 = collinear_position(A1, A2, p, g)
     a = math.atan2(A1, A2)
-    c = dict(Q_i=0.0, Q_o=0.0, a_i=a, a_o=a, delta_i=math.hypot(A1 - X1, A2 - X2) - g["r_i"],
-             delta_o=math.hypot(X1, X2) - g["r_o"])
+    c = dict(
+        Q_i=0.0,
+        Q_o=0.0,
+        a_i=a,
+        a_o=a,
+        delta_i=math.hypot(A1 - X1, A2 - X2) - g["r_i"],
+        delta_o=math.hypot(X1, X2) - g["r_o"],
+    )
     k = kinematics(c, p, g)
-    return dict(X1=X1, X2=X2, Q_i=0.0, Q_o=0.0, a_i=a, a_o=a, delta_i=c["delta_i"],
-                delta_o=c["delta_o"], beta=k["beta"], lam_i=k["lam_i"], lam_o=k["lam_o"],
-                w_m=k["w_m"], w_R=k["w_R"], F_c=0.0, M_g=0.0, g_z=0.0, g_r=0.0, m_g=0.0,
-                res_axial=0.0, res_radial=0.0, loaded=False)
+    return dict(
+        X1=X1,
+        X2=X2,
+        Q_i=0.0,
+        Q_o=0.0,
+        a_i=a,
+        a_o=a,
+        delta_i=c["delta_i"],
+        delta_o=c["delta_o"],
+        beta=k["beta"],
+        lam_i=k["lam_i"],
+        lam_o=k["lam_o"],
+        w_m=k["w_m"],
+        w_R=k["w_R"],
+        F_c=0.0,
+        M_g=0.0,
+        g_z=0.0,
+        g_r=0.0,
+        m_g=0.0,
+        res_axial=0.0,
+        res_radial=0.0,
+        loaded=False,
+    )
 
 
 def _starting_points(A1, A2, p, g):
@@ -277,7 +328,7 @@ def _starting_points(A1, A2, p, g):
     omega (1 - gp)/2 (a start on an almost open outer contact has a near-singular Jacobian); then
     the ball pressed on the outer race by that force alone at a_o = 0 (inner contact open)."""
     w_m = 0.5 * p["omega"] * (1.0 - g["gp"])
-    F_c = 0.5 * p["m_ball"] * p["dm"] * w_m ** 2 if p["centrifugal"] else 0.0
+    F_c = 0.5 * p["m_ball"] * p["dm"] * w_m**2 if p["centrifugal"] else 0.0
     delta_c = (F_c / p["K_o"]) ** (2.0 / 3.0)
     starts = []
     if math.hypot(A1, A2) > g["r_i"] + g["r_o"]:
@@ -316,16 +367,14 @@ def ball_state(A1, A2, p, guess=None, g=None):
         start = _state(X1g, X2g, A1, A2, p, g)
         scale = max(start["Q_i"], start["Q_o"], start["F_c"], 1e-3)
 
-        def residual(u):
+        def residual(u, scale=scale):
             s = _state(*position(u), A1, A2, p, g)
             return np.array([s["res_axial"], s["res_radial"]]) / scale
 
-        for method, options in (("hybr", dict(xtol=BALL_XTOL)),
-                                ("lm", dict(xtol=BALL_XTOL, ftol=1e-15))):
+        for method, options in (("hybr", dict(xtol=BALL_XTOL)), ("lm", dict(xtol=BALL_XTOL, ftol=1e-15))):
             sol = root(residual, u0, method=method, options=options)
             s = _state(*position(sol.x), A1, A2, p, g)
-            err = (max(abs(s["res_axial"]), abs(s["res_radial"]))
-                   / max(s["Q_i"], s["Q_o"], s["F_c"], 1e-300))
+            err = max(abs(s["res_axial"]), abs(s["res_radial"])) / max(s["Q_i"], s["Q_o"], s["F_c"], 1e-300)
             if best is None or err < best[0]:
                 best = (err, s)
             if err <= BALL_RTOL:
@@ -342,8 +391,13 @@ def applied_loads(balls, psi, Rr_i):
     F = np.zeros(5)
     for b, ps in zip(balls, psi):
         moment_arm_term = Rr_i * b["g_z"] + b["m_g"]
-        F += [b["g_r"] * math.cos(ps), b["g_r"] * math.sin(ps), b["g_z"],
-              moment_arm_term * math.sin(ps), -moment_arm_term * math.cos(ps)]
+        F += [
+            b["g_r"] * math.cos(ps),
+            b["g_r"] * math.sin(ps),
+            b["g_z"],
+            moment_arm_term * math.sin(ps),
+            -moment_arm_term * math.cos(ps),
+        ]
     return F
 
 
@@ -449,7 +503,7 @@ def stiffness_fd(d, p, h=None):
 # ---------------------------------------------------------------------------------------------------
 # test bearings
 # ---------------------------------------------------------------------------------------------------
-E_RED_STEEL = 2.3077e11   # E' = E / (1 - nu^2), E = 210 GPa, nu = 0.3 (both bodies steel)
+E_RED_STEEL = 2.3077e11  # E' = E / (1 - nu^2), E = 210 GPa, nu = 0.3 (both bodies steel)
 RHO_STEEL = 7850.0
 
 
@@ -479,15 +533,43 @@ def hybrid_coefficient(D, dm, f_i, f_o, E_red=E_RED_STEEL):
     return out[0] / out[1]
 
 
-def make_params(Z, D, dm, f_i, f_o, Pd, angular, omega=0.0, race="outer", centrifugal=False,
-                gyroscopic=False, c_hyb=None, dPd=0.0, rho=RHO_STEEL, E_red=E_RED_STEEL):
+def make_params(
+    Z,
+    D,
+    dm,
+    f_i,
+    f_o,
+    Pd,
+    angular,
+    omega=0.0,
+    race="outer",
+    centrifugal=False,
+    gyroscopic=False,
+    c_hyb=None,
+    dPd=0.0,
+    rho=RHO_STEEL,
+    E_red=E_RED_STEEL,
+):
     """Parameter dict of the model, with K_i, K_o from Hertz, m_ball = rho pi D^3 / 6 and c_hyb
     (if None) from hybrid_coefficient."""
-    return dict(Z=Z, D=D, dm=dm, f_i=f_i, f_o=f_o, Pd=Pd, dPd=dPd, angular=angular,
-                K_i=hertz_constant(D, dm, f_i, True, E_red), K_o=hertz_constant(D, dm, f_o, False, E_red),
-                m_ball=rho * math.pi * D ** 3 / 6.0, omega=omega, race=race,
-                centrifugal=centrifugal, gyroscopic=gyroscopic,
-                c_hyb=hybrid_coefficient(D, dm, f_i, f_o, E_red) if c_hyb is None else c_hyb)
+    return dict(
+        Z=Z,
+        D=D,
+        dm=dm,
+        f_i=f_i,
+        f_o=f_o,
+        Pd=Pd,
+        dPd=dPd,
+        angular=angular,
+        K_i=hertz_constant(D, dm, f_i, True, E_red),
+        K_o=hertz_constant(D, dm, f_o, False, E_red),
+        m_ball=rho * math.pi * D**3 / 6.0,
+        omega=omega,
+        race=race,
+        centrifugal=centrifugal,
+        gyroscopic=gyroscopic,
+        c_hyb=hybrid_coefficient(D, dm, f_i, f_o, E_red) if c_hyb is None else c_hyb,
+    )
 
 
 def params_6208(**overrides):

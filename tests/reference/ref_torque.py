@@ -14,6 +14,7 @@ scipy over the ellipse, with the Hertz pressure p = (3Q/(2 pi a b)) sqrt(1 - x^2
   confirmed by the agreement with the table).
 Houpert's rolling force and the Palmgren formulas are closed forms, written out in their printed units.
 """
+
 import math
 
 from scipy.integrate import dblquad
@@ -28,8 +29,14 @@ OIL_MIST, OIL_BATH, OIL_JET = 0, 1, 2
 QUAD_RTOL = 1e-10  # requested accuracy of every 2D quadrature, relative to the caller's scale
 
 # Palmgren f0 (Harris, from memory) by (kind, lubrication).
-PALMGREN_F0 = {(DEEP_GROOVE, OIL_MIST): 1.0, (DEEP_GROOVE, OIL_BATH): 2.0, (DEEP_GROOVE, OIL_JET): 4.0,
-               (ANGULAR_CONTACT, OIL_MIST): 1.7, (ANGULAR_CONTACT, OIL_BATH): 3.3, (ANGULAR_CONTACT, OIL_JET): 6.6}
+PALMGREN_F0 = {
+    (DEEP_GROOVE, OIL_MIST): 1.0,
+    (DEEP_GROOVE, OIL_BATH): 2.0,
+    (DEEP_GROOVE, OIL_JET): 4.0,
+    (ANGULAR_CONTACT, OIL_MIST): 1.7,
+    (ANGULAR_CONTACT, OIL_BATH): 3.3,
+    (ANGULAR_CONTACT, OIL_JET): 6.6,
+}
 # Palmgren f1 = z (P0/C0)^y: (z, y) by kind.
 PALMGREN_F1 = {DEEP_GROOVE: (0.0005, 0.55), ANGULAR_CONTACT: (0.001, 0.33)}
 
@@ -45,8 +52,15 @@ def _over_half_ellipse(func, a, b, y0, y1, scale):
 
     scale: magnitude of the whole integral; the absolute tolerance QUAD_RTOL * scale stops QUADPACK
     from chasing relative accuracy on the vanishing slivers near y = a (roundoff warnings)."""
-    return dblquad(func, y0, y1, 0.0, lambda y: b * math.sqrt(max(0.0, 1.0 - (y / a) ** 2)),
-                   epsabs=QUAD_RTOL * scale, epsrel=QUAD_RTOL)[0]
+    return dblquad(
+        func,
+        y0,
+        y1,
+        0.0,
+        lambda y: b * math.sqrt(max(0.0, 1.0 - (y / a) ** 2)),
+        epsabs=QUAD_RTOL * scale,
+        epsrel=QUAD_RTOL,
+    )[0]
 
 
 def houpert_rolling_force(Q, u_mean, Rx, Ry, E_red, eta, xi):
@@ -54,8 +68,15 @@ def houpert_rolling_force(Q, u_mean, Rx, Ry, E_red, eta, xi):
     dimensionally. No special cases beyond an open contact: u = 0 gives 0 from the power law."""
     if Q <= 0.0:
         return 0.0
-    return (2.765 * E_red * Rx ** 2 * (Ry / Rx) ** 0.35 * (eta * abs(u_mean) / (E_red * Rx)) ** 0.656
-            * (Q / (E_red * Rx ** 2)) ** 0.466 * (xi * E_red) ** 0.022)
+    return (
+        2.765
+        * E_red
+        * Rx**2
+        * (Ry / Rx) ** 0.35
+        * (eta * abs(u_mean) / (E_red * Rx)) ** 0.656
+        * (Q / (E_red * Rx**2)) ** 0.466
+        * (xi * E_red) ** 0.022
+    )
 
 
 def bh2010_rolling_force(Q, u_mean, Rx, Ry, E_red, eta, xi):
@@ -66,8 +87,16 @@ def bh2010_rolling_force(Q, u_mean, Rx, Ry, E_red, eta, xi):
     kappa = 1.0 / k_yx
     beta = 4.0 / math.pi * ell_E / (1.0 + Rx / Ry)
     U = 2.0 * eta * abs(u_mean) / (E_red * Rx)
-    return (E_red * Rx ** 2 * 1.544 * beta ** (1.0 / 3.0) * kappa ** -0.577 * U ** 0.656
-            * (Q / (E_red * Rx ** 2)) ** 0.466 * (xi * E_red) ** 0.022)
+    return (
+        E_red
+        * Rx**2
+        * 1.544
+        * beta ** (1.0 / 3.0)
+        * kappa**-0.577
+        * U**0.656
+        * (Q / (E_red * Rx**2)) ** 0.466
+        * (xi * E_red) ** 0.022
+    )
 
 
 def hysteresis_force(Q, b_x, Rx, alpha_h):
@@ -81,10 +110,12 @@ def hysteresis_force(Q, b_x, Rx, alpha_h):
 
 def heathcote_band(Q, a, b):
     """Half-width c (m) of the rolling bands: brentq on the net tangential force int p sign(c^2 - y^2) dA."""
+
     def net(c):
         inside = _over_half_ellipse(lambda x, y: hertz_pressure(x, y, Q, a, b), a, b, 0.0, c, Q)
         outside = _over_half_ellipse(lambda x, y: hertz_pressure(x, y, Q, a, b), a, b, c, a, Q)
         return inside - outside
+
     return brentq(net, 1e-6 * a, (1.0 - 1e-6) * a, xtol=1e-15 * a, rtol=1e-14)
 
 
@@ -99,9 +130,12 @@ def heathcote_force(Q, a_y, Rx, f, D, mu, b_x=None):
 
     def power_over_u(x, y):
         return mu * hertz_pressure(x, y, Q, a_y, b) * abs(c * c - y * y) / (2.0 * R_c * Rx)
-    scale = mu * Q * a_y ** 2 / (R_c * Rx)
-    return 4.0 * (_over_half_ellipse(power_over_u, a_y, b, 0.0, c, scale)
-                  + _over_half_ellipse(power_over_u, a_y, b, c, a_y, scale))
+
+    scale = mu * Q * a_y**2 / (R_c * Rx)
+    return 4.0 * (
+        _over_half_ellipse(power_over_u, a_y, b, 0.0, c, scale)
+        + _over_half_ellipse(power_over_u, a_y, b, c, a_y, scale)
+    )
 
 
 def minor_over_major(ell_E):
@@ -117,8 +151,9 @@ def spin_moment(Q, a_y, ell_E, mu):
     if Q <= 0.0:
         return 0.0
     b = a_y * minor_over_major(ell_E)
-    return 4.0 * _over_half_ellipse(lambda x, y: mu * hertz_pressure(x, y, Q, a_y, b) * math.hypot(x, y),
-                                    a_y, b, 0.0, a_y, mu * Q * a_y)
+    return 4.0 * _over_half_ellipse(
+        lambda x, y: mu * hertz_pressure(x, y, Q, a_y, b) * math.hypot(x, y), a_y, b, 0.0, a_y, mu * Q * a_y
+    )
 
 
 def contact_losses(Q, u_mean, omega_spin, Rx, Ry, a_y, b_x, ell_E, f, D, E_red, eta, xi, mu, alpha_h, out):
@@ -143,7 +178,7 @@ def palmgren_viscous_torque(f0, nu_cSt, n_rpm, dm):
     """M0 in Harris's units (N.mm with dm in mm), converted to N.m."""
     dm_mm = dm * 1e3
     nn = nu_cSt * abs(n_rpm)
-    m0_nmm = 1e-7 * f0 * nn ** (2.0 / 3.0) * dm_mm ** 3 if nn >= 2000.0 else 160e-7 * f0 * dm_mm ** 3
+    m0_nmm = 1e-7 * f0 * nn ** (2.0 / 3.0) * dm_mm**3 if nn >= 2000.0 else 160e-7 * f0 * dm_mm**3
     return m0_nmm * 1e-3
 
 
@@ -175,15 +210,20 @@ def palmgren_equivalent_load(kind, F_r, F_a, alpha):
 def _q_at_pressure(Rx, Ry, p_max, E_red):
     """Load (N) giving the Hertz maximum pressure p_max (Pa), by brentq on the twin Hertz model."""
     k, ell_E, ell_K = ref_hertz.hertz_coefficients_exact(Rx, Ry)
-    return brentq(lambda Q: ref_hertz.hertz_contact(Q, Rx, Ry, E_red, k, ell_E, ell_K)[3] - p_max,
-                  1e-6, 1e12, xtol=1e-12, rtol=1e-14)
+    return brentq(
+        lambda Q: ref_hertz.hertz_contact(Q, Rx, Ry, E_red, k, ell_E, ell_K)[3] - p_max,
+        1e-6,
+        1e12,
+        xtol=1e-12,
+        rtol=1e-14,
+    )
 
 
 def iso76_f0(gamma):
     """f0 (N/mm^2) from the definition of C0 (module docstring), for D = 1 mm."""
-    E_red = 207e9 / (1.0 - 0.3 ** 2)
+    E_red = 207e9 / (1.0 - 0.3**2)
     D = 1e-3
-    Ry_i = 1.0 / (2.0 / D - 1.0 / (0.52 * D))   # ball and groove of radius 0.52 D
+    Ry_i = 1.0 / (2.0 / D - 1.0 / (0.52 * D))  # ball and groove of radius 0.52 D
     Ry_o = 1.0 / (2.0 / D - 1.0 / (0.53 * D))
     q_i = _q_at_pressure(0.5 * D * (1.0 - gamma), Ry_i, 4200e6, E_red)
     q_o = _q_at_pressure(0.5 * D * (1.0 + gamma), Ry_o, 4200e6, E_red)

@@ -15,16 +15,18 @@ definition implies independently of how it is coded:
   gives zero spin at the outer (inner) contact, hybrid control tends to outer control as C -> 0;
 - the static stiffness is symmetric (the forces derive from the Hertz potential).
 """
+
 import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy.optimize import brentq
 
 from tests.reference import ref_quasistatic as rq
 
-OMEGA = 10000.0 * 2.0 * math.pi / 60.0        # 10000 rpm
+OMEGA = 10000.0 * 2.0 * math.pi / 60.0  # 10000 rpm
 FAST = settings(max_examples=60, deadline=None)
 
 
@@ -90,16 +92,23 @@ def test_angular_pure_axial_load_matches_scalar_equation():
 CASES = {
     "6208 static radial": (rq.params_6208(), [3000.0, 0.0, 0.0, 0.0, 0.0]),
     "6208 clearance, speed, combined": (
-        rq.params_6208(Pd=20e-6, omega=OMEGA, centrifugal=True, gyroscopic=True), [2000.0, 0.0, 500.0, 0.0, 0.0]),
+        rq.params_6208(Pd=20e-6, omega=OMEGA, centrifugal=True, gyroscopic=True),
+        [2000.0, 0.0, 500.0, 0.0, 0.0],
+    ),
     "B7214C static combined": (rq.params_b7214c(), [2000.0, 0.0, 1000.0, 0.0, 20.0]),
     "B7214C outer, speed": (rq.params_b7214c(omega=OMEGA, centrifugal=True), [0.0, 0.0, 800.0, 0.0, 0.0]),
     "B7214C outer gyro, combined": (
-        rq.params_b7214c(omega=OMEGA, centrifugal=True, gyroscopic=True), [1500.0, -500.0, 1000.0, 10.0, -30.0]),
+        rq.params_b7214c(omega=OMEGA, centrifugal=True, gyroscopic=True),
+        [1500.0, -500.0, 1000.0, 10.0, -30.0],
+    ),
     "B7214C hybrid gyro, combined": (
         rq.params_b7214c(omega=OMEGA, centrifugal=True, gyroscopic=True, race="hybrid"),
-        [1500.0, -500.0, 1000.0, 10.0, -30.0]),
+        [1500.0, -500.0, 1000.0, 10.0, -30.0],
+    ),
     "B7214C inner gyro": (
-        rq.params_b7214c(omega=OMEGA, centrifugal=True, gyroscopic=True, race="inner"), [0.0, 0.0, 800.0, 0.0, 0.0]),
+        rq.params_b7214c(omega=OMEGA, centrifugal=True, gyroscopic=True, race="inner"),
+        [0.0, 0.0, 800.0, 0.0, 0.0],
+    ),
 }
 
 
@@ -146,11 +155,14 @@ def test_load_reaches_outer_ring(solved):
 # ------------------------------------------------------------------------------------------------
 # omega = 0: equal and collinear contact loads
 # ------------------------------------------------------------------------------------------------
-@pytest.mark.parametrize("params, F", [
-    (rq.params_6208(Pd=20e-6), [2000.0, 300.0, 500.0, 5.0, 0.0]),
-    (rq.params_b7214c(), [2000.0, 0.0, 1000.0, 0.0, 20.0]),
-    (rq.params_b7214c(race="hybrid", gyroscopic=True, centrifugal=True), [500.0, 500.0, 800.0, -10.0, 0.0]),
-])
+@pytest.mark.parametrize(
+    "params, F",
+    [
+        (rq.params_6208(Pd=20e-6), [2000.0, 300.0, 500.0, 5.0, 0.0]),
+        (rq.params_b7214c(), [2000.0, 0.0, 1000.0, 0.0, 20.0]),
+        (rq.params_b7214c(race="hybrid", gyroscopic=True, centrifugal=True), [500.0, 500.0, 800.0, -10.0, 0.0]),
+    ],
+)
 def test_static_loads_equal_and_collinear(params, F):
     d = rq.solve_loads(F, params)
     _, balls = rq.bearing_loads(d, params)
@@ -187,9 +199,9 @@ def test_numerical_ball_solve_meets_closed_form_at_vanishing_speed():
 def test_unloaded_ball_without_centrifugal_force():
     p = rq.params_6208(Pd=20e-6, omega=OMEGA, gyroscopic=True)
     g = rq.geometry(p)
-    b = rq.ball_state(0.0, g["A2_0"], p)      # the clearance leaves the ball free
+    b = rq.ball_state(0.0, g["A2_0"], p)  # the clearance leaves the ball free
     assert not b["loaded"] and b["Q_i"] == b["Q_o"] == b["M_g"] == 0.0
-    p_c = dict(p, centrifugal=True)           # the centrifugal force presses it on the outer race
+    p_c = dict(p, centrifugal=True)  # the centrifugal force presses it on the outer race
     b = rq.ball_state(0.0, g["A2_0"], p_c)
     assert b["loaded"] and b["Q_i"] == 0.0
     assert b["Q_o"] == pytest.approx(b["F_c"], rel=1e-9) and b["a_o"] == pytest.approx(0.0, abs=1e-12)

@@ -19,6 +19,7 @@ and dT/dt = exp(-A t) C^-1 P >= 0 for P >= 0; for backward Euler (C/dt + L)^-1 >
 M-matrix), and the residual r_n = f - L T_n obeys r_{n+1} = (C/dt)(C/dt + L)^-1 r_n >= 0, so every
 increment T_{n+1} - T_n = (C/dt + L)^-1 r_n >= 0 and T_n never passes T_ss.
 """
+
 import math
 
 import numpy as np
@@ -30,8 +31,8 @@ from spindle.model import CATALOGUE, SpindleThermalModel
 OMEGA = 10000.0 * 2.0 * math.pi / 60.0
 HEATS = dict(Q_inner_ring_1=300.0, Q_outer_ring_1=200.0, Q_inner_ring_2=300.0, Q_outer_ring_2=200.0)
 RUN = dict(omega=OMEGA, T_ambient=293.15, T_coolant=293.15, **HEATS)
-C_FILM = 1e-3 * 146.7      # J/K, 1e-3 of a bearing ring's capacity
-G_FILM = 1e4 * 15.0        # W/K, 1e4 x the bearing's internal ball/oil-ring conductance
+C_FILM = 1e-3 * 146.7  # J/K, 1e-3 of a bearing ring's capacity
+G_FILM = 1e4 * 15.0  # W/K, 1e4 x the bearing's internal ball/oil-ring conductance
 G_CONTACT = 2000.0 * 9.425e-3  # W/K, outer ring 1 - housing contact of the default file
 OLD_LINK = '''between = ["outer_ring_1", "housing"]
 kind = "contact"'''
@@ -46,26 +47,38 @@ def files(tmp_path_factory):
     folder = tmp_path_factory.mktemp("stiff")
     text = (CATALOGUE / "b7214c_x_pair.toml").read_text()
     assert OLD_LINK in text and NEW_NODE in text
-    stiff = text.replace(NEW_NODE, f'''[[node]]
+    stiff = text.replace(
+        NEW_NODE,
+        f"""[[node]]
 name = "film_1"
 capacity = {{ value = {C_FILM!r}, unit = "J/K", source = "stiff test node" }}
 
-{NEW_NODE}''').replace(OLD_LINK, f'''between = ["outer_ring_1", "film_1"]
+{NEW_NODE}""",
+    ).replace(
+        OLD_LINK,
+        f'''between = ["outer_ring_1", "film_1"]
 kind = "conductance"
 G = {{ value = {G_FILM!r}, unit = "W/K", source = "stiff test link" }}
 
 [[link]]
 between = ["film_1", "housing"]
-kind = "contact"''')
+kind = "contact"''',
+    )
     G_series = 1.0 / (1.0 / G_FILM + 1.0 / G_CONTACT)
     block_end = text.index("[[link]]", text.index(OLD_LINK))
-    reference = (text[:text.index(OLD_LINK)] + f'''between = ["outer_ring_1", "housing"]
+    reference = (
+        text[: text.index(OLD_LINK)]
+        + f"""between = ["outer_ring_1", "housing"]
 kind = "conductance"
 G = {{ value = {G_series!r}, unit = "W/K", source = "series film + contact" }}
 
-''' + text[block_end:]).replace(
+"""
+        + text[block_end:]
+    ).replace(
         'capacity = { value = 224.9, unit = "J/K", source = "B7214C outer ring',
-        f'capacity = {{ value = {224.9 + C_FILM!r}, unit = "J/K", source = "B7214C outer ring', 1)
+        f'capacity = {{ value = {224.9 + C_FILM!r}, unit = "J/K", source = "B7214C outer ring',
+        1,
+    )
     paths = folder / "stiff.toml", folder / "reference.toml"
     paths[0].write_text(stiff)
     paths[1].write_text(reference)
@@ -178,7 +191,9 @@ def test_forward_euler_blows_up_at_these_steps(files):
             assert np.all(np.isfinite(small)) and np.max(np.abs(small - 293.15)) < 1.0
         else:
             assert abs(1.0 - lam_max) < 1.0
-    print(f"forward Euler at h = 1 s, 6 steps: max change stiff {growth['stiff']:.2e} K, "
-          f"reference {growth['reference']:.2e} K")
+    print(
+        f"forward Euler at h = 1 s, 6 steps: max change stiff {growth['stiff']:.2e} K, "
+        f"reference {growth['reference']:.2e} K"
+    )
     assert growth["stiff"] > 1e20
     assert growth["reference"] < 10.0

@@ -1,4 +1,5 @@
 """Comparison helpers for the kernel-versus-twin unit tests."""
+
 import math
 
 import numpy as np

@@ -23,12 +23,14 @@ and the 1.5 factor of the alpha* bound).
 Integers (regime, balls loaded) must be equal unless a film parameter or a ball's compression lies
 within its tolerance of a threshold.
 """
+
 import functools
 import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from bearing_fmu.kernels import analytic as ak
 from bearing_fmu.kernels import ehl as ek
@@ -41,13 +43,21 @@ from tests.reference import ref_lubricant as rlub
 from tests.unit._compare import assert_close, rel_err
 
 RTOL = 1e-12
-RTOL_GL = 2.5 * 48 ** -5.0
+RTOL_GL = 2.5 * 48**-5.0
 EPS = np.finfo(float).eps
 FAST = settings(max_examples=50, deadline=None)
 floats = functools.partial(st.floats, allow_nan=False, allow_infinity=False, allow_subnormal=False)
 OUTPUTS = {name[2:].lower(): getattr(ak, name) for name in dir(ak) if name.startswith("O_") and name != "O_SIZE"}
-WLF = (lk.LUB_WLF_MU_G, lk.LUB_WLF_TG0, lk.LUB_WLF_A1, lk.LUB_WLF_A2, lk.LUB_WLF_B1, lk.LUB_WLF_B2,
-       lk.LUB_WLF_C1, lk.LUB_WLF_C2)
+WLF = (
+    lk.LUB_WLF_MU_G,
+    lk.LUB_WLF_TG0,
+    lk.LUB_WLF_A1,
+    lk.LUB_WLF_A2,
+    lk.LUB_WLF_B1,
+    lk.LUB_WLF_B2,
+    lk.LUB_WLF_C1,
+    lk.LUB_WLF_C2,
+)
 SCENES = {
     "default": Scene(),
     "masjedi_khonsari": Scene(film="masjedi_khonsari"),
@@ -57,13 +67,19 @@ SCENES = {
     "mean_pressure_background": Scene(permittivity_pressure="mean", background_capacitance=30e-12),
 }
 # (omega rad/s, F_r N, T_oil K, lubricant)
-POINTS = [(500.0, 3000.0, 313.0, "guessasma_oil"), (-500.0, 3000.0, 313.0, "guessasma_oil"),
-          (0.0, 3000.0, 313.0, "guessasma_oil"), (3000.0, 100.0, 353.0, "iso_vg68_mineral"),
-          (200.0, 20000.0, 233.15, "pao_vg48"), (1500.0, 5000.0, 473.15, "mineral_oil_capacitance"),
-          (800.0, 3000.0, 233.15, "thesis_turbine_oil"), (800.0, 0.0, 313.0, "thesis_turbine_oil")]
+POINTS = [
+    (500.0, 3000.0, 313.0, "guessasma_oil"),
+    (-500.0, 3000.0, 313.0, "guessasma_oil"),
+    (0.0, 3000.0, 313.0, "guessasma_oil"),
+    (3000.0, 100.0, 353.0, "iso_vg68_mineral"),
+    (200.0, 20000.0, 233.15, "pao_vg48"),
+    (1500.0, 5000.0, 473.15, "mineral_oil_capacitance"),
+    (800.0, 3000.0, 233.15, "thesis_turbine_oil"),
+    (800.0, 0.0, 313.0, "thesis_turbine_oil"),
+]
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def model(bearing, scene, Pd, lubricant):
     return BearingModel(bearing, lubricant, SCENES[scene], Pd=Pd)
 
@@ -82,8 +98,8 @@ def xi_tolerance(T, lub):
     mu0 = rlub.wlf_viscosity(0.0, T, *wlf)
     h = 1e5
     f = [rlub.wlf_ratio(i * h, T, mu0, *wlf) for i in range(5)]
-    f3 = (-5.0 * f[0] + 18.0 * f[1] - 24.0 * f[2] + 14.0 * f[3] - 3.0 * f[4]) / (2.0 * h ** 3)
-    return 1.5 * 2e6 ** 4 / 180.0 * abs(f3) * rlub.wlf_alpha_star(T, *wlf) + 1e-10
+    f3 = (-5.0 * f[0] + 18.0 * f[1] - 24.0 * f[2] + 14.0 * f[3] - 3.0 * f[4]) / (2.0 * h**3)
+    return 1.5 * 2e6**4 / 180.0 * abs(f3) * rlub.wlf_alpha_star(T, *wlf) + 1e-10
 
 
 def check_against_twin(m, omega, F_r, T):
@@ -94,7 +110,7 @@ def check_against_twin(m, omega, F_r, T):
     eps = ref["eps"]
     delta = ref["delta_r"]
     tol_delta = RTOL_GL + (8.0 * EPS * (abs(eps) + 1.0 / abs(eps)) if 0.0 < abs(eps) < math.inf else 0.0)
-    amp = 1.5 / (2.0 * eps) if 0.0 < eps < math.inf else 1.5   # d ln Q_max / d ln delta_r
+    amp = 1.5 / (2.0 * eps) if 0.0 < eps < math.inf else 1.5  # d ln Q_max / d ln delta_r
     tol_load = RTOL + max(amp, 1.5) * tol_delta
     tol_xi = xi_tolerance(T, m.lubricant.array)
     q_max = max(ref["qmax_i"], ref["qmax_o"])
@@ -103,9 +119,15 @@ def check_against_twin(m, omega, F_r, T):
         return RTOL + (tol_load * q_max / Q if Q > 0.0 else 0.0)
 
     tol = {
-        "delta_r": tol_delta, "qmax_i": tol_load, "qmax_o": tol_load, "pmax": tol_load,
+        "delta_r": tol_delta,
+        "qmax_i": tol_load,
+        "qmax_o": tol_load,
+        "pmax": tol_load,
         "eps": RTOL + abs(1.0 - 2.0 * eps) / (2.0 * abs(eps)) * tol_delta if 0.0 < abs(eps) < math.inf else RTOL,
-        "eta": RTOL, "xi": tol_xi, "omega_cage": RTOL, "omega_ball": RTOL,
+        "eta": RTOL,
+        "xi": tol_xi,
+        "omega_cage": RTOL,
+        "omega_ball": RTOL,
     }
     film_tol = RTOL + 0.13 * tol_load + 0.7 * tol_xi
     for key in ("lambda_i", "lambda_o", "hmin_i", "hmin_o", "hc_i", "hc_o"):
@@ -162,10 +184,15 @@ def test_analytic_on_grid(bearing, Pd, scene):
 
 
 @FAST
-@given(omega=st.one_of(st.just(0.0), floats(-3000.0, -1e-6), floats(1e-6, 3000.0)),
-       F_r=st.one_of(st.just(0.0), floats(1e-6, 20000.0)), T=floats(233.15, 473.15),
-       Pd=st.one_of(st.just(0.0), floats(-25e-6, -1e-9), floats(1e-9, 25e-6)), bearing=st.sampled_from(["6208", "6306"]), scene=st.sampled_from(list(SCENES)),
-       lubricant=st.sampled_from(catalogue("lubricants")))
+@given(
+    omega=st.one_of(st.just(0.0), floats(-3000.0, -1e-6), floats(1e-6, 3000.0)),
+    F_r=st.one_of(st.just(0.0), floats(1e-6, 20000.0)),
+    T=floats(233.15, 473.15),
+    Pd=st.one_of(st.just(0.0), floats(-25e-6, -1e-9), floats(1e-9, 25e-6)),
+    bearing=st.sampled_from(["6208", "6306"]),
+    scene=st.sampled_from(list(SCENES)),
+    lubricant=st.sampled_from(catalogue("lubricants")),
+)
 def test_analytic_random(omega, F_r, T, Pd, bearing, scene, lubricant):
     """Magnitudes below 1 um/s-scale speeds, 1 uN and 1 nm clearance are physically zero and are left to
     the edge-case tests (they reach float underflow, e.g. test_subnormal_loads_do_not_crash)."""
@@ -175,14 +202,23 @@ def test_analytic_random(omega, F_r, T, Pd, bearing, scene, lubricant):
 def test_bearing_array_matches_twin_geometry():
     """The Hertz inputs the kernel reads from brg equal the twins' exact solution (default scene)."""
     from tests.reference import ref_geometry, ref_hertz
+
     m = model("6208", "default", 0.0, "guessasma_oil")
     b = m.bearing
     radii = ref_geometry.curvature_radii(b.D, b.dm, b.f_i, b.f_o, 0.0)
     assert_close(m.brg[[ak.B_RX_I, ak.B_RY_I, ak.B_RX_O, ak.B_RY_O]], radii, 1e-12, "radii")
-    assert_close(m.brg[[ak.B_K_I, ak.B_EE_I, ak.B_KK_I]], ref_hertz.hertz_coefficients_exact(radii[0], radii[1]),
-                 1e-12, "inner (k, E, K)")
-    assert_close(m.brg[[ak.B_K_O, ak.B_EE_O, ak.B_KK_O]], ref_hertz.hertz_coefficients_exact(radii[2], radii[3]),
-                 1e-12, "outer (k, E, K)")
+    assert_close(
+        m.brg[[ak.B_K_I, ak.B_EE_I, ak.B_KK_I]],
+        ref_hertz.hertz_coefficients_exact(radii[0], radii[1]),
+        1e-12,
+        "inner (k, E, K)",
+    )
+    assert_close(
+        m.brg[[ak.B_K_O, ak.B_EE_O, ak.B_KK_O]],
+        ref_hertz.hertz_coefficients_exact(radii[2], radii[3]),
+        1e-12,
+        "outer (k, E, K)",
+    )
 
 
 def test_seed_case_6208():

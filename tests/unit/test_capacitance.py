@@ -4,13 +4,15 @@ Closed forms only: RTOL = 1e-12 (measured: exact or within 2 ulp). The twin uses
 vacuum permittivity, the value the kernel documents; scipy.constants carries CODATA 2022, 6.8e-10
 relative higher, which is checked separately so that this revision does not hide in the tolerance.
 """
+
 import functools
 import math
 
 import numpy as np
 import pytest
 import scipy.constants
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from bearing_fmu.kernels import capacitance as ck
 from bearing_fmu.kernels import lubricant as lk
@@ -26,8 +28,11 @@ H_FLOOR = 10e-9
 
 
 def test_every_public_kernel_has_a_twin():
-    kernels = [n for n, f in vars(ck).items()
-               if hasattr(f, "py_func") and f.py_func.__module__ == ck.__name__ and not n.startswith("_")]
+    kernels = [
+        n
+        for n, f in vars(ck).items()
+        if hasattr(f, "py_func") and f.py_func.__module__ == ck.__name__ and not n.startswith("_")
+    ]
     assert kernels and all(callable(getattr(rc, n, None)) for n in kernels), kernels
 
 
@@ -78,27 +83,41 @@ def test_ball_and_bearing_capacitance_on_grid():
 
 
 @FAST
-@given(p_max=floats(0.0, 5e9), choice=st.sampled_from([0, 1]), eps_r0=floats(1.8, 3.0),
-       rho0=floats(800.0, 900.0), a=floats(1e-5, 5e-3), b=floats(1e-5, 5e-4), log_h=floats(-9.5, -5.0),
-       log_floor=floats(-9.0, -7.0))
+@given(
+    p_max=floats(0.0, 5e9),
+    choice=st.sampled_from([0, 1]),
+    eps_r0=floats(1.8, 3.0),
+    rho0=floats(800.0, 900.0),
+    a=floats(1e-5, 5e-3),
+    b=floats(1e-5, 5e-4),
+    log_h=floats(-9.5, -5.0),
+    log_floor=floats(-9.0, -7.0),
+)
 def test_contact_random(p_max, choice, eps_r0, rho0, a, b, log_h, log_floor):
     K = lk.clausius_mossotti_constant(eps_r0, rho0)
     eps_r = ck.contact_permittivity(K, rho0, p_max, choice)
     assert_close(eps_r, rc.contact_permittivity(K, rho0, p_max, choice), RTOL, "eps_r")
-    h, floor = 10.0 ** log_h, 10.0 ** log_floor
-    assert_close(ck.contact_capacitance(eps_r, a, b, h, floor), rc.contact_capacitance(eps_r, a, b, h, floor), RTOL,
-                 "C contact")
+    h, floor = 10.0**log_h, 10.0**log_floor
+    assert_close(
+        ck.contact_capacitance(eps_r, a, b, h, floor), rc.contact_capacitance(eps_r, a, b, h, floor), RTOL, "C contact"
+    )
 
 
 @FAST
-@given(C=st.lists(st.tuples(st.one_of(st.just(0.0), floats(1e-13, 1e-9)),
-                            st.one_of(st.just(0.0), floats(1e-13, 1e-9))), min_size=1, max_size=40),
-       background=floats(0.0, 1e-10))
+@given(
+    C=st.lists(
+        st.tuples(st.one_of(st.just(0.0), floats(1e-13, 1e-9)), st.one_of(st.just(0.0), floats(1e-13, 1e-9))),
+        min_size=1,
+        max_size=40,
+    ),
+    background=floats(0.0, 1e-10),
+)
 def test_bearing_random(C, background):
     Ci = np.array([c[0] for c in C])
     Co = np.array([c[1] for c in C])
-    assert_close(ck.bearing_capacitance(Ci, Co, background), rc.bearing_capacitance(Ci, Co, background), RTOL,
-                 "bearing")
+    assert_close(
+        ck.bearing_capacitance(Ci, Co, background), rc.bearing_capacitance(Ci, Co, background), RTOL, "bearing"
+    )
 
 
 def test_compiled_kernels_are_current():
@@ -106,4 +125,6 @@ def test_compiled_kernels_are_current():
     own file, so a changed callee can leave stale compiled code (delete bearing_fmu/kernels/__pycache__)."""
     for choice in (ck.PRESSURE_MAX, ck.PRESSURE_MEAN):
         for p in (0.0, 1e9, 3e9):
-            assert ck.contact_permittivity(K_CM, 870.0, p, choice) == ck.contact_permittivity.py_func(K_CM, 870.0, p, choice)
+            assert ck.contact_permittivity(K_CM, 870.0, p, choice) == ck.contact_permittivity.py_func(
+                K_CM, 870.0, p, choice
+            )

@@ -5,12 +5,14 @@ RTOL = 1e-12. Measured max discrepancy over 3000 random cases (U in [1e-14, 1e-8
 [1e3, 1e4], W in [1e-8, 1e-3], k in [0.1, 20]): film formulas 5.8e-16, dimensionless groups
 4.3e-16, friction 1.4e-15, damping 3.8e-16; regimes are integers and must be equal.
 """
+
 import functools
 import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from bearing_fmu.kernels import ehl as ek
 from tests.reference import ref_ehl as re_
@@ -20,29 +22,34 @@ RTOL = 1e-12
 FAST = settings(max_examples=50, deadline=None)
 # finite, normal floats: subnormal inputs (< 2.2e-308) have no physical meaning and lose precision
 floats = functools.partial(st.floats, allow_nan=False, allow_infinity=False, allow_subnormal=False)
-E_STEEL = 210e9 / (1.0 - 0.3 ** 2)
+E_STEEL = 210e9 / (1.0 - 0.3**2)
 FORMULAS = [ek.FILM_HAMROCK_DOWSON, ek.FILM_MASJEDI_KHONSARI, ek.FILM_CHITTENDEN]
 # 6208 inner contact at psi = 0, omega = 500 rad/s, F_r = 3 kN, Guessasma oil (SPEC 4.4)
 SEED = dict(eta=0.04, xi=2.3e-8, E_red=E_STEEL, u=6.1, Q=1457.0, Rx=4.99e-3, Ry=0.1638, k=10.7)
 
 
 def test_every_public_kernel_has_a_twin():
-    kernels = [n for n, f in vars(ek).items()
-               if hasattr(f, "py_func") and f.py_func.__module__ == ek.__name__ and not n.startswith("_")]
+    kernels = [
+        n
+        for n, f in vars(ek).items()
+        if hasattr(f, "py_func") and f.py_func.__module__ == ek.__name__ and not n.startswith("_")
+    ]
     assert kernels and all(callable(getattr(re_, n, None)) for n in kernels), kernels
 
 
 def test_option_codes_match_twin():
     assert (ek.FILM_HAMROCK_DOWSON, ek.FILM_MASJEDI_KHONSARI, ek.FILM_CHITTENDEN) == (
-        re_.HAMROCK_DOWSON, re_.MASJEDI_KHONSARI, re_.CHITTENDEN)
+        re_.HAMROCK_DOWSON,
+        re_.MASJEDI_KHONSARI,
+        re_.CHITTENDEN,
+    )
     assert (ek.REGIME_BOUNDARY, ek.REGIME_MIXED, ek.REGIME_FULL_FILM) == (0, 1, 2)
 
 
 @FAST
-@given(log_u=floats(-14.0, -8.0), G=floats(1000.0, 10000.0), log_w=floats(-8.0, -3.0),
-       log_k=floats(-1.0, 1.3))
+@given(log_u=floats(-14.0, -8.0), G=floats(1000.0, 10000.0), log_w=floats(-8.0, -3.0), log_k=floats(-1.0, 1.3))
 def test_film_formulas_random(log_u, G, log_w, log_k):
-    U, W, k = 10.0 ** log_u, 10.0 ** log_w, 10.0 ** log_k
+    U, W, k = 10.0**log_u, 10.0**log_w, 10.0**log_k
     assert_close(ek.film_hamrock_dowson(U, G, W, k), re_.film_hamrock_dowson(U, G, W, k), RTOL, "HD")
     assert_close(ek.film_masjedi_khonsari(U, G, W, k), re_.film_masjedi_khonsari(U, G, W, k), RTOL, "MK")
     assert_close(ek.film_chittenden(U, G, W, k), re_.film_chittenden(U, G, W, k), RTOL, "Chittenden")
@@ -61,8 +68,12 @@ def test_hamrock_dowson_exponents():
     """SPEC 4.4 seed check: dlog Lambda / dlog Q = -0.073 and dlog Lambda / dlog omega = 0.68 (h_min)."""
     U, G, W, k = 1e-11, 4900.0, 1e-6, 10.7
     h = ek.film_hamrock_dowson(U, G, W, k)[1]
-    assert math.log(ek.film_hamrock_dowson(U, G, 2 * W, k)[1] / h) / math.log(2) == pytest.approx(-0.073, rel=1e-12, abs=0)
-    assert math.log(ek.film_hamrock_dowson(2 * U, G, W, k)[1] / h) / math.log(2) == pytest.approx(0.68, rel=1e-12, abs=0)
+    assert math.log(ek.film_hamrock_dowson(U, G, 2 * W, k)[1] / h) / math.log(2) == pytest.approx(
+        -0.073, rel=1e-12, abs=0
+    )
+    assert math.log(ek.film_hamrock_dowson(2 * U, G, W, k)[1] / h) / math.log(2) == pytest.approx(
+        0.68, rel=1e-12, abs=0
+    )
 
 
 @pytest.mark.parametrize("formula", FORMULAS)
@@ -73,9 +84,9 @@ def test_film_thickness_on_grid(formula, u, Q):
     got = ek.film_thickness(formula, *args)
     assert_close(got, re_.film_thickness(formula, *args), RTOL, f"film code {formula}")
     if Q <= 0.0:
-        assert got == (math.inf, math.inf)       # open contact: no film constraint
+        assert got == (math.inf, math.inf)  # open contact: no film constraint
     elif u == 0.0:
-        assert got == (0.0, 0.0)                 # at rest: no film
+        assert got == (0.0, 0.0)  # at rest: no film
     else:
         assert got[0] > 0.0 and got[1] > 0.0
         # entrainment direction does not matter, only its magnitude
@@ -84,12 +95,19 @@ def test_film_thickness_on_grid(formula, u, Q):
 
 
 @FAST
-@given(formula=st.sampled_from(FORMULAS), log_eta=floats(-3.0, 0.0), xi=floats(5e-9, 3e-8),
-       u=floats(-30.0, 30.0), log_q=floats(-2.0, 4.5), log_rx=floats(-3.5, -2.0),
-       log_ratio=floats(-1.0, 1.5), log_k=floats(-1.0, 1.3))
+@given(
+    formula=st.sampled_from(FORMULAS),
+    log_eta=floats(-3.0, 0.0),
+    xi=floats(5e-9, 3e-8),
+    u=floats(-30.0, 30.0),
+    log_q=floats(-2.0, 4.5),
+    log_rx=floats(-3.5, -2.0),
+    log_ratio=floats(-1.0, 1.5),
+    log_k=floats(-1.0, 1.3),
+)
 def test_film_thickness_random(formula, log_eta, xi, u, log_q, log_rx, log_ratio, log_k):
-    Rx = 10.0 ** log_rx
-    args = (10.0 ** log_eta, xi, E_STEEL, u, 10.0 ** log_q, Rx, Rx * 10.0 ** log_ratio, 10.0 ** log_k)
+    Rx = 10.0**log_rx
+    args = (10.0**log_eta, xi, E_STEEL, u, 10.0**log_q, Rx, Rx * 10.0**log_ratio, 10.0**log_k)
     assert_close(ek.film_thickness(formula, *args), re_.film_thickness(formula, *args), RTOL, f"film {formula}")
     assert_close(ek.dimensionless_groups(*args[:6]), re_.dimensionless_groups(*args[:6]), RTOL, "U, G, W")
 
@@ -98,17 +116,23 @@ def test_zero_speed_gives_boundary_regime():
     """SPEC 4.4: zero speed -> zero film, Lambda = 0, boundary regime, mu = 0.1, hysteretic damping."""
     for formula in FORMULAS:
         hc, hm = ek.film_thickness(formula, 0.04, 2.3e-8, E_STEEL, 0.0, 1457.0, 4.99e-3, 0.1638, 10.7)
-        assert (hc, hm) == (0.0, 0.0) == re_.film_thickness(formula, 0.04, 2.3e-8, E_STEEL, 0.0, 1457.0, 4.99e-3,
-                                                           0.1638, 10.7)
+        assert (
+            (hc, hm)
+            == (0.0, 0.0)
+            == re_.film_thickness(formula, 0.04, 2.3e-8, E_STEEL, 0.0, 1457.0, 4.99e-3, 0.1638, 10.7)
+        )
         lam = ek.film_parameter(hm, 0.375e-6)
         assert lam == 0.0 == re_.film_parameter(hm, 0.375e-6)
         assert ek.lubrication_regime(lam) == ek.REGIME_BOUNDARY == re_.lubrication_regime(lam)
         assert ek.friction_coefficient(lam) == 0.1 == re_.friction_coefficient(lam)
-        assert ek.normal_damping(lam, 1457.0, 0.08, 0.04, 1.9e-3, 6.3e-3, hm) == pytest.approx(1.5 * 0.08 * 1457.0, rel=1e-15, abs=0)
+        assert ek.normal_damping(lam, 1457.0, 0.08, 0.04, 1.9e-3, 6.3e-3, hm) == pytest.approx(
+            1.5 * 0.08 * 1457.0, rel=1e-15, abs=0
+        )
 
 
-@pytest.mark.parametrize("lam", [0.0, 0.5, 1.0, np.nextafter(1.0, 2.0), 1.5, 2.0, 2.999, 3.0, np.nextafter(3.0, 4.0),
-                                 5.0, 100.0, math.inf])
+@pytest.mark.parametrize(
+    "lam", [0.0, 0.5, 1.0, np.nextafter(1.0, 2.0), 1.5, 2.0, 2.999, 3.0, np.nextafter(3.0, 4.0), 5.0, 100.0, math.inf]
+)
 def test_regime_friction_damping_on_grid(lam):
     assert ek.lubrication_regime(lam) == re_.lubrication_regime(lam)
     assert_close(ek.friction_coefficient(lam), re_.friction_coefficient(lam), RTOL, f"mu({lam})")
@@ -135,16 +159,15 @@ def test_mixed_damping_is_the_series_combination():
 
 
 @FAST
-@given(lam=floats(0.0, 10.0), log_sigma=floats(-8.0, -6.0), log_q=floats(-1.0, 4.5),
-       log_eta=floats(-3.0, 0.0))
+@given(lam=floats(0.0, 10.0), log_sigma=floats(-8.0, -6.0), log_q=floats(-1.0, 4.5), log_eta=floats(-3.0, 0.0))
 def test_film_parameter_regime_friction_damping_random(lam, log_sigma, log_q, log_eta):
-    sigma = 10.0 ** log_sigma
+    sigma = 10.0**log_sigma
     h_min = lam * sigma
     assert_close(ek.film_parameter(h_min, sigma), re_.film_parameter(h_min, sigma), RTOL, "Lambda")
     L = ek.film_parameter(h_min, sigma)
     assert ek.lubrication_regime(L) == re_.lubrication_regime(L)
     assert_close(ek.friction_coefficient(L), re_.friction_coefficient(L), RTOL, "mu")
-    args = (L, 10.0 ** log_q, 0.08, 10.0 ** log_eta, 1.9e-3, 6.3e-3, h_min)
+    args = (L, 10.0**log_q, 0.08, 10.0**log_eta, 1.9e-3, 6.3e-3, h_min)
     assert_close(ek.normal_damping(*args), re_.normal_damping(*args), RTOL, "C_n")
 
 

@@ -10,12 +10,14 @@ Tolerances (measured max discrepancy on 3000 random geometries in the hypothesis
   the well-conditioned half-angle form 2 asin(sqrt(P_d/(4A))). Tolerance 1e-12 + eps/x
   (4 x the conditioning bound); measured 1.8e-13 over |P_d| <= 0.02 D.
 """
+
 import functools
 import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from bearing_fmu.kernels import geometry as gk
 from tests.reference import ref_geometry as rg
@@ -28,8 +30,12 @@ FAST = settings(max_examples=50, deadline=None)
 floats = functools.partial(st.floats, allow_nan=False, allow_infinity=False, allow_subnormal=False)
 
 # 6208 of the seeds (SPEC 4.1) and two other shapes: (D, d_m, f_i, f_o)
-GEOMETRIES = [(12.6e-3, 60.6e-3, 0.52, 0.52), (12.7e-3, 51e-3, 0.515, 0.525), (15.875e-3, 97.5e-3, 0.52, 0.53),
-              (2e-3, 40e-3, 0.501, 0.6)]
+GEOMETRIES = [
+    (12.6e-3, 60.6e-3, 0.52, 0.52),
+    (12.7e-3, 51e-3, 0.515, 0.525),
+    (15.875e-3, 97.5e-3, 0.52, 0.53),
+    (2e-3, 40e-3, 0.501, 0.6),
+]
 ANGLES = [0.0, 0.26, 0.7, 1.2]
 
 diameters = floats(1e-3, 50e-3)
@@ -45,8 +51,11 @@ def angle_tol(D, f_i, f_o, Pd):
 
 
 def test_every_public_kernel_has_a_twin():
-    kernels = [n for n, f in vars(gk).items()
-               if hasattr(f, "py_func") and f.py_func.__module__ == gk.__name__ and not n.startswith("_")]
+    kernels = [
+        n
+        for n, f in vars(gk).items()
+        if hasattr(f, "py_func") and f.py_func.__module__ == gk.__name__ and not n.startswith("_")
+    ]
     assert kernels and all(callable(getattr(rg, n, None)) for n in kernels), kernels
 
 
@@ -56,10 +65,15 @@ def test_closed_forms_on_grid(D, dm, f_i, f_o, alpha):
     assert_close(gk.gamma_ratio(D, dm, alpha), rg.gamma_ratio(D, dm, alpha), RTOL, "gamma")
     assert_close(gk.curvature_radii(D, dm, f_i, f_o, alpha), rg.curvature_radii(D, dm, f_i, f_o, alpha), RTOL, "radii")
     for omega in (-1000.0, -1.0, 0.0, 1.0, 500.0, 3000.0):
-        assert_close(gk.rolling_kinematics(omega, D, dm, alpha), rg.rolling_kinematics(omega, D, dm, alpha), RTOL,
-                     "kinematics")
-        assert_close(gk.defect_frequencies(omega, D, dm, alpha, 9), rg.defect_frequencies(omega, D, dm, alpha, 9),
-                     RTOL, "frequencies")
+        assert_close(
+            gk.rolling_kinematics(omega, D, dm, alpha), rg.rolling_kinematics(omega, D, dm, alpha), RTOL, "kinematics"
+        )
+        assert_close(
+            gk.defect_frequencies(omega, D, dm, alpha, 9),
+            rg.defect_frequencies(omega, D, dm, alpha, 9),
+            RTOL,
+            "frequencies",
+        )
     for Pd in (-0.02 * D, -1e-6, 0.0, 1e-9, 1e-6, 12.6e-6, 0.02 * D):
         tol = angle_tol(D, f_i, f_o, Pd)
         assert_close(gk.free_contact_angle(D, f_i, f_o, Pd), rg.free_contact_angle(D, f_i, f_o, Pd), tol, "alpha0")
@@ -67,8 +81,17 @@ def test_closed_forms_on_grid(D, dm, f_i, f_o, alpha):
 
 
 @FAST
-@given(D=diameters, ratio=pitch_ratios, f_i=conformities, f_o=conformities, alpha=angles, omega=speeds,
-       Z=st.integers(3, 60), pd_frac=floats(-0.02, 0.02), rho=floats(1000.0, 16000.0))
+@given(
+    D=diameters,
+    ratio=pitch_ratios,
+    f_i=conformities,
+    f_o=conformities,
+    alpha=angles,
+    omega=speeds,
+    Z=st.integers(3, 60),
+    pd_frac=floats(-0.02, 0.02),
+    rho=floats(1000.0, 16000.0),
+)
 def test_closed_forms_random(D, ratio, f_i, f_o, alpha, omega, Z, pd_frac, rho):
     dm = ratio * D
     Pd = pd_frac * D
@@ -78,8 +101,12 @@ def test_closed_forms_random(D, ratio, f_i, f_o, alpha, omega, Z, pd_frac, rho):
     assert_close(gk.free_contact_angle(D, f_i, f_o, Pd), rg.free_contact_angle(D, f_i, f_o, Pd), tol, "alpha0")
     assert_close(gk.free_endplay(D, f_i, f_o, Pd), rg.free_endplay(D, f_i, f_o, Pd), tol, "endplay")
     assert_close(gk.rolling_kinematics(omega, D, dm, alpha), rg.rolling_kinematics(omega, D, dm, alpha), RTOL, "kin")
-    assert_close(gk.defect_frequencies(omega, D, dm, alpha, Z), rg.defect_frequencies(omega, D, dm, alpha, Z), RTOL,
-                 "frequencies")
+    assert_close(
+        gk.defect_frequencies(omega, D, dm, alpha, Z),
+        rg.defect_frequencies(omega, D, dm, alpha, Z),
+        RTOL,
+        "frequencies",
+    )
     m = gk.ball_mass(D, rho)
     assert_close(m, rg.ball_mass(D, rho), RTOL, "mass")
     w_c = gk.rolling_kinematics(omega, D, dm, alpha)[0]

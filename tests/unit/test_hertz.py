@@ -14,12 +14,14 @@ Tolerances (measured max discrepancy over 2000 random cases, Ry/Rx in [1e-3, 1e3
   have Ry/Rx ~ 10-30, where this does not matter; the kernel returns the circle k = 1 for
   Ry/Rx <= 1 + 1e-12 (error <= 2/3 x 1e-12, inside RTOL).
 """
+
 import functools
 import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from bearing_fmu.kernels import hertz as hk
 from tests.reference import ref_hertz as rh
@@ -30,7 +32,7 @@ EPS = np.finfo(float).eps
 FAST = settings(max_examples=50, deadline=None)
 # finite, normal floats: subnormal inputs (< 2.2e-308) have no physical meaning and lose precision
 floats = functools.partial(st.floats, allow_nan=False, allow_infinity=False, allow_subnormal=False)
-E_STEEL = 210e9 / (1.0 - 0.3 ** 2)  # E' steel on steel (SPEC 4)
+E_STEEL = 210e9 / (1.0 - 0.3**2)  # E' steel on steel (SPEC 4)
 
 RATIOS = [1e-3, 0.01, 0.0707, 0.5, 0.9, 1.0 - 1e-4, 1.0, 1.0 + 1e-4, 1.1, 2.0, 10.0, 14.2, 27.6, 100.0, 1e3]
 NEAR_ONE = [1.0 + d for d in (1e-13, 1e-11, 1e-10, 1e-9, 1e-8, 1e-7, 1e-6, 1e-5, -1e-8, -1e-6, -1e-5)]
@@ -48,8 +50,11 @@ def coef_tol(ratio):
 
 
 def test_every_public_kernel_has_a_twin():
-    kernels = [n for n, f in vars(hk).items()
-               if hasattr(f, "py_func") and f.py_func.__module__ == hk.__name__ and not n.startswith("_")]
+    kernels = [
+        n
+        for n, f in vars(hk).items()
+        if hasattr(f, "py_func") and f.py_func.__module__ == hk.__name__ and not n.startswith("_")
+    ]
     assert kernels and all(callable(getattr(rh, n, None)) for n in kernels), kernels
 
 
@@ -86,16 +91,24 @@ def test_exact_coefficients_on_grid(ratio):
 @FAST
 @given(log_rx=log_radii, log_ratio=log_ratios)
 def test_exact_coefficients_random(log_rx, log_ratio):
-    Rx, ratio = 10.0 ** log_rx, 10.0 ** log_ratio
-    assert_close(hk.hertz_coefficients_exact(Rx, ratio * Rx), rh.hertz_coefficients_exact(Rx, ratio * Rx),
-                 coef_tol(ratio), f"exact at Ry/Rx = {ratio}")
+    Rx, ratio = 10.0**log_rx, 10.0**log_ratio
+    assert_close(
+        hk.hertz_coefficients_exact(Rx, ratio * Rx),
+        rh.hertz_coefficients_exact(Rx, ratio * Rx),
+        coef_tol(ratio),
+        f"exact at Ry/Rx = {ratio}",
+    )
 
 
 @pytest.mark.parametrize("ratio", RATIOS)
 def test_approx_coefficients(ratio):
     Rx = 3.7e-3
-    assert_close(hk.hertz_coefficients_approx(Rx, ratio * Rx), rh.hertz_coefficients_approx(Rx, ratio * Rx), RTOL,
-                 f"approx at Ry/Rx = {ratio}")
+    assert_close(
+        hk.hertz_coefficients_approx(Rx, ratio * Rx),
+        rh.hertz_coefficients_approx(Rx, ratio * Rx),
+        RTOL,
+        f"approx at Ry/Rx = {ratio}",
+    )
 
 
 @pytest.mark.parametrize("ratio", [0.0707, 0.5, 1.0, 14.2, 27.6])
@@ -114,22 +127,27 @@ def test_contact_and_stiffness_on_grid(ratio, Q, solution):
         assert (a_y > b_x) == (ratio > 1.0) and (a_y == pytest.approx(b_x, rel=1e-14, abs=0)) == (ratio == 1.0)
         K_h = hk.hertz_stiffness(Rx, Ry, E_STEEL, *coeff)
         assert_close(K_h, rh.hertz_stiffness(Rx, Ry, E_STEEL, *coeff), RTOL, "K_h")
-        assert K_h * delta ** 1.5 == pytest.approx(Q, rel=1e-13, abs=0)  # Q = K_h delta^1.5
+        assert K_h * delta**1.5 == pytest.approx(Q, rel=1e-13, abs=0)  # Q = K_h delta^1.5
 
 
 @FAST
 @given(log_rx=log_radii, log_ratio=log_ratios, log_q=log_loads, E_red=moduli)
 def test_contact_random(log_rx, log_ratio, log_q, E_red):
-    Rx = 10.0 ** log_rx
-    Ry = Rx * 10.0 ** log_ratio
-    Q = 10.0 ** log_q
+    Rx = 10.0**log_rx
+    Ry = Rx * 10.0**log_ratio
+    Q = 10.0**log_q
     coeff = rh.hertz_coefficients_exact(Rx, Ry)
-    assert_close(hk.hertz_contact(Q, Rx, Ry, E_red, *coeff), rh.hertz_contact(Q, Rx, Ry, E_red, *coeff), RTOL,
-                 "contact")
+    assert_close(
+        hk.hertz_contact(Q, Rx, Ry, E_red, *coeff), rh.hertz_contact(Q, Rx, Ry, E_red, *coeff), RTOL, "contact"
+    )
     assert_close(hk.hertz_stiffness(Rx, Ry, E_red, *coeff), rh.hertz_stiffness(Rx, Ry, E_red, *coeff), RTOL, "K_h")
     approx = rh.hertz_coefficients_approx(Rx, Ry)
-    assert_close(hk.hertz_contact(Q, Rx, Ry, E_red, *approx), rh.hertz_contact(Q, Rx, Ry, E_red, *approx), RTOL,
-                 "contact (approx coefficients)")
+    assert_close(
+        hk.hertz_contact(Q, Rx, Ry, E_red, *approx),
+        rh.hertz_contact(Q, Rx, Ry, E_red, *approx),
+        RTOL,
+        "contact (approx coefficients)",
+    )
 
 
 def test_slender_contact_is_the_wide_one_turned():
@@ -149,14 +167,14 @@ def test_circular_contact_matches_johnson():
     a, b, delta, p0 = hk.hertz_contact(Q, r, r, E_STEEL, *hk.hertz_coefficients_exact(r, r))
     a_j = (3.0 * Q * r / (4.0 * E_star)) ** (1.0 / 3.0)
     assert a == b == pytest.approx(a_j, rel=1e-14, abs=0)
-    assert delta == pytest.approx(a_j ** 2 / r, rel=1e-14, abs=0)
-    assert p0 == pytest.approx(3.0 * Q / (2.0 * math.pi * a_j ** 2), rel=1e-14, abs=0)
+    assert delta == pytest.approx(a_j**2 / r, rel=1e-14, abs=0)
+    assert p0 == pytest.approx(3.0 * Q / (2.0 * math.pi * a_j**2), rel=1e-14, abs=0)
 
 
 @FAST
 @given(log_k1=floats(8.0, 12.0), log_k2=floats(8.0, 12.0), log_q=log_loads)
 def test_series_stiffness(log_k1, log_k2, log_q):
-    K1, K2, Q = 10.0 ** log_k1, 10.0 ** log_k2, 10.0 ** log_q
+    K1, K2, Q = 10.0**log_k1, 10.0**log_k2, 10.0**log_q
     K = hk.series_stiffness(K1, K2)
     assert_close(K, rh.series_stiffness(K1, K2), RTOL, "series")
     # the same load on both contacts: the approaches add

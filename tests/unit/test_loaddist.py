@@ -25,12 +25,14 @@ eps in [1e-12, 1e6], 1500 force cases, 300 solves with F_r in [1e-3, 1e5] N):
   (arccos(1 - 2 eps), 1 - cos psi); at the edge of the loaded zone Q -> 0 and only an absolute
   error Q_max (4 eps_mach/eps)^1.5 is meaningful.
 """
+
 import functools
 import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from bearing_fmu.kernels import loaddist as ld
 from tests.reference import ref_loaddist as rl
@@ -39,8 +41,8 @@ from tests.unit._compare import assert_close, rel_err
 N_GAUSS = 48
 NODES, WEIGHTS = ld.gauss_legendre(N_GAUSS)
 RTOL = 1e-12
-RTOL_GL = 2.5 * N_GAUSS ** -5.0      # 9.8e-9
-RTOL_SLOPE = 2.5 * N_GAUSS ** -3.0   # 2.3e-5
+RTOL_GL = 2.5 * N_GAUSS**-5.0  # 9.8e-9
+RTOL_SLOPE = 2.5 * N_GAUSS**-3.0  # 2.3e-5
 EPS = np.finfo(float).eps
 FAST = settings(max_examples=50, deadline=None)
 # finite, normal floats: subnormal inputs (< 2.2e-308) have no physical meaning and lose precision
@@ -55,8 +57,11 @@ def conditioning(eps):
 
 
 def test_every_public_kernel_has_a_twin():
-    kernels = [n for n, f in vars(ld).items()
-               if hasattr(f, "py_func") and f.py_func.__module__ == ld.__name__ and not n.startswith("_")]
+    kernels = [
+        n
+        for n, f in vars(ld).items()
+        if hasattr(f, "py_func") and f.py_func.__module__ == ld.__name__ and not n.startswith("_")
+    ]
     assert kernels and all(callable(getattr(rl, n, None)) for n in kernels), kernels
 
 
@@ -88,23 +93,27 @@ def test_twin_rewritings_match_printed_forms():
         force, slope = rl.radial_force_and_slope(delta_r, Pd, K_6208, 9)
         assert force == pytest.approx(rl.radial_force_direct(delta_r, Pd, K_6208, 9), rel=1e-11, abs=0)
         h = 1e-4 * delta_r  # central difference, truncation ~ (h/delta_r)^2
-        fd = (rl.radial_force_and_slope(delta_r + h, Pd, K_6208, 9)[0]
-              - rl.radial_force_and_slope(delta_r - h, Pd, K_6208, 9)[0]) / (2.0 * h)
+        fd = (
+            rl.radial_force_and_slope(delta_r + h, Pd, K_6208, 9)[0]
+            - rl.radial_force_and_slope(delta_r - h, Pd, K_6208, 9)[0]
+        ) / (2.0 * h)
         assert slope == pytest.approx(fd, rel=1e-7, abs=0)
 
 
 @pytest.mark.parametrize("eps", [1e-9, 1e-4, 0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 0.999, 1.0, 1.001, 1.5, 3.0, 100.0])
 def test_radial_integral_on_grid(eps):
-    assert_close(ld.radial_integral(eps, NODES, WEIGHTS), rl.radial_integral(eps), RTOL_GL + conditioning(eps),
-                 f"J_r({eps})")
+    assert_close(
+        ld.radial_integral(eps, NODES, WEIGHTS), rl.radial_integral(eps), RTOL_GL + conditioning(eps), f"J_r({eps})"
+    )
 
 
 @FAST
 @given(log_eps=floats(-9.0, 4.0))
 def test_radial_integral_random(log_eps):
-    eps = 10.0 ** log_eps
-    assert_close(ld.radial_integral(eps, NODES, WEIGHTS), rl.radial_integral(eps), RTOL_GL + conditioning(eps),
-                 f"J_r({eps})")
+    eps = 10.0**log_eps
+    assert_close(
+        ld.radial_integral(eps, NODES, WEIGHTS), rl.radial_integral(eps), RTOL_GL + conditioning(eps), f"J_r({eps})"
+    )
 
 
 def test_radial_integral_edges_and_seed_value():
@@ -127,8 +136,13 @@ def test_stribeck_load_is_the_compression_law(delta_r, Pd, eps):
         q = ld.stribeck_load(psi, Q_max, eps)
         # at the edge of the loaded zone (here psi = +-90 deg at eps = 0.5) the bracket is a difference of
         # nearly equal numbers: its absolute error ~ eps_mach/eps gives Q errors ~ Q_max (eps_mach/eps)^1.5
-        assert_close(q, rl.stribeck_load(psi, Q_max, eps), RTOL + conditioning(eps), f"Q({psi})",
-                     atol=Q_max * (4.0 * EPS / eps) ** 1.5)
+        assert_close(
+            q,
+            rl.stribeck_load(psi, Q_max, eps),
+            RTOL + conditioning(eps),
+            f"Q({psi})",
+            atol=Q_max * (4.0 * EPS / eps) ** 1.5,
+        )
         law = K_6208 * max(delta_r * math.cos(psi) - Pd / 2.0, 0.0) ** 1.5
         assert q == pytest.approx(law, rel=1e-9, abs=1e-9 * Q_max)
 
@@ -162,10 +176,9 @@ def test_radial_force_and_slope_on_grid(Pd, delta_r):
 
 
 @FAST
-@given(log_delta=floats(-9.0, -4.0), Pd=floats(-50e-6, 50e-6), log_k=floats(9.0, 11.0),
-       Z=st.integers(3, 40))
+@given(log_delta=floats(-9.0, -4.0), Pd=floats(-50e-6, 50e-6), log_k=floats(9.0, 11.0), Z=st.integers(3, 40))
 def test_radial_force_and_slope_random(log_delta, Pd, log_k, Z):
-    delta_r, K = 10.0 ** log_delta, 10.0 ** log_k
+    delta_r, K = 10.0**log_delta, 10.0**log_k
     got = ld.radial_force_and_slope(delta_r, Pd, K, Z, NODES, WEIGHTS)
     want = rl.radial_force_and_slope(delta_r, Pd, K, Z)
     cond = conditioning(rl.load_parameter(delta_r, Pd))
@@ -187,7 +200,9 @@ def test_radial_slope_at_centre_with_preload():
     Pd = -20e-6
     expected = 0.75 * 9 * K_6208 * math.sqrt(-Pd / 2.0)
     assert rl.radial_force_and_slope(0.0, Pd, K_6208, 9)[1] == pytest.approx(expected, rel=1e-12, abs=0)
-    assert ld.radial_force_and_slope(0.0, Pd, K_6208, 9, NODES, WEIGHTS)[1] == pytest.approx(expected, rel=RTOL_SLOPE, abs=0)
+    assert ld.radial_force_and_slope(0.0, Pd, K_6208, 9, NODES, WEIGHTS)[1] == pytest.approx(
+        expected, rel=RTOL_SLOPE, abs=0
+    )
 
 
 @pytest.mark.parametrize("Pd", [-25e-6, -12.6e-6, 0.0, 12.6e-6, 40e-6])
@@ -204,7 +219,7 @@ def test_solve_radial_shift_on_grid(Pd, F_r):
 @FAST
 @given(log_f=floats(-3.0, 5.0), Pd=floats(-50e-6, 50e-6), log_k=floats(9.0, 11.0), Z=st.integers(3, 40))
 def test_solve_radial_shift_random(log_f, Pd, log_k, Z):
-    F_r, K = 10.0 ** log_f, 10.0 ** log_k
+    F_r, K = 10.0**log_f, 10.0**log_k
     delta_r, iters = ld.solve_radial_shift(F_r, Pd, K, Z, NODES, WEIGHTS, 1e-14)
     want = rl.solve_radial_shift(F_r, Pd, K, Z)
     assert_close(delta_r, want, RTOL_GL + conditioning(rl.load_parameter(want, Pd)), "delta_r")

@@ -12,12 +12,14 @@ Tolerances:
   the thesis (1.7e-6 at 233 K, 2.0e-8 at 313 K, 9e-10 at 473 K), so the tolerance is 1.5 x the
   estimate + 1e-10 (the twin's own error: quad at 1e-13, integral cut at 100 GPa < 2e-11).
 """
+
 import functools
 import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from bearing_fmu.kernels import lubricant as lk
 from bearing_fmu.params import catalogue, load_lubricant
@@ -29,10 +31,18 @@ FAST = settings(max_examples=50, deadline=None)
 # finite, normal floats: subnormal inputs (< 2.2e-308) have no physical meaning and lose precision
 floats = functools.partial(st.floats, allow_nan=False, allow_infinity=False, allow_subnormal=False)
 T_RANGE = (233.15, 473.15)  # K, the model's admissible oil temperatures
-SIMPSON_H = 2e6             # Pa, the kernel's Simpson step (wlf_alpha_star docstring)
+SIMPSON_H = 2e6  # Pa, the kernel's Simpson step (wlf_alpha_star docstring)
 
-WLF_INDEX = (lk.LUB_WLF_MU_G, lk.LUB_WLF_TG0, lk.LUB_WLF_A1, lk.LUB_WLF_A2, lk.LUB_WLF_B1, lk.LUB_WLF_B2,
-             lk.LUB_WLF_C1, lk.LUB_WLF_C2)
+WLF_INDEX = (
+    lk.LUB_WLF_MU_G,
+    lk.LUB_WLF_TG0,
+    lk.LUB_WLF_A1,
+    lk.LUB_WLF_A2,
+    lk.LUB_WLF_B1,
+    lk.LUB_WLF_B2,
+    lk.LUB_WLF_C1,
+    lk.LUB_WLF_C2,
+)
 LUB3 = tuple(float(load_lubricant("thesis_turbine_oil").array[i]) for i in WLF_INDEX)
 # lubricant 2 of the thesis (thesis_turbine_oil.toml, table [lubricant_2_wlf])
 LUB2 = (1e12, 189.95, 188.86, 0.7190e-9, 8.2e-9, -0.5278, 16.09, 17.38)
@@ -46,18 +56,28 @@ def alpha_star_tolerance(T, wlf):
     mu0 = rlub.wlf_viscosity(0.0, T, *wlf)
     h = 1e5  # second-order one-sided third difference: truncation ~ (alpha h)^2 ~ 4e-5 relative
     f = [rlub.wlf_ratio(i * h, T, mu0, *wlf) for i in range(5)]
-    f3 = (-5.0 * f[0] + 18.0 * f[1] - 24.0 * f[2] + 14.0 * f[3] - 3.0 * f[4]) / (2.0 * h ** 3)
-    return 1.5 * SIMPSON_H ** 4 / 180.0 * abs(f3) * rlub.wlf_alpha_star(T, *wlf) + 1e-10
+    f3 = (-5.0 * f[0] + 18.0 * f[1] - 24.0 * f[2] + 14.0 * f[3] - 3.0 * f[4]) / (2.0 * h**3)
+    return 1.5 * SIMPSON_H**4 / 180.0 * abs(f3) * rlub.wlf_alpha_star(T, *wlf) + 1e-10
 
 
 def test_every_public_kernel_has_a_twin():
-    kernels = [n for n, f in vars(lk).items()
-               if hasattr(f, "py_func") and f.py_func.__module__ == lk.__name__ and not n.startswith("_")]
+    kernels = [
+        n
+        for n, f in vars(lk).items()
+        if hasattr(f, "py_func") and f.py_func.__module__ == lk.__name__ and not n.startswith("_")
+    ]
     assert kernels and all(callable(getattr(rlub, n, None)) for n in kernels), kernels
 
 
-@pytest.mark.parametrize("nu1, T1, nu2, T2", [(68e-6, 313.15, 8.6e-6, 373.15), (96e-6, 313.15, 10.6e-6, 373.15),
-                                              (48e-6, 313.15, 7.9e-6, 373.15), (1e-3, 293.15, 2.1e-6, 473.15)])
+@pytest.mark.parametrize(
+    "nu1, T1, nu2, T2",
+    [
+        (68e-6, 313.15, 8.6e-6, 373.15),
+        (96e-6, 313.15, 10.6e-6, 373.15),
+        (48e-6, 313.15, 7.9e-6, 373.15),
+        (1e-3, 293.15, 2.1e-6, 473.15),
+    ],
+)
 def test_walther(nu1, T1, nu2, T2):
     AB = lk.walther_constants(nu1, T1, nu2, T2)
     assert_close(AB, rlub.walther_constants(nu1, T1, nu2, T2), RTOL, "Walther A, B")
@@ -72,17 +92,23 @@ def test_walther(nu1, T1, nu2, T2):
 def test_walther_random(log_nu40, B, T):
     """Oils from 10 to 1000 mm^2/s at 40 C with Walther slopes B of 2.5-4.5 (real mineral and synthetic
     oils lie around 3-4.2); the 100 C viscosity follows from B (at least 2 mm^2/s, the law's range)."""
-    nu1, T1, T2 = 10.0 ** log_nu40 * 1e-6, 313.15, 373.15
+    nu1, T1, T2 = 10.0**log_nu40 * 1e-6, 313.15, 373.15
     z2 = math.log10(math.log10(nu1 * 1e6 + 0.7)) - B * (math.log10(T2) - math.log10(T1))
-    nu2 = max((10.0 ** (10.0 ** z2) - 0.7) * 1e-6, 2e-6)
+    nu2 = max((10.0 ** (10.0**z2) - 0.7) * 1e-6, 2e-6)
     AB = lk.walther_constants(nu1, T1, nu2, T2)
     assert_close(AB, rlub.walther_constants(nu1, T1, nu2, T2), RTOL, "A, B")
     assert_close(lk.walther_viscosity(T, *AB), rlub.walther_viscosity(T, *AB), RTOL, "nu")
 
 
 @FAST
-@given(T=temperatures, p=floats(0.0, 3e9), rho=floats(700.0, 1100.0), a=floats(0.0, 1e-3),
-       eps_r0=floats(1.5, 5.0), log_nu=floats(-5.5, -3.0))
+@given(
+    T=temperatures,
+    p=floats(0.0, 3e9),
+    rho=floats(700.0, 1100.0),
+    a=floats(0.0, 1e-3),
+    eps_r0=floats(1.5, 5.0),
+    log_nu=floats(-5.5, -3.0),
+)
 def test_density_permittivity_gold_random(T, p, rho, a, eps_r0, log_nu):
     assert_close(lk.density_linear(T, rho, 288.15, a), rlub.density_linear(T, rho, 288.15, a), RTOL, "rho(T)")
     assert_close(lk.murnaghan_density(p, T, *MURNAGHAN), rlub.murnaghan_density(p, T, *MURNAGHAN), RTOL, "Murnaghan")
@@ -91,9 +117,10 @@ def test_density_permittivity_gold_random(T, p, rho, a, eps_r0, log_nu):
     assert_close(K, rlub.clausius_mossotti_constant(eps_r0, rho), RTOL, "C-M constant")
     rho_p = lk.dowson_higginson_density(rho, p)
     assert_close(lk.permittivity_from_density(K, rho_p), rlub.permittivity_from_density(K, rho_p), RTOL, "eps_r")
-    nu = 10.0 ** log_nu
-    assert_close(lk.gold_pressure_viscosity(nu, 9.904e-9, 0.139), rlub.gold_pressure_viscosity(nu, 9.904e-9, 0.139),
-                 RTOL, "Gold")
+    nu = 10.0**log_nu
+    assert_close(
+        lk.gold_pressure_viscosity(nu, 9.904e-9, 0.139), rlub.gold_pressure_viscosity(nu, 9.904e-9, 0.139), RTOL, "Gold"
+    )
 
 
 def test_density_and_permittivity_limits():

@@ -10,6 +10,7 @@ Tolerances:
   cond(L) < 1e7, so 1e-9 relative on temperature *rises* (T - T_start, the informative part; T itself
   is ~300 K and would hide errors) is both achievable and meaningful.
 """
+
 import math
 
 import numpy as np
@@ -27,8 +28,11 @@ HEATS = dict(Q_inner_ring_1=300.0, Q_outer_ring_1=200.0, Q_inner_ring_2=300.0, Q
 
 
 def test_every_public_kernel_has_a_twin():
-    kernels = [n for n, f in vars(nk).items()
-               if hasattr(f, "py_func") and f.py_func.__module__ == nk.__name__ and not n.startswith("_")]
+    kernels = [
+        n
+        for n, f in vars(nk).items()
+        if hasattr(f, "py_func") and f.py_func.__module__ == nk.__name__ and not n.startswith("_")
+    ]
     assert kernels and all(callable(getattr(rn, n, None)) for n in kernels), kernels
 
 
@@ -61,8 +65,15 @@ def random_network(seed, n=None, m=2):
         i, j = rng.choice(n + m, 2, replace=False)
         if i < n or j < n:
             add(int(min(i, j)), int(max(i, j)))
-    return (n, m, C, np.array(ends_i, dtype=np.int64), np.array(ends_j, dtype=np.int64),
-            np.array(kinds, dtype=np.int64), np.array(par))
+    return (
+        n,
+        m,
+        C,
+        np.array(ends_i, dtype=np.int64),
+        np.array(ends_j, dtype=np.int64),
+        np.array(kinds, dtype=np.int64),
+        np.array(par),
+    )
 
 
 @pytest.fixture(scope="module")
@@ -99,8 +110,7 @@ def test_conductances_and_assembly_vs_twin(seed, omega):
     assert_close(L.sum(axis=1), B.sum(axis=1), 1e-12, "row sums", atol=1e-12 * np.abs(L).max())
     rng = np.random.default_rng(seed)
     T, Tb = rng.uniform(280, 400, n), rng.uniform(280, 320, m)
-    assert_close(nk.boundary_heat_flow(n, ei, ej, G, T, Tb), rn.boundary_heat_flow(n, ei, ej, G, T, Tb), 1e-11,
-                 "P_out")
+    assert_close(nk.boundary_heat_flow(n, ei, ej, G, T, Tb), rn.boundary_heat_flow(n, ei, ej, G, T, Tb), 1e-11, "P_out")
     x = rng.normal(size=m)
     assert_close(nk.matvec(B, x), rn.matvec(B, x), RTOL, "matvec", atol=1e-14 * np.abs(B).max())
     y = rng.normal(size=n)
@@ -143,9 +153,13 @@ def test_thermomechanics_vs_twin():
         b = a * rng.uniform(1.05, 1.5)
         omega = rng.uniform(-3000, 3000)
         for r in (a, 0.5 * (a + b), b):
-            assert_close(nk.centrifugal_radial_growth(7850.0, 210e9, 0.3, omega, a, b, r),
-                         rn.centrifugal_radial_growth(7850.0, 210e9, 0.3, omega, a, b, r), 1e-12, "u_c",
-                         atol=1e-25)
+            assert_close(
+                nk.centrifugal_radial_growth(7850.0, 210e9, 0.3, omega, a, b, r),
+                rn.centrifugal_radial_growth(7850.0, 210e9, 0.3, omega, a, b, r),
+                1e-12,
+                "u_c",
+                atol=1e-25,
+            )
         d_i, D = 2 * b, rng.uniform(0.005, 0.03)
         d_o = d_i + 2 * D + rng.uniform(-50e-6, 50e-6)
         T = rng.uniform(250, 400, 3)
@@ -273,6 +287,7 @@ def test_energy_conservation_over_a_step(default, h):
     for _ in range(4):
         T_new = nk.implicit_euler_step(C, L, f, T, h, 1)
         out = nk.boundary_heat_flow(n, net.ends_i, net.ends_j, op["G"], T_new, Tb)
-        assert_close(float(np.dot(C, T_new - T)), h * (P_in - out), RTOL_LINALG, "IE energy",
-                     atol=RTOL_LINALG * P_in * h)
+        assert_close(
+            float(np.dot(C, T_new - T)), h * (P_in - out), RTOL_LINALG, "IE energy", atol=RTOL_LINALG * P_in * h
+        )
         T = T_new

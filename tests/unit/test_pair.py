@@ -5,6 +5,7 @@ Newton stops at a load residual of 1e-12 x F_p (scene tolerance), so loads that 
 construction agree to ~1e-12 relative; the tests ask 1e-9 (margin for the rounding of the ball sums
 and of the spring-loaded bearing's own Newton, which stops at the same relative tolerance).
 """
+
 import math
 
 import numpy as np
@@ -19,13 +20,20 @@ from bearing_fmu.scene import Scene
 RPM = 2.0 * math.pi / 60.0
 F_P = 800.0
 SPACING = 0.1
-COMBINED = (500.0, -200.0, 300.0, 20.0, -10.0)   # N, N, N, N.m, N.m at the pair centre
+COMBINED = (500.0, -200.0, 300.0, 20.0, -10.0)  # N, N, N, N.m, N.m at the pair centre
 
 
 @pytest.fixture(scope="module")
 def model():
-    scene = Scene(name="qs", fidelity="quasi_static", centrifugal=True, gyroscopic=True, stiffness=True,
-                  torque=False, tolerance=1e-12)
+    scene = Scene(
+        name="qs",
+        fidelity="quasi_static",
+        centrifugal=True,
+        gyroscopic=True,
+        stiffness=True,
+        torque=False,
+        tolerance=1e-12,
+    )
     return QuasiStaticModel("B7214C", "iso_vg68_mineral", scene)
 
 
@@ -57,7 +65,7 @@ def test_spring_preload_at_rest(model, arrangement):
         A, B = r.axial_loads
         assert B == pytest.approx(F_P, rel=1e-9)
         assert A == pytest.approx(F_P + F_z, rel=1e-9)
-        assert np.sign(r.D[2]) == np.sign(F_z)   # +F_z pushes the shaft towards +z
+        assert np.sign(r.D[2]) == np.sign(F_z)  # +F_z pushes the shaft towards +z
         assert np.all(np.abs(r.D[[0, 1]]) <= 1e-9 * z)
 
 
@@ -90,8 +98,13 @@ def test_thermal_offset_changes_only_the_fixed_preload(model):
     assert spring == pytest.approx((F_P, F_P), rel=1e-9)
 
 
-CASES = [(a, p, n, F) for a in ("X", "O") for p in ("spring", "fixed") for n in (0.0, 10000.0)
-         for F in ((0.0,) * 5, COMBINED)]
+CASES = [
+    (a, p, n, F)
+    for a in ("X", "O")
+    for p in ("spring", "fixed")
+    for n in (0.0, 10000.0)
+    for F in ((0.0,) * 5, COMBINED)
+]
 
 
 @pytest.mark.parametrize("arrangement,preload,rpm,F_ext", CASES)

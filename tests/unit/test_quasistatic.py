@@ -14,6 +14,7 @@ Tolerances:
   the largest. The difference step h = 1e-9 m (1e-8 rad) makes the truncation error ~h^2 K'''/6
   ~ 1e-9 relative and the rounding error ~eps F/h ~ 1e-7 relative.
 """
+
 import math
 
 import numpy as np
@@ -23,10 +24,15 @@ from bearing_fmu.kernels import quasistatic as qk
 from tests.reference import ref_quasistatic as ref
 
 RPM = 2.0 * math.pi / 60.0
-RACES = {"outer": qk.RACE_OUTER, "inner": qk.RACE_INNER, "hybrid": qk.RACE_HYBRID,
-         "hybrid_outer": qk.RACE_HYBRID_OUTER_SPLIT, "hybrid_inner": qk.RACE_HYBRID_INNER_SPLIT,
-         "hybrid_equal": qk.RACE_HYBRID_EQUAL_SPLIT,
-         "hybrid_controlling": qk.RACE_HYBRID_CONTROLLING}
+RACES = {
+    "outer": qk.RACE_OUTER,
+    "inner": qk.RACE_INNER,
+    "hybrid": qk.RACE_HYBRID,
+    "hybrid_outer": qk.RACE_HYBRID_OUTER_SPLIT,
+    "hybrid_inner": qk.RACE_HYBRID_INNER_SPLIT,
+    "hybrid_equal": qk.RACE_HYBRID_EQUAL_SPLIT,
+    "hybrid_controlling": qk.RACE_HYBRID_CONTROLLING,
+}
 
 
 def pack(p, tol=1e-12, maxit=100):
@@ -68,8 +74,9 @@ def kernel_solve(qs, F_applied, omega, control=(1, 1, 1, 1, 1), d0=None, dPd=0.0
     F = np.zeros(5)
     K = np.zeros((5, 5))
     balls = np.zeros((qk.BQ_SIZE, Z))
-    status, iters, res = qk.solve_quasistatic(np.asarray(F_applied, float), np.asarray(control, float), d, qs,
-                                              dPd, omega, X, F, K, balls)
+    status, iters, res = qk.solve_quasistatic(
+        np.asarray(F_applied, float), np.asarray(control, float), d, qs, dPd, omega, X, F, K, balls
+    )
     return status, d, F, K, balls, X
 
 
@@ -100,19 +107,42 @@ LOAD_CASES = [
     ("6208 preloaded, moment", ref.params_6208(Pd=-10e-6), (1000.0, 0.0, 200.0, 5.0, -3.0), 0.0),
     ("B7214C axial at rest", ref.params_b7214c(), (0.0, 0.0, 800.0, 0.0, 0.0), 0.0),
     ("B7214C ORC 10k", ref.params_b7214c(centrifugal=True, race="outer"), (0.0, 0.0, 800.0, 0.0, 0.0), 10000 * RPM),
-    ("B7214C ORCG 10k", ref.params_b7214c(centrifugal=True, gyroscopic=True, race="outer"),
-     (0.0, 0.0, 800.0, 0.0, 0.0), 10000 * RPM),
-    ("B7214C hybrid 10k", ref.params_b7214c(centrifugal=True, gyroscopic=True, race="hybrid"),
-     (0.0, 0.0, 800.0, 0.0, 0.0), 10000 * RPM),
-    ("B7214C hybrid outer-split 10k", ref.params_b7214c(centrifugal=True, gyroscopic=True, race="hybrid_outer"),
-     (0.0, 0.0, 800.0, 0.0, 0.0), 10000 * RPM),
-    ("B7214C hybrid inner-split 10k", ref.params_b7214c(centrifugal=True, gyroscopic=True, race="hybrid_inner"),
-     (0.0, 0.0, 800.0, 0.0, 0.0), 10000 * RPM),
-    ("B7214C hybrid equal-split 10k combined",
-     ref.params_b7214c(centrifugal=True, gyroscopic=True, race="hybrid_equal"),
-     (400.0, -200.0, 1500.0, 10.0, 5.0), 10000 * RPM),
-    ("B7214C IRC 10k combined", ref.params_b7214c(centrifugal=True, gyroscopic=True, race="inner"),
-     (400.0, -200.0, 1500.0, 10.0, 5.0), 10000 * RPM),
+    (
+        "B7214C ORCG 10k",
+        ref.params_b7214c(centrifugal=True, gyroscopic=True, race="outer"),
+        (0.0, 0.0, 800.0, 0.0, 0.0),
+        10000 * RPM,
+    ),
+    (
+        "B7214C hybrid 10k",
+        ref.params_b7214c(centrifugal=True, gyroscopic=True, race="hybrid"),
+        (0.0, 0.0, 800.0, 0.0, 0.0),
+        10000 * RPM,
+    ),
+    (
+        "B7214C hybrid outer-split 10k",
+        ref.params_b7214c(centrifugal=True, gyroscopic=True, race="hybrid_outer"),
+        (0.0, 0.0, 800.0, 0.0, 0.0),
+        10000 * RPM,
+    ),
+    (
+        "B7214C hybrid inner-split 10k",
+        ref.params_b7214c(centrifugal=True, gyroscopic=True, race="hybrid_inner"),
+        (0.0, 0.0, 800.0, 0.0, 0.0),
+        10000 * RPM,
+    ),
+    (
+        "B7214C hybrid equal-split 10k combined",
+        ref.params_b7214c(centrifugal=True, gyroscopic=True, race="hybrid_equal"),
+        (400.0, -200.0, 1500.0, 10.0, 5.0),
+        10000 * RPM,
+    ),
+    (
+        "B7214C IRC 10k combined",
+        ref.params_b7214c(centrifugal=True, gyroscopic=True, race="inner"),
+        (400.0, -200.0, 1500.0, 10.0, 5.0),
+        10000 * RPM,
+    ),
 ]
 
 
@@ -149,8 +179,9 @@ def test_jacobian_matches_central_differences(label, p, F_applied, omega):
     assert relative_entry_error(K, np.asarray(ref.stiffness_fd(d, p))) <= 1e-5
 
 
-@pytest.mark.parametrize("label,p,F_applied,omega", [c for c in LOAD_CASES if c[3] == 0.0],
-                         ids=[c[0] for c in LOAD_CASES if c[3] == 0.0])
+@pytest.mark.parametrize(
+    "label,p,F_applied,omega", [c for c in LOAD_CASES if c[3] == 0.0], ids=[c[0] for c in LOAD_CASES if c[3] == 0.0]
+)
 def test_stiffness_symmetric_at_rest(label, p, F_applied, omega):
     """At zero speed the ball forces derive from the Hertz potential: K is symmetric to 1e-8
     (relative to its largest entry, in consistent units: rotations as arc lengths at Rr_i)."""

@@ -1,4 +1,5 @@
 """Scene validation, parameter-file validation and the facade's input checks (SPEC 2, 5.2, 5.3)."""
+
 import math
 
 import pytest
@@ -45,24 +46,31 @@ def _write(tmp_path, text):
     return path
 
 
-BASE = (__import__("pathlib").Path(__file__).resolve().parents[2] / "bearing_fmu" / "params" / "bearings"
-        / "6208.toml").read_text()
+BASE = (
+    __import__("pathlib").Path(__file__).resolve().parents[2] / "bearing_fmu" / "params" / "bearings" / "6208.toml"
+).read_text()
 
 
 def test_missing_key_is_named(tmp_path):
-    text = BASE.replace('n_balls             = { value = 9, unit = "-", source = "Guessasma 2018 section 2: Z = 9" }\n', "")
+    text = BASE.replace(
+        'n_balls             = { value = 9, unit = "-", source = "Guessasma 2018 section 2: Z = 9" }\n', ""
+    )
     with pytest.raises(ParameterError, match="missing key 'geometry.n_balls'"):
         load_bearing(_write(tmp_path, text))
 
 
 def test_out_of_range_value_names_key_and_range(tmp_path):
     text = BASE.replace("inner_conformity    = { value = 0.52", "inner_conformity    = { value = 0.45")
-    with pytest.raises(ParameterError, match=r"'geometry.inner_conformity' = 0.45 - is outside the allowed range \]0.5, 1.0\]"):
+    with pytest.raises(
+        ParameterError, match=r"'geometry.inner_conformity' = 0.45 - is outside the allowed range \]0.5, 1.0\]"
+    ):
         load_bearing(_write(tmp_path, text))
 
 
 def test_wrong_unit_is_named(tmp_path):
-    text = BASE.replace('ball_diameter       = { value = 12.6e-3, unit = "m"', 'ball_diameter       = { value = 12.6e-3, unit = "mm"')
+    text = BASE.replace(
+        'ball_diameter       = { value = 12.6e-3, unit = "m"', 'ball_diameter       = { value = 12.6e-3, unit = "mm"'
+    )
     with pytest.raises(ParameterError, match="'geometry.ball_diameter' has unit 'mm', expected 'm'"):
         load_bearing(_write(tmp_path, text))
 
@@ -77,10 +85,17 @@ def test_analytic_fidelity_refuses_angular_contact():
         BearingModel("B7214C", "iso_vg68_mineral")
 
 
-@pytest.mark.parametrize("omega, F_y, T_oil, word", [
-    (math.nan, 100.0, 313.0, "omega"), (1e6, 100.0, 313.0, "omega"), (10.0, math.inf, 313.0, "F_y"),
-    (10.0, 100.0, 0.0, "T_oil"), (10.0, 100.0, math.nan, "T_oil"), (10.0, 1e8, 313.0, "material limit"),
-])
+@pytest.mark.parametrize(
+    "omega, F_y, T_oil, word",
+    [
+        (math.nan, 100.0, 313.0, "omega"),
+        (1e6, 100.0, 313.0, "omega"),
+        (10.0, math.inf, 313.0, "F_y"),
+        (10.0, 100.0, 0.0, "T_oil"),
+        (10.0, 100.0, math.nan, "T_oil"),
+        (10.0, 1e8, 313.0, "material limit"),
+    ],
+)
 def test_bad_inputs_name_input_and_range(omega, F_y, T_oil, word):
     with pytest.raises(InputError, match=word):
         BearingModel().evaluate(omega, F_y, T_oil)

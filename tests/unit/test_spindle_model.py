@@ -1,10 +1,10 @@
 """SpindleThermalModel facade (spindle/model.py): variables, stepping, state, steady state, thermo-mechanics,
 axial float, parameter and input validation. Expectations come from the model definition
 (docs/spindle_thermal.md, SPEC 4.9) and are derived in each docstring."""
+
 import json
 import math
 
-import numpy as np
 import pytest
 
 from bearing_fmu.model import InputError
@@ -33,17 +33,46 @@ def variant(tmp_path, *replacements, name="variant"):
 def test_variables_exactly():
     """Inputs and outputs of the default spindle, in order (SPEC 4.9 and the design brief)."""
     m = SpindleThermalModel()
-    assert [v.name for v in m.inputs] == ["Q_inner_ring_1", "Q_outer_ring_1", "Q_inner_ring_2", "Q_outer_ring_2",
-                                          "P_motor", "omega", "T_ambient", "T_coolant"]
-    nodes = ["shaft", "inner_ring_1", "inner_ring_2", "ball_oil_1", "ball_oil_2", "outer_ring_1", "outer_ring_2",
-             "housing"]
+    assert [v.name for v in m.inputs] == [
+        "Q_inner_ring_1",
+        "Q_outer_ring_1",
+        "Q_inner_ring_2",
+        "Q_outer_ring_2",
+        "P_motor",
+        "omega",
+        "T_ambient",
+        "T_coolant",
+    ]
+    nodes = [
+        "shaft",
+        "inner_ring_1",
+        "inner_ring_2",
+        "ball_oil_1",
+        "ball_oil_2",
+        "outer_ring_1",
+        "outer_ring_2",
+        "housing",
+    ]
     assert [v.name for v in m.outputs] == [f"T_{n}" for n in nodes] + [
-        "T_oil_1", "dPd_thermal_1", "T_oil_2", "dPd_thermal_2", "dz_thermal", "dz_thermal_1", "dz_thermal_2",
-        "P_in", "P_out", "E_stored"]
+        "T_oil_1",
+        "dPd_thermal_1",
+        "T_oil_2",
+        "dPd_thermal_2",
+        "dz_thermal",
+        "dz_thermal_1",
+        "dz_thermal_2",
+        "P_in",
+        "P_out",
+        "E_stored",
+    ]
     assert all(v.unit and v.description for v in m.inputs + m.outputs)
     m.initialize()
-    assert set(m.outputs_values()) == {v.name for v in m.outputs} | {"T_inner_ring_1", "T_inner_ring_2",
-                                                                     "T_outer_ring_1", "T_outer_ring_2"}
+    assert set(m.outputs_values()) == {v.name for v in m.outputs} | {
+        "T_inner_ring_1",
+        "T_inner_ring_2",
+        "T_outer_ring_1",
+        "T_outer_ring_2",
+    }
 
 
 def test_initial_state_and_rest():
@@ -210,9 +239,15 @@ def test_bad_inputs_name_the_input():
     m = SpindleThermalModel()
     m.initialize(**RUN)
     before = m.get_state()
-    cases = [(dict(omega=math.nan), "omega"), (dict(T_ambient=-5.0), "T_ambient"),
-             (dict(T_coolant=math.inf), "T_coolant"), (dict(Q_inner_ring_1=math.nan), "Q_inner_ring_1"),
-             (dict(P_motor=1e12), "P_motor"), (dict(Q_typo=1.0), "Q_typo"), (dict(omega="fast"), "omega")]
+    cases = [
+        (dict(omega=math.nan), "omega"),
+        (dict(T_ambient=-5.0), "T_ambient"),
+        (dict(T_coolant=math.inf), "T_coolant"),
+        (dict(Q_inner_ring_1=math.nan), "Q_inner_ring_1"),
+        (dict(P_motor=1e12), "P_motor"),
+        (dict(Q_typo=1.0), "Q_typo"),
+        (dict(omega="fast"), "omega"),
+    ]
     for inputs, name in cases:
         with pytest.raises(SpindleInputError, match=name) as info:
             m.step(1.0, **inputs)
@@ -232,22 +267,37 @@ def test_bad_inputs_name_the_input():
 def test_parameter_errors(tmp_path):
     """Parameter files are checked: a node cut off from every boundary (L singular) is named; a wrong
     unit, a split not summing to 1, an unknown catalogue name are reported with the key."""
-    isolated = variant(tmp_path, ('[[node]]\nname = "housing"',
-                                  '[[node]]\nname = "lonely"\ncapacity = { value = 1.0, unit = "J/K", source = "t" }\n\n'
-                                  '[[node]]\nname = "housing"'), name="isolated")
-    with pytest.raises(ParameterError, match="node lonely has no conductive path to a boundary: steady state undefined"):
+    isolated = variant(
+        tmp_path,
+        (
+            '[[node]]\nname = "housing"',
+            '[[node]]\nname = "lonely"\ncapacity = { value = 1.0, unit = "J/K", source = "t" }\n\n'
+            '[[node]]\nname = "housing"',
+        ),
+        name="isolated",
+    )
+    with pytest.raises(
+        ParameterError, match="node lonely has no conductive path to a boundary: steady state undefined"
+    ):
         SpindleThermalModel(isolated)
-    shaft_only = variant(tmp_path, ('between = ["shaft", "inner_ring_1"]', 'between = ["inner_ring_2", "inner_ring_1"]'),
-                         ('between = ["shaft", "inner_ring_2"]', 'between = ["inner_ring_1", "inner_ring_2"]'),
-                         name="shaft_only")
+    shaft_only = variant(
+        tmp_path,
+        ('between = ["shaft", "inner_ring_1"]', 'between = ["inner_ring_2", "inner_ring_1"]'),
+        ('between = ["shaft", "inner_ring_2"]', 'between = ["inner_ring_1", "inner_ring_2"]'),
+        name="shaft_only",
+    )
     with pytest.raises(ParameterError, match="node shaft has no conductive path"):
         SpindleThermalModel(shaft_only)  # only the rotating-shaft convection left: it vanishes at rest
-    unit = variant(tmp_path, ('h_c  = { value = 2000.0, unit = "W/m^2/K"', 'h_c  = { value = 2000.0, unit = "W/m2K"'),
-                   name="unit")
+    unit = variant(
+        tmp_path, ('h_c  = { value = 2000.0, unit = "W/m^2/K"', 'h_c  = { value = 2000.0, unit = "W/m2K"'), name="unit"
+    )
     with pytest.raises(ParameterError, match="h_c"):
         SpindleThermalModel(unit)
-    split = variant(tmp_path, ("split = { inner_ring_1 = 0.5, ball_oil_1 = 0.5 }",
-                               "split = { inner_ring_1 = 0.5, ball_oil_1 = 0.4 }"), name="split")
+    split = variant(
+        tmp_path,
+        ("split = { inner_ring_1 = 0.5, ball_oil_1 = 0.5 }", "split = { inner_ring_1 = 0.5, ball_oil_1 = 0.4 }"),
+        name="split",
+    )
     with pytest.raises(ParameterError, match="sum to"):
         SpindleThermalModel(split)
     with pytest.raises(ParameterError, match="unknown spindle"):
@@ -260,9 +310,9 @@ def test_capacities_from_b7214c_geometry():
     17 balls of 15.875 mm (docs/spindle_thermal.md). 1e-3: the file rounds to 4 digits."""
     rho_c, B = 7850.0 * 460.0, 0.024
     C = dict(zip(SpindleThermalModel().net.nodes, SpindleThermalModel().net.C))
-    assert_close(C["inner_ring_1"], rho_c * math.pi / 4 * (0.084 ** 2 - 0.070 ** 2) * B, 1e-3, "inner ring")
-    assert_close(C["outer_ring_1"], rho_c * math.pi / 4 * (0.125 ** 2 - 0.111 ** 2) * B, 1e-3, "outer ring")
-    assert_close(C["ball_oil_1"], rho_c * 17 * math.pi / 6 * 0.015875 ** 3, 1e-3, "balls")
+    assert_close(C["inner_ring_1"], rho_c * math.pi / 4 * (0.084**2 - 0.070**2) * B, 1e-3, "inner ring")
+    assert_close(C["outer_ring_1"], rho_c * math.pi / 4 * (0.125**2 - 0.111**2) * B, 1e-3, "outer ring")
+    assert_close(C["ball_oil_1"], rho_c * 17 * math.pi / 6 * 0.015875**3, 1e-3, "balls")
 
 
 def test_parameters_summary():

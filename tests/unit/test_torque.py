@@ -17,6 +17,7 @@ Tolerances:
   from the twin: 2e-5 except near the inner/outer cross-over at gamma = 0.092, up to 0.50 %).
   Measured: nodes 0.45 % (gamma = 0.37), anywhere 0.65 % (gamma = 0.092).
 """
+
 import functools
 import math
 import tomllib
@@ -24,7 +25,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import bearing_fmu
 from bearing_fmu.kernels import geometry as gk
@@ -39,7 +41,7 @@ ISO76_ROUNDING = 0.05 / 9.39
 FAST = settings(max_examples=50, deadline=None)
 SLOW = settings(max_examples=25, deadline=None)  # twins that run nested quadratures
 floats = functools.partial(st.floats, allow_nan=False, allow_infinity=False, allow_subnormal=False)
-E_STEEL = 210e9 / (1.0 - 0.3 ** 2)
+E_STEEL = 210e9 / (1.0 - 0.3**2)
 ETA, XI = 0.04, 2.3e-8  # Guessasma oil (SPEC 4.4)
 
 
@@ -61,14 +63,20 @@ def _seed_6208():
 
 
 def test_every_public_kernel_has_a_twin():
-    kernels = [n for n, f in vars(tk).items()
-               if hasattr(f, "py_func") and f.py_func.__module__ == tk.__name__ and not n.startswith("_")]
+    kernels = [
+        n
+        for n, f in vars(tk).items()
+        if hasattr(f, "py_func") and f.py_func.__module__ == tk.__name__ and not n.startswith("_")
+    ]
     assert kernels and all(callable(getattr(rt, n, None)) for n in kernels), kernels
 
 
 def test_codes_match_twin():
-    assert (tk.TL_EHL, tk.TL_HYST, tk.TL_HEATHCOTE, tk.TL_SPIN, tk.TL_SIZE) == (
-        rt.TL_EHL, rt.TL_HYST, rt.TL_HEATHCOTE, rt.TL_SPIN, rt.TL_SIZE) == (0, 1, 2, 3, 4)
+    assert (
+        (tk.TL_EHL, tk.TL_HYST, tk.TL_HEATHCOTE, tk.TL_SPIN, tk.TL_SIZE)
+        == (rt.TL_EHL, rt.TL_HYST, rt.TL_HEATHCOTE, rt.TL_SPIN, rt.TL_SIZE)
+        == (0, 1, 2, 3, 4)
+    )
     assert (tk.PALMGREN_DEEP_GROOVE, tk.PALMGREN_ANGULAR_CONTACT) == (rt.DEEP_GROOVE, rt.ANGULAR_CONTACT)
     assert (tk.LUB_OIL_MIST, tk.LUB_OIL_BATH, tk.LUB_OIL_JET) == (rt.OIL_MIST, rt.OIL_BATH, rt.OIL_JET)
     assert tk.ALPHA_HYSTERESIS_STEEL == 0.007
@@ -76,15 +84,19 @@ def test_codes_match_twin():
 
 # ---------------------------------------------------------------- Heathcote constant (note 4b)
 
+
 def test_heathcote_constant():
     """c is the root in (0, 1) of c^3 - 3c + 1 (zero net force of the line load), I = 0.2149,
     3I/8 = 0.0806 as printed in the note; I also by 1D quadrature (independent of the primitive)."""
     from scipy.integrate import quad
+
     c = tk.HEATHCOTE_BAND
-    assert abs(c ** 3 - 3.0 * c + 1.0) < 1e-15 and 0.0 < c < 1.0
+    assert abs(c**3 - 3.0 * c + 1.0) < 1e-15 and 0.0 < c < 1.0
     assert round(c, 4) == 0.3473 and round(tk.HEATHCOTE_INTEGRAL, 4) == 0.2149
-    integral = 2.0 * (quad(lambda s: (1 - s * s) * (c * c - s * s), 0.0, c, epsabs=0, epsrel=1e-13)[0]
-                      + quad(lambda s: (1 - s * s) * (s * s - c * c), c, 1.0, epsabs=0, epsrel=1e-13)[0])
+    integral = 2.0 * (
+        quad(lambda s: (1 - s * s) * (c * c - s * s), 0.0, c, epsabs=0, epsrel=1e-13)[0]
+        + quad(lambda s: (1 - s * s) * (s * s - c * c), c, 1.0, epsabs=0, epsrel=1e-13)[0]
+    )
     assert_close(tk.HEATHCOTE_INTEGRAL, integral, RTOL, "I")
     assert tk.HEATHCOTE_CONSTANT == pytest.approx(3.0 * integral / 8.0, rel=RTOL, abs=0)
     assert round(tk.HEATHCOTE_CONSTANT, 4) == 0.0806
@@ -98,12 +110,20 @@ def test_heathcote_band_from_the_ellipse():
 
 # ---------------------------------------------------------------- Houpert EHL rolling force
 
+
 @FAST
-@given(log_q=floats(-2.0, 4.7), u=floats(-40.0, 40.0), log_rx=floats(-3.5, -2.0), log_ratio=floats(0.0, 2.3),
-       E_red=floats(1e11, 4e11), log_eta=floats(-3.0, 0.0), xi=floats(5e-9, 3e-8))
+@given(
+    log_q=floats(-2.0, 4.7),
+    u=floats(-40.0, 40.0),
+    log_rx=floats(-3.5, -2.0),
+    log_ratio=floats(0.0, 2.3),
+    E_red=floats(1e11, 4e11),
+    log_eta=floats(-3.0, 0.0),
+    xi=floats(5e-9, 3e-8),
+)
 def test_houpert_random(log_q, u, log_rx, log_ratio, E_red, log_eta, xi):
-    Rx = 10.0 ** log_rx
-    args = (10.0 ** log_q, u, Rx, Rx * 10.0 ** log_ratio, E_red, 10.0 ** log_eta, xi)
+    Rx = 10.0**log_rx
+    args = (10.0**log_q, u, Rx, Rx * 10.0**log_ratio, E_red, 10.0**log_eta, xi)
     assert_close(tk.houpert_rolling_force(*args), rt.houpert_rolling_force(*args), RTOL, "F_R")
 
 
@@ -120,11 +140,18 @@ def test_houpert_grid_and_zeros(Q, u):
     assert tk.houpert_rolling_force(Q, u, 4.99e-3, 0.1638, E_STEEL, 0.0, XI) == 0.0  # no viscosity
 
 
-@pytest.mark.parametrize("which, exponent", [
-    ("u_mean", 0.656), ("eta", 0.656), ("Q", 0.466), ("Ry", 0.35), ("xi", 0.022),
-    ("E_red", 1.0 - 0.656 - 0.466 + 0.022),        # E' enters F_R, U, W and G
-    ("Rx", 2.0 - 0.35 - 0.656 - 2.0 * 0.466),      # Rx enters Rx^2, k, U and W (Ry fixed)
-])
+@pytest.mark.parametrize(
+    "which, exponent",
+    [
+        ("u_mean", 0.656),
+        ("eta", 0.656),
+        ("Q", 0.466),
+        ("Ry", 0.35),
+        ("xi", 0.022),
+        ("E_red", 1.0 - 0.656 - 0.466 + 0.022),  # E' enters F_R, U, W and G
+        ("Rx", 2.0 - 0.35 - 0.656 - 2.0 * 0.466),  # Rx enters Rx^2, k, U and W (Ry fixed)
+    ],
+)
 def test_houpert_scaling_laws(which, exponent):
     """F_R is a power law: F_R ~ U^0.656 (speed and viscosity), W^0.466, k^0.35, ..."""
     base = dict(Q=1457.0, u_mean=7.25, Rx=4.99e-3, Ry=0.1638, E_red=E_STEEL, eta=ETA, xi=XI)
@@ -134,8 +161,9 @@ def test_houpert_scaling_laws(which, exponent):
     assert slope == pytest.approx(exponent, rel=0, abs=1e-12)
 
 
-@pytest.mark.parametrize("ratio, printed", [(5, 0.979), (10, 1.002), (20, 1.014), (32.8, 1.018), (50, 1.018),
-                                            (100, 1.013)])
+@pytest.mark.parametrize(
+    "ratio, printed", [(5, 0.979), (10, 1.002), (20, 1.014), (32.8, 1.018), (50, 1.018), (100, 1.013)]
+)
 def test_houpert_matches_biboulet_houpert_eq29(ratio, printed):
     """The note's table 2.3: BH2010 eq. 29 (own notation: U on 2 u_m, kappa = b/a, exact Hertz) over the
     2.765 form with E', k = Ry/Rx and the mean speed; the ratio depends on Ry/Rx only. Printed to
@@ -153,24 +181,24 @@ contact_args = dict(log_q=floats(-1.0, 4.5), log_rx=floats(-3.3, -2.0), log_rati
 @SLOW
 @given(alpha_h=floats(1e-3, 2e-2), **contact_args)
 def test_hysteresis_random(alpha_h, log_q, log_rx, log_ratio):
-    Q, Rx = 10.0 ** log_q, 10.0 ** log_rx
-    _, b, _ = _contact(Q, Rx, Rx * 10.0 ** log_ratio)
+    Q, Rx = 10.0**log_q, 10.0**log_rx
+    _, b, _ = _contact(Q, Rx, Rx * 10.0**log_ratio)
     assert_close(tk.hysteresis_force(Q, b, Rx, alpha_h), rt.hysteresis_force(Q, b, Rx, alpha_h), QUAD_RTOL, "F_h")
 
 
 @SLOW
 @given(mu=floats(0.005, 0.15), f=floats(0.505, 0.57), log_d=floats(-2.5, -1.3), **contact_args)
 def test_heathcote_random(mu, f, log_d, log_q, log_rx, log_ratio):
-    Q, Rx, D = 10.0 ** log_q, 10.0 ** log_rx, 10.0 ** log_d
-    a, b, _ = _contact(Q, Rx, Rx * 10.0 ** log_ratio)
+    Q, Rx, D = 10.0**log_q, 10.0**log_rx, 10.0**log_d
+    a, b, _ = _contact(Q, Rx, Rx * 10.0**log_ratio)
     assert_close(tk.heathcote_force(Q, a, Rx, f, D, mu), rt.heathcote_force(Q, a, Rx, f, D, mu, b), QUAD_RTOL, "F_H")
 
 
 @SLOW
 @given(mu=floats(0.005, 0.15), **contact_args)
 def test_spin_random(mu, log_q, log_rx, log_ratio):
-    Q, Rx = 10.0 ** log_q, 10.0 ** log_rx
-    a, _, ell_E = _contact(Q, Rx, Rx * 10.0 ** log_ratio)
+    Q, Rx = 10.0**log_q, 10.0**log_rx
+    a, _, ell_E = _contact(Q, Rx, Rx * 10.0**log_ratio)
     assert_close(tk.spin_moment(Q, a, ell_E, mu), rt.spin_moment(Q, a, ell_E, mu), QUAD_RTOL, "M_s")
 
 
@@ -191,12 +219,17 @@ def test_spin_circle():
 @pytest.mark.parametrize("Q", [-1.0, 0.0])
 def test_open_contact_loses_nothing(Q):
     assert tk.hysteresis_force(Q, 1e-4, 5e-3, 0.007) == 0.0 == rt.hysteresis_force(Q, 1e-4, 5e-3, 0.007)
-    assert tk.heathcote_force(Q, 1e-3, 5e-3, 0.52, 12.6e-3, 0.1) == 0.0 == rt.heathcote_force(Q, 1e-3, 5e-3, 0.52,
-                                                                                               12.6e-3, 0.1)
+    assert (
+        tk.heathcote_force(Q, 1e-3, 5e-3, 0.52, 12.6e-3, 0.1)
+        == 0.0
+        == rt.heathcote_force(Q, 1e-3, 5e-3, 0.52, 12.6e-3, 0.1)
+    )
     assert tk.spin_moment(Q, 1e-3, 1.1, 0.1) == 0.0 == rt.spin_moment(Q, 1e-3, 1.1, 0.1)
     out = np.full(tk.TL_SIZE, np.nan)
-    assert tk.contact_losses(Q, 7.0, 50.0, 5e-3, 0.16, 0.0, 0.0, 1.0, 0.52, 12.6e-3, E_STEEL, ETA, XI, 0.1,
-                             0.007, out) == 0.0
+    assert (
+        tk.contact_losses(Q, 7.0, 50.0, 5e-3, 0.16, 0.0, 0.0, 1.0, 0.52, 12.6e-3, E_STEEL, ETA, XI, 0.1, 0.007, out)
+        == 0.0
+    )
     assert np.all(out == 0.0)
 
 
@@ -217,14 +250,21 @@ def test_load_scaling_through_hertz():
 
 # ---------------------------------------------------------------- contact_losses
 
+
 @SLOW
-@given(u=floats(-30.0, 30.0), omega_spin=floats(-500.0, 500.0), mu=floats(0.005, 0.15), alpha_h=floats(1e-3, 2e-2),
-       log_eta=floats(-3.0, 0.0), **contact_args)
+@given(
+    u=floats(-30.0, 30.0),
+    omega_spin=floats(-500.0, 500.0),
+    mu=floats(0.005, 0.15),
+    alpha_h=floats(1e-3, 2e-2),
+    log_eta=floats(-3.0, 0.0),
+    **contact_args,
+)
 def test_contact_losses_random(u, omega_spin, mu, alpha_h, log_eta, log_q, log_rx, log_ratio):
-    Q, Rx = 10.0 ** log_q, 10.0 ** log_rx
-    Ry = Rx * 10.0 ** log_ratio
+    Q, Rx = 10.0**log_q, 10.0**log_rx
+    Ry = Rx * 10.0**log_ratio
     a, b, ell_E = _contact(Q, Rx, Ry)
-    args = (Q, u, omega_spin, Rx, Ry, a, b, ell_E, 0.52, 12.6e-3, E_STEEL, 10.0 ** log_eta, XI, mu, alpha_h)
+    args = (Q, u, omega_spin, Rx, Ry, a, b, ell_E, 0.52, 12.6e-3, E_STEEL, 10.0**log_eta, XI, mu, alpha_h)
     out_k, out_t = np.zeros(tk.TL_SIZE), np.zeros(rt.TL_SIZE)
     total = tk.contact_losses(*args, out_k)
     assert_close(total, rt.contact_losses(*args, out_t), QUAD_RTOL, "total")
@@ -239,11 +279,13 @@ def test_contact_losses_bookkeeping():
     out = np.zeros(tk.TL_SIZE)
     args = (s["Q"], -s["u"], 120.0, s["Rx"], s["Ry"], a, b, ell_E, s["f"], s["D"], E_STEEL, ETA, XI, 0.01, 0.007)
     total = tk.contact_losses(*args, out)
-    assert out[tk.TL_EHL] == pytest.approx(2.0 * tk.houpert_rolling_force(s["Q"], s["u"], s["Rx"], s["Ry"], E_STEEL,
-                                                                          ETA, XI) * s["u"], rel=1e-15)
+    assert out[tk.TL_EHL] == pytest.approx(
+        2.0 * tk.houpert_rolling_force(s["Q"], s["u"], s["Rx"], s["Ry"], E_STEEL, ETA, XI) * s["u"], rel=1e-15
+    )
     assert out[tk.TL_HYST] == pytest.approx(tk.hysteresis_force(s["Q"], b, s["Rx"], 0.007) * s["u"], rel=1e-15)
-    assert out[tk.TL_HEATHCOTE] == pytest.approx(tk.heathcote_force(s["Q"], a, s["Rx"], s["f"], s["D"], 0.01) * s["u"],
-                                                 rel=1e-15)
+    assert out[tk.TL_HEATHCOTE] == pytest.approx(
+        tk.heathcote_force(s["Q"], a, s["Rx"], s["f"], s["D"], 0.01) * s["u"], rel=1e-15
+    )
     assert out[tk.TL_SPIN] == pytest.approx(tk.spin_moment(s["Q"], a, ell_E, 0.01) * 120.0, rel=1e-15)
     assert total == pytest.approx(out.sum(), rel=1e-15) and np.all(out > 0.0)
     # at rest (no entrainment, no spin) nothing is dissipated, and nothing is NaN
@@ -266,6 +308,7 @@ def test_seed_6208_inner_contact():
 
 # ---------------------------------------------------------------- Palmgren and ISO 76
 
+
 @pytest.mark.parametrize("kind", [0, 1])
 @pytest.mark.parametrize("lub", [0, 1, 2])
 def test_palmgren_f0_table(kind, lub):
@@ -286,7 +329,7 @@ def test_palmgren_unknown_codes_raise(kind, lub):
 @FAST
 @given(f0=floats(0.5, 8.0), log_nu=floats(0.0, 3.0), n=floats(-3e4, 3e4), log_dm=floats(-2.3, 0.0))
 def test_palmgren_viscous_random(f0, log_nu, n, log_dm):
-    args = (f0, 10.0 ** log_nu, n, 10.0 ** log_dm)
+    args = (f0, 10.0**log_nu, n, 10.0**log_dm)
     assert_close(tk.palmgren_viscous_torque(*args), rt.palmgren_viscous_torque(*args), RTOL, "M0")
 
 
@@ -300,14 +343,15 @@ def test_palmgren_viscous_branches():
     assert tk.palmgren_viscous_torque(2.0, 46.0, 0.0, 0.06) == below  # floor of the running torque
     assert tk.palmgren_viscous_torque(2.0, 46.0, -4775.0, 0.06) == tk.palmgren_viscous_torque(2.0, 46.0, 4775.0, 0.06)
     # M0 ~ (nu n)^(2/3) dm^3 above the threshold
-    assert tk.palmgren_viscous_torque(1.0, 46.0, 8000.0, 0.06) / tk.palmgren_viscous_torque(1.0, 46.0, 1000.0, 0.06) \
-        == pytest.approx(4.0, rel=1e-12)
+    assert tk.palmgren_viscous_torque(1.0, 46.0, 8000.0, 0.06) / tk.palmgren_viscous_torque(
+        1.0, 46.0, 1000.0, 0.06
+    ) == pytest.approx(4.0, rel=1e-12)
 
 
 @FAST
 @given(kind=st.sampled_from([0, 1]), log_p0=floats(0.0, 5.0), log_c0=floats(3.0, 6.0), log_dm=floats(-2.3, 0.0))
 def test_palmgren_load_torque_random(kind, log_p0, log_c0, log_dm):
-    P0, C0, dm = 10.0 ** log_p0, 10.0 ** log_c0, 10.0 ** log_dm
+    P0, C0, dm = 10.0**log_p0, 10.0**log_c0, 10.0**log_dm
     f1 = tk.palmgren_f1(kind, P0, C0)
     assert_close(f1, rt.palmgren_f1(kind, P0, C0), RTOL, "f1")
     assert_close(tk.palmgren_load_torque(f1, P0, dm), rt.palmgren_load_torque(f1, P0, dm), RTOL, "M1")
@@ -324,14 +368,15 @@ def test_palmgren_equivalent_load_random(kind, F_r, F_a, alpha):
 
 def test_palmgren_equivalent_load_cases():
     dg, ac = tk.PALMGREN_DEEP_GROOVE, tk.PALMGREN_ANGULAR_CONTACT
-    assert tk.palmgren_equivalent_load(dg, 3000.0, 0.0, 0.0) == 3000.0           # radial only: F_r
+    assert tk.palmgren_equivalent_load(dg, 3000.0, 0.0, 0.0) == 3000.0  # radial only: F_r
     assert tk.palmgren_equivalent_load(dg, 1000.0, 1000.0, 0.0) == pytest.approx(3200.0, rel=1e-15)  # Schaeffler
     a_cap = math.atan(0.9 / 3.3)  # 15.3 deg: Harris's 0.9 cot(alpha) meets Schaeffler's 3.3
     lo = tk.palmgren_equivalent_load(dg, 1000.0, 1000.0, a_cap * (1 - 1e-12))
     hi = tk.palmgren_equivalent_load(dg, 1000.0, 1000.0, a_cap * (1 + 1e-12))
-    assert lo == pytest.approx(hi, rel=1e-10)                                       # continuous
+    assert lo == pytest.approx(hi, rel=1e-10)  # continuous
     assert tk.palmgren_equivalent_load(dg, 1000.0, 1000.0, math.radians(30.0)) == pytest.approx(
-        0.9 * 1000.0 / math.tan(math.radians(30.0)) - 100.0, rel=1e-14)
+        0.9 * 1000.0 / math.tan(math.radians(30.0)) - 100.0, rel=1e-14
+    )
     assert tk.palmgren_equivalent_load(ac, 1000.0, 5000.0, math.radians(15.0)) == pytest.approx(4900.0, rel=1e-15)
     assert tk.palmgren_equivalent_load(ac, 1000.0, 500.0, math.radians(15.0)) == 1000.0
 
@@ -354,10 +399,14 @@ def test_iso76_f0_table_against_hertz_definition(gamma):
 @FAST
 @given(Z=st.integers(6, 40), log_d=floats(-2.7, -1.3), gamma=floats(0.005, 0.4), alpha=floats(0.0, 0.7))
 def test_iso76_static_rating_random(Z, log_d, gamma, alpha):
-    D = 10.0 ** log_d
+    D = 10.0**log_d
     dm = D * math.cos(alpha) / gamma
-    assert_close(tk.iso76_static_rating(Z, D, dm, alpha), rt.iso76_static_rating(Z, D, dm, alpha),
-                 _iso76_tol(D * math.cos(alpha) / dm), "C0")
+    assert_close(
+        tk.iso76_static_rating(Z, D, dm, alpha),
+        rt.iso76_static_rating(Z, D, dm, alpha),
+        _iso76_tol(D * math.cos(alpha) / dm),
+        "C0",
+    )
 
 
 def test_iso76_clamps_outside_the_table():
@@ -373,7 +422,7 @@ def test_iso76_6208_and_palmgren_magnitude():
     assert C0 == pytest.approx(19e3, rel=0.05)
     P1 = tk.palmgren_equivalent_load(tk.PALMGREN_DEEP_GROOVE, 3000.0, 0.0, 0.0)
     M1 = tk.palmgren_load_torque(tk.palmgren_f1(tk.PALMGREN_DEEP_GROOVE, P1, C0), P1, s["dm"])
-    assert 0.026 <= M1 <= 0.040                                   # the note's M1 range
-    for lub in (tk.LUB_OIL_MIST, tk.LUB_OIL_BATH):                # f0 = 1 and 2
+    assert 0.026 <= M1 <= 0.040  # the note's M1 range
+    for lub in (tk.LUB_OIL_MIST, tk.LUB_OIL_BATH):  # f0 = 1 and 2
         M = tk.palmgren_viscous_torque(tk.palmgren_f0(tk.PALMGREN_DEEP_GROOVE, lub), 46.0, 4775.0, s["dm"]) + M1
         assert 0.11 <= M <= 0.20

@@ -6,13 +6,13 @@ J_r(0.5) = 0.2288, Q_max); Farah et al. (2020) App. A (eps at 5 kN); SPEC 4.1, 4
 Operating point: omega = 500 rad/s, F_r = 3000 N, P_d = 0, eta = 0.04 Pa.s, xi = 2.3e-8 1/Pa,
 sigma = 1.25 x 0.3 um, Hamrock-Dowson film.
 """
+
 import math
 
 import numpy as np
 import pytest
 
-from bearing_fmu.kernels.geometry import (defect_frequencies, free_contact_angle, free_endplay,
-                                          rolling_kinematics)
+from bearing_fmu.kernels.geometry import defect_frequencies, free_contact_angle, free_endplay, rolling_kinematics
 from bearing_fmu.kernels.loaddist import gauss_legendre, radial_integral
 from bearing_fmu.model import BearingModel
 
@@ -64,11 +64,18 @@ def test_q_max_at_3kN(model):
     assert out["epsilon"] == pytest.approx(0.5, abs=1e-12)
 
 
-@pytest.mark.parametrize("F_r, Pd, eps_published", [
-    (3000.0, -12.6e-6, 0.685), (3000.0, 0.0, 0.5), (3000.0, 12.6e-6, 0.40),
-    (5000.0, -0.0045 * D, 1.70), (5000.0, 0.0, 0.5), (5000.0, 0.0045 * D, 0.29),
-    (5000.0, -0.0035 * D, 1.32),
-])
+@pytest.mark.parametrize(
+    "F_r, Pd, eps_published",
+    [
+        (3000.0, -12.6e-6, 0.685),
+        (3000.0, 0.0, 0.5),
+        (3000.0, 12.6e-6, 0.40),
+        (5000.0, -0.0045 * D, 1.70),
+        (5000.0, 0.0, 0.5),
+        (5000.0, 0.0045 * D, 0.29),
+        (5000.0, -0.0035 * D, 1.32),
+    ],
+)
 def test_load_parameter_vs_clearance(F_r, Pd, eps_published):
     """eps = (1 - P_d/(2 delta_r))/2 at rest: Guessasma App. A (3 kN, P_d = -12.6/0/+12.6 um ->
     0.685/0.5/0.40) and Farah App. A (5 kN, P_d/D = -0.0045/0/+0.0045 -> 1.70/0.5/0.29; -0.0035 ->

@@ -15,6 +15,7 @@ spin angle lambda from the row), which is geometry input, not a published result
 The Hamrock-Brewe approximation is not validated here: its error against the exact solution is
 measured and reported by benchmarks/hertz_approximation.py (docs/reports/hertz_approximation.md).
 """
+
 import csv
 import math
 import re

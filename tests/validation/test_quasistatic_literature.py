@@ -5,6 +5,7 @@
   10 000 rpm; the outer contact angle falls and the axial stiffness changes with speed.
 - Rolling kinematics of the 6208 (Guessasma 2018 section 4): cage and ball speeds of pure rolling.
 """
+
 import math
 
 import numpy as np
@@ -21,16 +22,30 @@ D_6208 = 12.6e-3
 
 
 def scene(**options):
-    base = dict(name="qs", fidelity="quasi_static", centrifugal=True, gyroscopic=True, torque=True,
-                stiffness=True, tolerance=1e-12)
+    base = dict(
+        name="qs",
+        fidelity="quasi_static",
+        centrifugal=True,
+        gyroscopic=True,
+        torque=True,
+        stiffness=True,
+        tolerance=1e-12,
+    )
     return Scene(**{**base, **options})
 
 
-@pytest.mark.parametrize("F_r, Pd, eps_published", [
-    (3000.0, -12.6e-6, 0.685), (3000.0, 0.0, 0.5), (3000.0, 12.6e-6, 0.40),
-    (5000.0, -0.0045 * D_6208, 1.70), (5000.0, 0.0, 0.5), (5000.0, 0.0045 * D_6208, 0.29),
-    (5000.0, -0.0035 * D_6208, 1.32),
-])
+@pytest.mark.parametrize(
+    "F_r, Pd, eps_published",
+    [
+        (3000.0, -12.6e-6, 0.685),
+        (3000.0, 0.0, 0.5),
+        (3000.0, 12.6e-6, 0.40),
+        (5000.0, -0.0045 * D_6208, 1.70),
+        (5000.0, 0.0, 0.5),
+        (5000.0, 0.0045 * D_6208, 0.29),
+        (5000.0, -0.0035 * D_6208, 1.32),
+    ],
+)
 def test_load_parameter_vs_clearance(F_r, Pd, eps_published):
     """eps = (1 - P_d/(2 delta_r))/2 from the solver's radial displacement delta_r = x at omega ~ 0
     (1e-3 rad/s: speed effects ~1e-12 of the loads): Guessasma App. A (3 kN, P_d = -12.6/0/+12.6 um
@@ -58,8 +73,9 @@ MODELS = {"ORC": ("outer", False), "ORCG": ("outer", True), "HT": ("hybrid", Tru
 
 def rabreau_state(label, omega, F_a, hybrid_split="spin_moments"):
     race, gyro = MODELS[label]
-    model = QuasiStaticModel("B7214C", "iso_vg68_mineral", scene(gyroscopic=gyro), race_control=race,
-                             hybrid_split=hybrid_split)
+    model = QuasiStaticModel(
+        "B7214C", "iso_vg68_mineral", scene(gyroscopic=gyro), race_control=race, hybrid_split=hybrid_split
+    )
     return model.evaluate(omega=omega, F_z=F_a, T_oil=T_OIL)
 
 
@@ -109,6 +125,7 @@ def test_rabreau_two_percent_needs_the_moment_on_the_outer_race():
     lam_i = 0) the three torques agree within Rabreau's 2 % (we get 1.6 %); with Harris' equal
     split (lam_i = 1) they spread further (5.8 %). The spread grows with lam_i, so the default
     (lam_i = 0.52) lies between. Bounds: Rabreau's 2 % and the default's measured 3.7 %."""
+
     def spread(split):
         torque = [rabreau_state(label, 10000 * RPM, 800.0, split)["torque"] for label in MODELS]
         return (max(torque) - min(torque)) / max(torque)
@@ -126,6 +143,7 @@ def test_controlling_race_split_is_discontinuous_in_speed():
     lam_i = 2 state has C > 1: two equilibria (report: 3661.13-3666.40 rpm); (b) the axial stiffness
     jumps by more than 5 % (report: -11 %) between 3660 and 3700 rpm, where the continuous default
     changes it by less than 1 % (report: -0.34 %)."""
+
     def state(split, rpm):
         model = QuasiStaticModel("B7214C", "iso_vg68_mineral", scene(), race_control="hybrid", hybrid_split=split)
         out = model.evaluate(omega=rpm * RPM, F_z=800.0, T_oil=T_OIL)

@@ -7,6 +7,7 @@ cited in thesis section 2.2; the printed values fit the 2U convention, docs/thes
 Tolerance 1 % (issue 2 acceptance): the CSV prints U, W to 3 digits (<= 0.5 % rounding) and M, L
 to 3 digits.
 """
+
 import csv
 
 import pytest
@@ -16,7 +17,7 @@ from bearing_fmu.kernels.hertz import reduced_modulus
 from bearing_fmu.kernels.lubricant import murnaghan_density, wlf_alpha_star, wlf_viscosity
 from bearing_fmu.params import CATALOGUE
 
-ETA0 = 0.00795      # Pa.s, thesis Table 2.2-1
+ETA0 = 0.00795  # Pa.s, thesis Table 2.2-1
 G_PRINTED = 4671.0  # thesis Annexe D header
 
 
@@ -44,6 +45,7 @@ def test_dimensionless_groups_reproduce_annexe_d(annexe_d_path):
 
 def _lubricant_2():
     import tomllib
+
     with open(CATALOGUE / "lubricants" / "thesis_turbine_oil.toml", "rb") as fh:
         doc = tomllib.load(fh)
     wlf = {k: v["value"] for k, v in doc["lubricant_2_wlf"].items()}
