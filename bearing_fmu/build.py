@@ -19,11 +19,12 @@ from pathlib import Path
 from pythonfmu.builder import FmuBuilder
 
 from .fmu import DEFAULT_FIXED_PRELOAD
-from .model import BearingModel
-from .quasi_static import QuasiStaticModel
+from .models.analytic import AnalyticModel
+from .models.quasi_static import QuasiStaticModel
 from .scene import Scene
 
 PACKAGE_DIR = Path(__file__).resolve().parent
+COMMON_DIR = PACKAGE_DIR.parent / "bearing_fmu_common"  # bundled by every FMU
 SCENES_DIR = PACKAGE_DIR / "scenes"
 DEFAULT_OUT = PACKAGE_DIR.parent / "fmus"
 
@@ -76,7 +77,7 @@ class {fmu_name}(_Slave):
 '''
 
 
-def package_hash(package_dirs=(PACKAGE_DIR,)):
+def package_hash(package_dirs=(PACKAGE_DIR, COMMON_DIR)):
     """Content hash of the package sources (names and bytes): the bundle version."""
     digest = hashlib.sha256()
     for package_dir in package_dirs:
@@ -88,7 +89,9 @@ def package_hash(package_dirs=(PACKAGE_DIR,)):
     return digest.hexdigest()[:16]
 
 
-def build_python_fmu(fmu_name, module, base_class, out_dir, package_dirs=(PACKAGE_DIR,), body="pass", imports=""):
+def build_python_fmu(
+    fmu_name, module, base_class, out_dir, package_dirs=(PACKAGE_DIR, COMMON_DIR), body="pass", imports=""
+):
     """Build a pythonfmu FMU whose slave class `fmu_name` derives from module.base_class, bundling
     the given package directories in resources/ (copied to a stable cache directory at load)."""
     out_dir = Path(out_dir)
@@ -172,7 +175,7 @@ def reference_inputs(scene):
 def make_model(scene):
     """The Python model of a scene with its FMU's default parameters."""
     if scene.fidelity == "analytic":
-        return BearingModel(scene=scene)
+        return AnalyticModel(scene=scene)
     if scene.drive == "fixed_axial":
         return QuasiStaticModel(scene=scene, F_preload=DEFAULT_FIXED_PRELOAD)
     return QuasiStaticModel(scene=scene)

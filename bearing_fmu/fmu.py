@@ -1,7 +1,7 @@
 """pythonfmu slaves of the bearing models: a variables table and calls into the model (SPEC 5).
 
 Thin on purpose: physics lives in the kernels, input checks in the models. The model declares its
-inputs and outputs (bearing_fmu.model.Variable); the slave registers them, so the FMU and the
+inputs and outputs (bearing_fmu.models.analytic.Variable); the slave registers them, so the FMU and the
 Python model cannot drift. Bad input never raises out of an FMI call (a Python exception becomes
 fmi2Fatal in pythonfmu): it is logged with its allowed range and do_step returns False
 (fmi2Discard); the outputs keep their last valid values.
@@ -10,10 +10,12 @@ fmi2Fatal in pythonfmu): it is logged with its allowed range and do_step returns
 from pythonfmu import Fmi2Slave
 from pythonfmu.enums import Fmi2Status
 
-from .fmi import add_unit_definitions, fmi_escape, input_variable, output_variable, parameter
-from .model import BearingModel, InputError
+from bearing_fmu_common.fmi import add_unit_definitions, fmi_escape, input_variable, output_variable, parameter
+
+from .models.analytic import AnalyticModel
+from .models.quasi_static import QuasiStaticModel
+from .models.variables import InputError
 from .params import ParameterError
-from .quasi_static import QuasiStaticModel
 from .scene import Scene, SceneError
 
 DEFAULT_FIXED_PRELOAD = 800.0  # N, Rabreau et al. 2018 rig (fixed_axial scenes only)
@@ -146,7 +148,7 @@ class BearingAnalytic(_BearingSlave):
         return self.bearing, self.lubricant, float(self.Pd)
 
     def _make_model(self):
-        return BearingModel(self.bearing, self.lubricant, self.scene, Pd=self.Pd)
+        return AnalyticModel(self.bearing, self.lubricant, self.scene, Pd=self.Pd)
 
 
 class BearingQuasiStatic(_BearingSlave):

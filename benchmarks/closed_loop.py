@@ -2,7 +2,7 @@
 H = 1 s, <= 10 s wall with a warm numba cache; SPEC 4.9, 6).
 
 runs/closed_loop_spring.toml as it is (B7214C pair in X arrangement, 800 N spring preload, 10 000 rpm,
-Gauss-Seidel, H = 1 s, 3600 s) run RUNS times in this process through spindle.master.run: the first run
+Gauss-Seidel, H = 1 s, 3600 s) run RUNS times in this process through spindle.cosim.master.run: the first run
 loads the numba cache from disk and is reported on its own, the others give the medians (stepping =
 RunResult.wall_time, set-up = RunResult.setup_time: extraction, instantiation, initialisation). The whole
 command `python -m spindle.cli run runs/closed_loop_spring.toml --no-plot` is also timed once in a fresh
@@ -26,9 +26,9 @@ from pathlib import Path
 import numpy as np
 
 from spindle.cli import exit_after
-from spindle.master import run
-from spindle.model import SpindleThermalModel
-from spindle.runfile import load_run
+from spindle.cosim.master import run
+from spindle.cosim.runfile import load_run
+from spindle.thermal.model import SpindleThermalModel
 
 from .common import REPORTS, machine, write_report
 
@@ -96,7 +96,7 @@ def main():
         "",
         "Run: `runs/closed_loop_spring.toml` unchanged: two B7214C in X arrangement, 800 N spring preload, "
         "10 000 rpm, ISO VG68 oil-air, spindle network `b7214c_x_pair`, Gauss-Seidel, **H = 1 s, 3600 s "
-        f"({n} steps)**, through `spindle.master.run(load_run(path))`, {RUNS} times in one process. The "
+        f"({n} steps)**, through `spindle.cosim.master.run(load_run(path))`, {RUNS} times in one process. The "
         "first run loads the compiled kernels from the numba cache on disk (warm on-disk cache: the FMUs "
         "were run before; a first-ever compile is ~20 s, docs/reports/fmu_startup.md) and is reported on "
         f"its own; the medians are over the other {RUNS - 1}. Stepping = `RunResult.wall_time`; set-up = "
@@ -197,7 +197,7 @@ def main():
         "differ by ~12 % in temperature; with no measured curve (theirs are not tabulated) that is a "
         "plausibility statement only: a ±12 % band around this rise is "
         f"{0.88 * rise_or:.1f}-{1.12 * rise_or:.1f} K. The network's capacities and conductances are "
-        "estimates (spindle/params/b7214c_x_pair.toml, tuned for 'a few tens of K' from ~1 kW), so this "
+        "estimates (spindle/thermal/params/b7214c_x_pair.toml, tuned for 'a few tens of K' from ~1 kW), so this "
         "is a consistency check of the loop, not a validation.",
         "",
         "![temperatures and powers](closed_loop.png)",

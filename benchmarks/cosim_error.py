@@ -5,7 +5,7 @@ Run: runs/closed_loop_spring.toml (two B7214C in X arrangement, 800 N spring pre
 network b7214c_x_pair) over its first 600 s (override run.stop = 600): the coupling errors live in the
 transient (the oil/ball node heats by ~30 K in the first 10 s, the rings follow within a minute); at a
 steady state the held inputs are exact and the coupling error vanishes.
-For H in STEPS and the two algorithms: spindle.master.run(load_run(RUN, overrides)); wall time =
+For H in STEPS and the two algorithms: spindle.cosim.master.run(load_run(RUN, overrides)); wall time =
 RunResult.wall_time (stepping only), median of 3 runs for H >= 0.1 and one run for H = 0.01 (60 000
 steps). A warm-up run (not timed) loads the numba cache first.
 Reference: benchmarks.monolithic.reference (both bearings and the network in one loop, Heun's method on
@@ -25,8 +25,8 @@ from pathlib import Path
 import numpy as np
 
 from spindle.cli import exit_after
-from spindle.master import run
-from spindle.runfile import load_run
+from spindle.cosim.master import run
+from spindle.cosim.runfile import load_run
 
 from .common import REPORTS, machine, write_report
 from .monolithic import reference
@@ -173,7 +173,7 @@ def main():
         "",
         f"**Run**: `runs/closed_loop_spring.toml` (two B7214C in X arrangement, 800 N spring preload, "
         f"10 000 rpm, ISO VG68, spindle network `b7214c_x_pair`) with the overrides `run.stop = {STOP:g}`, "
-        "`run.step = H`, `run.algorithm`, through `spindle.master.run(load_run(path, overrides))`. Only the "
+        "`run.step = H`, `run.algorithm`, through `spindle.cosim.master.run(load_run(path, overrides))`. Only the "
         f"first {STOP:g} s: the coupling errors live in the transient (at start the bearings make ~3 kW each "
         "with cold, viscous oil; the ball/oil node, 129 J/K, heats by ~30 K in 10 s and the torque falls "
         "to a third; the rings follow within a minute). Once the temperatures settle the inputs held over "

@@ -6,7 +6,7 @@ Run: python -m benchmarks.kernel_timing -> docs/reports/kernel_timing.md
 
 import numpy as np
 
-from bearing_fmu.kernels import analytic as ak
+from bearing_fmu.kernels import radial_bearing as ak
 from bearing_fmu.kernels.capacitance import (
     ball_capacitance,
     bearing_capacitance,
@@ -43,14 +43,14 @@ from bearing_fmu.kernels.lubricant import (
     wlf_alpha_star,
     wlf_viscosity,
 )
-from bearing_fmu.model import BearingModel
+from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.params import load_lubricant
 
 from .common import machine, median_time, write_report
 
 
 def cases():
-    m = BearingModel()
+    m = AnalyticModel()
     E = m.brg[ak.B_E_RED]
     nodes, weights = gauss_legendre(48)
     vg68 = load_lubricant("iso_vg68_mineral").array
@@ -101,11 +101,11 @@ def cases():
 
 def main():
     rows = [(name, median_time(fn, *args, number=2000)) for name, fn, args in cases()]
-    m = BearingModel()
+    m = AnalyticModel()
     out, ball = np.zeros(ak.O_SIZE), np.zeros((8, 9))
     k_args = (500.0, 3000.0, 313.15, m.brg, m.lubricant.array, m.nodes, m.weights, out, ball)
     t_kernel = median_time(ak.analytic_bearing, *k_args, number=2000)
-    m_pd = BearingModel(Pd=10e-6)
+    m_pd = AnalyticModel(Pd=10e-6)
     t_kernel_pd = median_time(
         ak.analytic_bearing,
         500.0,
@@ -133,8 +133,8 @@ def main():
         "|---|---|",
         f"| kernel analytic_bearing, P_d = 0 | {1e6 * t_kernel:.2f} |",
         f"| kernel analytic_bearing, P_d = 10 um (Newton on the radial shift) | {1e6 * t_kernel_pd:.2f} |",
-        f"| BearingModel.evaluate (input checks + kernel + output dict), P_d = 0 | {1e6 * t_model:.2f} |",
-        f"| BearingModel.evaluate, P_d = 10 um | {1e6 * t_model_pd:.2f} |",
+        f"| AnalyticModel.evaluate (input checks + kernel + output dict), P_d = 0 | {1e6 * t_model:.2f} |",
+        f"| AnalyticModel.evaluate, P_d = 10 um | {1e6 * t_model_pd:.2f} |",
         "",
         "## Kernels",
         "",

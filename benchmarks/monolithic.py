@@ -21,9 +21,9 @@ import time as wallclock
 import numpy as np
 
 from bearing_fmu.build import SCENES_DIR
-from bearing_fmu.quasi_static import QuasiStaticModel
+from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
-from spindle.model import SpindleThermalModel
+from spindle.thermal.model import SpindleThermalModel
 
 OMEGA = 10000.0 * 2.0 * math.pi / 60.0  # rad/s
 F_PRELOAD = 800.0  # N, spring preload (each bearing)

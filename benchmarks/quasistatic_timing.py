@@ -1,7 +1,7 @@
 """Time per solve of the quasi-static model (SPEC 9: solve <= 100 us at rest, <= 500 us at 10 000 rpm
 with centrifugal and gyroscopic effects, warm, 9-20 balls; Jacobian <= 50 % extra).
 
-- kernels.quasistatic.solve_quasistatic, cold (d and X zeroed before each call) and warm (d and X
+- kernels.jones_harris.solve_quasistatic, cold (d and X zeroed before each call) and warm (d and X
   copied before each call from the solution at a load 1 % different: what a co-simulation step sees);
 - one bearing_loads evaluation (ball equilibria + loads + condensed 5x5 Jacobian: the cost of one
   Newton iteration) against the same loop without the Jacobian assembly (a copy of bearing_loads
@@ -18,12 +18,12 @@ import statistics
 import time
 
 import numpy as np
-from numba import njit
 
 from bearing_fmu.kernels import contacts as ck
-from bearing_fmu.kernels import quasistatic as qk
-from bearing_fmu.quasi_static import LOAD_NAMES, QuasiStaticModel
+from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.models.quasi_static import LOAD_NAMES, QuasiStaticModel
 from bearing_fmu.scene import Scene
+from bearing_fmu_common.jit import kernel
 
 from .common import machine, median_time, write_report
 
@@ -43,7 +43,7 @@ def scene(gyroscopic):
 
 
 # -- numba drivers: N calls, the state copied in before each ------------------------------------
-@njit(cache=True)
+@kernel
 def _repeat_solve(n, F_applied, control, d0, X0, qs, dPd, omega, d, X, F, K, balls):
     r = (0, 0, 0.0)
     for _ in range(n):
@@ -53,7 +53,7 @@ def _repeat_solve(n, F_applied, control, d0, X0, qs, dPd, omega, d, X, F, K, bal
     return r
 
 
-@njit(cache=True)
+@kernel
 def _repeat_loads(n, d, X0, qs, dPd, omega, X, F, K, balls):
     s = 0
     for _ in range(n):
@@ -62,7 +62,7 @@ def _repeat_loads(n, d, X0, qs, dPd, omega, X, F, K, balls):
     return s
 
 
-@njit(cache=True)
+@kernel
 def _loads_only(d, qs, dPd, omega, X, F, balls, outputs):
     """bearing_loads without the stiffness: same ball loop (ball_equilibrium per ball, which keeps its
     own 2x2 condensation), same load sums, per-ball outputs when `outputs`, no 5x5 K assembly."""
@@ -102,7 +102,7 @@ def _loads_only(d, qs, dPd, omega, X, F, balls, outputs):
     return worst
 
 
-@njit(cache=True)
+@kernel
 def _repeat_loads_only(n, d, X0, qs, dPd, omega, X, F, balls, outputs):
     s = 0
     for _ in range(n):

@@ -14,8 +14,8 @@ import math
 
 import numpy as np
 
-from bearing_fmu.kernels import quasistatic as qk
-from bearing_fmu.quasi_static import QuasiStaticModel, SolverError
+from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.models.quasi_static import QuasiStaticModel, SolverError
 from bearing_fmu.scene import Scene
 
 from .common import REPORTS, write_report

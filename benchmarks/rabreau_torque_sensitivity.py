@@ -22,9 +22,9 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_fmu.kernels import quasistatic as qk
+from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.models.quasi_static import HYBRID_SPLITS, QuasiStaticModel, SolverError
 from bearing_fmu.params import load_bearing
-from bearing_fmu.quasi_static import HYBRID_SPLITS, QuasiStaticModel, SolverError
 
 from .common import REPORTS, write_report
 from .rabreau_preload import RPM, scene

@@ -20,8 +20,8 @@ import numpy as np
 from bearing_fmu.kernels import contacts as ck
 from bearing_fmu.kernels import torque as tk
 from bearing_fmu.kernels.lubricant import lubricant_state
+from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.params import load_bearing
-from bearing_fmu.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
 
 from .common import REPORTS, machine, write_report

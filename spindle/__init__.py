@@ -1,4 +1,6 @@
-"""spindle: lumped thermal spindle model, its FMU and the co-simulation master (issue 4).
+"""spindle: the lumped thermal spindle and the co-simulation of spindle and bearings.
 
-For now it holds the command line that runs the demo of the analytic bearing FMU.
+- ``spindle.thermal``: the thermal network (kernels, facade, FMU slave, parameter files).
+- ``spindle.cosim``: the fmpy co-simulation master, run files, the libcosim cross-check, sweeps, plots.
+- ``spindle.build``: builds every FMU; ``spindle.cli``: the ``spindle`` command.
 """

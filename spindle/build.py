@@ -12,7 +12,7 @@ from pathlib import Path
 
 from bearing_fmu import build as bearing_build
 
-from .model import DEFAULT_SPINDLE, SpindleThermalModel, network_path
+from .thermal.model import DEFAULT_SPINDLE, SpindleThermalModel, network_path
 
 SPINDLE_DIR = Path(__file__).resolve().parent
 DEFAULT_OUT = bearing_build.DEFAULT_OUT
@@ -57,10 +57,10 @@ THERMAL_FMUS = {"SpindleThermal": (DEFAULT_SPINDLE, False), "SpindleThermalFixed
 def build_thermal_fmu(name, network, axial_float, out_dir=DEFAULT_OUT):
     path = bearing_build.build_python_fmu(
         name,
-        "spindle.fmu",
+        "spindle.thermal.fmu",
         "SpindleThermal",
         out_dir,
-        package_dirs=(bearing_build.PACKAGE_DIR, SPINDLE_DIR),
+        package_dirs=(bearing_build.PACKAGE_DIR, bearing_build.COMMON_DIR, SPINDLE_DIR),
         body=f"default_network = {network!r}\n    axial_float = {axial_float!r}",
     )
     shutil.copy2(network_path(network), Path(out_dir) / f"{name}_network.toml")

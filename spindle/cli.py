@@ -52,8 +52,8 @@ def cmd_build(args):
 
 
 def cmd_run(args):
-    from .master import run
-    from .runfile import load_run
+    from .cosim.master import run
+    from .cosim.runfile import load_run
 
     spec = load_run(args.runfile, _overrides(args.set))
     result = run(spec, progress=args.progress)
@@ -64,7 +64,7 @@ def cmd_run(args):
     result.write_csv(csv_path)
     written = [csv_path]
     if not args.no_plot:
-        from .plots import plot_run
+        from .cosim.plots import plot_run
 
         written.append(plot_run(result, out / f"{stem}.png", title=f"{stem}: {spec.description}"))
     steps = len(result.columns["time"]) - 1
@@ -80,7 +80,7 @@ def cmd_run(args):
 
 
 def cmd_sweep(args):
-    from .sweep import sweep, write_table
+    from .cosim.sweep import sweep, write_table
 
     values = [_value(v) for v in args.values.split(",") if v.strip()]
     rows = sweep(
@@ -154,8 +154,8 @@ def main(argv=None):
     try:
         return handler[args.command](args)
     except Exception as exc:  # a clear one-line message, not a traceback, for user errors
-        from .master import MasterError
-        from .runfile import RunFileError
+        from .cosim.master import MasterError
+        from .cosim.runfile import RunFileError
 
         if isinstance(exc, (MasterError, RunFileError, FileNotFoundError)):
             print(f"spindle {args.command}: {exc}", file=sys.stderr)

@@ -5,24 +5,26 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
-SHARED = ROOT.parent / "shared"
+DATA = ROOT / "tests" / "validation" / "data"
 FMU_DIR = ROOT / "fmus"
 
 
 @pytest.fixture(scope="session")
 def annexe_d_path():
-    path = SHARED / "reference" / "thesis_annexe_d_ehl.csv"
+    path = DATA / "thesis_annexe_d_ehl.csv"
     if not path.is_file():
-        pytest.fail(f"reference data missing: {path} (shared/ must sit beside the checkout)")
+        pytest.fail(f"reference data missing: {path}")
     return path
 
 
 def _fmu(name, scene_file):
     """Path of fmus/<name>.fmu; built from the current sources if it is missing or stale."""
-    from bearing_fmu.build import PACKAGE_DIR, SCENES_DIR, build_fmu
+    from bearing_fmu.build import COMMON_DIR, PACKAGE_DIR, SCENES_DIR, build_fmu
 
     path = FMU_DIR / f"{name}.fmu"
-    newest_source = max(p.stat().st_mtime for p in PACKAGE_DIR.rglob("*") if p.suffix in (".py", ".toml"))
+    newest_source = max(
+        p.stat().st_mtime for d in (PACKAGE_DIR, COMMON_DIR) for p in d.rglob("*") if p.suffix in (".py", ".toml")
+    )
     if not path.is_file() or path.stat().st_mtime < newest_source:
         build_fmu(SCENES_DIR / scene_file, FMU_DIR)
     return path
@@ -54,12 +56,15 @@ def bearing_fixed_fmu():
 def _thermal_fmu(name):
     """Path of fmus/<name>.fmu (a thermal spindle FMU of spindle.build.THERMAL_FMUS); rebuilt if it is
     missing or older than any source it bundles (the spindle and bearing_fmu packages)."""
-    from bearing_fmu.build import PACKAGE_DIR
+    from bearing_fmu.build import COMMON_DIR, PACKAGE_DIR
     from spindle.build import SPINDLE_DIR, THERMAL_FMUS, build_thermal_fmu
 
     path = FMU_DIR / f"{name}.fmu"
     newest_source = max(
-        p.stat().st_mtime for d in (PACKAGE_DIR, SPINDLE_DIR) for p in d.rglob("*") if p.suffix in (".py", ".toml")
+        p.stat().st_mtime
+        for d in (PACKAGE_DIR, COMMON_DIR, SPINDLE_DIR)
+        for p in d.rglob("*")
+        if p.suffix in (".py", ".toml")
     )
     if not path.is_file() or path.stat().st_mtime < newest_source:
         network, axial_float = THERMAL_FMUS[name]

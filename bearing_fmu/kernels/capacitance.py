@@ -8,7 +8,7 @@ A ball that has lost contact with either ring contributes nothing (Farah: only b
 loaded zone count).
 """
 
-from numba import njit
+from bearing_fmu_common.jit import kernel
 
 from .lubricant import dowson_higginson_density, permittivity_from_density
 
@@ -18,14 +18,14 @@ PRESSURE_MAX = 0  # eps_r evaluated at the Hertz maximum pressure (default, Fara
 PRESSURE_MEAN = 1  # eps_r evaluated at the mean Hertz pressure (2/3 p_max)
 
 
-@njit(cache=True)
+@kernel
 def contact_permittivity(K_cm, rho0, p_max, pressure_choice):
     """Relative permittivity (-) of the film at the Hertz maximum (or mean) pressure p_max (Pa)."""
     p = p_max if pressure_choice == PRESSURE_MAX else p_max * (2.0 / 3.0)
     return permittivity_from_density(K_cm, dowson_higginson_density(rho0, p))
 
 
-@njit(cache=True)
+@kernel
 def contact_capacitance(eps_r, a, b, h_c, h_floor):
     """Parallel-plate capacitance (F) of one contact: eps_0 eps_r pi a b / max(h_c, h_floor).
 
@@ -40,7 +40,7 @@ def contact_capacitance(eps_r, a, b, h_c, h_floor):
     return EPSILON_0 * eps_r * area / h
 
 
-@njit(cache=True)
+@kernel
 def ball_capacitance(C_inner, C_outer):
     """Capacitance (F) of one ball: inner and outer contacts in series; 0 if either contact is open."""
     if C_inner <= 0.0 or C_outer <= 0.0:
@@ -48,7 +48,7 @@ def ball_capacitance(C_inner, C_outer):
     return C_inner * C_outer / (C_inner + C_outer)
 
 
-@njit(cache=True)
+@kernel
 def bearing_capacitance(C_inner, C_outer, C_background):
     """Bearing capacitance (F): balls in parallel plus an optional background term (F, 0 by default)."""
     total = C_background

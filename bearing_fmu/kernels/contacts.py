@@ -1,6 +1,6 @@
 """Contact outputs of a quasi-static solution: Hertz, EHL film, regime, capacitance, losses (SPEC 4.4-4.7).
 
-Takes the per-ball loads and kinematics of kernels.quasistatic and evaluates every ball-race
+Takes the per-ball loads and kinematics of kernels.jones_harris and evaluates every ball-race
 contact. The contact geometry (R_x, R_y, ellipticity, elliptic integrals) is that of the free
 contact angle, as in the solver's Hertz constants (docs/quasistatic.md); rolling and spin speeds
 are those of the operating angles and the race-control hypothesis.
@@ -13,13 +13,13 @@ heat to the rings). Torque = total power / |omega|; at rest it is 0 (no rolling,
 
 import math
 
-from numba import njit
+from bearing_fmu_common.jit import kernel
 
 from .capacitance import ball_capacitance, contact_capacitance, contact_permittivity
 from .ehl import film_parameter, film_thickness, friction_coefficient, lubrication_regime
 from .hertz import hertz_contact
+from .jones_harris import BQ_Q_I, BQ_Q_O, BQ_SPIN_I, BQ_SPIN_O, BQ_U_I, BQ_U_O
 from .lubricant import LUB_EPS_R0, clausius_mossotti_constant, lubricant_state
-from .quasistatic import BQ_Q_I, BQ_Q_O, BQ_SPIN_I, BQ_SPIN_O, BQ_U_I, BQ_U_O
 from .torque import TL_SIZE, contact_losses
 
 # layout of the contact parameter array (built by the model)
@@ -78,12 +78,12 @@ PC_C_O = 7
 PC_SIZE = 8
 
 
-@njit(cache=True)
+@kernel
 def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
     """Evaluate all contacts of a solved bearing.
 
     omega: inner-ring speed (rad/s); T_oil: oil temperature (K); cp: CP_* array; lub: lubricant
-    array; balls: per-ball rows of kernels.quasistatic (BQ_*); out: CO_* outputs (filled);
+    array; balls: per-ball rows of kernels.jones_harris (BQ_*); out: CO_* outputs (filled);
     per_contact: float64[PC_SIZE, Z] (filled); losses: float64[TL_SIZE] work array.
     """
     Z = balls.shape[1]

@@ -18,7 +18,7 @@ k is the ellipticity a_y / b_x of the Hertz contact.
 
 import math
 
-from numba import njit
+from bearing_fmu_common.jit import kernel
 
 FILM_HAMROCK_DOWSON = 0
 FILM_MASJEDI_KHONSARI = 1
@@ -29,14 +29,14 @@ REGIME_MIXED = 1
 REGIME_FULL_FILM = 2
 
 
-@njit(cache=True)
+@kernel
 def dimensionless_groups(eta, xi, E_red, u, Q, Rx):
     """(U, G, W) (-) for viscosity eta (Pa.s), pressure-viscosity xi (1/Pa), E' (Pa),
     entrainment speed u (m/s, magnitude used), load Q (N) and radius Rx (m)."""
     return eta * abs(u) / (E_red * Rx), xi * E_red, Q / (E_red * Rx * Rx)
 
 
-@njit(cache=True)
+@kernel
 def film_hamrock_dowson(U, G, W, k):
     """Hamrock-Dowson (H_c, H_min) = (h_c/Rx, h_min/Rx) (-)."""
     h_min = 3.63 * U**0.68 * G**0.49 * W**-0.073 * (1.0 - math.exp(-0.68 * k))
@@ -44,7 +44,7 @@ def film_hamrock_dowson(U, G, W, k):
     return h_c, h_min
 
 
-@njit(cache=True)
+@kernel
 def film_masjedi_khonsari(U, G, W, k):
     """Masjedi-Khonsari smooth-surface (H_c, H_min) (-)."""
     h_min = (
@@ -64,7 +64,7 @@ def film_masjedi_khonsari(U, G, W, k):
     return h_c, h_min
 
 
-@njit(cache=True)
+@kernel
 def film_chittenden(U, G, W, Ry_over_Rx):
     """Chittenden et al. (H_c, H_min) (-) for entrainment along x."""
     base = U**0.68 * G**0.49 * W**-0.073
@@ -72,7 +72,7 @@ def film_chittenden(U, G, W, Ry_over_Rx):
     return 4.31 * base * (1.0 - math.exp(-1.23 * r)), 3.68 * base * (1.0 - math.exp(-0.67 * r))
 
 
-@njit(cache=True)
+@kernel
 def film_thickness(formula, eta, xi, E_red, u, Q, Rx, Ry, k):
     """Central and minimum film thickness (h_c, h_min) in m of one contact.
 
@@ -93,7 +93,7 @@ def film_thickness(formula, eta, xi, E_red, u, Q, Rx, Ry, k):
     return hc * Rx, hm * Rx
 
 
-@njit(cache=True)
+@kernel
 def film_parameter(h_min, sigma):
     """Film parameter Lambda = h_min / sigma (-); sigma (m) composite roughness.
 
@@ -107,7 +107,7 @@ def film_parameter(h_min, sigma):
     return h_min / sigma
 
 
-@njit(cache=True)
+@kernel
 def lubrication_regime(lam):
     """Regime code: 0 boundary (Lambda <= 1), 1 mixed (1 < Lambda <= 3), 2 full film (Lambda > 3)."""
     if lam <= 1.0:
@@ -117,7 +117,7 @@ def lubrication_regime(lam):
     return REGIME_FULL_FILM
 
 
-@njit(cache=True)
+@kernel
 def friction_coefficient(lam):
     """Coulomb coefficient mu(Lambda) (-): 0.1 for Lambda <= 1, linear to 0.01 on ]1, 3], 0.01 above
     (Guessasma & Machado 2018, section 2.3)."""
@@ -128,7 +128,7 @@ def friction_coefficient(lam):
     return 0.01
 
 
-@njit(cache=True)
+@kernel
 def normal_damping(lam, Q, alpha_e, eta, a_major, R_ball, h_min):
     """Normal damping C_n(Lambda) (N.s/m) of one contact (Guessasma & Machado 2018, eqs. 4-5, Table 2).
 

@@ -6,16 +6,16 @@ Harris & Kotzalas (2006), Essential Concepts of Bearing Technology, ch. 2 and 8.
 
 import math
 
-from numba import njit
+from bearing_fmu_common.jit import kernel
 
 
-@njit(cache=True)
+@kernel
 def gamma_ratio(D, dm, alpha):
     """gamma = D cos(alpha) / d_m (-) for ball diameter D (m), pitch diameter d_m (m), contact angle alpha (rad)."""
     return D * math.cos(alpha) / dm
 
 
-@njit(cache=True)
+@kernel
 def curvature_radii(D, dm, f_i, f_o, alpha):
     """Reduced radii (Rx_i, Ry_i, Rx_o, Ry_o) in m of the inner and outer ball-race contacts.
 
@@ -30,7 +30,7 @@ def curvature_radii(D, dm, f_i, f_o, alpha):
     return Rx_i, Ry_i, Rx_o, Ry_o
 
 
-@njit(cache=True)
+@kernel
 def free_contact_angle(D, f_i, f_o, Pd):
     """Free contact angle alpha0 (rad) = arccos(1 - P_d / (2 A)), A = (f_i + f_o - 1) D (m).
 
@@ -45,14 +45,14 @@ def free_contact_angle(D, f_i, f_o, Pd):
     return math.acos(c)
 
 
-@njit(cache=True)
+@kernel
 def free_endplay(D, f_i, f_o, Pd):
     """Free endplay P_e (m) = 2 A sin(alpha0)."""
     A = (f_i + f_o - 1.0) * D
     return 2.0 * A * math.sin(free_contact_angle(D, f_i, f_o, Pd))
 
 
-@njit(cache=True)
+@kernel
 def rolling_kinematics(omega, D, dm, alpha):
     """Pure-rolling speeds for inner-ring speed omega (rad/s), outer ring fixed.
 
@@ -71,7 +71,7 @@ def rolling_kinematics(omega, D, dm, alpha):
     return omega_cage, omega_ball_rel, omega_ball_fixed, u
 
 
-@njit(cache=True)
+@kernel
 def defect_frequencies(omega, D, dm, alpha, Z):
     """Bearing defect frequencies in Hz for inner-ring speed omega (rad/s), outer ring fixed.
 
@@ -87,13 +87,13 @@ def defect_frequencies(omega, D, dm, alpha, Z):
     return ftf, bpfo, bpfi, bsf
 
 
-@njit(cache=True)
+@kernel
 def ball_mass(D, rho):
     """Mass (kg) of a ball of diameter D (m) and density rho (kg/m^3)."""
     return rho * math.pi * D**3 / 6.0
 
 
-@njit(cache=True)
+@kernel
 def centrifugal_force(m_ball, dm, omega_cage):
     """Centrifugal force (N) F_c = m (d_m / 2) omega_c^2 of a ball orbiting at the cage speed (rad/s)."""
     return 0.5 * m_ball * dm * omega_cage * omega_cage

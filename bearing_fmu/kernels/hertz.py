@@ -19,19 +19,19 @@ E = 1 + q/alpha, K = pi/2 + q ln(alpha), q = pi/2 - 1, alpha = Ry/Rx >= 1 (the s
 
 import math
 
-from numba import njit
+from bearing_fmu_common.jit import kernel
 
 HALF_PI = 0.5 * math.pi
 Q_HB = HALF_PI - 1.0
 
 
-@njit(cache=True)
+@kernel
 def reduced_modulus(E1, nu1, E2, nu2):
     """Hamrock's reduced modulus E' (Pa) of two elastic bodies (E in Pa, nu dimensionless)."""
     return 2.0 / ((1.0 - nu1 * nu1) / E1 + (1.0 - nu2 * nu2) / E2)
 
 
-@njit(cache=True)
+@kernel
 def elliptic_integrals(m):
     """Complete elliptic integrals (K(m), E(m)) of parameter m = e^2 in [0, 1), by the AGM.
 
@@ -54,7 +54,7 @@ def elliptic_integrals(m):
     return K, K * (1.0 - c2_sum)
 
 
-@njit(cache=True)
+@kernel
 def _radius_ratio_of_ellipticity(k):
     """Ry/Rx produced by an ellipticity k >= 1 (exact Hertz relation)."""
     if k <= 1.0:
@@ -64,7 +64,7 @@ def _radius_ratio_of_ellipticity(k):
     return (k * k * E - K) / (K - E)
 
 
-@njit(cache=True)
+@kernel
 def _ellipticity_exact_major(alpha):
     """Exact ellipticity k >= 1 for a curvature ratio alpha = R_long/R_short >= 1 (bisection on ln k)."""
     if alpha <= 1.0 + 1e-12:
@@ -82,7 +82,7 @@ def _ellipticity_exact_major(alpha):
     return math.exp(0.5 * (lo + hi))
 
 
-@njit(cache=True)
+@kernel
 def hertz_coefficients_exact(Rx, Ry):
     """Exact Hertz coefficients for reduced radii Rx, Ry (m).
 
@@ -102,7 +102,7 @@ def hertz_coefficients_exact(Rx, Ry):
     return k, E, K
 
 
-@njit(cache=True)
+@kernel
 def hertz_coefficients_approx(Rx, Ry):
     """Hamrock-Brewe approximate coefficients (k_yx, ell_E, ell_K), same meaning as the exact ones."""
     alpha = Ry / Rx
@@ -117,7 +117,7 @@ def hertz_coefficients_approx(Rx, Ry):
     return k, E, K
 
 
-@njit(cache=True)
+@kernel
 def hertz_contact(Q, Rx, Ry, E_red, k_yx, ell_E, ell_K):
     """Hertz contact under normal load Q (N).
 
@@ -140,7 +140,7 @@ def hertz_contact(Q, Rx, Ry, E_red, k_yx, ell_E, ell_K):
     return minor, major, delta, p_max
 
 
-@njit(cache=True)
+@kernel
 def hertz_stiffness(Rx, Ry, E_red, k_yx, ell_E, ell_K):
     """Load-deflection constant K_h (N/m^1.5) of Q = K_h delta^1.5 (secant stiffness K_h delta^0.5)."""
     R = Rx * Ry / (Rx + Ry)
@@ -148,7 +148,7 @@ def hertz_stiffness(Rx, Ry, E_red, k_yx, ell_E, ell_K):
     return math.pi * k * E_red * math.sqrt(2.0 * ell_E * R / (9.0 * ell_K**3))
 
 
-@njit(cache=True)
+@kernel
 def series_stiffness(K1, K2):
     """Load-deflection constant (N/m^1.5) of two Hertz contacts in series (same load, approaches add)."""
     return (K1 ** (-2.0 / 3.0) + K2 ** (-2.0 / 3.0)) ** -1.5

@@ -12,10 +12,11 @@ The integrals use Gauss-Legendre quadrature on the loaded arc; nodes come from
 import math
 
 import numpy as np
-from numba import njit
+
+from bearing_fmu_common.jit import kernel
 
 
-@njit(cache=True)
+@kernel
 def gauss_legendre(n):
     """Nodes and weights (arrays of n floats) of n-point Gauss-Legendre quadrature on [-1, 1]."""
     x = np.empty(n)
@@ -39,7 +40,7 @@ def gauss_legendre(n):
     return x, w
 
 
-@njit(cache=True)
+@kernel
 def loaded_half_angle(eps):
     """Half-angle psi_l (rad) of the loaded zone for load parameter eps (all balls loaded if eps >= 1)."""
     if eps >= 1.0:
@@ -49,7 +50,7 @@ def loaded_half_angle(eps):
     return math.acos(1.0 - 2.0 * eps)
 
 
-@njit(cache=True)
+@kernel
 def radial_integral(eps, nodes, weights):
     """Sjovall radial integral J_r(eps) (-) for load parameter eps (0 for eps <= 0: no ball loaded)."""
     if eps <= 0.0:
@@ -65,7 +66,7 @@ def radial_integral(eps, nodes, weights):
     return total * psi_l / (2.0 * math.pi)
 
 
-@njit(cache=True)
+@kernel
 def load_parameter(delta_r, Pd):
     """Load parameter eps = (1 - P_d/(2 delta_r))/2 (-).
 
@@ -79,7 +80,7 @@ def load_parameter(delta_r, Pd):
     return 0.5 * (1.0 - Pd / (2.0 * delta_r))
 
 
-@njit(cache=True)
+@kernel
 def stribeck_load(psi, Q_max, eps):
     """Ball load Q(psi) (N) of the Sjovall distribution with maximum Q_max (N) and load parameter eps."""
     base = 1.0 - (1.0 - math.cos(psi)) / (2.0 * eps)
@@ -88,7 +89,7 @@ def stribeck_load(psi, Q_max, eps):
     return Q_max * base**1.5
 
 
-@njit(cache=True)
+@kernel
 def radial_force_and_slope(delta_r, Pd, K, Z, nodes, weights):
     """Radial force F_r (N) carried by Z balls at inner-ring shift delta_r (m), and dF_r/d(delta_r) (N/m).
 
@@ -119,7 +120,7 @@ def radial_force_and_slope(delta_r, Pd, K, Z, nodes, weights):
     return force * scale, slope * scale
 
 
-@njit(cache=True)
+@kernel
 def solve_radial_shift(F_r, Pd, K, Z, nodes, weights, tol):
     """Inner-ring radial shift delta_r (m) carrying the radial load F_r >= 0 (N); safeguarded Newton.
 

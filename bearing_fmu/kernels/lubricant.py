@@ -10,7 +10,7 @@ The per-lubricant numbers travel in one float64 array ``lub`` whose layout is fi
 
 import math
 
-from numba import njit
+from bearing_fmu_common.jit import kernel
 
 VISCOSITY_CONSTANT = 0
 VISCOSITY_WALTHER = 1
@@ -53,7 +53,7 @@ LUB_SIZE = 24
 KELVIN_OFFSET = 273.15
 
 
-@njit(cache=True)
+@kernel
 def walther_constants(nu1, T1, nu2, T2):
     """ASTM D341 (Walther) constants (A, B) from two kinematic viscosities nu (m^2/s) at T (K).
 
@@ -66,19 +66,19 @@ def walther_constants(nu1, T1, nu2, T2):
     return A, B
 
 
-@njit(cache=True)
+@kernel
 def walther_viscosity(T, A, B):
     """Kinematic viscosity (m^2/s) at T (K) from ASTM D341 constants."""
     return (10.0 ** (10.0 ** (A - B * math.log10(T))) - 0.7) * 1e-6
 
 
-@njit(cache=True)
+@kernel
 def density_linear(T, rho_ref, T_ref, expansion):
     """Density (kg/m^3) at p = 0: rho_ref / (1 + a (T - T_ref)), a the volumetric expansion (1/K)."""
     return rho_ref / (1.0 + expansion * (T - T_ref))
 
 
-@njit(cache=True)
+@kernel
 def murnaghan_density(p, T, rho_R, T_R, a_v, beta_K, K_MM, K_prime):
     """Murnaghan equation of state (Wheeler 2016 thesis eqs. 2.1-7, 2.1-8): density (kg/m^3) at p (Pa), T (K)."""
     rho_0 = rho_R / (1.0 + a_v * (T - T_R))
@@ -86,7 +86,7 @@ def murnaghan_density(p, T, rho_R, T_R, a_v, beta_K, K_MM, K_prime):
     return rho_0 * (1.0 + K_prime / K_M * p) ** (1.0 / K_prime)
 
 
-@njit(cache=True)
+@kernel
 def wlf_viscosity(p, T, mu_G, T_g0, A1, A2, b1, b2, C1, C2):
     """Modified WLF viscosity (Pa.s) at p (Pa), T (K) (Bair; Wheeler 2016 thesis eq. 2.1-9).
 
@@ -99,7 +99,7 @@ def wlf_viscosity(p, T, mu_G, T_g0, A1, A2, b1, b2, C1, C2):
     return mu_G * math.exp(-2.303 * C1 * dT / (C2 + dT))
 
 
-@njit(cache=True)
+@kernel
 def wlf_ratio(p, T, mu0, mu_G, T_g0, A1, A2, b1, b2, C1, C2):
     """mu(0)/mu(p) (-) of the modified WLF law; 0 past the law's glass singularity
     C2 + (T - T_g) F = 0, where the viscosity diverges (the fluid is glassy)."""
@@ -110,7 +110,7 @@ def wlf_ratio(p, T, mu0, mu_G, T_g0, A1, A2, b1, b2, C1, C2):
     return mu0 / (mu_G * math.exp(-2.303 * C1 * dT / (C2 + dT)))
 
 
-@njit(cache=True)
+@kernel
 def wlf_alpha_star(T, mu_G, T_g0, A1, A2, b1, b2, C1, C2):
     """Reciprocal asymptotic isoviscous pressure-viscosity coefficient alpha* (1/Pa) of the WLF law.
 
@@ -134,31 +134,31 @@ def wlf_alpha_star(T, mu_G, T_g0, A1, A2, b1, b2, C1, C2):
     return 1.0 / total
 
 
-@njit(cache=True)
+@kernel
 def gold_pressure_viscosity(nu, s, t):
     """Pressure-viscosity coefficient (1/Pa) alpha = s (nu / 1 mm^2/s)^t (Gold et al. 2001); nu in m^2/s."""
     return s * (nu * 1e6) ** t
 
 
-@njit(cache=True)
+@kernel
 def dowson_higginson_density(rho0, p):
     """Dowson-Higginson density (kg/m^3) at pressure p (Pa): rho0 (0.59e9 + 1.34 p) / (0.59e9 + p)."""
     return rho0 * (0.59e9 + 1.34 * p) / (0.59e9 + p)
 
 
-@njit(cache=True)
+@kernel
 def clausius_mossotti_constant(eps_r0, rho0):
     """Clausius-Mossotti constant K (m^3/kg) = (eps_r0 - 1) / ((eps_r0 + 2) rho0)."""
     return (eps_r0 - 1.0) / ((eps_r0 + 2.0) * rho0)
 
 
-@njit(cache=True)
+@kernel
 def permittivity_from_density(K_cm, rho):
     """Relative permittivity (-) eps_r = (1 + 2 K rho) / (1 - K rho) (Clausius-Mossotti)."""
     return (1.0 + 2.0 * K_cm * rho) / (1.0 - K_cm * rho)
 
 
-@njit(cache=True)
+@kernel
 def lubricant_state(T, lub):
     """Ambient-pressure state of the lubricant at temperature T (K).
 

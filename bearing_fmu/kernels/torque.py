@@ -25,7 +25,7 @@ ISO 76 static rating C0 that enters f1.
 
 import math
 
-from numba import njit
+from bearing_fmu_common.jit import kernel
 
 # Indices of the per-contact power array filled by contact_losses.
 TL_EHL = 0
@@ -113,7 +113,7 @@ ISO76_GAMMA_STEP = 0.01
 ISO76_GAMMA_MAX = 0.40
 
 
-@njit(cache=True)
+@kernel
 def houpert_rolling_force(Q, u_mean, Rx, Ry, E_red, eta, xi):
     """EHL (hydrodynamic) rolling force F_R (N) of one contact, Houpert 1987 (note 2.3).
 
@@ -130,7 +130,7 @@ def houpert_rolling_force(Q, u_mean, Rx, Ry, E_red, eta, xi):
     return 2.765 * E_red * Rx * Rx * (Ry / Rx) ** 0.35 * U**0.656 * W**0.466 * G**0.022
 
 
-@njit(cache=True)
+@kernel
 def hysteresis_force(Q, b_x, Rx, alpha_h):
     """Elastic-hysteresis rolling force F_h = (3/16) alpha_h b_x Q / Rx (N) (note 4a).
 
@@ -144,7 +144,7 @@ def hysteresis_force(Q, b_x, Rx, alpha_h):
     return 0.1875 * alpha_h * b_x * Q / Rx
 
 
-@njit(cache=True)
+@kernel
 def heathcote_force(Q, a_y, Rx, f, D, mu):
     """Heathcote (differential-sliding) force F_H = C_H mu Q a_y^2 / (R_c Rx) (N) (note 4b).
 
@@ -161,7 +161,7 @@ def heathcote_force(Q, a_y, Rx, f, D, mu):
     return HEATHCOTE_CONSTANT * mu * Q * a_y * a_y / (R_c * Rx)
 
 
-@njit(cache=True)
+@kernel
 def spin_moment(Q, a_y, ell_E, mu):
     """Pivoting (spin) friction moment M_s = (3/8) mu Q a_y ell_E (N.m) (note 4c).
 
@@ -175,7 +175,7 @@ def spin_moment(Q, a_y, ell_E, mu):
     return 0.375 * mu * Q * a_y * ell_E
 
 
-@njit(cache=True)
+@kernel
 def contact_losses(Q, u_mean, omega_spin, Rx, Ry, a_y, b_x, ell_E, f, D, E_red, eta, xi, mu, alpha_h, out):
     """Power losses (W) of one contact written into out[TL_EHL..TL_SPIN]; returns their sum (W).
 
@@ -192,7 +192,7 @@ def contact_losses(Q, u_mean, omega_spin, Rx, Ry, a_y, b_x, ell_E, f, D, E_red, 
     return out[TL_EHL] + out[TL_HYST] + out[TL_HEATHCOTE] + out[TL_SPIN]
 
 
-@njit(cache=True)
+@kernel
 def palmgren_f0(kind, lubrication):
     """Palmgren lubrication factor f0 (-) (Harris, from memory, ESTIMATED; note 4d).
 
@@ -217,7 +217,7 @@ def palmgren_f0(kind, lubrication):
     raise ValueError("palmgren_f0: unknown bearing kind or lubrication code")
 
 
-@njit(cache=True)
+@kernel
 def palmgren_viscous_torque(f0, nu_cSt, n_rpm, dm):
     """Palmgren load-independent (viscous) torque M0 (N.m) (Palmgren 1959; Harris; note 4d).
 
@@ -232,13 +232,13 @@ def palmgren_viscous_torque(f0, nu_cSt, n_rpm, dm):
     return 16.0 * f0 * dm**3
 
 
-@njit(cache=True)
+@kernel
 def palmgren_load_torque(f1, P1, dm):
     """Palmgren load-dependent torque M1 = f1 P1 dm (N.m): f1 (-), P1 (N), pitch diameter dm (m)."""
     return f1 * P1 * dm
 
 
-@njit(cache=True)
+@kernel
 def palmgren_f1(kind, P0, C0):
     """Palmgren load factor f1 = z (P0/C0)^y (-) (Harris, from memory, ESTIMATED; note 4d).
 
@@ -256,7 +256,7 @@ def palmgren_f1(kind, P0, C0):
     return z * (P0 / C0) ** y
 
 
-@njit(cache=True)
+@kernel
 def palmgren_equivalent_load(kind, F_r, F_a, alpha):
     """Palmgren load P1 (N) for M1 from radial F_r and axial F_a loads (N), contact angle alpha (rad).
 
@@ -282,7 +282,7 @@ def palmgren_equivalent_load(kind, F_r, F_a, alpha):
     return max(p, fr)
 
 
-@njit(cache=True)
+@kernel
 def iso76_f0(gamma):
     """ISO 76 factor f0 (N/mm^2) of radial/angular-contact groove ball bearings at
     gamma = D cos(alpha)/d_m (-): Table 1 (ISO76_F0, from memory, see above), linear interpolation;
@@ -293,7 +293,7 @@ def iso76_f0(gamma):
     return (1.0 - t) * ISO76_F0[i] + t * ISO76_F0[i + 1]
 
 
-@njit(cache=True)
+@kernel
 def iso76_static_rating(Z, D, dm, alpha):
     """Basic static radial rating C0 (N) of a single-row radial or angular-contact ball bearing, ISO 76.
 

@@ -16,8 +16,8 @@ stops itself after about 12 min); everything else takes a few seconds.
 import numpy as np
 import pytest
 
-from spindle.master import run
-from spindle.runfile import load_run
+from spindle.cosim.master import run
+from spindle.cosim.runfile import load_run
 from tests.conftest import ROOT
 
 SPRING = ROOT / "runs" / "closed_loop_spring.toml"

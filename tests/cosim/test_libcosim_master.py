@@ -1,9 +1,9 @@
-"""spindle.libcosim_master: the libcosim (libcosimpy) master against an fmpy loop of the same algorithm.
+"""spindle.cosim.libcosim_master: the libcosim (libcosimpy) master against an fmpy loop of the same algorithm.
 
 The FMUs run the same code under both masters, so every recorded value must agree to 1e-12 (in
 practice bit for bit): a difference would be a transport bug (wrong variable, type, order or timing).
 The fmpy loop `fmpy_jacobi` below is libcosim's fixed-step algorithm as documented in
-spindle/libcosim_master.py (Jacobi; connected inputs initialised by N read/set rounds in
+spindle/cosim/libcosim_master.py (Jacobi; connected inputs initialised by N read/set rounds in
 initialisation mode, then from the sources' outputs after exitInitializationMode).
 
 The libcosim runs are in-process: libcosim calls the pythonfmu FMUs from its worker thread, which
@@ -26,7 +26,7 @@ pytest.importorskip("libcosimpy", reason="libcosimpy not installed (optional ext
 from fmpy import extract, read_model_description  # noqa: E402
 from fmpy.fmi2 import FMU2Slave  # noqa: E402
 
-from spindle.libcosim_master import LibcosimError, cross_check, libcosim_version, run_libcosim  # noqa: E402
+from spindle.cosim.libcosim_master import LibcosimError, cross_check, libcosim_version, run_libcosim  # noqa: E402
 from tests.cosim.conftest import build_test_fmu  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -131,7 +131,7 @@ ANALYTIC_OUTPUTS = [
 
 # -- tests -------------------------------------------------------------------------------------
 def test_version():
-    assert libcosim_version() == "0.11.2"  # the algorithm notes in spindle/libcosim_master.py are for it
+    assert libcosim_version() == "0.11.2"  # the algorithm notes in spindle/cosim/libcosim_master.py are for it
 
 
 def test_analytic_fmu_same_as_fmpy(analytic_fmu):
@@ -265,7 +265,7 @@ def test_fresh_processes_exit_0(analytic_fmu):
     script = textwrap.dedent(f"""
         import sys
         sys.path.insert(0, {str(ROOT)!r})
-        from spindle.libcosim_master import run_libcosim
+        from spindle.cosim.libcosim_master import run_libcosim
         r = run_libcosim({{"instances": {{"b": {{"fmu": {str(analytic_fmu)!r}, "inputs": {{"omega": 500.0}}}}}}}},
                          0.1, 0.3, ["b.omega_cage"])
         print(r["b.omega_cage"][-1])

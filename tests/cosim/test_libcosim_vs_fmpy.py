@@ -1,16 +1,16 @@
 """The closed loop under two independent masters (issue 4 acceptance, SPEC 6 "Cross-check"): the spring
 closed loop of runs/closed_loop_spring.toml (bearing_1, bearing_2, spindle), Jacobi, H = 1 s, 120 s,
-under spindle.libcosim_master.run_libcosim (libcosim 0.11.2's fixed-step algorithm) and under
-spindle.master (algorithm 'jacobi') agrees to 1e-6 relative on temperatures, torques and clearance
+under spindle.cosim.libcosim_master.run_libcosim (libcosim 0.11.2's fixed-step algorithm) and under
+spindle.cosim.master (algorithm 'jacobi') agrees to 1e-6 relative on temperatures, torques and clearance
 changes.
 
 Why they can agree exactly: both masters run the same FMU code in this interpreter, so the results
 differ only if the masters hand different values to the FMUs or call them in a different order.
-spindle/libcosim_master.py documents libcosim's initialisation (N rounds of set/read in
+spindle/cosim/libcosim_master.py documents libcosim's initialisation (N rounds of set/read in
 initialisation mode, connected inputs hold the sources' initialisation-mode outputs at exit, then
 the outputs read after exit are transferred before step 1). Our pythonfmu FMUs compute their outputs
 only at instantiation, at exitInitializationMode and in doStep, so the initialisation-mode outputs
-are the start values, which is exactly what spindle.master's Jacobi initialisation gives every
+are the start values, which is exactly what spindle.cosim.master's Jacobi initialisation gives every
 connected input; the steps are the same Jacobi exchange. So the issue's 1e-6 is met with margin
 (measured: bit for bit), and the test also asserts the exact equality: any difference would reveal
 a transport or ordering difference between the masters.
@@ -21,9 +21,9 @@ import pytest
 
 pytest.importorskip("libcosimpy", reason="libcosimpy not installed (optional extra 'cosim')")
 
-from spindle.libcosim_master import run_libcosim  # noqa: E402
-from spindle.master import run  # noqa: E402
-from spindle.runfile import load_run  # noqa: E402
+from spindle.cosim.libcosim_master import run_libcosim  # noqa: E402
+from spindle.cosim.master import run  # noqa: E402
+from spindle.cosim.runfile import load_run  # noqa: E402
 from tests.conftest import ROOT  # noqa: E402
 
 SPRING = ROOT / "runs" / "closed_loop_spring.toml"

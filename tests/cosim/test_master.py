@@ -1,6 +1,6 @@
-"""spindle.master and spindle.runfile: the fmpy co-simulation master (SPEC 6).
+"""spindle.cosim.master and spindle.cosim.runfile: the fmpy co-simulation master (SPEC 6).
 
-Expectations come from the master's documented algorithm (spindle/master.py docstring) and, for
+Expectations come from the master's documented algorithm (spindle/cosim/master.py docstring) and, for
 the coupled runs, from the Python models driven by hand with the same algorithm: the FMUs run the
 same model code in this interpreter, so a master that transfers the right values at the right
 moments reproduces a hand-written co-simulation of the models bit for bit (no tolerance: any
@@ -21,12 +21,12 @@ import pytest
 
 from bearing_fmu.build import SCENES_DIR
 from bearing_fmu.fmu import INPUT_START
-from bearing_fmu.quasi_static import QuasiStaticModel
+from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
-from spindle.fmu import T_START
-from spindle.master import Master, MasterError, run
-from spindle.model import SpindleThermalModel
-from spindle.runfile import RunFileError, parse_run
+from spindle.cosim.master import Master, MasterError, run
+from spindle.cosim.runfile import RunFileError, parse_run
+from spindle.thermal.fmu import T_START
+from spindle.thermal.model import SpindleThermalModel
 
 OMEGA = 1047.1975511965977  # rad/s, 10 000 rpm (runs/closed_loop_spring.toml)
 BEARING_INPUTS = {"omega": OMEGA, "F_z": 800.0}
@@ -153,13 +153,13 @@ def test_connection_errors_name_the_variable(source, target, message, bearing_fm
 def hand_cosimulation(algorithm, step, n_steps):
     """The master's documented algorithm applied by hand to the Python models of the two FMUs.
 
-    FMU life cycle (bearing_fmu/fmu.py, spindle/fmu.py): at instantiation each FMU computes its outputs
+    FMU life cycle (bearing_fmu/fmu.py, spindle/thermal/fmu.py): at instantiation each FMU computes its outputs
     from the input start values (these are the 'start values' a master reads in initialisation mode);
     at exitInitializationMode the bearing evaluates its inputs again (same model object: its solver
     warm-starts from the previous solution, so the order of evaluations matters to the last bit) and
     the spindle builds a fresh model initialised with its inputs; each doStep evaluates the bearing /
     steps the spindle with the inputs held.
-    Master (spindle/master.py): Gauss-Seidel exits in `order` (bearing first, with the spindle's start
+    Master (spindle/cosim/master.py): Gauss-Seidel exits in `order` (bearing first, with the spindle's start
     values; then the spindle with the bearing's outputs after its exit); each step the bearing takes
     the spindle's outputs of t_n, the spindle the bearing's outputs of t_(n+1). Jacobi gives every
     connected input its source's start value, exits all; each step every instance takes the outputs
@@ -309,7 +309,7 @@ def test_limit_stops_the_run_with_its_message(spindle_thermal_fmu):
 # -- refused steps ---------------------------------------------------------------------------------
 def test_refused_step_raises_with_the_fmu_log(spindle_thermal_fmu):
     """-1 MW into an inner ring is an admissible input (|Q| <= 1e7 W) but would cool the ring below
-    0 K within the step: the spindle refuses the step (spindle/model.py) and the master's error
+    0 K within the step: the spindle refuses the step (spindle/thermal/model.py) and the master's error
     names the instance, the call and carries the FMU's own message."""
     doc = {
         "run": {"stop": 2.0, "step": 1.0},

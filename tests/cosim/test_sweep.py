@@ -1,8 +1,8 @@
 """Sweeps on Dask (SPEC 6; issue 4): 16 runs of the spring closed loop (runs/closed_loop_spring.toml
 shortened to 60 s), one per coolant temperature, on a local Dask cluster of 2 worker processes give
-the same table as the same 16 runs one after the other in this process (spindle.sweep.sequential).
+the same table as the same 16 runs one after the other in this process (spindle.cosim.sweep.sequential).
 
-Why equality is exact: every point runs the same code (spindle.sweep.run_point) on the same inputs
+Why equality is exact: every point runs the same code (spindle.cosim.sweep.run_point) on the same inputs
 in a fresh FMU instance; nothing in a run depends on the process it runs in (the FMUs hold no global
 state between instances, the numba kernels are deterministic), so each row must be identical, and
 sweep() returns rows in input order whatever order the workers finish in. Only `wall_time`, a
@@ -15,7 +15,7 @@ import pytest
 
 pytest.importorskip("dask.distributed", reason="dask[distributed] not installed (optional extra 'sweep')")
 
-from spindle.sweep import sequential, sweep  # noqa: E402
+from spindle.cosim.sweep import sequential, sweep  # noqa: E402
 from tests.conftest import ROOT  # noqa: E402
 
 SPRING = ROOT / "runs" / "closed_loop_spring.toml"
@@ -46,7 +46,7 @@ def test_sweep_table_quotes_names_and_messages_with_commas(tmp_path):
     exactly. (Found on the first CLI sweep: an unquoted K[3,3] header shifted every column.)"""
     import csv
 
-    from spindle.sweep import write_table
+    from spindle.cosim.sweep import write_table
 
     rows = [
         {

@@ -16,7 +16,7 @@ import numpy as np
 from fmpy import read_model_description, simulate_fmu
 from fmpy.validation import validate_fmu
 
-from bearing_fmu.model import BearingModel
+from bearing_fmu.models.analytic import AnalyticModel
 from tests.fmu.harness import close, opened, probe
 
 OUTPUTS = [
@@ -68,7 +68,7 @@ def test_simulate_fmu_equals_python_model(analytic_fmu):
         dtype=[("time", float), ("omega", float), ("F_y", float), ("T_oil", float)],
     )
     res = simulate_fmu(str(analytic_fmu), stop_time=2.0, output_interval=0.1, input=signals, output=OUTPUTS)
-    model = BearingModel()
+    model = AnalyticModel()
     assert len(res) == 21
     for row in res:
         # outputs at t_n come from the step [t_(n-1), t_n] with the inputs held at t_(n-1)
@@ -80,7 +80,7 @@ def test_simulate_fmu_equals_python_model(analytic_fmu):
 
 
 def test_hand_written_loop_equals_python_model(analytic_fmu):
-    model = BearingModel("6208", "guessasma_oil", Pd=5e-6)
+    model = AnalyticModel("6208", "guessasma_oil", Pd=5e-6)
     with opened(analytic_fmu, "loop", {"Pd": 5e-6}) as (fmu, vr):
         real_out = [n for n in OUTPUTS if n not in ("regime", "n_loaded")]
         for n, (w, F, T) in enumerate(

@@ -17,7 +17,7 @@ from fmpy import read_model_description, simulate_fmu
 from fmpy.validation import validate_fmu
 
 from bearing_fmu.build import SCENES_DIR
-from bearing_fmu.quasi_static import QuasiStaticModel
+from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
 from tests.fmu.harness import close, opened, probe
 

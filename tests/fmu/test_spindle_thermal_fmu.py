@@ -4,11 +4,11 @@
 - fmpy.validate_fmu finds no problem (SPEC 3: CI must assert `validate_fmu(path) == []`); every
   variable has a description, every Real a declared unit; state get/set and serialisation are
   declared (SPEC 5.3);
-- the FMU's variables are the Python model's tables (spindle.fmu registers model.inputs/outputs),
+- the FMU's variables are the Python model's tables (spindle.thermal.fmu registers model.inputs/outputs),
   and the fixed-preload FMU alone has the axial-float inputs F_axial_k/K_axial_k (SPEC 5.2: what a
   scene does not need is not exposed; spindle.build.THERMAL_FMUS);
-- a hand-written FMU2Slave loop equals spindle.model.SpindleThermalModel bit for bit: the FMU runs
-  the same model code in the same interpreter (spindle/fmu.py is a thin wrapper), and the model has
+- a hand-written FMU2Slave loop equals spindle.thermal.model.SpindleThermalModel bit for bit: the FMU runs
+  the same model code in the same interpreter (spindle/thermal/fmu.py is a thin wrapper), and the model has
   no history other than its state (temperatures, axial float, held inputs; the operator cache is a
   pure function of omega), so a model fed the same inputs in the same order must give the same
   bits; any difference would be an FMI transport error (wrong variable, lost input, float
@@ -32,8 +32,8 @@ import pytest
 from fmpy import read_model_description
 from fmpy.validation import validate_fmu
 
-from spindle.fmu import T_START
-from spindle.model import SpindleThermalModel
+from spindle.thermal.fmu import T_START
+from spindle.thermal.model import SpindleThermalModel
 from tests.fmu.harness import opened
 
 AXIAL_FLOAT_INPUTS = {"F_axial_1", "F_axial_2", "K_axial_1", "K_axial_2"}
@@ -68,7 +68,7 @@ def test_validate_fmu_and_model_description(fixture, request):
 
 @pytest.mark.parametrize("fixture", sorted(FMUS))
 def test_variables_are_the_model_tables(fixture, request):
-    """spindle/fmu.py registers the model's declared inputs and outputs: same names, same order."""
+    """spindle/thermal/fmu.py registers the model's declared inputs and outputs: same names, same order."""
     path = request.getfixturevalue(fixture)
     model = SpindleThermalModel(axial_float=FMUS[fixture])
     assert inputs_of(path) == [v.name for v in model.inputs]
@@ -106,7 +106,7 @@ AXIAL_STEPS = [
 
 
 def start_inputs(model):
-    """The FMU's input start values (spindle/fmu.py: T_START for temperatures, 0 otherwise)."""
+    """The FMU's input start values (spindle/thermal/fmu.py: T_START for temperatures, 0 otherwise)."""
     return {v.name: (T_START if v.unit == "K" else 0.0) for v in model.inputs}
 
 
@@ -228,7 +228,7 @@ BAD_INPUT_SCRIPT = textwrap.dedent("""
 @pytest.mark.parametrize("fixture", sorted(FMUS))
 def test_bad_inputs_are_reported_and_host_survives(fixture, request):
     """NaN heat and a negative ambient temperature: fmi2Discard (2) or fmi2Error (3), never Fatal, with
-    an error message naming the input, its value and the allowed range (spindle.model._merge); the
+    an error message naming the input, its value and the allowed range (spindle.thermal.model._merge); the
     state is left unchanged (outputs as before the refused step) and a corrected input steps again.
     An unknown `spindle` (with a '%' in it: pythonfmu's log() is printf-style, SPEC 3) is reported at
     initialisation and the next doStep is refused. The process exits 0."""

@@ -1,4 +1,4 @@
-"""Twin of bearing_fmu.kernels.analytic: the analytic bearing as a plain loop over the balls.
+"""Twin of bearing_fmu.kernels.radial_bearing: the analytic bearing as a plain loop over the balls.
 
 Calls only the other twins (never a kernel). Deep-groove bearing (contact angle 0), outer ring
 fixed, radial load along psi = 0 (SPEC 4.1-4.6):
@@ -19,8 +19,8 @@ checks them separately against ref_hertz).
 
 import math
 
-from bearing_fmu.kernels import analytic as ak  # layout constants (B_*) only
 from bearing_fmu.kernels import lubricant as lk  # layout constants (LUB_*) only
+from bearing_fmu.kernels import radial_bearing as ak  # layout constants (B_*) only
 
 from . import ref_capacitance, ref_ehl, ref_geometry, ref_hertz, ref_loaddist, ref_lubricant
 
@@ -28,7 +28,7 @@ BALL_ROWS = ("Q_i", "Q_o", "h_min_i", "h_min_o", "Lambda_i", "Lambda_o", "C_i", 
 
 
 def analytic_bearing(omega, F_r, T_oil, brg, lub):
-    """Returns (out, balls): out maps the lower-case O_* names of kernels.analytic without the
+    """Returns (out, balls): out maps the lower-case O_* names of kernels.radial_bearing without the
     'O_' prefix (e.g. 'lambda_i' for O_LAMBDA_I) to values; balls maps BALL_ROWS (the rows of the
     kernel's work array, in order) to lists over the balls. 'iter' (the kernel's Newton iteration
     count) has no twin: it is None here."""

@@ -1,4 +1,4 @@
-"""Twin of spindle.network: the lumped thermal network from first principles, plain numpy/scipy.
+"""Twin of spindle.thermal.network: the lumped thermal network from first principles, plain numpy/scipy.
 
 Written from the physics (docs/spindle_thermal.md), not from the kernels:
 - conductances from their textbook formulas, selected by kind *name* (the shell's resistance by

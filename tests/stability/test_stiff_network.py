@@ -1,6 +1,6 @@
 r"""Stiff thermal network with large steps (SPEC 8: "tiny thermal capacities and huge conductances").
 
-The stiff spindle is the default one (spindle/params/b7214c_x_pair.toml) with one extra node, `film_1`,
+The stiff spindle is the default one (spindle/thermal/params/b7214c_x_pair.toml) with one extra node, `film_1`,
 between outer ring 1 and the housing: capacity 1e-3 of a ring's (0.1467 J/K) and a conductance 1e4 times
 the bearing's internal one (1.5e5 W/K) to the outer ring; the ring-housing contact now starts at the
 film. Its time constant C/G ~ 1e-6 s is 1e9 times shorter than the slowest (~650 s).
@@ -25,8 +25,8 @@ import math
 import numpy as np
 import pytest
 
-from spindle import network as nk
-from spindle.model import CATALOGUE, SpindleThermalModel
+from spindle.thermal import network as nk
+from spindle.thermal.model import CATALOGUE, SpindleThermalModel
 
 OMEGA = 10000.0 * 2.0 * math.pi / 60.0
 HEATS = dict(Q_inner_ring_1=300.0, Q_outer_ring_1=200.0, Q_inner_ring_2=300.0, Q_outer_ring_2=200.0)

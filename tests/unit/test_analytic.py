@@ -1,4 +1,4 @@
-"""kernels.analytic against its twin tests/reference/ref_analytic.py (a ball loop over the twins).
+"""kernels.radial_bearing against its twin tests/reference/ref_analytic.py (a ball loop over the twins).
 
 Every O_* output is compared (O_ITER, the kernel's Newton count, has no twin: it is checked for
 convergence instead), and so are the eight per-ball rows of the work array. The tolerances are
@@ -32,10 +32,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from bearing_fmu.kernels import analytic as ak
 from bearing_fmu.kernels import ehl as ek
 from bearing_fmu.kernels import lubricant as lk
-from bearing_fmu.model import BearingModel
+from bearing_fmu.kernels import radial_bearing as ak
+from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.params import catalogue
 from bearing_fmu.scene import Scene
 from tests.reference import ref_analytic as ra
@@ -81,7 +81,7 @@ POINTS = [
 
 @functools.cache
 def model(bearing, scene, Pd, lubricant):
-    return BearingModel(bearing, lubricant, SCENES[scene], Pd=Pd)
+    return AnalyticModel(bearing, lubricant, SCENES[scene], Pd=Pd)
 
 
 def run_kernel(m, omega, F_r, T):
@@ -196,7 +196,7 @@ def test_analytic_on_grid(bearing, Pd, scene):
 def test_analytic_random(omega, F_r, T, Pd, bearing, scene, lubricant):
     """Magnitudes below 1 um/s-scale speeds, 1 uN and 1 nm clearance are physically zero and are left to
     the edge-case tests (they reach float underflow, e.g. test_subnormal_loads_do_not_crash)."""
-    check_against_twin(BearingModel(bearing, lubricant, SCENES[scene], Pd=Pd), omega, F_r, T)
+    check_against_twin(AnalyticModel(bearing, lubricant, SCENES[scene], Pd=Pd), omega, F_r, T)
 
 
 def test_bearing_array_matches_twin_geometry():
@@ -315,7 +315,7 @@ def test_subnormal_loads_do_not_crash(omega, F_r):
 
 
 def test_smooth_surfaces_keep_their_film():
-    m = BearingModel("6208", "guessasma_oil", Scene(), Pd=0.0)
+    m = AnalyticModel("6208", "guessasma_oil", Scene(), Pd=0.0)
     m.brg[ak.B_SIGMA_I] = 0.0
     m.brg[ak.B_SIGMA_O] = 0.0
     out, ball = run_kernel(m, 500.0, 3000.0, 313.0)

@@ -1,6 +1,6 @@
-"""spindle.network kernels against their twins (tests/reference/ref_network.py) and integrator properties.
+"""spindle.thermal.network kernels against their twins (tests/reference/ref_network.py) and integrator properties.
 
-Networks: the default spindle (spindle/params/b7214c_x_pair.toml, 8 nodes, 2 boundaries) and random
+Networks: the default spindle (spindle/thermal/params/b7214c_x_pair.toml, 8 nodes, 2 boundaries) and random
 connected networks (6-12 nodes, capacities 1-1e4 J/K, conductances 0.1-100 W/K, seeded).
 Tolerances:
 - Closed forms (conductances, assembly, thermo-mechanics): the kernel and the twin do the same few
@@ -16,8 +16,8 @@ import math
 import numpy as np
 import pytest
 
-from spindle import network as nk
-from spindle.model import SpindleThermalModel
+from spindle.thermal import network as nk
+from spindle.thermal.model import SpindleThermalModel
 from tests.reference import ref_network as rn
 from tests.unit._compare import assert_close
 

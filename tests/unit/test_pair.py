@@ -1,4 +1,4 @@
-"""bearing_fmu.pair: duplex pairs of quasi-static bearings (X/O, spring or fixed preload).
+"""bearing_fmu.models.pair: duplex pairs of quasi-static bearings (X/O, spring or fixed preload).
 
 Two B7214C (iso_vg68_mineral, centrifugal and gyroscopic on), F_p = 800 N, spacing 0.1 m. The pair
 Newton stops at a load residual of 1e-12 x F_p (scene tolerance), so loads that are equal by
@@ -11,10 +11,10 @@ import math
 import numpy as np
 import pytest
 
-from bearing_fmu.kernels.quasistatic import BQ_A_I, BQ_A_O
-from bearing_fmu.model import InputError
-from bearing_fmu.pair import PairAssembly, solve_pair
-from bearing_fmu.quasi_static import QuasiStaticModel, SolverError
+from bearing_fmu.kernels.jones_harris import BQ_A_I, BQ_A_O
+from bearing_fmu.models.pair import PairAssembly, solve_pair
+from bearing_fmu.models.quasi_static import QuasiStaticModel, SolverError
+from bearing_fmu.models.variables import InputError
 from bearing_fmu.scene import Scene
 
 RPM = 2.0 * math.pi / 60.0

@@ -4,7 +4,8 @@ import math
 
 import pytest
 
-from bearing_fmu.model import BearingModel, InputError
+from bearing_fmu.models.analytic import AnalyticModel
+from bearing_fmu.models.variables import InputError
 from bearing_fmu.params import ParameterError, catalogue, load_bearing, load_lubricant
 from bearing_fmu.scene import Scene, SceneError
 
@@ -23,8 +24,8 @@ def test_scene_rejects_unknown_options():
 
 
 def test_capacitance_off_removes_its_output():
-    on = BearingModel(scene=Scene())
-    off = BearingModel(scene=Scene(capacitance=False))
+    on = AnalyticModel(scene=Scene())
+    off = AnalyticModel(scene=Scene(capacitance=False))
     assert "C_bearing" in {v.name for v in on.outputs}
     assert "C_bearing" not in {v.name for v in off.outputs}
     assert "C_bearing" not in off.evaluate(500.0, 3000.0, 313.15)
@@ -82,7 +83,7 @@ def test_unknown_catalogue_name_lists_choices():
 
 def test_analytic_fidelity_refuses_angular_contact():
     with pytest.raises(InputError, match="deep-groove"):
-        BearingModel("B7214C", "iso_vg68_mineral")
+        AnalyticModel("B7214C", "iso_vg68_mineral")
 
 
 @pytest.mark.parametrize(
@@ -98,11 +99,11 @@ def test_analytic_fidelity_refuses_angular_contact():
 )
 def test_bad_inputs_name_input_and_range(omega, F_y, T_oil, word):
     with pytest.raises(InputError, match=word):
-        BearingModel().evaluate(omega, F_y, T_oil)
+        AnalyticModel().evaluate(omega, F_y, T_oil)
 
 
 def test_overload_warning_above_iso76_limit():
-    m = BearingModel()
+    m = AnalyticModel()
     out = m.evaluate(100.0, 40000.0, 313.15)
     assert 4.2e9 < out["p_max"] <= 6e9
     assert m.warnings and "ISO 76" in m.warnings[0]
@@ -113,7 +114,7 @@ def test_overload_warning_above_iso76_limit():
 def test_edge_inputs_give_finite_outputs(omega, F_y, Pd):
     """Zero speed (no film: Lambda = 0, boundary), zero load with clearance/preload, reversal and the
     speed limit all give finite outputs (SPEC 8: never a silent NaN)."""
-    out = BearingModel(Pd=Pd).evaluate(omega, F_y, 313.15)
+    out = AnalyticModel(Pd=Pd).evaluate(omega, F_y, 313.15)
     assert all(math.isfinite(v) for v in out.values())
     if omega == 0.0:
         assert out["Lambda_inner"] == 0.0 and out["Lambda_outer"] == 0.0 and out["regime"] == 0

@@ -1,4 +1,4 @@
-"""SpindleThermalModel facade (spindle/model.py): variables, stepping, state, steady state, thermo-mechanics,
+"""SpindleThermalModel facade (spindle/thermal/model.py): variables, stepping, state, steady state, thermo-mechanics,
 axial float, parameter and input validation. Expectations come from the model definition
 (docs/spindle_thermal.md, SPEC 4.9) and are derived in each docstring."""
 
@@ -7,10 +7,10 @@ import math
 
 import pytest
 
-from bearing_fmu.model import InputError
+from bearing_fmu.models.variables import InputError
 from bearing_fmu.params import ParameterError
-from spindle import network as nk
-from spindle.model import CATALOGUE, SpindleInputError, SpindleThermalModel
+from spindle.thermal import network as nk
+from spindle.thermal.model import CATALOGUE, SpindleInputError, SpindleThermalModel
 from tests.unit._compare import assert_close
 
 OMEGA = 10000.0 * 2.0 * math.pi / 60.0

@@ -14,7 +14,7 @@ import pytest
 
 from bearing_fmu.kernels.geometry import defect_frequencies, free_contact_angle, free_endplay, rolling_kinematics
 from bearing_fmu.kernels.loaddist import gauss_legendre, radial_integral
-from bearing_fmu.model import BearingModel
+from bearing_fmu.models.analytic import AnalyticModel
 
 D, DM = 12.6e-3, 60.6e-3
 T_OIL = 313.15  # K (the Guessasma oil has constant properties: any temperature gives the same result)
@@ -22,7 +22,7 @@ T_OIL = 313.15  # K (the Guessasma oil has constant properties: any temperature 
 
 @pytest.fixture(scope="module")
 def model():
-    return BearingModel("6208", "guessasma_oil")
+    return AnalyticModel("6208", "guessasma_oil")
 
 
 def test_pure_rolling_speeds_6208():
@@ -81,7 +81,7 @@ def test_load_parameter_vs_clearance(F_r, Pd, eps_published):
     0.685/0.5/0.40) and Farah App. A (5 kN, P_d/D = -0.0045/0/+0.0045 -> 1.70/0.5/0.29; -0.0035 ->
     1.32). Tolerance 1 % (issue 3 acceptance); the analytic model uses the continuous-ball
     Sjovall integral, the papers a 9-ball DEM, so sub-percent differences are expected."""
-    out = BearingModel("6208", "guessasma_oil", Pd=Pd).evaluate(0.0, F_r, T_OIL)
+    out = AnalyticModel("6208", "guessasma_oil", Pd=Pd).evaluate(0.0, F_r, T_OIL)
     assert out["epsilon"] == pytest.approx(eps_published, rel=0.01)
 
 

@@ -11,9 +11,9 @@ import math
 import numpy as np
 import pytest
 
-from bearing_fmu.kernels import quasistatic as qk
-from bearing_fmu.model import InputError
-from bearing_fmu.quasi_static import QuasiStaticModel
+from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.models.quasi_static import QuasiStaticModel
+from bearing_fmu.models.variables import InputError
 from bearing_fmu.scene import Scene
 
 T_OIL = 313.15

@@ -1,6 +1,6 @@
 """Dimensionless EHL groups of the thesis' 55 numerical cases and its turbine-oil laws.
 
-Source: Wheeler (2016) thesis, Annexe D (shared/reference/thesis_annexe_d_ehl.csv): lubricant 2
+Source: Wheeler (2016) thesis, Annexe D (tests/validation/data/thesis_annexe_d_ehl.csv): lubricant 2
 at 313 K, mu0 = 0.00795 Pa.s, G = 4671, steel-steel E' = 210 GPa / (1 - 0.3^2) = 230.77 GPa.
 U, W built on Rx (thesis list of symbols); Moes M = W (2U)^-3/4, L = G (2U)^1/4 (Moes 1992 as
 cited in thesis section 2.2; the printed values fit the 2U convention, docs/thesis_hertz_cases.md).

@@ -1,4 +1,4 @@
-"""QuasiStaticModel: facade of the quasi-static fidelity (kernels.quasistatic + kernels.contacts).
+"""QuasiStaticModel: facade of the quasi-static fidelity (kernels.jones_harris + kernels.contacts).
 
 One bearing, lubricant and scene; inputs and outputs are SI and declared as Variable tables that
 the FMU class turns into FMI variables. The solver state (inner-ring displacements and ball
@@ -9,20 +9,28 @@ import math
 
 import numpy as np
 
-from .kernels import contacts as ck
-from .kernels import quasistatic as qk
-from .kernels.geometry import ball_mass, curvature_radii, free_contact_angle
-from .kernels.hertz import (
+from ..kernels import contacts as ck
+from ..kernels import jones_harris as qk
+from ..kernels.geometry import ball_mass, curvature_radii, free_contact_angle
+from ..kernels.hertz import (
     hertz_coefficients_approx,
     hertz_coefficients_exact,
     hertz_contact,
     hertz_stiffness,
     reduced_modulus,
 )
-from .kernels.torque import ALPHA_HYSTERESIS_STEEL, TL_SIZE
-from .model import DM_N_LIMIT, P_MAX_ERROR, InputError, Variable, check_oil_temperature, check_speed, pressure_warnings
-from .params import load_bearing, load_lubricant
-from .scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, RACE_CONTROLS, Scene
+from ..kernels.torque import ALPHA_HYSTERESIS_STEEL, TL_SIZE
+from ..params import load_bearing, load_lubricant
+from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, RACE_CONTROLS, Scene
+from .variables import (
+    DM_N_LIMIT,
+    P_MAX_ERROR,
+    InputError,
+    Variable,
+    check_oil_temperature,
+    check_speed,
+    pressure_warnings,
+)
 
 DOF_NAMES = ("x", "y", "z", "theta_x", "theta_y")
 DOF_UNITS = ("m", "m", "m", "rad", "rad")

@@ -32,9 +32,10 @@ import cmath
 import math
 
 import numpy as np
-from numba import njit
 
-# layout of the quasi-static bearing array (built by bearing_fmu.model)
+from bearing_fmu_common.jit import kernel
+
+# layout of the quasi-static bearing array (built by bearing_fmu.models.analytic)
 QS_Z = 0  # number of balls (-)
 QS_D = 1  # ball diameter (m)
 QS_DM = 2  # pitch diameter (m)
@@ -92,7 +93,7 @@ _H_CSTEP = 1e-30  # complex-step increment: exact derivatives, no subtraction er
 _BALL_MAXIT = 60
 
 
-@njit(cache=True)
+@kernel
 def qs_geometry(qs, dPd):
     """(A, r_i, r_o, A1_0, A2_0, Rr_i, alpha0) in m, m, m, m, m, m, rad for thermal clearance change dPd (m)."""
     D = qs[QS_D]
@@ -107,7 +108,7 @@ def qs_geometry(qs, dPd):
     return A, (qs[QS_FI] - 0.5) * D, (qs[QS_FO] - 0.5) * D, A1_0, A2_0, Rr_i, alpha0
 
 
-@njit(cache=True)
+@kernel
 def hybrid_inner_share(C, race):
     """Share lam_i (-) of the gyroscopic moment taken by the inner race under hybrid kinematics, for the
     spin-moment ratio C = Q_i a_i E_i / (Q_o a_o E_o) (-); lam_o = 2 - lam_i. Complex-safe.
@@ -128,7 +129,7 @@ def hybrid_inner_share(C, race):
     return 2.0 * C / (1.0 + C)
 
 
-@njit(cache=True)
+@kernel
 def kinematics(a_i, a_o, C, omega, gp, dm, D, m_ball, race, centrifugal, gyroscopic):
     """Race-control kinematics of one ball (complex-safe: also called with complex arguments).
 
@@ -163,7 +164,7 @@ def kinematics(a_i, a_o, C, omega, gp, dm, D, m_ball, race, centrifugal, gyrosco
     return F_c, lam_o * Mg_D, lam_i * Mg_D, w_m, w_R, beta
 
 
-@njit(cache=True)
+@kernel
 def _kin_grad(a_i, a_o, C, omega, gp, dm, D, m_ball, race, cen, gyro, g):
     """Values and partials of (F_c, Mg_o, Mg_i) w.r.t. (a_i, a_o, C) by complex step into g[3, 4].
 
@@ -186,7 +187,7 @@ def _kin_grad(a_i, a_o, C, omega, gp, dm, D, m_ball, race, cen, gyro, g):
             g[k, 3] = 0.0
 
 
-@njit(cache=True)
+@kernel
 def _ball_eval(X1, X2, A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb, kg, w):
     """Ball residual, ring load and their derivatives at ball position X for curvature-centre offset A.
 
@@ -308,7 +309,7 @@ def _ball_eval(X1, X2, A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball
     w[29] = C
 
 
-@njit(cache=True)
+@kernel
 def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond):
     """Solve one ball's equilibrium for curvature-centre offset (A1, A2) (m); warm start from X[:, j].
 
@@ -496,7 +497,7 @@ def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond):
     return status
 
 
-@njit(cache=True)
+@kernel
 def bearing_loads(d, qs, dPd, omega, X, F, K, balls):
     """Displacement-controlled evaluation: loads F (5, N and N.m) and stiffness K = dF/dd (5x5)
     for inner-ring displacements d (5, m and rad), clearance change dPd (m), speed omega (rad/s).
@@ -555,7 +556,7 @@ def bearing_loads(d, qs, dPd, omega, X, F, K, balls):
     return worst
 
 
-@njit(cache=True)
+@kernel
 def _ball_outputs(j, cond, X, A1, A2, omega, gp, dm, D, qs, race, cen, gyro, balls):
     """Per-ball loads, angles and kinematics (spin and rolling speeds at both contacts)."""
     a_i = cond[11]
@@ -591,7 +592,7 @@ def _ball_outputs(j, cond, X, A1, A2, omega, gp, dm, D, qs, race, cen, gyro, bal
     balls[BQ_U_I, j] = abs(omega - w_m) * 0.5 * dm * (1.0 - gp * math.cos(a_i))
 
 
-@njit(cache=True)
+@kernel
 def _solve_small(Kr, R, n, out):
     """Solve Kr[:n,:n] out = R[:n] by Gaussian elimination with partial pivoting (in place on Kr, R).
 
@@ -626,7 +627,7 @@ def _solve_small(Kr, R, n, out):
     return True
 
 
-@njit(cache=True)
+@kernel
 def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
     """Global equilibrium by damped Newton with the analytic Jacobian.
 
@@ -715,7 +716,7 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
     return QS_NOT_CONVERGED, maxit, res
 
 
-@njit(cache=True)
+@kernel
 def _residual_norm(F_applied, F, idx, n, scale):
     """Largest load error over the load-controlled DOFs, moments scaled to forces (N)."""
     r = 0.0
@@ -725,7 +726,7 @@ def _residual_norm(F_applied, F, idx, n, scale):
     return r
 
 
-@njit(cache=True)
+@kernel
 def _mean_ball_load(balls):
     """Mean inner contact load (N): the load scale of a preloaded bearing under zero external load."""
     Z = balls.shape[1]

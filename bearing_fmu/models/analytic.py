@@ -1,71 +1,22 @@
-"""BearingModel: the facade between parameter sets, scenes and the jitted kernels.
+"""AnalyticModel: the analytic fidelity's facade between parameter sets, scenes and the jitted kernels.
 
 Inputs and outputs are SI. The model declares its inputs and outputs (name, unit, description) in
 tables that the FMU class turns into FMI variables, so the Python model and the FMU cannot drift.
 """
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
-from .kernels import analytic as ak
-from .kernels.geometry import ball_mass, curvature_radii
-from .kernels.hertz import hertz_coefficients_approx, hertz_coefficients_exact, reduced_modulus
-from .kernels.loaddist import gauss_legendre
-from .params import load_bearing, load_lubricant
-from .scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
+from ..kernels import radial_bearing as ak
+from ..kernels.geometry import ball_mass, curvature_radii
+from ..kernels.hertz import hertz_coefficients_approx, hertz_coefficients_exact, reduced_modulus
+from ..kernels.loaddist import gauss_legendre
+from ..params import load_bearing, load_lubricant
+from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
+from .variables import DM_N_LIMIT, InputError, Variable, check_oil_temperature, check_speed, pressure_warnings
 
-# Pressures that bound the admissible load (docs/decisions.md):
-P_MAX_WARNING = 4.2e9  # Pa, ISO 76 static load rating criterion for ball bearings
-P_MAX_ERROR = 6.0e9  # Pa, estimated: far beyond first yield of bearing steel; Hertz is meaningless
-DM_N_LIMIT = 4.0e6  # mm.rpm, d_m n beyond any oil-lubricated steel ball bearing (estimated)
-T_OIL_RANGE = (233.15, 473.15)  # K, -40..200 C: range of the viscosity laws of mineral and PAO oils
 GAUSS_NODES = 48  # quadrature points on the loaded arc (J_r(0.5) exact to < 1e-8)
-
-
-class InputError(ValueError):
-    """An input or parameter value is outside its allowed range (message names it and the range)."""
-
-
-def check_speed(omega, omega_max):
-    """Raise InputError unless omega (rad/s) is finite and |omega| <= omega_max (the d_m n limit)."""
-    if not (math.isfinite(omega) and abs(omega) <= omega_max):
-        raise InputError(
-            f"omega = {omega} rad/s is outside the allowed range [{-omega_max:.6g}, {omega_max:.6g}] "
-            f"rad/s (d_m n <= {DM_N_LIMIT:.0e} mm.rpm)"
-        )
-
-
-def check_oil_temperature(T_oil):
-    """Raise InputError unless T_oil (K) is within T_OIL_RANGE."""
-    lo, hi = T_OIL_RANGE
-    if not (math.isfinite(T_oil) and lo <= T_oil <= hi):
-        raise InputError(f"T_oil = {T_oil} K is outside the allowed range [{lo}, {hi}] K")
-
-
-def pressure_warnings(p_max, loads):
-    """Warnings for a Hertz pressure p_max (Pa) above the ISO 76 limit; InputError above the material
-    limit. `loads` names the inputs that caused it (for the message)."""
-    if p_max > P_MAX_ERROR:
-        raise InputError(
-            f"{loads} gives p_max = {p_max / 1e9:.3g} GPa, beyond the material limit "
-            f"{P_MAX_ERROR / 1e9:.1f} GPa (allowed: loads giving p_max <= {P_MAX_ERROR / 1e9:.1f} GPa)"
-        )
-    if p_max > P_MAX_WARNING:
-        return [
-            f"p_max = {p_max / 1e9:.3g} GPa exceeds {P_MAX_WARNING / 1e9:.1f} GPa "
-            f"(ISO 76 static limit): permanent raceway deformation expected"
-        ]
-    return []
-
-
-@dataclass(frozen=True)
-class Variable:
-    name: str  # FMI variable name
-    unit: str  # SI unit ('1' for dimensionless)
-    description: str
-    kind: str = "real"  # 'real' | 'integer'
 
 
 INPUTS = (
@@ -93,7 +44,7 @@ ANALYTIC_OUTPUTS = (
 CAPACITANCE_OUTPUTS = ("C_bearing",)
 
 
-class BearingModel:
+class AnalyticModel:
     """Analytic bearing model (SPEC 4.1-4.6) for one bearing, lubricant and scene.
 
     Parameters

@@ -12,7 +12,7 @@ All contacts roll purely at the entrainment speed u = omega d_m (1 - gamma^2)/4.
 
 import math
 
-from numba import njit
+from bearing_fmu_common.jit import kernel
 
 from .capacitance import ball_capacitance, contact_capacitance, contact_permittivity
 from .ehl import film_parameter, film_thickness, lubrication_regime
@@ -21,7 +21,7 @@ from .hertz import hertz_contact, hertz_stiffness, series_stiffness
 from .loaddist import load_parameter, solve_radial_shift
 from .lubricant import LUB_EPS_R0, clausius_mossotti_constant, lubricant_state
 
-# layout of the bearing parameter array (built by bearing_fmu.model)
+# layout of the bearing parameter array (built by bearing_fmu.models.analytic)
 B_Z = 0  # number of balls (-)
 B_D = 1  # ball diameter (m)
 B_DM = 2  # pitch diameter (m)
@@ -71,7 +71,7 @@ O_ITER = 18
 O_SIZE = 19
 
 
-@njit(cache=True)
+@kernel
 def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     """Evaluate the analytic bearing model.
 

@@ -1,9 +1,9 @@
 """SpindleThermalModel: facade of the lumped thermal spindle (SPEC 4.9; docs/spindle_thermal.md).
 
-Reads a spindle TOML (a catalogue name in spindle/params/ or a path), packs it into the arrays of
-spindle.network, advances the temperatures with the exact exponential update (default) or backward
+Reads a spindle TOML (a catalogue name in spindle/thermal/params/ or a path), packs it into the arrays of
+spindle.thermal.network, advances the temperatures with the exact exponential update (default) or backward
 Euler, and turns temperatures into thermal/centrifugal changes of bearing clearance and axial
-interference. Inputs and outputs are SI and declared as bearing_fmu.model.Variable tables that the
+interference. Inputs and outputs are SI and declared as bearing_fmu.models.analytic.Variable tables that the
 FMU class turns into FMI variables. No scipy import on this path (SPEC 3): the eigendecomposition
 is numpy's.
 """
@@ -15,8 +15,8 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_fmu.model import InputError, Variable
 from bearing_fmu.params import ParameterError, load_bearing, resolve_toml
+from bearing_fmu_common.variables import InputError, Variable
 
 from . import network as nk
 
@@ -303,7 +303,7 @@ def _axial(section, node_index, n_bearings, where):
 class SpindleThermalModel:
     """Lumped thermal spindle (SPEC 4.9): temperatures, clearance and axial-interference changes.
 
-    spindle: catalogue name (spindle/params/<name>.toml) or TOML path; integrator: 'exponential'
+    spindle: catalogue name (spindle/thermal/params/<name>.toml) or TOML path; integrator: 'exponential'
     (exact for inputs held over the step, default) | 'implicit_euler' (backward Euler, `substeps` >= 1
     equal sub-steps per step); T_initial (K): start temperature of every node (default: the T_ambient
     input, or the first boundary's input, at initialize()); axial_float: None = as the TOML's

@@ -36,7 +36,8 @@ on its first dispatch, which is why the master loads numba and scipy before any 
 import math
 
 import numpy as np
-from numba import njit
+
+from bearing_fmu_common.jit import kernel
 
 LINK_CONDUCTANCE = 0
 LINK_SHELL = 1
@@ -50,7 +51,7 @@ PAR_SIZE = 5
 NU_COEFF = 0.133
 
 
-@njit(cache=True)
+@kernel
 def rotating_shaft_nusselt(omega, d, nu_air, Pr):
     """Nusselt number (-) of a shaft of diameter d (m) turning at omega (rad/s) in air of kinematic viscosity
     nu_air (m^2/s) and Prandtl number Pr: Nu = 0.133 Re^(2/3) Pr^(1/3), Re = (|omega| d/2) d / nu_air."""
@@ -58,7 +59,7 @@ def rotating_shaft_nusselt(omega, d, nu_air, Pr):
     return NU_COEFF * Re ** (2.0 / 3.0) * Pr ** (1.0 / 3.0)
 
 
-@njit(cache=True)
+@kernel
 def link_conductance(kind, par, omega):
     """Conductance G (W/K) of one link of `kind` with parameter row `par` at shaft speed omega (rad/s)."""
     if kind == LINK_CONDUCTANCE:
@@ -75,7 +76,7 @@ def link_conductance(kind, par, omega):
     return math.nan  # unknown code: poison the result rather than guess
 
 
-@njit(cache=True)
+@kernel
 def link_conductances(kinds, par, omega):
     """Conductances G (W/K) of all links (kinds: int array, par: (n_links, PAR_SIZE)) at omega (rad/s)."""
     G = np.empty(kinds.shape[0])
@@ -84,7 +85,7 @@ def link_conductances(kinds, par, omega):
     return G
 
 
-@njit(cache=True)
+@kernel
 def assemble(n, m, ends_i, ends_j, G):
     """Conductance matrices (L (n, n), B (n, m)) in W/K of n nodes and m boundaries from the links
     (ends_i[k], ends_j[k], G[k]); an end index >= n is boundary index - n. Boundary-boundary links carry
@@ -107,7 +108,7 @@ def assemble(n, m, ends_i, ends_j, G):
     return L, B
 
 
-@njit(cache=True)
+@kernel
 def boundary_heat_flow(n, ends_i, ends_j, G, T, Tb):
     """Heat (W) flowing from the nodes into the boundaries at node temperatures T and boundary
     temperatures Tb (K): the sum over node-boundary links of G (T_node - T_boundary)."""
@@ -121,7 +122,7 @@ def boundary_heat_flow(n, ends_i, ends_j, G, T, Tb):
     return q
 
 
-@njit(cache=True)
+@kernel
 def cholesky(A):
     """Lower-triangular factor of a symmetric positive definite matrix A = R R^T.
     Returns an all-NaN matrix if a pivot is not positive (A not positive definite)."""
@@ -143,7 +144,7 @@ def cholesky(A):
     return R
 
 
-@njit(cache=True)
+@kernel
 def cholesky_solve(R, b):
     """Solution x of R R^T x = b for the lower-triangular factor R of `cholesky`."""
     n = b.shape[0]
@@ -162,7 +163,7 @@ def cholesky_solve(R, b):
     return x
 
 
-@njit(cache=True)
+@kernel
 def matvec(A, x):
     """A x for a 2-D A (loops: no BLAS)."""
     y = np.zeros(A.shape[0])
@@ -172,7 +173,7 @@ def matvec(A, x):
     return y
 
 
-@njit(cache=True)
+@kernel
 def rmatvec(A, x):
     """A^T x for a 2-D A (loops: no BLAS)."""
     y = np.zeros(A.shape[1])
@@ -182,13 +183,13 @@ def rmatvec(A, x):
     return y
 
 
-@njit(cache=True)
+@kernel
 def source_vector(B, Tb, P):
     """Right-hand side B T_b + P (W) of the node equations."""
     return matvec(B, Tb) + P
 
 
-@njit(cache=True)
+@kernel
 def implicit_euler_step(C, L, f, T, h, substeps):
     """Temperatures (K) after h seconds of backward Euler in `substeps` equal steps dt = h/substeps:
     (C/dt + L) T_new = C/dt T + f, f = B T_b + P held. L-stable, first order in dt."""
@@ -203,7 +204,7 @@ def implicit_euler_step(C, L, f, T, h, substeps):
     return x
 
 
-@njit(cache=True)
+@kernel
 def exponential_step(T, T_ss, sqrt_c, V, lam, h):
     """Exact temperatures (K) after h seconds with inputs held:
     T_ss + C^-1/2 V diag(exp(-lam h)) V^T C^1/2 (T - T_ss), with S = C^-1/2 L C^-1/2 = V diag(lam) V^T
@@ -213,7 +214,7 @@ def exponential_step(T, T_ss, sqrt_c, V, lam, h):
     return T_ss + matvec(V, y) / sqrt_c
 
 
-@njit(cache=True)
+@kernel
 def exponential_heat_integral(T, T_ss, sqrt_c, V, lam, h):
     """Time integral over [0, h] of the temperatures (K.s) of the exact solution of `exponential_step`:
     h T_ss + C^-1/2 V diag((1 - exp(-lam h)) / lam) V^T C^1/2 (T - T_ss)."""
@@ -222,7 +223,7 @@ def exponential_heat_integral(T, T_ss, sqrt_c, V, lam, h):
     return h * T_ss + matvec(V, y) / sqrt_c
 
 
-@njit(cache=True)
+@kernel
 def centrifugal_radial_growth(rho, E, nu, omega, a, b, r):
     """Radial displacement u(r) (m) of a free annular disc (bore radius a, outer radius b, m) of density rho
     (kg/m^3), modulus E (Pa) and Poisson ratio nu turning at omega (rad/s), plane stress (Timoshenko &
@@ -241,7 +242,7 @@ def centrifugal_radial_growth(rho, E, nu, omega, a, b, r):
     )
 
 
-@njit(cache=True)
+@kernel
 def clearance_change(alpha, d_i, d_o, D, T_ir, T_or, T_ball, T_ref, u_c):
     """Change of diametral clearance (m, negative = tighter) dPd = Delta d_o - Delta d_i - 2 Delta D with
     Delta d_i = alpha d_i (T_ir - T_ref) + 2 u_c (u_c: centrifugal radial growth of the inner raceway),
@@ -252,7 +253,7 @@ def clearance_change(alpha, d_i, d_o, D, T_ir, T_or, T_ball, T_ref, u_c):
     return dd_o - dd_i - 2.0 * dD
 
 
-@njit(cache=True)
+@kernel
 def axial_interference(s_arr, alpha_shaft, alpha_housing, spacing, T_shaft, T_housing, T_ref):
     """Change of the axial interference (m, > 0 tightens both bearings) of a fixed-preload pair:
     s_arr (alpha_shaft spacing (T_shaft - T_ref) - alpha_housing spacing (T_housing - T_ref)),

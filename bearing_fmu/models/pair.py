@@ -10,7 +10,7 @@ centres). The shaft displacement relative to the housing is D = (x, y, z, theta_
 F_ext = (F_x, F_y, F_z, M_x, M_y) (N, N, N, N.m, N.m). D = 0 is the assembled pair at rest under
 no external load (the preload alone).
 
-Bearings. Each bearing's local frame is that of kernels.quasistatic: d = inner ring relative to
+Bearings. Each bearing's local frame is that of kernels.jones_harris: d = inner ring relative to
 outer ring, and the bearing carries thrust for local z > 0. Bearing A is oriented with local z =
 global z (it takes shaft thrust towards +z); bearing B is its axial mirror image (local z = -global
 z, it takes thrust towards -z). The mirror about the x-y plane maps displacements (x, y, z, tx, ty)
@@ -18,7 +18,7 @@ z, it takes thrust towards -z). The mirror about the x-y plane maps displacement
 Bearing k sits at axial position a_k; the rigid shaft gives it (x + ty a_k, y - tx a_k, z, tx, ty),
 so its local displacements are d_k = T_k D + offset, with T_A = T(a_A), T_B = M T(a_B),
 T(a) = identity + a (e_x e_ty^T - e_y e_tx^T). The shaft needs F_ext = sum_k T_k^T F_k(d_k), F_k the
-local loads of kernels.quasistatic (the load holding the inner ring at d_k).
+local loads of kernels.jones_harris (the load holding the inner ring at d_k).
 
 Arrangement: the only thing `arrangement` changes is which bearing sits on which side. A bearing's
 contact lines run from the inner contact (radially in, towards its local -z) to the outer contact
@@ -54,7 +54,7 @@ negative = tighter), as the single-bearing input.
 
 Solution: damped Newton on the shaft's five DOFs with the analytic pair stiffness
 K_pair = dF_ext/dD = sum_k T_k^T K_k T_k (5x5, global; N/m, N, N.m per rad), each bearing solved by
-kernels.quasistatic.solve_quasistatic (displacement-controlled, or the spring-loaded B with mixed
+kernels.jones_harris.solve_quasistatic (displacement-controlled, or the spring-loaded B with mixed
 control (0, 0, 1, 0, 0)). For the spring-loaded B the free axial DOF is condensed (Schur
 complement K_rr - K_rz K_zr / K_zz on r = x, y, tx, ty). The quasi-static mechanics have no
 temperature dependence: T_oil (K) only sets the lubricant state of the film outputs (Lambda,
@@ -69,11 +69,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .kernels import contacts as ck
-from .kernels import quasistatic as qk
-from .kernels.torque import TL_SIZE
-from .model import InputError, check_oil_temperature, check_speed, pressure_warnings
+from ..kernels import contacts as ck
+from ..kernels import jones_harris as qk
+from ..kernels.torque import TL_SIZE
 from .quasi_static import QuasiStaticModel, SolverError
+from .variables import InputError, check_oil_temperature, check_speed, pressure_warnings
 
 ARRANGEMENTS = ("X", "O")
 PRELOADS = ("spring", "fixed")
@@ -109,7 +109,7 @@ class BearingState:
     d: np.ndarray  # local displacements (x, y, z, theta_x, theta_y) (m, rad)
     F: np.ndarray  # local loads (F_x, F_y, F_z, M_x, M_y) (N, N.m)
     K: np.ndarray  # local stiffness dF/dd (5x5), axial DOF not condensed
-    balls: np.ndarray  # per-ball rows (kernels.quasistatic BQ_*), a copy
+    balls: np.ndarray  # per-ball rows (kernels.jones_harris BQ_*), a copy
     X: np.ndarray  # ball positions (2, Z) (m), a copy
     contacts: dict  # film/contact outputs at T_oil: Lambda_*, h_min_* (m), Q_max_* (N), p_max (Pa)
 

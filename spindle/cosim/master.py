@@ -1,6 +1,6 @@
 """fmpy co-simulation master (SPEC 6). Talks to FMUs only through FMI; imports no physics.
 
-A run (spindle.runfile.RunSpec) couples FMU instances by connections output -> input and steps them
+A run (spindle.cosim.runfile.RunSpec) couples FMU instances by connections output -> input and steps them
 with a fixed communication step H:
 - time is t_n = start + n H from an integer step counter (no drift);
 - Gauss-Seidel (default): instances step one after the other in `order`, each with the newest

@@ -1,6 +1,6 @@
 """pythonfmu slave of the lumped thermal spindle (SPEC 4.9, 5): SpindleThermal.fmu.
 
-Thin: the network, its integrator and the thermo-mechanics live in spindle.model / spindle.network;
+Thin: the network, its integrator and the thermo-mechanics live in spindle.thermal.model / spindle.thermal.network;
 this class registers the model's declared inputs and outputs and calls model.step(h) in do_step.
 The network is read from a TOML file (parameter `spindle`: catalogue name or path), so a user can
 describe their own spindle without rebuilding the FMU. Bad input or parameters are logged with
@@ -10,7 +10,7 @@ their allowed range and the call returns Discard/Error; the host never sees an e
 from pythonfmu import Fmi2Slave
 from pythonfmu.enums import Fmi2Status
 
-from bearing_fmu.fmi import add_unit_definitions, fmi_escape, input_variable, output_variable, parameter
+from bearing_fmu_common.fmi import add_unit_definitions, fmi_escape, input_variable, output_variable, parameter
 
 from .model import DEFAULT_SPINDLE, SpindleThermalModel
 
