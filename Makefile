@@ -12,8 +12,15 @@ $(STAMP): pyproject.toml
 	$(BIN)/python -m pip install -q -e ".[test,plot,sweep,cosim]"
 	touch $(STAMP)
 
-fmus: $(STAMP)
+# FMUs are rebuilt only when a bundled source changed (or the environment was reinstalled)
+FMU_SOURCES := $(shell find bearing_fmu bearing_fmu_common spindle -name '*.py' -o -name '*.toml' | grep -v __pycache__)
+FMU_STAMP := fmus/.built
+
+$(FMU_STAMP): $(STAMP) $(FMU_SOURCES)
 	$(BIN)/python -m spindle.cli build
+	touch $@
+
+fmus: $(FMU_STAMP)
 
 demo: fmus
 	$(BIN)/python -m spindle.cli demo --out results

@@ -1,13 +1,15 @@
 """Command line `spindle` (SPEC 2, 6): build, run, sweep, info, demo.
 
     spindle build [--out fmus]                    build every FMU (bearing scenes + SpindleThermal)
-    spindle run RUNFILE [--out results] [--set KEY=VALUE ...] [--no-plot] [--progress]
+    spindle run RUNFILE [--out results] [--set KEY=VALUE ...] [--fmus DIR] [--no-plot] [--progress]
     spindle sweep RUNFILE --param KEY --values V1,V2,... [--scheduler ADDRESS] [--workers N] [--out results]
     spindle info [FMU ...]                        what is built: variables, units, parameters
     spindle demo [--out results]                  the closed-loop demo run (runs/closed_loop_spring.toml)
+    spindle validate [FMU ...]                    fmpy's validator on the FMUs
+    spindle --version
 
-Exit codes: 0 done; 1 error (message on stderr); 3 the run stopped at a limit (e.g. thermal
-runaway; results up to there are written).
+Exit codes: 0 done; 1 error (message on stderr); 2 usage error or an FMU with validation problems;
+3 the run stopped at a limit (e.g. thermal runaway; results up to there are written).
 """
 
 import argparse
@@ -16,10 +18,17 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+IN_CHECKOUT = (ROOT / "pyproject.toml").is_file() and (ROOT / "runs").is_dir()  # source tree, not an installed wheel
 RUNS = ROOT / "runs"
-FMUS = ROOT / "fmus"
+# FMUs go to the checkout's fmus/ in a source tree, else to ./fmus of the working directory
+FMUS = ROOT / "fmus" if IN_CHECKOUT else Path.cwd() / "fmus"
 DEMO_RUN = RUNS / "closed_loop_spring.toml"
-EXIT_LIMIT = 3
+EXIT_OK, EXIT_ERROR, EXIT_INVALID, EXIT_LIMIT = 0, 1, 2, 3
+EXIT_CODES = f"""exit codes:
+  {EXIT_OK}  done
+  {EXIT_ERROR}  error (message on stderr)
+  {EXIT_INVALID}  usage error, or `validate` found problems in an FMU
+  {EXIT_LIMIT}  a run stopped at a limit (e.g. thermal runaway); results up to there are written"""
 
 
 def _value(text):
@@ -55,7 +64,15 @@ def cmd_run(args):
     from .cosim.master import run
     from .cosim.runfile import load_run
 
-    spec = load_run(args.runfile, _overrides(args.set))
+    spec = load_run(args.runfile, _overrides(args.set), fmu_dir=args.fmus)
+    missing = sorted({inst.fmu for inst in spec.instances.values() if not Path(inst.fmu).is_file()})
+    if missing:
+        print(
+            f"spindle run: FMU not found: {', '.join(missing)}. Build the FMUs with `spindle build` "
+            f"(default folder {FMUS}) or name their folder with --fmus DIR",
+            file=sys.stderr,
+        )
+        return EXIT_ERROR
     result = run(spec, progress=args.progress)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -121,15 +138,51 @@ def cmd_info(args):
 
 
 def cmd_demo(args):
+    if not DEMO_RUN.is_file():
+        print(
+            f"spindle demo: the demo run file {DEMO_RUN} is part of the source tree; outside it use "
+            f"`spindle run <clone>/runs/closed_loop_spring.toml --fmus {FMUS}`",
+            file=sys.stderr,
+        )
+        return EXIT_ERROR
     args.runfile = str(DEMO_RUN)
-    args.set, args.no_plot, args.progress = [], False, False
+    args.set, args.no_plot, args.progress, args.fmus = [], False, False, None
     return cmd_run(args)
 
 
+def cmd_validate(args):
+    """fmpy's validator on each FMU (default: every FMU in the FMU folder); problems are printed."""
+    from fmpy.validation import validate_fmu
+
+    paths = [Path(p) for p in args.fmus] or sorted(FMUS.glob("*.fmu"))
+    if not paths:
+        print(f"spindle validate: no FMUs in {FMUS}: run `spindle build` or name the FMUs", file=sys.stderr)
+        return EXIT_ERROR
+    bad = 0
+    for path in paths:
+        try:
+            problems = validate_fmu(str(path))
+        except Exception as exc:  # not an FMU at all (missing, not a zip archive, no modelDescription.xml)
+            problems = [f"cannot be read as an FMU: {type(exc).__name__}: {exc}"]
+        bad += bool(problems)
+        print(f"{path.name}: " + ("valid" if not problems else f"{len(problems)} problem(s)"))
+        for problem in problems:
+            print(f"  {problem}")
+    return EXIT_INVALID if bad else EXIT_OK
+
+
 def main(argv=None):
-    parser = argparse.ArgumentParser(prog="spindle", description="bearing/spindle co-simulation tools")
+    from bearing_fmu import __version__
+
+    parser = argparse.ArgumentParser(
+        prog="spindle",
+        description="bearing/spindle co-simulation tools",
+        epilog=EXIT_CODES,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
     sub = parser.add_subparsers(dest="command", required=True)
-    p = sub.add_parser("build", help="build every FMU into fmus/")
+    p = sub.add_parser("build", help=f"build every FMU into {FMUS}")
     p.add_argument("--out", default=str(FMUS))
     p = sub.add_parser("run", help="run a run file; write CSV and PNG")
     p.add_argument("runfile")
@@ -137,6 +190,7 @@ def main(argv=None):
     p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override, e.g. run.step=0.5")
     p.add_argument("--no-plot", action="store_true")
     p.add_argument("--progress", action="store_true", help="progress bar on stderr")
+    p.add_argument("--fmus", default=None, metavar="DIR", help="folder of the FMUs the run file names")
     p = sub.add_parser("sweep", help="many runs of a run file on Dask; one table")
     p.add_argument("runfile")
     p.add_argument("--param", required=True, help="dotted key, e.g. bearing_1.F_z or run.step")
@@ -149,8 +203,17 @@ def main(argv=None):
     p.add_argument("fmus", nargs="*")
     p = sub.add_parser("demo", help="closed-loop demo (runs/closed_loop_spring.toml): CSV + PNG")
     p.add_argument("--out", default="results")
+    p = sub.add_parser("validate", help="check FMUs with fmpy's validator (exit 2 on any problem)")
+    p.add_argument("fmus", nargs="*")
     args = parser.parse_args(argv)
-    handler = {"build": cmd_build, "run": cmd_run, "sweep": cmd_sweep, "info": cmd_info, "demo": cmd_demo}
+    handler = {
+        "build": cmd_build,
+        "run": cmd_run,
+        "sweep": cmd_sweep,
+        "info": cmd_info,
+        "demo": cmd_demo,
+        "validate": cmd_validate,
+    }
     try:
         return handler[args.command](args)
     except Exception as exc:  # a clear one-line message, not a traceback, for user errors
@@ -159,7 +222,7 @@ def main(argv=None):
 
         if isinstance(exc, (MasterError, RunFileError, FileNotFoundError)):
             print(f"spindle {args.command}: {exc}", file=sys.stderr)
-            return 1
+            return EXIT_ERROR
         raise
 
 

@@ -15,7 +15,7 @@ Format (every time in s; values SI in the units each FMU declares):
     [run.max_change]            # optional step rejection (needs rollback): largest change per step
     "spindle.T_inner_ring_1" = 2.0
 
-    [fmus]                      # FMU files, relative to the run file
+    [fmus]                      # FMU files, relative to the run file (`spindle run --fmus DIR` overrides the folder)
     bearing = "../fmus/Bearing.fmu"
 
     [instances.bearing_1]
@@ -95,21 +95,27 @@ def split_name(qualified):
     return inst, var
 
 
-def load_run(path, overrides=None):
-    """Read a run file; apply overrides {dotted key: value}; check it; return a RunSpec."""
+def load_run(path, overrides=None, fmu_dir=None):
+    """Read a run file; apply overrides {dotted key: value}; check it; return a RunSpec.
+
+    fmu_dir: directory holding the FMUs the run file names (their file names are kept); None = the
+    paths as written in [fmus], relative to the run file."""
     path = Path(path).resolve()
     try:
         with open(path, "rb") as fh:
             doc = tomllib.load(fh)
     except (OSError, tomllib.TOMLDecodeError) as exc:
         raise RunFileError(f"run file {path}: {exc}") from None
-    return parse_run(doc, path, overrides)
+    return parse_run(doc, path, overrides, fmu_dir)
 
 
-def parse_run(doc, path, overrides=None):
+def parse_run(doc, path, overrides=None, fmu_dir=None):
     base = Path(path).parent
     run = dict(doc.get("run", {}))
-    fmus = {k: str((base / v).resolve()) for k, v in doc.get("fmus", {}).items()}
+    if fmu_dir is None:
+        fmus = {k: str((base / v).resolve()) for k, v in doc.get("fmus", {}).items()}
+    else:
+        fmus = {k: str((Path(fmu_dir) / Path(v).name).resolve()) for k, v in doc.get("fmus", {}).items()}
     _no_unknown_keys("the run file", doc, {"run", "fmus", "instances", "connections", "limits"})
     _no_unknown_keys(
         "[run]",
