@@ -81,9 +81,12 @@ def cmd_run(args):
     result.write_csv(csv_path)
     written = [csv_path]
     if not args.no_plot:
-        from .cosim.plots import plot_run
+        try:
+            from .cosim.plots import plot_run
 
-        written.append(plot_run(result, out / f"{stem}.png", title=f"{stem}: {spec.description}"))
+            written.append(plot_run(result, out / f"{stem}.png", title=f"{stem}: {spec.description}"))
+        except ImportError as exc:  # matplotlib is the optional extra `plot`
+            print(f"plot skipped ({exc}): pip install 'bearing-fmu[plot]' for the PNG", file=sys.stderr)
     steps = len(result.columns["time"]) - 1
     print(
         f"{stem}: {steps} steps of {spec.step} s ({spec.algorithm}) in {result.wall_time:.2f} s wall "
