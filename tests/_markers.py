@@ -5,21 +5,36 @@
     tests/validation/  -> validation  (literature and standard cases)
     tests/stability/   -> stability   (stiff and extreme cases)
 
-`slow` is set by hand on tests that take more than a few seconds each. The quick loop while
-editing kernels and models is `pytest -m "not slow and not fmu and not cosim"`; `make test` runs
-everything.
+`slow` marks the tests listed in SLOW (more than ~10 s each on the 2-core reference machine: fresh
+processes, hour-long closed loops, a Dask cluster, speed sweeps), kept here beside the folder rule so
+every selection is decided in one place. The quick loop while editing kernels and models is
+`pytest -m "not slow and not fmu and not cosim"` (about a minute); `make test` runs everything.
 """
 
 from pathlib import Path
 
 FOLDER_MARKERS = {"fmu": "fmu", "cosim": "cosim", "validation": "validation", "stability": "stability"}
+SLOW = {  # test file -> test function names (every parametrisation of them)
+    "tests/fmu/test_bearing_analytic_fmu.py": {"test_thirty_fresh_processes_exit_cleanly"},
+    "tests/cosim/test_closed_loop.py": {
+        "test_fixed_6000_preload_rises_with_temperature_and_settles",
+        "test_fixed_10000_runs_away_and_stops_with_a_message",
+    },
+    "tests/cosim/test_sweep.py": {"test_dask_sweep_equals_sequential_table"},
+    "tests/cosim/test_libcosim_master.py": {"test_fresh_processes_exit_0"},
+    "tests/validation/test_quasistatic_literature.py": {"test_controlling_race_split_is_discontinuous_in_speed"},
+}
 
 
 def pytest_collection_modifyitems(config, items):
     import pytest
 
+    root = Path(str(config.rootpath))
     for item in items:
-        folder = Path(str(item.fspath)).parent.name
-        marker = FOLDER_MARKERS.get(folder)
+        path = Path(str(item.fspath))
+        marker = FOLDER_MARKERS.get(path.parent.name)
         if marker:
             item.add_marker(getattr(pytest.mark, marker))
+        name = getattr(item, "originalname", item.name)
+        if name in SLOW.get(path.relative_to(root).as_posix(), ()):
+            item.add_marker(pytest.mark.slow)

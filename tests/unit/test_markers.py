@@ -1,0 +1,15 @@
+"""The `slow` list of tests/_markers.py names tests that exist (a renamed test must not silently lose it)."""
+
+import ast
+from pathlib import Path
+
+from tests._markers import SLOW
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def test_every_slow_entry_names_an_existing_test_function():
+    for relative, names in SLOW.items():
+        tree = ast.parse((ROOT / relative).read_text())
+        defined = {node.name for node in ast.walk(tree) if isinstance(node, ast.FunctionDef)}
+        assert names <= defined, (relative, sorted(names - defined))
