@@ -3,8 +3,8 @@ of the B7214C against the axial preload at 0 and 10 000 rpm for the three kinema
 friction torque of the three at 10 000 rpm and 800 N (their section 6: 'matching within 2 %').
 
 Source: Rabreau et al. 2018, Procedia CIRP 77, 622-625 (section 2.3, Figs. 4-5, section 6).
-Their curves are not tabulated (the extraction keeps only the stiffness axis, 0-14 x 10^4 N/mm, and the
-force axis, 0-3500 N) and the B7214C internal geometry is estimated (bearing file), so the comparison is
+Their curves are not tabulated (the copy of the paper we worked from shows only the stiffness axis,
+0-14 x 10^4 N/mm, and the force axis, 0-3500 N) and the B7214C internal geometry is estimated (bearing file), so the comparison is
 qualitative. Models: ORC = outer-race control, no gyroscopic moment; ORCG = ORC with gyroscopic moment;
 HT = hybrid kinematics with gyroscopic moment; centrifugal force on in all three.
 Run: python -m benchmarks.rabreau_preload -> docs/reports/rabreau_preload.md and .png
@@ -116,8 +116,8 @@ def main():
         f"3500 N in steps of 50 N ({len(FORCES)} points; at 0 N the stiffness is 0), 0 and 10 000 rpm, "
         "centrifugal force on. ORC = outer-race control without gyroscopic moment, ORCG = outer-race control "
         "with it, HT = hybrid kinematics with it. Each point is solved warm along the sweep and again cold "
-        "in a fresh model (both must agree to 1e-8). Their curves are not tabulated and the extraction keeps "
-        "only the axes, so the comparison is qualitative: shapes and orderings, not values.",
+        "in a fresh model (both must agree to 1e-8). Their curves are not tabulated and the copy of the paper we worked from "
+        "shows only the axes, so the comparison is qualitative: shapes and orderings, not values.",
         "",
         "![contact angle and axial stiffness vs preload](rabreau_preload.png)",
         "",
@@ -254,8 +254,8 @@ def main():
     lines += [
         "",
         "Nothing was tuned. The cause of the difference is the share of the gyroscopic moment HT "
-        "gives the inner race: Rabréau's Table 1 (the distribution of each model) is lost in the "
-        "extraction, so our hybrid split lam_i = 2C/(1+C) is our choice (docs/decisions.md). "
+        "gives the inner race: Rabréau's Table 1 (the distribution of each model) is missing from "
+        "the copy of the paper we worked from, so our hybrid split lam_i = 2C/(1+C) is our choice (docs/decisions.md). "
         "docs/reports/rabreau_torque_sensitivity.md shows that the estimated B7214C geometry moves the "
         "spread only within 2.9-4.0 %, and that only a split leaving (nearly) all of the moment on the "
         "outer race gives 2 %. Their torque also comes from the coupled thermo-mechanical model of the rig "

@@ -1,6 +1,6 @@
 """Why the three kinematic models' torques differ by 3.7 % and not by Rabreau's 2 %: sensitivity of the
 torque spread at 10 000 rpm and 800 N to the estimated B7214C geometry and to the reading of the hybrid
-model's gyroscopic-moment share (Rabreau's Table 1, lost in the extraction), and what the one reading
+model's gyroscopic-moment share (Rabreau's Table 1, missing from the copy of the paper we worked from), and what the one reading
 that gives 2 % does to the solution over speed.
 
 Source: Rabreau et al. 2018, Procedia CIRP 77, 622-625, section 6 ('all of the BB torque models
@@ -156,7 +156,7 @@ def main():
         f"sends part of the gyroscopic moment to the inner race (λ_i = {base['lam_i']:.2f} here); the "
         "friction force there carries part of the thrust, and Q_i is "
         f"{100 * (base['Q_i HT'] / base['Q_i ORCG'] - 1):+.1f} % against ORCG. "
-        "How HT shares the moment is Rabréau's Table 1, lost in the extraction; the internal geometry of "
+        "How HT shares the moment is Rabréau's Table 1, missing from the copy of the paper we worked from; the internal geometry of "
         "the B7214C is estimated. This report varies both. Every HT reading keeps the hybrid pitch angle.",
         "",
         "Readings of the inner-race share λ_i (λ_o = 2 − λ_i):",

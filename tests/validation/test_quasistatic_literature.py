@@ -112,8 +112,9 @@ def test_rabreau_torque_spread_of_the_three_models():
     the same level of the friction torque (matching within 2 %)'. NOT reproduced: ORC vs ORCG agree
     within 1 %, but HT is 3.7 % below ORC. docs/reports/rabreau_torque_sensitivity.md finds the cause:
     the share of the gyroscopic moment HT gives the inner race (lam_i = 2C/(1+C) = 0.52, our choice,
-    Rabreau's Table 1 being lost), not the estimated geometry (8 geometries: 2.9-4.0 %). This test pins
-    the measured spread (2-5 %) so that a change is noticed; it does not claim the 2 %."""
+    Rabreau's Table 1 missing from our copy of the paper), not the estimated geometry (8 geometries:
+    2.9-4.0 %). This test pins the measured spread (2-5 %) so that a change is noticed; it does not claim
+    the 2 %."""
     torque = {label: rabreau_state(label, 10000 * RPM, 800.0)["torque"] for label in MODELS}
     assert torque["ORCG"] == pytest.approx(torque["ORC"], rel=0.01)
     spread = (max(torque.values()) - min(torque.values())) / max(torque.values())
