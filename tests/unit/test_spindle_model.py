@@ -321,3 +321,15 @@ def test_parameters_summary():
     assert p["axial"]["arrangement"] == "X" and p["heat_inputs"]["P_motor"] == {"shaft": 1.0}
     assert any(link["kind"] == "rotating_shaft" and link["G_at_rest"] == 0.0 for link in p["links"])
     assert nk.LINK_ROTATING_SHAFT in SpindleThermalModel().net.kinds
+
+
+def test_public_api_of_spindle_thermal():
+    """`from spindle.thermal import ...` gives the model module's own objects (lazy imports), and an
+    unknown name raises AttributeError as a module attribute lookup must."""
+    import spindle.thermal as thermal
+    from spindle.thermal import model
+
+    for name in thermal.__all__:
+        assert getattr(thermal, name) is getattr(model, name)
+    with pytest.raises(AttributeError, match="no_such_name"):
+        thermal.no_such_name  # noqa: B018
