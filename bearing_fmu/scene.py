@@ -1,4 +1,4 @@
-"""Scenes: the build-time choice of fidelity, physics options and outputs (SPEC 5.2).
+"""Scenes: the build-time choice of fidelity, physics options and outputs (docs/architecture.md).
 
 A scene is a small TOML table (or keyword arguments). `Scene.validate()` reports every
 incompatible or unknown choice at once. What a scene turns off is neither computed nor exposed.
@@ -10,7 +10,7 @@ from dataclasses import dataclass, fields, replace
 from .kernels.capacitance import PRESSURE_MAX, PRESSURE_MEAN
 from .kernels.ehl import FILM_CHITTENDEN, FILM_HAMROCK_DOWSON, FILM_MASJEDI_KHONSARI
 
-FIDELITIES = ("analytic", "quasi_static")  # dem arrives with its issue
+FIDELITIES = ("analytic", "quasi_static")
 DRIVES = ("load", "displacement", "fixed_axial")  # which DOFs are load- or displacement-controlled
 RACE_CONTROLS = ("outer", "inner", "hybrid")
 FILM_FORMULAS = {
@@ -30,8 +30,8 @@ class SceneError(ValueError):
 class Scene:
     """Build-time model options.
 
-    fidelity: 'analytic' (Stribeck/Sjovall + Hertz + EHL, SPEC 4.3 analytic checks) |
-        'quasi_static' (Jones/Harris 5-DOF ball equilibrium, SPEC 4.3).
+    fidelity: 'analytic' (Stribeck/Sjovall + Hertz + EHL) |
+        'quasi_static' (Jones/Harris 5-DOF ball equilibrium, docs/quasistatic.md).
     drive (quasi_static): 'load' (loads in, displacements out), 'displacement' (displacements in,
         reaction loads out) or 'fixed_axial' (radial loads and tilting moments in, axial position in:
         a fixed-preload bearing).
@@ -40,7 +40,8 @@ class Scene:
     torque (quasi_static): friction torque, power loss and ring heat outputs (Houpert components).
     stiffness (quasi_static): the 5x5 stiffness outputs K[i,j].
     thermal_inputs (quasi_static): inputs dPd_thermal (and dz_thermal when z is imposed).
-    film: EHL film formula, 'hamrock_dowson' (default, the seeds' choice) | 'masjedi_khonsari' | 'chittenden'.
+    film: EHL film formula, 'hamrock_dowson' (default, as Guessasma 2018 and Farah 2020) | 'masjedi_khonsari' |
+        'chittenden'.
     hertz: 'exact' (complete elliptic integrals, default) | 'approximate' (Hamrock-Brewe).
     centrifugal: ball centrifugal force on the outer contacts.
     capacitance: compute and expose the bearing capacitance C_bearing.

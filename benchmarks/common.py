@@ -1,4 +1,4 @@
-"""Timing helpers for the benchmarks: medians over repeats, never asserted in tests (SPEC 9)."""
+"""Timing helpers for the benchmarks: medians over repeats, never asserted in tests (targets: docs/architecture.md, performance budget)."""
 
 import platform
 import statistics

@@ -1,6 +1,6 @@
 """Film formulas (Hamrock-Dowson, Masjedi-Khonsari, Chittenden) against the 55 full numerical EHL
-solutions of Wheeler (2016) Annexe D: error table and time per call (the first error-vs-run-time
-report, SPEC 7).
+solutions of Wheeler (2016) Annexe D: error table and time per call (an error-vs-run-time
+report).
 
 Reference: tests/validation/data/thesis_annexe_d_ehl.csv (isothermal Newtonian, steel-steel, lubricant
 2 at 313 K). Inputs per case: w, u_e, Rx, Ry and the printed k; eta = 0.00795 Pa.s; G = 4671 as
@@ -119,8 +119,8 @@ def main():
         "of all three formulas overestimates the numerical minimum by up to several hundred percent, "
         "as the thesis reports for Chittenden (section 2.2.2). All three cost well under a microsecond per "
         "call (Masjedi-Khonsari about twice the others, its exponents depend on k), so the choice is one "
-        "of accuracy and validity range, not of speed. For ball-race contacts Hamrock-Dowson (the seeds' "
-        "choice, default) and Chittenden give the smallest central-film errors.",
+        "of accuracy and validity range, not of speed. For ball-race contacts Hamrock-Dowson (the choice of "
+        "Guessasma 2018 and Farah 2020, default) and Chittenden give the smallest central-film errors.",
     ]
     write_report("ehl_film_errors.md", "\n".join(lines) + "\n")
     _plot(cases, errs, timings, REPORTS / "ehl_film_errors.png")

@@ -1,5 +1,5 @@
 """Hamrock-Brewe approximate Hertz solution vs the exact one (elliptic integrals): error table and
-time per call (SPEC 7: Hertz exact vs approximate).
+time per call (an error-vs-run-time report).
 
 Reference: the exact solution of bearing_fmu.kernels.hertz (validated against the thesis cases,
 tests/validation/test_hertz_thesis.py). Steel on steel, Q = 1000 N, Rx = 5 mm.

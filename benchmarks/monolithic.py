@@ -1,4 +1,4 @@
-"""Fine monolithic reference of the closed thermo-mechanical loop (SPEC 7): both models in one loop.
+"""Fine monolithic reference of the closed thermo-mechanical loop: both models in one loop.
 
 The co-simulation couples the models only at communication points (each FMU holds its inputs over
 a step H). The reference instead advances the coupled system with a second-order scheme and a

@@ -1,4 +1,4 @@
-"""Houpert friction torque of the quasi-static model vs Palmgren's M0 + M1 (SPEC 4.7 cross-check).
+"""Houpert friction torque of the quasi-static model vs Palmgren's M0 + M1 (the cross-check of docs/houpert_torque.md).
 
 Houpert: QuasiStaticModel (scene 'qs': centrifugal, gyroscopic, torque on, race control 'outer'),
 torque = total contact power / omega, split into EHL rolling, hysteresis, Heathcote and spin
@@ -33,7 +33,7 @@ SCENE = Scene(
 )
 COMPONENTS = ("EHL rolling", "hysteresis", "Heathcote", "spin")
 
-# ISO 76 static equivalent load P0 = max(X0 F_r + Y0 F_a, F_r) (ISO 76 Table; FROM MEMORY, estimated):
+# ISO 76 static equivalent load P0 = max(X0 F_r + Y0 F_a, F_r) (ISO 76 table; estimated, docs/decisions.md, unverified sources):
 # single-row deep groove X0 = 0.6, Y0 = 0.5; single-row angular contact 15 deg X0 = 0.5, Y0 = 0.46.
 STATIC_FACTORS = {tk.PALMGREN_DEEP_GROOVE: (0.6, 0.5), tk.PALMGREN_ANGULAR_CONTACT: (0.5, 0.46)}
 NU_N_LIMIT = 2000.0  # cSt.rpm: below it Palmgren's M0 formula is replaced by its constant floor
@@ -193,10 +193,10 @@ def main():
         "(nu in cSt, n in rpm, dm in m). M1 = f1 P1 dm, f1 = z (P0/C0)^y (deep groove 0.0005, 0.55; angular "
         "contact 0.001, 0.33). P1 comes from `palmgren_equivalent_load` (F_r for the radial 6208, F_a for the "
         "axial B7214C). P0 is the ISO 76 static equivalent load max(X0 F_r + Y0 F_a, F_r) with X0, Y0 = "
-        "0.6, 0.5 (deep groove) and 0.5, 0.46 (angular contact 15 deg), **from memory**. "
+        "0.6, 0.5 (deep groove) and 0.5, 0.46 (angular contact 15 deg), **unverified** (docs/decisions.md, unverified sources). "
         f"C0 = `iso76_static_rating` at the nominal angle: 6208 {C0['6208'] / 1e3:.1f} kN, "
-        f"B7214C {C0['B7214C'] / 1e3:.1f} kN. The f0 values, z, y and X0/Y0 are all estimates from memory "
-        "(Harris tables, note 4d).",
+        f"B7214C {C0['B7214C'] / 1e3:.1f} kN. The f0 values, z, y and X0/Y0 are all estimates "
+        "(Harris tables, docs/houpert_torque.md section 4d; docs/decisions.md, unverified sources).",
         "- **f0**: 6208 oil bath f0 = {:g} and oil mist f0 = {:g}. B7214C oil mist / oil-air f0 = {:g} (the "
         "Rabreau rig is oil-air). The f0 of a given arrangement is itself uncertain by roughly a factor 2 "
         "(deep groove: 1 for mist, 2 for bath; grease 0.7-2).".format(

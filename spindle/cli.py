@@ -1,4 +1,4 @@
-"""Command line `spindle` (SPEC 2, 6): build, run, sweep, info, demo.
+"""Command line `spindle` (docs/architecture.md): build, run, sweep, info, demo.
 
     spindle build [--out fmus]                    build every FMU (bearing scenes + SpindleThermal)
     spindle run RUNFILE [--out results] [--set KEY=VALUE ...] [--fmus DIR] [--no-plot] [--progress]

@@ -1,4 +1,4 @@
-r"""Duplex bearing pairs (X or O arrangement) from two quasi-static single-bearing models (SPEC 4.3).
+r"""Duplex bearing pairs (X or O arrangement) from two quasi-static single-bearing models (docs/quasistatic.md).
 
 Units: SI throughout (m, rad, N, N.m, rad/s, K).
 

@@ -1,6 +1,6 @@
 """Second, independent co-simulation master: libcosim (Open Simulation Platform) via libcosimpy.
 
-Used to cross-check the fmpy master (SPEC 6): the same FMUs, connections and step run under both
+Used to cross-check the fmpy master (docs/architecture.md): the same FMUs, connections and step run under both
 must agree. It talks FMI only (through libcosim) and imports no physics.
 
 Algorithm: libcosim's fixed-step algorithm as bundled in libcosimpy 0.0.6 (libcosim 0.11.2). Source:
@@ -54,7 +54,8 @@ import ctypes
 import math
 from pathlib import Path
 
-# SPEC 3: load numba's and scipy's compiled libraries before any pythonfmu FMU does.
+# Load numba's and scipy's compiled libraries before any pythonfmu FMU does: loaded first from inside an
+# FMU they can abort the process at exit (docs/decisions.md, known defects).
 import numba  # noqa: F401
 import numpy as np
 import scipy.special  # noqa: F401

@@ -1,4 +1,4 @@
-"""Run files (SPEC 6): a coupled co-simulation described in TOML, read into a RunSpec.
+"""Run files (docs/architecture.md): a coupled co-simulation described in TOML, read into a RunSpec.
 
 Format (every time in s; values SI in the units each FMU declares):
 

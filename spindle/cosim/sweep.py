@@ -1,4 +1,4 @@
-"""Sweeps (SPEC 6): many runs of one run file with one value changed, on Dask.
+"""Sweeps (docs/architecture.md): many runs of one run file with one value changed, on Dask.
 
 Each point is a full co-simulation in a Dask worker (its own process: pythonfmu FMUs run Python in
 the host process, so workers use processes, one thread each). Local cluster by default; pass the

@@ -1,4 +1,4 @@
-r"""Lumped thermal network of a spindle: numba kernels (SPEC 4.9). SI units (K, W, J/K, W/K, m, rad/s).
+r"""Lumped thermal network of a spindle: numba kernels (docs/spindle_thermal.md). SI units (K, W, J/K, W/K, m, rad/s).
 
 The network has n nodes with capacities C (J/K) and m boundary nodes whose temperatures T_b are
 inputs. Links join two nodes or a node and a boundary with a conductance G (W/K), which may depend
@@ -30,7 +30,7 @@ Both are unconditionally stable. Linear algebra is written out in loops (Cholesk
 positive definite systems, plain matrix-vector products), as in the bearing kernels: for n ~ 10 nodes
 that is as fast as BLAS, and a non-positive pivot comes back as NaN instead of an exception inside a
 kernel. (This module imports no scipy; numba itself imports scipy.linalg's Cython BLAS/LAPACK bindings
-on its first dispatch, which is why the master loads numba and scipy before any FMU, SPEC 3.)
+on its first dispatch, which is why the master loads numba and scipy before any FMU: docs/decisions.md.)
 """
 
 import math

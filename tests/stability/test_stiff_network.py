@@ -1,4 +1,4 @@
-r"""Stiff thermal network with large steps (SPEC 8: "tiny thermal capacities and huge conductances").
+r"""Stiff thermal network with large steps (tiny thermal capacities next to huge conductances).
 
 The stiff spindle is the default one (spindle/thermal/params/b7214c_x_pair.toml) with one extra node, `film_1`,
 between outer ring 1 and the housing: capacity 1e-3 of a ring's (0.1467 J/K) and a conductance 1e4 times

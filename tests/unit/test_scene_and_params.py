@@ -1,4 +1,5 @@
-"""Scene validation, parameter-file validation and the facade's input checks (SPEC 2, 5.2, 5.3)."""
+"""Scene validation, parameter-file validation and the facade's input checks (scenes: docs/architecture.md;
+parameter files: docs/parameters.md)."""
 
 import math
 
@@ -113,7 +114,7 @@ def test_overload_warning_above_iso76_limit():
 @pytest.mark.parametrize("Pd", [-50e-6, 0.0, 50e-6])
 def test_edge_inputs_give_finite_outputs(omega, F_y, Pd):
     """Zero speed (no film: Lambda = 0, boundary), zero load with clearance/preload, reversal and the
-    speed limit all give finite outputs (SPEC 8: never a silent NaN)."""
+    speed limit all give finite outputs (never a silent NaN)."""
     out = AnalyticModel(Pd=Pd).evaluate(omega, F_y, 313.15)
     assert all(math.isfinite(v) for v in out.values())
     if omega == 0.0:

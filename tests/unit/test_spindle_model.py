@@ -1,6 +1,6 @@
 """SpindleThermalModel facade (spindle/thermal/model.py): variables, stepping, state, steady state, thermo-mechanics,
 axial float, parameter and input validation. Expectations come from the model definition
-(docs/spindle_thermal.md, SPEC 4.9) and are derived in each docstring."""
+(docs/spindle_thermal.md) and are derived in each docstring."""
 
 import json
 import math
@@ -31,7 +31,7 @@ def variant(tmp_path, *replacements, name="variant"):
 
 
 def test_variables_exactly():
-    """Inputs and outputs of the default spindle, in order (SPEC 4.9 and the design brief)."""
+    """Inputs and outputs of the default spindle, in order (docs/spindle_thermal.md)."""
     m = SpindleThermalModel()
     assert [v.name for v in m.inputs] == [
         "Q_inner_ring_1",
@@ -88,8 +88,8 @@ def test_initial_state_and_rest():
 
 def test_steady_state_energy_balance_and_plausibility():
     """Default spindle, 10 000 rpm, 1 kW (300/200 W per bearing): P_out = P_in at steady state (the
-    node equations sum to it; 1e-9 relative for the Cholesky solve). Plausibility (SPEC 4.9, Rabreau
-    2018 Fig. 8 is not tabulated): outer-ring rise in the tens of K (band 10-60 K) and the slowest time
+    node equations sum to it; 1e-9 relative for the Cholesky solve). Plausibility (Rabreau
+    2018 Fig. 8, not tabulated): outer-ring rise in the tens of K (band 10-60 K) and the slowest time
     constant 10-30 min, the design targets of the estimated parameters (docs/spindle_thermal.md)."""
     m = SpindleThermalModel()
     ss = m.steady_state(**RUN)
@@ -234,7 +234,7 @@ def test_axial_float_equalises_forces(tmp_path):
 
 
 def test_bad_inputs_name_the_input():
-    """SPEC 5.3: bad input raises a clear error (an InputError/ValueError) naming the input and its range;
+    """Bad input raises a clear error (an InputError/ValueError) naming the input and its range;
     the state is left unchanged."""
     m = SpindleThermalModel()
     m.initialize(**RUN)
@@ -321,3 +321,15 @@ def test_parameters_summary():
     assert p["axial"]["arrangement"] == "X" and p["heat_inputs"]["P_motor"] == {"shaft": 1.0}
     assert any(link["kind"] == "rotating_shaft" and link["G_at_rest"] == 0.0 for link in p["links"])
     assert nk.LINK_ROTATING_SHAFT in SpindleThermalModel().net.kinds
+
+
+def test_public_api_of_spindle_thermal():
+    """`from spindle.thermal import ...` gives the model module's own objects (lazy imports), and an
+    unknown name raises AttributeError as a module attribute lookup must."""
+    import spindle.thermal as thermal
+    from spindle.thermal import model
+
+    for name in thermal.__all__:
+        assert getattr(thermal, name) is getattr(model, name)
+    with pytest.raises(AttributeError, match="no_such_name"):
+        thermal.no_such_name  # noqa: B018

@@ -2,7 +2,7 @@
 
 Sources: Guessasma & Machado, Lubricants 6 (2018) 46 -- section 3.1 (ball speed 952.38 rad/s),
 section 3.1 and Fig. 8-9 (Lambda_out, slopes), Table 3 (regimes vs speed), App. A (eps values,
-J_r(0.5) = 0.2288, Q_max); Farah et al. (2020) App. A (eps at 5 kN); SPEC 4.1, 4.3, 4.4.
+J_r(0.5) = 0.2288, Q_max); Farah et al. (2020) App. A (eps at 5 kN). Model choices: docs/decisions.md.
 Operating point: omega = 500 rad/s, F_r = 3000 N, P_d = 0, eta = 0.04 Pa.s, xi = 2.3e-8 1/Pa,
 sigma = 1.25 x 0.3 um, Hamrock-Dowson film.
 """
@@ -27,8 +27,8 @@ def model():
 
 def test_pure_rolling_speeds_6208():
     """Ball spin 952.38 rad/s in the fixed frame (Guessasma eq. omega R_i / 2 R_b), 1150.4 rad/s
-    relative to the cage, cage 198.02 rad/s at omega = 500 rad/s (SPEC 4.8). Published to the
-    printed digits: tolerance half a unit in the last digit."""
+    relative to the cage, cage 198.02 rad/s at omega = 500 rad/s (pure-rolling relations of Harris &
+    Kotzalas 2006). Published to the printed digits: tolerance half a unit in the last digit."""
     cage, ball_rel, ball_fixed, u = rolling_kinematics(500.0, D, DM, 0.0)
     assert abs(ball_fixed - 952.38) <= 0.005
     assert abs(ball_fixed - 500.0 * 24.0e-3 / (2 * 6.3e-3)) < 1e-9  # the paper's own formula
@@ -57,7 +57,7 @@ def test_radial_integral_zero_clearance():
 
 
 def test_q_max_at_3kN(model):
-    """Q_max = F_r / (Z J_r) = 1457 N at F_r = 3 kN, P_d = 0 (Guessasma Fig. 12b, SPEC 4.3);
+    """Q_max = F_r / (Z J_r) = 1457 N at F_r = 3 kN, P_d = 0 (Guessasma Fig. 12b, Harris & Kotzalas 2006 J_r);
     printed to 4 digits -> +-0.5 N."""
     out = model.evaluate(0.0, 3000.0, T_OIL)
     assert abs(out["Q_max_inner"] - 1457.0) <= 0.5
@@ -79,7 +79,7 @@ def test_q_max_at_3kN(model):
 def test_load_parameter_vs_clearance(F_r, Pd, eps_published):
     """eps = (1 - P_d/(2 delta_r))/2 at rest: Guessasma App. A (3 kN, P_d = -12.6/0/+12.6 um ->
     0.685/0.5/0.40) and Farah App. A (5 kN, P_d/D = -0.0045/0/+0.0045 -> 1.70/0.5/0.29; -0.0035 ->
-    1.32). Tolerance 1 % (issue 3 acceptance); the analytic model uses the continuous-ball
+    1.32). Tolerance 1 %: the papers print 2-3 digits (0.40 is +-1.25 %); the analytic model uses the continuous-ball
     Sjovall integral, the papers a 9-ball DEM, so sub-percent differences are expected."""
     out = AnalyticModel("6208", "guessasma_oil", Pd=Pd).evaluate(0.0, F_r, T_OIL)
     assert out["epsilon"] == pytest.approx(eps_published, rel=0.01)
@@ -96,7 +96,7 @@ def test_inner_contacts_lost_outside_90_degrees(model):
 
 def test_lambda_outer_at_psi0_and_unloaded_zone(model):
     """Lambda_out(psi = 0) ~ 2.12-2.15 and ~3 in the unloaded zone at 500 rad/s, 3 kN
-    (Guessasma section 3.1: 'Lambda varying between 2.15 and 3'; SPEC 4.4). The psi = 0 band is the
+    (Guessasma section 3.1: 'Lambda varying between 2.15 and 3'). The psi = 0 band is the
     published one; the unloaded-zone value is checked to the paper's one significant digit (3 +- 0.1)."""
     out = model.evaluate(500.0, 3000.0, T_OIL)
     assert 2.12 <= model.ball[5, 0] <= 2.15

@@ -4,7 +4,8 @@ Source rows: tests/validation/data/thesis_hertz_cases.csv, extracted from the th
 (Jerotrib samples Tables 1.1-1, 2.1-1, 2.1-6, 2.1-7; ellipticity study Tables 2.2-1 x 2.2-2;
 torus-on-plane Tables 3.3-x, 4.x); provenance and extraction damage in docs/thesis_hertz_cases.md.
 
-Tolerance: 0.5 % (issue 2 acceptance) on top of the rounding of the printed value (half a unit
+Tolerance: 0.5 % (the thesis computes its sizes from inputs it prints rounded, e.g. E and
+radii to 2-3 digits) on top of the rounding of the printed value (half a unit
 in its last printed digit, e.g. 0.091 mm -> +-0.55 %): a value printed with two digits cannot be
 checked closer than its rounding. Rows the thesis marks as finite-element or measured values, and
 Table 3.3-1's a, b (inconsistent with its own load and pressure, see the md), are excluded.

@@ -1,9 +1,9 @@
-"""Quasi-static fidelity against the literature (issue 3 acceptance, SPEC 4.3).
+"""Quasi-static fidelity against the literature (model: docs/quasistatic.md).
 
 - Load parameter eps vs clearance: Guessasma et al. 2018 App. A and Farah et al. 2020 App. A.
 - Rabreau et al. 2018 Figs. 4-5 (qualitative): the three kinematic models agree at rest and differ at
   10 000 rpm; the outer contact angle falls and the axial stiffness changes with speed.
-- Rolling kinematics of the 6208 (Guessasma 2018 section 4): cage and ball speeds of pure rolling.
+- Rolling kinematics of the 6208 (Guessasma 2018 section 3.1): cage and ball speeds of pure rolling.
 """
 
 import math
@@ -50,7 +50,7 @@ def test_load_parameter_vs_clearance(F_r, Pd, eps_published):
     """eps = (1 - P_d/(2 delta_r))/2 from the solver's radial displacement delta_r = x at omega ~ 0
     (1e-3 rad/s: speed effects ~1e-12 of the loads): Guessasma App. A (3 kN, P_d = -12.6/0/+12.6 um
     -> 0.685/0.5/0.40) and Farah App. A (5 kN, P_d/D = -0.0045/0/+0.0045 -> 1.70/0.5/0.29; -0.0035
-    -> 1.32). Tolerance 1 % (issue 3 acceptance): the papers print 2-3 digits from a 9-ball DEM at
+    -> 1.32). Tolerance 1 %: the papers print 2-3 digits from a 9-ball DEM at
     1 rad/s; this is the same 9-ball discrete bearing, so the remaining difference is their
     rounding and their dynamic solution."""
     model = QuasiStaticModel("6208", "guessasma_oil", scene(), Pd=Pd)
@@ -60,8 +60,9 @@ def test_load_parameter_vs_clearance(F_r, Pd, eps_published):
 
 
 def test_pure_rolling_kinematics_6208():
-    """Guessasma 2018 section 4 (SPEC 4.8 checks): omega = 500 rad/s, P_d = 0, F_r = 3 kN, contact
-    angle 0: cage 198.02 rad/s, ball 952.38 rad/s in the fixed frame (printed to 5 digits: 1e-4)."""
+    """Guessasma 2018 section 3.1 (ball speed; the cage speed follows from pure rolling): omega =
+    500 rad/s, P_d = 0, F_r = 3 kN, contact angle 0: cage 198.02 rad/s, ball 952.38 rad/s in the fixed
+    frame (printed to 5 digits: 1e-4)."""
     model = QuasiStaticModel("6208", "guessasma_oil", scene(), Pd=0.0)
     out = model.evaluate(omega=500.0, F_x=3000.0, T_oil=T_OIL)
     assert out["omega_cage"] == pytest.approx(198.02, rel=1e-4)
@@ -111,8 +112,9 @@ def test_rabreau_torque_spread_of_the_three_models():
     the same level of the friction torque (matching within 2 %)'. NOT reproduced: ORC vs ORCG agree
     within 1 %, but HT is 3.7 % below ORC. docs/reports/rabreau_torque_sensitivity.md finds the cause:
     the share of the gyroscopic moment HT gives the inner race (lam_i = 2C/(1+C) = 0.52, our choice,
-    Rabreau's Table 1 being lost), not the estimated geometry (8 geometries: 2.9-4.0 %). This test pins
-    the measured spread (2-5 %) so that a change is noticed; it does not claim the 2 %."""
+    Rabreau's Table 1 missing from our copy of the paper), not the estimated geometry (8 geometries:
+    2.9-4.0 %). This test pins the measured spread (2-5 %) so that a change is noticed; it does not claim
+    the 2 %."""
     torque = {label: rabreau_state(label, 10000 * RPM, 800.0)["torque"] for label in MODELS}
     assert torque["ORCG"] == pytest.approx(torque["ORC"], rel=0.01)
     spread = (max(torque.values()) - min(torque.values())) / max(torque.values())

@@ -4,7 +4,7 @@ Source: Wheeler (2016) thesis, Annexe D (tests/validation/data/thesis_annexe_d_e
 at 313 K, mu0 = 0.00795 Pa.s, G = 4671, steel-steel E' = 210 GPa / (1 - 0.3^2) = 230.77 GPa.
 U, W built on Rx (thesis list of symbols); Moes M = W (2U)^-3/4, L = G (2U)^1/4 (Moes 1992 as
 cited in thesis section 2.2; the printed values fit the 2U convention, docs/thesis_hertz_cases.md).
-Tolerance 1 % (issue 2 acceptance): the CSV prints U, W to 3 digits (<= 0.5 % rounding) and M, L
+Tolerance 1 %: the CSV prints U, W to 3 digits (<= 0.5 % rounding) and M, L
 to 3 digits.
 """
 
