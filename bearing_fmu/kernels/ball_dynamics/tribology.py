@@ -1,0 +1,133 @@
+"""Per-contact tribology of the DEM, refreshed every N steps (multirate).
+
+From the instantaneous load and kinematics of each ball-race contact: Hertz semi-axes and pressure
+(kernels.hertz), entrainment speed and slide-to-roll ratio, film thickness (kernels.ehl, the scene's
+formula), film parameter, regime, mu(Lambda) and C_n(Lambda) (Guessasma & Machado 2018), capacitance
+(Farah et al. 2020, kernels.capacitance) and the Houpert resistances (kernels.torque). Between two
+refreshes the contact law uses these values (the boundary damping follows the load every step).
+
+Kinematics at a contact, in the frame that turns with the ball's orbit about z (angular speed
+w_orbit): the ball surface moves at u_b = (w - w_orbit z) x (D/2) n, the race surface at
+u_r = (omega_race - w_orbit) z x r (r from the ring axis to the contact point) + ring velocity;
+entrainment u = |u_b + u_r|/2 (tangential parts), SRR = |u_b - u_r|/u. Spin: (w - omega_race z).n.
+"""
+import math
+
+from bearing_fmu_common.jit import kernel
+
+from ..capacitance import contact_capacitance, contact_permittivity
+from ..ehl import film_parameter, film_thickness, friction_coefficient, lubrication_regime, normal_damping
+from ..hertz import hertz_contact
+from ..torque import contact_losses, heathcote_force, houpert_rolling_force, hysteresis_force, spin_moment
+from .contacts import groove_approach
+from .state import (B_VX, B_WX, B_X, P_ALPHA_E, P_ALPHA_H, P_D, P_E_RED, P_EE_I, P_F_I, P_FILM, P_H_FLOOR,
+                    P_K_I, P_KH_I, P_KK_I, P_PRESSURE, P_RG_I, P_RHO_I, P_RX_I, P_RY_I, P_SIGMA_I, P_Z_I,
+                    R_VX, R_X, T_A, T_B, T_C_N, T_CAP, T_F_ROLL, T_H_C, T_H_MIN, T_LAMBDA, T_M_SPIN, T_MU, T_P_FILM,
+                    T_P_MAX, T_Q, T_REGIME, T_SIZE, T_SPIN, T_SRR, T_U)
+
+# offset between the inner and the outer block of contact parameters (P_*_I -> P_*_O)
+RACE_STRIDE_HERTZ = 5   # P_RX_I .. P_KK_I
+RACE_STRIDE_GEOM = 2    # P_RHO_I, P_Z_I -> P_RHO_O, P_Z_O
+
+
+@kernel
+def race_circle(race, ring, par):
+    """Curvature-centre circle of a race: (cx, cy, cz, rho) in m (race 0 inner, moves with the ring)."""
+    g = RACE_STRIDE_GEOM * race
+    if race == 0:
+        return ring[R_X], ring[R_X + 1], ring[R_X + 2] + par[P_Z_I], par[P_RHO_I]
+    return 0.0, 0.0, par[P_Z_I + g], par[P_RHO_I + g]
+
+
+@kernel
+def refresh_contact(race, j, omega, eta, xi, K_cm, rho0, balls, ring, par, trib, losses):
+    """Recompute trib[:, race, j] from the current state (positions and velocities at a step).
+
+    omega: inner-ring speed (rad/s); eta (Pa.s), xi (1/Pa), K_cm (m^3/kg), rho0 (kg/m^3): lubricant
+    state; losses: float64 work array of kernels.torque.TL_SIZE.
+    """
+    h = RACE_STRIDE_HERTZ * race
+    cx, cy, cz, rho = race_circle(race, ring, par)
+    px = balls[B_X, j]
+    py = balls[B_X + 1, j]
+    pz = balls[B_X + 2, j]
+    delta, nx, ny, nz = groove_approach(px, py, pz, cx, cy, cz, rho, par[P_RG_I + race])
+    if delta <= 0.0:
+        for t in range(T_SIZE):
+            trib[t, race, j] = 0.0
+        trib[T_MU, race, j] = friction_coefficient(0.0)
+        trib[T_H_MIN, race, j] = math.inf
+        trib[T_H_C, race, j] = math.inf
+        return
+    Rx = par[P_RX_I + h]
+    Ry = par[P_RY_I + h]
+    k = par[P_K_I + h]
+    ell_E = par[P_EE_I + h]
+    E_red = par[P_E_RED]
+    D = par[P_D]
+    Q = par[P_KH_I + race] * delta * math.sqrt(delta)
+    a, b, _, p_max = hertz_contact(Q, Rx, Ry, E_red, k, ell_E, par[P_KK_I + h])
+    half_d = 0.5 * D
+    vx = balls[B_VX, j]
+    vy = balls[B_VX + 1, j]
+    wx = balls[B_WX, j]
+    wy = balls[B_WX + 1, j]
+    wz = balls[B_WX + 2, j]
+    w_orbit = (px * vy - py * vx) / (px * px + py * py)
+    w_race = omega if race == 0 else 0.0
+    # ball surface relative to the orbiting contact frame
+    qz = wz - w_orbit
+    ubx = half_d * (wy * nz - qz * ny)
+    uby = half_d * (qz * nx - wx * nz)
+    ubz = half_d * (wx * ny - wy * nx)
+    # race surface relative to the same frame (the race turns about the ring centre, which moves)
+    rx = px + half_d * nx - cx
+    ry = py + half_d * ny - cy
+    s = w_race - w_orbit
+    urx = -s * ry
+    ury = s * rx
+    urz = 0.0
+    if race == 0:
+        urx += ring[R_VX]
+        ury += ring[R_VX + 1]
+        urz += ring[R_VX + 2]
+    # tangential parts
+    un = urx * nx + ury * ny + urz * nz
+    urx -= un * nx
+    ury -= un * ny
+    urz -= un * nz
+    un = ubx * nx + uby * ny + ubz * nz
+    ubx -= un * nx
+    uby -= un * ny
+    ubz -= un * nz
+    u = 0.5 * math.sqrt((ubx + urx) ** 2 + (uby + ury) ** 2 + (ubz + urz) ** 2)
+    slide = math.sqrt((ubx - urx) ** 2 + (uby - ury) ** 2 + (ubz - urz) ** 2)
+    spin = wx * nx + wy * ny + (wz - w_race) * nz
+    h_c, h_min = film_thickness(int(par[P_FILM]), eta, xi, E_red, u, Q, Rx, Ry, k)
+    lam = film_parameter(h_min, par[P_SIGMA_I + race])
+    mu = friction_coefficient(lam)
+    P = contact_losses(Q, u, spin, Rx, Ry, a, b, ell_E, par[P_F_I + race], D, E_red, eta, xi, mu, par[P_ALPHA_H],
+                       losses)
+    trib[T_MU, race, j] = mu
+    trib[T_C_N, race, j] = normal_damping(lam, Q, par[P_ALPHA_E], eta, a, half_d, h_min)
+    trib[T_REGIME, race, j] = lubrication_regime(lam)
+    # per-surface rolling resistance: the EHL force acts on both surfaces (power 2 F_R u); hysteresis and
+    # Heathcote dissipate F u per contact, split evenly between the two surfaces
+    f_i = par[P_F_I + race]
+    trib[T_F_ROLL, race, j] = (houpert_rolling_force(Q, u, Rx, Ry, E_red, eta, xi)
+                               + 0.5 * (hysteresis_force(Q, b, Rx, par[P_ALPHA_H])
+                                        + heathcote_force(Q, a, Rx, f_i, D, mu)))
+    trib[T_M_SPIN, race, j] = spin_moment(Q, a, ell_E, mu)
+    trib[T_P_FILM, race, j] = P
+    trib[T_Q, race, j] = Q
+    trib[T_A, race, j] = a
+    trib[T_B, race, j] = b
+    trib[T_P_MAX, race, j] = p_max
+    trib[T_U, race, j] = u
+    trib[T_SRR, race, j] = slide / u if u > 0.0 else 0.0
+    trib[T_SPIN, race, j] = spin
+    trib[T_H_MIN, race, j] = h_min
+    trib[T_H_C, race, j] = h_c
+    trib[T_LAMBDA, race, j] = lam
+    eps = contact_permittivity(K_cm, rho0, p_max, int(par[P_PRESSURE]))
+    trib[T_CAP, race, j] = contact_capacitance(eps, a, b, h_c, par[P_H_FLOOR])
