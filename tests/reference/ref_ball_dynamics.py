@@ -10,9 +10,9 @@ be handed to both. The model:
   boundary regime where C_n = 1.5 alpha_e Q (Guessasma eq. 4 with K_n delta = Q);
 - tangential spring xi: projected on the tangent plane, xi += v_t dt, F_t = -k_t xi with
   k_t = ratio K_h delta^0.5, capped at mu F_n (xi rescaled to the cap), reset when the contact opens;
-- rolling-resistance moment -F_roll (D/2) q/max(|q|, w_reg) with q the ball's angular velocity
-  relative to its orbiting frame, tangential part; spin moment -M_s s/max(|s|, w_reg) n, s the spin
-  relative to the race; F_roll = F_R + (F_h + F_H)/2 (Houpert EHL force on each surface, hysteresis
+- rolling-resistance moment -M_r q/max(|q|, w_reg, 4 M_r dt/I) with M_r = F_roll (D/2) and q the
+  ball's angular velocity relative to its orbiting frame, tangential part; spin moment
+  -M_s s/max(|s|, w_reg, 4 M_s dt/I) n, s the spin relative to the race; F_roll = F_R + (F_h + F_H)/2 (Houpert EHL force on each surface, hysteresis
   and Heathcote halved), M_s = (3/8) mu Q a E (Jones);
 - cage ball between balls k and k + 1, Hertz sphere-sphere with critical damping, frictionless; guide
   channel around the pitch circle (distance from the circle minus the play), critically damped;
@@ -196,8 +196,12 @@ def forces(st, par, omega, F_ring, vel, dt):
             q = w_b[:, j] - orbit_speed(p, v_b[:, j]) * Z_AXIS
             q = q - np.dot(q, n) * n
             spin = np.dot(w_b[:, j] - w_race * Z_AXIS, n)
-            m_ball[:, j] += (np.cross(r_c, F_t) - trib[s.T_F_ROLL, race, j] * 0.5 * D * q / max(np.linalg.norm(q), w_reg)
-                             - trib[s.T_M_SPIN, race, j] * spin / max(abs(spin), w_reg) * n)
+            # regularised resistances: viscous below max(w_reg, M / (I / (4 dt))), Coulomb-like above
+            M_roll = trib[s.T_F_ROLL, race, j] * 0.5 * D
+            M_spin = trib[s.T_M_SPIN, race, j]
+            rate = par[s.P_I_BALL] / (4.0 * dt)
+            m_ball[:, j] += (np.cross(r_c, F_t) - M_roll * q / max(np.linalg.norm(q), w_reg, M_roll / rate)
+                             - M_spin * spin / max(abs(spin), w_reg, M_spin / rate) * n)
             if race == 0:
                 f_ring -= force
             power[race] += (c_n * v_n ** 2 if F_n > 0.0 else 0.0) - (np.dot(F_t, v_t) if slipping else 0.0)

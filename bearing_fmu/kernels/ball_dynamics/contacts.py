@@ -20,13 +20,14 @@ force (the normal forces on ball and race stay on one line, so momentum is conse
 gets the moment (F_R + (F_h + F_H)/2)(D/2) opposing its rolling relative to the contact frame
 (power F u_ball with u_ball = |omega_rel| D/2), and the pivoting moment M_s opposing its spin
 relative to the race. The race's share acts on the prescribed inner ring or on the fixed outer ring
-and only enters the dissipated power. Directions are regularised below the speed v_reg.
+and only enters the dissipated power. Directions are regularised below the speed v_reg, or below the
+angular speed at which the regularised (viscous) moment would exceed I/(4 dt), whichever is larger.
 """
 import math
 
 from bearing_fmu_common.jit import kernel
 
-from .state import A_DISS_I, A_FR, A_VR, B_X, K_SIZE, P_ALPHA_E, P_D, P_KT_RATIO, P_V_REG
+from .state import A_DISS_I, A_FR, A_VR, B_X, K_SIZE, P_ALPHA_E, P_D, P_I_BALL, P_KT_RATIO, P_V_REG
 from .state import (S_INNER, T_C_N, T_F_ROLL, T_M_SPIN, T_MU, T_REGIME, W_FB, W_MB, W_VB, W_WB)
 from ..ehl import REGIME_BOUNDARY
 
@@ -198,10 +199,16 @@ def ball_race_contact(race, j, omega, rho, cx, cy, cz, rg, K_h, delta_lim, balls
     qy -= qn * ny
     qz -= qn * nz
     q = math.sqrt(qx * qx + qy * qy + qz * qz)
+    # below the regularisation speed a resistance acts as a viscous damper M/w_reg; its rate is kept
+    # within a quarter of I/dt so that the explicit step cannot overshoot (with four resistances on the
+    # ball their sum stays below I/dt: no sign reversal, no chatter)
     w_reg = par[P_V_REG] / half_d
-    m_roll = trib[T_F_ROLL, race, j] * half_d / max(q, w_reg)
+    i_dt = 0.25 * par[P_I_BALL] / dt if dt > 0.0 else 0.0
+    f_roll = trib[T_F_ROLL, race, j] * half_d
+    m_roll = f_roll / max(q, w_reg, f_roll / i_dt if i_dt > 0.0 else 0.0)
     spin = wx * nx + wy * ny + (wz - w_race) * nz
-    m_spin = trib[T_M_SPIN, race, j] / max(abs(spin), w_reg)
+    m_s = trib[T_M_SPIN, race, j]
+    m_spin = m_s / max(abs(spin), w_reg, m_s / i_dt if i_dt > 0.0 else 0.0)
     work[W_MB, j] += mx - m_roll * qx - m_spin * spin * nx
     work[W_MB + 1, j] += my - m_roll * qy - m_spin * spin * ny
     work[W_MB + 2, j] += mz - m_roll * qz - m_spin * spin * nz
