@@ -26,7 +26,7 @@ from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_loads
 from ..kernels.geometry import ball_mass, curvature_radii, free_contact_angle, rolling_kinematics
 from ..kernels.hertz import (hertz_coefficients_approx, hertz_coefficients_exact, hertz_contact, hertz_stiffness,
                              reduced_modulus)
-from ..kernels.torque import ALPHA_HYSTERESIS_STEEL, TL_SIZE
+from ..kernels.torque import ALPHA_HYSTERESIS_STEEL
 from ..model import DM_N_LIMIT, P_MAX_ERROR, InputError, check_oil_temperature, check_speed
 from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
@@ -128,7 +128,6 @@ class DemModel:
         self.status = np.zeros(s.ST_SIZE, dtype=np.int64)
         self._work = np.zeros((s.W_SIZE, Z))
         self._acc = np.zeros(s.A_SIZE)
-        self._losses = np.zeros(TL_SIZE)
         self._Q = np.zeros((2, Z))
         self.dt = math.nan      # time step of the last advance() call (s)
         self.refresh = 0        # its tribology refresh interval (steps)
@@ -201,11 +200,21 @@ class DemModel:
         p[s.P_Z_GUIDE] = self._rest[1]
         p[s.P_GUIDE_GAP] = 0.0
         p[s.P_ZETA_CAGE] = 1.0
+        m_eff = p[s.P_M_BALL] * p[s.P_M_CAGE] / (p[s.P_M_BALL] + p[s.P_M_CAGE])
+        p[s.P_C_CB] = 2.0 * p[s.P_ZETA_CAGE] * math.sqrt(1.5 * p[s.P_K_CB] * m_eff)
+        p[s.P_C_GUIDE] = 2.0 * p[s.P_ZETA_CAGE] * math.sqrt(1.5 * p[s.P_K_GUIDE] * p[s.P_M_CAGE])
         p[s.P_M_RING] = _ring_mass(b) if ring_mass is None else float(ring_mass)
         # physical penetration limit: the approach at which the Hertz pressure reaches the material limit
         for race, (Rx, Ry, c) in enumerate(((Rx_i, Ry_i, ci), (Rx_o, Ry_o, co))):
             q_lim = (P_MAX_ERROR / hertz_contact(1.0, Rx, Ry, E_red, *c)[3]) ** 3
             p[s.P_DELTA_LIM_I + race] = (q_lim / p[s.P_KH_I + race]) ** (2.0 / 3.0)
+        # Hertz semi-axes and pressure at 1 N, scaled by Q^(1/3) = K_h^(1/3) delta^(1/2) in the kernel
+        for race, (Rx, Ry, c) in enumerate(((Rx_i, Ry_i, ci), (Rx_o, Ry_o, co))):
+            a1, b1, _, p1 = hertz_contact(1.0, Rx, Ry, E_red, *c)
+            cube = p[s.P_KH_I + race] ** (1.0 / 3.0)
+            p[s.P_HA_I + 3 * race] = a1 * cube
+            p[s.P_HB_I + 3 * race] = b1 * cube
+            p[s.P_HP_I + 3 * race] = p1 * cube
         p[s.P_CHATTER] = CHATTER_STEPS
         p[s.P_REFRESH] = 1
         return p
@@ -247,7 +256,7 @@ class DemModel:
     def _initialise(self, omega, F_x, F_y, F_z, T_oil):
         dyn.initialise_accelerations(self.balls, self.cage, self.ring, self.spring, self.trib, self.counters,
                                      self.par, self.lubricant.array, omega, F_x, F_y, F_z, T_oil, self._work,
-                                     self._acc, self._losses)
+                                     self._acc)
 
     # -- time step -----------------------------------------------------------------------------
     def stable_time_step(self, F_x=0.0, F_y=0.0, F_z=0.0, omega=None, include_state=True):
@@ -317,7 +326,7 @@ class DemModel:
         dyn.advance(self.balls, self.cage, self.ring, self.spring, self.trib, self.counters, self.par,
                     self.lubricant.array, n_steps, dt, omega0, omega, F_x, F_y, F_z, T_oil,
                     self._energy_limit(max(abs(omega0), abs(omega)), math.sqrt(F_x ** 2 + F_y ** 2 + F_z ** 2)),
-                    self._work, self._acc, self._losses, self.status)
+                    self._work, self._acc, self.status)
         done = int(self.status[s.ST_STEP])
         self.omega = omega0 + (omega - omega0) * done / n_steps
         if self.status[s.ST_CODE] != s.STATUS_OK:

@@ -19,18 +19,17 @@ import math
 
 from bearing_fmu_common.jit import kernel
 
-from .state import (B_X, C_X, P_GUIDE_GAP, P_K_CB, P_K_GUIDE, P_M_BALL, P_M_CAGE, P_R_GUIDE, P_Z_GUIDE, P_ZETA_CAGE,
-                    W_FB, W_FC, W_VB, W_VC)
+from .state import (B_X, C_X, P_C_CB, P_C_GUIDE, P_GUIDE_GAP, P_K_CB, P_K_GUIDE, P_R_GUIDE, P_Z_GUIDE, W_FB, W_FC,
+                    W_VB, W_VC)
 
 
 @kernel
-def damped_hertz(K, delta, zeta, m_eff, v_approach):
-    """Normal force (N, >= 0) of a critically damped Hertz contact: K delta^1.5 + c v_approach with
-    c = 2 zeta sqrt(1.5 K sqrt(delta) m_eff); K (N/m^1.5), delta (m), m_eff (kg), v_approach (m/s,
-    > 0 closing)."""
+def damped_hertz(K, c0, delta, v_approach):
+    """Normal force (N, >= 0) of a damped Hertz contact: K delta^1.5 + c v_approach, K (N/m^1.5), delta (m),
+    v_approach (m/s, > 0 closing). The damping c = 2 zeta sqrt(k m_eff) of the tangent stiffness
+    k = 1.5 K sqrt(delta) is c0 delta^(1/4), c0 = 2 zeta sqrt(1.5 K m_eff) (critical for zeta = 1)."""
     root = math.sqrt(delta)
-    c = 2.0 * zeta * math.sqrt(1.5 * K * root * m_eff)
-    f = K * delta * root + c * v_approach
+    f = K * delta * root + c0 * math.sqrt(root) * v_approach
     return f if f > 0.0 else 0.0
 
 
@@ -41,18 +40,18 @@ def ball_cage_contact(j, k, balls, cage, par, work, R_sum):
     dx = cage[C_X, k] - balls[B_X, j]
     dy = cage[C_X + 1, k] - balls[B_X + 1, j]
     dz = cage[C_X + 2, k] - balls[B_X + 2, j]
-    dist = math.sqrt(dx * dx + dy * dy + dz * dz)
-    delta = R_sum - dist
-    if delta <= 0.0 or dist == 0.0:
+    d2 = dx * dx + dy * dy + dz * dz
+    if d2 >= R_sum * R_sum or d2 == 0.0:  # open (most of the time: the pockets have play)
         return 0.0
-    nx = dx / dist  # from the steel ball to the cage ball
-    ny = dy / dist
-    nz = dz / dist
+    dist = math.sqrt(d2)
+    delta = R_sum - dist
+    inv = 1.0 / dist
+    nx = dx * inv  # from the steel ball to the cage ball
+    ny = dy * inv
+    nz = dz * inv
     v_app = ((work[W_VB, j] - work[W_VC, k]) * nx + (work[W_VB + 1, j] - work[W_VC + 1, k]) * ny
              + (work[W_VB + 2, j] - work[W_VC + 2, k]) * nz)
-    m_b = par[P_M_BALL]
-    m_c = par[P_M_CAGE]
-    f = damped_hertz(par[P_K_CB], delta, par[P_ZETA_CAGE], m_b * m_c / (m_b + m_c), v_app)
+    f = damped_hertz(par[P_K_CB], par[P_C_CB], delta, v_app)
     work[W_FC, k] += f * nx
     work[W_FC + 1, k] += f * ny
     work[W_FC + 2, k] += f * nz
@@ -70,19 +69,20 @@ def cage_guide_contact(k, cage, par, work):
     r = math.sqrt(px * px + py * py)
     if r == 0.0:
         return 0.0
-    R = par[P_R_GUIDE]
-    sx = px - R * px / r
-    sy = py - R * py / r
+    scale = 1.0 - par[P_R_GUIDE] / r
+    sx = px * scale
+    sy = py * scale
     sz = cage[C_X + 2, k] - par[P_Z_GUIDE]
     dist = math.sqrt(sx * sx + sy * sy + sz * sz)
     delta = dist - par[P_GUIDE_GAP]
     if delta <= 0.0:
         return 0.0
-    nx = sx / dist
-    ny = sy / dist
-    nz = sz / dist
+    inv = 1.0 / dist
+    nx = sx * inv
+    ny = sy * inv
+    nz = sz * inv
     v_app = work[W_VC, k] * nx + work[W_VC + 1, k] * ny + work[W_VC + 2, k] * nz
-    f = damped_hertz(par[P_K_GUIDE], delta, par[P_ZETA_CAGE], par[P_M_CAGE], v_app)
+    f = damped_hertz(par[P_K_GUIDE], par[P_C_GUIDE], delta, v_app)
     work[W_FC, k] -= f * nx
     work[W_FC + 1, k] -= f * ny
     work[W_FC + 2, k] -= f * nz

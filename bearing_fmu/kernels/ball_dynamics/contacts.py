@@ -27,8 +27,8 @@ import math
 
 from bearing_fmu_common.jit import kernel
 
-from .state import A_DISS_I, A_FR, A_VR, B_X, K_SIZE, P_ALPHA_E, P_D, P_I_BALL, P_KT_RATIO, P_V_REG
-from .state import (S_INNER, T_C_N, T_F_ROLL, T_M_SPIN, T_MU, T_REGIME, W_FB, W_MB, W_VB, W_WB)
+from .state import A_DISS_I, A_FR, A_VR, B_X, K_SIZE, P_ALPHA_E, P_D, P_KT_RATIO, P_V_REG
+from .state import (S_INNER, T_C_N, T_F_ROLL, T_M_SPIN, T_MU, T_REGIME, W_FB, W_MB, W_ORBIT, W_VB, W_WB)
 from ..ehl import REGIME_BOUNDARY
 
 
@@ -46,13 +46,15 @@ def groove_approach(px, py, pz, cx, cy, cz, rho, rg):
     r = math.sqrt(dx * dx + dy * dy)
     if r == 0.0:
         return -1.0, 0.0, 0.0, 0.0
-    sx = dx - rho * dx / r
-    sy = dy - rho * dy / r
+    scale = 1.0 - rho / r
+    sx = dx * scale
+    sy = dy * scale
     sz = pz - cz
     dist = math.sqrt(sx * sx + sy * sy + sz * sz)
     if dist == 0.0:
         return -1.0, 0.0, 0.0, 0.0
-    return dist - rg, sx / dist, sy / dist, sz / dist
+    inv = 1.0 / dist
+    return dist - rg, sx * inv, sy * inv, sz * inv
 
 
 @kernel
@@ -89,11 +91,11 @@ def tangential_spring(spring, row, j, nx, ny, nz, vtx, vty, vtz, dt, kt, f_limit
     fx = -kt * sx
     fy = -kt * sy
     fz = -kt * sz
-    f = math.sqrt(fx * fx + fy * fy + fz * fz)
-    slipping = f > f_limit
+    f2 = fx * fx + fy * fy + fz * fz
+    slipping = f2 > f_limit * f_limit
     reversed_ = False
     if slipping:
-        scale = f_limit / f
+        scale = f_limit / math.sqrt(f2)
         fx *= scale
         fy *= scale
         fz *= scale
@@ -108,14 +110,14 @@ def tangential_spring(spring, row, j, nx, ny, nz, vtx, vty, vtz, dt, kt, f_limit
 
 
 @kernel
-def ball_race_contact(race, j, omega, rho, cx, cy, cz, rg, K_h, delta_lim, balls, ring, spring, trib, counters,
-                      par, work, acc, dt):
+def ball_race_contact(race, j, omega, rho, cx, cy, cz, rg, K_h, inv_delta_lim, rate_inv, balls, ring, spring, trib,
+                      counters, par, work, acc, dt):
     """Forces of the contact of ball j with one race, added to the work arrays.
 
     race 0 inner (turning at omega rad/s about z through the ring centre (cx, cy), translating with the
     predicted ring velocity acc[A_VR:]), 1 outer (fixed). (cx, cy, cz), rho, rg: the groove's
-    curvature-centre circle and (f - 1/2) D (m); K_h (N/m^1.5); delta_lim: penetration limit (m).
-    Uses the positions in balls/ring and the predicted velocities in work; updates the spring, the
+    curvature-centre circle and (f - 1/2) D (m); K_h (N/m^1.5); inv_delta_lim: 1 / penetration limit (1/m);
+    rate_inv = 4 dt / I (1/(N.m.s)), the inverse of the largest viscous rate of a regularised moment. Uses the positions in balls/ring and the predicted velocities in work; updates the spring, the
     chatter counter and the dissipated energy acc[A_DISS_I + race] (J); dt (s).
     Returns (delta / delta_lim, chatter count): the monitor's two per-contact indicators.
     """
@@ -189,8 +191,7 @@ def ball_race_contact(race, j, omega, rho, cx, cy, cz, rg, K_h, delta_lim, balls
     mz = rcx * fty - rcy * ftx
     # Houpert resistances: rolling relative to the contact frame (which turns with the ball's orbit)
     # and spin relative to the race
-    r2 = px * px + py * py
-    w_orbit = (px * vy - py * vx) / r2
+    w_orbit = work[W_ORBIT, j]
     qx = wx
     qy = wy
     qz = wz - w_orbit
@@ -203,12 +204,11 @@ def ball_race_contact(race, j, omega, rho, cx, cy, cz, rg, K_h, delta_lim, balls
     # within a quarter of I/dt so that the explicit step cannot overshoot (with four resistances on the
     # ball their sum stays below I/dt: no sign reversal, no chatter)
     w_reg = par[P_V_REG] / half_d
-    i_dt = 0.25 * par[P_I_BALL] / dt if dt > 0.0 else 0.0
     f_roll = trib[T_F_ROLL, race, j] * half_d
-    m_roll = f_roll / max(q, w_reg, f_roll / i_dt if i_dt > 0.0 else 0.0)
+    m_roll = f_roll / max(q, w_reg, f_roll * rate_inv)
     spin = wx * nx + wy * ny + (wz - w_race) * nz
     m_s = trib[T_M_SPIN, race, j]
-    m_spin = m_s / max(abs(spin), w_reg, m_s / i_dt if i_dt > 0.0 else 0.0)
+    m_spin = m_s / max(abs(spin), w_reg, m_s * rate_inv)
     work[W_MB, j] += mx - m_roll * qx - m_spin * spin * nx
     work[W_MB + 1, j] += my - m_roll * qy - m_spin * spin * ny
     work[W_MB + 2, j] += mz - m_roll * qz - m_spin * spin * nz
@@ -221,4 +221,4 @@ def ball_race_contact(race, j, omega, rho, cx, cy, cz, rg, K_h, delta_lim, balls
     if slipping:
         power -= ftx * vtx + fty * vty + ftz * vtz
     acc[A_DISS_I + race] += power * dt
-    return delta / delta_lim, counters[kc]
+    return delta * inv_delta_lim, counters[kc]

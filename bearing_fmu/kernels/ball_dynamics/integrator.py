@@ -21,7 +21,7 @@ from .state import (A_DISS_I, A_DISS_O, A_FR, A_VR, B_ALX, B_AX, B_ORBIT, B_VX, 
                     P_CHATTER, P_D, P_DELTA_LIM_I, P_I_BALL, P_KH_I, P_M_BALL, P_M_CAGE, P_M_RING, P_R_CAGE,
                     P_REFRESH, P_RG_I, R_AX, R_TIME, R_VX, R_X, ST_CODE, ST_INDEX, ST_STEP, STATUS_CHATTER,
                     STATUS_ENERGY, STATUS_NOT_FINITE, STATUS_OK, STATUS_PENETRATION, T_P_FILM, W_FB, W_FC, W_MB,
-                    W_VB, W_VC, W_WB)
+                    W_ORBIT, W_VB, W_VC, W_WB)
 from .tribology import race_circle, refresh_contact
 
 
@@ -45,12 +45,13 @@ def compute_forces(balls, cage, ring, spring, trib, counters, par, omega, F_x, F
     worst_chat = 0
     worst_chat_at = -1
     R_sum = 0.5 * par[P_D] + par[P_R_CAGE]
+    rate_inv = 4.0 * dt / par[P_I_BALL]
     for race in range(2):
         cx, cy, cz, rho = race_circle(race, ring, par)
+        inv_lim = 1.0 / par[P_DELTA_LIM_I + race]
         for j in range(Z):
             pen, chat = ball_race_contact(race, j, omega, rho, cx, cy, cz, par[P_RG_I + race], par[P_KH_I + race],
-                                          par[P_DELTA_LIM_I + race], balls, ring, spring, trib, counters, par,
-                                          work, acc, dt)
+                                          inv_lim, rate_inv, balls, ring, spring, trib, counters, par, work, acc, dt)
             if pen > worst_pen:
                 worst_pen = pen
                 worst_pen_at = race * Z + j
@@ -70,11 +71,11 @@ def compute_forces(balls, cage, ring, spring, trib, counters, par, omega, F_x, F
 
 
 @kernel
-def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, losses):
+def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib):
     """Refresh the tribology of every ball-race contact from the current state."""
     for race in range(2):
         for j in range(balls.shape[1]):
-            refresh_contact(race, j, omega, eta, xi, K_cm, rho0, balls, ring, par, trib, losses)
+            refresh_contact(race, j, omega, eta, xi, K_cm, rho0, balls, ring, par, trib)
 
 
 @kernel
@@ -99,6 +100,8 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
         x1 = balls[B_X, j]
         y1 = balls[B_X + 1, j]
         balls[B_ORBIT, j] += (x0 * y1 - y0 * x1) / (x0 * x1 + y0 * y1)
+        # orbital speed of the contact frame, for the rolling resistance
+        work[W_ORBIT, j] = (x1 * work[W_VB + 1, j] - y1 * work[W_VB, j]) / (x1 * x1 + y1 * y1)
     for i in range(3):
         ring[R_X + i] += ring[R_VX + i] * dt + ring[R_AX + i] * h
         acc[A_VR + i] = ring[R_VX + i] + ring[R_AX + i] * dt
@@ -130,12 +133,12 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
 
 @kernel
 def initialise_accelerations(balls, cage, ring, spring, trib, counters, par, lub, omega, F_x, F_y, F_z, T_oil,
-                             work, acc, losses):
+                             work, acc):
     """Tribology and accelerations of a new state (the a_n that the first Verlet step needs), without
     moving anything: call once after the facade sets positions and velocities."""
     eta, xi, rho0 = lubricant_state(T_oil, lub)
     K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], rho0)
-    refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, losses)
+    refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib)
     Z = balls.shape[1]
     saved = spring.copy()
     for j in range(Z):
@@ -143,6 +146,9 @@ def initialise_accelerations(balls, cage, ring, spring, trib, counters, par, lub
             work[W_VB + i, j] = balls[B_VX + i, j]
             work[W_WB + i, j] = balls[B_WX + i, j]
             work[W_VC + i, j] = cage[C_VX + i, j]
+        x = balls[B_X, j]
+        y = balls[B_X + 1, j]
+        work[W_ORBIT, j] = (x * work[W_VB + 1, j] - y * work[W_VB, j]) / (x * x + y * y)
     for i in range(3):
         acc[A_VR + i] = ring[R_VX + i]
     compute_forces(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, work, acc, 0.0)
@@ -158,7 +164,7 @@ def initialise_accelerations(balls, cage, ring, spring, trib, counters, par, lub
 
 @kernel
 def advance(balls, cage, ring, spring, trib, counters, par, lub, n_steps, dt, omega0, omega1, F_x, F_y, F_z, T_oil,
-            energy_limit, work, acc, losses, status):
+            energy_limit, work, acc, status):
     """Run n_steps steps of dt (s) with the inner-ring speed going linearly from omega0 to omega1 (rad/s),
     constant loads F_x, F_y, F_z (N) on the inner ring and oil temperature T_oil (K).
 
@@ -180,7 +186,7 @@ def advance(balls, cage, ring, spring, trib, counters, par, lub, n_steps, dt, om
     for n in range(n_steps):
         omega_start = omega0 + (omega1 - omega0) * n / n_steps
         if counters[K_STEP] % refresh == 0:
-            refresh_tribology(omega_start, eta, xi, K_cm, rho0, balls, ring, par, trib, losses)
+            refresh_tribology(omega_start, eta, xi, K_cm, rho0, balls, ring, par, trib)
             if kinetic_energy(balls, cage, ring, par) > energy_limit:
                 status[ST_CODE] = STATUS_ENERGY
                 status[ST_STEP] = n

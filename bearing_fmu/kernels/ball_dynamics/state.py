@@ -110,7 +110,15 @@ P_DELTA_LIM_O = 45 # outer
 P_CHATTER = 46     # consecutive slipping direction reversals that count as chatter (-)
 P_DM = 47          # pitch diameter (m)
 P_ALPHA0 = 48      # free contact angle (rad), for the pure-rolling reference speeds
-P_SIZE = 49
+P_C_CB = 49        # damping constant of the ball - cage-ball contact 2 zeta sqrt(1.5 K m_eff) (N.s/m^1.25)
+P_C_GUIDE = 50     # the same for the cage ball - guide contact
+P_HA_I = 51        # Hertz scaling of the inner contact (Q = K_h delta^1.5, so Q^(1/3) = K_h^(1/3) delta^(1/2)):
+P_HB_I = 52        #   a_y = P_HA sqrt(delta), b_x = P_HB sqrt(delta) (m^0.5), p_max = P_HP sqrt(delta) (Pa/m^0.5)
+P_HP_I = 53
+P_HA_O = 54        # the same for the outer contact
+P_HB_O = 55
+P_HP_O = 56
+P_SIZE = 57
 
 # ---- outputs of advance(): float64[O_SIZE] --------------------------------------------------------
 O_OMEGA_CAGE = 0      # cage speed: mean orbital angular speed of the balls (rad/s)
@@ -156,7 +164,8 @@ W_FC = 6      # force on each cage ball (N), 3 rows
 W_VB = 9      # predicted ball velocity (m/s), 3 rows
 W_WB = 12     # predicted ball angular velocity (rad/s), 3 rows
 W_VC = 15     # predicted cage-ball velocity (m/s), 3 rows
-W_SIZE = 18
+W_ORBIT = 18  # orbital angular speed of each ball about z from the predicted velocity (rad/s)
+W_SIZE = 19
 
 # ---- scalar work of one step: float64[A_SIZE] -----------------------------------------------------
 A_FR = 0        # force on the inner ring (N), 3 entries

@@ -17,11 +17,10 @@ from bearing_fmu_common.jit import kernel
 
 from ..capacitance import contact_capacitance, contact_permittivity
 from ..ehl import film_parameter, film_thickness, friction_coefficient, lubrication_regime, normal_damping
-from ..hertz import hertz_contact
-from ..torque import contact_losses, heathcote_force, houpert_rolling_force, hysteresis_force, spin_moment
+from ..torque import heathcote_force, houpert_rolling_force, hysteresis_force, spin_moment
 from .contacts import groove_approach
 from .state import (B_VX, B_WX, B_X, P_ALPHA_E, P_ALPHA_H, P_D, P_E_RED, P_EE_I, P_F_I, P_FILM, P_H_FLOOR,
-                    P_K_I, P_KH_I, P_KK_I, P_PRESSURE, P_RG_I, P_RHO_I, P_RX_I, P_RY_I, P_SIGMA_I, P_Z_I,
+                    P_HA_I, P_HB_I, P_HP_I, P_K_I, P_KH_I, P_PRESSURE, P_RG_I, P_RHO_I, P_RX_I, P_RY_I, P_SIGMA_I, P_Z_I,
                     R_VX, R_X, T_A, T_B, T_C_N, T_CAP, T_F_ROLL, T_H_C, T_H_MIN, T_LAMBDA, T_M_SPIN, T_MU, T_P_FILM,
                     T_P_MAX, T_Q, T_REGIME, T_SIZE, T_SPIN, T_SRR, T_U)
 
@@ -40,11 +39,11 @@ def race_circle(race, ring, par):
 
 
 @kernel
-def refresh_contact(race, j, omega, eta, xi, K_cm, rho0, balls, ring, par, trib, losses):
+def refresh_contact(race, j, omega, eta, xi, K_cm, rho0, balls, ring, par, trib):
     """Recompute trib[:, race, j] from the current state (positions and velocities at a step).
 
     omega: inner-ring speed (rad/s); eta (Pa.s), xi (1/Pa), K_cm (m^3/kg), rho0 (kg/m^3): lubricant
-    state; losses: float64 work array of kernels.torque.TL_SIZE.
+    state.
     """
     h = RACE_STRIDE_HERTZ * race
     cx, cy, cz, rho = race_circle(race, ring, par)
@@ -65,8 +64,12 @@ def refresh_contact(race, j, omega, eta, xi, K_cm, rho0, balls, ring, par, trib,
     ell_E = par[P_EE_I + h]
     E_red = par[P_E_RED]
     D = par[P_D]
-    Q = par[P_KH_I + race] * delta * math.sqrt(delta)
-    a, b, _, p_max = hertz_contact(Q, Rx, Ry, E_red, k, ell_E, par[P_KK_I + h])
+    root = math.sqrt(delta)
+    Q = par[P_KH_I + race] * delta * root
+    # Hertz semi-axes and pressure grow as Q^(1/3) = K_h^(1/3) delta^(1/2): scaled from kernels.hertz at 1 N
+    a = par[P_HA_I + 3 * race] * root
+    b = par[P_HB_I + 3 * race] * root
+    p_max = par[P_HP_I + 3 * race] * root
     half_d = 0.5 * D
     vx = balls[B_VX, j]
     vy = balls[B_VX + 1, j]
@@ -106,19 +109,18 @@ def refresh_contact(race, j, omega, eta, xi, K_cm, rho0, balls, ring, par, trib,
     h_c, h_min = film_thickness(int(par[P_FILM]), eta, xi, E_red, u, Q, Rx, Ry, k)
     lam = film_parameter(h_min, par[P_SIGMA_I + race])
     mu = friction_coefficient(lam)
-    P = contact_losses(Q, u, spin, Rx, Ry, a, b, ell_E, par[P_F_I + race], D, E_red, eta, xi, mu, par[P_ALPHA_H],
-                       losses)
     trib[T_MU, race, j] = mu
     trib[T_C_N, race, j] = normal_damping(lam, Q, par[P_ALPHA_E], eta, a, half_d, h_min)
     trib[T_REGIME, race, j] = lubrication_regime(lam)
-    # per-surface rolling resistance: the EHL force acts on both surfaces (power 2 F_R u); hysteresis and
-    # Heathcote dissipate F u per contact, split evenly between the two surfaces
-    f_i = par[P_F_I + race]
-    trib[T_F_ROLL, race, j] = (houpert_rolling_force(Q, u, Rx, Ry, E_red, eta, xi)
-                               + 0.5 * (hysteresis_force(Q, b, Rx, par[P_ALPHA_H])
-                                        + heathcote_force(Q, a, Rx, f_i, D, mu)))
-    trib[T_M_SPIN, race, j] = spin_moment(Q, a, ell_E, mu)
-    trib[T_P_FILM, race, j] = P
+    # Houpert forces (kernels.torque); the contact's power as kernels.torque.contact_losses defines it:
+    # EHL 2 F_R u (both surfaces), hysteresis F_h u, Heathcote F_H u, spin M_s |spin|
+    F_R = houpert_rolling_force(Q, u, Rx, Ry, E_red, eta, xi)
+    F_hh = hysteresis_force(Q, b, Rx, par[P_ALPHA_H]) + heathcote_force(Q, a, Rx, par[P_F_I + race], D, mu)
+    M_s = spin_moment(Q, a, ell_E, mu)
+    # per surface: F_R on each, hysteresis and Heathcote split evenly
+    trib[T_F_ROLL, race, j] = F_R + 0.5 * F_hh
+    trib[T_M_SPIN, race, j] = M_s
+    trib[T_P_FILM, race, j] = (2.0 * F_R + F_hh) * u + M_s * abs(spin)
     trib[T_Q, race, j] = Q
     trib[T_A, race, j] = a
     trib[T_B, race, j] = b
