@@ -180,3 +180,38 @@ def test_too_large_time_step_is_reported():
     model = DemModel("6208", "guessasma_oil", dt=20e-6)
     with pytest.raises(DemUnstableError, match=r"use dt <= .* s"):
         model.advance(5e-3, omega=0.0, F_x=3000.0)
+
+
+@pytest.mark.parametrize("lubricant, T_oil", [("guessasma_oil", 313.15), ("iso_vg68_mineral", 343.15)])
+def test_fused_power_laws_equal_the_film_and_houpert_kernels(lubricant, T_oil):
+    """The refresh writes the Hamrock-Dowson films and Houpert's rolling force as exp(c + p ln u + q ln delta);
+    at every contact they equal kernels.ehl.film_thickness and kernels.torque.houpert_rolling_force at the
+    contact's own load and entrainment speed to rounding (1e-12: a handful of logs and exps)."""
+    from bearing_fmu.kernels.ehl import FILM_HAMROCK_DOWSON, film_thickness
+    from bearing_fmu.kernels.lubricant import lubricant_state
+    from bearing_fmu.kernels.torque import houpert_rolling_force, hysteresis_force, heathcote_force
+    model = DemModel("6208", lubricant)
+    rng = np.random.default_rng(7)
+    Z = model.bearing.Z
+    p = model.par
+    for j in range(Z):  # each ball pressed into the outer groove by its own approach, spinning about z
+        psi = 2.0 * math.pi * j / Z
+        r = p[s.P_RHO_O] + p[s.P_RG_O] + rng.uniform(1e-7, 4e-5)
+        model.balls[s.B_X:s.B_X + 3, j] = (r * math.cos(psi), r * math.sin(psi), 0.0)
+        model.balls[s.B_WX + 2, j] = rng.uniform(1.0, 5000.0)
+    model._initialise(0.0, 0.0, 0.0, 0.0, T_oil)
+    eta, xi, _ = lubricant_state(T_oil, model.lubricant.array)
+    t = model.trib
+    for j in range(Z):
+        Q, u, a, b = t[s.T_Q, 1, j], t[s.T_U, 1, j], t[s.T_A, 1, j], t[s.T_B, 1, j]
+        h_c, h_min = film_thickness(FILM_HAMROCK_DOWSON, eta, xi, p[s.P_E_RED], u, Q, p[s.P_RX_O], p[s.P_RY_O],
+                                    p[s.P_K_O])
+        assert t[s.T_H_MIN, 1, j] == pytest.approx(h_min, rel=1e-12)
+        assert t[s.T_H_C, 1, j] == pytest.approx(h_c, rel=1e-12)
+        F_R = houpert_rolling_force(Q, u, p[s.P_RX_O], p[s.P_RY_O], p[s.P_E_RED], eta, xi)
+        F_hh = (hysteresis_force(Q, b, p[s.P_RX_O], p[s.P_ALPHA_H])
+                + heathcote_force(Q, a, p[s.P_RX_O], p[s.P_F_O], p[s.P_D], t[s.T_MU, 1, j]))
+        assert t[s.T_F_ROLL, 1, j] == pytest.approx(F_R + 0.5 * F_hh, rel=1e-12)
+        a_ref, b_ref, _, p_ref = hertz_contact(Q, p[s.P_RX_O], p[s.P_RY_O], p[s.P_E_RED], p[s.P_K_O], p[s.P_EE_O],
+                                               p[s.P_KK_O])
+        assert (a, b, t[s.T_P_MAX, 1, j]) == pytest.approx((a_ref, b_ref, p_ref), rel=1e-12)

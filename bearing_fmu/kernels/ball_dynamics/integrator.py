@@ -11,6 +11,7 @@ capacitance, Houpert resistances) is refreshed from the state at the start of ev
 """
 import math
 
+import numpy as np
 from bearing_fmu_common.jit import kernel
 
 from ..lubricant import LUB_EPS_R0, clausius_mossotti_constant, lubricant_state
@@ -22,7 +23,7 @@ from .state import (A_DISS_I, A_DISS_O, A_FR, A_VR, B_ALX, B_AX, B_ORBIT, B_VX, 
                     P_REFRESH, P_RG_I, R_AX, R_TIME, R_VX, R_X, ST_CODE, ST_INDEX, ST_STEP, STATUS_CHATTER,
                     STATUS_ENERGY, STATUS_NOT_FINITE, STATUS_OK, STATUS_PENETRATION, T_P_FILM, W_FB, W_FC, W_MB,
                     W_ORBIT, W_VB, W_VC, W_WB)
-from .tribology import race_circle, refresh_contact
+from .tribology import TC_SIZE, race_circle, refresh_contact, tribology_constants
 
 
 @kernel
@@ -71,11 +72,11 @@ def compute_forces(balls, cage, ring, spring, trib, counters, par, omega, F_x, F
 
 
 @kernel
-def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib):
-    """Refresh the tribology of every ball-race contact from the current state."""
+def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
+    """Refresh the tribology of every ball-race contact from the current state (tc: tribology_constants)."""
     for race in range(2):
         for j in range(balls.shape[1]):
-            refresh_contact(race, j, omega, eta, xi, K_cm, rho0, balls, ring, par, trib)
+            refresh_contact(race, j, omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
 
 
 @kernel
@@ -138,7 +139,9 @@ def initialise_accelerations(balls, cage, ring, spring, trib, counters, par, lub
     moving anything: call once after the facade sets positions and velocities."""
     eta, xi, rho0 = lubricant_state(T_oil, lub)
     K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], rho0)
-    refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib)
+    tc = np.empty((TC_SIZE, 2))
+    tribology_constants(par, eta, xi, tc)
+    refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
     Z = balls.shape[1]
     saved = spring.copy()
     for j in range(Z):
@@ -175,6 +178,8 @@ def advance(balls, cage, ring, spring, trib, counters, par, lub, n_steps, dt, om
     """
     eta, xi, rho0 = lubricant_state(T_oil, lub)
     K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], rho0)
+    tc = np.empty((TC_SIZE, 2))
+    tribology_constants(par, eta, xi, tc)
     Z = balls.shape[1]
     refresh = max(int(par[P_REFRESH]), 1)
     chatter_limit = int(par[P_CHATTER])
@@ -186,7 +191,7 @@ def advance(balls, cage, ring, spring, trib, counters, par, lub, n_steps, dt, om
     for n in range(n_steps):
         omega_start = omega0 + (omega1 - omega0) * n / n_steps
         if counters[K_STEP] % refresh == 0:
-            refresh_tribology(omega_start, eta, xi, K_cm, rho0, balls, ring, par, trib)
+            refresh_tribology(omega_start, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
             if kinetic_energy(balls, cage, ring, par) > energy_limit:
                 status[ST_CODE] = STATUS_ENERGY
                 status[ST_STEP] = n

@@ -6,6 +6,14 @@ formula), film parameter, regime, mu(Lambda) and C_n(Lambda) (Guessasma & Machad
 (Farah et al. 2020, kernels.capacitance) and the Houpert resistances (kernels.torque). Between two
 refreshes the contact law uses these values (the boundary damping follows the load every step).
 
+Power laws on the fast path (the prototype of this kernel measured them 2x faster fused): with
+ln u and ln delta of the contact, the Hamrock-Dowson films and Houpert's rolling force are
+exp(c + p ln u + q ln delta), the constants c per race and per lubricant state coming from
+tribology_constants(); Q = K_h delta^1.5 makes W's exponent 1.5 q. They are the formulas of
+kernels.ehl.film_thickness (Hamrock-Dowson) and kernels.torque.houpert_rolling_force written in logs
+(the unit tests check them against those kernels to rounding); the other film formulas call
+kernels.ehl.film_thickness itself.
+
 Kinematics at a contact, in the frame that turns with the ball's orbit about z (angular speed
 w_orbit): the ball surface moves at u_b = (w - w_orbit z) x (D/2) n, the race surface at
 u_r = (omega_race - w_orbit) z x r (r from the ring axis to the contact point) + ring velocity;
@@ -16,13 +24,20 @@ import math
 from bearing_fmu_common.jit import kernel
 
 from ..capacitance import contact_capacitance, contact_permittivity
-from ..ehl import film_parameter, film_thickness, friction_coefficient, lubrication_regime, normal_damping
-from ..torque import heathcote_force, houpert_rolling_force, hysteresis_force, spin_moment
+from ..ehl import (FILM_HAMROCK_DOWSON, film_parameter, film_thickness, friction_coefficient, lubrication_regime,
+                   normal_damping)
+from ..torque import heathcote_force, hysteresis_force, spin_moment
 from .contacts import groove_approach
 from .state import (B_VX, B_WX, B_X, P_ALPHA_E, P_ALPHA_H, P_D, P_E_RED, P_EE_I, P_F_I, P_FILM, P_H_FLOOR,
                     P_HA_I, P_HB_I, P_HP_I, P_K_I, P_KH_I, P_PRESSURE, P_RG_I, P_RHO_I, P_RX_I, P_RY_I, P_SIGMA_I, P_Z_I,
                     R_VX, R_X, T_A, T_B, T_C_N, T_CAP, T_F_ROLL, T_H_C, T_H_MIN, T_LAMBDA, T_M_SPIN, T_MU, T_P_FILM,
                     T_P_MAX, T_Q, T_REGIME, T_SIZE, T_SPIN, T_SRR, T_U)
+
+# rows of the per-race constants of the power laws (tribology_constants)
+TC_LN_HMIN = 0   # ln h_min = TC_LN_HMIN + 0.68 ln u - 0.073 * 1.5 ln delta (Hamrock-Dowson)
+TC_LN_HC = 1     # ln h_c = TC_LN_HC + 0.67 ln u - 0.067 * 1.5 ln delta
+TC_LN_FR = 2     # ln F_R = TC_LN_FR + 0.656 ln u + 0.466 * 1.5 ln delta (Houpert)
+TC_SIZE = 3
 
 # offset between the inner and the outer block of contact parameters (P_*_I -> P_*_O)
 RACE_STRIDE_HERTZ = 5   # P_RX_I .. P_KK_I
@@ -39,11 +54,37 @@ def race_circle(race, ring, par):
 
 
 @kernel
-def refresh_contact(race, j, omega, eta, xi, K_cm, rho0, balls, ring, par, trib):
+def tribology_constants(par, eta, xi, tc):
+    """Fill tc[TC_*, race] for viscosity eta (Pa.s) and pressure-viscosity xi (1/Pa) (> 0).
+
+    With U = eta u/(E' Rx), G = xi E', W = Q/(E' Rx^2), Q = K_h delta^1.5 (SI):
+    h_min = 3.63 Rx (1 - e^(-0.68 k)) U^0.68 G^0.49 W^-0.073, h_c = 2.69 Rx (1 - 0.61 e^(-0.73 k))
+    U^0.67 G^0.53 W^-0.067 (Hamrock & Dowson 1977), F_R = 2.765 E' Rx^2 (Ry/Rx)^0.35 U^0.656 W^0.466 G^0.022
+    (Houpert 1987); everything but u and delta goes into the constants.
+    """
+    E_red = par[P_E_RED]
+    ln_G = math.log(xi * E_red)
+    for race in range(2):
+        h = RACE_STRIDE_HERTZ * race
+        Rx = par[P_RX_I + h]
+        Ry = par[P_RY_I + h]
+        k = par[P_K_I + h]
+        ln_U = math.log(eta / (E_red * Rx))            # U / u
+        ln_W = math.log(par[P_KH_I + race] / (E_red * Rx * Rx))  # W / delta^1.5
+        tc[TC_LN_HMIN, race] = (math.log(3.63 * Rx * (1.0 - math.exp(-0.68 * k))) + 0.68 * ln_U + 0.49 * ln_G
+                                - 0.073 * ln_W)
+        tc[TC_LN_HC, race] = (math.log(2.69 * Rx * (1.0 - 0.61 * math.exp(-0.73 * k))) + 0.67 * ln_U
+                              + 0.53 * ln_G - 0.067 * ln_W)
+        tc[TC_LN_FR, race] = (math.log(2.765 * E_red * Rx * Rx) + 0.35 * math.log(Ry / Rx) + 0.656 * ln_U
+                              + 0.466 * ln_W + 0.022 * ln_G)
+
+
+@kernel
+def refresh_contact(race, j, omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
     """Recompute trib[:, race, j] from the current state (positions and velocities at a step).
 
     omega: inner-ring speed (rad/s); eta (Pa.s), xi (1/Pa), K_cm (m^3/kg), rho0 (kg/m^3): lubricant
-    state.
+    state; tc: its power-law constants (tribology_constants).
     """
     h = RACE_STRIDE_HERTZ * race
     cx, cy, cz, rho = race_circle(race, ring, par)
@@ -106,15 +147,28 @@ def refresh_contact(race, j, omega, eta, xi, K_cm, rho0, balls, ring, par, trib)
     u = 0.5 * math.sqrt((ubx + urx) ** 2 + (uby + ury) ** 2 + (ubz + urz) ** 2)
     slide = math.sqrt((ubx - urx) ** 2 + (uby - ury) ** 2 + (ubz - urz) ** 2)
     spin = wx * nx + wy * ny + (wz - w_race) * nz
-    h_c, h_min = film_thickness(int(par[P_FILM]), eta, xi, E_red, u, Q, Rx, Ry, k)
+    film = int(par[P_FILM])
+    F_R = 0.0
+    if u > 0.0 and eta > 0.0:
+        ln_u = math.log(u)
+        ln_d = math.log(delta)
+        F_R = math.exp(tc[TC_LN_FR, race] + 0.656 * ln_u + 0.699 * ln_d)
+        if film == FILM_HAMROCK_DOWSON:
+            h_min = math.exp(tc[TC_LN_HMIN, race] + 0.68 * ln_u - 0.1095 * ln_d)
+            h_c = math.exp(tc[TC_LN_HC, race] + 0.67 * ln_u - 0.1005 * ln_d)
+        else:
+            h_c, h_min = film_thickness(film, eta, xi, E_red, u, Q, Rx, Ry, k)
+    else:  # no entrainment: no film, no EHL rolling force (as the kernels of ehl and torque)
+        h_c = 0.0
+        h_min = 0.0
     lam = film_parameter(h_min, par[P_SIGMA_I + race])
     mu = friction_coefficient(lam)
     trib[T_MU, race, j] = mu
     trib[T_C_N, race, j] = normal_damping(lam, Q, par[P_ALPHA_E], eta, a, half_d, h_min)
     trib[T_REGIME, race, j] = lubrication_regime(lam)
-    # Houpert forces (kernels.torque); the contact's power as kernels.torque.contact_losses defines it:
+    # Houpert forces (F_R above, the others from kernels.torque); the contact's power as
+    # kernels.torque.contact_losses defines it:
     # EHL 2 F_R u (both surfaces), hysteresis F_h u, Heathcote F_H u, spin M_s |spin|
-    F_R = houpert_rolling_force(Q, u, Rx, Ry, E_red, eta, xi)
     F_hh = hysteresis_force(Q, b, Rx, par[P_ALPHA_H]) + heathcote_force(Q, a, Rx, par[P_F_I + race], D, mu)
     M_s = spin_moment(Q, a, ell_E, mu)
     # per surface: F_R on each, hysteresis and Heathcote split evenly
