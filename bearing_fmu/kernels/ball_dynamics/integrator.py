@@ -32,7 +32,7 @@ def compute_forces(balls, cage, ring, spring, trib, counters, par, omega, F_x, F
 
     Fills work[W_FB..], work[W_MB..], work[W_FC..] (N, N.m) and acc[A_FR..] (N, applied loads F_x,
     F_y, F_z included). Returns (worst penetration ratio, its contact, longest chatter, its contact,
-    sum of all force components): the last is non-finite as soon as any force is.
+    sum of the force components): the last is non-finite as soon as any force is.
     """
     Z = balls.shape[1]
     for r in range(W_FB, W_FC + 3):
@@ -64,10 +64,12 @@ def compute_forces(balls, cage, ring, spring, trib, counters, par, omega, F_x, F
         ball_cage_contact(k, k, balls, cage, par, work, R_sum)
         ball_cage_contact((k + 1) % Z, k, balls, cage, par, work, R_sum)
         cage_guide_contact(k, cage, par, work)
+    # a NaN or inf anywhere (positions, velocities, springs) reaches the contact forces within a step;
+    # the moments follow from the same quantities
     total = acc[A_FR] + acc[A_FR + 1] + acc[A_FR + 2]
-    for r in range(W_FB, W_FC + 3):
-        for j in range(Z):
-            total += work[r, j]
+    for j in range(Z):
+        total += work[W_FB, j] + work[W_FB + 1, j] + work[W_FB + 2, j] + work[W_FC, j] + work[W_FC + 1, j]
+        total += work[W_FC + 2, j]
     return worst_pen, worst_pen_at, worst_chat, worst_chat_at, total
 
 
@@ -188,10 +190,21 @@ def advance(balls, cage, ring, spring, trib, counters, par, lub, n_steps, dt, om
     status[ST_CODE] = STATUS_OK
     status[ST_STEP] = 0
     status[ST_INDEX] = -1
+    # the film's own losses (Houpert) per race, constant between two refreshes
+    film_i = 0.0
+    film_o = 0.0
+    for j in range(Z):
+        film_i += trib[T_P_FILM, 0, j]
+        film_o += trib[T_P_FILM, 1, j]
     for n in range(n_steps):
         omega_start = omega0 + (omega1 - omega0) * n / n_steps
         if counters[K_STEP] % refresh == 0:
             refresh_tribology(omega_start, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
+            film_i = 0.0
+            film_o = 0.0
+            for j in range(Z):
+                film_i += trib[T_P_FILM, 0, j]
+                film_o += trib[T_P_FILM, 1, j]
             if kinetic_energy(balls, cage, ring, par) > energy_limit:
                 status[ST_CODE] = STATUS_ENERGY
                 status[ST_STEP] = n
@@ -199,9 +212,8 @@ def advance(balls, cage, ring, spring, trib, counters, par, lub, n_steps, dt, om
         omega = omega0 + (omega1 - omega0) * (n + 1) / n_steps
         pen, pen_at, chat, chat_at, total = verlet_step(balls, cage, ring, spring, trib, counters, par, omega,
                                                         F_x, F_y, F_z, dt, work, acc)
-        for j in range(Z):  # the film's own losses (Houpert) over this step
-            acc[A_DISS_I] += trib[T_P_FILM, 0, j] * dt
-            acc[A_DISS_O] += trib[T_P_FILM, 1, j] * dt
+        acc[A_DISS_I] += film_i * dt
+        acc[A_DISS_O] += film_o * dt
         status[ST_STEP] = n + 1
         if not math.isfinite(total):
             status[ST_CODE] = STATUS_NOT_FINITE
