@@ -116,6 +116,7 @@ class DemModel:
         self.refresh_fixed = None if refresh is None else int(refresh)
         self.omega_max = DM_N_LIMIT / (b.dm * 1e3) * 2.0 * math.pi / 60.0
         self.par = self._pack(ring_mass, kt_ratio)
+        self.load_limit = self._load_limit()
         Z = b.Z
         self.balls = np.zeros((s.B_SIZE, Z))
         self.cage = np.zeros((s.C_SIZE, Z))
@@ -285,13 +286,15 @@ class DemModel:
             raise InputError(f"t_end = {t_end} s is outside the allowed range ]{t:.9g}, inf[ s (after the current time)")
         check_speed(omega, self.omega_max)
         check_oil_temperature(T_oil)
-        load_limit = self._load_limit()
+        load_limit = self.load_limit
         for name, value in (("F_x", F_x), ("F_y", F_y), ("F_z", F_z)):
             if not (math.isfinite(value) and abs(value) <= load_limit):
                 raise InputError(f"{name} = {value} N is outside the allowed range [{-load_limit:.4g}, {load_limit:.4g}] N "
                                  f"(beyond it even Z equally loaded balls pass p_max = {P_MAX_ERROR / 1e9:.1f} GPa)")
 
     def _load_limit(self):
+        """Largest admissible load (N): Z balls at the contact load of the penetration limit (p_max = 6 GPa);
+        no load distribution shares a load better than equally over all balls."""
         p = self.par
         q = min((p[s.P_KH_I + r] * p[s.P_DELTA_LIM_I + r] ** 1.5) for r in (0, 1))
         return self.bearing.Z * q
@@ -314,8 +317,8 @@ class DemModel:
         interval = float(t_end) - self.time
         dt = self.dt_fixed
         if dt is None:
-            dt = SAFETY * min(self.stable_time_step(F_x, F_y, F_z, self.omega),
-                              self.stable_time_step(F_x, F_y, F_z, omega))
+            # the limit falls with speed (centrifugal load): take the faster end of the interval
+            dt = SAFETY * self.stable_time_step(F_x, F_y, F_z, max(abs(self.omega), abs(omega)))
         n_steps = max(1, math.ceil(interval / dt * (1.0 - 1e-12)))
         dt = interval / n_steps  # land exactly on t_end
         refresh = self.refresh_fixed or max(1, round(REFRESH_INTERVAL / dt))
