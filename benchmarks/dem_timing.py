@@ -80,8 +80,8 @@ def _race_contacts(n, balls, ring, spring, trib, counters, par, work, acc, dt):
             cx, cy, cz, rho = race_circle(race, ring, par)
             for j in range(balls.shape[1]):
                 ball_race_contact(race, j, OMEGA, rho, cx, cy, cz, par[s.P_RG_I + race], par[s.P_KH_I + race],
-                                  1.0 / par[s.P_DELTA_LIM_I + race], rate_inv, balls, ring, spring, trib, counters,
-                                  par, work, acc, dt)
+                                  1.0 / par[s.P_DELTA_LIM_I + race], rate_inv, 2.0 * par[s.P_V_REG] / par[s.P_D],
+                                  balls, ring, spring, trib, counters, par, work, acc, dt)
 
 
 @njit

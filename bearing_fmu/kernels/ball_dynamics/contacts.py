@@ -30,7 +30,7 @@ from bearing_fmu_common.jit import kernel
 # The contact functions are inlined into the force loop (numba IR inlining): called through numba's
 # ordinary calls, the arrays travel as exploded structs and the 18 contacts per step cost ~50 % more.
 
-from .state import A_DISS_I, A_FR, A_VR, B_X, K_SIZE, P_ALPHA_E, P_D, P_KT_RATIO, P_V_REG
+from .state import A_DISS_I, A_FR, A_VR, B_X, K_SIZE, P_ALPHA_E, P_D, P_KT_RATIO
 from .state import (S_INNER, T_C_N, T_F_ROLL, T_M_SPIN, T_MU, T_REGIME, W_FB, W_MB, W_ORBIT, W_VB, W_WB)
 from ..ehl import REGIME_BOUNDARY
 
@@ -113,15 +113,16 @@ def tangential_spring(spring, row, j, nx, ny, nz, vtx, vty, vtz, dt, kt, f_limit
 
 
 @kernel(inline="always")
-def ball_race_contact(race, j, omega, rho, cx, cy, cz, rg, K_h, inv_delta_lim, rate_inv, balls, ring, spring, trib,
-                      counters, par, work, acc, dt):
+def ball_race_contact(race, j, omega, rho, cx, cy, cz, rg, K_h, inv_delta_lim, rate_inv, w_reg, balls, ring, spring,
+                      trib, counters, par, work, acc, dt):
     """Forces of the contact of ball j with one race, added to the work arrays.
 
     race 0 inner (turning at omega rad/s about z through the ring centre (cx, cy), translating with the
     predicted ring velocity acc[A_VR:]), 1 outer (fixed). (cx, cy, cz), rho, rg: the groove's
     curvature-centre circle and (f - 1/2) D (m); K_h (N/m^1.5); inv_delta_lim: 1 / penetration limit (1/m);
-    rate_inv = 4 dt / I (1/(N.m.s)), the inverse of the largest viscous rate of a regularised moment. Uses the positions in balls/ring and the predicted velocities in work; updates the spring, the
-    chatter counter and the dissipated energy acc[A_DISS_I + race] (J); dt (s).
+    rate_inv = 4 dt / I (1/(N.m.s)), the inverse of the largest viscous rate of a regularised moment;
+    w_reg = v_reg / (D/2) (rad/s). Uses the positions in balls/ring and the predicted velocities in work;
+    updates the spring, the chatter counter and the dissipated energy acc[A_DISS_I + race] (J); dt (s).
     Returns (delta / delta_lim, chatter count): the monitor's two per-contact indicators.
     """
     Z = balls.shape[1]
@@ -206,7 +207,6 @@ def ball_race_contact(race, j, omega, rho, cx, cy, cz, rg, K_h, inv_delta_lim, r
     # below the regularisation speed a resistance acts as a viscous damper M/w_reg; its rate is kept
     # within a quarter of I/dt so that the explicit step cannot overshoot (with four resistances on the
     # ball their sum stays below I/dt: no sign reversal, no chatter)
-    w_reg = par[P_V_REG] / half_d
     f_roll = trib[T_F_ROLL, race, j] * half_d
     m_roll = f_roll / max(q, w_reg, f_roll * rate_inv)
     spin = wx * nx + wy * ny + (wz - w_race) * nz

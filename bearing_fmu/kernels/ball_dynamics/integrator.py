@@ -20,7 +20,7 @@ from .contacts import ball_race_contact
 from .monitor import kinetic_energy
 from .state import (A_DISS_I, A_DISS_O, A_FR, A_VR, B_ALX, B_AX, B_ORBIT, B_VX, B_WX, B_X, C_AX, C_VX, C_X, K_STEP,
                     P_CHATTER, P_D, P_DELTA_LIM_I, P_I_BALL, P_KH_I, P_M_BALL, P_M_CAGE, P_M_RING, P_R_CAGE,
-                    P_REFRESH, P_RG_I, R_AX, R_TIME, R_VX, R_X, ST_CODE, ST_INDEX, ST_STEP, STATUS_CHATTER,
+                    P_REFRESH, P_RG_I, P_V_REG, R_AX, R_TIME, R_VX, R_X, ST_CODE, ST_INDEX, ST_STEP, STATUS_CHATTER,
                     STATUS_ENERGY, STATUS_NOT_FINITE, STATUS_OK, STATUS_PENETRATION, T_P_FILM, W_FB, W_FC, W_MB,
                     W_ORBIT, W_VB, W_VC, W_WB)
 from .tribology import TC_SIZE, race_circle, refresh_contact, tribology_constants
@@ -47,12 +47,14 @@ def compute_forces(balls, cage, ring, spring, trib, counters, par, omega, F_x, F
     worst_chat_at = -1
     R_sum = 0.5 * par[P_D] + par[P_R_CAGE]
     rate_inv = 4.0 * dt / par[P_I_BALL]
+    w_reg = 2.0 * par[P_V_REG] / par[P_D]
     for race in range(2):
         cx, cy, cz, rho = race_circle(race, ring, par)
         inv_lim = 1.0 / par[P_DELTA_LIM_I + race]
         for j in range(Z):
             pen, chat = ball_race_contact(race, j, omega, rho, cx, cy, cz, par[P_RG_I + race], par[P_KH_I + race],
-                                          inv_lim, rate_inv, balls, ring, spring, trib, counters, par, work, acc, dt)
+                                          inv_lim, rate_inv, w_reg, balls, ring, spring, trib, counters, par, work,
+                                          acc, dt)
             if pen > worst_pen:
                 worst_pen = pen
                 worst_pen_at = race * Z + j
@@ -196,10 +198,13 @@ def advance(balls, cage, ring, spring, trib, counters, par, lub, n_steps, dt, om
     for j in range(Z):
         film_i += trib[T_P_FILM, 0, j]
         film_o += trib[T_P_FILM, 1, j]
+    d_omega = (omega1 - omega0) / n_steps
+    # steps until the next refresh (the phase carries over between calls through the step counter)
+    countdown = (refresh - counters[K_STEP] % refresh) % refresh
     for n in range(n_steps):
-        omega_start = omega0 + (omega1 - omega0) * n / n_steps
-        if counters[K_STEP] % refresh == 0:
-            refresh_tribology(omega_start, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
+        if countdown == 0:
+            countdown = refresh
+            refresh_tribology(omega0 + d_omega * n, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
             film_i = 0.0
             film_o = 0.0
             for j in range(Z):
@@ -209,7 +214,8 @@ def advance(balls, cage, ring, spring, trib, counters, par, lub, n_steps, dt, om
                 status[ST_CODE] = STATUS_ENERGY
                 status[ST_STEP] = n
                 return
-        omega = omega0 + (omega1 - omega0) * (n + 1) / n_steps
+        countdown -= 1
+        omega = omega0 + d_omega * (n + 1)
         pen, pen_at, chat, chat_at, total = verlet_step(balls, cage, ring, spring, trib, counters, par, omega,
                                                         F_x, F_y, F_z, dt, work, acc)
         acc[A_DISS_I] += film_i * dt
