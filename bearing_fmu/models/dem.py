@@ -117,6 +117,7 @@ class DemModel:
         self.omega_max = DM_N_LIMIT / (b.dm * 1e3) * 2.0 * math.pi / 60.0
         self.par = self._pack(ring_mass, kt_ratio)
         self.load_limit = self._load_limit()
+        self._rho_outer = float(self.par[s.P_RHO_O])  # at the nominal clearance
         Z = b.Z
         self.balls = np.zeros((s.B_SIZE, Z))
         self.cage = np.zeros((s.C_SIZE, Z))
@@ -280,12 +281,15 @@ class DemModel:
         return critical_time_step(self.par, Q_i, Q_o, 0.1 * max(Q_i.max(), Q_o.max()))
 
     # -- inputs --------------------------------------------------------------------------------
-    def _check(self, t_end, omega, F_x, F_y, F_z, T_oil):
+    def _check(self, t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal):
         t = self.time
         if not (math.isfinite(t_end) and t_end > t):
             raise InputError(f"t_end = {t_end} s is outside the allowed range ]{t:.9g}, inf[ s (after the current time)")
         check_speed(omega, self.omega_max)
         check_oil_temperature(T_oil)
+        limit = 0.02 * self.bearing.D
+        if not (math.isfinite(dPd_thermal) and abs(dPd_thermal) <= limit):
+            raise InputError(f"dPd_thermal = {dPd_thermal} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m")
         load_limit = self.load_limit
         for name, value in (("F_x", F_x), ("F_y", F_y), ("F_z", F_z)):
             if not (math.isfinite(value) and abs(value) <= load_limit):
@@ -305,15 +309,19 @@ class DemModel:
         return float(self.ring[s.R_TIME])
 
     # -- stepping ------------------------------------------------------------------------------
-    def advance(self, t_end, omega=None, F_x=0.0, F_y=0.0, F_z=0.0, T_oil=T_OIL_DEFAULT):
+    def advance(self, t_end, omega=None, F_x=0.0, F_y=0.0, F_z=0.0, T_oil=T_OIL_DEFAULT, dPd_thermal=0.0):
         """Integrate to t_end (s): inner-ring speed from its current value linearly to omega (rad/s; None =
-        hold), loads F_x, F_y, F_z (N) on the inner ring, oil temperature T_oil (K). Returns outputs().
+        hold), loads F_x, F_y, F_z (N) on the inner ring, oil temperature T_oil (K), change of diametral
+        clearance dPd_thermal (m, added to Pd, negative = tighter: the outer groove circle moves by half of
+        it; the Hertz constants stay those of the nominal geometry, as in the quasi-static fidelity).
+        Returns outputs().
 
         Raises InputError for inputs out of range, DemUnstableError when the monitor stops the run (the
         state is then left at the offending step: restore a saved state to retry)."""
         omega = self.omega if omega is None else float(omega)
-        F_x, F_y, F_z, T_oil = float(F_x), float(F_y), float(F_z), float(T_oil)
-        self._check(float(t_end), omega, F_x, F_y, F_z, T_oil)
+        F_x, F_y, F_z, T_oil, dPd_thermal = float(F_x), float(F_y), float(F_z), float(T_oil), float(dPd_thermal)
+        self._check(float(t_end), omega, F_x, F_y, F_z, T_oil, dPd_thermal)
+        self.par[s.P_RHO_O] = self._rho_outer + 0.5 * dPd_thermal
         interval = float(t_end) - self.time
         dt = self.dt_fixed
         if dt is None:

@@ -166,10 +166,26 @@ def test_state_round_trip_reproduces_the_run(running_6208):
 
 @pytest.mark.parametrize("kwargs, word", [
     (dict(omega=math.nan), "omega"), (dict(omega=1e6), "omega"), (dict(F_x=math.nan), "F_x"),
-    (dict(F_y=1e9), "F_y"), (dict(T_oil=-5.0), "T_oil")])
+    (dict(F_y=1e9), "F_y"), (dict(T_oil=-5.0), "T_oil"), (dict(dPd_thermal=math.nan), "dPd_thermal"),
+    (dict(dPd_thermal=1e-3), "dPd_thermal")])
 def test_bad_inputs_are_rejected_with_their_range(running_6208, kwargs, word):
     with pytest.raises(InputError, match=f"{word} = .* allowed range"):
         running_6208.advance(running_6208.time + 1e-4, **kwargs)
+
+
+def test_thermal_clearance_change_acts_like_the_clearance():
+    """dPd_thermal = +12.6 um on a P_d = 0 bearing loads the balls as P_d = 12.6 um does (same groove
+    circles; the Hertz constants differ only through the free contact angle's effect on R_x: < 0.3 %).
+    Compared in slow rolling (100 rad/s), where the centrifugal force seats the unloaded balls on the outer
+    race: at rest they float wherever they were (no gravity), which differs between the two set-ups."""
+    loads = []
+    for Pd, dPd in ((12.6e-6, 0.0), (0.0, 12.6e-6)):
+        model = DemModel("6208", "guessasma_oil", Pd=Pd)
+        model.advance(2e-3, omega=0.0, F_x=3000.0, dPd_thermal=dPd)
+        model.advance(7e-3, omega=100.0, F_x=3000.0, dPd_thermal=dPd)
+        model.advance(15e-3, omega=100.0, F_x=3000.0, dPd_thermal=dPd)
+        loads.append(model.contacts()["Q_inner"])
+    assert np.max(np.abs(loads[0] - loads[1])) < 0.005 * np.max(loads[0])
 
 
 @pytest.mark.parametrize("dt", [-1e-6, 0.0, math.nan])
