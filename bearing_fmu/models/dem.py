@@ -403,6 +403,28 @@ class DemModel:
                 result[name + suffix] = self._Q[race].copy() if row is None else self.trib[row, race].copy()
         return result
 
+    def record(self, t_end, interval, omega=None, **inputs):
+        """Advance to t_end (s) in steps of `interval` (s), recording after each: returns a dict of numpy arrays,
+        't' (n,) and every bearing output (n,), and under 'contacts' a dict of every per-ball/per-contact
+        array of contacts() (n, Z).
+        The speed goes linearly from its current value to omega (rad/s; None = hold) over the whole record;
+        the other inputs (F_x, F_y, F_z, T_oil, dPd_thermal) are held."""
+        if not (math.isfinite(interval) and interval > 0.0):
+            raise InputError(f"interval = {interval} s is outside the allowed range ]0, inf[ s")
+        t0, omega0 = self.time, self.omega
+        omega = omega0 if omega is None else float(omega)
+        n = max(1, math.ceil((float(t_end) - t0) / interval - 1e-9))
+        rows = []
+        for k in range(1, n + 1):
+            t = min(t0 + k * interval, float(t_end))
+            out = self.advance(t, omega=omega0 + (omega - omega0) * (t - t0) / (float(t_end) - t0), **inputs)
+            rows.append((t, out, self.contacts()))
+        result = {"t": np.array([r[0] for r in rows])}
+        for name in rows[0][1]:
+            result[name] = np.array([r[1][name] for r in rows])
+        result["contacts"] = {name: np.array([r[2][name] for r in rows]) for name in rows[0][2]}
+        return result
+
     # -- state (FMU get/set state, rollback) ---------------------------------------------------
     STATE_ARRAYS = ("balls", "cage", "ring", "spring", "trib", "counters")
 

@@ -235,3 +235,19 @@ def test_fused_power_laws_equal_the_film_and_houpert_kernels(lubricant, T_oil):
         a_ref, b_ref, _, p_ref = hertz_contact(Q, p[s.P_RX_O], p[s.P_RY_O], p[s.P_E_RED], p[s.P_K_O], p[s.P_EE_O],
                                                p[s.P_KK_O])
         assert (a, b, t[s.T_P_MAX, 1, j]) == pytest.approx((a_ref, b_ref, p_ref), rel=1e-12)
+
+
+def test_record_returns_time_series_of_outputs_and_contacts():
+    """record() samples every interval: times, bearing outputs and per-ball arrays (n, Z) under 'contacts'; the last
+    sample equals a direct advance() from the same state."""
+    model = DemModel("6208", "guessasma_oil")
+    model.advance(1e-3, omega=0.0, F_x=3000.0)
+    saved = model.get_state()
+    rec = model.record(1.5e-3, 1e-4, omega=10.0, F_x=3000.0)
+    np.testing.assert_allclose(rec["t"], np.linspace(1.1e-3, 1.5e-3, 5), rtol=1e-12)
+    assert rec["contacts"]["Q_inner"].shape == (5, model.bearing.Z) and rec["omega_cage"].shape == (5,)
+    assert rec["Lambda_outer"][-1] == model.outputs()["Lambda_outer"]
+    model.set_state(saved)
+    for k in range(1, 6):
+        out = model.advance(1e-3 + k * 1e-4, omega=10.0 * k / 5, F_x=3000.0)
+    assert out["Q_max_inner"] == rec["Q_max_inner"][-1]
