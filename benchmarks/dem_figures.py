@@ -8,6 +8,7 @@ the 6208, P_d = 0, F_r = 3 kN, guessasma_oil.
 (d) that ball's capacitance (inner and outer contacts in series) against its azimuth.
 Run: python -m benchmarks.dem_figures -> docs/reports/dem_6208.png
 """
+
 import math
 
 import numpy as np
@@ -32,8 +33,10 @@ def main():
     steady = record["contacts"]
 
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+
     fig, ax = plt.subplots(2, 2, figsize=(11, 7.5))
     t_ms = start["t"] * 1e3
     ax[0, 0].plot(t_ms, np.abs(start["omega_ball"]), label="ball spin, fixed frame (most loaded ball)")
@@ -60,8 +63,11 @@ def main():
     c_i, c_o = steady["C_inner"][:, 0], steady["C_outer"][:, 0]
     c_ball = np.where((c_i > 0) & (c_o > 0), c_i * c_o / np.where(c_i + c_o > 0, c_i + c_o, 1.0), 0.0)
     ax[1, 1].plot(psi[order], c_ball[order] * 1e12)
-    ax[1, 1].set(xlabel="azimuth of ball 0 (deg)", ylabel="pF",
-                 title=f"(d) capacitance of the tracked ball (bearing {record['C_bearing'].mean() * 1e12:.1f} pF)")
+    ax[1, 1].set(
+        xlabel="azimuth of ball 0 (deg)",
+        ylabel="pF",
+        title=f"(d) capacitance of the tracked ball (bearing {record['C_bearing'].mean() * 1e12:.1f} pF)",
+    )
     for a in ax.flat:
         a.grid(True, alpha=0.3)
     fig.tight_layout()

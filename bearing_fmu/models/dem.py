@@ -14,6 +14,7 @@ Settling aids for quasi-static comparisons (Guessasma 2018 appendix A): drive sl
 so that centrifugal and film effects vanish; the ring's response to a load step decays in about a
 millisecond (hysteretic damping); compare after a few milliseconds.
 """
+
 import math
 import tomllib
 
@@ -24,8 +25,13 @@ from ..kernels.ball_dynamics import state as s
 from ..kernels.ball_dynamics.monitor import critical_time_step
 from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_loads
 from ..kernels.geometry import ball_mass, curvature_radii, free_contact_angle, rolling_kinematics
-from ..kernels.hertz import (hertz_coefficients_approx, hertz_coefficients_exact, hertz_contact, hertz_stiffness,
-                             reduced_modulus)
+from ..kernels.hertz import (
+    hertz_coefficients_approx,
+    hertz_coefficients_exact,
+    hertz_contact,
+    hertz_stiffness,
+    reduced_modulus,
+)
 from ..kernels.torque import ALPHA_HYSTERESIS_STEEL
 from ..model import DM_N_LIMIT, P_MAX_ERROR, InputError, check_oil_temperature, check_speed
 from ..params import load_bearing, load_lubricant
@@ -34,25 +40,24 @@ from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
 # PA66 cage balls when the bearing file has no [material.cage] (Farah 2020: E_c = 3.3 GPa, nu_c = 0.41)
 CAGE_E = 3.3e9
 CAGE_NU = 0.41
-CAGE_RHO = 1140.0          # kg/m^3, typical PA66 (estimated)
-CAGE_GAP_OVER_D = 0.0026   # pocket play of an estimated cage ball: the seeds' 6208 has 0.033 mm for D = 12.6 mm
-ALPHA_E = 0.08             # s/m, hysteretic damping constant of steel (Guessasma 2018 eq. 4)
-KT_RATIO = 2.0 / 3.0       # tangential / normal stiffness, lower end of the seeds' [2/3, 1]
-V_REG = 1e-3               # m/s, speed below which the resistances' directions are regularised
-SAFETY = 0.5               # default time step over the stability limit of the stiffest pair
-REFRESH_INTERVAL = 20e-6   # s, default simulated time between two tribology refreshes
+CAGE_RHO = 1140.0  # kg/m^3, typical PA66 (estimated)
+CAGE_GAP_OVER_D = 0.0026  # pocket play of an estimated cage ball: the seeds' 6208 has 0.033 mm for D = 12.6 mm
+ALPHA_E = 0.08  # s/m, hysteretic damping constant of steel (Guessasma 2018 eq. 4)
+KT_RATIO = 2.0 / 3.0  # tangential / normal stiffness, lower end of the seeds' [2/3, 1]
+V_REG = 1e-3  # m/s, speed below which the resistances' directions are regularised
+SAFETY = 0.5  # default time step over the stability limit of the stiffest pair
+REFRESH_INTERVAL = 20e-6  # s, default simulated time between two tribology refreshes
 # consecutive slipping reversals of one spring that count as chatter: sustained chatter (6208 at 3 kN,
 # 500 rad/s, dt >= 7 us) reverses for hundreds of steps and multiplies the torque; a lightly loaded ball
 # entering the load zone during a start-up reverses for up to ~15 steps without changing the results
 # (cage speed and torque equal within 0.05 % at half the step)
 CHATTER_STEPS = 50
-ENERGY_FACTOR = 10.0       # kinetic-energy bound: this factor x (pure-rolling energy + load x groove clearance)
-T_OIL_DEFAULT = 313.15     # K
+ENERGY_FACTOR = 10.0  # kinetic-energy bound: this factor x (pure-rolling energy + load x groove clearance)
+T_OIL_DEFAULT = 313.15  # K
 
 STATUS_WORDS = {
     s.STATUS_NOT_FINITE: "a force became NaN or infinite",
-    s.STATUS_PENETRATION: "a ball-race penetration passed the physical limit (Hertz pressure above the material "
-                          "limit)",
+    s.STATUS_PENETRATION: "a ball-race penetration passed the physical limit (Hertz pressure above the material limit)",
     s.STATUS_ENERGY: "the kinetic energy grew beyond the bound of the inputs (energy growth without input)",
     s.STATUS_CHATTER: "a tangential spring chattered against its Coulomb limit (slip direction reversing every step)",
 }
@@ -79,7 +84,7 @@ def _ring_mass(bearing):
     bore = float(geometry["bore"]["value"]) if "bore" in geometry else bearing.dm - 2.0 * bearing.D
     width = float(geometry["width"]["value"]) if "width" in geometry else 1.5 * bearing.D
     groove_bottom = bearing.dm - bearing.D
-    return bearing.ring.rho * 0.25 * math.pi * (groove_bottom ** 2 - bore ** 2) * width
+    return bearing.ring.rho * 0.25 * math.pi * (groove_bottom**2 - bore**2) * width
 
 
 class DemModel:
@@ -94,8 +99,17 @@ class DemModel:
     kt_ratio: tangential/normal stiffness (-).
     """
 
-    def __init__(self, bearing="6208", lubricant="guessasma_oil", scene=None, dt=None, refresh=None, Pd=None,
-                 ring_mass=None, kt_ratio=KT_RATIO):
+    def __init__(
+        self,
+        bearing="6208",
+        lubricant="guessasma_oil",
+        scene=None,
+        dt=None,
+        refresh=None,
+        Pd=None,
+        ring_mass=None,
+        kt_ratio=KT_RATIO,
+    ):
         self.scene = scene or Scene(name="dem")
         self.bearing = b = load_bearing(bearing)
         self.lubricant = load_lubricant(lubricant)
@@ -131,8 +145,8 @@ class DemModel:
         self._work = np.zeros((s.W_SIZE, Z))
         self._acc = np.zeros(s.A_SIZE)
         self._Q = np.zeros((2, Z))
-        self.dt = math.nan      # time step of the last advance() call (s)
-        self.refresh = 0        # its tribology refresh interval (steps)
+        self.dt = math.nan  # time step of the last advance() call (s)
+        self.refresh = 0  # its tribology refresh interval (steps)
         self._place_bodies()
         self._initialise(0.0, 0.0, 0.0, 0.0, T_OIL_DEFAULT)
 
@@ -190,11 +204,13 @@ class DemModel:
         half_pocket = pitch * 2.0 * math.sin(0.5 * math.pi / b.Z)  # ball centre to the mid-angle point
         R_z = b.cage_ball_radius if b.cage_ball_radius > 0.0 else half_pocket - 0.5 * D - CAGE_GAP_OVER_D * D
         if R_z <= 0.0:
-            raise InputError(f"bearing '{b.name}': no room for cage balls between {b.Z} balls of {D} m "
-                             f"(estimated cage-ball radius {R_z:.3g} m)")
-        E_star = 1.0 / ((1.0 - b.ball.nu ** 2) / b.ball.E + (1.0 - nu_c ** 2) / E_c)
+            raise InputError(
+                f"bearing '{b.name}': no room for cage balls between {b.Z} balls of {D} m "
+                f"(estimated cage-ball radius {R_z:.3g} m)"
+            )
+        E_star = 1.0 / ((1.0 - b.ball.nu**2) / b.ball.E + (1.0 - nu_c**2) / E_c)
         R_eq = 0.5 * D * R_z / (0.5 * D + R_z)
-        p[s.P_M_CAGE] = rho_c * 4.0 / 3.0 * math.pi * R_z ** 3
+        p[s.P_M_CAGE] = rho_c * 4.0 / 3.0 * math.pi * R_z**3
         p[s.P_R_CAGE] = R_z
         p[s.P_K_CB] = 4.0 / 3.0 * E_star * math.sqrt(R_eq)
         p[s.P_K_GUIDE] = 4.0 / 3.0 * E_star * math.sqrt(R_z)
@@ -249,16 +265,30 @@ class DemModel:
         for j in range(Z):
             r, z = self._rest
             psi = 2.0 * math.pi * j / Z
-            self.balls[s.B_X:s.B_X + 3, j] = (r * math.cos(psi), r * math.sin(psi), z)
+            self.balls[s.B_X : s.B_X + 3, j] = (r * math.cos(psi), r * math.sin(psi), z)
             psi_c = psi + math.pi / Z
             R = self.par[s.P_R_GUIDE]
-            self.cage[s.C_X:s.C_X + 3, j] = (R * math.cos(psi_c), R * math.sin(psi_c), self.par[s.P_Z_GUIDE])
+            self.cage[s.C_X : s.C_X + 3, j] = (R * math.cos(psi_c), R * math.sin(psi_c), self.par[s.P_Z_GUIDE])
         self.omega = 0.0
 
     def _initialise(self, omega, F_x, F_y, F_z, T_oil):
-        dyn.initialise_accelerations(self.balls, self.cage, self.ring, self.spring, self.trib, self.counters,
-                                     self.par, self.lubricant.array, omega, F_x, F_y, F_z, T_oil, self._work,
-                                     self._acc)
+        dyn.initialise_accelerations(
+            self.balls,
+            self.cage,
+            self.ring,
+            self.spring,
+            self.trib,
+            self.counters,
+            self.par,
+            self.lubricant.array,
+            omega,
+            F_x,
+            F_y,
+            F_z,
+            T_oil,
+            self._work,
+            self._acc,
+        )
 
     # -- time step -----------------------------------------------------------------------------
     def stable_time_step(self, F_x=0.0, F_y=0.0, F_z=0.0, omega=None, include_state=True):
@@ -274,7 +304,7 @@ class DemModel:
             self._Q[:] = 0.0
         alpha = max(self.par[s.P_ALPHA0], math.radians(5.0))
         cage_speed = rolling_kinematics(abs(omega), b.D, b.dm, self.par[s.P_ALPHA0])[0]
-        F_c = 0.5 * self.par[s.P_M_BALL] * b.dm * cage_speed ** 2
+        F_c = 0.5 * self.par[s.P_M_BALL] * b.dm * cage_speed**2
         estimate = 5.0 * math.hypot(F_x, F_y) / b.Z + abs(F_z) / (b.Z * math.sin(alpha)) + F_c
         Q_i = np.maximum(self._Q[0], estimate)
         Q_o = np.maximum(self._Q[1], estimate)
@@ -284,17 +314,23 @@ class DemModel:
     def _check(self, t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal):
         t = self.time
         if not (math.isfinite(t_end) and t_end > t):
-            raise InputError(f"t_end = {t_end} s is outside the allowed range ]{t:.9g}, inf[ s (after the current time)")
+            raise InputError(
+                f"t_end = {t_end} s is outside the allowed range ]{t:.9g}, inf[ s (after the current time)"
+            )
         check_speed(omega, self.omega_max)
         check_oil_temperature(T_oil)
         limit = 0.02 * self.bearing.D
         if not (math.isfinite(dPd_thermal) and abs(dPd_thermal) <= limit):
-            raise InputError(f"dPd_thermal = {dPd_thermal} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m")
+            raise InputError(
+                f"dPd_thermal = {dPd_thermal} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m"
+            )
         load_limit = self.load_limit
         for name, value in (("F_x", F_x), ("F_y", F_y), ("F_z", F_z)):
             if not (math.isfinite(value) and abs(value) <= load_limit):
-                raise InputError(f"{name} = {value} N is outside the allowed range [{-load_limit:.4g}, {load_limit:.4g}] N "
-                                 f"(beyond it even Z equally loaded balls pass p_max = {P_MAX_ERROR / 1e9:.1f} GPa)")
+                raise InputError(
+                    f"{name} = {value} N is outside the allowed range [{-load_limit:.4g}, {load_limit:.4g}] N "
+                    f"(beyond it even Z equally loaded balls pass p_max = {P_MAX_ERROR / 1e9:.1f} GPa)"
+                )
 
     def _load_limit(self):
         """Largest admissible load (N): Z balls at the contact load of the penetration limit (p_max = 6 GPa);
@@ -334,16 +370,46 @@ class DemModel:
         self.dt, self.refresh = dt, refresh
         omega0 = self.omega
         orbit0 = float(self.balls[s.B_ORBIT].sum())
-        dyn.advance(self.balls, self.cage, self.ring, self.spring, self.trib, self.counters, self.par,
-                    self.lubricant.array, n_steps, dt, omega0, omega, F_x, F_y, F_z, T_oil,
-                    self._energy_limit(max(abs(omega0), abs(omega)), math.sqrt(F_x ** 2 + F_y ** 2 + F_z ** 2)),
-                    self._work, self._acc, self.status)
+        dyn.advance(
+            self.balls,
+            self.cage,
+            self.ring,
+            self.spring,
+            self.trib,
+            self.counters,
+            self.par,
+            self.lubricant.array,
+            n_steps,
+            dt,
+            omega0,
+            omega,
+            F_x,
+            F_y,
+            F_z,
+            T_oil,
+            self._energy_limit(max(abs(omega0), abs(omega)), math.sqrt(F_x**2 + F_y**2 + F_z**2)),
+            self._work,
+            self._acc,
+            self.status,
+        )
         done = int(self.status[s.ST_STEP])
         self.omega = omega0 + (omega - omega0) * done / n_steps
         if self.status[s.ST_CODE] != s.STATUS_OK:
             self._raise_unstable(dt, F_x, F_y, F_z)
-        bearing_outputs(self.balls, self.cage, self.ring, self.trib, self.par, self._acc, self.omega, interval,
-                        orbit0, self.scene.background_capacitance, self._Q, self.out)
+        bearing_outputs(
+            self.balls,
+            self.cage,
+            self.ring,
+            self.trib,
+            self.par,
+            self._acc,
+            self.omega,
+            interval,
+            orbit0,
+            self.scene.background_capacitance,
+            self._Q,
+            self.out,
+        )
         return self.outputs()
 
     def _energy_limit(self, omega, force):
@@ -352,7 +418,7 @@ class DemModel:
         b, p = self.bearing, self.par
         cage_speed, ball_rel, _, _ = rolling_kinematics(omega, b.D, b.dm, p[s.P_ALPHA0])
         v = 0.5 * b.dm * cage_speed
-        rolling = b.Z * (0.5 * (p[s.P_M_BALL] + p[s.P_M_CAGE]) * v * v + 0.5 * p[s.P_I_BALL] * ball_rel ** 2)
+        rolling = b.Z * (0.5 * (p[s.P_M_BALL] + p[s.P_M_CAGE]) * v * v + 0.5 * p[s.P_I_BALL] * ball_rel**2)
         A = (b.f_i + b.f_o - 1.0) * b.D
         return ENERGY_FACTOR * (rolling + force * A) + 1e-6
 
@@ -366,23 +432,43 @@ class DemModel:
         # the state at the stop is already disturbed: judge from the inputs alone
         limit = self.stable_time_step(F_x, F_y, F_z, self.omega, include_state=False)
         suggestion = min(0.5 * dt, SAFETY * limit) if math.isfinite(limit) else 0.5 * dt
-        raise DemUnstableError(f"DEM stopped at t = {self.time:.9g} s (step {step} of the interval){where}: "
-                               f"{STATUS_WORDS[code]}. dt = {dt:.3g} s is too large here; use dt <= {suggestion:.3g} s "
-                               f"(stability limit of the stiffest contact pair at these inputs {limit:.3g} s)")
+        raise DemUnstableError(
+            f"DEM stopped at t = {self.time:.9g} s (step {step} of the interval){where}: "
+            f"{STATUS_WORDS[code]}. dt = {dt:.3g} s is too large here; use dt <= {suggestion:.3g} s "
+            f"(stability limit of the stiffest contact pair at these inputs {limit:.3g} s)"
+        )
 
     # -- outputs -------------------------------------------------------------------------------
     def outputs(self):
         """Bearing-level outputs of the last advance() (names as the quasi-static fidelity), SI units."""
         o = self.out
         result = dict(
-            omega_cage=o[s.O_OMEGA_CAGE], omega_ball=o[s.O_OMEGA_BALL], omega_ball_cage=o[s.O_OMEGA_BALL_REL],
-            Q_max_inner=o[s.O_QMAX_I], Q_max_outer=o[s.O_QMAX_O], p_max=o[s.O_PMAX],
-            Lambda_inner=o[s.O_LAMBDA_I], Lambda_outer=o[s.O_LAMBDA_O],
-            h_min_inner=o[s.O_HMIN_I], h_min_outer=o[s.O_HMIN_O], h_c_inner=o[s.O_HC_I], h_c_outer=o[s.O_HC_O],
-            regime=int(o[s.O_REGIME]), C_bearing=o[s.O_C_BEARING], n_loaded=int(o[s.O_N_LOADED]),
-            P_loss=o[s.O_P_LOSS], Q_inner_ring=o[s.O_Q_INNER_RING], Q_outer_ring=o[s.O_Q_OUTER_RING],
-            torque=o[s.O_TORQUE], cage_slip=o[s.O_CAGE_SLIP], SRR_max=o[s.O_SRR_MAX], kinetic_energy=o[s.O_KINETIC],
-            x=float(self.ring[s.R_X]), y=float(self.ring[s.R_X + 1]), z=float(self.ring[s.R_X + 2]))
+            omega_cage=o[s.O_OMEGA_CAGE],
+            omega_ball=o[s.O_OMEGA_BALL],
+            omega_ball_cage=o[s.O_OMEGA_BALL_REL],
+            Q_max_inner=o[s.O_QMAX_I],
+            Q_max_outer=o[s.O_QMAX_O],
+            p_max=o[s.O_PMAX],
+            Lambda_inner=o[s.O_LAMBDA_I],
+            Lambda_outer=o[s.O_LAMBDA_O],
+            h_min_inner=o[s.O_HMIN_I],
+            h_min_outer=o[s.O_HMIN_O],
+            h_c_inner=o[s.O_HC_I],
+            h_c_outer=o[s.O_HC_O],
+            regime=int(o[s.O_REGIME]),
+            C_bearing=o[s.O_C_BEARING],
+            n_loaded=int(o[s.O_N_LOADED]),
+            P_loss=o[s.O_P_LOSS],
+            Q_inner_ring=o[s.O_Q_INNER_RING],
+            Q_outer_ring=o[s.O_Q_OUTER_RING],
+            torque=o[s.O_TORQUE],
+            cage_slip=o[s.O_CAGE_SLIP],
+            SRR_max=o[s.O_SRR_MAX],
+            kinetic_energy=o[s.O_KINETIC],
+            x=float(self.ring[s.R_X]),
+            y=float(self.ring[s.R_X + 1]),
+            z=float(self.ring[s.R_X + 2]),
+        )
         if not self.scene.capacitance:
             del result["C_bearing"]
         return result
@@ -393,11 +479,24 @@ class DemModel:
         contact_loads(self.balls, self.ring, self.par, self._Q)
         x, y = self.balls[s.B_X], self.balls[s.B_X + 1]
         r2 = x * x + y * y
-        result = {"psi": np.mod(np.arctan2(y, x), 2.0 * math.pi),
-                  "omega_orbit": (x * self.balls[s.B_VX + 1] - y * self.balls[s.B_VX]) / r2,
-                  "omega_spin": np.linalg.norm(self.balls[s.B_WX:s.B_WX + 3], axis=0)}
-        names = {"Q": None, "h_min": s.T_H_MIN, "h_c": s.T_H_C, "Lambda": s.T_LAMBDA, "regime": s.T_REGIME,
-                 "mu": s.T_MU, "SRR": s.T_SRR, "u": s.T_U, "C": s.T_CAP, "a": s.T_A, "b": s.T_B}
+        result = {
+            "psi": np.mod(np.arctan2(y, x), 2.0 * math.pi),
+            "omega_orbit": (x * self.balls[s.B_VX + 1] - y * self.balls[s.B_VX]) / r2,
+            "omega_spin": np.linalg.norm(self.balls[s.B_WX : s.B_WX + 3], axis=0),
+        }
+        names = {
+            "Q": None,
+            "h_min": s.T_H_MIN,
+            "h_c": s.T_H_C,
+            "Lambda": s.T_LAMBDA,
+            "regime": s.T_REGIME,
+            "mu": s.T_MU,
+            "SRR": s.T_SRR,
+            "u": s.T_U,
+            "C": s.T_CAP,
+            "a": s.T_A,
+            "b": s.T_B,
+        }
         for race, suffix in ((0, "_inner"), (1, "_outer")):
             for name, row in names.items():
                 result[name + suffix] = self._Q[race].copy() if row is None else self.trib[row, race].copy()

@@ -12,8 +12,8 @@ be handed to both. The model:
   k_t = ratio K_h delta^0.5, capped at mu F_n (xi rescaled to the cap), reset when the contact opens;
 - rolling-resistance moment -M_r q/max(|q|, w_reg, 4 M_r dt/I) with M_r = F_roll (D/2) and q the
   ball's angular velocity relative to its orbiting frame, tangential part; spin moment
-  -M_s s/max(|s|, w_reg, 4 M_s dt/I) n, s the spin relative to the race; F_roll = F_R + (F_h + F_H)/2 (Houpert EHL force on each surface, hysteresis
-  and Heathcote halved), M_s = (3/8) mu Q a E (Jones);
+  -M_s s/max(|s|, w_reg, 4 M_s dt/I) n, s the spin relative to the race; F_roll = F_R + (F_h + F_H)/2
+  (Houpert EHL force on each surface, hysteresis and Heathcote halved), M_s = (3/8) mu Q a E (Jones);
 - cage ball between balls k and k + 1, Hertz sphere-sphere with critical damping, frictionless; guide
   channel around the pitch circle (distance from the circle minus the play), critically damped;
 - velocity Verlet with the velocity predictor v + a dt for the forces; omega linear over the call;
@@ -22,6 +22,7 @@ be handed to both. The model:
 The closed-form Houpert pieces (hysteresis (3/16) alpha_h b Q/Rx, Heathcote C_H mu Q a^2/(R_c Rx),
 spin (3/8) mu Q a E) are written out here; their quadrature twins are checked in test_torque.
 """
+
 import math
 
 import numpy as np
@@ -35,10 +36,12 @@ Z_AXIS = np.array([0.0, 0.0, 1.0])
 
 # Heathcote constant C_H = 3I/8: rolling bands at +-c (zero net traction of w(y) ~ 1 - y^2), then
 # I = 2 int_0^1 (1 - s^2)|c^2 - s^2| ds (Johnson 1985 ch. 8).
-_BAND = brentq(lambda c: quad(lambda y: (1 - y * y), 0, c)[0] - quad(lambda y: (1 - y * y), c, 1)[0], 0.01, 0.99,
-               xtol=1e-15)
-HEATHCOTE_C = 3.0 / 8.0 * 2.0 * quad(lambda y: (1 - y * y) * abs(_BAND ** 2 - y * y), 0, 1, points=[_BAND],
-                                     epsabs=1e-15)[0]
+_BAND = brentq(
+    lambda c: quad(lambda y: 1 - y * y, 0, c)[0] - quad(lambda y: 1 - y * y, c, 1)[0], 0.01, 0.99, xtol=1e-15
+)
+HEATHCOTE_C = (
+    3.0 / 8.0 * 2.0 * quad(lambda y: (1 - y * y) * abs(_BAND**2 - y * y), 0, 1, points=[_BAND], epsabs=1e-15)[0]
+)
 
 
 def groove_contact(p, centre, rho, rg):
@@ -53,7 +56,7 @@ def groove_contact(p, centre, rho, rg):
 
 def race_centre(race, ring, par):
     if race == 0:
-        return ring[s.R_X:s.R_X + 3] + np.array([0.0, 0.0, par[s.P_Z_I]]), par[s.P_RHO_I]
+        return ring[s.R_X : s.R_X + 3] + np.array([0.0, 0.0, par[s.P_Z_I]]), par[s.P_RHO_I]
     return np.array([0.0, 0.0, par[s.P_Z_O]]), par[s.P_RHO_O]
 
 
@@ -77,9 +80,9 @@ def refresh(st, par, lub, omega, T_oil):
         centre, rho = race_centre(race, ring, par)
         Rx, Ry, k, ell_E, ell_K = hertz_of(race, par)
         for j in range(balls.shape[1]):
-            p = balls[s.B_X:s.B_X + 3, j]
-            v = balls[s.B_VX:s.B_VX + 3, j]
-            w = balls[s.B_WX:s.B_WX + 3, j]
+            p = balls[s.B_X : s.B_X + 3, j]
+            v = balls[s.B_VX : s.B_VX + 3, j]
+            w = balls[s.B_WX : s.B_WX + 3, j]
             delta, n = groove_contact(p, centre, rho, par[s.P_RG_I + race])
             trib[:, race, j] = 0.0
             if delta <= 0.0:
@@ -87,7 +90,7 @@ def refresh(st, par, lub, omega, T_oil):
                 trib[s.T_H_MIN, race, j] = math.inf
                 trib[s.T_H_C, race, j] = math.inf
                 continue
-            Q = par[s.P_KH_I + race] * delta ** 1.5
+            Q = par[s.P_KH_I + race] * delta**1.5
             a, b, _, p_max = ref_hertz.hertz_contact(Q, Rx, Ry, E_red, k, ell_E, ell_K)
             w_orb = orbit_speed(p, v)
             w_race = omega if race == 0 else 0.0
@@ -95,7 +98,7 @@ def refresh(st, par, lub, omega, T_oil):
             r = p + 0.5 * D * n - centre
             u_r = np.cross((w_race - w_orb) * Z_AXIS, np.array([r[0], r[1], 0.0]))
             if race == 0:
-                u_r = u_r + ring[s.R_VX:s.R_VX + 3]
+                u_r = u_r + ring[s.R_VX : s.R_VX + 3]
             u_b = u_b - np.dot(u_b, n) * n
             u_r = u_r - np.dot(u_r, n) * n
             u = 0.5 * np.linalg.norm(u_b + u_r)
@@ -131,15 +134,14 @@ def refresh(st, par, lub, omega, T_oil):
 
 def damped_hertz(K, delta, zeta, m_eff, v_app):
     c = 2.0 * zeta * math.sqrt(1.5 * K * math.sqrt(delta) * m_eff)
-    return max(K * delta ** 1.5 + c * v_app, 0.0)
+    return max(K * delta**1.5 + c * v_app, 0.0)
 
 
 def forces(st, par, omega, F_ring, vel, dt):
     """Forces (N) and moments (N.m) on every body at the current positions with the predicted velocities
     vel = (v_balls, w_balls, v_cage, v_ring); updates springs, chatter counters and dissipation.
     Returns (f_ball, m_ball, f_cage, f_ring, dissipated power per race)."""
-    balls, cage, ring, spring, trib, counters = (st[k] for k in ("balls", "cage", "ring", "spring", "trib",
-                                                                 "counters"))
+    balls, cage, ring, spring, trib, counters = (st[k] for k in ("balls", "cage", "ring", "spring", "trib", "counters"))
     v_b, w_b, v_c, v_r = vel
     Z = balls.shape[1]
     D = par[s.P_D]
@@ -152,7 +154,7 @@ def forces(st, par, omega, F_ring, vel, dt):
     for race in range(2):
         centre, rho = race_centre(race, ring, par)
         for j in range(Z):
-            p = balls[s.B_X:s.B_X + 3, j]
+            p = balls[s.B_X : s.B_X + 3, j]
             rows = slice(3 * race, 3 * race + 3)
             kc = s.K_SIZE + race * Z + j
             delta, n = groove_contact(p, centre, rho, par[s.P_RG_I + race])
@@ -161,7 +163,7 @@ def forces(st, par, omega, F_ring, vel, dt):
                 counters[kc] = 0
                 continue
             K_h = par[s.P_KH_I + race]
-            Q = K_h * delta ** 1.5
+            Q = K_h * delta**1.5
             r_c = 0.5 * D * n
             v_surface_ball = v_b[:, j] + np.cross(w_b[:, j], r_c)
             if race == 0:
@@ -200,24 +202,32 @@ def forces(st, par, omega, F_ring, vel, dt):
             M_roll = trib[s.T_F_ROLL, race, j] * 0.5 * D
             M_spin = trib[s.T_M_SPIN, race, j]
             rate = par[s.P_I_BALL] / (4.0 * dt)
-            m_ball[:, j] += (np.cross(r_c, F_t) - M_roll * q / max(np.linalg.norm(q), w_reg, M_roll / rate)
-                             - M_spin * spin / max(abs(spin), w_reg, M_spin / rate) * n)
+            m_ball[:, j] += (
+                np.cross(r_c, F_t)
+                - M_roll * q / max(np.linalg.norm(q), w_reg, M_roll / rate)
+                - M_spin * spin / max(abs(spin), w_reg, M_spin / rate) * n
+            )
             if race == 0:
                 f_ring -= force
-            power[race] += (c_n * v_n ** 2 if F_n > 0.0 else 0.0) - (np.dot(F_t, v_t) if slipping else 0.0)
+            power[race] += (c_n * v_n**2 if F_n > 0.0 else 0.0) - (np.dot(F_t, v_t) if slipping else 0.0)
     R_sum = 0.5 * D + par[s.P_R_CAGE]
     m_b, m_c = par[s.P_M_BALL], par[s.P_M_CAGE]
     for k in range(Z):
         for j in (k, (k + 1) % Z):
-            d = cage[s.C_X:s.C_X + 3, k] - balls[s.B_X:s.B_X + 3, j]
+            d = cage[s.C_X : s.C_X + 3, k] - balls[s.B_X : s.B_X + 3, j]
             dist = np.linalg.norm(d)
             if dist < R_sum:
                 n = d / dist
-                f = damped_hertz(par[s.P_K_CB], R_sum - dist, par[s.P_ZETA_CAGE], m_b * m_c / (m_b + m_c),
-                                 np.dot(v_b[:, j] - v_c[:, k], n))
+                f = damped_hertz(
+                    par[s.P_K_CB],
+                    R_sum - dist,
+                    par[s.P_ZETA_CAGE],
+                    m_b * m_c / (m_b + m_c),
+                    np.dot(v_b[:, j] - v_c[:, k], n),
+                )
                 f_cage[:, k] += f * n
                 f_ball[:, j] -= f * n
-        pc = cage[s.C_X:s.C_X + 3, k]
+        pc = cage[s.C_X : s.C_X + 3, k]
         R = par[s.P_R_GUIDE]
         q = np.array([R * pc[0], R * pc[1], 0.0]) / math.hypot(pc[0], pc[1]) + np.array([0.0, 0.0, par[s.P_Z_GUIDE]])
         dist = np.linalg.norm(pc - q)
@@ -231,14 +241,14 @@ def forces(st, par, omega, F_ring, vel, dt):
 def step(st, par, omega, F_ring, dt):
     """One velocity-Verlet step at inner-ring speed omega (rad/s, end of the step)."""
     balls, cage, ring = st["balls"], st["cage"], st["ring"]
-    x, v, a = (balls[r:r + 3] for r in (s.B_X, s.B_VX, s.B_AX))
-    w, alpha = balls[s.B_WX:s.B_WX + 3], balls[s.B_ALX:s.B_ALX + 3]
+    x, v, a = (balls[r : r + 3] for r in (s.B_X, s.B_VX, s.B_AX))
+    w, alpha = balls[s.B_WX : s.B_WX + 3], balls[s.B_ALX : s.B_ALX + 3]
     angle_before = np.arctan2(x[1], x[0])
     x += v * dt + 0.5 * a * dt * dt
     balls[s.B_ORBIT] += np.angle(np.exp(1j * (np.arctan2(x[1], x[0]) - angle_before)))
-    xc, vc, ac = (cage[r:r + 3] for r in (s.C_X, s.C_VX, s.C_AX))
+    xc, vc, ac = (cage[r : r + 3] for r in (s.C_X, s.C_VX, s.C_AX))
     xc += vc * dt + 0.5 * ac * dt * dt
-    xr, vr, ar = (ring[r:r + 3] for r in (s.R_X, s.R_VX, s.R_AX))
+    xr, vr, ar = (ring[r : r + 3] for r in (s.R_X, s.R_VX, s.R_AX))
     xr += vr * dt + 0.5 * ar * dt * dt
     vel = (v + a * dt, w + alpha * dt, vc + ac * dt, vr + ar * dt)
     f_b, m_b, f_c, f_r, power = forces(st, par, omega, F_ring, vel, dt)

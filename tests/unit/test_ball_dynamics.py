@@ -12,6 +12,7 @@ The orbital angle is compared to ORBIT_TOL: the kernel's per-step increment cros
 of the twin's exact atan2 increment, which differs by dpsi^3/3 = (198 rad/s x 3 us)^3/3 = 7e-11 rad
 per step, 2e-8 rad over 300 steps.
 """
+
 import math
 
 import numpy as np
@@ -22,8 +23,8 @@ from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.kernels.ball_dynamics.contacts import groove_approach
 from bearing_fmu.kernels.ball_dynamics.monitor import critical_time_step
 from bearing_fmu.kernels.hertz import hertz_contact
-from bearing_fmu.models.dem import DemModel, DemUnstableError
 from bearing_fmu.model import InputError
+from bearing_fmu.models.dem import DemModel, DemUnstableError
 from tests.reference import ref_ball_dynamics as ref
 
 STEPS = 300
@@ -64,9 +65,26 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps):
     omega0, omega1, F, T_oil = 150.0, 160.0, (3000.0, 0.0, 0.0), 313.15
     acc = np.zeros(s.A_SIZE)
     status = np.zeros(s.ST_SIZE, dtype=np.int64)
-    dyn.advance(kernel_state["balls"], kernel_state["cage"], kernel_state["ring"], kernel_state["spring"],
-                kernel_state["trib"], kernel_state["counters"], par, lub, steps, DT, omega0, omega1, *F, T_oil, 1e9,
-                np.zeros((s.W_SIZE, model.bearing.Z)), acc, status)
+    dyn.advance(
+        kernel_state["balls"],
+        kernel_state["cage"],
+        kernel_state["ring"],
+        kernel_state["spring"],
+        kernel_state["trib"],
+        kernel_state["counters"],
+        par,
+        lub,
+        steps,
+        DT,
+        omega0,
+        omega1,
+        *F,
+        T_oil,
+        1e9,
+        np.zeros((s.W_SIZE, model.bearing.Z)),
+        acc,
+        status,
+    )
     assert status[s.ST_CODE] == s.STATUS_OK
     energy = ref.advance(twin_state, par, lub, steps, DT, omega0, omega1, np.array(F), T_oil)
     report = {}
@@ -77,16 +95,17 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps):
             assert orbit < ORBIT_TOL, f"orbital angle differs by {orbit:.3g} rad"
             a, b = np.delete(a, s.B_ORBIT, axis=0), np.delete(b, s.B_ORBIT, axis=0)
         if name == "balls":  # compare each quantity on its own scale
-            errs = [_scale_err(a[r:r + 3], b[r:r + 3]) for r in range(0, s.B_SIZE - 1, 3)]
+            errs = [_scale_err(a[r : r + 3], b[r : r + 3]) for r in range(0, s.B_SIZE - 1, 3)]
         elif name == "trib":
             errs = [_scale_err(a[r], b[r]) for r in range(s.T_SIZE)]
         elif name == "ring":
-            errs = [_scale_err(a[r:r + 3], b[r:r + 3]) for r in (s.R_X, s.R_VX, s.R_AX)] + [
-                _scale_err(a[s.R_TIME:], b[s.R_TIME:])]
+            errs = [_scale_err(a[r : r + 3], b[r : r + 3]) for r in (s.R_X, s.R_VX, s.R_AX)] + [
+                _scale_err(a[s.R_TIME :], b[s.R_TIME :])
+            ]
         else:
             errs = [_scale_err(a, b)]
         report[name] = max(errs)
-    report["dissipated"] = _scale_err(acc[s.A_DISS_I:s.A_DISS_O + 1], energy)
+    report["dissipated"] = _scale_err(acc[s.A_DISS_I : s.A_DISS_O + 1], energy)
     print("kernel vs twin, largest scaled difference:", {k: f"{v:.2e}" for k, v in report.items()})
     assert np.array_equal(kernel_state["counters"], twin_state["counters"])
     for name, err in report.items():
@@ -104,13 +123,13 @@ def test_groove_approach_radial_ball_gives_hertz_load():
     for delta in (1e-6, 5e-6, 2e-5):
         r = p[s.P_RHO_O] + p[s.P_RG_O] + delta
         psi = 0.7
-        approach, nx, ny, nz = groove_approach(r * math.cos(psi), r * math.sin(psi), 0.0, 0.0, 0.0, 0.0,
-                                               p[s.P_RHO_O], p[s.P_RG_O])
+        approach, nx, ny, nz = groove_approach(
+            r * math.cos(psi), r * math.sin(psi), 0.0, 0.0, 0.0, 0.0, p[s.P_RHO_O], p[s.P_RG_O]
+        )
         assert approach == pytest.approx(delta, rel=1e-9, abs=1e-15)
         assert (nx, ny, nz) == pytest.approx((math.cos(psi), math.sin(psi), 0.0), abs=1e-12)
-        Q = p[s.P_KH_O] * approach ** 1.5
-        hertz_delta = hertz_contact(Q, p[s.P_RX_O], p[s.P_RY_O], p[s.P_E_RED], p[s.P_K_O], p[s.P_EE_O],
-                                    p[s.P_KK_O])[2]
+        Q = p[s.P_KH_O] * approach**1.5
+        hertz_delta = hertz_contact(Q, p[s.P_RX_O], p[s.P_RY_O], p[s.P_E_RED], p[s.P_K_O], p[s.P_EE_O], p[s.P_KK_O])[2]
         assert hertz_delta == pytest.approx(delta, rel=1e-9)
 
 
@@ -164,10 +183,18 @@ def test_state_round_trip_reproduces_the_run(running_6208):
     model.set_state(saved)
 
 
-@pytest.mark.parametrize("kwargs, word", [
-    (dict(omega=math.nan), "omega"), (dict(omega=1e6), "omega"), (dict(F_x=math.nan), "F_x"),
-    (dict(F_y=1e9), "F_y"), (dict(T_oil=-5.0), "T_oil"), (dict(dPd_thermal=math.nan), "dPd_thermal"),
-    (dict(dPd_thermal=1e-3), "dPd_thermal")])
+@pytest.mark.parametrize(
+    "kwargs, word",
+    [
+        (dict(omega=math.nan), "omega"),
+        (dict(omega=1e6), "omega"),
+        (dict(F_x=math.nan), "F_x"),
+        (dict(F_y=1e9), "F_y"),
+        (dict(T_oil=-5.0), "T_oil"),
+        (dict(dPd_thermal=math.nan), "dPd_thermal"),
+        (dict(dPd_thermal=1e-3), "dPd_thermal"),
+    ],
+)
 def test_bad_inputs_are_rejected_with_their_range(running_6208, kwargs, word):
     with pytest.raises(InputError, match=f"{word} = .* allowed range"):
         running_6208.advance(running_6208.time + 1e-4, **kwargs)
@@ -209,7 +236,8 @@ def test_fused_power_laws_equal_the_film_and_houpert_kernels(lubricant, T_oil):
     contact's own load and entrainment speed to rounding (1e-12: a handful of logs and exps)."""
     from bearing_fmu.kernels.ehl import FILM_HAMROCK_DOWSON, film_thickness
     from bearing_fmu.kernels.lubricant import lubricant_state
-    from bearing_fmu.kernels.torque import houpert_rolling_force, hysteresis_force, heathcote_force
+    from bearing_fmu.kernels.torque import heathcote_force, houpert_rolling_force, hysteresis_force
+
     model = DemModel("6208", lubricant)
     rng = np.random.default_rng(7)
     Z = model.bearing.Z
@@ -217,23 +245,26 @@ def test_fused_power_laws_equal_the_film_and_houpert_kernels(lubricant, T_oil):
     for j in range(Z):  # each ball pressed into the outer groove by its own approach, spinning about z
         psi = 2.0 * math.pi * j / Z
         r = p[s.P_RHO_O] + p[s.P_RG_O] + rng.uniform(1e-7, 4e-5)
-        model.balls[s.B_X:s.B_X + 3, j] = (r * math.cos(psi), r * math.sin(psi), 0.0)
+        model.balls[s.B_X : s.B_X + 3, j] = (r * math.cos(psi), r * math.sin(psi), 0.0)
         model.balls[s.B_WX + 2, j] = rng.uniform(1.0, 5000.0)
     model._initialise(0.0, 0.0, 0.0, 0.0, T_oil)
     eta, xi, _ = lubricant_state(T_oil, model.lubricant.array)
     t = model.trib
     for j in range(Z):
         Q, u, a, b = t[s.T_Q, 1, j], t[s.T_U, 1, j], t[s.T_A, 1, j], t[s.T_B, 1, j]
-        h_c, h_min = film_thickness(FILM_HAMROCK_DOWSON, eta, xi, p[s.P_E_RED], u, Q, p[s.P_RX_O], p[s.P_RY_O],
-                                    p[s.P_K_O])
+        h_c, h_min = film_thickness(
+            FILM_HAMROCK_DOWSON, eta, xi, p[s.P_E_RED], u, Q, p[s.P_RX_O], p[s.P_RY_O], p[s.P_K_O]
+        )
         assert t[s.T_H_MIN, 1, j] == pytest.approx(h_min, rel=1e-12)
         assert t[s.T_H_C, 1, j] == pytest.approx(h_c, rel=1e-12)
         F_R = houpert_rolling_force(Q, u, p[s.P_RX_O], p[s.P_RY_O], p[s.P_E_RED], eta, xi)
-        F_hh = (hysteresis_force(Q, b, p[s.P_RX_O], p[s.P_ALPHA_H])
-                + heathcote_force(Q, a, p[s.P_RX_O], p[s.P_F_O], p[s.P_D], t[s.T_MU, 1, j]))
+        F_hh = hysteresis_force(Q, b, p[s.P_RX_O], p[s.P_ALPHA_H]) + heathcote_force(
+            Q, a, p[s.P_RX_O], p[s.P_F_O], p[s.P_D], t[s.T_MU, 1, j]
+        )
         assert t[s.T_F_ROLL, 1, j] == pytest.approx(F_R + 0.5 * F_hh, rel=1e-12)
-        a_ref, b_ref, _, p_ref = hertz_contact(Q, p[s.P_RX_O], p[s.P_RY_O], p[s.P_E_RED], p[s.P_K_O], p[s.P_EE_O],
-                                               p[s.P_KK_O])
+        a_ref, b_ref, _, p_ref = hertz_contact(
+            Q, p[s.P_RX_O], p[s.P_RY_O], p[s.P_E_RED], p[s.P_K_O], p[s.P_EE_O], p[s.P_KK_O]
+        )
         assert (a, b, t[s.T_P_MAX, 1, j]) == pytest.approx((a_ref, b_ref, p_ref), rel=1e-12)
 
 

@@ -10,6 +10,7 @@ Hamrock-Dowson film; default time step (half the stability limit of the stiffest
 Protocol (the seeds' start-up): 2 ms at rest under the load (the ring settles), speed ramp over 5 ms,
 then steady running; steady values are taken after 30 ms, as means over 10 ms.
 """
+
 import math
 
 import numpy as np
@@ -55,8 +56,10 @@ def test_cage_and_ball_speed_at_500_rad_s(steady_500):
     _, out, _ = steady_500
     cage, ball_rel, ball_fixed, _ = rolling_kinematics(500.0, D, DM, 0.0)
     assert cage == pytest.approx(198.02, abs=0.005) and abs(ball_fixed) == pytest.approx(952.38, abs=0.005)
-    print(f"DEM at 500 rad/s: cage {out['omega_cage']:.3f} rad/s (slip {out['cage_slip']:.2e}), "
-          f"ball {out['omega_ball']:.2f} rad/s fixed frame, {out['omega_ball_cage']:.2f} rad/s rel. cage")
+    print(
+        f"DEM at 500 rad/s: cage {out['omega_cage']:.3f} rad/s (slip {out['cage_slip']:.2e}), "
+        f"ball {out['omega_ball']:.2f} rad/s fixed frame, {out['omega_ball_cage']:.2f} rad/s rel. cage"
+    )
     assert out["omega_cage"] == pytest.approx(198.0, rel=0.01)
     assert out["omega_ball"] == pytest.approx(952.38, rel=0.01)  # magnitude with the sign of omega, as the QS output
     assert out["omega_ball_cage"] == pytest.approx(1150.4, rel=0.01)
@@ -79,9 +82,11 @@ def test_film_parameter_and_torque_at_500_rad_s(steady_500):
     _, out, _ = steady_500
     qs = QuasiStaticModel("6208", "guessasma_oil", scene=Scene(name="qs", fidelity="quasi_static", torque=True))
     ref = qs.evaluate(omega=500.0, F_x=F_R)
-    print(f"Lambda_out DEM {out['Lambda_outer']:.4f} QS {ref['Lambda_outer']:.4f}; Lambda_in DEM "
-          f"{out['Lambda_inner']:.4f} QS {ref['Lambda_inner']:.4f}; C {out['C_bearing'] * 1e12:.1f} pF "
-          f"(QS {ref['C_bearing'] * 1e12:.1f}); torque {out['torque']:.4f} N.m (QS {ref['torque']:.4f})")
+    print(
+        f"Lambda_out DEM {out['Lambda_outer']:.4f} QS {ref['Lambda_outer']:.4f}; Lambda_in DEM "
+        f"{out['Lambda_inner']:.4f} QS {ref['Lambda_inner']:.4f}; C {out['C_bearing'] * 1e12:.1f} pF "
+        f"(QS {ref['C_bearing'] * 1e12:.1f}); torque {out['torque']:.4f} N.m (QS {ref['torque']:.4f})"
+    )
     assert out["Lambda_outer"] == pytest.approx(ref["Lambda_outer"], rel=0.03)
     assert 2.05 < out["Lambda_outer"] < 2.2
     assert out["Lambda_inner"] < out["Lambda_outer"]
@@ -100,8 +105,9 @@ def test_ring_displacement_spectrum_peaks_at_bpfo(steady_500):
     saved = model.get_state()
     fs, n = 10000.0, 4000
     t0 = model.time
-    disp = np.array([[o["x"], o["y"]] for o in (model.advance(t0 + (i + 1) / fs, omega=500.0, F_x=F_R)
-                                                for i in range(n))])
+    disp = np.array(
+        [[o["x"], o["y"]] for o in (model.advance(t0 + (i + 1) / fs, omega=500.0, F_x=F_R) for i in range(n))]
+    )
     model.set_state(saved)
     bpfo = defect_frequencies(500.0, D, DM, 0.0, Z)[1]
     f = np.fft.rfftfreq(16 * n, 1.0 / fs)
@@ -110,15 +116,20 @@ def test_ring_displacement_spectrum_peaks_at_bpfo(steady_500):
         spectrum = np.abs(np.fft.rfft((disp[:, axis] - disp[:, axis].mean()) * np.hanning(n), 16 * n))
         band = f > low
         peaks.append(f[band][np.argmax(spectrum[band])])
-    print(f"ring displacement peaks: across the load {peaks[0]:.2f} Hz, along it {peaks[1]:.2f} Hz; "
-          f"BPFO {bpfo:.2f} Hz")
+    print(f"ring displacement peaks: across the load {peaks[0]:.2f} Hz, along it {peaks[1]:.2f} Hz; BPFO {bpfo:.2f} Hz")
     for peak in peaks:
         assert peak == pytest.approx(bpfo, rel=0.01)
 
 
 # Guessasma Table 3: regime bands at psi = 0 vs speed, (inner band, outer band)
-TABLE3 = {100.0: ((0.0, 1.0), (0.0, 1.0)), 300.0: ((1.0, 3.0), (1.0, 4.0)), 700.0: ((1.0, 3.0), (1.0, 4.0)),
-          1100.0: ((1.0, 3.0), (1.0, 4.0)), 1300.0: ((3.0, 4.0), (4.0, 5.0)), 1700.0: ((3.0, 4.0), (4.0, 5.0))}
+TABLE3 = {
+    100.0: ((0.0, 1.0), (0.0, 1.0)),
+    300.0: ((1.0, 3.0), (1.0, 4.0)),
+    700.0: ((1.0, 3.0), (1.0, 4.0)),
+    1100.0: ((1.0, 3.0), (1.0, 4.0)),
+    1300.0: ((3.0, 4.0), (4.0, 5.0)),
+    1700.0: ((3.0, 4.0), (4.0, 5.0)),
+}
 
 
 @pytest.fixture(scope="module")
@@ -145,8 +156,10 @@ def test_film_parameter_versus_speed(quasi_static_6208, omega):
     c = model.contacts()
     j = int(np.argmax(c["Q_inner"]))
     F_c = centrifugal_force(ball_mass(D, 7850.0), DM, samples[-1]["omega_cage"])
-    print(f"{omega:.0f} rad/s: Lambda_out {lam_o:.4f} (QS {ref['Lambda_outer']:.4f}), Lambda_in {lam_i:.4f} "
-          f"(QS {ref['Lambda_inner']:.4f}); Q_o - Q_i {c['Q_outer'][j] - c['Q_inner'][j]:.1f} N, F_c {F_c:.1f} N")
+    print(
+        f"{omega:.0f} rad/s: Lambda_out {lam_o:.4f} (QS {ref['Lambda_outer']:.4f}), Lambda_in {lam_i:.4f} "
+        f"(QS {ref['Lambda_inner']:.4f}); Q_o - Q_i {c['Q_outer'][j] - c['Q_inner'][j]:.1f} N, F_c {F_c:.1f} N"
+    )
     assert lam_o == pytest.approx(ref["Lambda_outer"], rel=0.03)
     assert lam_i < lam_o
     (i_low, i_high), (o_low, o_high) = TABLE3[omega]
@@ -155,9 +168,16 @@ def test_film_parameter_versus_speed(quasi_static_6208, omega):
     assert c["Q_outer"][j] - c["Q_inner"][j] == pytest.approx(F_c, rel=0.03, abs=0.5)
 
 
-@pytest.mark.parametrize("Pd, F, eps_published", [
-    (0.0, 3000.0, 0.5), (-12.6e-6, 3000.0, 0.685), (12.6e-6, 3000.0, 0.40),
-    (-0.0045 * D, 5000.0, 1.70), (0.0045 * D, 5000.0, 0.29)])
+@pytest.mark.parametrize(
+    "Pd, F, eps_published",
+    [
+        (0.0, 3000.0, 0.5),
+        (-12.6e-6, 3000.0, 0.685),
+        (12.6e-6, 3000.0, 0.40),
+        (-0.0045 * D, 5000.0, 1.70),
+        (0.0045 * D, 5000.0, 0.29),
+    ],
+)
 def test_slow_drive_load_distribution_matches_quasi_static(Pd, F, eps_published):
     """Slowly driven bearing (omega = 1 rad/s after settling at rest, Guessasma appendix A): every ball's
     load within 2 % of Q_max of the quasi-static model with the balls at the same azimuths (the load
@@ -176,8 +196,10 @@ def test_slow_drive_load_distribution_matches_quasi_static(Pd, F, eps_published)
     err = np.max(np.abs(c["Q_inner"] - Q_qs)) / Q_qs.max()
     eps = 0.5 * (1.0 - Pd / (2.0 * math.hypot(out["x"], out["y"])))
     eps_qs = 0.5 * (1.0 - Pd / (2.0 * math.hypot(ref["x"], ref["y"])))
-    print(f"P_d = {Pd * 1e6:.1f} um, F = {F} N: loads within {err:.2%} of Q_max; eps DEM {eps:.4f}, "
-          f"QS {eps_qs:.4f}, published {eps_published}")
+    print(
+        f"P_d = {Pd * 1e6:.1f} um, F = {F} N: loads within {err:.2%} of Q_max; eps DEM {eps:.4f}, "
+        f"QS {eps_qs:.4f}, published {eps_published}"
+    )
     assert err < 0.02
     assert eps == pytest.approx(eps_qs, rel=0.02)
     assert abs(eps - eps_published) <= 0.005 + 0.02 * eps_published

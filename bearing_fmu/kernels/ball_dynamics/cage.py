@@ -15,12 +15,26 @@ Its stiffness is Hertz sphere-on-plane (R_eq = R_z, steel/PA66 E*): an estimate,
 only has to hold the cage balls on the pitch circle. Critical damping of a contact of tangent
 stiffness k = 1.5 K sqrt(delta) and reduced mass m_eff is c = 2 zeta sqrt(k m_eff), zeta = 1.
 """
+
 import math
 
 from bearing_fmu_common.jit import kernel
 
-from .state import (B_X, C_X, P_C_CB, P_C_GUIDE, P_GUIDE_GAP, P_K_CB, P_K_GUIDE, P_R_GUIDE, P_Z_GUIDE, W_FB, W_FC,
-                    W_VB, W_VC)
+from .state import (
+    B_X,
+    C_X,
+    P_C_CB,
+    P_C_GUIDE,
+    P_GUIDE_GAP,
+    P_K_CB,
+    P_K_GUIDE,
+    P_R_GUIDE,
+    P_Z_GUIDE,
+    W_FB,
+    W_FC,
+    W_VB,
+    W_VC,
+)
 
 
 @kernel
@@ -49,8 +63,11 @@ def ball_cage_contact(j, k, balls, cage, par, work, R_sum):
     nx = dx * inv  # from the steel ball to the cage ball
     ny = dy * inv
     nz = dz * inv
-    v_app = ((work[W_VB, j] - work[W_VC, k]) * nx + (work[W_VB + 1, j] - work[W_VC + 1, k]) * ny
-             + (work[W_VB + 2, j] - work[W_VC + 2, k]) * nz)
+    v_app = (
+        (work[W_VB, j] - work[W_VC, k]) * nx
+        + (work[W_VB + 1, j] - work[W_VC + 1, k]) * ny
+        + (work[W_VB + 2, j] - work[W_VC + 2, k]) * nz
+    )
     f = damped_hertz(par[P_K_CB], par[P_C_CB], delta, v_app)
     work[W_FC, k] += f * nx
     work[W_FC + 1, k] += f * ny

@@ -23,16 +23,36 @@ relative to the race. The race's share acts on the prescribed inner ring or on t
 and only enters the dissipated power. Directions are regularised below the speed v_reg, or below the
 angular speed at which the regularised (viscous) moment would exceed I/(4 dt), whichever is larger.
 """
+
 import math
 
 from bearing_fmu_common.jit import kernel
 
+from ..ehl import REGIME_BOUNDARY
+
 # The contact functions are inlined into the force loop (numba IR inlining): called through numba's
 # ordinary calls, the arrays travel as exploded structs and the 18 contacts per step cost ~50 % more.
-
-from .state import A_DISS_I, A_FR, A_VR, B_X, K_SIZE, P_ALPHA_E, P_D, P_KT_RATIO
-from .state import (S_INNER, T_C_N, T_F_ROLL, T_M_SPIN, T_MU, T_REGIME, W_FB, W_MB, W_ORBIT, W_VB, W_WB)
-from ..ehl import REGIME_BOUNDARY
+from .state import (
+    A_DISS_I,
+    A_FR,
+    A_VR,
+    B_X,
+    K_SIZE,
+    P_ALPHA_E,
+    P_D,
+    P_KT_RATIO,
+    S_INNER,
+    T_C_N,
+    T_F_ROLL,
+    T_M_SPIN,
+    T_MU,
+    T_REGIME,
+    W_FB,
+    W_MB,
+    W_ORBIT,
+    W_VB,
+    W_WB,
+)
 
 
 @kernel(inline="always")
@@ -113,8 +133,29 @@ def tangential_spring(spring, row, j, nx, ny, nz, vtx, vty, vtz, dt, kt, f_limit
 
 
 @kernel(inline="always")
-def ball_race_contact(race, j, omega, rho, cx, cy, cz, rg, K_h, inv_delta_lim, rate_inv, w_reg, balls, ring, spring,
-                      trib, counters, par, work, acc, dt):
+def ball_race_contact(
+    race,
+    j,
+    omega,
+    rho,
+    cx,
+    cy,
+    cz,
+    rg,
+    K_h,
+    inv_delta_lim,
+    rate_inv,
+    w_reg,
+    balls,
+    ring,
+    spring,
+    trib,
+    counters,
+    par,
+    work,
+    acc,
+    dt,
+):
     """Forces of the contact of ball j with one race, added to the work arrays.
 
     race 0 inner (turning at omega rad/s about z through the ring centre (cx, cy), translating with the
@@ -177,8 +218,9 @@ def ball_race_contact(race, j, omega, rho, cx, cy, cz, rg, K_h, inv_delta_lim, r
     if F_n < 0.0:  # a damper cannot pull the surfaces together
         F_n = 0.0
     kt = par[P_KT_RATIO] * K_h * root
-    ftx, fty, ftz, slipping, reversed_ = tangential_spring(spring, row, j, nx, ny, nz, vtx, vty, vtz, dt, kt,
-                                                           trib[T_MU, race, j] * F_n)
+    ftx, fty, ftz, slipping, reversed_ = tangential_spring(
+        spring, row, j, nx, ny, nz, vtx, vty, vtz, dt, kt, trib[T_MU, race, j] * F_n
+    )
     if reversed_:
         counters[kc] += 1
     else:

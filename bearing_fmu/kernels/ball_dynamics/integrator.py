@@ -9,20 +9,65 @@ inner-ring translation. The inner ring's rotation is prescribed: omega goes line
 omega1 over the call (a ramp is a sequence of calls). The tribology (film, Lambda, mu, C_n,
 capacitance, Houpert resistances) is refreshed from the state at the start of every N-th step.
 """
+
 import math
 
 import numpy as np
+
 from bearing_fmu_common.jit import kernel
 
 from ..lubricant import LUB_EPS_R0, clausius_mossotti_constant, lubricant_state
 from .cage import ball_cage_contact, cage_guide_contact
 from .contacts import ball_race_contact
 from .monitor import kinetic_energy
-from .state import (A_DISS_I, A_DISS_O, A_FR, A_VR, B_ALX, B_AX, B_ORBIT, B_VX, B_WX, B_X, C_AX, C_VX, C_X, K_STEP,
-                    P_CHATTER, P_D, P_DELTA_LIM_I, P_I_BALL, P_KH_I, P_M_BALL, P_M_CAGE, P_M_RING, P_R_CAGE,
-                    P_REFRESH, P_RG_I, P_V_REG, R_AX, R_TIME, R_VX, R_X, ST_CODE, ST_INDEX, ST_STEP, STATUS_CHATTER,
-                    STATUS_ENERGY, STATUS_NOT_FINITE, STATUS_OK, STATUS_PENETRATION, T_P_FILM, W_FB, W_FC, W_MB,
-                    W_ORBIT, W_VB, W_VC, W_WB)
+from .state import (
+    A_DISS_I,
+    A_DISS_O,
+    A_FR,
+    A_VR,
+    B_ALX,
+    B_AX,
+    B_ORBIT,
+    B_VX,
+    B_WX,
+    B_X,
+    C_AX,
+    C_VX,
+    C_X,
+    K_STEP,
+    P_CHATTER,
+    P_D,
+    P_DELTA_LIM_I,
+    P_I_BALL,
+    P_KH_I,
+    P_M_BALL,
+    P_M_CAGE,
+    P_M_RING,
+    P_R_CAGE,
+    P_REFRESH,
+    P_RG_I,
+    P_V_REG,
+    R_AX,
+    R_TIME,
+    R_VX,
+    R_X,
+    ST_CODE,
+    ST_INDEX,
+    ST_STEP,
+    STATUS_CHATTER,
+    STATUS_ENERGY,
+    STATUS_NOT_FINITE,
+    STATUS_OK,
+    STATUS_PENETRATION,
+    T_P_FILM,
+    W_FB,
+    W_FC,
+    W_MB,
+    W_ORBIT,
+    W_VB,
+    W_VC,
+    W_WB,
+)
 from .tribology import TC_SIZE, race_circle, refresh_contact, tribology_constants
 
 
@@ -52,9 +97,29 @@ def compute_forces(balls, cage, ring, spring, trib, counters, par, omega, F_x, F
         cx, cy, cz, rho = race_circle(race, ring, par)
         inv_lim = 1.0 / par[P_DELTA_LIM_I + race]
         for j in range(Z):
-            pen, chat = ball_race_contact(race, j, omega, rho, cx, cy, cz, par[P_RG_I + race], par[P_KH_I + race],
-                                          inv_lim, rate_inv, w_reg, balls, ring, spring, trib, counters, par, work,
-                                          acc, dt)
+            pen, chat = ball_race_contact(
+                race,
+                j,
+                omega,
+                rho,
+                cx,
+                cy,
+                cz,
+                par[P_RG_I + race],
+                par[P_KH_I + race],
+                inv_lim,
+                rate_inv,
+                w_reg,
+                balls,
+                ring,
+                spring,
+                trib,
+                counters,
+                par,
+                work,
+                acc,
+                dt,
+            )
             if pen > worst_pen:
                 worst_pen = pen
                 worst_pen_at = race * Z + j
@@ -137,8 +202,9 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
 
 
 @kernel
-def initialise_accelerations(balls, cage, ring, spring, trib, counters, par, lub, omega, F_x, F_y, F_z, T_oil,
-                             work, acc):
+def initialise_accelerations(
+    balls, cage, ring, spring, trib, counters, par, lub, omega, F_x, F_y, F_z, T_oil, work, acc
+):
     """Tribology and accelerations of a new state (the a_n that the first Verlet step needs), without
     moving anything: call once after the facade sets positions and velocities."""
     eta, xi, rho0 = lubricant_state(T_oil, lub)
@@ -170,8 +236,28 @@ def initialise_accelerations(balls, cage, ring, spring, trib, counters, par, lub
 
 
 @kernel
-def advance(balls, cage, ring, spring, trib, counters, par, lub, n_steps, dt, omega0, omega1, F_x, F_y, F_z, T_oil,
-            energy_limit, work, acc, status):
+def advance(
+    balls,
+    cage,
+    ring,
+    spring,
+    trib,
+    counters,
+    par,
+    lub,
+    n_steps,
+    dt,
+    omega0,
+    omega1,
+    F_x,
+    F_y,
+    F_z,
+    T_oil,
+    energy_limit,
+    work,
+    acc,
+    status,
+):
     """Run n_steps steps of dt (s) with the inner-ring speed going linearly from omega0 to omega1 (rad/s),
     constant loads F_x, F_y, F_z (N) on the inner ring and oil temperature T_oil (K).
 
@@ -216,8 +302,9 @@ def advance(balls, cage, ring, spring, trib, counters, par, lub, n_steps, dt, om
                 return
         countdown -= 1
         omega = omega0 + d_omega * (n + 1)
-        pen, pen_at, chat, chat_at, total = verlet_step(balls, cage, ring, spring, trib, counters, par, omega,
-                                                        F_x, F_y, F_z, dt, work, acc)
+        pen, pen_at, chat, chat_at, total = verlet_step(
+            balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, dt, work, acc
+        )
         acc[A_DISS_I] += film_i * dt
         acc[A_DISS_O] += film_o * dt
         status[ST_STEP] = n + 1

@@ -6,12 +6,26 @@ tangential spring chatters against its Coulomb limit below that (SPEC of the pro
 estimates the limit from the contact loads; the monitor stops a run on a non-finite force, a
 penetration beyond the physical limit, kinetic energy beyond the bound of the inputs, or chatter.
 """
+
 import math
 
 from bearing_fmu_common.jit import kernel
 
-from .state import (B_VX, B_WX, C_VX, P_I_BALL, P_K_CB, P_KH_I, P_KH_O, P_KT_RATIO, P_M_BALL, P_M_CAGE, P_M_RING,
-                    P_ZETA_CAGE, R_VX)
+from .state import (
+    B_VX,
+    B_WX,
+    C_VX,
+    P_I_BALL,
+    P_K_CB,
+    P_KH_I,
+    P_KH_O,
+    P_KT_RATIO,
+    P_M_BALL,
+    P_M_CAGE,
+    P_M_RING,
+    P_ZETA_CAGE,
+    R_VX,
+)
 
 
 @kernel

@@ -5,6 +5,7 @@ current approaches; film, regime and capacitance from the last tribology refresh
 energy dissipated in the contacts over the interval (Houpert film losses, normal damping and
 tangential slip), so the torque P_loss/|omega| emerges from the dynamics.
 """
+
 import math
 
 from bearing_fmu_common.jit import kernel
@@ -14,10 +15,42 @@ from ..ehl import lubrication_regime
 from ..geometry import rolling_kinematics
 from .contacts import groove_approach
 from .monitor import kinetic_energy
-from .state import (A_DISS_I, A_DISS_O, B_ORBIT, B_WX, B_X, O_C_BEARING, O_CAGE_SLIP, O_HC_I, O_HMIN_I, O_KINETIC,
-                    O_LAMBDA_I, O_N_LOADED, O_OMEGA_BALL, O_OMEGA_BALL_REL, O_OMEGA_CAGE, O_P_LOSS, O_PMAX, O_Q_INNER_RING,
-                    O_QMAX_I, O_REGIME, O_SIZE, O_SRR_MAX, O_TORQUE, P_ALPHA0, P_D, P_DM, P_KH_I, P_RG_I, T_CAP, T_H_C, T_H_MIN,
-                    T_LAMBDA, T_P_MAX, T_SRR)
+from .state import (
+    A_DISS_I,
+    A_DISS_O,
+    B_ORBIT,
+    B_WX,
+    B_X,
+    O_C_BEARING,
+    O_CAGE_SLIP,
+    O_HC_I,
+    O_HMIN_I,
+    O_KINETIC,
+    O_LAMBDA_I,
+    O_N_LOADED,
+    O_OMEGA_BALL,
+    O_OMEGA_BALL_REL,
+    O_OMEGA_CAGE,
+    O_P_LOSS,
+    O_PMAX,
+    O_Q_INNER_RING,
+    O_QMAX_I,
+    O_REGIME,
+    O_SIZE,
+    O_SRR_MAX,
+    O_TORQUE,
+    P_ALPHA0,
+    P_D,
+    P_DM,
+    P_KH_I,
+    P_RG_I,
+    T_CAP,
+    T_H_C,
+    T_H_MIN,
+    T_LAMBDA,
+    T_P_MAX,
+    T_SRR,
+)
 from .tribology import race_circle
 
 
@@ -27,8 +60,9 @@ def contact_loads(balls, ring, par, Q):
     for race in range(2):
         cx, cy, cz, rho = race_circle(race, ring, par)
         for j in range(balls.shape[1]):
-            delta, _, _, _ = groove_approach(balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, rho,
-                                             par[P_RG_I + race])
+            delta, _, _, _ = groove_approach(
+                balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, rho, par[P_RG_I + race]
+            )
             Q[race, j] = par[P_KH_I + race] * delta * math.sqrt(delta) if delta > 0.0 else 0.0
 
 

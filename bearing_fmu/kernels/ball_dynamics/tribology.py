@@ -19,31 +19,79 @@ w_orbit): the ball surface moves at u_b = (w - w_orbit z) x (D/2) n, the race su
 u_r = (omega_race - w_orbit) z x r (r from the ring axis to the contact point) + ring velocity;
 entrainment u = |u_b + u_r|/2 (tangential parts), SRR = |u_b - u_r|/u. Spin: (w - omega_race z).n.
 """
+
 import math
 
 from bearing_fmu_common.jit import kernel
 
 from ..capacitance import contact_capacitance, contact_permittivity
-from ..ehl import (FILM_HAMROCK_DOWSON, film_parameter, film_thickness, friction_coefficient, lubrication_regime,
-                   normal_damping)
+from ..ehl import (
+    FILM_HAMROCK_DOWSON,
+    film_parameter,
+    film_thickness,
+    friction_coefficient,
+    lubrication_regime,
+    normal_damping,
+)
 from ..torque import heathcote_force, hysteresis_force, spin_moment
 from .contacts import groove_approach
-from .state import (B_VX, B_WX, B_X, P_ALPHA_E, P_ALPHA_H, P_D, P_E_RED, P_EE_I, P_F_I, P_FILM, P_H_FLOOR,
-                    P_HA_I, P_HB_I, P_HP_I, P_K_I, P_KH_I, P_PRESSURE, P_RG_I, P_RHO_I, P_RX_I, P_RY_I, P_SIGMA_I, P_Z_I,
-                    R_VX, R_X, T_A, T_B, T_C_N, T_CAP, T_F_ROLL, T_H_C, T_H_MIN, T_LAMBDA, T_M_SPIN, T_MU, T_P_FILM,
-                    T_P_MAX, T_Q, T_REGIME, T_SIZE, T_SPIN, T_SRR, T_U)
+from .state import (
+    B_VX,
+    B_WX,
+    B_X,
+    P_ALPHA_E,
+    P_ALPHA_H,
+    P_D,
+    P_E_RED,
+    P_EE_I,
+    P_F_I,
+    P_FILM,
+    P_H_FLOOR,
+    P_HA_I,
+    P_HB_I,
+    P_HP_I,
+    P_K_I,
+    P_KH_I,
+    P_PRESSURE,
+    P_RG_I,
+    P_RHO_I,
+    P_RX_I,
+    P_RY_I,
+    P_SIGMA_I,
+    P_Z_I,
+    R_VX,
+    R_X,
+    T_A,
+    T_B,
+    T_C_N,
+    T_CAP,
+    T_F_ROLL,
+    T_H_C,
+    T_H_MIN,
+    T_LAMBDA,
+    T_M_SPIN,
+    T_MU,
+    T_P_FILM,
+    T_P_MAX,
+    T_Q,
+    T_REGIME,
+    T_SIZE,
+    T_SPIN,
+    T_SRR,
+    T_U,
+)
 
 # refresh_contact and race_circle are inlined into their loops (numba IR inlining; ~20 % faster refresh).
 
 # rows of the per-race constants of the power laws (tribology_constants)
-TC_LN_HMIN = 0   # ln h_min = TC_LN_HMIN + 0.68 ln u - 0.073 * 1.5 ln delta (Hamrock-Dowson)
-TC_LN_HC = 1     # ln h_c = TC_LN_HC + 0.67 ln u - 0.067 * 1.5 ln delta
-TC_LN_FR = 2     # ln F_R = TC_LN_FR + 0.656 ln u + 0.466 * 1.5 ln delta (Houpert)
+TC_LN_HMIN = 0  # ln h_min = TC_LN_HMIN + 0.68 ln u - 0.073 * 1.5 ln delta (Hamrock-Dowson)
+TC_LN_HC = 1  # ln h_c = TC_LN_HC + 0.67 ln u - 0.067 * 1.5 ln delta
+TC_LN_FR = 2  # ln F_R = TC_LN_FR + 0.656 ln u + 0.466 * 1.5 ln delta (Houpert)
 TC_SIZE = 3
 
 # offset between the inner and the outer block of contact parameters (P_*_I -> P_*_O)
-RACE_STRIDE_HERTZ = 5   # P_RX_I .. P_KK_I
-RACE_STRIDE_GEOM = 2    # P_RHO_I, P_Z_I -> P_RHO_O, P_Z_O
+RACE_STRIDE_HERTZ = 5  # P_RX_I .. P_KK_I
+RACE_STRIDE_GEOM = 2  # P_RHO_I, P_Z_I -> P_RHO_O, P_Z_O
 
 
 @kernel(inline="always")
@@ -71,14 +119,17 @@ def tribology_constants(par, eta, xi, tc):
         Rx = par[P_RX_I + h]
         Ry = par[P_RY_I + h]
         k = par[P_K_I + h]
-        ln_U = math.log(eta / (E_red * Rx))            # U / u
+        ln_U = math.log(eta / (E_red * Rx))  # U / u
         ln_W = math.log(par[P_KH_I + race] / (E_red * Rx * Rx))  # W / delta^1.5
-        tc[TC_LN_HMIN, race] = (math.log(3.63 * Rx * (1.0 - math.exp(-0.68 * k))) + 0.68 * ln_U + 0.49 * ln_G
-                                - 0.073 * ln_W)
-        tc[TC_LN_HC, race] = (math.log(2.69 * Rx * (1.0 - 0.61 * math.exp(-0.73 * k))) + 0.67 * ln_U
-                              + 0.53 * ln_G - 0.067 * ln_W)
-        tc[TC_LN_FR, race] = (math.log(2.765 * E_red * Rx * Rx) + 0.35 * math.log(Ry / Rx) + 0.656 * ln_U
-                              + 0.466 * ln_W + 0.022 * ln_G)
+        tc[TC_LN_HMIN, race] = (
+            math.log(3.63 * Rx * (1.0 - math.exp(-0.68 * k))) + 0.68 * ln_U + 0.49 * ln_G - 0.073 * ln_W
+        )
+        tc[TC_LN_HC, race] = (
+            math.log(2.69 * Rx * (1.0 - 0.61 * math.exp(-0.73 * k))) + 0.67 * ln_U + 0.53 * ln_G - 0.067 * ln_W
+        )
+        tc[TC_LN_FR, race] = (
+            math.log(2.765 * E_red * Rx * Rx) + 0.35 * math.log(Ry / Rx) + 0.656 * ln_U + 0.466 * ln_W + 0.022 * ln_G
+        )
 
 
 @kernel(inline="always")
