@@ -110,7 +110,7 @@ class DemModel:
         ring_mass=None,
         kt_ratio=KT_RATIO,
     ):
-        self.scene = scene or Scene(name="dem")
+        self.scene = (scene or Scene(name="dem")).validate()
         self.bearing = b = load_bearing(bearing)
         self.lubricant = load_lubricant(lubricant)
         self.Pd = b.Pd if Pd is None else float(Pd)
@@ -474,8 +474,10 @@ class DemModel:
         return result
 
     def contacts(self):
-        """Per-ball arrays (Z,): azimuth psi (rad, in [0, 2 pi)), orbital and spin speeds, and per race
-        ('_inner', '_outer') the current load and the last refresh's film, regime, SRR and capacitance."""
+        """Per-ball arrays (Z,): azimuth psi (rad, in [0, 2 pi)), orbital and spin speeds (rad/s), and per race
+        ('_inner', '_outer') the current load Q (N) and approach delta (m), and the last refresh's film
+        h_min, h_c (m), Lambda, regime, mu, normal damping C_n (N.s/m), SRR, entrainment speed u (m/s),
+        capacitance C (F) and Hertz semi-axes a, b (m)."""
         contact_loads(self.balls, self.ring, self.par, self._Q)
         x, y = self.balls[s.B_X], self.balls[s.B_X + 1]
         r2 = x * x + y * y
@@ -491,6 +493,7 @@ class DemModel:
             "Lambda": s.T_LAMBDA,
             "regime": s.T_REGIME,
             "mu": s.T_MU,
+            "C_n": s.T_C_N,
             "SRR": s.T_SRR,
             "u": s.T_U,
             "C": s.T_CAP,
@@ -500,6 +503,7 @@ class DemModel:
         for race, suffix in ((0, "_inner"), (1, "_outer")):
             for name, row in names.items():
                 result[name + suffix] = self._Q[race].copy() if row is None else self.trib[row, race].copy()
+            result["delta" + suffix] = (self._Q[race] / self.par[s.P_KH_I + race]) ** (2.0 / 3.0)
         return result
 
     def record(self, t_end, interval, omega=None, **inputs):
