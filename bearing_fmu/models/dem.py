@@ -234,6 +234,7 @@ class DemModel:
             p[s.P_HB_I + 3 * race] = b1 * cube
             p[s.P_HP_I + 3 * race] = p1 * cube
         p[s.P_CHATTER] = CHATTER_STEPS
+        p[s.P_CAPACITANCE] = 1.0 if sc.capacitance else 0.0
         p[s.P_REFRESH] = 1
         return p
 

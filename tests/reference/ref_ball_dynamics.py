@@ -128,8 +128,9 @@ def refresh(st, par, lub, omega, T_oil):
             trib[s.T_H_MIN, race, j] = h_min
             trib[s.T_H_C, race, j] = h_c
             trib[s.T_LAMBDA, race, j] = lam
-            eps = ref_capacitance.contact_permittivity(K_cm, rho0, p_max, int(par[s.P_PRESSURE]))
-            trib[s.T_CAP, race, j] = ref_capacitance.contact_capacitance(eps, a, b, h_c, par[s.P_H_FLOOR])
+            if par[s.P_CAPACITANCE]:
+                eps = ref_capacitance.contact_permittivity(K_cm, rho0, p_max, int(par[s.P_PRESSURE]))
+                trib[s.T_CAP, race, j] = ref_capacitance.contact_capacitance(eps, a, b, h_c, par[s.P_H_FLOOR])
 
 
 def damped_hertz(K, delta, zeta, m_eff, v_app):

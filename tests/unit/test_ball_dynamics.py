@@ -200,6 +200,17 @@ def test_bad_inputs_are_rejected_with_their_range(running_6208, kwargs, word):
         running_6208.advance(running_6208.time + 1e-4, **kwargs)
 
 
+def test_capacitance_off_is_not_computed():
+    """A scene without capacitance neither computes the contact capacitances nor exposes C_bearing."""
+    from bearing_fmu.scene import Scene
+
+    model = DemModel("6208", "guessasma_oil", scene=Scene(name="dem", capacitance=False))
+    out = model.advance(2e-3, omega=50.0, F_x=3000.0)
+    assert "C_bearing" not in out
+    assert not model.trib[s.T_CAP].any()
+    assert model.trib[s.T_H_C].max() > 0.0
+
+
 def test_thermal_clearance_change_acts_like_the_clearance():
     """dPd_thermal = +12.6 um on a P_d = 0 bearing loads the balls as P_d = 12.6 um does (same groove
     circles; the Hertz constants differ only through the free contact angle's effect on R_x: < 0.3 %).

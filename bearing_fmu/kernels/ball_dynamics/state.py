@@ -118,7 +118,8 @@ P_HP_I = 53
 P_HA_O = 54  # the same for the outer contact
 P_HB_O = 55
 P_HP_O = 56
-P_SIZE = 57
+P_CAPACITANCE = 57  # 1: compute the contact capacitances; 0: the scene turned them off (not computed, 0)
+P_SIZE = 58
 
 # ---- outputs of advance(): float64[O_SIZE] --------------------------------------------------------
 O_OMEGA_CAGE = 0  # cage speed: mean orbital angular speed of the balls (rad/s)

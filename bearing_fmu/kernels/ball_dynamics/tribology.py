@@ -41,6 +41,7 @@ from .state import (
     B_X,
     P_ALPHA_E,
     P_ALPHA_H,
+    P_CAPACITANCE,
     P_D,
     P_E_RED,
     P_EE_I,
@@ -238,5 +239,8 @@ def refresh_contact(race, j, omega, eta, xi, K_cm, rho0, balls, ring, par, trib,
     trib[T_H_MIN, race, j] = h_min
     trib[T_H_C, race, j] = h_c
     trib[T_LAMBDA, race, j] = lam
-    eps = contact_permittivity(K_cm, rho0, p_max, int(par[P_PRESSURE]))
-    trib[T_CAP, race, j] = contact_capacitance(eps, a, b, h_c, par[P_H_FLOOR])
+    if par[P_CAPACITANCE] > 0.5:
+        eps = contact_permittivity(K_cm, rho0, p_max, int(par[P_PRESSURE]))
+        trib[T_CAP, race, j] = contact_capacitance(eps, a, b, h_c, par[P_H_FLOOR])
+    else:
+        trib[T_CAP, race, j] = 0.0
