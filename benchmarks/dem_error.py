@@ -1,4 +1,4 @@
-"""DEM error against run time (SPEC 7): time step dt and tribology refresh interval N against a fine reference.
+"""DEM error against run time: time step dt and tribology refresh interval N against a fine reference.
 
 Operating point: the seeds' 6208, P_d = 0, F_r = 3 kN, 500 rad/s, guessasma_oil. One steady state (start-up
 of the validation run to 30 ms at the default settings) is the start of every run; each run advances

@@ -1,5 +1,5 @@
-"""Time per DEM step (6208, 9 balls + 9 cage balls) and simulated time against wall time (SPEC 9 targets:
-<= 1.2 us per step with the multirate tribology, <= 2 us with every per-contact quantity every step,
+"""Time per DEM step (6208, 9 balls + 9 cage balls) and simulated time against wall time (targets of the
+product: <= 1.2 us per step with the multirate tribology, <= 2 us with every per-contact quantity every step,
 1 ms simulated <= 0.5 ms wall at the default time step), with a profile of where the time goes.
 
 Operating point: the seeds' 6208, P_d = 0, F_r = 3 kN, 500 rad/s, guessasma_oil, steady rolling after the

@@ -1,8 +1,8 @@
 """Stability monitor and time-step limit of the DEM.
 
 Explicit integration of stiff contacts is stable below 2/omega_n of the stiffest oscillator; the
-tangential spring chatters against its Coulomb limit below that (SPEC of the product: for the 6208 at
-3 kN a prototype went unstable from about 9 us and chattered from about 7 us). critical_time_step
+tangential spring chatters against its Coulomb limit below that (the 6208 at 3 kN, 500 rad/s goes
+unstable at about 9 us and chatters from about 7 us, docs/reports/dem_error.md). critical_time_step
 estimates the limit from the contact loads; the monitor stops a run on a non-finite force, a
 penetration beyond the physical limit, kinetic energy beyond the bound of the inputs, or chatter.
 """
