@@ -230,9 +230,9 @@ class DemModel:
         for race, (Rx, Ry, c) in enumerate(((Rx_i, Ry_i, ci), (Rx_o, Ry_o, co))):
             a1, b1, _, p1 = hertz_contact(1.0, Rx, Ry, E_red, *c)
             cube = p[s.P_KH_I + race] ** (1.0 / 3.0)
-            p[s.P_HA_I + 3 * race] = a1 * cube
-            p[s.P_HB_I + 3 * race] = b1 * cube
-            p[s.P_HP_I + 3 * race] = p1 * cube
+            p[s.P_HA_I + s.P_HERTZ_SCALE_STRIDE * race] = a1 * cube
+            p[s.P_HB_I + s.P_HERTZ_SCALE_STRIDE * race] = b1 * cube
+            p[s.P_HP_I + s.P_HERTZ_SCALE_STRIDE * race] = p1 * cube
         p[s.P_CHATTER] = CHATTER_STEPS
         p[s.P_CAPACITANCE] = 1.0 if sc.capacitance else 0.0
         p[s.P_REFRESH] = 1

@@ -42,6 +42,7 @@ from .state import (
     P_D,
     P_KT_RATIO,
     S_INNER,
+    S_STRIDE,
     T_C_N,
     T_F_ROLL,
     T_M_SPIN,
@@ -171,7 +172,7 @@ def ball_race_contact(
     py = balls[B_X + 1, j]
     pz = balls[B_X + 2, j]
     delta, nx, ny, nz = groove_approach(px, py, pz, cx, cy, cz, rho, rg)
-    row = S_INNER + 3 * race
+    row = S_INNER + S_STRIDE * race
     kc = K_SIZE + race * Z + j
     if delta <= 0.0:  # open: the spring and the chatter count start again at the next touch
         spring[row, j] = 0.0

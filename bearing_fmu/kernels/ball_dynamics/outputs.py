@@ -27,6 +27,7 @@ from .state import (
     O_HMIN_I,
     O_KINETIC,
     O_LAMBDA_I,
+    O_LAMBDA_O,
     O_N_LOADED,
     O_OMEGA_BALL,
     O_OMEGA_BALL_REL,
@@ -34,6 +35,7 @@ from .state import (
     O_P_LOSS,
     O_PMAX,
     O_Q_INNER_RING,
+    O_Q_OUTER_RING,
     O_QMAX_I,
     O_REGIME,
     O_SIZE,
@@ -106,7 +108,7 @@ def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, 
         out[O_LAMBDA_I + race] = lam_min if loaded else 0.0
         out[O_HMIN_I + race] = h_min if loaded else 0.0
         out[O_HC_I + race] = h_c if loaded else 0.0
-    out[O_REGIME] = lubrication_regime(min(out[O_LAMBDA_I], out[O_LAMBDA_I + 1]))
+    out[O_REGIME] = lubrication_regime(min(out[O_LAMBDA_I], out[O_LAMBDA_O]))
     if out[O_QMAX_I] == 0.0:  # no inner contact: report the most loaded outer one
         for j in range(Z):
             if Q[1, j] > Q[1, j_max]:
@@ -128,8 +130,8 @@ def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, 
     out[O_C_BEARING] = c_total
     if interval > 0.0:
         out[O_Q_INNER_RING] = acc[A_DISS_I] / interval
-        out[O_Q_INNER_RING + 1] = acc[A_DISS_O] / interval
-    out[O_P_LOSS] = out[O_Q_INNER_RING] + out[O_Q_INNER_RING + 1]
+        out[O_Q_OUTER_RING] = acc[A_DISS_O] / interval
+    out[O_P_LOSS] = out[O_Q_INNER_RING] + out[O_Q_OUTER_RING]
     out[O_TORQUE] = out[O_P_LOSS] / abs(omega) if omega != 0.0 else 0.0
     kinematic_cage = rolling_kinematics(omega, par[P_D], par[P_DM], par[P_ALPHA0])[0]
     out[O_CAGE_SLIP] = 1.0 - omega_cage / kinematic_cage if kinematic_cage != 0.0 else 0.0

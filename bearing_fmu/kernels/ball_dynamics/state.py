@@ -35,6 +35,7 @@ R_SIZE = 10
 S_INNER = 0  # x, y, z of the inner contact's spring
 S_OUTER = 3  # x, y, z of the outer contact's spring
 S_SIZE = 6
+S_STRIDE = S_OUTER - S_INNER  # inner -> outer block
 
 # ---- per-contact tribology, refreshed every N steps: float64[T_SIZE, 2, Z] (race 0 inner, 1 outer)
 T_MU = 0  # Coulomb coefficient mu(Lambda) (-)
@@ -118,6 +119,7 @@ P_HP_I = 53
 P_HA_O = 54  # the same for the outer contact
 P_HB_O = 55
 P_HP_O = 56
+P_HERTZ_SCALE_STRIDE = P_HA_O - P_HA_I  # inner -> outer block of the Hertz scaling
 P_CAPACITANCE = 57  # 1: compute the contact capacitances; 0: the scene turned them off (not computed, 0)
 P_SIZE = 58
 

@@ -50,6 +50,7 @@ from .state import (
     P_H_FLOOR,
     P_HA_I,
     P_HB_I,
+    P_HERTZ_SCALE_STRIDE,
     P_HP_I,
     P_K_I,
     P_KH_I,
@@ -162,9 +163,9 @@ def refresh_contact(race, j, omega, eta, xi, K_cm, rho0, balls, ring, par, trib,
     root = math.sqrt(delta)
     Q = par[P_KH_I + race] * delta * root
     # Hertz semi-axes and pressure grow as Q^(1/3) = K_h^(1/3) delta^(1/2): scaled from kernels.hertz at 1 N
-    a = par[P_HA_I + 3 * race] * root
-    b = par[P_HB_I + 3 * race] * root
-    p_max = par[P_HP_I + 3 * race] * root
+    a = par[P_HA_I + P_HERTZ_SCALE_STRIDE * race] * root
+    b = par[P_HB_I + P_HERTZ_SCALE_STRIDE * race] * root
+    p_max = par[P_HP_I + P_HERTZ_SCALE_STRIDE * race] * root
     half_d = 0.5 * D
     vx = balls[B_VX, j]
     vy = balls[B_VX + 1, j]
