@@ -30,6 +30,7 @@ from scipy.integrate import quad
 from scipy.optimize import brentq
 
 from bearing_fmu.kernels.ball_dynamics import state as s
+from bearing_fmu.kernels.lubricant import LUB_EPS_R0
 from tests.reference import ref_capacitance, ref_ehl, ref_hertz, ref_lubricant, ref_torque
 
 Z_AXIS = np.array([0.0, 0.0, 1.0])
@@ -72,7 +73,7 @@ def orbit_speed(p, v):
 def refresh(st, par, lub, omega, T_oil):
     """Per-contact tribology from the state (the kernel's trib rows)."""
     eta, xi, rho0 = ref_lubricant.lubricant_state(T_oil, lub)
-    K_cm = ref_lubricant.clausius_mossotti_constant(lub[12], rho0)  # LUB_EPS_R0
+    K_cm = ref_lubricant.clausius_mossotti_constant(lub[LUB_EPS_R0], rho0)
     balls, ring, trib = st["balls"], st["ring"], st["trib"]
     D = par[s.P_D]
     E_red = par[s.P_E_RED]
