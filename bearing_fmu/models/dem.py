@@ -23,7 +23,7 @@ import numpy as np
 from ..kernels.ball_dynamics import integrator as dyn
 from ..kernels.ball_dynamics import state as s
 from ..kernels.ball_dynamics.monitor import critical_time_step
-from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_loads
+from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_angles, contact_loads
 from ..kernels.geometry import ball_mass, curvature_radii, free_contact_angle, rolling_kinematics
 from ..kernels.hertz import (
     hertz_coefficients_approx,
@@ -145,6 +145,7 @@ class DemModel:
         self._work = np.zeros((s.W_SIZE, Z))
         self._acc = np.zeros(s.A_SIZE)
         self._Q = np.zeros((2, Z))
+        self._alpha = np.zeros((2, Z))
         self.dt = math.nan  # time step of the last advance() call (s)
         self.refresh = 0  # its tribology refresh interval (steps)
         self._place_bodies()
@@ -409,6 +410,7 @@ class DemModel:
             orbit0,
             self.scene.background_capacitance,
             self._Q,
+            self._alpha,
             self.out,
         )
         return self.outputs()
@@ -450,6 +452,8 @@ class DemModel:
             Q_max_inner=o[s.O_QMAX_I],
             Q_max_outer=o[s.O_QMAX_O],
             p_max=o[s.O_PMAX],
+            alpha_inner=o[s.O_ALPHA_I],
+            alpha_outer=o[s.O_ALPHA_O],
             Lambda_inner=o[s.O_LAMBDA_I],
             Lambda_outer=o[s.O_LAMBDA_O],
             h_min_inner=o[s.O_HMIN_I],
@@ -478,8 +482,9 @@ class DemModel:
         """Per-ball arrays (Z,): azimuth psi (rad, in [0, 2 pi)), orbital and spin speeds (rad/s), and per race
         ('_inner', '_outer') the current load Q (N) and approach delta (m), and the last refresh's film
         h_min, h_c (m), Lambda, regime, mu, normal damping C_n (N.s/m), SRR, entrainment speed u (m/s),
-        capacitance C (F) and Hertz semi-axes a, b (m)."""
+        capacitance C (F) and Hertz semi-axes a, b (m); the current contact angle alpha (rad)."""
         contact_loads(self.balls, self.ring, self.par, self._Q)
+        contact_angles(self.balls, self.ring, self.par, self._alpha)
         x, y = self.balls[s.B_X], self.balls[s.B_X + 1]
         r2 = x * x + y * y
         result = {
@@ -505,6 +510,7 @@ class DemModel:
             for name, row in names.items():
                 result[name + suffix] = self._Q[race].copy() if row is None else self.trib[row, race].copy()
             result["delta" + suffix] = (self._Q[race] / self.par[s.P_KH_I + race]) ** (2.0 / 3.0)
+            result["alpha" + suffix] = self._alpha[race].copy()
         return result
 
     def record(self, t_end, interval, omega=None, **inputs):

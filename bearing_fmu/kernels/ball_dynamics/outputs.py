@@ -21,6 +21,8 @@ from .state import (
     B_ORBIT,
     B_WX,
     B_X,
+    O_ALPHA_I,
+    O_ALPHA_O,
     O_C_BEARING,
     O_CAGE_SLIP,
     O_HC_I,
@@ -69,19 +71,33 @@ def contact_loads(balls, ring, par, Q):
 
 
 @kernel
-def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, c_background, Q, out):
+def contact_angles(balls, ring, par, alpha):
+    """Contact angles (rad) of every ball-race contact into alpha[race, ball]: the angle of the contact
+    normal from the radial plane (0 for a deep-groove bearing under radial load); 0 when open."""
+    for race in range(2):
+        cx, cy, cz, rho = race_circle(race, ring, par)
+        for j in range(balls.shape[1]):
+            delta, nx, ny, nz = groove_approach(
+                balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, rho, par[P_RG_I + race]
+            )
+            alpha[race, j] = math.atan2(abs(nz), math.sqrt(nx * nx + ny * ny)) if delta > 0.0 else 0.0
+
+
+@kernel
+def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, c_background, Q, alpha, out):
     """Fill out[O_*] for inner-ring speed omega (rad/s) after an interval (s) of advance().
 
     orbit0: sum of the balls' orbital angles (rad) at the start of the interval: the cage speed is their mean
     change over the interval (the instantaneous orbital speeds fluctuate with the cage-ball contacts).
-    Q: float64[2, Z] work array (receives the current contact loads); c_background (F) is added to the
-    capacitance (0 by default). Races without a loaded contact report zero film (as the quasi-static
+    Q, alpha: float64[2, Z] work arrays (receive the current contact loads and angles); c_background (F) is
+    added to the capacitance (0 by default). Races without a loaded contact report zero film (as the quasi-static
     fidelity).
     """
     Z = balls.shape[1]
     for k in range(O_SIZE):
         out[k] = 0.0
     contact_loads(balls, ring, par, Q)
+    contact_angles(balls, ring, par, alpha)
     j_max = 0
     orbit = 0.0
     for race in range(2):
@@ -128,6 +144,8 @@ def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, 
     out[O_OMEGA_BALL] = math.copysign(w, omega) if omega != 0.0 else w
     out[O_OMEGA_BALL_REL] = math.sqrt(wx * wx + wy * wy + (wz - omega_cage) ** 2)
     out[O_C_BEARING] = c_total
+    out[O_ALPHA_I] = alpha[0, j_max]
+    out[O_ALPHA_O] = alpha[1, j_max]
     if interval > 0.0:
         out[O_Q_INNER_RING] = acc[A_DISS_I] / interval
         out[O_Q_OUTER_RING] = acc[A_DISS_O] / interval

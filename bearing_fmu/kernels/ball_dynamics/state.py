@@ -146,7 +146,9 @@ O_TORQUE = 18  # P_loss / |omega| (N.m)
 O_CAGE_SLIP = 19  # 1 - omega_cage / (pure-rolling cage speed) (-)
 O_SRR_MAX = 20  # largest slide-to-roll ratio of a loaded contact (-)
 O_KINETIC = 21  # kinetic energy of all bodies (J)
-O_SIZE = 22
+O_ALPHA_I = 22  # contact angle of the most loaded ball's inner contact (rad)
+O_ALPHA_O = 23  # and of its outer contact (rad)
+O_SIZE = 24
 
 # ---- status of advance(): int64[ST_SIZE] ----------------------------------------------------------
 ST_CODE = 0  # one of the STATUS_* codes
