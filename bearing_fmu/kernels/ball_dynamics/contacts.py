@@ -1,0 +1,270 @@
+"""Ball-race contact of the DEM: exact groove-torus geometry, Hertz normal law with C_n(Lambda) damping,
+tangential spring with a Coulomb limit, and the Houpert resistances as moments on the ball.
+
+SI units. Guessasma & Machado (2018) and Farah et al. (2020) give the model: Kelvin-Voigt normal
+contact with the Hertz elliptical stiffness, regime-dependent damping C_n(Lambda) and friction mu(Lambda),
+Cundall-Strack tangential spring K_t in [2/3, 1] K_n with a Coulomb limit.
+
+Geometry. A groove is a torus: its cross-section is a circle of radius f D whose centre runs on the
+groove-curvature-centre circle (radius rho, on the ring's axis, at an axial position). The approach
+of a ball of diameter D is delta = |s| - (f - 1/2) D, s the vector from the nearest point of that circle
+to the ball centre; the contact normal is n = s/|s| (it points from the curvature centre through the
+ball centre to the contact point, at the ball centre + (D/2) n). The same expression holds for the
+inner and the outer groove (Harris & Kotzalas 2006, ch. 2; the quasi-static model of this package
+uses it per ball in the ball's plane).
+
+Rolling resistances (Houpert, kernels.torque). The EHL rolling force F_R acts on both surfaces
+(power 2 F_R u, Biboulet & Houpert 2010); hysteresis F_h and Heathcote sliding F_H dissipate F u
+per contact, taken half on each surface. An offset pressure centre gives each body a moment, no net
+force (the normal forces on ball and race stay on one line, so momentum is conserved): the ball
+gets the moment (F_R + (F_h + F_H)/2)(D/2) opposing its rolling relative to the contact frame
+(power F u_ball with u_ball = |omega_rel| D/2), and the pivoting moment M_s opposing its spin
+relative to the race. The race's share acts on the prescribed inner ring or on the fixed outer ring
+and only enters the dissipated power. Directions are regularised below the speed v_reg, or below the
+angular speed at which the regularised (viscous) moment would exceed I/(4 dt), whichever is larger.
+"""
+
+import math
+
+from bearing_fmu_common.jit import kernel
+
+from ..ehl import REGIME_BOUNDARY
+
+# The contact functions are inlined into the force loop (numba IR inlining): called through numba's
+# ordinary calls, the arrays travel as exploded structs and the 18 contacts per step cost ~50 % more.
+from .state import (
+    A_DISS_I,
+    A_FR,
+    A_VR,
+    B_X,
+    K_SIZE,
+    P_ALPHA_E,
+    P_D,
+    P_KT_RATIO,
+    S_INNER,
+    S_STRIDE,
+    T_C_N,
+    T_F_ROLL,
+    T_M_SPIN,
+    T_MU,
+    T_REGIME,
+    W_FB,
+    W_MB,
+    W_ORBIT,
+    W_VB,
+    W_WB,
+)
+
+
+@kernel(inline="always")
+def groove_approach(px, py, pz, cx, cy, cz, rho, rg):
+    """Approach and normal of a ball at (px, py, pz) (m) in a groove whose curvature-centre circle has
+    centre (cx, cy, cz) (m), lies in the plane normal to z and has radius rho (m); rg = (f - 1/2) D (m).
+
+    Returns (delta, nx, ny, nz): approach (m, > 0 in contact) and the unit normal from the
+    curvature centre to the ball centre. A ball on the axis or on the circle itself has no defined
+    normal and is reported open (delta = -1), which no bearing geometry reaches.
+    """
+    dx = px - cx
+    dy = py - cy
+    r = math.sqrt(dx * dx + dy * dy)
+    if r == 0.0:
+        return -1.0, 0.0, 0.0, 0.0
+    scale = 1.0 - rho / r
+    sx = dx * scale
+    sy = dy * scale
+    sz = pz - cz
+    dist = math.sqrt(sx * sx + sy * sy + sz * sz)
+    if dist == 0.0:
+        return -1.0, 0.0, 0.0, 0.0
+    inv = 1.0 / dist
+    return dist - rg, sx * inv, sy * inv, sz * inv
+
+
+@kernel(inline="always")
+def contact_damping(regime, c_frozen, alpha_e, Q):
+    """Normal damping (N.s/m): the boundary law C_hyst = 1.5 alpha_e Q follows the instantaneous load Q (N)
+    (it is proportional to it, kernels.ehl.normal_damping); the mixed and full-film values are those of
+    the last tribology refresh, c_frozen (N.s/m)."""
+    if regime == REGIME_BOUNDARY:
+        return 1.5 * alpha_e * Q
+    return c_frozen
+
+
+@kernel(inline="always")
+def tangential_spring(spring, row, j, nx, ny, nz, vtx, vty, vtz, dt, kt, f_limit):
+    """Advance the tangential spring of one contact and return its force on the ball.
+
+    spring[row:row + 3, j] (m) is projected on the current tangent plane (normal n), lengthened by
+    the tangential relative velocity v_t (m/s) times dt (s), and turned into F_t = -kt * spring
+    (kt in N/m). Beyond the Coulomb limit f_limit = mu F_n (N) the force is scaled back to the
+    limit and the spring shortened to match (Cundall & Strack 1979). Returns (ftx, fty, ftz,
+    slipping, reversed): reversed is True when a slipping spring points against its previous
+    direction (a sign of chatter).
+    """
+    ox = spring[row, j]
+    oy = spring[row + 1, j]
+    oz = spring[row + 2, j]
+    on = ox * nx + oy * ny + oz * nz
+    ox -= on * nx
+    oy -= on * ny
+    oz -= on * nz
+    sx = ox + vtx * dt
+    sy = oy + vty * dt
+    sz = oz + vtz * dt
+    fx = -kt * sx
+    fy = -kt * sy
+    fz = -kt * sz
+    f2 = fx * fx + fy * fy + fz * fz
+    slipping = f2 > f_limit * f_limit
+    reversed_ = False
+    if slipping:
+        scale = f_limit / math.sqrt(f2)
+        fx *= scale
+        fy *= scale
+        fz *= scale
+        sx = -fx / kt
+        sy = -fy / kt
+        sz = -fz / kt
+        reversed_ = sx * ox + sy * oy + sz * oz < 0.0
+    spring[row, j] = sx
+    spring[row + 1, j] = sy
+    spring[row + 2, j] = sz
+    return fx, fy, fz, slipping, reversed_
+
+
+@kernel(inline="always")
+def ball_race_contact(
+    race,
+    j,
+    omega,
+    rho,
+    cx,
+    cy,
+    cz,
+    rg,
+    K_h,
+    inv_delta_lim,
+    rate_inv,
+    w_reg,
+    balls,
+    ring,
+    spring,
+    trib,
+    counters,
+    par,
+    work,
+    acc,
+    dt,
+):
+    """Forces of the contact of ball j with one race, added to the work arrays.
+
+    race 0 inner (turning at omega rad/s about z through the ring centre (cx, cy), translating with the
+    predicted ring velocity acc[A_VR:]), 1 outer (fixed). (cx, cy, cz), rho, rg: the groove's
+    curvature-centre circle and (f - 1/2) D (m); K_h (N/m^1.5); inv_delta_lim: 1 / penetration limit (1/m);
+    rate_inv = 4 dt / I (1/(N.m.s)), the inverse of the largest viscous rate of a regularised moment;
+    w_reg = v_reg / (D/2) (rad/s). Uses the positions in balls/ring and the predicted velocities in work;
+    updates the spring, the chatter counter and the dissipated energy acc[A_DISS_I + race] (J); dt (s).
+    Returns (delta / delta_lim, chatter count): the monitor's two per-contact indicators.
+    """
+    Z = balls.shape[1]
+    px = balls[B_X, j]
+    py = balls[B_X + 1, j]
+    pz = balls[B_X + 2, j]
+    delta, nx, ny, nz = groove_approach(px, py, pz, cx, cy, cz, rho, rg)
+    row = S_INNER + S_STRIDE * race
+    kc = K_SIZE + race * Z + j
+    if delta <= 0.0:  # open: the spring and the chatter count start again at the next touch
+        spring[row, j] = 0.0
+        spring[row + 1, j] = 0.0
+        spring[row + 2, j] = 0.0
+        counters[kc] = 0
+        return 0.0, 0
+    half_d = 0.5 * par[P_D]
+    root = math.sqrt(delta)
+    Q = K_h * delta * root
+    # contact point relative to the ball centre and surface velocities there
+    rcx = half_d * nx
+    rcy = half_d * ny
+    rcz = half_d * nz
+    vx = work[W_VB, j]
+    vy = work[W_VB + 1, j]
+    vz = work[W_VB + 2, j]
+    wx = work[W_WB, j]
+    wy = work[W_WB + 1, j]
+    wz = work[W_WB + 2, j]
+    vbx = vx + wy * rcz - wz * rcy
+    vby = vy + wz * rcx - wx * rcz
+    vbz = vz + wx * rcy - wy * rcx
+    if race == 0:
+        # inner-race surface: ring translation + rotation about the ring's axis
+        vrx = acc[A_VR] - omega * (py + rcy - cy)
+        vry = acc[A_VR + 1] + omega * (px + rcx - cx)
+        vrz = acc[A_VR + 2]
+        w_race = omega
+    else:
+        vrx = 0.0
+        vry = 0.0
+        vrz = 0.0
+        w_race = 0.0
+    ux = vbx - vrx
+    uy = vby - vry
+    uz = vbz - vrz
+    vn = ux * nx + uy * ny + uz * nz  # > 0: approaching
+    vtx = ux - vn * nx
+    vty = uy - vn * ny
+    vtz = uz - vn * nz
+    c_n = contact_damping(int(trib[T_REGIME, race, j]), trib[T_C_N, race, j], par[P_ALPHA_E], Q)
+    F_n = Q + c_n * vn
+    if F_n < 0.0:  # a damper cannot pull the surfaces together
+        F_n = 0.0
+    kt = par[P_KT_RATIO] * K_h * root
+    ftx, fty, ftz, slipping, reversed_ = tangential_spring(
+        spring, row, j, nx, ny, nz, vtx, vty, vtz, dt, kt, trib[T_MU, race, j] * F_n
+    )
+    if reversed_:
+        counters[kc] += 1
+    else:
+        counters[kc] = 0
+    # force on the ball: normal push back towards the curvature centre, tangential traction
+    fx = -F_n * nx + ftx
+    fy = -F_n * ny + fty
+    fz = -F_n * nz + ftz
+    work[W_FB, j] += fx
+    work[W_FB + 1, j] += fy
+    work[W_FB + 2, j] += fz
+    mx = rcy * ftz - rcz * fty
+    my = rcz * ftx - rcx * ftz
+    mz = rcx * fty - rcy * ftx
+    # Houpert resistances: rolling relative to the contact frame (which turns with the ball's orbit)
+    # and spin relative to the race
+    w_orbit = work[W_ORBIT, j]
+    qx = wx
+    qy = wy
+    qz = wz - w_orbit
+    qn = qx * nx + qy * ny + qz * nz
+    qx -= qn * nx
+    qy -= qn * ny
+    qz -= qn * nz
+    q = math.sqrt(qx * qx + qy * qy + qz * qz)
+    # below the regularisation speed a resistance acts as a viscous damper M/w_reg; its rate is kept
+    # within a quarter of I/dt so that the explicit step cannot overshoot (with four resistances on the
+    # ball their sum stays below I/dt: no sign reversal, no chatter)
+    f_roll = trib[T_F_ROLL, race, j] * half_d
+    m_roll = f_roll / max(q, w_reg, f_roll * rate_inv)
+    spin = wx * nx + wy * ny + (wz - w_race) * nz
+    m_s = trib[T_M_SPIN, race, j]
+    m_spin = m_s / max(abs(spin), w_reg, m_s * rate_inv)
+    work[W_MB, j] += mx - m_roll * qx - m_spin * spin * nx
+    work[W_MB + 1, j] += my - m_roll * qy - m_spin * spin * ny
+    work[W_MB + 2, j] += mz - m_roll * qz - m_spin * spin * nz
+    if race == 0:
+        acc[A_FR] -= fx
+        acc[A_FR + 1] -= fy
+        acc[A_FR + 2] -= fz
+    # dissipation in the contact itself (the Houpert part is booked per step by the integrator)
+    power = c_n * vn * vn if F_n > 0.0 else 0.0
+    if slipping:
+        power -= ftx * vtx + fty * vty + ftz * vtz
+    acc[A_DISS_I + race] += power * dt
+    return delta * inv_delta_lim, counters[kc]

@@ -1,0 +1,156 @@
+"""Bearing-level outputs of the DEM state, with the names and meanings of the quasi-static fidelity.
+
+Computed once per call of advance() (a recording interval), not every step. Loads come from the
+current approaches; film, regime and capacitance from the last tribology refresh; power from the
+energy dissipated in the contacts over the interval (Houpert film losses, normal damping and
+tangential slip), so the torque P_loss/|omega| emerges from the dynamics.
+"""
+
+import math
+
+from bearing_fmu_common.jit import kernel
+
+from ..capacitance import ball_capacitance
+from ..ehl import lubrication_regime
+from ..geometry import rolling_kinematics
+from .contacts import groove_approach
+from .monitor import kinetic_energy
+from .state import (
+    A_DISS_I,
+    A_DISS_O,
+    B_ORBIT,
+    B_WX,
+    B_X,
+    O_ALPHA_I,
+    O_ALPHA_O,
+    O_C_BEARING,
+    O_CAGE_SLIP,
+    O_HC_I,
+    O_HMIN_I,
+    O_KINETIC,
+    O_LAMBDA_I,
+    O_LAMBDA_O,
+    O_N_LOADED,
+    O_OMEGA_BALL,
+    O_OMEGA_BALL_REL,
+    O_OMEGA_CAGE,
+    O_P_LOSS,
+    O_PMAX,
+    O_Q_INNER_RING,
+    O_Q_OUTER_RING,
+    O_QMAX_I,
+    O_REGIME,
+    O_SIZE,
+    O_SRR_MAX,
+    O_TORQUE,
+    P_ALPHA0,
+    P_D,
+    P_DM,
+    P_KH_I,
+    P_RG_I,
+    T_CAP,
+    T_H_C,
+    T_H_MIN,
+    T_LAMBDA,
+    T_P_MAX,
+    T_SRR,
+)
+from .tribology import race_circle
+
+
+@kernel
+def contact_loads(balls, ring, par, Q):
+    """Current normal loads (N) of every ball-race contact into Q[race, ball] (0 when open)."""
+    for race in range(2):
+        cx, cy, cz, rho = race_circle(race, ring, par)
+        for j in range(balls.shape[1]):
+            delta, _, _, _ = groove_approach(
+                balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, rho, par[P_RG_I + race]
+            )
+            Q[race, j] = par[P_KH_I + race] * delta * math.sqrt(delta) if delta > 0.0 else 0.0
+
+
+@kernel
+def contact_angles(balls, ring, par, alpha):
+    """Contact angles (rad) of every ball-race contact into alpha[race, ball]: the angle of the contact
+    normal from the radial plane (0 for a deep-groove bearing under radial load); 0 when open."""
+    for race in range(2):
+        cx, cy, cz, rho = race_circle(race, ring, par)
+        for j in range(balls.shape[1]):
+            delta, nx, ny, nz = groove_approach(
+                balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, rho, par[P_RG_I + race]
+            )
+            alpha[race, j] = math.atan2(abs(nz), math.sqrt(nx * nx + ny * ny)) if delta > 0.0 else 0.0
+
+
+@kernel
+def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, c_background, Q, alpha, out):
+    """Fill out[O_*] for inner-ring speed omega (rad/s) after an interval (s) of advance().
+
+    orbit0: sum of the balls' orbital angles (rad) at the start of the interval: the cage speed is their mean
+    change over the interval (the instantaneous orbital speeds fluctuate with the cage-ball contacts).
+    Q, alpha: float64[2, Z] work arrays (receive the current contact loads and angles); c_background (F) is
+    added to the capacitance (0 by default). Races without a loaded contact report zero film (as the quasi-static
+    fidelity).
+    """
+    Z = balls.shape[1]
+    for k in range(O_SIZE):
+        out[k] = 0.0
+    contact_loads(balls, ring, par, Q)
+    contact_angles(balls, ring, par, alpha)
+    j_max = 0
+    orbit = 0.0
+    for race in range(2):
+        lam_min = math.inf
+        h_min = math.inf
+        q_max = 0.0
+        h_c = 0.0
+        for j in range(Z):
+            q = Q[race, j]
+            if q > 0.0:
+                if trib[T_LAMBDA, race, j] < lam_min:
+                    lam_min = trib[T_LAMBDA, race, j]
+                if trib[T_H_MIN, race, j] < h_min:
+                    h_min = trib[T_H_MIN, race, j]
+                out[O_SRR_MAX] = max(out[O_SRR_MAX], trib[T_SRR, race, j])
+                out[O_PMAX] = max(out[O_PMAX], trib[T_P_MAX, race, j])
+            if q > q_max:
+                q_max = q
+                h_c = trib[T_H_C, race, j]
+                if race == 0:
+                    j_max = j
+        loaded = q_max > 0.0
+        out[O_QMAX_I + race] = q_max
+        out[O_LAMBDA_I + race] = lam_min if loaded else 0.0
+        out[O_HMIN_I + race] = h_min if loaded else 0.0
+        out[O_HC_I + race] = h_c if loaded else 0.0
+    out[O_REGIME] = lubrication_regime(min(out[O_LAMBDA_I], out[O_LAMBDA_O]))
+    if out[O_QMAX_I] == 0.0:  # no inner contact: report the most loaded outer one
+        for j in range(Z):
+            if Q[1, j] > Q[1, j_max]:
+                j_max = j
+    c_total = c_background
+    for j in range(Z):
+        orbit += balls[B_ORBIT, j]
+        if Q[0, j] > 0.0 and Q[1, j] > 0.0:
+            out[O_N_LOADED] += 1.0
+            c_total += ball_capacitance(trib[T_CAP, 0, j], trib[T_CAP, 1, j])
+    omega_cage = (orbit - orbit0) / (Z * interval) if interval > 0.0 else 0.0
+    out[O_OMEGA_CAGE] = omega_cage
+    wx = balls[B_WX, j_max]
+    wy = balls[B_WX + 1, j_max]
+    wz = balls[B_WX + 2, j_max]
+    w = math.sqrt(wx * wx + wy * wy + wz * wz)
+    out[O_OMEGA_BALL] = math.copysign(w, omega) if omega != 0.0 else w
+    out[O_OMEGA_BALL_REL] = math.sqrt(wx * wx + wy * wy + (wz - omega_cage) ** 2)
+    out[O_C_BEARING] = c_total
+    out[O_ALPHA_I] = alpha[0, j_max]
+    out[O_ALPHA_O] = alpha[1, j_max]
+    if interval > 0.0:
+        out[O_Q_INNER_RING] = acc[A_DISS_I] / interval
+        out[O_Q_OUTER_RING] = acc[A_DISS_O] / interval
+    out[O_P_LOSS] = out[O_Q_INNER_RING] + out[O_Q_OUTER_RING]
+    out[O_TORQUE] = out[O_P_LOSS] / abs(omega) if omega != 0.0 else 0.0
+    kinematic_cage = rolling_kinematics(omega, par[P_D], par[P_DM], par[P_ALPHA0])[0]
+    out[O_CAGE_SLIP] = 1.0 - omega_cage / kinematic_cage if kinematic_cage != 0.0 else 0.0
+    out[O_KINETIC] = kinetic_energy(balls, cage, ring, par)

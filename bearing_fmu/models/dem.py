@@ -1,0 +1,551 @@
+"""DemModel: facade of the DEM (ball dynamics) fidelity, kernels.ball_dynamics.
+
+Guessasma & Machado (2018) and Farah et al. (2020): Z steel balls and Z PA66 cage balls, inner ring
+with translational DOF x, y, z and prescribed rotation omega(t), fixed outer ring; per-contact EHL
+film, regime-dependent damping and friction, Houpert rolling resistances, capacitance. SI units.
+
+The whole state lives in numpy arrays (get_state/set_state copy all of them, for FMU rollback).
+advance(t_end, ...) runs every step of the interval in one jitted call; the inner-ring speed goes
+linearly from its previous value to the given one over the interval (a start-up ramp is a sequence
+of calls), loads and oil temperature are held. The bodies start at rest in their geometric positions
+(balls touching the outer race, cage balls midway between them on the pitch circle).
+
+Settling aids for quasi-static comparisons (Guessasma 2018 appendix A): drive slowly (omega = 1 rad/s)
+so that centrifugal and film effects vanish; the ring's response to a load step decays in about a
+millisecond (hysteretic damping); compare after a few milliseconds.
+"""
+
+import math
+import tomllib
+
+import numpy as np
+
+from ..kernels.ball_dynamics import integrator as dyn
+from ..kernels.ball_dynamics import state as s
+from ..kernels.ball_dynamics.monitor import critical_time_step
+from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_angles, contact_loads
+from ..kernels.geometry import ball_mass, curvature_radii, free_contact_angle, rolling_kinematics
+from ..kernels.hertz import (
+    hertz_coefficients_approx,
+    hertz_coefficients_exact,
+    hertz_contact,
+    hertz_stiffness,
+    reduced_modulus,
+)
+from ..kernels.torque import ALPHA_HYSTERESIS_STEEL
+from ..model import DM_N_LIMIT, P_MAX_ERROR, InputError, check_oil_temperature, check_speed
+from ..params import load_bearing, load_lubricant
+from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
+
+# PA66 cage balls when the bearing file has no [material.cage] (Farah 2020: E_c = 3.3 GPa, nu_c = 0.41)
+CAGE_E = 3.3e9
+CAGE_NU = 0.41
+CAGE_RHO = 1140.0  # kg/m^3, typical PA66 (estimated)
+CAGE_GAP_OVER_D = 0.0026  # pocket play of an estimated cage ball: the seeds' 6208 has 0.033 mm for D = 12.6 mm
+ALPHA_E = 0.08  # s/m, hysteretic damping constant of steel (Guessasma 2018 eq. 4)
+KT_RATIO = 2.0 / 3.0  # tangential / normal stiffness, lower end of the seeds' [2/3, 1]
+V_REG = 1e-3  # m/s, speed below which the resistances' directions are regularised
+SAFETY = 0.5  # default time step over the stability limit of the stiffest pair
+REFRESH_INTERVAL = 20e-6  # s, default simulated time between two tribology refreshes
+# consecutive slipping reversals of one spring that count as chatter: sustained chatter (6208 at 3 kN,
+# 500 rad/s, dt >= 7 us) reverses for hundreds of steps and multiplies the torque; a lightly loaded ball
+# entering the load zone during a start-up reverses for up to ~15 steps without changing the results
+# (cage speed and torque equal within 0.05 % at half the step)
+CHATTER_STEPS = 50
+ENERGY_FACTOR = 10.0  # kinetic-energy bound: this factor x (pure-rolling energy + load x groove clearance)
+T_OIL_DEFAULT = 313.15  # K
+
+STATUS_WORDS = {
+    s.STATUS_NOT_FINITE: "a force became NaN or infinite",
+    s.STATUS_PENETRATION: "a ball-race penetration passed the physical limit (Hertz pressure above the material limit)",
+    s.STATUS_ENERGY: "the kinetic energy grew beyond the bound of the inputs (energy growth without input)",
+    s.STATUS_CHATTER: "a tangential spring chattered against its Coulomb limit (slip direction reversing every step)",
+}
+
+
+class DemUnstableError(InputError):
+    """The monitor stopped the integration; the message names the cause and a time step that would work."""
+
+
+def _cage_material(path):
+    """(E, nu, rho) of the cage balls from the bearing file's [material.cage], else PA66 defaults."""
+    with open(path, "rb") as fh:
+        doc = tomllib.load(fh)
+    cage = doc.get("material", {}).get("cage", {})
+    get = lambda key, default: float(cage[key]["value"]) if key in cage else default  # noqa: E731
+    return get("E", CAGE_E), get("nu", CAGE_NU), get("rho", CAGE_RHO)
+
+
+def _ring_mass(bearing):
+    """Inner-ring mass (kg): steel annulus from the bore to the groove bottom over the ring width (estimated:
+    shoulders and groove roughly cancel); without bore or width in the file, bore = d_m - 2 D, width = 1.5 D."""
+    with open(bearing.path, "rb") as fh:
+        geometry = tomllib.load(fh).get("geometry", {})
+    bore = float(geometry["bore"]["value"]) if "bore" in geometry else bearing.dm - 2.0 * bearing.D
+    width = float(geometry["width"]["value"]) if "width" in geometry else 1.5 * bearing.D
+    groove_bottom = bearing.dm - bearing.D
+    return bearing.ring.rho * 0.25 * math.pi * (groove_bottom**2 - bore**2) * width
+
+
+class DemModel:
+    """DEM bearing: Z balls + Z cage balls + translating inner ring.
+
+    bearing, lubricant: catalogue name or TOML path (as the other fidelities). scene: Scene whose physics
+    options are used (film formula, Hertz solution, roughness factor, capacitance floor and background,
+    permittivity pressure); its fidelity field is not read. dt: fixed time step (s); None = SAFETY x the
+    stability limit of the stiffest contact pair at the loads of each advance() call. refresh: tribology
+    refresh interval in steps (>= 1); None = every REFRESH_INTERVAL of simulated time. Pd: diametral
+    clearance (m) overriding the file. ring_mass: inner-ring mass (kg); None = estimated from the bore.
+    kt_ratio: tangential/normal stiffness (-).
+    """
+
+    def __init__(
+        self,
+        bearing="6208",
+        lubricant="guessasma_oil",
+        scene=None,
+        dt=None,
+        refresh=None,
+        Pd=None,
+        ring_mass=None,
+        kt_ratio=KT_RATIO,
+    ):
+        self.scene = (scene or Scene(name="dem")).validate()
+        self.bearing = b = load_bearing(bearing)
+        self.lubricant = load_lubricant(lubricant)
+        self.Pd = b.Pd if Pd is None else float(Pd)
+        limit = 0.02 * b.D
+        if not (math.isfinite(self.Pd) and abs(self.Pd) <= limit):
+            raise InputError(f"Pd = {Pd} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m (|Pd| <= 0.02 D)")
+        if dt is not None and not (math.isfinite(dt) and 0.0 < dt <= 1e-4):
+            raise InputError(f"dt = {dt} s is outside the allowed range ]0, 1e-4] s")
+        if refresh is not None and not (float(refresh) == int(refresh) and 1 <= int(refresh) <= 100000):
+            raise InputError(f"refresh = {refresh} steps is outside the allowed range [1, 100000] (a whole number)")
+        if not (math.isfinite(kt_ratio) and 0.1 <= kt_ratio <= 1.5):
+            raise InputError(f"kt_ratio = {kt_ratio} is outside the allowed range [0.1, 1.5]")
+        if ring_mass is not None and not (math.isfinite(ring_mass) and ring_mass > 0.0):
+            raise InputError(f"ring_mass = {ring_mass} kg is outside the allowed range ]0, inf[ kg")
+        self.ring_mass_estimated = ring_mass is None
+        self.dt_fixed = dt
+        self.refresh_fixed = None if refresh is None else int(refresh)
+        self.omega_max = DM_N_LIMIT / (b.dm * 1e3) * 2.0 * math.pi / 60.0
+        self.par = self._pack(ring_mass, kt_ratio)
+        self.load_limit = self._load_limit()
+        self._rho_outer = float(self.par[s.P_RHO_O])  # at the nominal clearance
+        Z = b.Z
+        self.balls = np.zeros((s.B_SIZE, Z))
+        self.cage = np.zeros((s.C_SIZE, Z))
+        self.ring = np.zeros(s.R_SIZE)
+        self.spring = np.zeros((s.S_SIZE, Z))
+        self.trib = np.zeros((s.T_SIZE, 2, Z))
+        self.counters = np.zeros(s.K_SIZE + 2 * Z, dtype=np.int64)
+        self.omega = 0.0
+        self.out = np.zeros(s.O_SIZE)
+        self.status = np.zeros(s.ST_SIZE, dtype=np.int64)
+        self._work = np.zeros((s.W_SIZE, Z))
+        self._acc = np.zeros(s.A_SIZE)
+        self._Q = np.zeros((2, Z))
+        self._alpha = np.zeros((2, Z))
+        self.dt = math.nan  # time step of the last advance() call (s)
+        self.refresh = 0  # its tribology refresh interval (steps)
+        self._place_bodies()
+        self._initialise(0.0, 0.0, 0.0, 0.0, T_OIL_DEFAULT)
+
+    # -- set-up --------------------------------------------------------------------------------
+    def _pack(self, ring_mass, kt_ratio):
+        b, sc = self.bearing, self.scene
+        D = b.D
+        alpha0 = free_contact_angle(D, b.f_i, b.f_o, self.Pd) if self.Pd > 0.0 else 0.0
+        Rx_i, Ry_i, Rx_o, Ry_o = curvature_radii(D, b.dm, b.f_i, b.f_o, alpha0)
+        coeff = hertz_coefficients_exact if sc.hertz == "exact" else hertz_coefficients_approx
+        E_red = reduced_modulus(b.ball.E, b.ball.nu, b.ring.E, b.ring.nu)
+        ci = coeff(Rx_i, Ry_i)
+        co = coeff(Rx_o, Ry_o)
+        p = np.zeros(s.P_SIZE)
+        p[s.P_Z] = b.Z
+        p[s.P_D] = D
+        p[s.P_DM] = b.dm
+        p[s.P_ALPHA0] = alpha0
+        p[s.P_M_BALL] = ball_mass(D, b.ball.rho)
+        p[s.P_I_BALL] = 0.1 * p[s.P_M_BALL] * D * D
+        # groove-curvature-centre circles as in the quasi-static model: the inner one seen from the outer one
+        # at (A sin alpha0, A - P_d/2) (axial, radial) for an angular-contact bearing, (0, A - P_d/2) otherwise
+        A = (b.f_i + b.f_o - 1.0) * D
+        A_axial = A * math.sin(alpha0) if b.kind == "angular_contact" else 0.0
+        A_radial = A - 0.5 * self.Pd
+        p[s.P_RHO_I] = 0.5 * b.dm + (b.f_i - 0.5) * D * math.cos(alpha0)
+        p[s.P_Z_I] = A_axial
+        p[s.P_RHO_O] = p[s.P_RHO_I] - A_radial
+        p[s.P_Z_O] = 0.0
+        p[s.P_RG_I] = (b.f_i - 0.5) * D
+        p[s.P_RG_O] = (b.f_o - 0.5) * D
+        p[s.P_KH_I] = hertz_stiffness(Rx_i, Ry_i, E_red, *ci)
+        p[s.P_KH_O] = hertz_stiffness(Rx_o, Ry_o, E_red, *co)
+        p[s.P_RX_I], p[s.P_RY_I] = Rx_i, Ry_i
+        p[s.P_K_I], p[s.P_EE_I], p[s.P_KK_I] = ci
+        p[s.P_RX_O], p[s.P_RY_O] = Rx_o, Ry_o
+        p[s.P_K_O], p[s.P_EE_O], p[s.P_KK_O] = co
+        p[s.P_E_RED] = E_red
+        p[s.P_SIGMA_I] = sc.roughness_factor * math.hypot(b.Ra_inner, b.Ra_ball)
+        p[s.P_SIGMA_O] = sc.roughness_factor * math.hypot(b.Ra_outer, b.Ra_ball)
+        p[s.P_FILM] = FILM_FORMULAS[sc.film]
+        p[s.P_PRESSURE] = PERMITTIVITY_PRESSURES[sc.permittivity_pressure]
+        p[s.P_H_FLOOR] = sc.film_floor
+        p[s.P_ALPHA_H] = ALPHA_HYSTERESIS_STEEL
+        p[s.P_F_I] = b.f_i
+        p[s.P_F_O] = b.f_o
+        p[s.P_ALPHA_E] = ALPHA_E
+        p[s.P_KT_RATIO] = kt_ratio
+        p[s.P_V_REG] = V_REG
+        # cage balls and their guide
+        E_c, nu_c, rho_c = _cage_material(b.path)
+        self.cage_radius_estimated = b.cage_ball_radius <= 0.0
+        self._rest = self._ball_rest_position(p[s.P_KH_I], p[s.P_KH_O])
+        pitch = self._rest[0]
+        half_pocket = pitch * 2.0 * math.sin(0.5 * math.pi / b.Z)  # ball centre to the mid-angle point
+        R_z = b.cage_ball_radius if b.cage_ball_radius > 0.0 else half_pocket - 0.5 * D - CAGE_GAP_OVER_D * D
+        if R_z <= 0.0:
+            raise InputError(
+                f"bearing '{b.name}': no room for cage balls between {b.Z} balls of {D} m "
+                f"(estimated cage-ball radius {R_z:.3g} m)"
+            )
+        E_star = 1.0 / ((1.0 - b.ball.nu**2) / b.ball.E + (1.0 - nu_c**2) / E_c)
+        R_eq = 0.5 * D * R_z / (0.5 * D + R_z)
+        p[s.P_M_CAGE] = rho_c * 4.0 / 3.0 * math.pi * R_z**3
+        p[s.P_R_CAGE] = R_z
+        p[s.P_K_CB] = 4.0 / 3.0 * E_star * math.sqrt(R_eq)
+        p[s.P_K_GUIDE] = 4.0 / 3.0 * E_star * math.sqrt(R_z)
+        p[s.P_R_GUIDE] = pitch
+        p[s.P_Z_GUIDE] = self._rest[1]
+        p[s.P_GUIDE_GAP] = 0.0
+        p[s.P_ZETA_CAGE] = 1.0
+        m_eff = p[s.P_M_BALL] * p[s.P_M_CAGE] / (p[s.P_M_BALL] + p[s.P_M_CAGE])
+        p[s.P_C_CB] = 2.0 * p[s.P_ZETA_CAGE] * math.sqrt(1.5 * p[s.P_K_CB] * m_eff)
+        p[s.P_C_GUIDE] = 2.0 * p[s.P_ZETA_CAGE] * math.sqrt(1.5 * p[s.P_K_GUIDE] * p[s.P_M_CAGE])
+        p[s.P_M_RING] = _ring_mass(b) if ring_mass is None else float(ring_mass)
+        # physical penetration limit: the approach at which the Hertz pressure reaches the material limit
+        for race, (Rx, Ry, c) in enumerate(((Rx_i, Ry_i, ci), (Rx_o, Ry_o, co))):
+            q_lim = (P_MAX_ERROR / hertz_contact(1.0, Rx, Ry, E_red, *c)[3]) ** 3
+            p[s.P_DELTA_LIM_I + race] = (q_lim / p[s.P_KH_I + race]) ** (2.0 / 3.0)
+        # Hertz semi-axes and pressure at 1 N, scaled by Q^(1/3) = K_h^(1/3) delta^(1/2) in the kernel
+        for race, (Rx, Ry, c) in enumerate(((Rx_i, Ry_i, ci), (Rx_o, Ry_o, co))):
+            a1, b1, _, p1 = hertz_contact(1.0, Rx, Ry, E_red, *c)
+            cube = p[s.P_KH_I + race] ** (1.0 / 3.0)
+            p[s.P_HA_I + s.P_HERTZ_SCALE_STRIDE * race] = a1 * cube
+            p[s.P_HB_I + s.P_HERTZ_SCALE_STRIDE * race] = b1 * cube
+            p[s.P_HP_I + s.P_HERTZ_SCALE_STRIDE * race] = p1 * cube
+        p[s.P_CHATTER] = CHATTER_STEPS
+        p[s.P_CAPACITANCE] = 1.0 if sc.capacitance else 0.0
+        p[s.P_REFRESH] = 1
+        return p
+
+    def _ball_rest_position(self, K_inner, K_outer):
+        """(radius, z) in m of a ball at rest: on the line from the outer to the inner curvature centre,
+        touching the outer groove (with clearance) or sharing the interference as two Hertz contacts of
+        constants K_inner, K_outer (N/m^1.5) under one load (preload)."""
+        b = self.bearing
+        D = b.D
+        alpha0 = free_contact_angle(D, b.f_i, b.f_o, self.Pd) if self.Pd > 0.0 else 0.0
+        A = (b.f_i + b.f_o - 1.0) * D
+        ax = A * math.sin(alpha0) if b.kind == "angular_contact" else 0.0
+        rad = A - 0.5 * self.Pd
+        rho_o = 0.5 * b.dm + (b.f_i - 0.5) * D * math.cos(alpha0) - rad
+        L = math.hypot(ax, rad)
+        r_o = (b.f_o - 0.5) * D
+        interference = A - L
+        if interference > 0.0:  # preload: equal loads, delta_o / delta_i = (K_i / K_o)^(2/3)
+            share = 1.0 / (1.0 + (K_outer / K_inner) ** (2.0 / 3.0))
+            r_o -= interference * share
+        return rho_o + r_o * rad / L, r_o * ax / L
+
+    def _place_bodies(self):
+        Z = self.bearing.Z
+        for arr in (self.balls, self.cage, self.spring, self.trib):
+            arr[...] = 0.0
+        self.ring[:] = 0.0
+        self.counters[:] = 0
+        for j in range(Z):
+            r, z = self._rest
+            psi = 2.0 * math.pi * j / Z
+            self.balls[s.B_X : s.B_X + 3, j] = (r * math.cos(psi), r * math.sin(psi), z)
+            psi_c = psi + math.pi / Z
+            R = self.par[s.P_R_GUIDE]
+            self.cage[s.C_X : s.C_X + 3, j] = (R * math.cos(psi_c), R * math.sin(psi_c), self.par[s.P_Z_GUIDE])
+        self.omega = 0.0
+
+    def _initialise(self, omega, F_x, F_y, F_z, T_oil):
+        dyn.initialise_accelerations(
+            self.balls,
+            self.cage,
+            self.ring,
+            self.spring,
+            self.trib,
+            self.counters,
+            self.par,
+            self.lubricant.array,
+            omega,
+            F_x,
+            F_y,
+            F_z,
+            T_oil,
+            self._work,
+            self._acc,
+        )
+
+    # -- time step -----------------------------------------------------------------------------
+    def stable_time_step(self, F_x=0.0, F_y=0.0, F_z=0.0, omega=None, include_state=True):
+        """Stability limit (s) of the stiffest contact pair for the given loads (N) and speed (rad/s):
+        contact loads are an estimate (Stribeck's
+        5 F_r/Z for the radial load, F_a/(Z sin alpha) for the axial one with alpha >= 5 deg, plus the
+        centrifugal force), or the current ones where larger (include_state); the cage-ball load is bounded
+        by the friction force mu_max Q a ball can transmit (mu_max = 0.1)."""
+        b = self.bearing
+        omega = self.omega if omega is None else omega
+        contact_loads(self.balls, self.ring, self.par, self._Q)
+        if not include_state:
+            self._Q[:] = 0.0
+        alpha = max(self.par[s.P_ALPHA0], math.radians(5.0))
+        cage_speed = rolling_kinematics(abs(omega), b.D, b.dm, self.par[s.P_ALPHA0])[0]
+        F_c = 0.5 * self.par[s.P_M_BALL] * b.dm * cage_speed**2
+        estimate = 5.0 * math.hypot(F_x, F_y) / b.Z + abs(F_z) / (b.Z * math.sin(alpha)) + F_c
+        Q_i = np.maximum(self._Q[0], estimate)
+        Q_o = np.maximum(self._Q[1], estimate)
+        return critical_time_step(self.par, Q_i, Q_o, 0.1 * max(Q_i.max(), Q_o.max()))
+
+    # -- inputs --------------------------------------------------------------------------------
+    def _check(self, t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal):
+        t = self.time
+        if not (math.isfinite(t_end) and t_end > t):
+            raise InputError(
+                f"t_end = {t_end} s is outside the allowed range ]{t:.9g}, inf[ s (after the current time)"
+            )
+        check_speed(omega, self.omega_max)
+        check_oil_temperature(T_oil)
+        limit = 0.02 * self.bearing.D
+        if not (math.isfinite(dPd_thermal) and abs(dPd_thermal) <= limit):
+            raise InputError(
+                f"dPd_thermal = {dPd_thermal} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m"
+            )
+        load_limit = self.load_limit
+        for name, value in (("F_x", F_x), ("F_y", F_y), ("F_z", F_z)):
+            if not (math.isfinite(value) and abs(value) <= load_limit):
+                raise InputError(
+                    f"{name} = {value} N is outside the allowed range [{-load_limit:.4g}, {load_limit:.4g}] N "
+                    f"(beyond it even Z equally loaded balls pass p_max = {P_MAX_ERROR / 1e9:.1f} GPa)"
+                )
+
+    def _load_limit(self):
+        """Largest admissible load (N): Z balls at the contact load of the penetration limit (p_max = 6 GPa);
+        no load distribution shares a load better than equally over all balls."""
+        p = self.par
+        q = min((p[s.P_KH_I + r] * p[s.P_DELTA_LIM_I + r] ** 1.5) for r in (0, 1))
+        return self.bearing.Z * q
+
+    @property
+    def time(self):
+        """Simulated time (s)."""
+        return float(self.ring[s.R_TIME])
+
+    # -- stepping ------------------------------------------------------------------------------
+    def advance(self, t_end, omega=None, F_x=0.0, F_y=0.0, F_z=0.0, T_oil=T_OIL_DEFAULT, dPd_thermal=0.0):
+        """Integrate to t_end (s): inner-ring speed from its current value linearly to omega (rad/s; None =
+        hold), loads F_x, F_y, F_z (N) on the inner ring, oil temperature T_oil (K), change of diametral
+        clearance dPd_thermal (m, added to Pd, negative = tighter: the outer groove circle moves by half of
+        it; the Hertz constants stay those of the nominal geometry, as in the quasi-static fidelity).
+        Returns outputs().
+
+        Raises InputError for inputs out of range, DemUnstableError when the monitor stops the run (the
+        state is then left at the offending step: restore a saved state to retry)."""
+        omega = self.omega if omega is None else float(omega)
+        F_x, F_y, F_z, T_oil, dPd_thermal = float(F_x), float(F_y), float(F_z), float(T_oil), float(dPd_thermal)
+        self._check(float(t_end), omega, F_x, F_y, F_z, T_oil, dPd_thermal)
+        self.par[s.P_RHO_O] = self._rho_outer + 0.5 * dPd_thermal
+        interval = float(t_end) - self.time
+        dt = self.dt_fixed
+        if dt is None:
+            # the limit falls with speed (centrifugal load): take the faster end of the interval
+            dt = SAFETY * self.stable_time_step(F_x, F_y, F_z, max(abs(self.omega), abs(omega)))
+        n_steps = max(1, math.ceil(interval / dt * (1.0 - 1e-12)))
+        dt = interval / n_steps  # land exactly on t_end
+        refresh = self.refresh_fixed or max(1, round(REFRESH_INTERVAL / dt))
+        self.par[s.P_REFRESH] = refresh
+        self.dt, self.refresh = dt, refresh
+        omega0 = self.omega
+        orbit0 = float(self.balls[s.B_ORBIT].sum())
+        dyn.advance(
+            self.balls,
+            self.cage,
+            self.ring,
+            self.spring,
+            self.trib,
+            self.counters,
+            self.par,
+            self.lubricant.array,
+            n_steps,
+            dt,
+            omega0,
+            omega,
+            F_x,
+            F_y,
+            F_z,
+            T_oil,
+            self._energy_limit(max(abs(omega0), abs(omega)), math.sqrt(F_x**2 + F_y**2 + F_z**2)),
+            self._work,
+            self._acc,
+            self.status,
+        )
+        done = int(self.status[s.ST_STEP])
+        self.omega = omega0 + (omega - omega0) * done / n_steps
+        if self.status[s.ST_CODE] != s.STATUS_OK:
+            self._raise_unstable(dt, F_x, F_y, F_z)
+        bearing_outputs(
+            self.balls,
+            self.cage,
+            self.ring,
+            self.trib,
+            self.par,
+            self._acc,
+            self.omega,
+            interval,
+            orbit0,
+            self.scene.background_capacitance,
+            self._Q,
+            self._alpha,
+            self.out,
+        )
+        return self.outputs()
+
+    def _energy_limit(self, omega, force):
+        """Bound (J) of the kinetic energy: ENERGY_FACTOR x (pure-rolling kinetic energy at omega + load x groove
+        clearance A); an unstable integration passes it within a few steps, a physical run never does."""
+        b, p = self.bearing, self.par
+        cage_speed, ball_rel, _, _ = rolling_kinematics(omega, b.D, b.dm, p[s.P_ALPHA0])
+        v = 0.5 * b.dm * cage_speed
+        rolling = b.Z * (0.5 * (p[s.P_M_BALL] + p[s.P_M_CAGE]) * v * v + 0.5 * p[s.P_I_BALL] * ball_rel**2)
+        A = (b.f_i + b.f_o - 1.0) * b.D
+        return ENERGY_FACTOR * (rolling + force * A) + 1e-6
+
+    def _raise_unstable(self, dt, F_x, F_y, F_z):
+        code, step, index = (int(v) for v in self.status)
+        Z = self.bearing.Z
+        where = ""
+        if index >= 0:
+            race = "inner" if index < Z else "outer"
+            where = f" at the {race} contact of ball {index % Z}"
+        # the state at the stop is already disturbed: judge from the inputs alone
+        limit = self.stable_time_step(F_x, F_y, F_z, self.omega, include_state=False)
+        suggestion = min(0.5 * dt, SAFETY * limit) if math.isfinite(limit) else 0.5 * dt
+        raise DemUnstableError(
+            f"DEM stopped at t = {self.time:.9g} s (step {step} of the interval){where}: "
+            f"{STATUS_WORDS[code]}. dt = {dt:.3g} s is too large here; use dt <= {suggestion:.3g} s "
+            f"(stability limit of the stiffest contact pair at these inputs {limit:.3g} s)"
+        )
+
+    # -- outputs -------------------------------------------------------------------------------
+    def outputs(self):
+        """Bearing-level outputs of the last advance() (names as the quasi-static fidelity), SI units."""
+        o = self.out
+        result = dict(
+            omega_cage=o[s.O_OMEGA_CAGE],
+            omega_ball=o[s.O_OMEGA_BALL],
+            omega_ball_cage=o[s.O_OMEGA_BALL_REL],
+            Q_max_inner=o[s.O_QMAX_I],
+            Q_max_outer=o[s.O_QMAX_O],
+            p_max=o[s.O_PMAX],
+            alpha_inner=o[s.O_ALPHA_I],
+            alpha_outer=o[s.O_ALPHA_O],
+            Lambda_inner=o[s.O_LAMBDA_I],
+            Lambda_outer=o[s.O_LAMBDA_O],
+            h_min_inner=o[s.O_HMIN_I],
+            h_min_outer=o[s.O_HMIN_O],
+            h_c_inner=o[s.O_HC_I],
+            h_c_outer=o[s.O_HC_O],
+            regime=int(o[s.O_REGIME]),
+            C_bearing=o[s.O_C_BEARING],
+            n_loaded=int(o[s.O_N_LOADED]),
+            P_loss=o[s.O_P_LOSS],
+            Q_inner_ring=o[s.O_Q_INNER_RING],
+            Q_outer_ring=o[s.O_Q_OUTER_RING],
+            torque=o[s.O_TORQUE],
+            cage_slip=o[s.O_CAGE_SLIP],
+            SRR_max=o[s.O_SRR_MAX],
+            kinetic_energy=o[s.O_KINETIC],
+            x=float(self.ring[s.R_X]),
+            y=float(self.ring[s.R_X + 1]),
+            z=float(self.ring[s.R_X + 2]),
+        )
+        if not self.scene.capacitance:
+            del result["C_bearing"]
+        return result
+
+    def contacts(self):
+        """Per-ball arrays (Z,): azimuth psi (rad, in [0, 2 pi)), orbital and spin speeds (rad/s), and per race
+        ('_inner', '_outer') the current load Q (N) and approach delta (m), and the last refresh's film
+        h_min, h_c (m), Lambda, regime, mu, normal damping C_n (N.s/m), SRR, entrainment speed u (m/s),
+        capacitance C (F) and Hertz semi-axes a, b (m); the current contact angle alpha (rad)."""
+        contact_loads(self.balls, self.ring, self.par, self._Q)
+        contact_angles(self.balls, self.ring, self.par, self._alpha)
+        x, y = self.balls[s.B_X], self.balls[s.B_X + 1]
+        r2 = x * x + y * y
+        result = {
+            "psi": np.mod(np.arctan2(y, x), 2.0 * math.pi),
+            "omega_orbit": (x * self.balls[s.B_VX + 1] - y * self.balls[s.B_VX]) / r2,
+            "omega_spin": np.linalg.norm(self.balls[s.B_WX : s.B_WX + 3], axis=0),
+        }
+        names = {
+            "Q": None,
+            "h_min": s.T_H_MIN,
+            "h_c": s.T_H_C,
+            "Lambda": s.T_LAMBDA,
+            "regime": s.T_REGIME,
+            "mu": s.T_MU,
+            "C_n": s.T_C_N,
+            "SRR": s.T_SRR,
+            "u": s.T_U,
+            "C": s.T_CAP,
+            "a": s.T_A,
+            "b": s.T_B,
+        }
+        for race, suffix in ((0, "_inner"), (1, "_outer")):
+            for name, row in names.items():
+                result[name + suffix] = self._Q[race].copy() if row is None else self.trib[row, race].copy()
+            result["delta" + suffix] = (self._Q[race] / self.par[s.P_KH_I + race]) ** (2.0 / 3.0)
+            result["alpha" + suffix] = self._alpha[race].copy()
+        return result
+
+    def record(self, t_end, interval, omega=None, **inputs):
+        """Advance to t_end (s) in steps of `interval` (s), recording after each: returns a dict of numpy arrays,
+        't' (n,) and every bearing output (n,), and under 'contacts' a dict of every per-ball/per-contact
+        array of contacts() (n, Z).
+        The speed goes linearly from its current value to omega (rad/s; None = hold) over the whole record;
+        the other inputs (F_x, F_y, F_z, T_oil, dPd_thermal) are held."""
+        if not (math.isfinite(interval) and interval > 0.0):
+            raise InputError(f"interval = {interval} s is outside the allowed range ]0, inf[ s")
+        t0, omega0 = self.time, self.omega
+        omega = omega0 if omega is None else float(omega)
+        n = max(1, math.ceil((float(t_end) - t0) / interval - 1e-9))
+        rows = []
+        for k in range(1, n + 1):
+            t = min(t0 + k * interval, float(t_end))
+            out = self.advance(t, omega=omega0 + (omega - omega0) * (t - t0) / (float(t_end) - t0), **inputs)
+            rows.append((t, out, self.contacts()))
+        result = {"t": np.array([r[0] for r in rows])}
+        for name in rows[0][1]:
+            result[name] = np.array([r[1][name] for r in rows])
+        result["contacts"] = {name: np.array([r[2][name] for r in rows]) for name in rows[0][2]}
+        return result
+
+    # -- state (FMU get/set state, rollback) ---------------------------------------------------
+    STATE_ARRAYS = ("balls", "cage", "ring", "spring", "trib", "counters")
+
+    def get_state(self):
+        """Copy of the whole dynamic state (every array and the current inner-ring speed)."""
+        state = {name: getattr(self, name).copy() for name in self.STATE_ARRAYS}
+        state["omega"] = self.omega
+        return state
+
+    def set_state(self, state):
+        """Restore a state from get_state() (arrays are copied in place)."""
+        for name in self.STATE_ARRAYS:
+            getattr(self, name)[...] = state[name]
+        self.omega = float(state["omega"])

@@ -1,0 +1,217 @@
+"""Time per DEM step (6208, 9 balls + 9 cage balls) and simulated time against wall time (targets of the
+product: <= 1.2 us per step with the multirate tribology, <= 2 us with every per-contact quantity every step,
+1 ms simulated <= 0.5 ms wall at the default time step), with a profile of where the time goes.
+
+Operating point: the seeds' 6208, P_d = 0, F_r = 3 kN, 500 rad/s, guessasma_oil, steady rolling after the
+start-up of the validation (2 ms at rest, 5 ms ramp, run to 30 ms). Each figure is the median over
+REPEATS calls of advance() of STEPS steps each: one Python call per interval, so the per-call overhead
+(input checks, outputs) is spread over STEPS steps. The machine is shared by several users: the CPU
+time of the benchmark's thread (time.thread_time) measures the kernel's own cost; the wall time, which
+includes the waits for a core, is reported beside it with the load average.
+Run: python -m benchmarks.dem_timing -> docs/reports/dem_timing.md
+"""
+
+import os
+import statistics
+import time
+
+import numpy as np
+from numba import njit
+
+from bearing_fmu.kernels.ball_dynamics import integrator as dyn
+from bearing_fmu.kernels.ball_dynamics import state as s
+from bearing_fmu.kernels.ball_dynamics.cage import ball_cage_contact, cage_guide_contact
+from bearing_fmu.kernels.ball_dynamics.contacts import ball_race_contact
+from bearing_fmu.kernels.ball_dynamics.tribology import TC_SIZE, race_circle, tribology_constants
+from bearing_fmu.kernels.lubricant import LUB_EPS_R0, clausius_mossotti_constant, lubricant_state
+from bearing_fmu.models.dem import DemModel
+
+from .common import machine, write_report
+
+STEPS = 2000
+REPEATS = 41
+OMEGA = 500.0
+F_R = 3000.0
+NEVER = 10**9  # a refresh interval longer than any run: contact law only
+
+
+def steady_model(dt=None):
+    model = DemModel("6208", "guessasma_oil", dt=dt)
+    model.advance(2e-3, omega=0.0, F_x=F_R)
+    for k in range(1, 21):
+        model.advance(2e-3 + 5e-3 * k / 20, omega=OMEGA * k / 20, F_x=F_R)
+    model.advance(0.03, omega=OMEGA, F_x=F_R)
+    return model
+
+
+def per_step(model, refresh, steps=STEPS, repeats=REPEATS):
+    """(CPU median, CPU minimum, wall median) per step (us) of advance() over `steps` steps at the model's dt."""
+    model.refresh_fixed = refresh
+    dt = model.dt
+    cpu, wall = [], []
+    for _ in range(repeats):
+        c0, t0 = time.thread_time(), time.perf_counter()
+        model.advance(model.time + steps * dt, omega=OMEGA, F_x=F_R)
+        cpu.append((time.thread_time() - c0) / steps * 1e6)
+        wall.append((time.perf_counter() - t0) / steps * 1e6)
+    return statistics.median(cpu), min(cpu), statistics.median(wall)
+
+
+def per_simulated_ms(model, repeats=REPEATS, dt=None):
+    """(CPU, wall) medians (ms) to advance 1 ms of simulated time in one call, default refresh, at dt (s;
+    None = the default time step)."""
+    model.refresh_fixed = None
+    model.dt_fixed = dt
+    cpu, wall = [], []
+    for _ in range(repeats):
+        c0, t0 = time.thread_time(), time.perf_counter()
+        model.advance(model.time + 1e-3, omega=OMEGA, F_x=F_R)
+        cpu.append((time.thread_time() - c0) * 1e3)
+        wall.append((time.perf_counter() - t0) * 1e3)
+    return statistics.median(cpu), statistics.median(wall)
+
+
+@njit
+def _race_contacts(n, balls, ring, spring, trib, counters, par, work, acc, dt):
+    rate_inv = 4.0 * dt / par[s.P_I_BALL]
+    saved = spring.copy()
+    for _ in range(n):
+        spring[:, :] = saved  # the same state every pass (the springs would otherwise grow into slip)
+        for race in range(2):
+            cx, cy, cz, rho = race_circle(race, ring, par)
+            for j in range(balls.shape[1]):
+                ball_race_contact(
+                    race,
+                    j,
+                    OMEGA,
+                    rho,
+                    cx,
+                    cy,
+                    cz,
+                    par[s.P_RG_I + race],
+                    par[s.P_KH_I + race],
+                    1.0 / par[s.P_DELTA_LIM_I + race],
+                    rate_inv,
+                    2.0 * par[s.P_V_REG] / par[s.P_D],
+                    balls,
+                    ring,
+                    spring,
+                    trib,
+                    counters,
+                    par,
+                    work,
+                    acc,
+                    dt,
+                )
+
+
+@njit
+def _cage_contacts(n, balls, cage, par, work):
+    R_sum = 0.5 * par[s.P_D] + par[s.P_R_CAGE]
+    Z = balls.shape[1]
+    for _ in range(n):
+        for k in range(Z):
+            ball_cage_contact(k, k, balls, cage, par, work, R_sum)
+            ball_cage_contact((k + 1) % Z, k, balls, cage, par, work, R_sum)
+            cage_guide_contact(k, cage, par, work)
+
+
+@njit
+def _refreshes(n, balls, ring, par, trib, lub):
+    eta, xi, rho0 = lubricant_state(313.15, lub)
+    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], rho0)
+    tc = np.empty((TC_SIZE, 2))
+    tribology_constants(par, eta, xi, tc)
+    for _ in range(n):
+        dyn.refresh_tribology(OMEGA, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
+
+
+def profile(model, n=20000):
+    """Time (us) of one pass of each part of a step on copies of a steady state (median of 9 runs of n)."""
+    m = {k: v.copy() for k, v in model.get_state().items() if isinstance(v, np.ndarray)}
+    work, acc, par = model._work.copy(), model._acc.copy(), model.par
+    dt = model.dt
+    parts = {
+        "18 ball-race contacts (normal, damping, tangential spring, resistances)": (
+            _race_contacts,
+            (m["balls"], m["ring"], m["spring"], m["trib"], m["counters"], par, work, acc, dt),
+        ),
+        "9 cage balls (18 ball - cage-ball pairs, 9 guide contacts)": (
+            _cage_contacts,
+            (m["balls"], m["cage"], par, work),
+        ),
+        "tribology refresh of 18 contacts (Hertz, film, Lambda, mu, C_n, Houpert, capacitance)": (
+            _refreshes,
+            (m["balls"], m["ring"], par, m["trib"], model.lubricant.array),
+        ),
+    }
+    rows = []
+    for name, (fn, args) in parts.items():
+        fn(1, *args)
+        samples = []
+        for _ in range(9):
+            c0 = time.thread_time()
+            fn(n, *args)
+            samples.append((time.thread_time() - c0) / n * 1e6)
+        rows.append((name, statistics.median(samples)))
+    return rows
+
+
+def main():
+    load_before = os.getloadavg()[0]
+    model = steady_model()
+    default_dt = model.dt
+    every = per_step(model, 1)
+    multirate = per_step(model, 10)
+    contact_law = per_step(model, NEVER)
+    default_refresh = max(1, round(20e-6 / default_dt))
+    default = per_step(model, default_refresh)
+    real_time = per_simulated_ms(model)
+    real_time_4us = per_simulated_ms(model, dt=4e-6)
+    model.dt_fixed = None
+    rows = profile(model)
+    load_after = os.getloadavg()[0]
+    steps_per_ms = 1e-3 / default_dt
+    lines = [
+        "# DEM timing (6208, 9 balls + 9 cage balls)",
+        "",
+        f"Generated by `python -m benchmarks.dem_timing` on {machine()} (2 cores shared by several users: load "
+        f"average {load_before:.1f} before, {load_after:.1f} after the run). Steady rolling at 500 rad/s, "
+        f"F_r = 3 kN, default time step {default_dt * 1e6:.2f} us (half the stability limit of the stiffest "
+        f"pair). Medians over {REPEATS} calls of advance() of {STEPS} steps each; CPU = the thread's CPU time "
+        "(the kernel's own cost; its minimum is the best estimate of an uncontended core, the median still "
+        "carries the other users' cache and hyper-thread pressure), wall = elapsed time (includes waiting "
+        "for a core).",
+        "",
+        "| configuration | CPU median (us/step) | CPU min (us/step) | wall median (us/step) | target |",
+        "|---|---|---|---|---|",
+        f"| tribology every step | {every[0]:.2f} | {every[1]:.2f} | {every[2]:.2f} | <= 2 |",
+        f"| tribology every 10 steps (multirate) | {multirate[0]:.2f} | {multirate[1]:.2f} | {multirate[2]:.2f} "
+        "| <= 1.2 |",
+        f"| tribology every {default_refresh} steps (default: every 20 us) | {default[0]:.2f} | {default[1]:.2f} "
+        f"| {default[2]:.2f} | |",
+        f"| contact law only (no refresh during the run) | {contact_law[0]:.2f} | {contact_law[1]:.2f} "
+        f"| {contact_law[2]:.2f} | |",
+        "",
+        f"1 ms simulated at the default dt ({steps_per_ms:.0f} steps, default refresh) in one call: "
+        f"CPU {real_time[0]:.3f} ms, wall {real_time[1]:.3f} ms (target <= 0.5 ms). At dt = 4 us (250 steps, "
+        f"below the chatter onset of about 7 us; the prototype's setting): CPU {real_time_4us[0]:.3f} ms, "
+        f"wall {real_time_4us[1]:.3f} ms.",
+        "",
+        "## Where the time goes (CPU time of one pass each, jitted loops over copies of the steady state)",
+        "",
+        "| part | CPU (us) |",
+        "|---|---|",
+    ]
+    lines += [f"| {name} | {t:.3f} |" for name, t in rows]
+    lines += [
+        "",
+        "The ball-race figure includes restoring the 54 spring values before each pass. The rest of a "
+        "step is the Verlet update of 9 + 9 + 1 bodies, the orbital-angle bookkeeping and the monitor's "
+        "checks (NaN sum, penetration, chatter counters).",
+    ]
+    write_report("dem_timing.md", "\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,275 @@
+"""Twin of bearing_fmu.kernels.ball_dynamics: one DEM step (contacts, forces, velocity Verlet) in plain numpy.
+
+Written from the model definition (Guessasma & Machado 2018; Farah et al. 2020; Houpert), not from the
+kernel: every body is a 3-vector, every contact is evaluated with vector algebra (np.cross, np.dot,
+np.linalg.norm). It shares only the array layout (the kernel's slot constants), so that a state can
+be handed to both. The model:
+- groove = torus: the nearest point q of the groove-curvature-centre circle to the ball centre p,
+  approach delta = |p - q| - (f - 1/2) D, normal n = (p - q)/|p - q|, contact point p + (D/2) n;
+- normal force Q + C_n v_n >= 0, Q = K_h delta^1.5 (Hertz), C_n from the last refresh except in the
+  boundary regime where C_n = 1.5 alpha_e Q (Guessasma eq. 4 with K_n delta = Q);
+- tangential spring xi: projected on the tangent plane, xi += v_t dt, F_t = -k_t xi with
+  k_t = ratio K_h delta^0.5, capped at mu F_n (xi rescaled to the cap), reset when the contact opens;
+- rolling-resistance moment -M_r q/max(|q|, w_reg, 4 M_r dt/I) with M_r = F_roll (D/2) and q the
+  ball's angular velocity relative to its orbiting frame, tangential part; spin moment
+  -M_s s/max(|s|, w_reg, 4 M_s dt/I) n, s the spin relative to the race; F_roll = F_R + (F_h + F_H)/2
+  (Houpert EHL force on each surface, hysteresis and Heathcote halved), M_s = (3/8) mu Q a E (Jones);
+- cage ball between balls k and k + 1, Hertz sphere-sphere with critical damping, frictionless; guide
+  channel around the pitch circle (distance from the circle minus the play), critically damped;
+- velocity Verlet with the velocity predictor v + a dt for the forces; omega linear over the call;
+- tribology refreshed at the start of every N-th step: Hertz, entrainment u = |u_b + u_r|/2 of the
+  surface velocities relative to the orbiting contact frame, film, Lambda, mu, C_n, capacitance.
+The closed-form Houpert pieces (hysteresis (3/16) alpha_h b Q/Rx, Heathcote C_H mu Q a^2/(R_c Rx),
+spin (3/8) mu Q a E) are written out here; their quadrature twins are checked in test_torque.
+"""
+
+import math
+
+import numpy as np
+from scipy.integrate import quad
+from scipy.optimize import brentq
+
+from bearing_fmu.kernels.ball_dynamics import state as s
+from bearing_fmu.kernels.lubricant import LUB_EPS_R0
+from tests.reference import ref_capacitance, ref_ehl, ref_hertz, ref_lubricant, ref_torque
+
+Z_AXIS = np.array([0.0, 0.0, 1.0])
+
+# Heathcote constant C_H = 3I/8: rolling bands at +-c (zero net traction of w(y) ~ 1 - y^2), then
+# I = 2 int_0^1 (1 - s^2)|c^2 - s^2| ds (Johnson 1985 ch. 8).
+_BAND = brentq(
+    lambda c: quad(lambda y: 1 - y * y, 0, c)[0] - quad(lambda y: 1 - y * y, c, 1)[0], 0.01, 0.99, xtol=1e-15
+)
+HEATHCOTE_C = (
+    3.0 / 8.0 * 2.0 * quad(lambda y: (1 - y * y) * abs(_BAND**2 - y * y), 0, 1, points=[_BAND], epsabs=1e-15)[0]
+)
+
+
+def groove_contact(p, centre, rho, rg):
+    """(delta, n) of a ball centre p against the circle (centre, radius rho, normal z)."""
+    d = p - centre
+    radial = np.array([d[0], d[1], 0.0])
+    q = centre + rho * radial / np.linalg.norm(radial)
+    gap = p - q
+    dist = np.linalg.norm(gap)
+    return dist - rg, gap / dist
+
+
+def race_centre(race, ring, par):
+    if race == 0:
+        return ring[s.R_X : s.R_X + 3] + np.array([0.0, 0.0, par[s.P_Z_I]]), par[s.P_RHO_I]
+    return np.array([0.0, 0.0, par[s.P_Z_O]]), par[s.P_RHO_O]
+
+
+def hertz_of(race, par):
+    o = 5 * race
+    return (par[s.P_RX_I + o], par[s.P_RY_I + o], par[s.P_K_I + o], par[s.P_EE_I + o], par[s.P_KK_I + o])
+
+
+def orbit_speed(p, v):
+    return (p[0] * v[1] - p[1] * v[0]) / (p[0] ** 2 + p[1] ** 2)
+
+
+def refresh(st, par, lub, omega, T_oil):
+    """Per-contact tribology from the state (the kernel's trib rows)."""
+    eta, xi, rho0 = ref_lubricant.lubricant_state(T_oil, lub)
+    K_cm = ref_lubricant.clausius_mossotti_constant(lub[LUB_EPS_R0], rho0)
+    balls, ring, trib = st["balls"], st["ring"], st["trib"]
+    D = par[s.P_D]
+    E_red = par[s.P_E_RED]
+    for race in range(2):
+        centre, rho = race_centre(race, ring, par)
+        Rx, Ry, k, ell_E, ell_K = hertz_of(race, par)
+        for j in range(balls.shape[1]):
+            p = balls[s.B_X : s.B_X + 3, j]
+            v = balls[s.B_VX : s.B_VX + 3, j]
+            w = balls[s.B_WX : s.B_WX + 3, j]
+            delta, n = groove_contact(p, centre, rho, par[s.P_RG_I + race])
+            trib[:, race, j] = 0.0
+            if delta <= 0.0:
+                trib[s.T_MU, race, j] = 0.1
+                trib[s.T_H_MIN, race, j] = math.inf
+                trib[s.T_H_C, race, j] = math.inf
+                continue
+            Q = par[s.P_KH_I + race] * delta**1.5
+            a, b, _, p_max = ref_hertz.hertz_contact(Q, Rx, Ry, E_red, k, ell_E, ell_K)
+            w_orb = orbit_speed(p, v)
+            w_race = omega if race == 0 else 0.0
+            u_b = np.cross(w - w_orb * Z_AXIS, 0.5 * D * n)
+            r = p + 0.5 * D * n - centre
+            u_r = np.cross((w_race - w_orb) * Z_AXIS, np.array([r[0], r[1], 0.0]))
+            if race == 0:
+                u_r = u_r + ring[s.R_VX : s.R_VX + 3]
+            u_b = u_b - np.dot(u_b, n) * n
+            u_r = u_r - np.dot(u_r, n) * n
+            u = 0.5 * np.linalg.norm(u_b + u_r)
+            spin = np.dot(w - w_race * Z_AXIS, n)
+            h_c, h_min = ref_ehl.film_thickness(int(par[s.P_FILM]), eta, xi, E_red, u, Q, Rx, Ry, k)
+            lam = ref_ehl.film_parameter(h_min, par[s.P_SIGMA_I + race])
+            mu = ref_ehl.friction_coefficient(lam)
+            f = par[s.P_F_I + race]
+            F_R = ref_torque.houpert_rolling_force(Q, u, Rx, Ry, E_red, eta, xi)
+            F_h = 3.0 / 16.0 * par[s.P_ALPHA_H] * b * Q / Rx
+            R_c = 2.0 * f * D / (2.0 * f + 1.0)
+            F_H = HEATHCOTE_C * mu * Q * a * a / (R_c * Rx)
+            M_s = 3.0 / 8.0 * mu * Q * a * ell_E
+            trib[s.T_MU, race, j] = mu
+            trib[s.T_C_N, race, j] = ref_ehl.normal_damping(lam, Q, par[s.P_ALPHA_E], eta, a, 0.5 * D, h_min)
+            trib[s.T_REGIME, race, j] = ref_ehl.lubrication_regime(lam)
+            trib[s.T_F_ROLL, race, j] = F_R + 0.5 * (F_h + F_H)
+            trib[s.T_M_SPIN, race, j] = M_s
+            trib[s.T_P_FILM, race, j] = (2.0 * F_R + F_h + F_H) * u + M_s * abs(spin)
+            trib[s.T_Q, race, j] = Q
+            trib[s.T_A, race, j] = a
+            trib[s.T_B, race, j] = b
+            trib[s.T_P_MAX, race, j] = p_max
+            trib[s.T_U, race, j] = u
+            trib[s.T_SRR, race, j] = np.linalg.norm(u_b - u_r) / u if u > 0.0 else 0.0
+            trib[s.T_SPIN, race, j] = spin
+            trib[s.T_H_MIN, race, j] = h_min
+            trib[s.T_H_C, race, j] = h_c
+            trib[s.T_LAMBDA, race, j] = lam
+            if par[s.P_CAPACITANCE]:
+                eps = ref_capacitance.contact_permittivity(K_cm, rho0, p_max, int(par[s.P_PRESSURE]))
+                trib[s.T_CAP, race, j] = ref_capacitance.contact_capacitance(eps, a, b, h_c, par[s.P_H_FLOOR])
+
+
+def damped_hertz(K, delta, zeta, m_eff, v_app):
+    c = 2.0 * zeta * math.sqrt(1.5 * K * math.sqrt(delta) * m_eff)
+    return max(K * delta**1.5 + c * v_app, 0.0)
+
+
+def forces(st, par, omega, F_ring, vel, dt):
+    """Forces (N) and moments (N.m) on every body at the current positions with the predicted velocities
+    vel = (v_balls, w_balls, v_cage, v_ring); updates springs, chatter counters and dissipation.
+    Returns (f_ball, m_ball, f_cage, f_ring, dissipated power per race)."""
+    balls, cage, ring, spring, trib, counters = (st[k] for k in ("balls", "cage", "ring", "spring", "trib", "counters"))
+    v_b, w_b, v_c, v_r = vel
+    Z = balls.shape[1]
+    D = par[s.P_D]
+    f_ball = np.zeros((3, Z))
+    m_ball = np.zeros((3, Z))
+    f_cage = np.zeros((3, Z))
+    f_ring = np.array(F_ring, dtype=float)
+    power = np.zeros(2)
+    w_reg = par[s.P_V_REG] / (0.5 * D)
+    for race in range(2):
+        centre, rho = race_centre(race, ring, par)
+        for j in range(Z):
+            p = balls[s.B_X : s.B_X + 3, j]
+            rows = slice(3 * race, 3 * race + 3)
+            kc = s.K_SIZE + race * Z + j
+            delta, n = groove_contact(p, centre, rho, par[s.P_RG_I + race])
+            if delta <= 0.0:
+                spring[rows, j] = 0.0
+                counters[kc] = 0
+                continue
+            K_h = par[s.P_KH_I + race]
+            Q = K_h * delta**1.5
+            r_c = 0.5 * D * n
+            v_surface_ball = v_b[:, j] + np.cross(w_b[:, j], r_c)
+            if race == 0:
+                v_surface_race = v_r + np.cross(omega * Z_AXIS, p + r_c - centre)
+                w_race = omega
+            else:
+                v_surface_race = np.zeros(3)
+                w_race = 0.0
+            v_rel = v_surface_ball - v_surface_race
+            v_n = np.dot(v_rel, n)
+            v_t = v_rel - v_n * n
+            if int(trib[s.T_REGIME, race, j]) == 0:
+                c_n = 1.5 * par[s.P_ALPHA_E] * Q
+            else:
+                c_n = trib[s.T_C_N, race, j]
+            F_n = max(Q + c_n * v_n, 0.0)
+            old = spring[rows, j] - np.dot(spring[rows, j], n) * n
+            xi = old + v_t * dt
+            k_t = par[s.P_KT_RATIO] * K_h * math.sqrt(delta)
+            F_t = -k_t * xi
+            cap = trib[s.T_MU, race, j] * F_n
+            slipping = np.linalg.norm(F_t) > cap
+            if slipping:
+                F_t = F_t * cap / np.linalg.norm(F_t)
+                xi = -F_t / k_t
+                counters[kc] = counters[kc] + 1 if np.dot(xi, old) < 0.0 else 0
+            else:
+                counters[kc] = 0
+            spring[rows, j] = xi
+            force = -F_n * n + F_t
+            f_ball[:, j] += force
+            q = w_b[:, j] - orbit_speed(p, v_b[:, j]) * Z_AXIS
+            q = q - np.dot(q, n) * n
+            spin = np.dot(w_b[:, j] - w_race * Z_AXIS, n)
+            # regularised resistances: viscous below max(w_reg, M / (I / (4 dt))), Coulomb-like above
+            M_roll = trib[s.T_F_ROLL, race, j] * 0.5 * D
+            M_spin = trib[s.T_M_SPIN, race, j]
+            rate = par[s.P_I_BALL] / (4.0 * dt)
+            m_ball[:, j] += (
+                np.cross(r_c, F_t)
+                - M_roll * q / max(np.linalg.norm(q), w_reg, M_roll / rate)
+                - M_spin * spin / max(abs(spin), w_reg, M_spin / rate) * n
+            )
+            if race == 0:
+                f_ring -= force
+            power[race] += (c_n * v_n**2 if F_n > 0.0 else 0.0) - (np.dot(F_t, v_t) if slipping else 0.0)
+    R_sum = 0.5 * D + par[s.P_R_CAGE]
+    m_b, m_c = par[s.P_M_BALL], par[s.P_M_CAGE]
+    for k in range(Z):
+        for j in (k, (k + 1) % Z):
+            d = cage[s.C_X : s.C_X + 3, k] - balls[s.B_X : s.B_X + 3, j]
+            dist = np.linalg.norm(d)
+            if dist < R_sum:
+                n = d / dist
+                f = damped_hertz(
+                    par[s.P_K_CB],
+                    R_sum - dist,
+                    par[s.P_ZETA_CAGE],
+                    m_b * m_c / (m_b + m_c),
+                    np.dot(v_b[:, j] - v_c[:, k], n),
+                )
+                f_cage[:, k] += f * n
+                f_ball[:, j] -= f * n
+        pc = cage[s.C_X : s.C_X + 3, k]
+        R = par[s.P_R_GUIDE]
+        q = np.array([R * pc[0], R * pc[1], 0.0]) / math.hypot(pc[0], pc[1]) + np.array([0.0, 0.0, par[s.P_Z_GUIDE]])
+        dist = np.linalg.norm(pc - q)
+        if dist > par[s.P_GUIDE_GAP]:
+            n = (pc - q) / dist
+            f = damped_hertz(par[s.P_K_GUIDE], dist - par[s.P_GUIDE_GAP], par[s.P_ZETA_CAGE], m_c, np.dot(v_c[:, k], n))
+            f_cage[:, k] -= f * n
+    return f_ball, m_ball, f_cage, f_ring, power
+
+
+def step(st, par, omega, F_ring, dt):
+    """One velocity-Verlet step at inner-ring speed omega (rad/s, end of the step)."""
+    balls, cage, ring = st["balls"], st["cage"], st["ring"]
+    x, v, a = (balls[r : r + 3] for r in (s.B_X, s.B_VX, s.B_AX))
+    w, alpha = balls[s.B_WX : s.B_WX + 3], balls[s.B_ALX : s.B_ALX + 3]
+    angle_before = np.arctan2(x[1], x[0])
+    x += v * dt + 0.5 * a * dt * dt
+    balls[s.B_ORBIT] += np.angle(np.exp(1j * (np.arctan2(x[1], x[0]) - angle_before)))
+    xc, vc, ac = (cage[r : r + 3] for r in (s.C_X, s.C_VX, s.C_AX))
+    xc += vc * dt + 0.5 * ac * dt * dt
+    xr, vr, ar = (ring[r : r + 3] for r in (s.R_X, s.R_VX, s.R_AX))
+    xr += vr * dt + 0.5 * ar * dt * dt
+    vel = (v + a * dt, w + alpha * dt, vc + ac * dt, vr + ar * dt)
+    f_b, m_b, f_c, f_r, power = forces(st, par, omega, F_ring, vel, dt)
+    new = (f_b / par[s.P_M_BALL], m_b / par[s.P_I_BALL], f_c / par[s.P_M_CAGE], f_r / par[s.P_M_RING])
+    for vel_now, acc_now, acc_new in ((v, a, new[0]), (w, alpha, new[1]), (vc, ac, new[2]), (vr, ar, new[3])):
+        vel_now += 0.5 * (acc_now + acc_new) * dt
+        acc_now[...] = acc_new
+    ring[s.R_TIME] += dt
+    st["counters"][s.K_STEP] += 1
+    return power
+
+
+def advance(st, par, lub, n_steps, dt, omega0, omega1, F_ring, T_oil):
+    """n_steps steps (omega linear from omega0 to omega1); returns the energy dissipated per race (J)."""
+    refresh_every = int(par[s.P_REFRESH])
+    energy = np.zeros(2)
+    for n in range(n_steps):
+        if st["counters"][s.K_STEP] % refresh_every == 0:
+            refresh(st, par, lub, omega0 + (omega1 - omega0) * n / n_steps, T_oil)
+        power = step(st, par, omega0 + (omega1 - omega0) * (n + 1) / n_steps, F_ring, dt)
+        energy += power * dt + st["trib"][s.T_P_FILM].sum(axis=1) * dt
+    return energy

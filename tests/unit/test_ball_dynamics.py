@@ -1,0 +1,295 @@
+"""kernels.ball_dynamics against its twin tests/reference/ref_ball_dynamics.py, plus contact-geometry checks.
+
+Kernel vs twin: both start from one state taken in the middle of a start-up of the seeds' 6208
+(3 kN radial, speed ramping through 300 rad/s, so springs are loaded, some contacts slip, the
+films are in the mixed regime) and run STEPS steps of 3 us with the tribology refreshed every 10 steps.
+Tolerance RTOL = 1e-8 on every state array, relative to each array's scale: the two differ only in
+the order of floating-point operations (about 1e-16 per operation), and the stiff contacts amplify a
+perturbation at most like exp(lambda t) with lambda dt ~ 1 for the stiffest oscillator over a step
+that is stable, i.e. bounded. Measured (printed by the test), worst over the three film formulas: cage
+1.7e-10, balls 1.5e-10, ring 3e-11, springs 2e-11, tribology 3e-11, dissipated energy 1e-12.
+The orbital angle is compared to ORBIT_TOL: the kernel's per-step increment cross/dot is the tangent
+of the twin's exact atan2 increment, which differs by dpsi^3/3 = (198 rad/s x 3 us)^3/3 = 7e-11 rad
+per step, 2e-8 rad over 300 steps.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from bearing_fmu.kernels.ball_dynamics import integrator as dyn
+from bearing_fmu.kernels.ball_dynamics import state as s
+from bearing_fmu.kernels.ball_dynamics.contacts import groove_approach
+from bearing_fmu.kernels.ball_dynamics.monitor import critical_time_step
+from bearing_fmu.kernels.hertz import hertz_contact
+from bearing_fmu.model import InputError
+from bearing_fmu.models.dem import DemModel, DemUnstableError
+from tests.reference import ref_ball_dynamics as ref
+
+STEPS = 300
+DT = 3e-6
+RTOL = 1e-8
+ORBIT_TOL = 1e-7  # rad
+
+
+@pytest.fixture(scope="module")
+def running_6208():
+    """A 6208 under 3 kN in the middle of its speed ramp (0 -> 300 rad/s over 3 ms after 1 ms at rest)."""
+    model = DemModel("6208", "guessasma_oil", dt=DT, refresh=10)
+    model.advance(1e-3, omega=0.0, F_x=3000.0)
+    for k in range(1, 16):
+        model.advance(1e-3 + k * 1e-4, omega=300.0 * k / 30, F_x=3000.0)
+    return model
+
+
+def _scale_err(a, b):
+    scale = max(np.max(np.abs(b[np.isfinite(b)])), 1e-300)
+    same = a == b  # also equal infinities (open contacts' films), whose difference would be NaN
+    diff = np.abs(np.where(same, 0.0, a) - np.where(same, 0.0, b))
+    return float(np.max(diff)) / scale
+
+
+@pytest.mark.parametrize("film, steps", [(0, STEPS), (1, STEPS // 3), (2, STEPS // 3)])
+def test_kernel_matches_twin_over_steps(running_6208, film, steps):
+    """Film formulas: 0 Hamrock-Dowson (the kernel's fused fast path), 1 Masjedi-Khonsari and 2 Chittenden
+    (through kernels.ehl.film_thickness)."""
+    model = running_6208
+    state = model.get_state()
+    kernel_state = {k: (v.copy() if isinstance(v, np.ndarray) else v) for k, v in state.items()}
+    twin_state = {k: (v.copy() if isinstance(v, np.ndarray) else v) for k, v in state.items()}
+    par = model.par.copy()
+    par[s.P_REFRESH] = 10
+    par[s.P_FILM] = film
+    lub = model.lubricant.array
+    omega0, omega1, F, T_oil = 150.0, 160.0, (3000.0, 0.0, 0.0), 313.15
+    acc = np.zeros(s.A_SIZE)
+    status = np.zeros(s.ST_SIZE, dtype=np.int64)
+    dyn.advance(
+        kernel_state["balls"],
+        kernel_state["cage"],
+        kernel_state["ring"],
+        kernel_state["spring"],
+        kernel_state["trib"],
+        kernel_state["counters"],
+        par,
+        lub,
+        steps,
+        DT,
+        omega0,
+        omega1,
+        *F,
+        T_oil,
+        1e9,
+        np.zeros((s.W_SIZE, model.bearing.Z)),
+        acc,
+        status,
+    )
+    assert status[s.ST_CODE] == s.STATUS_OK
+    energy = ref.advance(twin_state, par, lub, steps, DT, omega0, omega1, np.array(F), T_oil)
+    report = {}
+    for name in ("balls", "cage", "ring", "spring", "trib"):
+        a, b = kernel_state[name], twin_state[name]
+        if name == "balls":
+            orbit = np.max(np.abs(a[s.B_ORBIT] - b[s.B_ORBIT]))
+            assert orbit < ORBIT_TOL, f"orbital angle differs by {orbit:.3g} rad"
+            a, b = np.delete(a, s.B_ORBIT, axis=0), np.delete(b, s.B_ORBIT, axis=0)
+        if name == "balls":  # compare each quantity on its own scale
+            errs = [_scale_err(a[r : r + 3], b[r : r + 3]) for r in range(0, s.B_SIZE - 1, 3)]
+        elif name == "trib":
+            errs = [_scale_err(a[r], b[r]) for r in range(s.T_SIZE)]
+        elif name == "ring":
+            errs = [_scale_err(a[r : r + 3], b[r : r + 3]) for r in (s.R_X, s.R_VX, s.R_AX)] + [
+                _scale_err(a[s.R_TIME :], b[s.R_TIME :])
+            ]
+        else:
+            errs = [_scale_err(a, b)]
+        report[name] = max(errs)
+    report["dissipated"] = _scale_err(acc[s.A_DISS_I : s.A_DISS_O + 1], energy)
+    print("kernel vs twin, largest scaled difference:", {k: f"{v:.2e}" for k, v in report.items()})
+    assert np.array_equal(kernel_state["counters"], twin_state["counters"])
+    for name, err in report.items():
+        assert err < RTOL, f"{name}: kernel and twin differ by {err:.3g} (scaled)"
+    # the state really is in motion and loaded: the comparison is not trivial
+    assert np.max(twin_state["trib"][s.T_Q]) > 1000.0
+    assert np.max(np.abs(twin_state["spring"])) > 0.0
+
+
+def test_groove_approach_radial_ball_gives_hertz_load():
+    """A ball pushed radially into the outer groove by delta: the contact law gives Q of kernels.hertz at
+    that approach, the normal is radial, and the approach is exact for the torus."""
+    model = DemModel("6208", "guessasma_oil")
+    p = model.par
+    for delta in (1e-6, 5e-6, 2e-5):
+        r = p[s.P_RHO_O] + p[s.P_RG_O] + delta
+        psi = 0.7
+        approach, nx, ny, nz = groove_approach(
+            r * math.cos(psi), r * math.sin(psi), 0.0, 0.0, 0.0, 0.0, p[s.P_RHO_O], p[s.P_RG_O]
+        )
+        assert approach == pytest.approx(delta, rel=1e-9, abs=1e-15)
+        assert (nx, ny, nz) == pytest.approx((math.cos(psi), math.sin(psi), 0.0), abs=1e-12)
+        Q = p[s.P_KH_O] * approach**1.5
+        hertz_delta = hertz_contact(Q, p[s.P_RX_O], p[s.P_RY_O], p[s.P_E_RED], p[s.P_K_O], p[s.P_EE_O], p[s.P_KK_O])[2]
+        assert hertz_delta == pytest.approx(delta, rel=1e-9)
+
+
+def test_groove_approach_axial_offset_follows_the_torus():
+    """A ball moved axially by z in a deep groove: the distance to the curvature-centre circle grows as
+    sqrt(rg^2 + z^2) when the ball stays on the sphere about the curvature centre of radius rg + delta."""
+    rho, rg = 0.03, 0.000252
+    for angle in (0.05, 0.2, 0.4):
+        d = rg + 3e-6
+        x = rho + d * math.cos(angle)
+        z = d * math.sin(angle)
+        delta, nx, _, nz = groove_approach(x, 0.0, z, 0.0, 0.0, 0.0, rho, rg)
+        assert delta == pytest.approx(3e-6, rel=1e-8)
+        assert math.atan2(nz, nx) == pytest.approx(angle, rel=1e-12)
+
+
+def test_static_load_matches_hertz_ball_at_psi_0():
+    """At rest under F_x = 3 kN the ball at psi = 0 carries the same load on both races (no speed, no
+    centrifugal force), and its approaches are those of kernels.hertz at that load."""
+    model = DemModel("6208", "guessasma_oil")
+    model.advance(4e-3, omega=0.0, F_x=3000.0)
+    c = model.contacts()
+    j = int(np.argmax(c["Q_inner"]))
+    assert c["Q_inner"][j] == pytest.approx(c["Q_outer"][j], rel=2e-3)
+    assert 1300.0 < c["Q_inner"][j] < 1600.0
+
+
+def test_critical_time_step_of_the_squeezed_ball():
+    """Ball between two races at 1457 N: 2/omega with omega^2 = 3.5 k_t/m (tangential, the stiffer) where
+    k_t = (2/3)(K_i^(2/3) + K_o^(2/3)) Q^(1/3); about 6 us for the 6208 (the seeds run at 1 us)."""
+    model = DemModel("6208", "guessasma_oil")
+    p = model.par
+    Z = model.bearing.Z
+    Q = np.zeros(Z)
+    Q[0] = 1457.0
+    dt = critical_time_step(p, Q, Q, 0.0)
+    k = (p[s.P_KH_I] ** (2 / 3) + p[s.P_KH_O] ** (2 / 3)) * 1457.0 ** (1 / 3)
+    expected = 2.0 / math.sqrt(3.5 * p[s.P_KT_RATIO] * k / p[s.P_M_BALL])
+    assert dt == pytest.approx(expected, rel=1e-12)
+    assert 4e-6 < dt < 9e-6
+
+
+def test_state_round_trip_reproduces_the_run(running_6208):
+    """get_state/set_state restore everything: two runs from one saved state agree bit for bit."""
+    model = running_6208
+    saved = model.get_state()
+    first = model.advance(model.time + 2e-4, omega=model.omega, F_x=3000.0)
+    model.set_state(saved)
+    second = model.advance(model.time + 2e-4, omega=model.omega, F_x=3000.0)
+    assert first == second
+    model.set_state(saved)
+
+
+@pytest.mark.parametrize(
+    "kwargs, word",
+    [
+        (dict(omega=math.nan), "omega"),
+        (dict(omega=1e6), "omega"),
+        (dict(F_x=math.nan), "F_x"),
+        (dict(F_y=1e9), "F_y"),
+        (dict(T_oil=-5.0), "T_oil"),
+        (dict(dPd_thermal=math.nan), "dPd_thermal"),
+        (dict(dPd_thermal=1e-3), "dPd_thermal"),
+    ],
+)
+def test_bad_inputs_are_rejected_with_their_range(running_6208, kwargs, word):
+    with pytest.raises(InputError, match=f"{word} = .* allowed range"):
+        running_6208.advance(running_6208.time + 1e-4, **kwargs)
+
+
+def test_capacitance_off_is_not_computed():
+    """A scene without capacitance neither computes the contact capacitances nor exposes C_bearing."""
+    from bearing_fmu.scene import Scene
+
+    model = DemModel("6208", "guessasma_oil", scene=Scene(name="dem", capacitance=False))
+    out = model.advance(2e-3, omega=50.0, F_x=3000.0)
+    assert "C_bearing" not in out
+    assert not model.trib[s.T_CAP].any()
+    assert model.trib[s.T_H_C].max() > 0.0
+
+
+def test_thermal_clearance_change_acts_like_the_clearance():
+    """dPd_thermal = +12.6 um on a P_d = 0 bearing loads the balls as P_d = 12.6 um does (same groove
+    circles; the Hertz constants differ only through the free contact angle's effect on R_x: < 0.3 %).
+    Compared in slow rolling (100 rad/s), where the centrifugal force seats the unloaded balls on the outer
+    race: at rest they float wherever they were (no gravity), which differs between the two set-ups."""
+    loads = []
+    for Pd, dPd in ((12.6e-6, 0.0), (0.0, 12.6e-6)):
+        model = DemModel("6208", "guessasma_oil", Pd=Pd)
+        model.advance(2e-3, omega=0.0, F_x=3000.0, dPd_thermal=dPd)
+        model.advance(7e-3, omega=100.0, F_x=3000.0, dPd_thermal=dPd)
+        model.advance(15e-3, omega=100.0, F_x=3000.0, dPd_thermal=dPd)
+        loads.append(model.contacts()["Q_inner"])
+    assert np.max(np.abs(loads[0] - loads[1])) < 0.005 * np.max(loads[0])
+
+
+@pytest.mark.parametrize("dt", [-1e-6, 0.0, math.nan])
+def test_bad_time_step_is_rejected(dt):
+    with pytest.raises(InputError, match="dt = .* allowed range"):
+        DemModel("6208", "guessasma_oil", dt=dt)
+
+
+def test_too_large_time_step_is_reported():
+    """dt = 20 us is beyond the stability limit (about 6 us at 3 kN): the monitor stops the run and names a
+    time step that works."""
+    model = DemModel("6208", "guessasma_oil", dt=20e-6)
+    with pytest.raises(DemUnstableError, match=r"use dt <= .* s"):
+        model.advance(5e-3, omega=0.0, F_x=3000.0)
+
+
+@pytest.mark.parametrize("lubricant, T_oil", [("guessasma_oil", 313.15), ("iso_vg68_mineral", 343.15)])
+def test_fused_power_laws_equal_the_film_and_houpert_kernels(lubricant, T_oil):
+    """The refresh writes the Hamrock-Dowson films and Houpert's rolling force as exp(c + p ln u + q ln delta);
+    at every contact they equal kernels.ehl.film_thickness and kernels.torque.houpert_rolling_force at the
+    contact's own load and entrainment speed to rounding (1e-12: a handful of logs and exps)."""
+    from bearing_fmu.kernels.ehl import FILM_HAMROCK_DOWSON, film_thickness
+    from bearing_fmu.kernels.lubricant import lubricant_state
+    from bearing_fmu.kernels.torque import heathcote_force, houpert_rolling_force, hysteresis_force
+
+    model = DemModel("6208", lubricant)
+    rng = np.random.default_rng(7)
+    Z = model.bearing.Z
+    p = model.par
+    for j in range(Z):  # each ball pressed into the outer groove by its own approach, spinning about z
+        psi = 2.0 * math.pi * j / Z
+        r = p[s.P_RHO_O] + p[s.P_RG_O] + rng.uniform(1e-7, 4e-5)
+        model.balls[s.B_X : s.B_X + 3, j] = (r * math.cos(psi), r * math.sin(psi), 0.0)
+        model.balls[s.B_WX + 2, j] = rng.uniform(1.0, 5000.0)
+    model._initialise(0.0, 0.0, 0.0, 0.0, T_oil)
+    eta, xi, _ = lubricant_state(T_oil, model.lubricant.array)
+    t = model.trib
+    for j in range(Z):
+        Q, u, a, b = t[s.T_Q, 1, j], t[s.T_U, 1, j], t[s.T_A, 1, j], t[s.T_B, 1, j]
+        h_c, h_min = film_thickness(
+            FILM_HAMROCK_DOWSON, eta, xi, p[s.P_E_RED], u, Q, p[s.P_RX_O], p[s.P_RY_O], p[s.P_K_O]
+        )
+        assert t[s.T_H_MIN, 1, j] == pytest.approx(h_min, rel=1e-12)
+        assert t[s.T_H_C, 1, j] == pytest.approx(h_c, rel=1e-12)
+        F_R = houpert_rolling_force(Q, u, p[s.P_RX_O], p[s.P_RY_O], p[s.P_E_RED], eta, xi)
+        F_hh = hysteresis_force(Q, b, p[s.P_RX_O], p[s.P_ALPHA_H]) + heathcote_force(
+            Q, a, p[s.P_RX_O], p[s.P_F_O], p[s.P_D], t[s.T_MU, 1, j]
+        )
+        assert t[s.T_F_ROLL, 1, j] == pytest.approx(F_R + 0.5 * F_hh, rel=1e-12)
+        a_ref, b_ref, _, p_ref = hertz_contact(
+            Q, p[s.P_RX_O], p[s.P_RY_O], p[s.P_E_RED], p[s.P_K_O], p[s.P_EE_O], p[s.P_KK_O]
+        )
+        assert (a, b, t[s.T_P_MAX, 1, j]) == pytest.approx((a_ref, b_ref, p_ref), rel=1e-12)
+
+
+def test_record_returns_time_series_of_outputs_and_contacts():
+    """record() samples every interval: times, bearing outputs and per-ball arrays (n, Z) under 'contacts'; the last
+    sample equals a direct advance() from the same state."""
+    model = DemModel("6208", "guessasma_oil")
+    model.advance(1e-3, omega=0.0, F_x=3000.0)
+    saved = model.get_state()
+    rec = model.record(1.5e-3, 1e-4, omega=10.0, F_x=3000.0)
+    np.testing.assert_allclose(rec["t"], np.linspace(1.1e-3, 1.5e-3, 5), rtol=1e-12)
+    assert rec["contacts"]["Q_inner"].shape == (5, model.bearing.Z) and rec["omega_cage"].shape == (5,)
+    assert rec["Lambda_outer"][-1] == model.outputs()["Lambda_outer"]
+    model.set_state(saved)
+    for k in range(1, 6):
+        out = model.advance(1e-3 + k * 1e-4, omega=10.0 * k / 5, F_x=3000.0)
+    assert out["Q_max_inner"] == rec["Q_max_inner"][-1]
