@@ -33,9 +33,9 @@ from ..kernels.hertz import (
     reduced_modulus,
 )
 from ..kernels.torque import ALPHA_HYSTERESIS_STEEL
-from ..model import DM_N_LIMIT, P_MAX_ERROR, InputError, check_oil_temperature, check_speed
 from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
+from .variables import DM_N_LIMIT, P_MAX_ERROR, InputError, check_oil_temperature, check_speed
 
 # PA66 cage balls when the bearing file has no [material.cage] (Farah 2020: E_c = 3.3 GPa, nu_c = 0.41)
 CAGE_E = 3.3e9

@@ -23,8 +23,8 @@ from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.kernels.ball_dynamics.contacts import groove_approach
 from bearing_fmu.kernels.ball_dynamics.monitor import critical_time_step
 from bearing_fmu.kernels.hertz import hertz_contact
-from bearing_fmu.model import InputError
 from bearing_fmu.models.dem import DemModel, DemUnstableError
+from bearing_fmu.models.variables import InputError
 from tests.reference import ref_ball_dynamics as ref
 
 STEPS = 300

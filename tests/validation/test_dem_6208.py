@@ -16,11 +16,11 @@ import math
 import numpy as np
 import pytest
 
-from bearing_fmu.kernels import quasistatic as qk
+from bearing_fmu.kernels import jones_harris as qk
 from bearing_fmu.kernels.ball_dynamics.state import T_P_FILM
 from bearing_fmu.kernels.geometry import ball_mass, centrifugal_force, defect_frequencies, rolling_kinematics
 from bearing_fmu.models.dem import DemModel, DemUnstableError
-from bearing_fmu.quasi_static import QuasiStaticModel
+from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
 
 D, DM, Z = 12.6e-3, 60.6e-3, 9

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from bearing_fmu.models.dem import DemModel
-from bearing_fmu.quasi_static import QuasiStaticModel
+from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
 
 OMEGA = 10000.0 * 2.0 * math.pi / 60.0
