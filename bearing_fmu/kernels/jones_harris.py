@@ -52,7 +52,8 @@ QS_GYROSCOPIC = 12  # 1 = gyroscopic moment on
 QS_C_HYB = 13  # hybrid law: a_i E_i / (a_o E_o) at equal loads (-), C = this (Q_i/Q_o)^(4/3)
 QS_TOL = 14  # relative tolerance of the global equilibrium (-)
 QS_MAXIT = 15  # iteration cap of the global Newton (-)
-QS_SIZE = 16
+QS_STIFFNESS = 16  # 1 = fill the stiffness output K; 0 = null submodel: K untouched, assembled only as Newton matrix
+QS_SIZE = 17
 
 RACE_OUTER = 0
 RACE_INNER = 1
@@ -82,6 +83,14 @@ BQ_SPIN_O = 13  # spin speed at the outer contact (rad/s)
 BQ_U_I = 14  # rolling (entrainment) speed at the inner contact (m/s)
 BQ_U_O = 15  # rolling (entrainment) speed at the outer contact (m/s)
 BQ_SIZE = 16
+
+# rows of the per-ball contact state that the load evaluation keeps for the per-ball outputs
+CS_Q_I = 0  # inner contact load (N)
+CS_Q_O = 1  # outer contact load (N)
+CS_A_I = 2  # inner contact angle (rad)
+CS_A_O = 3  # outer contact angle (rad)
+CS_C = 4  # hybrid spin-moment ratio (-)
+CS_SIZE = 5
 
 # status codes of the solver
 QS_OK = 0
@@ -505,9 +514,22 @@ def bearing_loads(d, qs, dPd, omega, X, F, K, balls):
     X (2, Z): ball positions, used as warm start and updated; balls (BQ_SIZE, Z): per-ball outputs.
     Returns the worst ball status (0 all converged or unloaded, 2 a ball did not converge).
     """
+    contact = np.empty((CS_SIZE, int(qs[QS_Z])))
+    worst = ring_loads(d, qs, dPd, omega, X, F, K, contact, True)
+    ball_outputs(omega, qs, X, contact, balls)
+    return worst
+
+
+@kernel
+def ring_loads(d, qs, dPd, omega, X, F, K, contact, jacobian):
+    """Loads F (5, N and N.m) on the inner ring at displacements d (5, m and rad), and K = dF/dd (5x5)
+    when `jacobian` (otherwise K is not touched); clearance change dPd (m), speed omega (rad/s).
+
+    X (2, Z): ball positions, warm start and updated; contact (CS_SIZE, Z): per-ball contact state
+    (filled), from which ball_outputs derives the per-ball outputs once the solve has converged.
+    Returns the worst ball status (0 all converged or unloaded, 2 a ball did not converge).
+    """
     Z = int(qs[QS_Z])
-    D = qs[QS_D]
-    dm = qs[QS_DM]
     A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
     K_s = (qs[QS_K_I] ** (-2.0 / 3.0) + qs[QS_K_O] ** (-2.0 / 3.0)) ** -1.5
     geo = (r_i, r_o, K_s)
@@ -516,13 +538,11 @@ def bearing_loads(d, qs, dPd, omega, X, F, K, balls):
     cond = np.empty(14)
     for i in range(5):
         F[i] = 0.0
-        for k in range(5):
-            K[i, k] = 0.0
+    if jacobian:
+        for i in range(5):
+            for k in range(5):
+                K[i, k] = 0.0
     worst = 0
-    gp = D / dm
-    race = int(qs[QS_RACE])
-    cen = qs[QS_CENTRIFUGAL] > 0.5 and omega != 0.0
-    gyro = qs[QS_GYROSCOPIC] > 0.5 and omega != 0.0
     for j in range(Z):
         psi = 2.0 * math.pi * j / Z
         cp = math.cos(psi)
@@ -535,61 +555,74 @@ def bearing_loads(d, qs, dPd, omega, X, F, K, balls):
         gz = cond[0]
         gr = cond[1]
         mg = cond[2]
-        # T = dA/dd: rows A1 -> (0, 0, 1, Rr sp, -Rr cp), A2 -> (cp, sp, 0, 0, 0)
-        t1 = (0.0, 0.0, 1.0, Rr * sp, -Rr * cp)
-        t2 = (cp, sp, 0.0, 0.0, 0.0)
-        em = (0.0, 0.0, 0.0, sp, -cp)
         mom = Rr * gz + mg
         F[0] += gr * cp
         F[1] += gr * sp
         F[2] += gz
         F[3] += mom * sp
         F[4] -= mom * cp
-        # dF/dd = T^T (dg/dA) T + e_m (dm/dA) T
-        for a in range(5):
-            row_z = cond[3] * t1[a] + cond[4] * t2[a]  # d g_z / dd_a
-            row_r = cond[5] * t1[a] + cond[6] * t2[a]  # d g_r / dd_a
-            row_m = cond[7] * t1[a] + cond[8] * t2[a]  # d m_g / dd_a
-            for i in range(5):
-                K[i, a] += t1[i] * row_z + t2[i] * row_r + em[i] * row_m
-        _ball_outputs(j, cond, X, A1, A2, omega, gp, dm, D, qs, race, cen, gyro, balls)
+        if jacobian:
+            # T = dA/dd: rows A1 -> (0, 0, 1, Rr sp, -Rr cp), A2 -> (cp, sp, 0, 0, 0)
+            t1 = (0.0, 0.0, 1.0, Rr * sp, -Rr * cp)
+            t2 = (cp, sp, 0.0, 0.0, 0.0)
+            em = (0.0, 0.0, 0.0, sp, -cp)
+            # dF/dd = T^T (dg/dA) T + e_m (dm/dA) T
+            for a in range(5):
+                row_z = cond[3] * t1[a] + cond[4] * t2[a]  # d g_z / dd_a
+                row_r = cond[5] * t1[a] + cond[6] * t2[a]  # d g_r / dd_a
+                row_m = cond[7] * t1[a] + cond[8] * t2[a]  # d m_g / dd_a
+                for i in range(5):
+                    K[i, a] += t1[i] * row_z + t2[i] * row_r + em[i] * row_m
+        contact[CS_Q_I, j] = cond[9]
+        contact[CS_Q_O, j] = cond[10]
+        contact[CS_A_I, j] = cond[11]
+        contact[CS_A_O, j] = cond[12]
+        contact[CS_C, j] = cond[13]
     return worst
 
 
 @kernel
-def _ball_outputs(j, cond, X, A1, A2, omega, gp, dm, D, qs, race, cen, gyro, balls):
-    """Per-ball loads, angles and kinematics (spin and rolling speeds at both contacts)."""
-    a_i = cond[11]
-    a_o = cond[12]
-    C = cond[13]
-    F_c, Mgo, Mgi, w_m, w_R, beta = kinematics(
-        complex(a_i, 0.0), complex(a_o, 0.0), complex(C, 0.0), omega, gp, dm, D, qs[QS_M_BALL], race, cen, gyro
-    )
-    w_m = w_m.real
-    w_R = w_R.real
-    beta = beta.real
-    balls[BQ_Q_I, j] = cond[9]
-    balls[BQ_Q_O, j] = cond[10]
-    balls[BQ_A_I, j] = a_i
-    balls[BQ_A_O, j] = a_o
-    balls[BQ_BETA, j] = beta
-    balls[BQ_W_M, j] = w_m
-    balls[BQ_W_R, j] = w_R
-    balls[BQ_F_C, j] = F_c.real
-    balls[BQ_M_G, j] = (Mgo.real + Mgi.real) * D * 0.5  # lam_o + lam_i = 2
-    balls[BQ_X1, j] = X[0, j]
-    balls[BQ_X2, j] = X[1, j]
-    lam_i = 0.0
-    if race == RACE_INNER:
-        lam_i = 2.0
-    elif race >= RACE_HYBRID:
-        lam_i = hybrid_inner_share(C, race)
-    balls[BQ_LAM_I, j] = lam_i
-    # spin = (ball - race) angular velocity along the contact normal, in the cage frame (docs/quasistatic.md)
-    balls[BQ_SPIN_O, j] = w_R * math.sin(a_o - beta) + w_m * math.sin(a_o)
-    balls[BQ_SPIN_I, j] = -w_R * math.sin(a_i - beta) + (omega - w_m) * math.sin(a_i)
-    balls[BQ_U_O, j] = abs(w_m) * 0.5 * dm * (1.0 + gp * math.cos(a_o))
-    balls[BQ_U_I, j] = abs(omega - w_m) * 0.5 * dm * (1.0 - gp * math.cos(a_i))
+def ball_outputs(omega, qs, X, contact, balls):
+    """Per-ball loads, angles and kinematics (spin and rolling speeds at both contacts) from the
+    contact state of ring_loads and the ball positions X (m) at speed omega (rad/s); fills balls."""
+    D = qs[QS_D]
+    dm = qs[QS_DM]
+    gp = D / dm
+    race = int(qs[QS_RACE])
+    cen = qs[QS_CENTRIFUGAL] > 0.5 and omega != 0.0
+    gyro = qs[QS_GYROSCOPIC] > 0.5 and omega != 0.0
+    for j in range(contact.shape[1]):
+        a_i = contact[CS_A_I, j]
+        a_o = contact[CS_A_O, j]
+        C = contact[CS_C, j]
+        F_c, Mgo, Mgi, w_m, w_R, beta = kinematics(
+            complex(a_i, 0.0), complex(a_o, 0.0), complex(C, 0.0), omega, gp, dm, D, qs[QS_M_BALL], race, cen, gyro
+        )
+        w_m = w_m.real
+        w_R = w_R.real
+        beta = beta.real
+        balls[BQ_Q_I, j] = contact[CS_Q_I, j]
+        balls[BQ_Q_O, j] = contact[CS_Q_O, j]
+        balls[BQ_A_I, j] = a_i
+        balls[BQ_A_O, j] = a_o
+        balls[BQ_BETA, j] = beta
+        balls[BQ_W_M, j] = w_m
+        balls[BQ_W_R, j] = w_R
+        balls[BQ_F_C, j] = F_c.real
+        balls[BQ_M_G, j] = (Mgo.real + Mgi.real) * D * 0.5  # lam_o + lam_i = 2
+        balls[BQ_X1, j] = X[0, j]
+        balls[BQ_X2, j] = X[1, j]
+        lam_i = 0.0
+        if race == RACE_INNER:
+            lam_i = 2.0
+        elif race >= RACE_HYBRID:
+            lam_i = hybrid_inner_share(C, race)
+        balls[BQ_LAM_I, j] = lam_i
+        # spin = (ball - race) angular velocity along the contact normal, in the cage frame (docs/quasistatic.md)
+        balls[BQ_SPIN_O, j] = w_R * math.sin(a_o - beta) + w_m * math.sin(a_o)
+        balls[BQ_SPIN_I, j] = -w_R * math.sin(a_i - beta) + (omega - w_m) * math.sin(a_i)
+        balls[BQ_U_O, j] = abs(w_m) * 0.5 * dm * (1.0 + gp * math.cos(a_o))
+        balls[BQ_U_I, j] = abs(omega - w_m) * 0.5 * dm * (1.0 - gp * math.cos(a_i))
 
 
 @kernel
@@ -633,19 +666,37 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
 
     F_applied (5): loads (N, N.m) on the load-controlled DOFs; control (5): 1 = load-controlled,
     0 = displacement-controlled (d holds the imposed value); d (5, m and rad): warm start, solution
-    on return. F, K, X, balls as in bearing_loads (F = reactions at the solution).
+    on return; F: reactions at the solution (N, N.m); X (2, Z): ball positions (m), warm start and
+    solution. Filled once, at the solution: balls (BQ_SIZE, Z) per-ball outputs, and K (5x5) the
+    stiffness dF/dd when qs[QS_STIFFNESS] is set (otherwise K is not touched).
     Returns (status, iterations, residual): status QS_* code, residual = max scaled load error (N).
     """
-    A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
-    tol = qs[QS_TOL]
-    maxit = int(qs[QS_MAXIT])
-    scale = np.array([1.0, 1.0, 1.0, Rr, Rr])  # rotations as arc lengths at Rr, moments as forces
     idx = np.empty(5, np.int64)
     n = 0
     for i in range(5):
         if control[i] > 0.5:
             idx[n] = i
             n += 1
+    stiffness = qs[QS_STIFFNESS] > 0.5
+    J = np.empty((5, 5))  # Newton matrix: the stiffness of the current iterate
+    contact = np.empty((CS_SIZE, int(qs[QS_Z])))
+    status, it, res = _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, stiffness or n > 0)
+    ball_outputs(omega, qs, X, contact, balls)
+    if stiffness:
+        K[:, :] = J
+    return status, it, res
+
+
+@kernel
+def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacobian):
+    """Damped Newton on the loads of the n load-controlled DOFs idx[:n] (solve_quasistatic's loop).
+
+    J (5x5) is assembled at every evaluation when `jacobian` (needed whenever n > 0); the last
+    evaluation is always that of the returned d, so F, J, contact and X belong to the solution."""
+    A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
+    tol = qs[QS_TOL]
+    maxit = int(qs[QS_MAXIT])
+    scale = np.array([1.0, 1.0, 1.0, Rr, Rr])  # rotations as arc lengths at Rr, moments as forces
     K_s = (qs[QS_K_I] ** (-2.0 / 3.0) + qs[QS_K_O] ** (-2.0 / 3.0)) ** -1.5
     k_floor = 1e-6 * K_s * math.sqrt(1e-3 * qs[QS_D])  # regularises a bearing with no loaded ball
     step_cap = 0.05 * A
@@ -655,7 +706,7 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
     step = np.empty(5)
     d_try = np.empty(5)
     X_try = X.copy()
-    ball_status = bearing_loads(d, qs, dPd, omega, X, F, K, balls)
+    ball_status = ring_loads(d, qs, dPd, omega, X, F, J, contact, jacobian)
     res = _residual_norm(F_applied, F, idx, n, scale)
     f_ref = 1e-3
     for i in range(n):
@@ -663,19 +714,19 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
     for it in range(maxit + 1):
         if not math.isfinite(res):
             return QS_NOT_FINITE, it, res
-        if res <= tol * max(f_ref, _mean_ball_load(balls)) or n == 0:
+        if res <= tol * max(f_ref, _mean_ball_load(contact)) or n == 0:
             return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), it, res
         if it == maxit:
             break
         kmax = 0.0
         for a in range(n):
-            kmax = max(kmax, K[idx[a], idx[a]] / (scale[idx[a]] ** 2))
+            kmax = max(kmax, J[idx[a], idx[a]] / (scale[idx[a]] ** 2))
         for a in range(n):
             ia = idx[a]
             R[a] = (F_applied[ia] - F[ia]) / scale[ia]
             for b in range(n):
                 ib = idx[b]
-                Kr[a, b] = K[ia, ib] / (scale[ia] * scale[ib])
+                Kr[a, b] = J[ia, ib] / (scale[ia] * scale[ib])
             Kr[a, a] += 1e-12 * kmax + k_floor
         if not _solve_small(Kr, R, n, Rw):
             return QS_NOT_FINITE, it, res
@@ -696,7 +747,7 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
             for a in range(5):
                 d_try[a] = d[a] + lam * step[a]
             X_try[:, :] = X
-            st = bearing_loads(d_try, qs, dPd, omega, X_try, F, K, balls)
+            st = ring_loads(d_try, qs, dPd, omega, X_try, F, J, contact, jacobian)
             trial = _residual_norm(F_applied, F, idx, n, scale)
             if trial < res:
                 accepted = True
@@ -706,7 +757,7 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
             for a in range(5):
                 d_try[a] = d[a] + step[a]
             X_try[:, :] = X
-            st = bearing_loads(d_try, qs, dPd, omega, X_try, F, K, balls)
+            st = ring_loads(d_try, qs, dPd, omega, X_try, F, J, contact, jacobian)
             trial = _residual_norm(F_applied, F, idx, n, scale)
         for a in range(5):
             d[a] = d_try[a]
@@ -727,10 +778,11 @@ def _residual_norm(F_applied, F, idx, n, scale):
 
 
 @kernel
-def _mean_ball_load(balls):
-    """Mean inner contact load (N): the load scale of a preloaded bearing under zero external load."""
-    Z = balls.shape[1]
+def _mean_ball_load(contact):
+    """Mean inner contact load (N) of a contact state (CS_*): the load scale of a preloaded bearing
+    under zero external load."""
+    Z = contact.shape[1]
     s = 0.0
     for j in range(Z):
-        s += balls[BQ_Q_I, j]
+        s += contact[CS_Q_I, j]
     return s / Z

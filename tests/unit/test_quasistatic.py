@@ -54,6 +54,7 @@ def pack(p, tol=1e-12, maxit=100):
     qs[qk.QS_C_HYB] = p["c_hyb"]
     qs[qk.QS_TOL] = tol
     qs[qk.QS_MAXIT] = maxit
+    qs[qk.QS_STIFFNESS] = 1.0
     return qs
 
 
