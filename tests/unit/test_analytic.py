@@ -281,8 +281,9 @@ def test_eps_above_one_loads_every_ball():
 def test_compiled_kernel_is_current():
     """The jitted dispatcher computes what its source computes (run as Python, calling the same
     jitted callees). numba's cache=True only checks the caller's own file: a callee changed in another
-    kernel module leaves a stale compiled analytic_bearing in bearing_fmu/kernels/__pycache__ (seen:
-    the pre-'wlf_ratio' alpha* raising ZeroDivisionError for the WLF oil). Fix: delete that cache."""
+    kernel module would leave a stale compiled analytic_bearing in a fixed cache directory (seen once:
+    the pre-'wlf_ratio' alpha* raising ZeroDivisionError for the WLF oil). The cache directory keyed on
+    the kernel sources (bearing_fmu_common/jit.py, tests/unit/test_jit_cache.py) prevents it."""
     for lubricant, T in (("thesis_turbine_oil", 313.0), ("iso_vg68_mineral", 313.0), ("guessasma_oil", 233.15)):
         m = model("6208", "default", 5e-6, lubricant)
         out = np.zeros(ak.O_SIZE)
