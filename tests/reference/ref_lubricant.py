@@ -7,7 +7,7 @@
   singularity C2 + (T - T_g) F = 0, beyond which mu(0)/mu(p) is taken as 0 (glassy: no flow).
 - alpha* = [int_0^inf mu(0)/mu(p) dp]^-1 (Blok) with scipy.integrate.quad (see wlf_alpha_star).
 - Murnaghan (thesis eqs. 2.1-7, 2.1-8), linear thermal expansion, Gold et al. (2001) alpha = s nu^t,
-  Dowson-Higginson density, Clausius-Mossotti permittivity (SPEC 4.5).
+  Dowson-Higginson density, Clausius-Mossotti permittivity (docs/parameters.md).
 """
 
 import math

@@ -222,8 +222,9 @@ def test_bearing_array_matches_twin_geometry():
 
 
 def test_seed_case_6208():
-    """SPEC 4.3/4.4/4.6: 6208, omega = 500 rad/s, F_r = 3 kN, P_d = 0, eta = 0.04 Pa s, xi = 2.3e-8 1/Pa:
-    Q_max = 1457 N, Lambda_out at psi = 0 ~ 2.1-2.15, bearing capacitance of tens of pF."""
+    """Guessasma & Machado (2018), Harris & Kotzalas (2006): 6208, omega = 500 rad/s, F_r = 3 kN, P_d = 0,
+    eta = 0.04 Pa s, xi = 2.3e-8 1/Pa: Q_max = 1457 N, Lambda_out at psi = 0 ~ 2.1-2.15, bearing capacitance
+    of tens of pF."""
     out, ref = check_against_twin(model("6208", "default", 0.0, "guessasma_oil"), 500.0, 3000.0, 313.0)
     assert out[ak.O_QMAX_I] == pytest.approx(1457.0, abs=0.5)
     assert 2.1 <= out[ak.O_LAMBDA_O] <= 2.15
