@@ -585,3 +585,11 @@ def params_b7214c(**overrides):
     kw = dict(Z=17, D=15.875e-3, dm=97.5e-3, f_i=0.52, f_o=0.53, Pd=54.09e-6, angular=True)
     kw.update(overrides)
     return make_params(**kw)
+
+
+def solve_small(A, b):
+    """Solution of the square system A x = b by numpy's LU solver; None when A is singular."""
+    try:
+        return np.linalg.solve(np.asarray(A, float), np.asarray(b, float))
+    except np.linalg.LinAlgError:
+        return None
