@@ -128,3 +128,8 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
         "iter": None,
     }
     return out, balls
+
+
+# the kernels this module twins (tests/unit/test_every_kernel_has_a_twin.py)
+KERNEL_MODULE = "bearing_fmu.kernels.radial_bearing"
+TWINS = {"analytic_bearing": analytic_bearing}

@@ -97,3 +97,8 @@ def contact_outputs(omega, T_oil, cp, lub, balls):
     out[ck.CO_ETA] = eta
     out[ck.CO_XI] = xi
     return out, per_contact
+
+
+# the kernels this module twins (tests/unit/test_every_kernel_has_a_twin.py)
+KERNEL_MODULE = "bearing_fmu.kernels.contacts"
+TWINS = {"contact_outputs": contact_outputs}

@@ -121,3 +121,18 @@ def normal_damping(lam, Q, alpha_e, eta, a_major, R_ball, h_min):
     if regime == 2:
         return C_f
     return 1.0 / (1.0 / C_h + 1.0 / C_f)
+
+
+# the kernels this module twins, by name (tests/unit/test_every_kernel_has_a_twin.py)
+KERNEL_MODULE = "bearing_fmu.kernels.ehl"
+TWINS = {
+    "dimensionless_groups": dimensionless_groups,
+    "film_hamrock_dowson": film_hamrock_dowson,
+    "film_masjedi_khonsari": film_masjedi_khonsari,
+    "film_chittenden": film_chittenden,
+    "film_thickness": film_thickness,
+    "film_parameter": film_parameter,
+    "lubrication_regime": lubrication_regime,
+    "friction_coefficient": friction_coefficient,
+    "normal_damping": normal_damping,
+}

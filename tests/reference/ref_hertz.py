@@ -111,3 +111,16 @@ def series_stiffness(K1, K2):
     d1 = (1.0 / K1) ** (2.0 / 3.0)
     d2 = (1.0 / K2) ** (2.0 / 3.0)
     return 1.0 / (d1 + d2) ** 1.5
+
+
+# the kernels this module twins, by name (tests/unit/test_every_kernel_has_a_twin.py)
+KERNEL_MODULE = "bearing_fmu.kernels.hertz"
+TWINS = {
+    "reduced_modulus": reduced_modulus,
+    "elliptic_integrals": elliptic_integrals,
+    "hertz_coefficients_exact": hertz_coefficients_exact,
+    "hertz_coefficients_approx": hertz_coefficients_approx,
+    "hertz_contact": hertz_contact,
+    "hertz_stiffness": hertz_stiffness,
+    "series_stiffness": series_stiffness,
+}

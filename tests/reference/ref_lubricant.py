@@ -184,3 +184,21 @@ def lubricant_state(T, lub):
     else:
         raise ValueError(f"unknown pressure-viscosity model {piezo}")
     return eta, xi, rho0
+
+
+# the kernels this module twins, by name (tests/unit/test_every_kernel_has_a_twin.py)
+KERNEL_MODULE = "bearing_fmu.kernels.lubricant"
+TWINS = {
+    "walther_constants": walther_constants,
+    "walther_viscosity": walther_viscosity,
+    "density_linear": density_linear,
+    "murnaghan_density": murnaghan_density,
+    "wlf_viscosity": wlf_viscosity,
+    "wlf_ratio": wlf_ratio,
+    "wlf_alpha_star": wlf_alpha_star,
+    "gold_pressure_viscosity": gold_pressure_viscosity,
+    "dowson_higginson_density": dowson_higginson_density,
+    "clausius_mossotti_constant": clausius_mossotti_constant,
+    "permittivity_from_density": permittivity_from_density,
+    "lubricant_state": lubricant_state,
+}

@@ -593,3 +593,18 @@ def solve_small(A, b):
         return np.linalg.solve(np.asarray(A, float), np.asarray(b, float))
     except np.linalg.LinAlgError:
         return None
+
+
+# the kernels this module twins (tests/unit/test_every_kernel_has_a_twin.py); the twin's names follow
+# the model's parts, not the kernel's
+KERNEL_MODULE = "bearing_fmu.kernels.jones_harris"
+TWINS = {
+    "qs_geometry": geometry,
+    "kinematics": kinematics,
+    "hybrid_inner_share": race_control,
+    "ball_equilibrium": ball_state,
+    "ring_loads": bearing_loads,
+    "bearing_loads": bearing_loads,
+    "solve_quasistatic": solve_loads,
+    "_solve_small": solve_small,
+}

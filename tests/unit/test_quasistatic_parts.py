@@ -59,7 +59,8 @@ def test_kinematics_and_moment_share_match_twin(race, loads):
     expected = (twin["F_c"], twin["lam_o"] * M_g_D, twin["lam_i"] * M_g_D, twin["w_m"], twin["w_R"], twin["beta"])
     assert_close((F_c, Mg_o, Mg_i, w_m, w_R, beta), expected, RTOL, f"{race}, Q = {loads}")
     if code >= qk.RACE_HYBRID:
-        assert_close(qk.hybrid_inner_share(complex(C), code).real, twin["lam_i"], RTOL, "lam_i")
+        _, lam_i, _ = ref.race_control(a_i, a_o, Q_i, Q_o, p, g["gp"])
+        assert_close(qk.hybrid_inner_share(complex(C), code).real, lam_i, RTOL, "lam_i")
 
 
 BALL_CASES = [
@@ -100,11 +101,11 @@ def test_ball_equilibrium_matches_twin(label, p, d):
 
 
 @pytest.mark.parametrize("label, p, d", BALL_CASES, ids=[c[0] for c in BALL_CASES])
-def test_ring_loads_match_twin_with_and_without_the_jacobian(label, p, d):
+def test_ring_loads_and_bearing_loads_match_twin(label, p, d):
     qs = pack(p)
     Z = int(qs[qk.QS_Z])
     d = np.array(d)
-    F_ref, _ = ref.bearing_loads(d, p)
+    F_ref, twin_balls = ref.bearing_loads(d, p)
     contact = np.empty((qk.CS_SIZE, Z))
     results = []
     for jacobian in (True, False):
@@ -114,6 +115,15 @@ def test_ring_loads_match_twin_with_and_without_the_jacobian(label, p, d):
         assert np.all(np.isfinite(K)) == jacobian  # without the Jacobian K is not touched
         results.append(F)
     assert np.array_equal(results[0], results[1])
+    # bearing_loads = ring_loads with the Jacobian + the per-ball outputs
+    balls = np.zeros((qk.BQ_SIZE, Z))
+    F = np.zeros(5)
+    qk.bearing_loads(d, qs, 0.0, p["omega"], np.zeros((2, Z)), F, np.zeros((5, 5)), balls)
+    assert np.array_equal(F, results[0])
+    q_scale = max(b["Q_o"] for b in twin_balls)
+    for j, b in enumerate(twin_balls):
+        assert balls[qk.BQ_Q_I, j] == pytest.approx(b["Q_i"], abs=1e-8 * q_scale), (label, j)
+        assert balls[qk.BQ_Q_O, j] == pytest.approx(b["Q_o"], abs=1e-8 * q_scale), (label, j)
 
 
 def test_small_solver_matches_twin():
