@@ -171,8 +171,9 @@ def line_search(residual_at):
     full step when none does (a plateau where no contact carries load: the norm is flat there). The
     evaluation of the returned step is the last one made, so its side effects (work arrays) are current.
 
-    residual_at is a kernel; the search is built once per residual (numba inlines it into the search, so
-    the callers stay cacheable, which passing the kernel as an argument would prevent)."""
+    residual_at is a kernel; the search is built once per residual, which it holds as a constant: passed
+    as an argument instead, a kernel would make every caller uncacheable (numba treats it as a dynamic
+    global)."""
 
     @kernel
     def search(x, step, res, tries, args):
@@ -432,14 +433,13 @@ def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond):
         F_c0 = 0.5 * qs[QS_M_BALL] * dm * (0.5 * omega * (1.0 - qs[QS_D] / dm)) ** 2  # for the start only
     if math.hypot(A1, A2) - r_i - r_o <= 0.0 and F_c0 <= 0.0:
         return _unloaded_ball(A1, A2, X, j, r_o, cond)
-    x = _ball_start(A1, A2, X, j, r_i, r_o, qs[QS_K_I], qs[QS_K_O], F_c0)
+    x = X[:, j]  # the Newton iterates in place: X[:, j] is the start and the solution
+    _ball_start(A1, A2, x, r_i, r_o, qs[QS_K_I], qs[QS_K_O], F_c0)
     D = qs[QS_D]
     dm = qs[QS_DM]
     ball = (A1, A2, r_i, r_o, qs[QS_K_I], qs[QS_K_O], qs[QS_FI], omega, D / dm, dm, D, qs[QS_M_BALL],
             int(qs[QS_RACE]), cen, gyro, qs[QS_C_HYB])  # fmt: skip
     status = _ball_newton(x, ball, F_c0, kg, w)
-    X[0, j] = x[0]
-    X[1, j] = x[1]
     if not _condense(w, cond):
         return 2
     if w[EV_Q_I] <= 0.0 and w[EV_Q_O] <= 0.0:
@@ -489,15 +489,12 @@ def _static_ball(A1, A2, X, j, r_i, r_o, K_s, K_i, K_o, cond):
 
 
 @kernel
-def _ball_start(A1, A2, X, j, r_i, r_o, K_i, K_o, F_c0):
-    """Start of the ball Newton (m): X[:, j] when it is a plausible ball position (warm start), otherwise
+def _ball_start(A1, A2, x, r_i, r_o, K_i, K_o, F_c0):
+    """Start of the ball Newton in x (2, m): kept when it is a plausible ball position (warm start), else
     the static split of the approach plus the centrifugal outer deflection, or the ball resting on the
     outer race under the centrifugal force F_c0 (N)."""
-    x = np.empty(2)
-    x[0] = X[0, j]
-    x[1] = X[1, j]
     if x[1] > 0.0 and math.hypot(x[0], x[1]) > 0.5 * r_o:
-        return x
+        return
     L = math.hypot(A1, A2)
     delta = L - r_i - r_o
     if delta > 0.0:
@@ -507,7 +504,6 @@ def _ball_start(A1, A2, X, j, r_i, r_o, K_i, K_o, F_c0):
     else:
         x[0] = 0.0
         x[1] = r_o + (F_c0 / K_o) ** (2.0 / 3.0)
-    return x
 
 
 @kernel
@@ -520,10 +516,9 @@ def _ball_residual_at(x, lam, step, args):
 
 @kernel
 def _ball_newton(x, ball, F_c0, kg, w):
-    """Damped Newton on the ball position x (2, m) from its start; w holds the evaluation at the
-    returned x. Returns 0 (converged) or 2 (not converged: iteration cap or singular dr/dX)."""
+    """Damped Newton on the ball position x (2, m, updated in place) from its start; w holds the
+    evaluation at the final x. Returns 0 (converged) or 2 (not converged: iteration cap or singular dr/dX)."""
     r_i, r_o, D = ball[2], ball[3], ball[10]  # layout of `ball`: _ball_eval
-    step = np.empty(2)
     _ball_eval(x[0], x[1], ball, kg, w)
     res = math.hypot(w[EV_R1], w[EV_R2])
     for _ in range(_BALL_MAXIT):
@@ -533,19 +528,19 @@ def _ball_newton(x, ball, F_c0, kg, w):
         det = w[EV_DR1_DX1] * w[EV_DR2_DX2] - w[EV_DR1_DX2] * w[EV_DR2_DX1]
         if det == 0.0 or not math.isfinite(det):
             return 2
-        step[0] = -(w[EV_DR2_DX2] * w[EV_R1] - w[EV_DR1_DX2] * w[EV_R2]) / det
-        step[1] = -(-w[EV_DR2_DX1] * w[EV_R1] + w[EV_DR1_DX1] * w[EV_R2]) / det
+        s1 = -(w[EV_DR2_DX2] * w[EV_R1] - w[EV_DR1_DX2] * w[EV_R2]) / det
+        s2 = -(-w[EV_DR2_DX1] * w[EV_R1] + w[EV_DR1_DX1] * w[EV_R2]) / det
         # cap the step at a tenth of the groove clearance
         cap = 0.1 * (r_i + r_o)
-        norm = math.hypot(step[0], step[1])
+        norm = math.hypot(s1, s2)
         if norm > cap:
-            step[0] *= cap / norm
-            step[1] *= cap / norm
+            s1 *= cap / norm
+            s2 *= cap / norm
         if norm < 1e-15 * D:
             return 0
-        lam, res = _ball_line_search(x, step, res, 30, (ball, kg, w))
-        x[0] += lam * step[0]
-        x[1] += lam * step[1]
+        lam, res = _ball_line_search(x, (s1, s2), res, 30, (ball, kg, w))
+        x[0] += lam * s1
+        x[1] += lam * s2
     return 2
 
 
