@@ -288,8 +288,8 @@ def main():
         "- The Jacobian is the Newton matrix of the solve, so exposing it costs nothing extra; the row "
         "above is the measured cost of assembling it inside one load evaluation (section below), worst "
         "case over the table (median of interleaved batch ratios; ratio of the fastest batches in "
-        "brackets). Values within a few % of zero, negative ones included (the copy is compiled on its own "
-        "and can come out slightly slower), are below the resolution of this measurement.",
+        "brackets). Values within a few % of zero, negative ones included, are below the resolution of this "
+        "measurement.",
         "",
     ]
 
