@@ -29,10 +29,8 @@ lint: $(STAMP)
 	$(BIN)/ruff check .
 	$(BIN)/ruff format --check .
 
-# numba's cache=True does not notice edits to the kernels a cached kernel calls: start tests from a
-# clean cache (the FMUs are unaffected: their cache directory is keyed on the package's content hash)
+# no cache cleaning needed: the numba cache directory is keyed on the kernel sources (bearing_fmu_common/jit.py)
 test: lint fmus
-	find bearing_fmu -name '*.nbi' -delete -o -name '*.nbc' -delete
 	$(BIN)/python -m pytest -q
 
 bench: fmus

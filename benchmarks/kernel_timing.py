@@ -1,5 +1,5 @@
-"""Time per call of each kernel and of the analytic model's full evaluation (SPEC 9; issue 2:
-analytic model full evaluation <= 20 us warm). Medians on this machine, called from Python (so
+"""Time per call of each kernel and of the analytic model's full evaluation (performance budget,
+docs/architecture.md: analytic model full evaluation <= 20 us warm). Medians on this machine, called from Python (so
 each figure includes numba's dispatch overhead, ~0.1-0.3 us).
 Run: python -m benchmarks.kernel_timing -> docs/reports/kernel_timing.md
 """

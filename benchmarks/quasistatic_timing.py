@@ -1,11 +1,12 @@
-"""Time per solve of the quasi-static model (SPEC 9: solve <= 100 us at rest, <= 500 us at 10 000 rpm
-with centrifugal and gyroscopic effects, warm, 9-20 balls; Jacobian <= 50 % extra).
+"""Time per solve of the quasi-static model against the performance budget (docs/architecture.md: solve
+<= 100 us at rest, <= 500 us at 10 000 rpm with centrifugal and gyroscopic effects, warm, 9-20 balls;
+Jacobian <= 50 % extra).
 
 - kernels.jones_harris.solve_quasistatic, cold (d and X zeroed before each call) and warm (d and X
   copied before each call from the solution at a load 1 % different: what a co-simulation step sees);
-- one bearing_loads evaluation (ball equilibria + loads + condensed 5x5 Jacobian: the cost of one
-  Newton iteration) against the same loop without the Jacobian assembly (a copy of bearing_loads
-  written here, see _loads_only);
+- one ring_loads evaluation (ball equilibria + loads + condensed 5x5 Jacobian: the cost of one
+  Newton iteration) against the same evaluation without the Jacobian assembly (jacobian=False), and
+  bearing_loads (ring_loads + the per-ball outputs, which the solver computes once per solve);
 - QuasiStaticModel.evaluate (input checks + solve + film, capacitance, Houpert torque + output dict).
 Kernel figures are medians of 15 batches of a numba loop of N calls divided by N (no Python dispatch);
 the facade figures are medians of 15 batches of Python calls.
@@ -63,51 +64,11 @@ def _repeat_loads(n, d, X0, qs, dPd, omega, X, F, K, balls):
 
 
 @kernel
-def _loads_only(d, qs, dPd, omega, X, F, balls, outputs):
-    """bearing_loads without the stiffness: same ball loop (ball_equilibrium per ball, which keeps its
-    own 2x2 condensation), same load sums, per-ball outputs when `outputs`, no 5x5 K assembly."""
-    Z = int(qs[qk.QS_Z])
-    D = qs[qk.QS_D]
-    dm = qs[qk.QS_DM]
-    A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qk.qs_geometry(qs, dPd)
-    K_s = (qs[qk.QS_K_I] ** (-2.0 / 3.0) + qs[qk.QS_K_O] ** (-2.0 / 3.0)) ** -1.5
-    geo = (r_i, r_o, K_s)
-    kg = np.empty((3, 4))
-    w = np.empty(30)
-    cond = np.empty(14)
-    for i in range(5):
-        F[i] = 0.0
-    worst = 0
-    gp = D / dm
-    race = int(qs[qk.QS_RACE])
-    cen = qs[qk.QS_CENTRIFUGAL] > 0.5 and omega != 0.0
-    gyro = qs[qk.QS_GYROSCOPIC] > 0.5 and omega != 0.0
-    for j in range(Z):
-        psi = 2.0 * math.pi * j / Z
-        cp = math.cos(psi)
-        sp = math.sin(psi)
-        A1 = A1_0 + d[2] + Rr * (d[3] * sp - d[4] * cp)
-        A2 = A2_0 + d[0] * cp + d[1] * sp
-        status = qk.ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond)
-        if status == 2:
-            worst = 2
-        mom = Rr * cond[0] + cond[2]
-        F[0] += cond[1] * cp
-        F[1] += cond[1] * sp
-        F[2] += cond[0]
-        F[3] += mom * sp
-        F[4] -= mom * cp
-        if outputs:
-            qk._ball_outputs(j, cond, X, A1, A2, omega, gp, dm, D, qs, race, cen, gyro, balls)
-    return worst
-
-
-@kernel
-def _repeat_loads_only(n, d, X0, qs, dPd, omega, X, F, balls, outputs):
+def _repeat_ring_loads(n, d, X0, qs, dPd, omega, X, F, K, contact, jacobian):
     s = 0
     for _ in range(n):
         X[:, :] = X0
-        s += _loads_only(d, qs, dPd, omega, X, F, balls, outputs)
+        s += qk.ring_loads(d, qs, dPd, omega, X, F, K, contact, jacobian)
     return s
 
 
@@ -150,23 +111,24 @@ class Case:
         are timed in interleaved batches (machine load drifts) and compared batch by batch."""
         _, X, Fo, K, balls = self.work
         qs, om = self.model.qs, self.omega
-        args = (self.d_sol, self.X_near, qs, 0.0, om, X, Fo)
-        full, no_k, bare, extra = paired_times(
+        contact = np.zeros((qk.CS_SIZE, self.Z))
+        args = (self.d_sol, self.X_near, qs, 0.0, om, X, Fo, K)
+        full, no_k, with_balls, extra = paired_times(
             [
-                lambda: _repeat_loads(N_LOADS, *args, K, balls),
-                lambda: _repeat_loads_only(N_LOADS, *args, balls, True),
-                lambda: _repeat_loads_only(N_LOADS, *args, balls, False),
+                lambda: _repeat_ring_loads(N_LOADS, *args, contact, True),
+                lambda: _repeat_ring_loads(N_LOADS, *args, contact, False),
+                lambda: _repeat_loads(N_LOADS, *args, balls),
             ]
         )
-        full, no_k, bare = full / N_LOADS, no_k / N_LOADS, bare / N_LOADS
-        # same loads from both paths (the copy is faithful)
+        full, no_k, with_balls = full / N_LOADS, no_k / N_LOADS, with_balls / N_LOADS
+        # same loads with and without the Jacobian
         F1, F2 = np.zeros(5), np.zeros(5)
         X[:] = self.X_near
-        qk.bearing_loads(self.d_sol, qs, 0.0, om, X, F1, K, balls)
+        qk.ring_loads(self.d_sol, qs, 0.0, om, X, F1, K, contact, True)
         X[:] = self.X_near
-        _loads_only(self.d_sol, qs, 0.0, om, X, F2, balls, True)
-        assert np.allclose(F1, F2, rtol=1e-14, atol=1e-9), (F1, F2)
-        return full, no_k, bare, extra
+        qk.ring_loads(self.d_sol, qs, 0.0, om, X, F2, K, contact, False)
+        assert np.array_equal(F1, F2), (F1, F2)
+        return full, no_k, with_balls, extra
 
 
 def batch_times(fn, *args, repeats=15):
@@ -295,7 +257,7 @@ def main():
         return max(sel, key=lambda r: r[col][0])
 
     lines += [
-        "## Targets (SPEC 9) against the measured medians",
+        "## Targets (performance budget, docs/architecture.md) against the measured medians",
         "",
         "| target | measured median, worst case of the tables below (minimum of the batches) | median / target |",
         "|---|---|---|",
@@ -326,8 +288,8 @@ def main():
         "- The Jacobian is the Newton matrix of the solve, so exposing it costs nothing extra; the row "
         "above is the measured cost of assembling it inside one load evaluation (section below), worst "
         "case over the table (median of interleaved batch ratios; ratio of the fastest batches in "
-        "brackets). Values within a few % of zero, negative ones included (the copy is compiled on its own "
-        "and can come out slightly slower), are below the resolution of this measurement.",
+        "brackets). Values within a few % of zero, negative ones included, are below the resolution of this "
+        "measurement.",
         "",
     ]
 
@@ -352,22 +314,23 @@ def main():
         "",
         "## Cost of one Newton iteration and of the Jacobian",
         "",
-        "`bearing_loads` = per ball: ball equilibrium (at speed a 2-unknown Newton on the ball position, "
-        "warm from X), ring loads, per-ball outputs, and the condensed 5x5 stiffness. Evaluated at the "
-        "solution d with X copied in from the 1 % neighbour before each call (a Newton iteration near "
-        "convergence). The comparison loop `_loads_only` in this benchmark is a copy of `bearing_loads` "
-        "with the 5x5 K assembly removed (same `ball_equilibrium` calls, same load sums; loads checked "
-        f"equal to 1e-14). The loops are timed in 31 interleaved batches of {N_LOADS} calls; times are the "
-        "batch medians, 'Jacobian extra' the median of the batch-by-batch ratio minus 1 (in brackets: "
-        "ratio of the fastest batches minus 1).",
+        "`ring_loads` = per ball: ball equilibrium (at speed a 2-unknown Newton on the ball position, "
+        "warm from X), ring loads and, with `jacobian`, the condensed 5x5 stiffness: one Newton iteration. "
+        "Evaluated at the solution d with X copied in from the 1 % neighbour before each call (an iteration "
+        "near convergence); the loads with and without the Jacobian are checked bit-identical. "
+        "`bearing_loads` = `ring_loads` with the Jacobian plus the per-ball outputs (kinematics, spin and "
+        "rolling speeds of each ball), which the solver computes once per solve, after convergence. The "
+        f"loops are timed in 31 interleaved batches of {N_LOADS} calls; times are the batch medians, "
+        "'Jacobian extra' the median of the batch-by-batch ratio minus 1 (in brackets: ratio of the fastest "
+        "batches minus 1).",
         "",
-        "| case | bearing_loads (us) | without K assembly (us) | Jacobian extra | also without per-ball outputs (us) |",
+        "| case | ring_loads with K (us) | without K assembly (us) | Jacobian extra | bearing_loads: with K + per-ball outputs (us) |",
         "|---|---|---|---|---|",
     ]
-    for c, full, no_k, bare, extra in loads:
+    for c, full, no_k, with_balls, extra in loads:
         lines.append(
             f"| {c.label} | {full * 1e6:.2f} | {no_k * 1e6:.2f} | {100 * extra[0]:+.1f} % "
-            f"({100 * extra[1]:+.1f} %) | {bare * 1e6:.2f} |"
+            f"({100 * extra[1]:+.1f} %) | {with_balls * 1e6:.2f} |"
         )
     lines += [
         "",
@@ -375,7 +338,8 @@ def main():
         "",
         "- The Newton solver needs K anyway: the global solve is a Newton iteration on the 5 loads with K as "
         "its matrix, so exposing K as an output costs nothing beyond the solve itself (the K of the last "
-        "iteration is the output).",
+        "iteration is the output). With displacement drive there is no Newton matrix and the stiffness "
+        "option adds the assembly (docs/reports/option_cost.md).",
         "- The column 'without K assembly' removes only the 5x5 accumulation per ball. It still contains the "
         "per-ball partials dr/dA, dg/dX, dg/dA and the 2x2 condensation computed inside "
         "`ball_equilibrium`/`_ball_eval` (a few dozen flops per ball on top of a ball Newton that needs "
@@ -385,14 +349,13 @@ def main():
         "- For comparison, a forward-difference Jacobian of the 5 DOFs would need 5 more load "
         "evaluations: about +500 % of the 'without K' time.",
     ]
-    share = [(c, max(0.0, 1.0 - bare / no_k)) for c, full, no_k, bare, extra in loads]  # noise can go < 0
+    share = [(c, max(0.0, with_balls / full - 1.0)) for c, full, no_k, with_balls, extra in loads]  # noise can go < 0
     rest = [x for c, x in share if c.rpm == 0.0]
     speed = [x for c, x in share if c.rpm > 0.0]
     lines += [
-        f"- Not the Jacobian but worth knowing: the per-ball outputs (`_ball_outputs`: kinematics, spin and "
-        f"rolling speeds of each ball) are {100 * min(rest):.0f}-{100 * max(rest):.0f} % of a load evaluation "
-        f"at rest and {100 * min(speed):.0f}-{100 * max(speed):.0f} % at 10 000 rpm; `bearing_loads` computes "
-        "them at every Newton iteration and backtracking step although only the last one is used.",
+        f"- The per-ball outputs would add {100 * min(rest):.0f}-{100 * max(rest):.0f} % to every load evaluation "
+        f"at rest and {100 * min(speed):.0f}-{100 * max(speed):.0f} % at 10 000 rpm; the solver therefore "
+        "computes them once per solve, after convergence, not at every iteration and backtracking step.",
         "",
     ]
 

@@ -1,4 +1,4 @@
-"""Electrical capacitance of lubricated ball-race contacts and of the bearing (SPEC 4.6).
+"""Electrical capacitance of lubricated ball-race contacts and of the bearing (Farah et al.; docs/decisions.md).
 
 Farah et al. (2020), eqs. 8, 10-12: parallel-plate capacitor over the Hertz ellipse,
   C = eps_0 eps_r(p) pi a b / h_c,

@@ -1,4 +1,4 @@
-"""Contact outputs of a quasi-static solution: Hertz, EHL film, regime, capacitance, losses (SPEC 4.4-4.7).
+"""Contact outputs of a quasi-static solution: Hertz, EHL film, regime, capacitance, losses.
 
 Takes the per-ball loads and kinematics of kernels.jones_harris and evaluates every ball-race
 contact. The contact geometry (R_x, R_y, ellipticity, elliptic integrals) is that of the free
@@ -44,7 +44,9 @@ CP_ALPHA_H = 17  # hysteresis loss factor (-)
 CP_F_I = 18  # inner conformity (-)
 CP_F_O = 19
 CP_D = 20  # ball diameter (m)
-CP_SIZE = 21
+CP_CAPACITANCE = 21  # 1 = capacitance submodel on; 0 = null submodel (its slots are not written)
+CP_TORQUE = 22  # 1 = loss (torque and heat) submodel on; 0 = null submodel (its slots are not written)
+CP_SIZE = 23
 
 # layout of the output array
 CO_LAMBDA_I = 0
@@ -65,6 +67,9 @@ CO_P_EHL = 14  # 4 components follow in kernels.torque TL_* order
 CO_ETA = 18
 CO_XI = 19
 CO_SIZE = 20
+# sums started at 0 whatever the options, and those of the loss submodel (with its TL_SIZE components at CO_P_EHL)
+_SUMS = (CO_QMAX_I, CO_QMAX_O, CO_PMAX, CO_N_LOADED)
+_LOSS_SUMS = (CO_Q_INNER_RING, CO_Q_OUTER_RING)
 
 # rows of the per-contact array
 PC_HMIN_I = 0
@@ -85,10 +90,15 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
     omega: inner-ring speed (rad/s); T_oil: oil temperature (K); cp: CP_* array; lub: lubricant
     array; balls: per-ball rows of kernels.jones_harris (BQ_*); out: CO_* outputs (filled);
     per_contact: float64[PC_SIZE, Z] (filled); losses: float64[TL_SIZE] work array.
+    The capacitance and loss submodels run only when cp[CP_CAPACITANCE] / cp[CP_TORQUE] is set; a
+    submodel that is off does none of its work and leaves its slots of out and per_contact untouched
+    (capacitance: CO_C_BEARING, PC_C_*; losses: CO_P_LOSS, CO_Q_*_RING, CO_TORQUE, CO_P_EHL.., PC_P_*).
     """
     Z = balls.shape[1]
+    capacitance = cp[CP_CAPACITANCE] > 0.5
+    torque = cp[CP_TORQUE] > 0.5
     eta, xi, rho0 = lubricant_state(T_oil, lub)
-    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], rho0)
+    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], rho0) if capacitance else 0.0
     E_red = cp[CP_E_RED]
     film = int(cp[CP_FILM])
     lam_i = math.inf
@@ -97,15 +107,20 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
     hmin_o = math.inf
     loaded_i = False
     loaded_o = False
-    for k in range(CO_SIZE):
+    for k in _SUMS:
         out[k] = 0.0
-    out[CO_C_BEARING] = cp[CP_C_BACKGROUND]
+    if torque:
+        for k in _LOSS_SUMS:
+            out[k] = 0.0
+        for t in range(TL_SIZE):
+            out[CO_P_EHL + t] = 0.0
+    if capacitance:
+        out[CO_C_BEARING] = cp[CP_C_BACKGROUND]
     for j in range(Z):
         for race in range(2):
             o = 5 * race  # inner at CP_RX_I.., outer at CP_RX_O..
             Q = balls[BQ_Q_I + race, j]
             u = balls[BQ_U_I, j] if race == 0 else balls[BQ_U_O, j]
-            spin = balls[BQ_SPIN_I, j] if race == 0 else balls[BQ_SPIN_O, j]
             Rx = cp[CP_RX_I + o]
             Ry = cp[CP_RY_I + o]
             k = cp[CP_K_I + o]
@@ -115,42 +130,63 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
             C = 0.0
             P = 0.0
             if Q > 0.0:
-                eps = contact_permittivity(K_cm, rho0, p, int(cp[CP_PRESSURE]))
-                C = contact_capacitance(eps, a, b, hc, cp[CP_H_FLOOR])
-                mu = friction_coefficient(lam)
-                f = cp[CP_F_I + race]
-                P = contact_losses(
-                    Q, u, spin, Rx, Ry, a, b, cp[CP_EE_I + o], f, cp[CP_D], E_red, eta, xi, mu, cp[CP_ALPHA_H], losses
-                )
-                for t in range(TL_SIZE):
-                    out[CO_P_EHL + t] += losses[t]
+                if capacitance:
+                    eps = contact_permittivity(K_cm, rho0, p, int(cp[CP_PRESSURE]))
+                    C = contact_capacitance(eps, a, b, hc, cp[CP_H_FLOOR])
+                if torque:
+                    spin = balls[BQ_SPIN_I, j] if race == 0 else balls[BQ_SPIN_O, j]
+                    mu = friction_coefficient(lam)
+                    f = cp[CP_F_I + race]
+                    P = contact_losses(
+                        Q,
+                        u,
+                        spin,
+                        Rx,
+                        Ry,
+                        a,
+                        b,
+                        cp[CP_EE_I + o],
+                        f,
+                        cp[CP_D],
+                        E_red,
+                        eta,
+                        xi,
+                        mu,
+                        cp[CP_ALPHA_H],
+                        losses,
+                    )
+                    for t in range(TL_SIZE):
+                        out[CO_P_EHL + t] += losses[t]
+                    out[CO_Q_INNER_RING + race] += P
                 out[CO_PMAX] = max(out[CO_PMAX], p)
                 if race == 0:
                     loaded_i = True
                     lam_i = min(lam_i, lam)
                     hmin_i = min(hmin_i, hm)
                     out[CO_QMAX_I] = max(out[CO_QMAX_I], Q)
-                    out[CO_Q_INNER_RING] += P
                 else:
                     loaded_o = True
                     lam_o = min(lam_o, lam)
                     hmin_o = min(hmin_o, hm)
                     out[CO_QMAX_O] = max(out[CO_QMAX_O], Q)
-                    out[CO_Q_OUTER_RING] += P
             per_contact[PC_HMIN_I + race, j] = hm
             per_contact[PC_LAMBDA_I + race, j] = lam
-            per_contact[PC_P_I + race, j] = P
-            per_contact[PC_C_I + race, j] = C
+            if torque:
+                per_contact[PC_P_I + race, j] = P
+            if capacitance:
+                per_contact[PC_C_I + race, j] = C
         if balls[BQ_Q_I, j] > 0.0 and balls[BQ_Q_O, j] > 0.0:
             out[CO_N_LOADED] += 1.0
-        out[CO_C_BEARING] += ball_capacitance(per_contact[PC_C_I, j], per_contact[PC_C_O, j])
+        if capacitance:
+            out[CO_C_BEARING] += ball_capacitance(per_contact[PC_C_I, j], per_contact[PC_C_O, j])
     # a race without any loaded contact reports 0 film (as the analytic fidelity, docs/decisions.md)
     out[CO_LAMBDA_I] = lam_i if loaded_i else 0.0
     out[CO_LAMBDA_O] = lam_o if loaded_o else 0.0
     out[CO_HMIN_I] = hmin_i if loaded_i else 0.0
     out[CO_HMIN_O] = hmin_o if loaded_o else 0.0
     out[CO_REGIME] = lubrication_regime(min(out[CO_LAMBDA_I], out[CO_LAMBDA_O]))
-    out[CO_P_LOSS] = out[CO_Q_INNER_RING] + out[CO_Q_OUTER_RING]
-    out[CO_TORQUE] = out[CO_P_LOSS] / abs(omega) if omega != 0.0 else 0.0
+    if torque:
+        out[CO_P_LOSS] = out[CO_Q_INNER_RING] + out[CO_Q_OUTER_RING]
+        out[CO_TORQUE] = out[CO_P_LOSS] / abs(omega) if omega != 0.0 else 0.0
     out[CO_ETA] = eta
     out[CO_XI] = xi

@@ -1,6 +1,6 @@
 """EHL film thickness, film parameter, lubrication regime, friction coefficient and normal damping.
 
-SPEC 4.4. Dimensionless groups on Rx (Hamrock & Dowson 1977):
+Dimensionless groups on Rx (Hamrock & Dowson 1977):
   U = eta u / (E' Rx),  G = xi E',  W = Q / (E' Rx^2).
 Film formulas (smooth surfaces, isothermal, fully flooded), all as h / Rx:
 - Hamrock & Dowson (1977), ASME J. Lubr. Technol. 99, 264:
@@ -97,8 +97,8 @@ def film_thickness(formula, eta, xi, E_red, u, Q, Rx, Ry, k):
 def film_parameter(h_min, sigma):
     """Film parameter Lambda = h_min / sigma (-); sigma (m) composite roughness.
 
-    No film (h_min = 0) gives 0 (boundary, SPEC 4.4) even on ideally smooth surfaces; a film on
-    ideally smooth surfaces (sigma = 0) gives inf.
+    No film (h_min = 0, e.g. at rest) gives 0 (boundary, no division by zero) even on ideally smooth
+    surfaces; a film on ideally smooth surfaces (sigma = 0) gives inf.
     """
     if h_min <= 0.0:
         return 0.0
@@ -135,7 +135,7 @@ def normal_damping(lam, Q, alpha_e, eta, a_major, R_ball, h_min):
     C_hyst = 1.5 alpha_e K_n delta = 1.5 alpha_e Q (K_n delta is the elastic force Q, N; alpha_e in s/m);
     C_fluid = (3 pi eta a / sqrt 2) (R_b / h_min)^1.5 (a: semi-major axis, m; R_b: ball radius, m).
     Boundary: C_hyst; mixed: series (C_hyst^-1 + C_fluid^-1)^-1 (the text's 'parallel' is its
-    formula's series combination, SPEC 4.10); full film: C_fluid.
+    formula's series combination, docs/decisions.md); full film: C_fluid.
     """
     c_hyst = 1.5 * alpha_e * Q
     regime = lubrication_regime(lam)

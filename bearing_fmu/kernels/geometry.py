@@ -1,4 +1,4 @@
-"""Ball-bearing geometry and pure-rolling kinematics (SPEC 4.1). SI units, angles in rad.
+"""Ball-bearing geometry and pure-rolling kinematics (Harris & Kotzalas 2006, ch. 2). SI units, angles in rad.
 
 Outer ring fixed, inner ring turning at omega (rad/s). gamma = D cos(alpha) / d_m.
 Harris & Kotzalas (2006), Essential Concepts of Bearing Technology, ch. 2 and 8.

@@ -1,6 +1,6 @@
 """Hertz point contact: exact (complete elliptic integrals) and Hamrock-Brewe approximate.
 
-SI units. Conventions (SPEC 4.2):
+SI units. Conventions (Hamrock & Dowson 1981, ch. 3):
 - x is the rolling/entrainment direction, y the transverse one. Rx, Ry are the reduced radii of
   curvature of the gap (1/Rx = 1/R1x + 1/R2x, concave radii negative before reduction).
 - ``k_yx`` = a_y / b_x: semi-axis along y over semi-axis along x (> 1 for a ball-race contact).
@@ -14,7 +14,7 @@ Harris & Kotzalas 2006, ch. 6):
 with R = Rx Ry / (Rx + Ry).  The exact k solves Ry/Rx = (k^2 E - K) / (K - E)
 (Johnson 1985, Contact Mechanics, eqs. 3.63-3.64).  Hamrock & Brewe (1983): k = alpha^(2/pi),
 E = 1 + q/alpha, K = pi/2 + q ln(alpha), q = pi/2 - 1, alpha = Ry/Rx >= 1 (the seeds print
-1 + q ln alpha: a typesetting error, SPEC 4.10).
+1 + q ln alpha: a typesetting error, docs/decisions.md).
 """
 
 import math

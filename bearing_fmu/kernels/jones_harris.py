@@ -1,4 +1,4 @@
-"""Quasi-static 5-DOF ball-bearing model (Jones 1960 / Harris & Kotzalas 2006, SPEC 4.3).
+"""Quasi-static 5-DOF ball-bearing model (Jones 1960 / Harris & Kotzalas 2006; docs/quasistatic.md).
 
 Outer ring fixed, inner ring displaced by d = (x, y, z, theta_x, theta_y) (m, m, m, rad, rad) and
 rotating at omega (rad/s). Ball j sits at azimuth psi_j = 2 pi j / Z from the x axis.
@@ -52,7 +52,8 @@ QS_GYROSCOPIC = 12  # 1 = gyroscopic moment on
 QS_C_HYB = 13  # hybrid law: a_i E_i / (a_o E_o) at equal loads (-), C = this (Q_i/Q_o)^(4/3)
 QS_TOL = 14  # relative tolerance of the global equilibrium (-)
 QS_MAXIT = 15  # iteration cap of the global Newton (-)
-QS_SIZE = 16
+QS_STIFFNESS = 16  # 1 = fill the stiffness output K; 0 = null submodel: K untouched, assembled only as Newton matrix
+QS_SIZE = 17
 
 RACE_OUTER = 0
 RACE_INNER = 1
@@ -83,14 +84,108 @@ BQ_U_I = 14  # rolling (entrainment) speed at the inner contact (m/s)
 BQ_U_O = 15  # rolling (entrainment) speed at the outer contact (m/s)
 BQ_SIZE = 16
 
+# rows of the per-ball contact state that the load evaluation keeps for the per-ball outputs
+CS_Q_I = 0  # inner contact load (N)
+CS_Q_O = 1  # outer contact load (N)
+CS_A_I = 2  # inner contact angle (rad)
+CS_A_O = 3  # outer contact angle (rad)
+CS_C = 4  # hybrid spin-moment ratio (-)
+CS_SIZE = 5
+
 # status codes of the solver
 QS_OK = 0
 QS_NOT_CONVERGED = 1  # iteration cap reached
 QS_BALL_NOT_CONVERGED = 2  # a ball equilibrium failed
 QS_NOT_FINITE = 3  # NaN or inf appeared
 
+# slots of the ball evaluation w (_ball_eval): residual r of the ball's force balance, ring load g and
+# friction couple m_g of the ball on the inner ring, their partial derivatives w.r.t. the ball position X
+# and the curvature-centre offset A (2x2 blocks, row-major), contact loads, angles, hybrid ratio
+EV_R1 = 0  # axial residual (N)
+EV_R2 = 1  # radial residual (N)
+EV_GZ = 2  # axial ring load g_z (N)
+EV_GR = 3  # radial ring load g_r (N)
+EV_MG = 4  # friction couple m_g (N.m)
+EV_DR1_DX1 = 5  # dr/dX (N/m)
+EV_DR1_DX2 = 6
+EV_DR2_DX1 = 7
+EV_DR2_DX2 = 8
+EV_DR1_DA1 = 9  # dr/dA (N/m)
+EV_DR1_DA2 = 10
+EV_DR2_DA1 = 11
+EV_DR2_DA2 = 12
+EV_DGZ_DX1 = 13  # dg/dX (N/m)
+EV_DGZ_DX2 = 14
+EV_DGR_DX1 = 15
+EV_DGR_DX2 = 16
+EV_DGZ_DA1 = 17  # dg/dA (N/m)
+EV_DGZ_DA2 = 18
+EV_DGR_DA1 = 19
+EV_DGR_DA2 = 20
+EV_DM_DX1 = 21  # dm_g/dX (N)
+EV_DM_DX2 = 22
+EV_DM_DA1 = 23  # dm_g/dA (N)
+EV_DM_DA2 = 24
+EV_Q_I = 25  # inner contact load (N)
+EV_Q_O = 26  # outer contact load (N)
+EV_A_I = 27  # inner contact angle (rad)
+EV_A_O = 28  # outer contact angle (rad)
+EV_C = 29  # hybrid spin-moment ratio (-)
+EV_SIZE = 30
+
+# slots of a solved ball (ball_equilibrium's cond): ring load, friction couple and their derivatives
+# w.r.t. A with the ball position condensed out, then the contact state
+BE_GZ = 0  # axial ring load g_z (N)
+BE_GR = 1  # radial ring load g_r (N)
+BE_MG = 2  # friction couple m_g (N.m)
+BE_DGZ_DA1 = 3  # dg/dA (N/m), row-major
+BE_DGZ_DA2 = 4
+BE_DGR_DA1 = 5
+BE_DGR_DA2 = 6
+BE_DM_DA1 = 7  # dm_g/dA (N)
+BE_DM_DA2 = 8
+BE_Q_I = 9  # inner contact load (N)
+BE_Q_O = 10  # outer contact load (N)
+BE_A_I = 11  # inner contact angle (rad)
+BE_A_O = 12  # outer contact angle (rad)
+BE_C = 13  # hybrid spin-moment ratio (-)
+BE_SIZE = 14
+
+# rows and columns of the kinematic partials kg (_kin_grad)
+KG_FC = 0  # centrifugal force F_c (N)
+KG_MGO = 1  # lam_o M_g / D (N)
+KG_MGI = 2  # lam_i M_g / D (N)
+KG_VALUE = 0
+KG_DAI = 1  # d/da_i
+KG_DAO = 2  # d/da_o
+KG_DC = 3  # d/dC
+
 _H_CSTEP = 1e-30  # complex-step increment: exact derivatives, no subtraction error
 _BALL_MAXIT = 60
+
+
+def line_search(residual_at):
+    """The damping of both Newton iterations of this module (ball position, ring displacements): a kernel
+    search(x, step, res, tries, args) -> (lam, residual) that tries x + lam step for lam = 1, 1/2, 1/4, ...
+    (`tries` times) until the residual norm residual_at(x, lam, step, args) falls below res, and takes the
+    full step when none does (a plateau where no contact carries load: the norm is flat there). The
+    evaluation of the returned step is the last one made, so its side effects (work arrays) are current.
+
+    residual_at is a kernel; the search is built once per residual, which it holds as a constant: passed
+    as an argument instead, a kernel would make every caller uncacheable (numba treats it as a dynamic
+    global)."""
+
+    @kernel
+    def search(x, step, res, tries, args):
+        lam = 1.0
+        for _ in range(tries):
+            trial = residual_at(x, lam, step, args)
+            if trial < res:
+                return lam, trial
+            lam *= 0.5
+        return 1.0, residual_at(x, 1.0, step, args)
+
+    return search
 
 
 @kernel
@@ -150,7 +245,7 @@ def kinematics(a_i, a_o, C, omega, gp, dm, D, m_ball, race, centrifugal, gyrosco
         lam_o = 0.0 * one
         lam_i = 2.0 * one
     else:
-        S = (1.0 + gp * co) / (1.0 - gp * ci)  # Rabreau's S with its lost gamma restored (SPEC 4.10)
+        S = (1.0 + gp * co) / (1.0 - gp * ci)  # Rabreau's S with its lost gamma restored (docs/quasistatic.md)
         Ah = gp * C * (cmath.cos(a_i - a_o) - S)
         tan_beta = (C * (S + 1.0) * si + 2.0 * so) / (C * (S + 1.0) * ci + 2.0 * (co + gp) + Ah)
         lam_i = hybrid_inner_share(C, race)
@@ -166,34 +261,35 @@ def kinematics(a_i, a_o, C, omega, gp, dm, D, m_ball, race, centrifugal, gyrosco
 
 @kernel
 def _kin_grad(a_i, a_o, C, omega, gp, dm, D, m_ball, race, cen, gyro, g):
-    """Values and partials of (F_c, Mg_o, Mg_i) w.r.t. (a_i, a_o, C) by complex step into g[3, 4].
+    """Values and partials of (F_c, Mg_o, Mg_i) w.r.t. (a_i, a_o, C) by complex step into g[KG_*, KG_*].
 
-    g[k, 0] value, g[k, 1..3] partial derivatives; k = 0 F_c, 1 Mg_o = lam_o M_g/D, 2 Mg_i.
-    """
+    Rows KG_FC (F_c), KG_MGO (lam_o M_g/D), KG_MGI (lam_i M_g/D); columns KG_VALUE, then the partials
+    KG_DAI, KG_DAO, KG_DC."""
     h = _H_CSTEP
     r = kinematics(complex(a_i, h), complex(a_o, 0.0), complex(C, 0.0), omega, gp, dm, D, m_ball, race, cen, gyro)
     for k in range(3):
-        g[k, 0] = r[k].real
-        g[k, 1] = r[k].imag / h
+        g[k, KG_VALUE] = r[k].real
+        g[k, KG_DAI] = r[k].imag / h
     r = kinematics(complex(a_i, 0.0), complex(a_o, h), complex(C, 0.0), omega, gp, dm, D, m_ball, race, cen, gyro)
     for k in range(3):
-        g[k, 2] = r[k].imag / h
+        g[k, KG_DAO] = r[k].imag / h
     if race >= RACE_HYBRID:
         r = kinematics(complex(a_i, 0.0), complex(a_o, 0.0), complex(C, h), omega, gp, dm, D, m_ball, race, cen, gyro)
         for k in range(3):
-            g[k, 3] = r[k].imag / h
+            g[k, KG_DC] = r[k].imag / h
     else:
         for k in range(3):
-            g[k, 3] = 0.0
+            g[k, KG_DC] = 0.0
 
 
 @kernel
-def _ball_eval(X1, X2, A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb, kg, w):
-    """Ball residual, ring load and their derivatives at ball position X for curvature-centre offset A.
+def _ball_eval(X1, X2, ball, kg, w):
+    """Ball residual, ring load and their derivatives at ball position X = (X1, X2) (m) into w (EV_*).
 
-    Fills w: 0-1 residual r, 2-3 ring load (g_z, g_r), 4 m_g, 5-8 dr/dX (row-major), 9-12 dr/dA,
-    13-16 dg/dX, 17-20 dg/dA, 21-22 dm/dX, 23-24 dm/dA, 25 Q_i, 26 Q_o, 27 a_i, 28 a_o, 29 C.
+    ball = (A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb): the
+    curvature-centre offset A (m) and the ball's constants (ball_equilibrium); kg: float64[3, 4] work.
     """
+    A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb = ball
     L_o = math.hypot(X1, X2)
     so = X1 / L_o
     co = X2 / L_o
@@ -243,22 +339,13 @@ def _ball_eval(X1, X2, A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball
     dC_A1 = dC_Qi * dQi_A1
     dC_A2 = dC_Qi * dQi_A2
     _kin_grad(a_i, a_o, C, omega, gp, dm, D, m_ball, race, cen, gyro, kg)
-    F_c = kg[0, 0]
-    Mgo = kg[1, 0]
-    Mgi = kg[2, 0]
+    F_c = kg[KG_FC, KG_VALUE]
+    Mgo = kg[KG_MGO, KG_VALUE]
+    Mgi = kg[KG_MGI, KG_VALUE]
     # total derivatives of the kinematic terms: d/dX = p_ai (-dai_A) + p_ao dao_X + p_C dC_X
-    dFc_X1 = -kg[0, 1] * dai_A1 + kg[0, 2] * dao_X1 + kg[0, 3] * dC_X1
-    dFc_X2 = -kg[0, 1] * dai_A2 + kg[0, 2] * dao_X2 + kg[0, 3] * dC_X2
-    dFc_A1 = kg[0, 1] * dai_A1 + kg[0, 3] * dC_A1
-    dFc_A2 = kg[0, 1] * dai_A2 + kg[0, 3] * dC_A2
-    dMo_X1 = -kg[1, 1] * dai_A1 + kg[1, 2] * dao_X1 + kg[1, 3] * dC_X1
-    dMo_X2 = -kg[1, 1] * dai_A2 + kg[1, 2] * dao_X2 + kg[1, 3] * dC_X2
-    dMo_A1 = kg[1, 1] * dai_A1 + kg[1, 3] * dC_A1
-    dMo_A2 = kg[1, 1] * dai_A2 + kg[1, 3] * dC_A2
-    dMi_X1 = -kg[2, 1] * dai_A1 + kg[2, 2] * dao_X1 + kg[2, 3] * dC_X1
-    dMi_X2 = -kg[2, 1] * dai_A2 + kg[2, 2] * dao_X2 + kg[2, 3] * dC_X2
-    dMi_A1 = kg[2, 1] * dai_A1 + kg[2, 3] * dC_A1
-    dMi_A2 = kg[2, 1] * dai_A2 + kg[2, 3] * dC_A2
+    dFc_X1, dFc_X2, dFc_A1, dFc_A2 = _chain(kg, KG_FC, dai_A1, dai_A2, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2)
+    dMo_X1, dMo_X2, dMo_A1, dMo_A2 = _chain(kg, KG_MGO, dai_A1, dai_A2, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2)
+    dMi_X1, dMi_X2, dMi_A1, dMi_A2 = _chain(kg, KG_MGI, dai_A1, dai_A2, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2)
     # n = (sin a, cos a), t = (cos a, -sin a); dn/da = t, dt/da = -n
     # ring load g = Q_i n_i - Mgi t_i;  dg = n_i dQ_i + (Q_i t_i + Mgi n_i) da_i - t_i dMgi
     gz = Q_i * si - Mgi * ci
@@ -277,36 +364,51 @@ def _ball_eval(X1, X2, A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball
     # d(-Q_o n_o + Mgo t_o) = -n_o dQ_o - (Q_o t_o + Mgo n_o) da_o + t_o dMgo
     qz = Q_o * co + Mgo * so
     qr = -Q_o * so + Mgo * co
-    w[0] = gz - Q_o * so + Mgo * co
-    w[1] = gr - Q_o * co + F_c - Mgo * so
-    w[5] = dgz_X1 - so * dQo_X1 - qz * dao_X1 + co * dMo_X1
-    w[6] = dgz_X2 - so * dQo_X2 - qz * dao_X2 + co * dMo_X2
-    w[7] = dgr_X1 - co * dQo_X1 - qr * dao_X1 - so * dMo_X1 + dFc_X1
-    w[8] = dgr_X2 - co * dQo_X2 - qr * dao_X2 - so * dMo_X2 + dFc_X2
-    w[9] = dgz_A1 + co * dMo_A1
-    w[10] = dgz_A2 + co * dMo_A2
-    w[11] = dgr_A1 - so * dMo_A1 + dFc_A1
-    w[12] = dgr_A2 - so * dMo_A2 + dFc_A2
-    w[2] = gz
-    w[3] = gr
-    w[4] = f_i * D * Mgi
-    w[13] = dgz_X1
-    w[14] = dgz_X2
-    w[15] = dgr_X1
-    w[16] = dgr_X2
-    w[17] = dgz_A1
-    w[18] = dgz_A2
-    w[19] = dgr_A1
-    w[20] = dgr_A2
-    w[21] = f_i * D * dMi_X1
-    w[22] = f_i * D * dMi_X2
-    w[23] = f_i * D * dMi_A1
-    w[24] = f_i * D * dMi_A2
-    w[25] = Q_i
-    w[26] = Q_o
-    w[27] = a_i
-    w[28] = a_o
-    w[29] = C
+    w[EV_R1] = gz - Q_o * so + Mgo * co
+    w[EV_R2] = gr - Q_o * co + F_c - Mgo * so
+    w[EV_DR1_DX1] = dgz_X1 - so * dQo_X1 - qz * dao_X1 + co * dMo_X1
+    w[EV_DR1_DX2] = dgz_X2 - so * dQo_X2 - qz * dao_X2 + co * dMo_X2
+    w[EV_DR2_DX1] = dgr_X1 - co * dQo_X1 - qr * dao_X1 - so * dMo_X1 + dFc_X1
+    w[EV_DR2_DX2] = dgr_X2 - co * dQo_X2 - qr * dao_X2 - so * dMo_X2 + dFc_X2
+    w[EV_DR1_DA1] = dgz_A1 + co * dMo_A1
+    w[EV_DR1_DA2] = dgz_A2 + co * dMo_A2
+    w[EV_DR2_DA1] = dgr_A1 - so * dMo_A1 + dFc_A1
+    w[EV_DR2_DA2] = dgr_A2 - so * dMo_A2 + dFc_A2
+    w[EV_GZ] = gz
+    w[EV_GR] = gr
+    w[EV_MG] = f_i * D * Mgi
+    w[EV_DGZ_DX1] = dgz_X1
+    w[EV_DGZ_DX2] = dgz_X2
+    w[EV_DGR_DX1] = dgr_X1
+    w[EV_DGR_DX2] = dgr_X2
+    w[EV_DGZ_DA1] = dgz_A1
+    w[EV_DGZ_DA2] = dgz_A2
+    w[EV_DGR_DA1] = dgr_A1
+    w[EV_DGR_DA2] = dgr_A2
+    w[EV_DM_DX1] = f_i * D * dMi_X1
+    w[EV_DM_DX2] = f_i * D * dMi_X2
+    w[EV_DM_DA1] = f_i * D * dMi_A1
+    w[EV_DM_DA2] = f_i * D * dMi_A2
+    w[EV_Q_I] = Q_i
+    w[EV_Q_O] = Q_o
+    w[EV_A_I] = a_i
+    w[EV_A_O] = a_o
+    w[EV_C] = C
+
+
+@kernel(inline="always")
+def _chain(kg, row, dai_A1, dai_A2, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2):
+    """Total derivatives (d/dX1, d/dX2, d/dA1, d/dA2) of the kinematic term kg[row] through a_i, a_o and C
+    (a_i depends on A - X, so its X-derivative is minus its A-derivative; a_o depends on X only)."""
+    p_ai = kg[row, KG_DAI]
+    p_ao = kg[row, KG_DAO]
+    p_C = kg[row, KG_DC]
+    return (
+        -p_ai * dai_A1 + p_ao * dao_X1 + p_C * dC_X1,
+        -p_ai * dai_A2 + p_ao * dao_X2 + p_C * dC_X2,
+        p_ai * dai_A1 + p_C * dC_A1,
+        p_ai * dai_A2 + p_C * dC_A2,
+    )
 
 
 @kernel
@@ -314,187 +416,165 @@ def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond):
     """Solve one ball's equilibrium for curvature-centre offset (A1, A2) (m); warm start from X[:, j].
 
     geo = (r_i, r_o, K_series) with K_series the Hertz constant of both contacts in series.
-    Fills X[:, j] and cond: 0-1 ring load (g_z, g_r) (N), 2 m_g (N.m), 3-6 dg/dA (2x2, N/m),
-    7-8 dm/dA (N), 9 Q_i, 10 Q_o (N), 11 a_i, 12 a_o (rad), 13 C (-).
+    Fills X[:, j] and cond (BE_*): ring load, friction couple, their derivatives w.r.t. A with the ball
+    position condensed, contact loads, angles and the hybrid ratio; kg, w: work arrays of _ball_eval.
     Returns 0 (converged), 1 (unloaded ball), 2 (not converged).
     """
-    r_i = geo[0]
-    r_o = geo[1]
-    K_s = geo[2]
-    D = qs[QS_D]
-    dm = qs[QS_DM]
-    K_i = qs[QS_K_I]
-    K_o = qs[QS_K_O]
-    race = int(qs[QS_RACE])
+    r_i, r_o, K_s = geo
     cen = qs[QS_CENTRIFUGAL] > 0.5 and omega != 0.0
     gyro = qs[QS_GYROSCOPIC] > 0.5 and omega != 0.0
+    for k in range(BE_SIZE):
+        cond[k] = 0.0
+    if not (cen or gyro):
+        return _static_ball(A1, A2, X, j, r_i, r_o, K_s, qs[QS_K_I], qs[QS_K_O], cond)
+    F_c0 = 0.0
+    if cen:
+        dm = qs[QS_DM]
+        F_c0 = 0.5 * qs[QS_M_BALL] * dm * (0.5 * omega * (1.0 - qs[QS_D] / dm)) ** 2  # for the start only
+    if math.hypot(A1, A2) - r_i - r_o <= 0.0 and F_c0 <= 0.0:
+        return _unloaded_ball(A1, A2, X, j, r_o, cond)
+    x = X[:, j]  # the Newton iterates in place: X[:, j] is the start and the solution
+    _ball_start(A1, A2, x, r_i, r_o, qs[QS_K_I], qs[QS_K_O], F_c0)
+    D = qs[QS_D]
+    dm = qs[QS_DM]
+    ball = (A1, A2, r_i, r_o, qs[QS_K_I], qs[QS_K_O], qs[QS_FI], omega, D / dm, dm, D, qs[QS_M_BALL],
+            int(qs[QS_RACE]), cen, gyro, qs[QS_C_HYB])  # fmt: skip
+    status = _ball_newton(x, ball, F_c0, kg, w)
+    if not _condense(w, cond):
+        return 2
+    if w[EV_Q_I] <= 0.0 and w[EV_Q_O] <= 0.0:
+        return 1
+    return status
+
+
+@kernel
+def _unloaded_ball(A1, A2, X, j, r_o, cond):
+    """A ball touching neither race: resting on the outer groove along the line of centres; returns 1."""
+    L = math.hypot(A1, A2)
+    X[0, j] = A1 / L * r_o
+    X[1, j] = A2 / L * r_o
+    cond[BE_A_I] = math.atan2(A1, A2)
+    cond[BE_A_O] = cond[BE_A_I]
+    return 1
+
+
+@kernel
+def _static_ball(A1, A2, X, j, r_i, r_o, K_s, K_i, K_o, cond):
+    """Ball at rest (no centrifugal force, no gyroscopic moment): both contacts in series along the line
+    of centres, an exact closed form; fills X[:, j] and cond as ball_equilibrium. Returns 0 or 1 (unloaded)."""
     L = math.hypot(A1, A2)
     n1 = A1 / L
     n2 = A2 / L
     delta = L - r_i - r_o
-    for k in range(14):
-        cond[k] = 0.0
-    if not (cen or gyro):
-        # static: contacts in series along the line of centres (exact closed form)
-        if delta <= 0.0:
-            X[0, j] = n1 * r_o
-            X[1, j] = n2 * r_o
-            cond[11] = math.atan2(A1, A2)
-            cond[12] = cond[11]
-            return 1
-        sq = math.sqrt(delta)
-        Q = K_s * delta * sq
-        dQ = 1.5 * K_s * sq
-        d_o = delta / (1.0 + (K_o / K_i) ** (2.0 / 3.0))
-        X[0, j] = n1 * (r_o + d_o)
-        X[1, j] = n2 * (r_o + d_o)
-        geo_t = Q / L
-        cond[0] = Q * n1
-        cond[1] = Q * n2
-        cond[3] = dQ * n1 * n1 + geo_t * (1.0 - n1 * n1)
-        cond[4] = (dQ - geo_t) * n1 * n2
-        cond[5] = cond[4]
-        cond[6] = dQ * n2 * n2 + geo_t * (1.0 - n2 * n2)
-        cond[9] = Q
-        cond[10] = Q
-        cond[11] = math.atan2(A1, A2)
-        cond[12] = cond[11]
-        return 0
-    F_c0 = 0.0
-    if cen:
-        F_c0 = 0.5 * qs[QS_M_BALL] * dm * (0.5 * omega * (1.0 - D / dm)) ** 2  # for the start only
-    if delta <= 0.0 and F_c0 <= 0.0:
-        X[0, j] = n1 * r_o
-        X[1, j] = n2 * r_o
-        cond[11] = math.atan2(A1, A2)
-        cond[12] = cond[11]
-        return 1
-    x1 = X[0, j]
-    x2 = X[1, j]
-    if not (x2 > 0.0 and math.hypot(x1, x2) > 0.5 * r_o):
-        # cold start: static split of the approach, or the ball resting on the outer race
-        if delta > 0.0:
-            d_o = delta / (1.0 + (K_o / K_i) ** (2.0 / 3.0)) + (F_c0 / K_o) ** (2.0 / 3.0)
-            x1 = n1 * (r_o + d_o)
-            x2 = n2 * (r_o + d_o)
-        else:
-            x1 = 0.0
-            x2 = r_o + (F_c0 / K_o) ** (2.0 / 3.0)
-    f_i = qs[QS_FI]
-    gp = D / dm
-    m_ball = qs[QS_M_BALL]
-    c_hyb = qs[QS_C_HYB]
-    status = 2
-    _ball_eval(x1, x2, A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb, kg, w)
-    res = math.hypot(w[0], w[1])
+    if delta <= 0.0:
+        return _unloaded_ball(A1, A2, X, j, r_o, cond)
+    sq = math.sqrt(delta)
+    Q = K_s * delta * sq
+    dQ = 1.5 * K_s * sq
+    d_o = delta / (1.0 + (K_o / K_i) ** (2.0 / 3.0))
+    X[0, j] = n1 * (r_o + d_o)
+    X[1, j] = n2 * (r_o + d_o)
+    geo_t = Q / L
+    cond[BE_GZ] = Q * n1
+    cond[BE_GR] = Q * n2
+    cond[BE_DGZ_DA1] = dQ * n1 * n1 + geo_t * (1.0 - n1 * n1)
+    cond[BE_DGZ_DA2] = (dQ - geo_t) * n1 * n2
+    cond[BE_DGR_DA1] = cond[BE_DGZ_DA2]
+    cond[BE_DGR_DA2] = dQ * n2 * n2 + geo_t * (1.0 - n2 * n2)
+    cond[BE_Q_I] = Q
+    cond[BE_Q_O] = Q
+    cond[BE_A_I] = math.atan2(A1, A2)
+    cond[BE_A_O] = cond[BE_A_I]
+    return 0
+
+
+@kernel
+def _ball_start(A1, A2, x, r_i, r_o, K_i, K_o, F_c0):
+    """Start of the ball Newton in x (2, m): kept when it is a plausible ball position (warm start), else
+    the static split of the approach plus the centrifugal outer deflection, or the ball resting on the
+    outer race under the centrifugal force F_c0 (N)."""
+    if x[1] > 0.0 and math.hypot(x[0], x[1]) > 0.5 * r_o:
+        return
+    L = math.hypot(A1, A2)
+    delta = L - r_i - r_o
+    if delta > 0.0:
+        d_o = delta / (1.0 + (K_o / K_i) ** (2.0 / 3.0)) + (F_c0 / K_o) ** (2.0 / 3.0)
+        x[0] = A1 / L * (r_o + d_o)
+        x[1] = A2 / L * (r_o + d_o)
+    else:
+        x[0] = 0.0
+        x[1] = r_o + (F_c0 / K_o) ** (2.0 / 3.0)
+
+
+@kernel
+def _ball_residual_at(x, lam, step, args):
+    """Evaluate the ball at x + lam step (m) into its work array; returns the residual norm (N)."""
+    ball, kg, w = args
+    _ball_eval(x[0] + lam * step[0], x[1] + lam * step[1], ball, kg, w)
+    return math.hypot(w[EV_R1], w[EV_R2])
+
+
+@kernel
+def _ball_newton(x, ball, F_c0, kg, w):
+    """Damped Newton on the ball position x (2, m, updated in place) from its start; w holds the
+    evaluation at the final x. Returns 0 (converged) or 2 (not converged: iteration cap or singular dr/dX)."""
+    r_i, r_o, D = ball[2], ball[3], ball[10]  # layout of `ball`: _ball_eval
+    _ball_eval(x[0], x[1], ball, kg, w)
+    res = math.hypot(w[EV_R1], w[EV_R2])
     for _ in range(_BALL_MAXIT):
-        scale = w[25] + w[26] + abs(F_c0) + 1e-300
+        scale = w[EV_Q_I] + w[EV_Q_O] + abs(F_c0) + 1e-300
         if res <= 1e-13 * scale:
-            status = 0
-            break
-        det = w[5] * w[8] - w[6] * w[7]
+            return 0
+        det = w[EV_DR1_DX1] * w[EV_DR2_DX2] - w[EV_DR1_DX2] * w[EV_DR2_DX1]
         if det == 0.0 or not math.isfinite(det):
-            break
-        s1 = -(w[8] * w[0] - w[6] * w[1]) / det
-        s2 = -(-w[7] * w[0] + w[5] * w[1]) / det
-        # cap the step at a tenth of the groove clearance, then backtrack on the residual norm
+            return 2
+        s1 = -(w[EV_DR2_DX2] * w[EV_R1] - w[EV_DR1_DX2] * w[EV_R2]) / det
+        s2 = -(-w[EV_DR2_DX1] * w[EV_R1] + w[EV_DR1_DX1] * w[EV_R2]) / det
+        # cap the step at a tenth of the groove clearance
         cap = 0.1 * (r_i + r_o)
         norm = math.hypot(s1, s2)
         if norm > cap:
             s1 *= cap / norm
             s2 *= cap / norm
         if norm < 1e-15 * D:
-            status = 0
-            break
-        lam = 1.0
-        accepted = False
-        for _ in range(30):
-            _ball_eval(
-                x1 + lam * s1,
-                x2 + lam * s2,
-                A1,
-                A2,
-                r_i,
-                r_o,
-                K_i,
-                K_o,
-                f_i,
-                omega,
-                gp,
-                dm,
-                D,
-                m_ball,
-                race,
-                cen,
-                gyro,
-                c_hyb,
-                kg,
-                w,
-            )
-            trial = math.hypot(w[0], w[1])
-            if trial < res:
-                accepted = True
-                break
-            lam *= 0.5
-        if not accepted:  # take the full step: leaves a plateau (no contact) where the norm is flat
-            lam = 1.0
-            _ball_eval(
-                x1 + s1,
-                x2 + s2,
-                A1,
-                A2,
-                r_i,
-                r_o,
-                K_i,
-                K_o,
-                f_i,
-                omega,
-                gp,
-                dm,
-                D,
-                m_ball,
-                race,
-                cen,
-                gyro,
-                c_hyb,
-                kg,
-                w,
-            )
-            trial = math.hypot(w[0], w[1])
-        x1 += lam * s1
-        x2 += lam * s2
-        res = trial
-    X[0, j] = x1
-    X[1, j] = x2
-    # condensation: dX/dA = -(dr/dX)^-1 dr/dA ; total dg/dA = dg/dA + dg/dX dX/dA
-    det = w[5] * w[8] - w[6] * w[7]
+            return 0
+        lam, res = _ball_line_search(x, (s1, s2), res, 30, (ball, kg, w))
+        x[0] += lam * s1
+        x[1] += lam * s2
+    return 2
+
+
+@kernel
+def _condense(w, cond):
+    """Ball position condensed out of the derivatives at the evaluation w: dX/dA = -(dr/dX)^-1 dr/dA and
+    the total dg/dA = dg/dA + dg/dX dX/dA (likewise dm/dA) into cond, with the loads and angles.
+    Returns False when dr/dX is singular."""
+    det = w[EV_DR1_DX1] * w[EV_DR2_DX2] - w[EV_DR1_DX2] * w[EV_DR2_DX1]
     if det == 0.0 or not math.isfinite(det):
-        return 2
-    i00 = w[8] / det
-    i01 = -w[6] / det
-    i10 = -w[7] / det
-    i11 = w[5] / det
-    x_a00 = -(i00 * w[9] + i01 * w[11])
-    x_a01 = -(i00 * w[10] + i01 * w[12])
-    x_a10 = -(i10 * w[9] + i11 * w[11])
-    x_a11 = -(i10 * w[10] + i11 * w[12])
-    cond[0] = w[2]
-    cond[1] = w[3]
-    cond[2] = w[4]
-    cond[3] = w[17] + w[13] * x_a00 + w[14] * x_a10
-    cond[4] = w[18] + w[13] * x_a01 + w[14] * x_a11
-    cond[5] = w[19] + w[15] * x_a00 + w[16] * x_a10
-    cond[6] = w[20] + w[15] * x_a01 + w[16] * x_a11
-    cond[7] = w[23] + w[21] * x_a00 + w[22] * x_a10
-    cond[8] = w[24] + w[21] * x_a01 + w[22] * x_a11
-    cond[9] = w[25]
-    cond[10] = w[26]
-    cond[11] = w[27]
-    cond[12] = w[28]
-    cond[13] = w[29]
-    if w[25] <= 0.0 and w[26] <= 0.0:
-        return 1
-    return status
+        return False
+    i00 = w[EV_DR2_DX2] / det
+    i01 = -w[EV_DR1_DX2] / det
+    i10 = -w[EV_DR2_DX1] / det
+    i11 = w[EV_DR1_DX1] / det
+    x_a00 = -(i00 * w[EV_DR1_DA1] + i01 * w[EV_DR2_DA1])
+    x_a01 = -(i00 * w[EV_DR1_DA2] + i01 * w[EV_DR2_DA2])
+    x_a10 = -(i10 * w[EV_DR1_DA1] + i11 * w[EV_DR2_DA1])
+    x_a11 = -(i10 * w[EV_DR1_DA2] + i11 * w[EV_DR2_DA2])
+    cond[BE_GZ] = w[EV_GZ]
+    cond[BE_GR] = w[EV_GR]
+    cond[BE_MG] = w[EV_MG]
+    cond[BE_DGZ_DA1] = w[EV_DGZ_DA1] + w[EV_DGZ_DX1] * x_a00 + w[EV_DGZ_DX2] * x_a10
+    cond[BE_DGZ_DA2] = w[EV_DGZ_DA2] + w[EV_DGZ_DX1] * x_a01 + w[EV_DGZ_DX2] * x_a11
+    cond[BE_DGR_DA1] = w[EV_DGR_DA1] + w[EV_DGR_DX1] * x_a00 + w[EV_DGR_DX2] * x_a10
+    cond[BE_DGR_DA2] = w[EV_DGR_DA2] + w[EV_DGR_DX1] * x_a01 + w[EV_DGR_DX2] * x_a11
+    cond[BE_DM_DA1] = w[EV_DM_DA1] + w[EV_DM_DX1] * x_a00 + w[EV_DM_DX2] * x_a10
+    cond[BE_DM_DA2] = w[EV_DM_DA2] + w[EV_DM_DX1] * x_a01 + w[EV_DM_DX2] * x_a11
+    cond[BE_Q_I] = w[EV_Q_I]
+    cond[BE_Q_O] = w[EV_Q_O]
+    cond[BE_A_I] = w[EV_A_I]
+    cond[BE_A_O] = w[EV_A_O]
+    cond[BE_C] = w[EV_C]
+    return True
 
 
 @kernel
@@ -505,24 +585,35 @@ def bearing_loads(d, qs, dPd, omega, X, F, K, balls):
     X (2, Z): ball positions, used as warm start and updated; balls (BQ_SIZE, Z): per-ball outputs.
     Returns the worst ball status (0 all converged or unloaded, 2 a ball did not converge).
     """
+    contact = np.empty((CS_SIZE, int(qs[QS_Z])))
+    worst = ring_loads(d, qs, dPd, omega, X, F, K, contact, True)
+    ball_outputs(omega, qs, X, contact, balls)
+    return worst
+
+
+@kernel
+def ring_loads(d, qs, dPd, omega, X, F, K, contact, jacobian):
+    """Loads F (5, N and N.m) on the inner ring at displacements d (5, m and rad), and K = dF/dd (5x5)
+    when `jacobian` (otherwise K is not touched); clearance change dPd (m), speed omega (rad/s).
+
+    X (2, Z): ball positions, warm start and updated; contact (CS_SIZE, Z): per-ball contact state
+    (filled), from which ball_outputs derives the per-ball outputs once the solve has converged.
+    Returns the worst ball status (0 all converged or unloaded, 2 a ball did not converge).
+    """
     Z = int(qs[QS_Z])
-    D = qs[QS_D]
-    dm = qs[QS_DM]
     A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
     K_s = (qs[QS_K_I] ** (-2.0 / 3.0) + qs[QS_K_O] ** (-2.0 / 3.0)) ** -1.5
     geo = (r_i, r_o, K_s)
     kg = np.empty((3, 4))
-    w = np.empty(30)
-    cond = np.empty(14)
+    w = np.empty(EV_SIZE)
+    cond = np.empty(BE_SIZE)
     for i in range(5):
         F[i] = 0.0
-        for k in range(5):
-            K[i, k] = 0.0
+    if jacobian:
+        for i in range(5):
+            for k in range(5):
+                K[i, k] = 0.0
     worst = 0
-    gp = D / dm
-    race = int(qs[QS_RACE])
-    cen = qs[QS_CENTRIFUGAL] > 0.5 and omega != 0.0
-    gyro = qs[QS_GYROSCOPIC] > 0.5 and omega != 0.0
     for j in range(Z):
         psi = 2.0 * math.pi * j / Z
         cp = math.cos(psi)
@@ -532,64 +623,77 @@ def bearing_loads(d, qs, dPd, omega, X, F, K, balls):
         status = ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond)
         if status == 2:
             worst = 2
-        gz = cond[0]
-        gr = cond[1]
-        mg = cond[2]
-        # T = dA/dd: rows A1 -> (0, 0, 1, Rr sp, -Rr cp), A2 -> (cp, sp, 0, 0, 0)
-        t1 = (0.0, 0.0, 1.0, Rr * sp, -Rr * cp)
-        t2 = (cp, sp, 0.0, 0.0, 0.0)
-        em = (0.0, 0.0, 0.0, sp, -cp)
+        gz = cond[BE_GZ]
+        gr = cond[BE_GR]
+        mg = cond[BE_MG]
         mom = Rr * gz + mg
         F[0] += gr * cp
         F[1] += gr * sp
         F[2] += gz
         F[3] += mom * sp
         F[4] -= mom * cp
-        # dF/dd = T^T (dg/dA) T + e_m (dm/dA) T
-        for a in range(5):
-            row_z = cond[3] * t1[a] + cond[4] * t2[a]  # d g_z / dd_a
-            row_r = cond[5] * t1[a] + cond[6] * t2[a]  # d g_r / dd_a
-            row_m = cond[7] * t1[a] + cond[8] * t2[a]  # d m_g / dd_a
-            for i in range(5):
-                K[i, a] += t1[i] * row_z + t2[i] * row_r + em[i] * row_m
-        _ball_outputs(j, cond, X, A1, A2, omega, gp, dm, D, qs, race, cen, gyro, balls)
+        if jacobian:
+            # T = dA/dd: rows A1 -> (0, 0, 1, Rr sp, -Rr cp), A2 -> (cp, sp, 0, 0, 0)
+            t1 = (0.0, 0.0, 1.0, Rr * sp, -Rr * cp)
+            t2 = (cp, sp, 0.0, 0.0, 0.0)
+            em = (0.0, 0.0, 0.0, sp, -cp)
+            # dF/dd = T^T (dg/dA) T + e_m (dm/dA) T
+            for a in range(5):
+                row_z = cond[BE_DGZ_DA1] * t1[a] + cond[BE_DGZ_DA2] * t2[a]  # d g_z / dd_a
+                row_r = cond[BE_DGR_DA1] * t1[a] + cond[BE_DGR_DA2] * t2[a]  # d g_r / dd_a
+                row_m = cond[BE_DM_DA1] * t1[a] + cond[BE_DM_DA2] * t2[a]  # d m_g / dd_a
+                for i in range(5):
+                    K[i, a] += t1[i] * row_z + t2[i] * row_r + em[i] * row_m
+        contact[CS_Q_I, j] = cond[BE_Q_I]
+        contact[CS_Q_O, j] = cond[BE_Q_O]
+        contact[CS_A_I, j] = cond[BE_A_I]
+        contact[CS_A_O, j] = cond[BE_A_O]
+        contact[CS_C, j] = cond[BE_C]
     return worst
 
 
 @kernel
-def _ball_outputs(j, cond, X, A1, A2, omega, gp, dm, D, qs, race, cen, gyro, balls):
-    """Per-ball loads, angles and kinematics (spin and rolling speeds at both contacts)."""
-    a_i = cond[11]
-    a_o = cond[12]
-    C = cond[13]
-    F_c, Mgo, Mgi, w_m, w_R, beta = kinematics(
-        complex(a_i, 0.0), complex(a_o, 0.0), complex(C, 0.0), omega, gp, dm, D, qs[QS_M_BALL], race, cen, gyro
-    )
-    w_m = w_m.real
-    w_R = w_R.real
-    beta = beta.real
-    balls[BQ_Q_I, j] = cond[9]
-    balls[BQ_Q_O, j] = cond[10]
-    balls[BQ_A_I, j] = a_i
-    balls[BQ_A_O, j] = a_o
-    balls[BQ_BETA, j] = beta
-    balls[BQ_W_M, j] = w_m
-    balls[BQ_W_R, j] = w_R
-    balls[BQ_F_C, j] = F_c.real
-    balls[BQ_M_G, j] = (Mgo.real + Mgi.real) * D * 0.5  # lam_o + lam_i = 2
-    balls[BQ_X1, j] = X[0, j]
-    balls[BQ_X2, j] = X[1, j]
-    lam_i = 0.0
-    if race == RACE_INNER:
-        lam_i = 2.0
-    elif race >= RACE_HYBRID:
-        lam_i = hybrid_inner_share(C, race)
-    balls[BQ_LAM_I, j] = lam_i
-    # spin = (ball - race) angular velocity along the contact normal, in the cage frame (docs/quasistatic.md)
-    balls[BQ_SPIN_O, j] = w_R * math.sin(a_o - beta) + w_m * math.sin(a_o)
-    balls[BQ_SPIN_I, j] = -w_R * math.sin(a_i - beta) + (omega - w_m) * math.sin(a_i)
-    balls[BQ_U_O, j] = abs(w_m) * 0.5 * dm * (1.0 + gp * math.cos(a_o))
-    balls[BQ_U_I, j] = abs(omega - w_m) * 0.5 * dm * (1.0 - gp * math.cos(a_i))
+def ball_outputs(omega, qs, X, contact, balls):
+    """Per-ball loads, angles and kinematics (spin and rolling speeds at both contacts) from the
+    contact state of ring_loads and the ball positions X (m) at speed omega (rad/s); fills balls."""
+    D = qs[QS_D]
+    dm = qs[QS_DM]
+    gp = D / dm
+    race = int(qs[QS_RACE])
+    cen = qs[QS_CENTRIFUGAL] > 0.5 and omega != 0.0
+    gyro = qs[QS_GYROSCOPIC] > 0.5 and omega != 0.0
+    for j in range(contact.shape[1]):
+        a_i = contact[CS_A_I, j]
+        a_o = contact[CS_A_O, j]
+        C = contact[CS_C, j]
+        F_c, Mgo, Mgi, w_m, w_R, beta = kinematics(
+            complex(a_i, 0.0), complex(a_o, 0.0), complex(C, 0.0), omega, gp, dm, D, qs[QS_M_BALL], race, cen, gyro
+        )
+        w_m = w_m.real
+        w_R = w_R.real
+        beta = beta.real
+        balls[BQ_Q_I, j] = contact[CS_Q_I, j]
+        balls[BQ_Q_O, j] = contact[CS_Q_O, j]
+        balls[BQ_A_I, j] = a_i
+        balls[BQ_A_O, j] = a_o
+        balls[BQ_BETA, j] = beta
+        balls[BQ_W_M, j] = w_m
+        balls[BQ_W_R, j] = w_R
+        balls[BQ_F_C, j] = F_c.real
+        balls[BQ_M_G, j] = (Mgo.real + Mgi.real) * D * 0.5  # lam_o + lam_i = 2
+        balls[BQ_X1, j] = X[0, j]
+        balls[BQ_X2, j] = X[1, j]
+        lam_i = 0.0
+        if race == RACE_INNER:
+            lam_i = 2.0
+        elif race >= RACE_HYBRID:
+            lam_i = hybrid_inner_share(C, race)
+        balls[BQ_LAM_I, j] = lam_i
+        # spin = (ball - race) angular velocity along the contact normal, in the cage frame (docs/quasistatic.md)
+        balls[BQ_SPIN_O, j] = w_R * math.sin(a_o - beta) + w_m * math.sin(a_o)
+        balls[BQ_SPIN_I, j] = -w_R * math.sin(a_i - beta) + (omega - w_m) * math.sin(a_i)
+        balls[BQ_U_O, j] = abs(w_m) * 0.5 * dm * (1.0 + gp * math.cos(a_o))
+        balls[BQ_U_I, j] = abs(omega - w_m) * 0.5 * dm * (1.0 - gp * math.cos(a_i))
 
 
 @kernel
@@ -633,19 +737,37 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
 
     F_applied (5): loads (N, N.m) on the load-controlled DOFs; control (5): 1 = load-controlled,
     0 = displacement-controlled (d holds the imposed value); d (5, m and rad): warm start, solution
-    on return. F, K, X, balls as in bearing_loads (F = reactions at the solution).
+    on return; F: reactions at the solution (N, N.m); X (2, Z): ball positions (m), warm start and
+    solution. Filled once, at the solution: balls (BQ_SIZE, Z) per-ball outputs, and K (5x5) the
+    stiffness dF/dd when qs[QS_STIFFNESS] is set (otherwise K is not touched).
     Returns (status, iterations, residual): status QS_* code, residual = max scaled load error (N).
     """
-    A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
-    tol = qs[QS_TOL]
-    maxit = int(qs[QS_MAXIT])
-    scale = np.array([1.0, 1.0, 1.0, Rr, Rr])  # rotations as arc lengths at Rr, moments as forces
     idx = np.empty(5, np.int64)
     n = 0
     for i in range(5):
         if control[i] > 0.5:
             idx[n] = i
             n += 1
+    stiffness = qs[QS_STIFFNESS] > 0.5
+    J = np.empty((5, 5))  # Newton matrix: the stiffness of the current iterate
+    contact = np.empty((CS_SIZE, int(qs[QS_Z])))
+    status, it, res = _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, stiffness or n > 0)
+    ball_outputs(omega, qs, X, contact, balls)
+    if stiffness:
+        K[:, :] = J
+    return status, it, res
+
+
+@kernel
+def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacobian):
+    """Damped Newton on the loads of the n load-controlled DOFs idx[:n] (solve_quasistatic's loop).
+
+    J (5x5) is assembled at every evaluation when `jacobian` (needed whenever n > 0); the last
+    evaluation is always that of the returned d, so F, J, contact and X belong to the solution."""
+    A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
+    tol = qs[QS_TOL]
+    maxit = int(qs[QS_MAXIT])
+    scale = np.array([1.0, 1.0, 1.0, Rr, Rr])  # rotations as arc lengths at Rr, moments as forces
     K_s = (qs[QS_K_I] ** (-2.0 / 3.0) + qs[QS_K_O] ** (-2.0 / 3.0)) ** -1.5
     k_floor = 1e-6 * K_s * math.sqrt(1e-3 * qs[QS_D])  # regularises a bearing with no loaded ball
     step_cap = 0.05 * A
@@ -655,7 +777,9 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
     step = np.empty(5)
     d_try = np.empty(5)
     X_try = X.copy()
-    ball_status = bearing_loads(d, qs, dPd, omega, X, F, K, balls)
+    status = np.zeros(1, np.int64)  # worst ball status of the last evaluation
+    loads = (F_applied, idx, n, scale, qs, dPd, omega, X, X_try, d_try, F, J, contact, jacobian, status)
+    ball_status = ring_loads(d, qs, dPd, omega, X, F, J, contact, jacobian)
     res = _residual_norm(F_applied, F, idx, n, scale)
     f_ref = 1e-3
     for i in range(n):
@@ -663,19 +787,19 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
     for it in range(maxit + 1):
         if not math.isfinite(res):
             return QS_NOT_FINITE, it, res
-        if res <= tol * max(f_ref, _mean_ball_load(balls)) or n == 0:
+        if res <= tol * max(f_ref, _mean_ball_load(contact)) or n == 0:
             return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), it, res
         if it == maxit:
             break
         kmax = 0.0
         for a in range(n):
-            kmax = max(kmax, K[idx[a], idx[a]] / (scale[idx[a]] ** 2))
+            kmax = max(kmax, J[idx[a], idx[a]] / (scale[idx[a]] ** 2))
         for a in range(n):
             ia = idx[a]
             R[a] = (F_applied[ia] - F[ia]) / scale[ia]
             for b in range(n):
                 ib = idx[b]
-                Kr[a, b] = K[ia, ib] / (scale[ia] * scale[ib])
+                Kr[a, b] = J[ia, ib] / (scale[ia] * scale[ib])
             Kr[a, a] += 1e-12 * kmax + k_floor
         if not _solve_small(Kr, R, n, Rw):
             return QS_NOT_FINITE, it, res
@@ -689,31 +813,28 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
             step[a] = 0.0
         for a in range(n):
             step[idx[a]] = f * Rw[a] / scale[idx[a]]
-        # backtracking on the residual norm; if nothing decreases (a plateau without contact), take the step
-        lam = 1.0
-        accepted = False
-        for _ in range(40):
-            for a in range(5):
-                d_try[a] = d[a] + lam * step[a]
-            X_try[:, :] = X
-            st = bearing_loads(d_try, qs, dPd, omega, X_try, F, K, balls)
-            trial = _residual_norm(F_applied, F, idx, n, scale)
-            if trial < res:
-                accepted = True
-                break
-            lam *= 0.5
-        if not accepted:
-            for a in range(5):
-                d_try[a] = d[a] + step[a]
-            X_try[:, :] = X
-            st = bearing_loads(d_try, qs, dPd, omega, X_try, F, K, balls)
-            trial = _residual_norm(F_applied, F, idx, n, scale)
+        _, res = _loads_line_search(d, step, res, 40, loads)  # leaves d_try, X_try, F, J, contact at the step
         for a in range(5):
             d[a] = d_try[a]
         X[:, :] = X_try
-        ball_status = st
-        res = trial
+        ball_status = status[0]
     return QS_NOT_CONVERGED, maxit, res
+
+
+@kernel
+def _loads_residual_at(d, lam, step, loads):
+    """Evaluate the bearing at d + lam step into d_try, X_try (from X), F, J, contact and the status of
+    `loads` (_global_newton); returns the load residual norm (N)."""
+    F_applied, idx, n, scale, qs, dPd, omega, X, X_try, d_try, F, J, contact, jacobian, status = loads
+    for a in range(5):
+        d_try[a] = d[a] + lam * step[a]
+    X_try[:, :] = X
+    status[0] = ring_loads(d_try, qs, dPd, omega, X_try, F, J, contact, jacobian)
+    return _residual_norm(F_applied, F, idx, n, scale)
+
+
+_ball_line_search = line_search(_ball_residual_at)
+_loads_line_search = line_search(_loads_residual_at)
 
 
 @kernel
@@ -727,10 +848,11 @@ def _residual_norm(F_applied, F, idx, n, scale):
 
 
 @kernel
-def _mean_ball_load(balls):
-    """Mean inner contact load (N): the load scale of a preloaded bearing under zero external load."""
-    Z = balls.shape[1]
+def _mean_ball_load(contact):
+    """Mean inner contact load (N) of a contact state (CS_*): the load scale of a preloaded bearing
+    under zero external load."""
+    Z = contact.shape[1]
     s = 0.0
     for j in range(Z):
-        s += balls[BQ_Q_I, j]
+        s += contact[CS_Q_I, j]
     return s / Z

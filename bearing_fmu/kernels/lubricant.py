@@ -1,4 +1,4 @@
-"""Lubricant properties: viscosity-temperature, pressure-viscosity, density and permittivity (SPEC 4.5).
+"""Lubricant properties: viscosity-temperature, pressure-viscosity, density and permittivity (docs/parameters.md).
 
 SI units: T in K, p in Pa, kinematic viscosity nu in m^2/s, dynamic viscosity in Pa.s.
 Temperature models are selected by integer codes (never by module state):

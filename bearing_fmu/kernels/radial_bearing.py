@@ -46,7 +46,8 @@ B_H_FLOOR = 20  # film floor for capacitance (m)
 B_C_BACKGROUND = 21  # background capacitance (F)
 B_CENTRIFUGAL = 22  # 1 = centrifugal load on, 0 = off
 B_TOL = 23  # relative tolerance of the radial equilibrium (-)
-B_SIZE = 24
+B_CAPACITANCE = 24  # 1 = capacitance submodel on; 0 = null submodel (O_C_BEARING and ball rows C_i, C_o not written)
+B_SIZE = 25
 
 # layout of the output array
 O_LAMBDA_I = 0
@@ -79,7 +80,8 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     brg: bearing array (B_* layout); lub: lubricant array (kernels.lubricant LUB_* layout);
     nodes, weights: Gauss-Legendre rule; out: float64[O_SIZE] (filled); ball: float64[8, Z] work
     array filled per ball with rows Q_i, Q_o (N), h_min_i, h_min_o (m), Lambda_i, Lambda_o (-),
-    C_i, C_o (F).
+    C_i, C_o (F). With brg[B_CAPACITANCE] = 0 the capacitance submodel is null: no permittivity or
+    capacitance is computed and out[O_C_BEARING] and the rows C_i, C_o are left untouched.
     """
     Z = int(brg[B_Z])
     D = brg[B_D]
@@ -91,8 +93,9 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     Rx_o = brg[B_RX_O]
     Ry_o = brg[B_RY_O]
 
+    capacitance = brg[B_CAPACITANCE] > 0.5
     eta, xi, rho0 = lubricant_state(T_oil, lub)
-    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], rho0)
+    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], rho0) if capacitance else 0.0
     w_cage, w_ball_rel, w_ball_fixed, u = rolling_kinematics(omega, D, dm, 0.0)
     F_c = 0.0
     if brg[B_CENTRIFUGAL] > 0.5:
@@ -133,21 +136,26 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
         C_o = 0.0
         if Q_i > 0.0:
             loaded_i = True
-            eps_i = contact_permittivity(K_cm, rho0, p_i, int(brg[B_PRESSURE]))
-            C_i = contact_capacitance(eps_i, a_i, b_i, hc_i, brg[B_H_FLOOR])
+            if capacitance:
+                eps_i = contact_permittivity(K_cm, rho0, p_i, int(brg[B_PRESSURE]))
+                C_i = contact_capacitance(eps_i, a_i, b_i, hc_i, brg[B_H_FLOOR])
             lam_i = min(lam_i, L_i)
             hmin_i = min(hmin_i, hm_i)
             hc_i_min = min(hc_i_min, hc_i)
         if Q_o > 0.0:
             loaded_o = True
-            eps_o = contact_permittivity(K_cm, rho0, p_o, int(brg[B_PRESSURE]))
-            C_o = contact_capacitance(eps_o, a_o, b_o, hc_o, brg[B_H_FLOOR])
+            if capacitance:
+                eps_o = contact_permittivity(K_cm, rho0, p_o, int(brg[B_PRESSURE]))
+                C_o = contact_capacitance(eps_o, a_o, b_o, hc_o, brg[B_H_FLOOR])
             lam_o = min(lam_o, L_o)
             hmin_o = min(hmin_o, hm_o)
             hc_o_min = min(hc_o_min, hc_o)
         if Q_i > 0.0 and Q_o > 0.0:
             n_loaded += 1
-        c_total += ball_capacitance(C_i, C_o)
+        if capacitance:
+            c_total += ball_capacitance(C_i, C_o)
+            ball[6, j] = C_i
+            ball[7, j] = C_o
         p_max = max(p_max, p_i, p_o)
         q_max_i = max(q_max_i, Q_i)
         q_max_o = max(q_max_o, Q_o)
@@ -157,8 +165,6 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
         ball[3, j] = hm_o
         ball[4, j] = L_i
         ball[5, j] = L_o
-        ball[6, j] = C_i
-        ball[7, j] = C_o
 
     # a race without any loaded contact reports 0 film (documented: no EHL contact to speak of)
     if not loaded_i:
@@ -174,7 +180,8 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     out[O_HMIN_I] = hmin_i
     out[O_HMIN_O] = hmin_o
     out[O_REGIME] = lubrication_regime(min(lam_i, lam_o))
-    out[O_C_BEARING] = c_total
+    if capacitance:
+        out[O_C_BEARING] = c_total
     out[O_QMAX_I] = q_max_i
     out[O_QMAX_O] = q_max_o
     out[O_PMAX] = p_max

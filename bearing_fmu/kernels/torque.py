@@ -1,4 +1,4 @@
-"""Friction losses of a ball-race contact (Houpert model) and the Palmgren cross-check (SPEC 4.7).
+"""Friction losses of a ball-race contact (Houpert model) and the Palmgren cross-check (docs/houpert_torque.md).
 
 SI units throughout. Sources, conventions and the 6208 check are in docs/houpert_torque.md (the
 "note"); section numbers below refer to it. x is the rolling direction, y the transverse one;
@@ -15,7 +15,7 @@ Per contact (note sections 2 and 4):
 - Heathcote (differential) sliding from the groove curvature: F_H = C_H mu Q a^2 / (R_c Rx), C_H = 3I/8.
 - Pivoting (spin) moment, Jones 1959 / Harris (memory): M_s = (3/8) mu Q a E(e).
 Powers (W): EHL 2 F_R |u| (Biboulet & Houpert 2010 Part 1, conclusion: the rolling force acts on
-both surfaces; SPEC 4.7's "F_R u" is half of it, note 2.5), hysteresis F_h |u|, Heathcote F_H |u|,
+both surfaces; a power F_R u would be half of it, docs/houpert_torque.md), hysteresis F_h |u|, Heathcote F_H |u|,
 spin M_s |omega_spin|.
 
 Bearing-level cross-check (note 4d): Palmgren 1959, Ball and Roller Bearing Engineering, 3rd ed.,

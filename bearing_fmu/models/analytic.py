@@ -102,6 +102,7 @@ class AnalyticModel:
         brg[ak.B_C_BACKGROUND] = s.background_capacitance
         brg[ak.B_CENTRIFUGAL] = 1.0 if s.centrifugal else 0.0
         brg[ak.B_TOL] = s.tolerance
+        brg[ak.B_CAPACITANCE] = 1.0 if s.capacitance else 0.0
         return brg
 
     inputs = INPUTS

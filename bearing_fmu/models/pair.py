@@ -164,6 +164,9 @@ class PairAssembly:
         if not (math.isfinite(spacing) and spacing > 0.0):
             raise InputError(f"spacing = {spacing} m must be a finite number > 0")
         self.models = (model_a, model_b)
+        self.qs = tuple(m.qs.copy() for m in self.models)
+        for qs in self.qs:
+            qs[qk.QS_STIFFNESS] = 1.0  # the pair's Newton needs each bearing's stiffness, whatever its scene exposes
         self.arrangement = arrangement
         self.preload = preload
         self.F_preload = F_preload
@@ -220,13 +223,13 @@ class PairAssembly:
         K = np.zeros((5, 5))
         balls = np.zeros((qk.BQ_SIZE, Z))
         d_start = d.copy()
-        status = qk.solve_quasistatic(applied, control, d, model.qs, dPd, omega, X, F, K, balls)[0]
+        status = qk.solve_quasistatic(applied, control, d, self.qs[k], dPd, omega, X, F, K, balls)[0]
         if status != qk.QS_OK:  # the warm start can be far off: retry cold
             d[:] = d_start
             if spring:
                 d[2] = self.z0[1]
             X[:] = 0.0
-            status = qk.solve_quasistatic(applied, control, d, model.qs, dPd, omega, X, F, K, balls)[0]
+            status = qk.solve_quasistatic(applied, control, d, self.qs[k], dPd, omega, X, F, K, balls)[0]
         return status, d, F, K, balls
 
     def _evaluate(self, D, omega, dPd, dz, X, z_B):

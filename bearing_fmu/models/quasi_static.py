@@ -173,6 +173,7 @@ class QuasiStaticModel:
         qs[qk.QS_C_HYB] = a_i * ci[1] / (a_o * co[1])
         qs[qk.QS_TOL] = s.tolerance
         qs[qk.QS_MAXIT] = s.max_iterations
+        qs[qk.QS_STIFFNESS] = 1.0 if s.stiffness else 0.0
         cp = np.zeros(ck.CP_SIZE)
         cp[ck.CP_RX_I], cp[ck.CP_RY_I] = Rx_i, Ry_i
         cp[ck.CP_K_I], cp[ck.CP_EE_I], cp[ck.CP_KK_I] = ci
@@ -189,6 +190,8 @@ class QuasiStaticModel:
         cp[ck.CP_F_I] = b.f_i
         cp[ck.CP_F_O] = b.f_o
         cp[ck.CP_D] = b.D
+        cp[ck.CP_CAPACITANCE] = 1.0 if s.capacitance else 0.0
+        cp[ck.CP_TORQUE] = 1.0 if s.torque else 0.0
         return qs, cp
 
     def _load_limit(self):

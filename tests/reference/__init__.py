@@ -1,4 +1,4 @@
-"""Slow, obviously correct plain-Python twins of the numba kernels (SPEC 2; after stumpy's naive
+"""Slow, obviously correct plain-Python twins of the numba kernels (after stumpy's naive
 reference versions).
 
 One module per kernel module (ref_<module>.py), one function per public kernel, same name and, where

@@ -1,7 +1,7 @@
 """Twin of bearing_fmu.kernels.radial_bearing: the analytic bearing as a plain loop over the balls.
 
 Calls only the other twins (never a kernel). Deep-groove bearing (contact angle 0), outer ring
-fixed, radial load along psi = 0 (SPEC 4.1-4.6):
+fixed, radial load along psi = 0 (docs/decisions.md):
 1. oil state (ref_lubricant), pure-rolling kinematics (ref_geometry), centrifugal force on the
    outer contacts if switched on;
 2. load-deflection constant K of the inner and outer Hertz contacts in series (ref_hertz), radial
@@ -128,3 +128,8 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
         "iter": None,
     }
     return out, balls
+
+
+# the kernels this module twins (tests/unit/test_every_kernel_has_a_twin.py)
+KERNEL_MODULE = "bearing_fmu.kernels.radial_bearing"
+TWINS = {"analytic_bearing": analytic_bearing}

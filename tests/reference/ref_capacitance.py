@@ -45,3 +45,13 @@ def ball_capacitance(C_inner, C_outer):
 def bearing_capacitance(C_inner, C_outer, C_background):
     """Balls in parallel plus the background term."""
     return C_background + sum(ball_capacitance(ci, co) for ci, co in zip(C_inner, C_outer))
+
+
+# the kernels this module twins, by name (tests/unit/test_every_kernel_has_a_twin.py)
+KERNEL_MODULE = "bearing_fmu.kernels.capacitance"
+TWINS = {
+    "contact_permittivity": contact_permittivity,
+    "contact_capacitance": contact_capacitance,
+    "ball_capacitance": ball_capacitance,
+    "bearing_capacitance": bearing_capacitance,
+}

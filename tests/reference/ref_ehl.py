@@ -11,7 +11,8 @@ Film formulas as h / Rx, written out from the papers' expressions:
     H_c = 4.31 U^0.68 G^0.49 W^-0.073 (1 - e^(-1.23 (Ry/Rx)^(2/3))),
     H_min = 3.68 U^0.68 G^0.49 W^-0.073 (1 - e^(-0.67 (Ry/Rx)^(2/3))).
 Guessasma & Machado (2018): Lambda = h_min / sigma; regimes boundary (<= 1), mixed (]1, 3]), full
-film (> 3); mu(Lambda) 0.1 -> 0.01 linear on ]1, 3]; damping eqs. 4-5 (series for mixed, SPEC 4.10).
+film (> 3); mu(Lambda) 0.1 -> 0.01 linear on ]1, 3]; damping eqs. 4-5 (series for mixed:
+the text's 'parallel' is its formula's series combination).
 """
 
 import math
@@ -84,7 +85,7 @@ def film_thickness(formula, eta, xi, E_red, u, Q, Rx, Ry, k):
 
 
 def film_parameter(h_min, sigma):
-    """Lambda = h_min / sigma. sigma = 0: inf for a real film; a zero film gives 0 (SPEC 4.4: zero
+    """Lambda = h_min / sigma. sigma = 0: inf for a real film; a zero film gives 0 (zero
     speed gives zero film and Lambda = 0, boundary), whatever the roughness."""
     if h_min == 0.0:
         return 0.0
@@ -120,3 +121,18 @@ def normal_damping(lam, Q, alpha_e, eta, a_major, R_ball, h_min):
     if regime == 2:
         return C_f
     return 1.0 / (1.0 / C_h + 1.0 / C_f)
+
+
+# the kernels this module twins, by name (tests/unit/test_every_kernel_has_a_twin.py)
+KERNEL_MODULE = "bearing_fmu.kernels.ehl"
+TWINS = {
+    "dimensionless_groups": dimensionless_groups,
+    "film_hamrock_dowson": film_hamrock_dowson,
+    "film_masjedi_khonsari": film_masjedi_khonsari,
+    "film_chittenden": film_chittenden,
+    "film_thickness": film_thickness,
+    "film_parameter": film_parameter,
+    "lubrication_regime": lubrication_regime,
+    "friction_coefficient": friction_coefficient,
+    "normal_damping": normal_damping,
+}

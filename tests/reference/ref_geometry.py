@@ -89,3 +89,17 @@ def ball_mass(D, rho):
 def centrifugal_force(m_ball, dm, omega_cage):
     """F_c = m r omega^2 with orbit radius r = d_m / 2."""
     return m_ball * (dm / 2.0) * omega_cage**2
+
+
+# the kernels this module twins, by name (tests/unit/test_every_kernel_has_a_twin.py)
+KERNEL_MODULE = "bearing_fmu.kernels.geometry"
+TWINS = {
+    "gamma_ratio": gamma_ratio,
+    "curvature_radii": curvature_radii,
+    "free_contact_angle": free_contact_angle,
+    "free_endplay": free_endplay,
+    "rolling_kinematics": rolling_kinematics,
+    "defect_frequencies": defect_frequencies,
+    "ball_mass": ball_mass,
+    "centrifugal_force": centrifugal_force,
+}

@@ -9,7 +9,7 @@ form of the same relation (see hertz_ratio). Contact size, approach and pressure
   a = (6 k^2 E Q R / (pi E'))^(1/3),  b = (6 E Q R / (pi k E'))^(1/3),
   delta = K [ (9 / (2 E R)) (Q / (pi k E'))^2 ]^(1/3),  p_max = 3 Q / (2 pi a b),
 with R = 1 / (1/Rx + 1/Ry). Hamrock & Brewe (1983): k = alpha^(2/pi), E = 1 + q/alpha,
-K = pi/2 + q ln alpha, q = pi/2 - 1 (SPEC 4.2; the seeds' 1 + q ln alpha is a typesetting error).
+K = pi/2 + q ln alpha, q = pi/2 - 1 (the seeds' 1 + q ln alpha is a typesetting error, docs/decisions.md).
 """
 
 import math
@@ -111,3 +111,16 @@ def series_stiffness(K1, K2):
     d1 = (1.0 / K1) ** (2.0 / 3.0)
     d2 = (1.0 / K2) ** (2.0 / 3.0)
     return 1.0 / (d1 + d2) ** 1.5
+
+
+# the kernels this module twins, by name (tests/unit/test_every_kernel_has_a_twin.py)
+KERNEL_MODULE = "bearing_fmu.kernels.hertz"
+TWINS = {
+    "reduced_modulus": reduced_modulus,
+    "elliptic_integrals": elliptic_integrals,
+    "hertz_coefficients_exact": hertz_coefficients_exact,
+    "hertz_coefficients_approx": hertz_coefficients_approx,
+    "hertz_contact": hertz_contact,
+    "hertz_stiffness": hertz_stiffness,
+    "series_stiffness": series_stiffness,
+}

@@ -183,3 +183,16 @@ def solve_radial_shift(F_r, Pd, K, Z):
     while _radial_force(lo + step, Pd, K, Z) < F_r:
         step *= 2.0
     return brentq(lambda d: _radial_force(d, Pd, K, Z) - F_r, lo, lo + step, xtol=1e-300, rtol=8.9e-16, maxiter=5000)
+
+
+# the kernels this module twins, by name (tests/unit/test_every_kernel_has_a_twin.py)
+KERNEL_MODULE = "bearing_fmu.kernels.loaddist"
+TWINS = {
+    "gauss_legendre": gauss_legendre,
+    "loaded_half_angle": loaded_half_angle,
+    "radial_integral": radial_integral,
+    "load_parameter": load_parameter,
+    "stribeck_load": stribeck_load,
+    "radial_force_and_slope": radial_force_and_slope,
+    "solve_radial_shift": solve_radial_shift,
+}

@@ -7,7 +7,7 @@
   singularity C2 + (T - T_g) F = 0, beyond which mu(0)/mu(p) is taken as 0 (glassy: no flow).
 - alpha* = [int_0^inf mu(0)/mu(p) dp]^-1 (Blok) with scipy.integrate.quad (see wlf_alpha_star).
 - Murnaghan (thesis eqs. 2.1-7, 2.1-8), linear thermal expansion, Gold et al. (2001) alpha = s nu^t,
-  Dowson-Higginson density, Clausius-Mossotti permittivity (SPEC 4.5).
+  Dowson-Higginson density, Clausius-Mossotti permittivity (docs/parameters.md).
 """
 
 import math
@@ -184,3 +184,21 @@ def lubricant_state(T, lub):
     else:
         raise ValueError(f"unknown pressure-viscosity model {piezo}")
     return eta, xi, rho0
+
+
+# the kernels this module twins, by name (tests/unit/test_every_kernel_has_a_twin.py)
+KERNEL_MODULE = "bearing_fmu.kernels.lubricant"
+TWINS = {
+    "walther_constants": walther_constants,
+    "walther_viscosity": walther_viscosity,
+    "density_linear": density_linear,
+    "murnaghan_density": murnaghan_density,
+    "wlf_viscosity": wlf_viscosity,
+    "wlf_ratio": wlf_ratio,
+    "wlf_alpha_star": wlf_alpha_star,
+    "gold_pressure_viscosity": gold_pressure_viscosity,
+    "dowson_higginson_density": dowson_higginson_density,
+    "clausius_mossotti_constant": clausius_mossotti_constant,
+    "permittivity_from_density": permittivity_from_density,
+    "lubricant_state": lubricant_state,
+}

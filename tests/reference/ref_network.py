@@ -185,3 +185,25 @@ def axial_interference(s_arr, alpha_shaft, alpha_housing, spacing, T_shaft, T_ho
     shaft = spacing * (1.0 + alpha_shaft * (T_shaft - T_ref))
     housing = spacing * (1.0 + alpha_housing * (T_housing - T_ref))
     return (shaft - housing) if s_arr > 0 else (housing - shaft)
+
+
+# the kernels this module twins, by name (tests/unit/test_every_kernel_has_a_twin.py)
+KERNEL_MODULE = "spindle.thermal.network"
+TWINS = {
+    "rotating_shaft_nusselt": rotating_shaft_nusselt,
+    "link_conductance": link_conductance,
+    "link_conductances": link_conductances,
+    "assemble": assemble,
+    "boundary_heat_flow": boundary_heat_flow,
+    "cholesky": cholesky,
+    "cholesky_solve": cholesky_solve,
+    "matvec": matvec,
+    "rmatvec": rmatvec,
+    "source_vector": source_vector,
+    "implicit_euler_step": implicit_euler_step,
+    "exponential_step": exponential_step,
+    "exponential_heat_integral": exponential_heat_integral,
+    "centrifugal_radial_growth": centrifugal_radial_growth,
+    "clearance_change": clearance_change,
+    "axial_interference": axial_interference,
+}

@@ -585,3 +585,26 @@ def params_b7214c(**overrides):
     kw = dict(Z=17, D=15.875e-3, dm=97.5e-3, f_i=0.52, f_o=0.53, Pd=54.09e-6, angular=True)
     kw.update(overrides)
     return make_params(**kw)
+
+
+def solve_small(A, b):
+    """Solution of the square system A x = b by numpy's LU solver; None when A is singular."""
+    try:
+        return np.linalg.solve(np.asarray(A, float), np.asarray(b, float))
+    except np.linalg.LinAlgError:
+        return None
+
+
+# the kernels this module twins (tests/unit/test_every_kernel_has_a_twin.py); the twin's names follow
+# the model's parts, not the kernel's
+KERNEL_MODULE = "bearing_fmu.kernels.jones_harris"
+TWINS = {
+    "qs_geometry": geometry,
+    "kinematics": kinematics,
+    "hybrid_inner_share": race_control,
+    "ball_equilibrium": ball_state,
+    "ring_loads": bearing_loads,
+    "bearing_loads": bearing_loads,
+    "solve_quasistatic": solve_loads,
+    "_solve_small": solve_small,
+}

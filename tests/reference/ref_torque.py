@@ -233,3 +233,21 @@ def iso76_f0(gamma):
 def iso76_static_rating(Z, D, dm, alpha):
     """C0 (N) = f0 Z D_w^2 cos(alpha) with D_w in mm (single row)."""
     return iso76_f0(D * math.cos(alpha) / dm) * Z * (D * 1e3) ** 2 * math.cos(alpha)
+
+
+# the kernels this module twins, by name (tests/unit/test_every_kernel_has_a_twin.py)
+KERNEL_MODULE = "bearing_fmu.kernels.torque"
+TWINS = {
+    "houpert_rolling_force": houpert_rolling_force,
+    "hysteresis_force": hysteresis_force,
+    "heathcote_force": heathcote_force,
+    "spin_moment": spin_moment,
+    "contact_losses": contact_losses,
+    "palmgren_f0": palmgren_f0,
+    "palmgren_viscous_torque": palmgren_viscous_torque,
+    "palmgren_load_torque": palmgren_load_torque,
+    "palmgren_f1": palmgren_f1,
+    "palmgren_equivalent_load": palmgren_equivalent_load,
+    "iso76_f0": iso76_f0,
+    "iso76_static_rating": iso76_static_rating,
+}

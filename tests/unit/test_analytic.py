@@ -222,8 +222,9 @@ def test_bearing_array_matches_twin_geometry():
 
 
 def test_seed_case_6208():
-    """SPEC 4.3/4.4/4.6: 6208, omega = 500 rad/s, F_r = 3 kN, P_d = 0, eta = 0.04 Pa s, xi = 2.3e-8 1/Pa:
-    Q_max = 1457 N, Lambda_out at psi = 0 ~ 2.1-2.15, bearing capacitance of tens of pF."""
+    """Guessasma & Machado (2018), Harris & Kotzalas (2006): 6208, omega = 500 rad/s, F_r = 3 kN, P_d = 0,
+    eta = 0.04 Pa s, xi = 2.3e-8 1/Pa: Q_max = 1457 N, Lambda_out at psi = 0 ~ 2.1-2.15, bearing capacitance
+    of tens of pF."""
     out, ref = check_against_twin(model("6208", "default", 0.0, "guessasma_oil"), 500.0, 3000.0, 313.0)
     assert out[ak.O_QMAX_I] == pytest.approx(1457.0, abs=0.5)
     assert 2.1 <= out[ak.O_LAMBDA_O] <= 2.15
@@ -281,8 +282,9 @@ def test_eps_above_one_loads_every_ball():
 def test_compiled_kernel_is_current():
     """The jitted dispatcher computes what its source computes (run as Python, calling the same
     jitted callees). numba's cache=True only checks the caller's own file: a callee changed in another
-    kernel module leaves a stale compiled analytic_bearing in bearing_fmu/kernels/__pycache__ (seen:
-    the pre-'wlf_ratio' alpha* raising ZeroDivisionError for the WLF oil). Fix: delete that cache."""
+    kernel module would leave a stale compiled analytic_bearing in a fixed cache directory (seen once:
+    the pre-'wlf_ratio' alpha* raising ZeroDivisionError for the WLF oil). The cache directory keyed on
+    the kernel sources (bearing_fmu_common/jit.py, tests/unit/test_jit_cache.py) prevents it."""
     for lubricant, T in (("thesis_turbine_oil", 313.0), ("iso_vg68_mineral", 313.0), ("guessasma_oil", 233.15)):
         m = model("6208", "default", 5e-6, lubricant)
         out = np.zeros(ak.O_SIZE)

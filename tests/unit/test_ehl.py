@@ -24,7 +24,7 @@ FAST = settings(max_examples=50, deadline=None)
 floats = functools.partial(st.floats, allow_nan=False, allow_infinity=False, allow_subnormal=False)
 E_STEEL = 210e9 / (1.0 - 0.3**2)
 FORMULAS = [ek.FILM_HAMROCK_DOWSON, ek.FILM_MASJEDI_KHONSARI, ek.FILM_CHITTENDEN]
-# 6208 inner contact at psi = 0, omega = 500 rad/s, F_r = 3 kN, Guessasma oil (SPEC 4.4)
+# 6208 inner contact at psi = 0, omega = 500 rad/s, F_r = 3 kN, Guessasma oil (Guessasma & Machado 2018)
 SEED = dict(eta=0.04, xi=2.3e-8, E_red=E_STEEL, u=6.1, Q=1457.0, Rx=4.99e-3, Ry=0.1638, k=10.7)
 
 
@@ -65,7 +65,7 @@ def test_film_formulas_on_grid(k):
 
 
 def test_hamrock_dowson_exponents():
-    """SPEC 4.4 seed check: dlog Lambda / dlog Q = -0.073 and dlog Lambda / dlog omega = 0.68 (h_min)."""
+    """Guessasma & Machado (2018) check: dlog Lambda / dlog Q = -0.073 and dlog Lambda / dlog omega = 0.68 (h_min)."""
     U, G, W, k = 1e-11, 4900.0, 1e-6, 10.7
     h = ek.film_hamrock_dowson(U, G, W, k)[1]
     assert math.log(ek.film_hamrock_dowson(U, G, 2 * W, k)[1] / h) / math.log(2) == pytest.approx(
@@ -113,7 +113,7 @@ def test_film_thickness_random(formula, log_eta, xi, u, log_q, log_rx, log_ratio
 
 
 def test_zero_speed_gives_boundary_regime():
-    """SPEC 4.4: zero speed -> zero film, Lambda = 0, boundary regime, mu = 0.1, hysteretic damping."""
+    """Zero speed -> zero film, Lambda = 0, boundary regime, mu = 0.1, hysteretic damping."""
     for formula in FORMULAS:
         hc, hm = ek.film_thickness(formula, 0.04, 2.3e-8, E_STEEL, 0.0, 1457.0, 4.99e-3, 0.1638, 10.7)
         assert (

@@ -29,7 +29,7 @@ FAST = settings(max_examples=50, deadline=None)
 # finite, normal floats: subnormal inputs (< 2.2e-308) have no physical meaning and lose precision
 floats = functools.partial(st.floats, allow_nan=False, allow_infinity=False, allow_subnormal=False)
 
-# 6208 of the seeds (SPEC 4.1) and two other shapes: (D, d_m, f_i, f_o)
+# 6208 of Guessasma & Machado (2018, Table 1) and two other shapes: (D, d_m, f_i, f_o)
 GEOMETRIES = [
     (12.6e-3, 60.6e-3, 0.52, 0.52),
     (12.7e-3, 51e-3, 0.515, 0.525),
@@ -171,7 +171,7 @@ def test_negative_speed_reverses_every_kinematic_quantity():
 
 
 def test_seed_6208_speeds():
-    """SPEC 4.8: omega = 500 rad/s -> ball 952.38 rad/s fixed frame, 1150.4 rad/s relative to the cage,
+    """omega = 500 rad/s -> ball 952.38 rad/s fixed frame, 1150.4 rad/s relative to the cage,
     cage 198.0 rad/s (Guessasma 2018); the printed digits bound the tolerance."""
     w_c, w_rel, w_fixed, u = gk.rolling_kinematics(500.0, 12.6e-3, 60.6e-3, 0.0)
     assert w_fixed == pytest.approx(952.38, abs=0.005)

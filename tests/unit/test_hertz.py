@@ -32,7 +32,7 @@ EPS = np.finfo(float).eps
 FAST = settings(max_examples=50, deadline=None)
 # finite, normal floats: subnormal inputs (< 2.2e-308) have no physical meaning and lose precision
 floats = functools.partial(st.floats, allow_nan=False, allow_infinity=False, allow_subnormal=False)
-E_STEEL = 210e9 / (1.0 - 0.3**2)  # E' steel on steel (SPEC 4)
+E_STEEL = 210e9 / (1.0 - 0.3**2)  # E' steel on steel, E = 210 GPa, nu = 0.3
 
 RATIOS = [1e-3, 0.01, 0.0707, 0.5, 0.9, 1.0 - 1e-4, 1.0, 1.0 + 1e-4, 1.1, 2.0, 10.0, 14.2, 27.6, 100.0, 1e3]
 NEAR_ONE = [1.0 + d for d in (1e-13, 1e-11, 1e-10, 1e-9, 1e-8, 1e-7, 1e-6, 1e-5, -1e-8, -1e-6, -1e-5)]

@@ -121,7 +121,7 @@ def test_radial_integral_edges_and_seed_value():
     assert ld.radial_integral(-0.5, NODES, WEIGHTS) == 0.0 == rl.radial_integral(-0.5)
     # eps -> inf: every ball equally loaded, no net radial force
     assert abs(ld.radial_integral(math.inf, NODES, WEIGHTS)) <= 1e-15 and rl.radial_integral(math.inf) == 0.0
-    # SPEC 4.3: J_r(0.5) = 0.2288 (Harris), and Q_max = 1457 N for the 6208 at F_r = 3000 N, P_d = 0
+    # Harris & Kotzalas (2006): J_r(0.5) = 0.2288, and Q_max = 1457 N for the 6208 at F_r = 3000 N, P_d = 0
     J = ld.radial_integral(0.5, NODES, WEIGHTS)
     assert J == pytest.approx(0.2288, abs=5e-5)
     assert 3000.0 / (9 * J) == pytest.approx(1457.0, abs=0.5)

@@ -182,7 +182,7 @@ def test_lubricant_state_random(T, name):
 
 
 def test_constant_oil_is_constant():
-    """Guessasma oil (SPEC 4.5): eta = 0.04 Pa s, xi = 2.3e-8 1/Pa whatever the temperature."""
+    """Guessasma oil (Guessasma & Machado 2018): eta = 0.04 Pa s, xi = 2.3e-8 1/Pa whatever the temperature."""
     lub = load_lubricant("guessasma_oil").array
     for T in T_RANGE:
         eta, xi, _ = lk.lubricant_state(T, lub)

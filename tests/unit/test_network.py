@@ -101,6 +101,8 @@ def test_conductances_and_assembly_vs_twin(seed, omega):
     n, m, C, ei, ej, kinds, par = random_network(seed)
     G = nk.link_conductances(kinds, par, omega)
     assert_close(G, rn.link_conductances(kinds, par, omega), RTOL, "G", atol=1e-300)
+    for kind, row in zip(kinds, par):  # each link on its own
+        assert_close(nk.link_conductance(kind, row, omega), rn.link_conductance(kind, row, omega), RTOL, f"G {kind}")
     L, B = nk.assemble(n, m, ei, ej, G)
     L_ref, B_ref = rn.assemble(n, m, ei, ej, G)
     assert_close(L, L_ref, RTOL, "L", atol=1e-300)
@@ -126,6 +128,7 @@ def test_rotating_shaft_value_by_hand():
     Tolerance 1e-3: the hand values are rounded to 4-5 digits."""
     Nu = nk.rotating_shaft_nusselt(OMEGA, 0.07, 15.89e-6, 0.707)
     assert_close(Nu, 351.4, 1e-3, "Nu")
+    assert_close(Nu, rn.rotating_shaft_nusselt(OMEGA, 0.07, 15.89e-6, 0.707), RTOL, "Nu vs twin")
     assert nk.rotating_shaft_nusselt(0.0, 0.07, 15.89e-6, 0.707) == 0.0
 
 
@@ -228,6 +231,7 @@ def test_random_networks_exponential_and_implicit_vs_twins(seed):
         assert rise_err(nk.exponential_step(T0, T_ss, sqrt_c, V, lam, h), T_ref, T0) < RTOL_LINALG
         I = nk.exponential_heat_integral(T0, T_ss, sqrt_c, V, lam, h)
         assert rise_err(I, I_ref, h * T0) < RTOL_LINALG
+        assert rise_err(I, rn.exponential_heat_integral(T0, T_ss, sqrt_c, V, lam, h), h * T0) < RTOL_LINALG
         for k in (1, 3):
             T_ie = nk.implicit_euler_step(C, L, f, T0, h, k)
             assert rise_err(T_ie, rn.implicit_euler_step(C, L, f, T0, h, k), T0) < RTOL_LINALG

@@ -10,7 +10,7 @@ Tolerances:
 - load-controlled solutions: the twin stops at a scaled residual of 1e-9, so displacements agree
   to 1e-6 relative of the largest displacement (a stiffness of ~1e8 N/m turns 1e-9 of the load
   into ~1e-9 of the displacement; 1e-6 leaves room for the twin's step tolerance);
-- Jacobian vs central differences (issue 3 acceptance): 1e-5 relative on every entry above 1e-6 of
+- Jacobian vs central differences: 1e-5 relative on every entry above 1e-6 of
   the largest. The difference step h = 1e-9 m (1e-8 rad) makes the truncation error ~h^2 K'''/6
   ~ 1e-9 relative and the rounding error ~eps F/h ~ 1e-7 relative.
 """
@@ -54,6 +54,7 @@ def pack(p, tol=1e-12, maxit=100):
     qs[qk.QS_C_HYB] = p["c_hyb"]
     qs[qk.QS_TOL] = tol
     qs[qk.QS_MAXIT] = maxit
+    qs[qk.QS_STIFFNESS] = 1.0
     return qs
 
 

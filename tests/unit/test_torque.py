@@ -42,7 +42,7 @@ FAST = settings(max_examples=50, deadline=None)
 SLOW = settings(max_examples=25, deadline=None)  # twins that run nested quadratures
 floats = functools.partial(st.floats, allow_nan=False, allow_infinity=False, allow_subnormal=False)
 E_STEEL = 210e9 / (1.0 - 0.3**2)
-ETA, XI = 0.04, 2.3e-8  # Guessasma oil (SPEC 4.4)
+ETA, XI = 0.04, 2.3e-8  # Guessasma oil (Guessasma & Machado 2018)
 
 
 def _contact(Q, Rx, Ry, E_red=E_STEEL):
@@ -53,7 +53,7 @@ def _contact(Q, Rx, Ry, E_red=E_STEEL):
 
 
 def _seed_6208():
-    """6208 inner contact of the SPEC seed at psi = 0: geometry from params/bearings/6208.toml."""
+    """6208 inner contact of Guessasma & Machado (2018) at psi = 0: geometry from params/bearings/6208.toml."""
     path = Path(bearing_fmu.__file__).parent / "params" / "bearings" / "6208.toml"
     geo = tomllib.loads(path.read_text())["geometry"]
     D, dm, f = (geo[n]["value"] for n in ("ball_diameter", "pitch_diameter", "inner_conformity"))

@@ -1,0 +1,104 @@
+"""Twin of bearing_fmu.kernels.contacts: every ball-race contact of a solved bearing as a plain loop.
+
+Calls only the other twins (never a kernel). For each ball j and race (inner, outer), with the contact
+load Q, rolling speed u and spin speed of the per-ball rows (kernels.jones_harris BQ_*):
+1. Hertz contact (ref_hertz) with the curvature and elliptic constants of the free contact angle;
+2. EHL film (ref_ehl) at the oil state (ref_lubricant), film parameter Lambda = h_min/sigma;
+3. if loaded and the capacitance submodel is on: permittivity at the Hertz pressure (Clausius-Mossotti
+   at the Dowson-Higginson density) and the contact capacitance (ref_capacitance);
+4. if loaded and the loss submodel is on: the four Houpert loss components (ref_torque) with the
+   friction coefficient of Lambda; the heat goes to the ring of the contact.
+Summaries (docs/quasistatic.md): minimum Lambda and h_min over the loaded contacts of each race (0 when a
+race has none), regime of the worse race, largest loads and pressure, balls loaded on both races,
+bearing capacitance = background + balls (inner and outer contacts in series) in parallel, power loss
+= both rings' heats, torque = power / |omega| (0 at rest).
+The cp, lub and balls arrays are read through the kernels' layout constants only. A submodel that is
+off is a null submodel: its outputs are NaN here (the kernel does not write them).
+"""
+
+import numpy as np
+
+from bearing_fmu.kernels import contacts as ck  # layout constants (CP_*, CO_*, PC_*) only
+from bearing_fmu.kernels import jones_harris as qk  # layout constants (BQ_*) only
+from bearing_fmu.kernels import lubricant as lk  # layout constants (LUB_*) only
+
+from . import ref_capacitance, ref_ehl, ref_hertz, ref_lubricant, ref_torque
+
+RACES = (  # (name, cp offsets of Rx, Ry, k, E, K; sigma; conformity; load, rolling, spin rows; ring heat)
+    ("inner", (ck.CP_RX_I, ck.CP_RY_I, ck.CP_K_I, ck.CP_EE_I, ck.CP_KK_I), ck.CP_SIGMA_I, ck.CP_F_I,
+     qk.BQ_Q_I, qk.BQ_U_I, qk.BQ_SPIN_I),
+    ("outer", (ck.CP_RX_O, ck.CP_RY_O, ck.CP_K_O, ck.CP_EE_O, ck.CP_KK_O), ck.CP_SIGMA_O, ck.CP_F_O,
+     qk.BQ_Q_O, qk.BQ_U_O, qk.BQ_SPIN_O),
+)  # fmt: skip
+
+
+def contact(Q, u, spin, Rx, Ry, k, ell_E, ell_K, sigma, f, cp, eta, xi, rho0, lub, capacitance, torque):
+    """One contact: dict with p_max, h_min, Lambda, C (F) and the loss components (W, ref_torque TL_* order)."""
+    E_red = cp[ck.CP_E_RED]
+    a, b, _, p_max = ref_hertz.hertz_contact(Q, Rx, Ry, E_red, k, ell_E, ell_K)
+    h_c, h_min = ref_ehl.film_thickness(int(cp[ck.CP_FILM]), eta, xi, E_red, u, Q, Rx, Ry, k)
+    lam = ref_ehl.film_parameter(h_min, sigma)
+    C = 0.0
+    losses = [0.0] * ref_torque.TL_SIZE
+    if Q > 0.0 and capacitance:
+        K_cm = ref_lubricant.clausius_mossotti_constant(lub[lk.LUB_EPS_R0], rho0)
+        eps_r = ref_capacitance.contact_permittivity(K_cm, rho0, p_max, int(cp[ck.CP_PRESSURE]))
+        C = ref_capacitance.contact_capacitance(eps_r, a, b, h_c, cp[ck.CP_H_FLOOR])
+    if Q > 0.0 and torque:
+        mu = ref_ehl.friction_coefficient(lam)
+        args = (Q, u, spin, Rx, Ry, a, b, ell_E, f, cp[ck.CP_D], E_red, eta, xi, mu, cp[ck.CP_ALPHA_H])
+        ref_torque.contact_losses(*args, losses)
+    return {"p_max": p_max, "h_min": h_min, "Lambda": lam, "C": C, "losses": losses}
+
+
+def contact_outputs(omega, T_oil, cp, lub, balls):
+    """Returns (out, per_contact): arrays in the kernel's CO_* and PC_* layouts (NaN where a submodel is off)."""
+    capacitance = cp[ck.CP_CAPACITANCE] > 0.5
+    torque = cp[ck.CP_TORQUE] > 0.5
+    eta, xi, rho0 = ref_lubricant.lubricant_state(T_oil, lub)
+    Z = balls.shape[1]
+    res = {}  # (race name, j) -> contact dict
+    for j in range(Z):
+        for name, geo, sigma, f, q_row, u_row, spin_row in RACES:
+            Rx, Ry, k, ell_E, ell_K = (cp[i] for i in geo)
+            Q, u, spin = balls[q_row, j], balls[u_row, j], balls[spin_row, j]
+            state = (eta, xi, rho0, lub, capacitance, torque)
+            res[name, j] = dict(contact(Q, u, spin, Rx, Ry, k, ell_E, ell_K, cp[sigma], cp[f], cp, *state), Q=Q)
+
+    out = np.full(ck.CO_SIZE, np.nan)
+    per_contact = np.full((ck.PC_SIZE, Z), np.nan)
+    for race, (name, *_) in enumerate(RACES):
+        loaded = [res[name, j] for j in range(Z) if res[name, j]["Q"] > 0.0]
+        out[ck.CO_LAMBDA_I + race] = min((c["Lambda"] for c in loaded), default=0.0)
+        out[ck.CO_HMIN_I + race] = min((c["h_min"] for c in loaded), default=0.0)
+        out[ck.CO_QMAX_I + race] = max((c["Q"] for c in loaded), default=0.0)
+        for j in range(Z):
+            per_contact[ck.PC_HMIN_I + race, j] = res[name, j]["h_min"]
+            per_contact[ck.PC_LAMBDA_I + race, j] = res[name, j]["Lambda"]
+            if capacitance:
+                per_contact[ck.PC_C_I + race, j] = res[name, j]["C"]
+            if torque:
+                per_contact[ck.PC_P_I + race, j] = sum(res[name, j]["losses"])
+    out[ck.CO_REGIME] = ref_ehl.lubrication_regime(min(out[ck.CO_LAMBDA_I], out[ck.CO_LAMBDA_O]))
+    everything = [res[key] for key in res if res[key]["Q"] > 0.0]
+    out[ck.CO_PMAX] = max((c["p_max"] for c in everything), default=0.0)
+    out[ck.CO_N_LOADED] = sum(1 for j in range(Z) if res["inner", j]["Q"] > 0.0 and res["outer", j]["Q"] > 0.0)
+    if capacitance:
+        out[ck.CO_C_BEARING] = ref_capacitance.bearing_capacitance(
+            [res["inner", j]["C"] for j in range(Z)], [res["outer", j]["C"] for j in range(Z)], cp[ck.CP_C_BACKGROUND]
+        )
+    if torque:
+        for t in range(ref_torque.TL_SIZE):
+            out[ck.CO_P_EHL + t] = sum(c["losses"][t] for c in everything)
+        out[ck.CO_Q_INNER_RING] = sum(sum(res["inner", j]["losses"]) for j in range(Z))
+        out[ck.CO_Q_OUTER_RING] = sum(sum(res["outer", j]["losses"]) for j in range(Z))
+        out[ck.CO_P_LOSS] = out[ck.CO_Q_INNER_RING] + out[ck.CO_Q_OUTER_RING]
+        out[ck.CO_TORQUE] = out[ck.CO_P_LOSS] / abs(omega) if omega != 0.0 else 0.0
+    out[ck.CO_ETA] = eta
+    out[ck.CO_XI] = xi
+    return out, per_contact
+
+
+# the kernels this module twins (tests/unit/test_every_kernel_has_a_twin.py)
+KERNEL_MODULE = "bearing_fmu.kernels.contacts"
+TWINS = {"contact_outputs": contact_outputs}

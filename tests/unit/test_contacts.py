@@ -1,0 +1,80 @@
+"""kernels.contacts.contact_outputs against its twin tests/reference/ref_contacts.py.
+
+contact_outputs produces every film, capacitance, torque and heat output of the quasi-static fidelity
+(Bearing.fmu). The per-ball inputs come from solved bearings (QuasiStaticModel), so the contacts see
+real load, rolling and spin distributions: unloaded balls, rest, both race controls, several scenes.
+
+Tolerances (relative), from the twins the contact twin is built on:
+- RTOL = 1e-12 for the oil state, Hertz pressure, film thickness and parameter, and capacitance: closed
+  forms in kernel and twin (tests/unit/test_lubricant.py, test_hertz.py, test_ehl.py, test_capacitance.py
+  pin each at 1e-12); the power laws of the film formulas (exponents below 1) do not amplify the
+  rounding of their inputs. Measured over the cases below: 7.1e-16.
+- QUAD_RTOL = 1e-9 for the losses, ring heats and torque: the loss twins integrate the Hertz pressure
+  by 2D quadrature at 1e-10 of the integral's scale (tests/unit/test_torque.py uses the same bound).
+  Sums over the contacts of positive terms keep the relative bound. Measured over the cases below: 1.2e-13.
+- Loads, ball counts and regimes are equal: the loads are copied, the counts and regimes integers.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from bearing_fmu.kernels import contacts as ck
+from bearing_fmu.models.quasi_static import QuasiStaticModel
+from bearing_fmu.scene import Scene
+from tests.reference import ref_contacts as rc
+from tests.unit._compare import assert_close
+
+RTOL = 1e-12
+QUAD_RTOL = 1e-9
+RPM = 2.0 * math.pi / 60.0
+LOSSES = (ck.CO_P_LOSS, ck.CO_Q_INNER_RING, ck.CO_Q_OUTER_RING, ck.CO_TORQUE) + tuple(ck.CO_P_EHL + t for t in range(4))
+EXACT = (ck.CO_QMAX_I, ck.CO_QMAX_O, ck.CO_N_LOADED, ck.CO_REGIME)
+
+# (label, bearing, scene options, inputs)
+CASES = [
+    ("B7214C ORCG 10k, combined", "B7214C", dict(gyroscopic=True), dict(omega=10000 * RPM, F_z=800.0, F_x=1000.0)),
+    ("B7214C hybrid 6k, mean pressure, background, torque off", "B7214C", dict(gyroscopic=True, race_control="hybrid",
+     permittivity_pressure="mean", background_capacitance=30e-12, torque=False), dict(omega=6000 * RPM, F_z=800.0,
+     M_y=20.0)),
+    ("6208 radial 3k, unloaded balls, Chittenden, capacitance off", "6208", dict(film="chittenden", capacitance=False),
+     dict(omega=3000 * RPM, F_x=3000.0)),
+    ("6208 at rest", "6208", dict(), dict(omega=0.0, F_x=2000.0, F_z=300.0)),
+    ("6208 inner race control, Masjedi-Khonsari, hot", "6208", dict(race_control="inner", film="masjedi_khonsari"),
+     dict(omega=-2000 * RPM, F_x=1500.0, T_oil=353.15)),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("label, bearing, options, inputs", CASES, ids=[c[0] for c in CASES])
+def test_contact_outputs_match_twin(label, bearing, options, inputs):
+    scene = Scene(name="contacts", fidelity="quasi_static", **{"torque": True, **options})
+    m = QuasiStaticModel(bearing, "iso_vg68_mineral", scene)
+    inputs = {"T_oil": 323.15, **inputs}
+    m.evaluate(**inputs)
+    Z = m.bearing.Z
+    out = np.full(ck.CO_SIZE, np.nan)
+    per_contact = np.full((ck.PC_SIZE, Z), np.nan)
+    ck.contact_outputs(
+        inputs["omega"], inputs["T_oil"], m.cp, m.lubricant.array, m.balls, out, per_contact, np.zeros(4)
+    )
+    ref, ref_pc = rc.contact_outputs(inputs["omega"], inputs["T_oil"], m.cp, m.lubricant.array, m.balls)
+    # a submodel that is off leaves exactly the slots the twin leaves NaN
+    assert np.array_equal(np.isnan(out), np.isnan(ref)) and np.array_equal(np.isnan(per_contact), np.isnan(ref_pc))
+    for k in range(ck.CO_SIZE):
+        if math.isnan(ref[k]):
+            continue
+        if k in EXACT:
+            assert out[k] == ref[k], f"{label}: slot {k}"
+        else:
+            assert_close(out[k], ref[k], QUAD_RTOL if k in LOSSES else RTOL, f"{label}: slot {k}")
+    for row in range(ck.PC_SIZE):
+        if not math.isnan(ref_pc[row, 0]):
+            tol = QUAD_RTOL if row in (ck.PC_P_I, ck.PC_P_O) else RTOL
+            assert_close(per_contact[row], ref_pc[row], tol, f"{label}: per-contact row {row}")
+    loaded = m.balls[0] > 0.0
+    assert np.any(loaded)
+    if "unloaded" in label:
+        assert not np.all(loaded)
+    if inputs["omega"] == 0.0 and scene.torque:
+        assert out[ck.CO_TORQUE] == 0.0

@@ -1,0 +1,185 @@
+"""Every jitted kernel has a plain-Python twin and a test that compares them.
+
+The mechanism, explicit on both sides:
+- each twin module tests/reference/ref_<x>.py declares KERNEL_MODULE (the kernel module it twins) and
+  TWINS = {kernel name: twin function};
+- a comparison test is a test function (in tests/) that calls the kernel and its twin, directly or through
+  helper functions and module-level tables of its own module; it is found by reading the test modules'
+  source (imports resolved: `from bearing_fmu.kernels import hertz as hk` makes `hk.hertz_contact` the
+  kernel; `from tests.reference import ref_hertz as rh` makes `rh.hertz_contact` the twin).
+A few small helpers have no twin of their own: COVERED_THROUGH names, for each, the kernel that calls it
+(checked: the caller's source names the helper, or the caller was built around it, as jones_harris'
+line searches are), on a chain that ends at a twinned kernel, and says why that comparison covers it.
+The walk covers every numba dispatcher defined in bearing_fmu.kernels.*, bearing_fmu_common and
+spindle.thermal.network, and fails naming each kernel without a twin or without a comparison test.
+"""
+
+import ast
+import importlib
+import inspect
+import pkgutil
+from pathlib import Path
+
+from numba.core.registry import CPUDispatcher
+
+import bearing_fmu.kernels
+import bearing_fmu_common
+import tests.reference
+
+TESTS = Path(__file__).resolve().parent.parent
+KERNEL_MODULES = (
+    [f"bearing_fmu.kernels.{m.name}" for m in pkgutil.iter_modules(bearing_fmu.kernels.__path__)]
+    + [f"bearing_fmu_common.{m.name}" for m in pkgutil.iter_modules(bearing_fmu_common.__path__)]
+    + ["spindle.thermal.network"]
+)
+JH = "bearing_fmu.kernels.jones_harris."
+# helper -> (twinned caller, why the caller's comparison covers it)
+COVERED_THROUGH = {
+    "bearing_fmu.kernels.hertz._radius_ratio_of_ellipticity": (
+        "bearing_fmu.kernels.hertz._ellipticity_exact_major",
+        "the printed relation Ry/Rx(k) that the bisection inverts; compared on a grid of Ry/Rx through the exact "
+        "coefficients",
+    ),
+    "bearing_fmu.kernels.hertz._ellipticity_exact_major": (
+        "bearing_fmu.kernels.hertz.hertz_coefficients_exact",
+        "the bisection for k returned by the exact coefficients (k is one of the compared values)",
+    ),
+    JH + "_kin_grad": (
+        JH + "_ball_eval",
+        "complex-step partials of kinematics (itself twinned); they steer the ball Newton whose solution is compared, "
+        "and the stiffness they build is checked against central differences (test_quasistatic.py)",
+    ),
+    JH + "_chain": (JH + "_ball_eval", "chain rule of three kinematic partials, inlined into the ball evaluation"),
+    JH + "_ball_eval": (JH + "_ball_newton", "the residual whose zero is the compared ball equilibrium"),
+    JH + "_unloaded_ball": (JH + "ball_equilibrium", "the ball-off-both-races branch (compared: balls lifted)"),
+    JH + "_static_ball": (JH + "ball_equilibrium", "the closed form at rest (compared: cases at rest)"),
+    JH + "_ball_start": (JH + "ball_equilibrium", "the Newton start; the compared solution does not depend on it"),
+    JH + "_ball_residual_at": (JH + "_ball_line_search", "one evaluation of the damped step"),
+    JH + "_ball_line_search": (JH + "_ball_newton", "the damping of the ball Newton"),
+    JH + "_ball_newton": (JH + "ball_equilibrium", "the iteration whose result is the compared ball equilibrium"),
+    JH + "_condense": (JH + "ball_equilibrium", "the condensed derivatives; checked through the stiffness"),
+    JH + "ball_outputs": (
+        JH + "solve_quasistatic",
+        "the per-ball rows, compared with the twin's balls after every solve (test_solution_matches_twin)",
+    ),
+    JH + "_global_newton": (JH + "solve_quasistatic", "the iteration whose result is the compared solution"),
+    JH + "_loads_residual_at": (JH + "_loads_line_search", "one evaluation of the damped step"),
+    JH + "_loads_line_search": (JH + "_global_newton", "the damping of the global Newton"),
+    JH + "_residual_norm": (JH + "_global_newton", "largest scaled load error: the compared solution's criterion"),
+    JH + "_mean_ball_load": (JH + "_global_newton", "load scale of the convergence test, a mean"),
+}
+
+
+def kernels():
+    """{qualified name: dispatcher} of every kernel defined in KERNEL_MODULES."""
+    found = {}
+    for name in KERNEL_MODULES:
+        module = importlib.import_module(name)
+        for attr, obj in vars(module).items():
+            if isinstance(obj, CPUDispatcher) and obj.py_func.__module__ == name:
+                found[f"{name}.{attr}"] = obj
+    return found
+
+
+def twins():
+    """{qualified kernel name: (twin module name, twin function name)} from the TWINS declarations."""
+    declared = {}
+    for info in pkgutil.iter_modules(tests.reference.__path__):
+        module = importlib.import_module(f"tests.reference.{info.name}")
+        if hasattr(module, "TWINS"):
+            for kernel_name, twin in module.TWINS.items():
+                assert twin.__module__ == module.__name__, f"{module.__name__}: twin of {kernel_name} is not its own"
+                declared[f"{module.KERNEL_MODULE}.{kernel_name}"] = (module.__name__, twin.__name__)
+    return declared
+
+
+def _references(tree):
+    """(aliases, per top-level name: the set of (module, attribute) it references and the local names it uses)."""
+    aliases = {}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom) and node.module:
+            for a in node.names:
+                aliases[a.asname or a.name] = (node.module, a.name)
+        elif isinstance(node, ast.Import):
+            for a in node.names:
+                aliases[a.asname or a.name] = (a.name, None)
+    tops = {}
+    for node in tree.body:
+        names = []
+        if isinstance(node, ast.FunctionDef):
+            names = [node.name]
+        elif isinstance(node, ast.Assign):
+            names = [t.id for t in node.targets if isinstance(t, ast.Name)]
+        for name in names:
+            tops[name] = node
+    refs = {}
+    for name, node in tops.items():
+        found, used = set(), set()
+        for sub in ast.walk(node):
+            if isinstance(sub, ast.Attribute) and isinstance(sub.value, ast.Name) and sub.value.id in aliases:
+                module, attr = aliases[sub.value.id]
+                found.add((f"{module}.{attr}" if attr else module, sub.attr))
+            elif isinstance(sub, ast.Name):
+                if sub.id in aliases and aliases[sub.id][1]:
+                    found.add(aliases[sub.id])
+                if sub.id in tops and sub.id != name:
+                    used.add(sub.id)
+        refs[name] = (found, used)
+    return refs
+
+
+def comparisons():
+    """The set of (module, name) pairs called together by some test, for every test function in tests/."""
+    pairs = set()
+    for path in TESTS.rglob("test_*.py"):
+        refs = _references(ast.parse(path.read_text()))
+        for name in refs:
+            if not name.startswith("test_"):
+                continue
+            seen, todo, reached = set(), [name], set()
+            while todo:
+                top = todo.pop()
+                if top not in seen:
+                    seen.add(top)
+                    reached |= refs[top][0]
+                    todo += refs[top][1]
+            pairs.add(frozenset(reached))
+    return pairs
+
+
+def test_every_kernel_has_a_twin_and_a_comparison_test():
+    all_kernels = kernels()
+    declared = twins()
+    reached_sets = comparisons()
+    no_twin, no_test = [], []
+    for name in all_kernels:
+        if name in COVERED_THROUGH:
+            continue
+        if name not in declared:
+            no_twin.append(name)
+            continue
+        module, attr = name.rsplit(".", 1)
+        wanted = {(module, attr), declared[name]}
+        if not any(wanted <= reached for reached in reached_sets):
+            no_test.append(f"{name} (twin {'.'.join(declared[name])})")
+    assert not no_twin, f"kernels without a twin (declare one in a TWINS table of tests/reference): {no_twin}"
+    assert not no_test, f"kernels whose twin no test calls together with them: {no_test}"
+    assert len(all_kernels) > 50  # the walk found the kernels (a wrong import path would find none)
+
+
+def test_covered_helpers_are_called_by_their_twinned_caller():
+    all_kernels = kernels()
+    declared = twins()
+    for helper, (caller, why) in COVERED_THROUGH.items():
+        assert helper in all_kernels, f"{helper} is no longer a kernel: remove it from COVERED_THROUGH"
+        assert why
+        end = caller
+        for _ in range(len(COVERED_THROUGH)):  # the chain of callers ends at a twinned kernel
+            end = COVERED_THROUGH[end][0] if end in COVERED_THROUGH else end
+        assert end in declared, f"{helper}: its chain of callers ends at {end}, which has no twin"
+        py_func = all_kernels[caller].py_func
+        built_around = any(cell.cell_contents is all_kernels[helper] for cell in py_func.__closure__ or ())
+        assert built_around or helper.rsplit(".", 1)[1] in inspect.getsource(py_func), (
+            f"{caller} does not call {helper}"
+        )
+        assert helper not in declared, f"{helper} has a twin: remove it from COVERED_THROUGH"

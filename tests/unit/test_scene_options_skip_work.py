@@ -1,0 +1,197 @@
+"""Scene options that are off are null submodels: their work is not done and their output slots are not written.
+
+The options reach the kernels as integer codes in the parameter arrays (CP_CAPACITANCE, CP_TORQUE,
+QS_STIFFNESS, B_CAPACITANCE). Each test
+- pre-fills the outputs with a NaN sentinel: the slots of an option that is off stay NaN, every other
+  slot equals (bit for bit) the run with the option on;
+- counts the work: the kernel's own source (``py_func``) runs as Python against counting wrappers of the
+  jitted callees that do the option's work (numba compiles calls to its module globals, so only the
+  Python run can be counted), and the callees are not called when the option is off.
+"""
+
+import math
+from collections import Counter
+
+import numpy as np
+import pytest
+
+from bearing_fmu.kernels import contacts as ck
+from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.kernels import radial_bearing as ak
+from bearing_fmu.models.analytic import AnalyticModel
+from bearing_fmu.models.quasi_static import QuasiStaticModel
+from bearing_fmu.scene import Scene
+
+RPM = 2.0 * math.pi / 60.0
+OMEGA = 10000 * RPM
+T_OIL = 323.15
+LOADS = np.array([1000.0, 0.0, 800.0, 0.0, 0.0])
+CAPACITANCE_OUT = (ck.CO_C_BEARING,)
+LOSS_OUT = (ck.CO_P_LOSS, ck.CO_Q_INNER_RING, ck.CO_Q_OUTER_RING, ck.CO_TORQUE) + tuple(
+    ck.CO_P_EHL + t for t in range(4)
+)
+
+
+def counting(monkeypatch, module, names, calls):
+    """Replace module.<name> by a wrapper that counts its calls and calls the jitted original."""
+    for name in names:
+        original = getattr(module, name)
+
+        def wrapper(*args, _name=name, _original=original):
+            calls[_name] += 1
+            return _original(*args)
+
+        monkeypatch.setattr(module, name, wrapper)
+
+
+@pytest.fixture(scope="module")
+def solved():
+    """A solved B7214C at 10 000 rpm with every option on: (model, balls)."""
+    scene = Scene(
+        name="all_on", fidelity="quasi_static", gyroscopic=True, torque=True, stiffness=True, capacitance=True
+    )
+    m = QuasiStaticModel("B7214C", "iso_vg68_mineral", scene)
+    m.evaluate(omega=OMEGA, T_oil=T_OIL, **dict(zip(("F_x", "F_y", "F_z", "M_x", "M_y"), LOADS)))
+    return m, m.balls.copy()
+
+
+def contacts_run(m, balls, cp, kernel=None):
+    out = np.full(ck.CO_SIZE, np.nan)
+    per_contact = np.full((ck.PC_SIZE, balls.shape[1]), np.nan)
+    (kernel or ck.contact_outputs)(OMEGA, T_OIL, cp, m.lubricant.array, balls, out, per_contact, np.zeros(4))
+    return out, per_contact
+
+
+def with_code(array, slot, value):
+    array = array.copy()
+    array[slot] = value
+    return array
+
+
+@pytest.mark.parametrize(
+    "option, out_slots, rows, work",
+    [
+        (ck.CP_CAPACITANCE, CAPACITANCE_OUT, (ck.PC_C_I, ck.PC_C_O), ("contact_permittivity", "contact_capacitance")),
+        (ck.CP_TORQUE, LOSS_OUT, (ck.PC_P_I, ck.PC_P_O), ("contact_losses", "friction_coefficient")),
+    ],
+    ids=["capacitance", "torque"],
+)
+def test_contact_submodel_off_skips_its_work(solved, monkeypatch, option, out_slots, rows, work):
+    m, balls = solved
+    on_out, on_pc = contacts_run(m, balls, with_code(m.cp, option, 1.0))
+    off_out, off_pc = contacts_run(m, balls, with_code(m.cp, option, 0.0))
+    assert not (np.any(np.isnan(on_out)) or np.any(np.isnan(on_pc)))  # every slot written
+    assert np.all(np.isnan(off_out[list(out_slots)])) and np.all(np.isnan(off_pc[list(rows)]))
+    others = [k for k in range(ck.CO_SIZE) if k not in out_slots]
+    kept = [r for r in range(ck.PC_SIZE) if r not in rows]
+    assert np.array_equal(off_out[others], on_out[others]) and np.array_equal(off_pc[kept], on_pc[kept])
+    for code, expect_work in ((0.0, False), (1.0, True)):
+        calls = Counter()
+        counting(monkeypatch, ck, work, calls)
+        out, _ = contacts_run(m, balls, with_code(m.cp, option, code), ck.contact_outputs.py_func)
+        assert (sum(calls.values()) > 0) == expect_work, (code, calls)
+        if expect_work:
+            assert np.array_equal(out, on_out)  # the Python run of the source computes what the kernel does
+        monkeypatch.undo()
+
+
+def solve(m, qs, control=None, d0=None):
+    Z = m.bearing.Z
+    d = np.zeros(5) if d0 is None else d0.copy()
+    X, F = np.zeros((2, Z)), np.zeros(5)
+    K = np.full((5, 5), np.nan)
+    balls = np.full((qk.BQ_SIZE, Z), np.nan)
+    control = m.control if control is None else control
+    status = qk.solve_quasistatic(LOADS, control, d, qs, 0.0, OMEGA, X, F, K, balls)
+    assert status[0] == qk.QS_OK
+    return d, X, F, K, balls
+
+
+@pytest.mark.parametrize("control", [(1, 1, 1, 1, 1), (0, 0, 0, 0, 0), (1, 1, 0, 1, 1)], ids=["load", "disp", "axial"])
+def test_stiffness_off_leaves_K_untouched(solved, control):
+    m, _ = solved
+    control = np.array(control, float)
+    d0 = np.array([2e-6, 0.0, 10e-6, 0.0, 1e-5])  # the imposed values of displacement-controlled DOFs
+    on = solve(m, with_code(m.qs, qk.QS_STIFFNESS, 1.0), control, d0)
+    off = solve(m, with_code(m.qs, qk.QS_STIFFNESS, 0.0), control, d0)
+    assert np.all(np.isfinite(on[3])) and np.all(np.isnan(off[3]))
+    for a, b in zip(on[:3] + on[4:], off[:3] + off[4:]):  # d, X, F, balls: identical
+        assert np.array_equal(a, b)
+
+
+@pytest.fixture
+def python_newton(monkeypatch):
+    """Run solve_quasistatic's Newton loop as Python, counting ring_loads (with its jacobian flag) and ball_outputs."""
+    calls = Counter()
+    for name in ("ring_loads", "ball_outputs"):
+        original = getattr(qk, name)
+
+        def wrapper(*args, _name=name, _original=original):
+            calls[_name] += 1
+            if _name == "ring_loads":
+                calls[f"jacobian={bool(args[-1])}"] += 1
+            return _original(*args)
+
+        monkeypatch.setattr(qk, name, wrapper)
+    monkeypatch.setattr(qk, "_global_newton", qk._global_newton.py_func)
+    monkeypatch.setattr(qk, "_loads_line_search", qk.line_search(qk._loads_residual_at.py_func).py_func)
+    return calls
+
+
+def test_stiffness_off_without_load_control_assembles_no_jacobian(solved, python_newton):
+    m, _ = solved
+    d = np.array([2e-6, 0.0, 10e-6, 0.0, 1e-5])
+    control = np.zeros(5)
+    for code in (0.0, 1.0):
+        python_newton.clear()
+        Z = m.bearing.Z
+        args = (d.copy(), with_code(m.qs, qk.QS_STIFFNESS, code), 0.0, OMEGA, np.zeros((2, Z)), np.zeros(5))
+        qk.solve_quasistatic.py_func(LOADS, control, *args, np.zeros((5, 5)), np.zeros((qk.BQ_SIZE, Z)))
+        assert python_newton["ring_loads"] == 1
+        assert python_newton[f"jacobian={code > 0.5}"] == 1, python_newton
+
+
+def test_per_ball_outputs_computed_once_after_convergence(solved, python_newton):
+    m, _ = solved
+    Z = m.bearing.Z
+    d, X, F, K, balls = np.zeros(5), np.zeros((2, Z)), np.zeros(5), np.zeros((5, 5)), np.zeros((qk.BQ_SIZE, Z))
+    status, iterations, _ = qk.solve_quasistatic.py_func(LOADS, m.control, d, m.qs, 0.0, OMEGA, X, F, K, balls)
+    assert status == qk.QS_OK and iterations >= 3
+    assert python_newton["ring_loads"] >= iterations + 1  # one load evaluation per iteration at least
+    assert python_newton["ball_outputs"] == 1
+    # and they are those of the solution: the compiled solve from the same start gives the same rows
+    reference = solve(m, m.qs, m.control)
+    assert np.array_equal(balls, reference[4]) and np.array_equal(d, reference[0])
+
+
+def test_analytic_capacitance_off_skips_its_work(monkeypatch):
+    on = AnalyticModel("6208", "guessasma_oil", Scene(capacitance=True))
+    off = AnalyticModel("6208", "guessasma_oil", Scene(capacitance=False))
+    assert on.brg[ak.B_CAPACITANCE] == 1.0 and off.brg[ak.B_CAPACITANCE] == 0.0
+
+    def run(m, kernel=ak.analytic_bearing):
+        out = np.full(ak.O_SIZE, np.nan)
+        ball = np.full((8, m.bearing.Z), np.nan)
+        kernel(700.0, 3000.0, 313.0, m.brg, m.lubricant.array, m.nodes, m.weights, out, ball)
+        return out, ball
+
+    on_out, on_ball = run(on)
+    off_out, off_ball = run(off)
+    assert not (np.any(np.isnan(on_out)) or np.any(np.isnan(on_ball)))  # all written (unloaded: Lambda = inf)
+    assert np.isnan(off_out[ak.O_C_BEARING]) and np.all(np.isnan(off_ball[6:8]))
+    others = [k for k in range(ak.O_SIZE) if k != ak.O_C_BEARING]
+    assert np.array_equal(off_out[others], on_out[others]) and np.array_equal(off_ball[:6], on_ball[:6])
+    for m, expect_work in ((off, False), (on, True)):
+        calls = Counter()
+        counting(monkeypatch, ak, ("contact_permittivity", "contact_capacitance", "ball_capacitance"), calls)
+        run(m, ak.analytic_bearing.py_func)
+        assert (sum(calls.values()) > 0) == expect_work, calls
+        monkeypatch.undo()
+
+
+def test_facade_packs_the_option_codes():
+    for flags in ((True, True, True), (False, False, False), (True, False, True)):
+        cap, tor, stf = flags
+        scene = Scene(name="codes", fidelity="quasi_static", capacitance=cap, torque=tor, stiffness=stf)
+        m = QuasiStaticModel("6208", "iso_vg68_mineral", scene)
+        assert (m.cp[ck.CP_CAPACITANCE], m.cp[ck.CP_TORQUE], m.qs[qk.QS_STIFFNESS]) == tuple(map(float, flags))
