@@ -18,8 +18,8 @@ from pathlib import Path
 
 from pythonfmu.builder import FmuBuilder
 
-from .fmu import DEFAULT_FIXED_PRELOAD
 from .models.analytic import AnalyticModel
+from .models.declarations import DEFAULT_FIXED_PRELOAD
 from .models.quasi_static import QuasiStaticModel
 from .scene import Scene
 

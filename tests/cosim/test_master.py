@@ -20,7 +20,6 @@ import numpy as np
 import pytest
 
 from bearing_fmu.build import SCENES_DIR
-from bearing_fmu.fmu import INPUT_START
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
 from spindle.cosim.master import Master, MasterError, run
@@ -165,7 +164,7 @@ def hand_cosimulation(algorithm, step, n_steps):
     connected input its source's start value, exits all; each step every instance takes the outputs
     of t_n."""
     bearing = QuasiStaticModel(scene=Scene.from_toml(SCENES_DIR / "quasi_static.toml"))
-    b_in = {v.name: INPUT_START.get(v.name, 0.0) for v in bearing.inputs}
+    b_in = {v.name: v.start for v in bearing.inputs}
     b_start = bearing.evaluate(**b_in)  # instantiation
     probe = SpindleThermalModel(axial_float=False)
     s_in = {v.name: (T_START if v.unit == "K" else 0.0) for v in probe.inputs}
