@@ -156,27 +156,33 @@ def stiffness_name(i, j):
     return f"K[{i + 1},{j + 1}]"
 
 
+def _dof_outputs():
+    """Per DOF, in DOF order: its equilibrium value where it is load-controlled, its reaction where imposed."""
+    out = []
+    for i in range(5):
+        out.append(
+            Variable(
+                DOF_NAMES[i],
+                DOF_UNITS[i],
+                f"{DOF_WORDS[i]} of the inner ring at equilibrium",
+                drives=_drives(i, 1),
+                source=("d", i),
+            )
+        )
+        out.append(
+            Variable(
+                LOAD_NAMES[i],
+                LOAD_UNITS[i],
+                f"reaction: {LOAD_WORDS[i]} the balls exert (= the load needed to hold the imposed position)",
+                drives=_drives(i, 0),
+                source=("F", i),
+            )
+        )
+    return out
+
+
 QUASI_STATIC_OUTPUTS = (
-    *(
-        Variable(
-            name,
-            unit,
-            f"{words} of the inner ring at equilibrium",
-            drives=_drives(i, 1),
-            source=("d", i),
-        )
-        for i, (name, unit, words) in enumerate(zip(DOF_NAMES, DOF_UNITS, DOF_WORDS))
-    ),
-    *(
-        Variable(
-            name,
-            unit,
-            f"reaction: {words} the balls exert (= the load needed to hold the imposed position)",
-            drives=_drives(i, 0),
-            source=("F", i),
-        )
-        for i, (name, unit, words) in enumerate(zip(LOAD_NAMES, LOAD_UNITS, LOAD_WORDS))
-    ),
+    *_dof_outputs(),
     *(
         Variable(
             stiffness_name(i, j),

@@ -24,7 +24,6 @@ from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
 from spindle.cosim.master import Master, MasterError, run
 from spindle.cosim.runfile import RunFileError, parse_run
-from spindle.thermal.fmu import T_START
 from spindle.thermal.model import SpindleThermalModel
 
 OMEGA = 1047.1975511965977  # rad/s, 10 000 rpm (runs/closed_loop_spring.toml)
@@ -167,7 +166,7 @@ def hand_cosimulation(algorithm, step, n_steps):
     b_in = {v.name: v.start for v in bearing.inputs}
     b_start = bearing.evaluate(**b_in)  # instantiation
     probe = SpindleThermalModel(axial_float=False)
-    s_in = {v.name: (T_START if v.unit == "K" else 0.0) for v in probe.inputs}
+    s_in = {v.name: v.start for v in probe.inputs}
     s_start = probe.initialize(**s_in)  # instantiation
 
     def to_bearing(s_out):
@@ -287,7 +286,7 @@ def test_limit_stops_the_run_with_its_message(spindle_thermal_fmu):
         ],
     }
     model = SpindleThermalModel(axial_float=False)
-    inputs = {v.name: (T_START if v.unit == "K" else 0.0) for v in model.inputs}
+    inputs = {v.name: v.start for v in model.inputs}
     inputs.update(SPINDLE_INPUTS, **heat)
     temperatures = [model.initialize(**inputs)["T_inner_ring_1"]]
     while temperatures[-1] <= T_max:

@@ -32,7 +32,7 @@ import pytest
 from fmpy import read_model_description
 from fmpy.validation import validate_fmu
 
-from spindle.thermal.fmu import T_START
+from spindle.thermal.declarations import T_START
 from spindle.thermal.model import SpindleThermalModel
 from tests.fmu.harness import opened
 
@@ -106,8 +106,8 @@ AXIAL_STEPS = [
 
 
 def start_inputs(model):
-    """The FMU's input start values (spindle/thermal/fmu.py: T_START for temperatures, 0 otherwise)."""
-    return {v.name: (T_START if v.unit == "K" else 0.0) for v in model.inputs}
+    """The FMU's input start values (spindle/thermal/declarations.py: T_START for temperatures, 0 otherwise)."""
+    return {v.name: v.start for v in model.inputs}
 
 
 @pytest.mark.parametrize(
