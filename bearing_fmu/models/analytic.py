@@ -144,7 +144,7 @@ class AnalyticModel:
             values[target] = source[index]
         values[slot["y"]] = sign * out[ak.O_DELTA_R]
         values[slot["epsilon"]] = min(max(out[ak.O_EPS], -EPSILON_CAP), EPSILON_CAP)
-        if not np.isfinite(values).all():
+        if not math.isfinite(values.sum()) and not np.isfinite(values).all():  # NaN and inf propagate into a sum
             k = int(np.argmin(np.isfinite(values)))
             raise InputError(
                 f"output {self.output_names[k]} is not finite ({values[k]}) for omega = {omega} rad/s, "

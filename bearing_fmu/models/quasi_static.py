@@ -360,7 +360,7 @@ class QuasiStaticModel:
         result[omega_cage] = cage
         result[omega_ball] = math.copysign(spin_fixed, omega) if omega else 0.0
         result[iterations] = self.status[1]
-        if not np.isfinite(result).all():
+        if not math.isfinite(result.sum()) and not np.isfinite(result).all():  # NaN and inf propagate into a sum
             k = int(np.argmin(np.isfinite(result)))
             shown = ", ".join(f"{v.name} = {values[v.name]:.6g}" for v in self.inputs)
             raise SolverError(
