@@ -5,6 +5,7 @@ pythonfmu 0.7 writes no units; FMI 2.0 wants a `unit` attribute on each Real and
 in <UnitDefinitions> by its SI base-unit exponents.
 """
 
+from operator import itemgetter
 from xml.etree.ElementTree import Element, SubElement
 
 from pythonfmu import Boolean, Fmi2Causality, Fmi2Initial, Fmi2Slave, Fmi2Variability, Integer, Real, String
@@ -119,6 +120,7 @@ class DeclaredSlave(Fmi2Slave):
         self._u = [float(var.start) for var in inputs]
         self._y = [0.0] * len(outputs)
         self._input_slot, self._real_slot, self._integer_slot = {}, {}, {}
+        self._readers = {}  # tuple of Real value references -> reader (see _reader)
         for k, var in enumerate(inputs):
             fmi_var = input_variable(
                 var.name,
@@ -143,10 +145,25 @@ class DeclaredSlave(Fmi2Slave):
             self.register_variable(fmi_var)
             (self._integer_slot if integer else self._real_slot)[fmi_var.value_reference] = k
 
+    def _reader(self, vrs, slots):
+        """A function y -> [y[slot] for the value references vrs], cached per tuple of references (a
+        master asks for the same list every step); KeyError if one of them is not in `slots`."""
+        key = tuple(vrs)
+        reader = self._readers.get(key)
+        if reader is None:
+            indices = [slots[vr] for vr in vrs]
+            if len(indices) == 1:
+                k = indices[0]
+                reader = lambda y: [y[k]]
+            else:
+                pick = itemgetter(*indices)
+                reader = lambda y: list(pick(y))
+            self._readers[key] = reader
+        return reader
+
     def get_real(self, vrs):
-        y, slot = self._y, self._real_slot
         try:
-            return [y[slot[vr]] for vr in vrs]
+            return self._reader(vrs, self._real_slot)(self._y)
         except KeyError:  # not only Real outputs: the general path
             return super().get_real(vrs)
 

@@ -9,11 +9,13 @@ solver's arrays; none = computed by the facade).
 
 Source arrays: "out" is the kernel's output array (radial_bearing.O_* for the analytic fidelity,
 contacts.CO_* for the quasi-static one); "d", "F" and "K" are the quasi-static solver's
-displacements, reactions and stiffness matrix (K flattened row by row).
+displacements, reactions and stiffness matrix (K flattened row by row); "ball_set" is the summary of
+the ball set (bearing_outputs.BS_*: most loaded ball, cage speed, iterations).
 """
 
 from bearing_fmu_common.variables import Variable
 
+from ..kernels import bearing_outputs as bo
 from ..kernels import contacts as ck
 from ..kernels import radial_bearing as ak
 
@@ -228,12 +230,24 @@ QUASI_STATIC_OUTPUTS = (
     Variable(
         "p_max", "Pa", "largest Hertz contact pressure (warning logged above 4.2 GPa)", source=("out", ck.CO_PMAX)
     ),
-    Variable("alpha_inner", "rad", "inner contact angle of the most loaded ball"),
-    Variable("alpha_outer", "rad", "outer contact angle of the most loaded ball"),
-    Variable("omega_cage", "rad/s", "cage speed: orbital speed of the balls, mean weighted by inner load"),
-    Variable("omega_ball", "rad/s", "ball angular speed in the fixed frame (most loaded ball, sign of omega)"),
+    Variable("alpha_inner", "rad", "inner contact angle of the most loaded ball", source=("ball_set", bo.BS_ALPHA_I)),
+    Variable("alpha_outer", "rad", "outer contact angle of the most loaded ball", source=("ball_set", bo.BS_ALPHA_O)),
+    Variable(
+        "omega_cage",
+        "rad/s",
+        "cage speed: orbital speed of the balls, mean weighted by inner load",
+        source=("ball_set", bo.BS_CAGE),
+    ),
+    Variable(
+        "omega_ball",
+        "rad/s",
+        "ball angular speed in the fixed frame (most loaded ball, sign of omega)",
+        source=("ball_set", bo.BS_BALL),
+    ),
     Variable("n_loaded", "1", "number of balls loaded on both races", "integer", source=("out", ck.CO_N_LOADED)),
-    Variable("iterations", "1", "Newton iterations of the last solve", "integer"),
+    Variable(
+        "iterations", "1", "Newton iterations of the last solve", "integer", source=("ball_set", bo.BS_ITERATIONS)
+    ),
 )
 
 QUASI_STATIC_PARAMETERS = (

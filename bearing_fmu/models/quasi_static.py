@@ -10,8 +10,9 @@ import math
 
 import numpy as np
 
-from bearing_fmu_common.variables import gather_plan, select
+from bearing_fmu_common.variables import select
 
+from ..kernels import bearing_outputs as bo
 from ..kernels import contacts as ck
 from ..kernels import jones_harris as qk
 from ..kernels.geometry import ball_mass, curvature_radii, free_contact_angle
@@ -140,13 +141,14 @@ class QuasiStaticModel:
         self.outputs = select(QUASI_STATIC_OUTPUTS, self.scene)
         self.output_names = tuple(v.name for v in self.outputs)
         self.values = np.zeros(len(self.outputs))  # outputs of the last evaluation, in self.outputs order
-        arrays = {"out": self.out, "d": self.d, "F": self.F, "K": self.K.reshape(-1)}
-        self._gather = gather_plan(self.outputs, arrays)
-        self._computed = tuple(
-            self.output_names.index(name)
-            for name in ("alpha_inner", "alpha_outer", "omega_cage", "omega_ball", "iterations")
-        )
+        # where each output slot comes from, as the codes of kernels.bearing_outputs
+        codes = {"out": bo.SRC_OUT, "d": bo.SRC_D, "F": bo.SRC_F, "K": bo.SRC_K, "ball_set": bo.SRC_BALL_SET}
+        self._source = np.array([codes[v.source[0]] for v in self.outputs], dtype=np.int64)
+        self._index = np.array([v.source[1] for v in self.outputs], dtype=np.int64)
+        self._K_flat = self.K.reshape(-1)  # a view: the solver writes K in place
+        self._summary = np.zeros(bo.BS_SIZE)
         self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
+        self._load_controlled = tuple(bool(c) for c in self.control)  # per DOF, as plain booleans
 
     # -- set-up --------------------------------------------------------------------------------
     def _pack(self):
@@ -248,7 +250,7 @@ class QuasiStaticModel:
         check_speed(values["omega"], self.omega_max)
         check_oil_temperature(values["T_oil"])
         for i in range(5):
-            if self.control[i]:
+            if self._load_controlled[i]:
                 name = LOAD_NAMES[i]
                 if not math.isfinite(values[name]):
                     raise InputError(f"{name} = {values[name]} {LOAD_UNITS[i]} is not a finite number")
@@ -296,9 +298,10 @@ class QuasiStaticModel:
         values = dict(zip(self.input_names, u))
         self.check_inputs(values)
         omega = float(values["omega"])
-        applied = np.array([float(values[n]) if self.control[i] else 0.0 for i, n in enumerate(LOAD_NAMES)])
+        controlled = self._load_controlled
+        applied = np.array([float(values[n]) if controlled[i] else 0.0 for i, n in enumerate(LOAD_NAMES)])
         for i in range(5):
-            if not self.control[i]:
+            if not controlled[i]:
                 self.d[i] = float(values[DOF_NAMES[i]])
         if not self.control[2]:
             self.d[2] += self.z0 + float(values.get("dz_thermal", 0.0))
@@ -343,30 +346,28 @@ class QuasiStaticModel:
 
     def _collect(self, omega, values):
         """Fill self.values from the solver's and the contact kernel's arrays (declaration order)."""
-        out, balls = self.out, self.balls
+        out = self.out
         self.warnings = pressure_warnings(out[ck.CO_PMAX], "the loads")
-        q_i = balls[qk.BQ_Q_I]
-        total = q_i.sum()  # contact loads are >= 0: some ball is loaded on the inner race iff total > 0
-        j = int(q_i.argmax()) if total > 0.0 else int(balls[qk.BQ_Q_O].argmax())
-        w_m, w_R, beta = balls[qk.BQ_W_M, j], balls[qk.BQ_W_R, j], balls[qk.BQ_BETA, j]
-        spin_fixed = math.hypot(w_R * math.cos(beta) + w_m, w_R * math.sin(beta))
-        cage = float(np.dot(q_i, balls[qk.BQ_W_M]) / total) if total > 0.0 else float(balls[qk.BQ_W_M].mean())
-        result = self.values
-        for source, index, target in self._gather:
-            result[target] = source[index]
-        alpha_i, alpha_o, omega_cage, omega_ball, iterations = self._computed
-        result[alpha_i] = balls[qk.BQ_A_I, j]
-        result[alpha_o] = balls[qk.BQ_A_O, j]
-        result[omega_cage] = cage
-        result[omega_ball] = math.copysign(spin_fixed, omega) if omega else 0.0
-        result[iterations] = self.status[1]
-        if not math.isfinite(result.sum()) and not np.isfinite(result).all():  # NaN and inf propagate into a sum
-            k = int(np.argmin(np.isfinite(result)))
+        bad = bo.quasi_static_outputs(
+            self.balls,
+            omega,
+            int(self.status[1]),
+            out,
+            self.d,
+            self.F,
+            self._K_flat,
+            self._source,
+            self._index,
+            self._summary,
+            self.values,
+        )
+        if bad >= 0:
             shown = ", ".join(f"{v.name} = {values[v.name]:.6g}" for v in self.inputs)
             raise SolverError(
-                f"output {self.output_names[k]} is not finite ({result[k]}) for {shown}: please report this case"
+                f"output {self.output_names[bad]} is not finite ({self.values[bad]}) for {shown}: "
+                f"please report this case"
             )
-        return result
+        return self.values
 
     # -- state (FMU get/set state, rollback) ---------------------------------------------------
     def get_state(self):
