@@ -1,4 +1,4 @@
-"""spindle.cosim.master and spindle.cosim.runfile: the fmpy co-simulation master (SPEC 6).
+"""spindle.cosim.master and spindle.cosim.runfile: the fmpy co-simulation master (docs/architecture.md, master).
 
 Expectations come from the master's documented algorithm (spindle/cosim/master.py docstring) and, for
 the coupled runs, from the Python models driven by hand with the same algorithm: the FMUs run the
@@ -256,7 +256,7 @@ def clock_doc(clock, **run):
 
 @pytest.mark.parametrize("start", [0.0, 1.0])
 def test_time_is_start_plus_n_h_from_an_integer_counter(start, clock_fmu):
-    """SPEC 6: t_n = start + n H from an integer step counter. Checked on the recorded times and on the
+    """t_n = start + n H from an integer step counter. Checked on the recorded times and on the
     currentCommunicationPoint each doStep receives: both are exactly start + n*H in floating point,
     which accumulating H would not give (the last assertion shows the difference exists)."""
     H, n = 0.1, 30
