@@ -298,6 +298,19 @@ def _axial(section, node_index, n_bearings, where):
     return out
 
 
+def _admissible(unit):
+    """(test, allowed range as text) of an input of this unit (the range is written only for a message)."""
+    if unit == "W":
+        return (lambda x: math.isfinite(x) and abs(x) <= HEAT_MAX), f"[{-HEAT_MAX:g}, {HEAT_MAX:g}] W"
+    if unit == "K":
+        return (lambda x: math.isfinite(x) and 0.0 < x <= T_MAX), f"]0, {T_MAX:g}] K"
+    if unit == "rad/s":
+        return (lambda x: math.isfinite(x) and abs(x) <= OMEGA_MAX), f"[{-OMEGA_MAX:g}, {OMEGA_MAX:g}] rad/s"
+    if unit == "N/m":
+        return (lambda x: math.isfinite(x) and x >= 0.0), "[0, inf[ N/m (finite)"
+    return math.isfinite, f"finite {unit}"
+
+
 # --------------------------------------------------------------------------------------------- model
 class SpindleThermalModel:
     """Lumped thermal spindle (docs/spindle_thermal.md): temperatures, clearance and axial-interference changes.
@@ -334,6 +347,11 @@ class SpindleThermalModel:
         self.output_names = tuple(v.name for v in self.outputs)
         self.values = np.zeros(len(self.outputs))  # outputs at the current state, in self.outputs order
         self._slot = {name: k for k, name in enumerate(self.output_names)}
+        self._checks = [(v.name, v.unit, *_admissible(v.unit)) for v in self.inputs]
+        self._bearing_slots = [
+            tuple(self._slot[f"{kind}_{k}"] for kind in ("T_inner_ring", "T_outer_ring", "T_oil", "dPd_thermal"))
+            for k in range(1, len(net.bearings) + 1)
+        ]
         self._defaults = {v.name: (net.T_ref if v.unit == "K" else 0.0) for v in self.inputs}
         self._u = dict(self._defaults)
         self._cache_omega = None
@@ -386,20 +404,10 @@ class SpindleThermalModel:
                 u[name] = float(value)
             except (TypeError, ValueError):
                 raise SpindleInputError(f"{name} = {value!r} is not a number") from None
-        for v in self.inputs:
-            x = u[v.name]
-            if v.unit == "W":
-                ok, allowed = math.isfinite(x) and abs(x) <= HEAT_MAX, f"[{-HEAT_MAX:g}, {HEAT_MAX:g}] W"
-            elif v.unit == "K":
-                ok, allowed = math.isfinite(x) and 0.0 < x <= T_MAX, f"]0, {T_MAX:g}] K"
-            elif v.unit == "rad/s":
-                ok, allowed = math.isfinite(x) and abs(x) <= OMEGA_MAX, f"[{-OMEGA_MAX:g}, {OMEGA_MAX:g}] rad/s"
-            elif v.unit == "N/m":
-                ok, allowed = math.isfinite(x) and x >= 0.0, "[0, inf[ N/m (finite)"
-            else:
-                ok, allowed = math.isfinite(x), f"finite {v.unit}"
-            if not ok:
-                raise SpindleInputError(f"{v.name} = {x} {v.unit} is outside the allowed range {allowed}")
+        for name, unit, admissible, allowed in self._checks:
+            x = u[name]
+            if not admissible(x):
+                raise SpindleInputError(f"{name} = {x} {unit} is outside the allowed range {allowed}")
         return u
 
     def _vectors(self, u):
@@ -464,8 +472,8 @@ class SpindleThermalModel:
             T = nk.exponential_step(self.T, T_ss, op["sqrt_c"], op["V"], op["lam"], float(h))
         else:
             T = nk.implicit_euler_step(self.net.C, op["L"], f, self.T, float(h), self.substeps)
-        bad = np.flatnonzero(~(np.isfinite(T) & (T > 0.0)))
-        if bad.size:
+        if not (T.min() > 0.0 and T.max() < math.inf):  # a NaN fails both comparisons
+            bad = np.flatnonzero(~(np.isfinite(T) & (T > 0.0)))
             raise SpindleInputError(
                 f"node {self.net.nodes[bad[0]]} would reach T = {T[bad[0]]} K (non-physical) "
                 f"with these heat inputs; state left unchanged"
@@ -531,13 +539,13 @@ class SpindleThermalModel:
         op = self._operator(omega)
         Tb = np.array([u[name] for name in net.boundary_inputs])
         values[: len(net.nodes)] = T  # the node temperatures come first (declarations)
-        for k, b in enumerate(net.bearings, start=1):
-            values[slot[f"T_inner_ring_{k}"]] = T[b["inner_ring"]]
-            values[slot[f"T_outer_ring_{k}"]] = T[b["outer_ring"]]
-            values[slot[f"T_oil_{k}"]] = T[b["ball_oil"]]
+        for b, (inner, outer, oil, dPd) in zip(net.bearings, self._bearing_slots):
+            values[inner] = T[b["inner_ring"]]
+            values[outer] = T[b["outer_ring"]]
+            values[oil] = T[b["ball_oil"]]
             r = 0.5 * b["d_i"]
             u_c = nk.centrifugal_radial_growth(b["rho"], b["E"], b["nu"], omega, b["a"], r, r)
-            values[slot[f"dPd_thermal_{k}"]] = nk.clearance_change(
+            values[dPd] = nk.clearance_change(
                 net.alpha_bearing,
                 b["d_i"],
                 b["d_o"],
