@@ -46,11 +46,22 @@ from fmpy.fmi2 import (
     fmi2CallbackFreeMemoryTYPE,
     fmi2CallbackFunctions,
     fmi2CallbackLoggerTYPE,
+    fmi2Integer,
+    fmi2Real,
+    fmi2True,
+    fmi2ValueReference,
 )
 
 from .runfile import split_name
 
 STATUS_NAMES = {0: "OK", 1: "Warning", 2: "Discard", 3: "Error", 4: "Fatal", 5: "Pending"}
+# FMI types read and written every step through the FMU's own functions with preallocated ctypes
+# arrays (the values are the ones fmpy's getReal/setReal would pass: same C calls, same conversions)
+BATCHED = {
+    "Real": ("fmi2GetReal", "fmi2SetReal", fmi2Real),
+    "Integer": ("fmi2GetInteger", "fmi2SetInteger", fmi2Integer),
+    "Enumeration": ("fmi2GetInteger", "fmi2SetInteger", fmi2Integer),
+}
 # FMI type -> (FMU2Slave getter, setter, Python conversion); enumerations travel as integers
 ACCESSORS = {
     "Real": ("getReal", "setReal", float),
@@ -78,6 +89,7 @@ class RunResult:
     setup_time: float = 0.0  # s, extraction + instantiation + initialisation
     rejected_steps: int = 0
     log: list = field(default_factory=list)
+    cpu_time: float = 0.0  # s, this process's CPU time for the stepping (not lengthened by other processes)
 
     def write_csv(self, path):
         """CSV with a header 'name [unit]' and one row per communication point (repr floats)."""
@@ -108,6 +120,7 @@ class Instance:
             guid=md.guid, unzipDirectory=unzip_dir, modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name
         )
         self.slave.instantiate(callbacks=self._callbacks, loggingOn=True)
+        self._do_step = self._checked("fmi2DoStep")
         self.cache = {}  # output name -> last value read
         self._reads = []  # (getter, names, value references) read into the cache at each refresh
 
@@ -146,16 +159,56 @@ class Instance:
             setter, convert = self._accessor(v.type, "set")
             self.call(f"set {name} = {value!r}", setter, [v.valueReference], [convert(value)])
 
+    def _checked(self, function):
+        """The FMU's C function `function` (fmi2...), raising FMICallException on Discard or worse
+        as fmpy's wrappers do (a Warning passes)."""
+        raw = self.slave._functions[function]
+        component = self.slave.component
+
+        def call(*args):
+            status = raw(component, *args)
+            if status > 1:
+                raise FMICallException(function=function, status=status)
+
+        return call
+
+    def batch_reader(self, kind, vrs):
+        """A function returning the current values of the variables vrs (all of FMI type `kind`)."""
+        if kind not in BATCHED:
+            getter = self._accessor(kind, "get")[0]
+            return lambda: getter(vrs)
+        function, _, ctype = BATCHED[kind]
+        call, n = self._checked(function), len(vrs)
+        refs, buffer = (fmi2ValueReference * n)(*vrs), (ctype * n)()
+
+        def read():
+            call(refs, n, buffer)
+            return buffer[:]
+
+        return read
+
+    def batch_writer(self, kind, vrs):
+        """A function setting the variables vrs (all of FMI type `kind`) to a list of values."""
+        if kind not in BATCHED:
+            setter = self._accessor(kind, "set")[0]
+            return lambda values: setter(vrs, values)
+        function, ctype = BATCHED[kind][1], BATCHED[kind][2]
+        call, n = self._checked(function), len(vrs)
+        refs, array = (fmi2ValueReference * n)(*vrs), ctype * n
+        return lambda values: call(refs, n, array(*values))
+
     def setter_plan(self, names):
-        """Batches that set these variables, resolved once: [(setter, convert, value references,
-        positions in `names`)], one batch per FMI type."""
+        """Batches that set these variables, resolved once: [(writer, convert, positions in `names`)],
+        one batch per FMI type."""
         by_type = {}
         for k, name in enumerate(names):
             v = self.var(name)
             by_type.setdefault(v.type, ([], []))
             by_type[v.type][0].append(v.valueReference)
             by_type[v.type][1].append(k)
-        return [(*self._accessor(kind, "set"), vrs, positions) for kind, (vrs, positions) in by_type.items()]
+        return [
+            (self.batch_writer(kind, vrs), ACCESSORS[kind][2], positions) for kind, (vrs, positions) in by_type.items()
+        ]
 
     def watch(self, names):
         """Read these outputs into the cache at every refresh(): one call per FMI type, value
@@ -165,14 +218,18 @@ class Instance:
             v = self.var(name)
             by_type.setdefault(v.type, []).append(name)
         self._reads = [
-            (self._accessor(kind, "get")[0], ns, [self.variables[n].valueReference for n in ns])
+            (self.batch_reader(kind, [self.variables[n].valueReference for n in ns]), ns)
             for kind, ns in by_type.items()
         ]
 
     def refresh(self):
         cache = self.cache
-        for getter, names, vrs in self._reads:
-            cache.update(zip(names, self.call("get outputs", getter, vrs)))
+        for read, names in self._reads:
+            cache.update(zip(names, self.call("get outputs", read)))
+
+    def do_step(self, t, h):
+        """fmi2DoStep(t, h) (raises FMICallException on Discard or worse)."""
+        self._do_step(t, h, fmi2True)
 
     def start_value(self, name):
         """The variable's current value read from the FMU (its start value before any step)."""
@@ -259,8 +316,8 @@ class Master:
         for name, links in self.links.items():
             sources = [(self.instances[s], s_var) for s, s_var, _ in links]
             self._transfers[name] = [
-                (setter, convert, vrs, [sources[k] for k in positions])
-                for setter, convert, vrs, positions in self.instances[name].setter_plan([t for _, _, t in links])
+                (writer, convert, [sources[k] for k in positions])
+                for writer, convert, positions in self.instances[name].setter_plan([t for _, _, t in links])
             ]
         self._record = [(q, self.instances[split_name(q)[0]], split_name(q)[1]) for q in self.recorded]
         self._limits = [
@@ -314,11 +371,11 @@ class Master:
     # -- stepping --------------------------------------------------------------------------------
     def _transfer(self, name):
         inst = self.instances[name]
-        for setter, convert, vrs, sources in self._transfers[name]:
-            inst.call("set connected inputs", setter, vrs, [convert(src.cache[var]) for src, var in sources])
+        for writer, convert, sources in self._transfers[name]:
+            inst.call("set connected inputs", writer, [convert(src.cache[var]) for src, var in sources])
 
     def _do_step(self, inst, t, h):
-        inst.call(lambda: f"doStep at t = {t:.9g} s, h = {h:.9g} s", inst.slave.doStep, t, h)
+        inst.call(lambda: f"doStep at t = {t:.9g} s, h = {h:.9g} s", inst.do_step, t, h)
 
     def _macro_step(self, t, h):
         """One communication step of the coupled system from t to t + h."""
@@ -392,7 +449,7 @@ class Master:
         if message:
             status = "limit"
         bar = _Progress(n_steps, progress)
-        t_wall = wallclock.perf_counter()
+        t_wall, t_cpu = wallclock.perf_counter(), wallclock.process_time()
         for n in range(n_steps if status == "ok" else 0):
             t = spec.start + n * spec.step
             if spec.rollback:
@@ -407,7 +464,7 @@ class Master:
             if message:
                 status = "limit"
                 break
-        wall = wallclock.perf_counter() - t_wall
+        wall, cpu = wallclock.perf_counter() - t_wall, wallclock.process_time() - t_cpu
         bar.close()
         columns = {"time": np.array(times)}
         for q in self.recorded:
@@ -417,7 +474,7 @@ class Master:
             inst, var = split_name(q)
             units[q] = getattr(self.instances[inst].variables[var], "unit", None) or "1"
         log = [f"{n}: {line}" for n, i in self.instances.items() for line in i.log]
-        return RunResult(columns, units, status, message, wall, setup, rejected, log)
+        return RunResult(columns, units, status, message, wall, setup, rejected, log, cpu)
 
     def close(self):
         for inst in self.instances.values():
