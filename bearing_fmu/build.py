@@ -4,7 +4,9 @@ Each FMU carries the `bearing_fmu` package in resources/ so that only numpy and 
 in the importing interpreter. At load time a small generated entry script copies the bundled
 package once to a stable per-version directory (~/.cache/bearing_fmu/<hash>, or $BEARING_FMU_CACHE)
 and imports it from there: numba's on-disk cache is keyed on the source path, so a stable path
-makes the cache hit across processes and across fmpy's fresh temporary extractions (SPEC 3).
+makes the cache hit across processes and across fmpy's fresh temporary extractions.
+Next to each FMU go its scene file, a reference result (<Name>_ref.csv) and its variable list
+(<Name>.md), generated from the declarations in bearing_fmu/models/declarations.py.
 """
 
 import argparse
@@ -18,8 +20,10 @@ from pathlib import Path
 
 from pythonfmu.builder import FmuBuilder
 
-from .fmu import DEFAULT_FIXED_PRELOAD
+from bearing_fmu_common.variables import select
+
 from .models.analytic import AnalyticModel
+from .models.declarations import DEFAULT_FIXED_PRELOAD
 from .models.quasi_static import QuasiStaticModel
 from .scene import Scene
 
@@ -153,7 +157,80 @@ def build_fmu(scene_file, out_dir=DEFAULT_OUT):
     out_dir = Path(out_dir)
     shutil.copy2(scene_file, out_dir / f"{fmu_name}_scene.toml")
     write_reference(scene_dict, out_dir / f"{fmu_name}_ref.csv")
+    write_if_changed(out_dir / f"{fmu_name}.md", variables_markdown(*scene_variables(scene_file)))
     return Path(path)
+
+
+# -- variable lists (fmus/<Name>.md), generated from the declarations -----------------------------------
+FMI_TYPES = {"real": "Real", "integer": "Integer", "boolean": "Boolean", "string": "String"}
+
+
+def write_if_changed(path, text):
+    """Write text to path unless the file already holds exactly that (a build leaves tracked files alone)."""
+    path = Path(path)
+    if not path.is_file() or path.read_text() != text:
+        path.write_text(text)
+
+
+def _toml_value(value):
+    if isinstance(value, bool):
+        return str(value).lower()
+    return f'"{value}"' if isinstance(value, str) else repr(value)
+
+
+def _start(value):
+    if value is None:
+        return ""
+    if isinstance(value, bool):
+        return str(value).lower()
+    return f"`{value}`" if isinstance(value, str) else f"{value:g}"
+
+
+def variables_markdown(fmu_name, description, about, parameters, inputs, outputs, scene=None):
+    """The variable list of an FMU in the manner of the Modelica Reference-FMUs' per-FMU readme: its
+    description, then one table row per variable (causality, type, unit, start, description).
+    parameters/inputs/outputs: declarations (bearing_fmu_common.variables.Variable) as the FMU
+    registers them; scene: the scene the starts of scene-dependent parameters come from."""
+    lines = [
+        f"# {fmu_name}",
+        "",
+        description,
+        "",
+        *about,
+        "",
+        "Generated from the variable declarations by `spindle build`; do not edit.",
+        "",
+        "| Variable | Causality | Type | Unit | Start | Description |",
+        "|---|---|---|---|---|---|",
+    ]
+    for causality, variables in (("parameter", parameters), ("input", inputs), ("output", outputs)):
+        for v in variables:
+            start = _start(v.start_in(scene)) if causality != "output" else ""
+            text = v.description.replace("|", "\\|")  # a '|' would end the table cell
+            unit = v.unit if v.kind == "real" else ""  # FMI 2.0 gives units to Real variables only
+            lines.append(f"| `{v.name}` | {causality} | {FMI_TYPES[v.kind]} | {unit} | {start} | {text} |")
+    return "\n".join(lines) + "\n"
+
+
+def scene_variables(scene_file):
+    """variables_markdown() arguments of the bearing FMU built from scene_file."""
+    import tomllib
+
+    from . import fmu as slaves
+
+    with open(scene_file, "rb") as fh:
+        doc = tomllib.load(fh)
+    scene = Scene.from_dict(doc["scene"])
+    slave = getattr(slaves, doc["fmu"]["slave"])
+    model = make_model(scene)
+    options = ", ".join(f"{k} = {_toml_value(v)}" for k, v in doc["scene"].items() if k != "name")
+    about = [
+        f"Scene `{scene.name}` (`{doc['fmu']['name']}_scene.toml`): {options}. "
+        f"Reference result of the Python model: `{doc['fmu']['name']}_ref.csv`. Variables declared in "
+        f"`bearing_fmu/models/declarations.py`; SI units."
+    ]
+    parameters = select(slave.parameters, scene)
+    return doc["fmu"]["name"], slave.description, about, parameters, model.inputs, model.outputs, scene
 
 
 def reference_inputs(scene):

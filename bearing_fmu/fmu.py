@@ -1,62 +1,47 @@
-"""pythonfmu slaves of the bearing models: a variables table and calls into the model (SPEC 5).
+"""pythonfmu slaves of the bearing models: variables from the declarations, calls into the model.
 
-Thin on purpose: physics lives in the kernels, input checks in the models. The model declares its
-inputs and outputs (bearing_fmu.models.analytic.Variable); the slave registers them, so the FMU and the
-Python model cannot drift. Bad input never raises out of an FMI call (a Python exception becomes
-fmi2Fatal in pythonfmu): it is logged with its allowed range and do_step returns False
-(fmi2Discard); the outputs keep their last valid values.
+Thin on purpose (docs/architecture.md, FMUs): physics lives in the kernels, input checks in the
+models, every variable is declared once in bearing_fmu.models.declarations. The slave registers the
+model's inputs and outputs from those declarations and keeps their values in two lists read and
+written by precomputed index (bearing_fmu_common.fmi.DeclaredSlave); a step hands the input list to
+model.update() and takes the model's output array as the new output list. Bad input never raises out
+of an FMI call (a Python exception becomes fmi2Fatal in pythonfmu): it is logged with its allowed
+range and do_step returns False (fmi2Discard); the outputs keep their last valid values.
 """
 
-from pythonfmu import Fmi2Slave
 from pythonfmu.enums import Fmi2Status
 
-from bearing_fmu_common.fmi import add_unit_definitions, fmi_escape, input_variable, output_variable, parameter
+from bearing_fmu_common.fmi import DeclaredSlave, add_unit_definitions, declared_parameter, fmi_escape
+from bearing_fmu_common.variables import select
 
 from .models.analytic import AnalyticModel
+from .models.declarations import ANALYTIC_PARAMETERS, QUASI_STATIC_PARAMETERS
 from .models.quasi_static import QuasiStaticModel
 from .models.variables import InputError
 from .params import ParameterError
 from .scene import Scene, SceneError
 
-DEFAULT_FIXED_PRELOAD = 800.0  # N, Rabreau et al. 2018 rig (fixed_axial scenes only)
-INPUT_START = {"T_oil": 313.15}  # every other input starts at 0 (at rest, unloaded, centred)
 
-
-class _BearingSlave(Fmi2Slave):
-    """Common FMI plumbing: parameters, inputs and outputs from the model, guarded calls, full state."""
+class _BearingSlave(DeclaredSlave):
+    """Common FMI plumbing: parameters, inputs and outputs from the declarations, guarded calls, full state."""
 
     author = "bearing_fmu developers"
     scene = Scene()
+    parameters = ()  # declarations of the FMU's parameters (models.declarations)
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
         self._model = None
         self._built_for = None
         self._ready = False
-        self._values = {}
-        self._declare_parameters()
+        for var in select(self.parameters, self.scene):
+            setattr(self, var.name, var.start_in(self.scene))
+            self.register_variable(declared_parameter(var, self.scene))
         self._build_model()
-        for var in self._model.inputs:
-            setattr(self, var.name, INPUT_START.get(var.name, 0.0))
-            self.register_variable(input_variable(var.name, var.unit, INPUT_START.get(var.name, 0.0), var.description))
-        for var in self._model.outputs:
-            self._values[var.name] = 0 if var.kind == "integer" else 0.0
-            self.register_variable(
-                output_variable(
-                    var.name,
-                    var.unit,
-                    var.description,
-                    var.kind == "integer",
-                    getter=lambda n=var.name: self._values[n],
-                    setter=lambda v, n=var.name: self._values.__setitem__(n, v),
-                )
-            )
-        self._update()  # start values of the outputs = the model at the default inputs
+        self.register_declared(self._model.inputs, self._model.outputs)
+        self._update()  # start values of the outputs = the model at the start inputs
 
     # -- model ---------------------------------------------------------------------------------
-    def _declare_parameters(self):
-        raise NotImplementedError
-
     def _model_key(self):
         raise NotImplementedError
 
@@ -70,10 +55,10 @@ class _BearingSlave(Fmi2Slave):
             self._built_for = key
 
     def _update(self):
-        values = self._model.evaluate(**{v.name: getattr(self, v.name) for v in self._model.inputs})
+        values = self._model.update(self._u)
         for warning in self._model.warnings:
             self.log(fmi_escape(warning), Fmi2Status.warning)
-        self._values.update(values)
+        self._y = values.tolist()
 
     def _guarded(self, action):
         """Run action(); log a clear message and return False on bad input or parameters."""
@@ -124,25 +109,7 @@ class BearingAnalytic(_BearingSlave):
         "capacitance. SI units."
     )
 
-    def _declare_parameters(self):
-        self.bearing = "6208"
-        self.lubricant = "guessasma_oil"
-        self.Pd = 0.0
-        self.register_variable(
-            parameter("bearing", self.bearing, "bearing catalogue name (6208, 6306) or path of a bearing TOML file")
-        )
-        self.register_variable(
-            parameter("lubricant", self.lubricant, "lubricant catalogue name or path of a lubricant TOML file")
-        )
-        self.register_variable(
-            parameter(
-                "Pd",
-                self.Pd,
-                "diametral clearance used by the model, overrides the "
-                "bearing file value (negative = preload), |Pd| <= 0.02 D",
-                unit="m",
-            )
-        )
+    parameters = ANALYTIC_PARAMETERS
 
     def _model_key(self):
         return self.bearing, self.lubricant, float(self.Pd)
@@ -161,54 +128,8 @@ class BearingQuasiStatic(_BearingSlave):
     )
     scene = Scene(name="quasi_static", fidelity="quasi_static")
 
-    def _declare_parameters(self):
-        self.bearing = "B7214C"
-        self.lubricant = "iso_vg68_mineral"
-        self.Pd = 0.0
-        self.Pd_from_file = True
-        self.race_control = self.scene.race_control
-        self.register_variable(
-            parameter(
-                "bearing", self.bearing, "bearing catalogue name (6208, 6306, B7214C) or path of a bearing TOML file"
-            )
-        )
-        self.register_variable(
-            parameter("lubricant", self.lubricant, "lubricant catalogue name or path of a lubricant TOML file")
-        )
-        self.register_variable(
-            parameter(
-                "Pd_from_file",
-                self.Pd_from_file,
-                "true: diametral clearance from the bearing file; false: from the parameter Pd",
-            )
-        )
-        self.register_variable(
-            parameter(
-                "Pd",
-                self.Pd,
-                "diametral clearance used when Pd_from_file is false (negative = preload), |Pd| <= 0.02 D",
-                unit="m",
-            )
-        )
-        self.register_variable(
-            parameter(
-                "race_control", self.race_control, "ball race-control hypothesis: outer | inner | hybrid (Rabreau 2018)"
-            )
-        )
-        self.F_preload = 0.0
-        if self.scene.drive == "fixed_axial":  # only a fixed-preload bearing has an assembly offset
-            self.F_preload = DEFAULT_FIXED_PRELOAD
-            self.register_variable(
-                parameter(
-                    "F_preload",
-                    self.F_preload,
-                    "axial preload set at assembly (at rest, "
-                    "no thermal change; default: the Rabreau rig's 800 N); the input z is "
-                    "added to the axial approach that carries it. 0 = z is the axial "
-                    "approach itself",
-                    unit="N",
-                )
-            )
+    parameters = QUASI_STATIC_PARAMETERS
+    F_preload = 0.0  # N: no assembly offset unless the scene's drive is fixed_axial (then a parameter)
 
     def _model_key(self):
         return (

@@ -1,12 +1,14 @@
-"""FMI helpers shared by the slave classes: SI units in modelDescription and safe logging.
+"""FMI helpers shared by the slave classes: SI units in modelDescription, safe logging, variables
+registered from declarations and read by precomputed index.
 
 pythonfmu 0.7 writes no units; FMI 2.0 wants a `unit` attribute on each Real and the unit defined
 in <UnitDefinitions> by its SI base-unit exponents.
 """
 
+from operator import itemgetter
 from xml.etree.ElementTree import Element, SubElement
 
-from pythonfmu import Boolean, Fmi2Causality, Fmi2Initial, Fmi2Variability, Integer, Real, String
+from pythonfmu import Boolean, Fmi2Causality, Fmi2Initial, Fmi2Slave, Fmi2Variability, Integer, Real, String
 
 # SI base-unit exponents (FMI 2.0 BaseUnit attributes) of the units the FMUs use
 BASE_UNITS = {
@@ -76,7 +78,8 @@ def parameter(name, start, description, unit=None):
     return UnitReal(name, unit, **kwargs)
 
 
-def input_variable(name, unit, start, description):
+def input_variable(name, unit, start, description, getter=None, setter=None):
+    """A continuous Real input with its unit."""
     return UnitReal(
         name,
         unit,
@@ -84,14 +87,97 @@ def input_variable(name, unit, start, description):
         variability=Fmi2Variability.continuous,
         start=start,
         description=description,
+        getter=getter,
+        setter=setter,
     )
 
 
 def output_variable(name, unit, description, integer=False, getter=None, setter=None):
-    """Output declared initial=exact (computed at initialisation), so `fmpy validate` is clean (SPEC 3)."""
+    """Output declared initial=exact (computed at initialisation): pythonfmu writes a start value for
+    every output, and FMI 2.0 allows a start value on an output only with initial = exact, so with it
+    `fmpy validate` finds no problem."""
     kwargs = dict(
         causality=Fmi2Causality.output, initial=Fmi2Initial.exact, description=description, getter=getter, setter=setter
     )
     if integer:
         return Integer(name, variability=Fmi2Variability.discrete, **kwargs)
     return UnitReal(name, unit, variability=Fmi2Variability.continuous, **kwargs)
+
+
+def declared_parameter(var, scene=None):
+    """The FMI parameter of a declaration (bearing_fmu_common.variables.Variable) with its start in `scene`."""
+    return parameter(var.name, var.start_in(scene), var.description, unit=var.unit or None)
+
+
+class DeclaredSlave(Fmi2Slave):
+    """An Fmi2Slave whose inputs and outputs are registered from declarations and kept in two lists in
+    declaration order: self._u (inputs, handed to the model as they are) and self._y (outputs, replaced
+    by the model's values after each successful step). getReal/getInteger/setReal of those variables
+    go by precomputed value-reference -> index tables, not through one Python getter per variable;
+    parameters and any other variable take pythonfmu's general path."""
+
+    def register_declared(self, inputs, outputs):
+        self._u = [float(var.start) for var in inputs]
+        self._y = [0.0] * len(outputs)
+        self._input_slot, self._real_slot, self._integer_slot = {}, {}, {}
+        self._readers = {}  # tuple of Real value references -> reader (see _reader)
+        for k, var in enumerate(inputs):
+            fmi_var = input_variable(
+                var.name,
+                var.unit,
+                var.start,
+                var.description,
+                getter=lambda k=k: self._u[k],
+                setter=lambda value, k=k: self._u.__setitem__(k, value),
+            )
+            self.register_variable(fmi_var)
+            self._input_slot[fmi_var.value_reference] = k
+        for k, var in enumerate(outputs):
+            integer = var.kind == "integer"
+            fmi_var = output_variable(
+                var.name,
+                var.unit,
+                var.description,
+                integer,
+                getter=lambda k=k: self._y[k],
+                setter=lambda value, k=k: self._y.__setitem__(k, value),
+            )
+            self.register_variable(fmi_var)
+            (self._integer_slot if integer else self._real_slot)[fmi_var.value_reference] = k
+
+    def _reader(self, vrs, slots):
+        """A function y -> [y[slot] for the value references vrs], cached per tuple of references (a
+        master asks for the same list every step); KeyError if one of them is not in `slots`."""
+        key = tuple(vrs)
+        reader = self._readers.get(key)
+        if reader is None:
+            indices = [slots[vr] for vr in vrs]
+            if len(indices) == 1:
+                k = indices[0]
+                reader = lambda y: [y[k]]
+            else:
+                pick = itemgetter(*indices)
+                reader = lambda y: list(pick(y))
+            self._readers[key] = reader
+        return reader
+
+    def get_real(self, vrs):
+        try:
+            return self._reader(vrs, self._real_slot)(self._y)
+        except KeyError:  # not only Real outputs: the general path
+            return super().get_real(vrs)
+
+    def get_integer(self, vrs):
+        y, slot = self._y, self._integer_slot
+        try:
+            return [int(y[slot[vr]]) for vr in vrs]
+        except KeyError:
+            return super().get_integer(vrs)
+
+    def set_real(self, vrs, values):
+        u, slot = self._u, self._input_slot
+        try:
+            for vr, value in zip(vrs, values):
+                u[slot[vr]] = value
+        except KeyError:  # a parameter among them: the general path sets every variable again
+            super().set_real(vrs, values)

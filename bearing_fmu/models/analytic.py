@@ -1,12 +1,15 @@
 """AnalyticModel: the analytic fidelity's facade between parameter sets, scenes and the jitted kernels.
 
-Inputs and outputs are SI. The model declares its inputs and outputs (name, unit, description) in
-tables that the FMU class turns into FMI variables, so the Python model and the FMU cannot drift.
+Inputs and outputs are SI and declared once in models.declarations (ANALYTIC_INPUTS, ANALYTIC_OUTPUTS):
+the model fills a preallocated output array in that order, and the FMU class registers its FMI
+variables from the same declarations, so the Python model and the FMU cannot drift.
 """
 
 import math
 
 import numpy as np
+
+from bearing_fmu_common.variables import gather_plan, select
 
 from ..kernels import radial_bearing as ak
 from ..kernels.geometry import ball_mass, curvature_radii
@@ -14,38 +17,15 @@ from ..kernels.hertz import hertz_coefficients_approx, hertz_coefficients_exact,
 from ..kernels.loaddist import gauss_legendre
 from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
-from .variables import DM_N_LIMIT, InputError, Variable, check_oil_temperature, check_speed, pressure_warnings
+from .declarations import ANALYTIC_INPUTS, ANALYTIC_OUTPUTS
+from .variables import DM_N_LIMIT, InputError, check_oil_temperature, check_speed, pressure_warnings
 
 GAUSS_NODES = 48  # quadrature points on the loaded arc (J_r(0.5) exact to < 1e-8)
-
-
-INPUTS = (
-    Variable("omega", "rad/s", "inner-ring angular speed (outer ring fixed); |omega| <= d_m n limit"),
-    Variable("F_y", "N", "radial load on the inner ring along the psi = 0 line"),
-    Variable("T_oil", "K", "oil temperature (viscosity, pressure-viscosity, density)"),
-)
-
-ANALYTIC_OUTPUTS = (
-    Variable("Lambda_inner", "1", "film parameter h_min/sigma, minimum over loaded inner contacts (0 if none)"),
-    Variable("Lambda_outer", "1", "film parameter h_min/sigma, minimum over loaded outer contacts (0 if none)"),
-    Variable("h_min_inner", "m", "minimum film thickness, minimum over loaded inner contacts"),
-    Variable("h_min_outer", "m", "minimum film thickness, minimum over loaded outer contacts"),
-    Variable("regime", "1", "lubrication regime of the worst contact: 0 boundary, 1 mixed, 2 full film", "integer"),
-    Variable("C_bearing", "F", "electrical capacitance of the bearing (balls in parallel)"),
-    Variable("Q_max_inner", "N", "largest inner contact load"),
-    Variable("Q_max_outer", "N", "largest outer contact load (includes centrifugal force)"),
-    Variable("p_max", "Pa", "largest Hertz contact pressure"),
-    Variable("omega_cage", "rad/s", "cage angular speed (pure rolling)"),
-    Variable("omega_ball", "rad/s", "ball spin speed about its own axis in the fixed frame (pure rolling)"),
-    Variable("n_loaded", "1", "number of balls loaded on both races", "integer"),
-    Variable("y", "m", "radial displacement of the inner ring along F_y"),
-    Variable("epsilon", "1", "load parameter eps = (1 - P_d/(2 delta_r))/2, capped at 1e6 (centred preloaded ring)"),
-)
-CAPACITANCE_OUTPUTS = ("C_bearing",)
+EPSILON_CAP = 1e6  # |epsilon| shown at most (a centred preloaded ring has delta_r = 0: eps is infinite)
 
 
 class AnalyticModel:
-    """Analytic bearing model (SPEC 4.1-4.6) for one bearing, lubricant and scene.
+    """Analytic bearing model for one bearing, lubricant and scene (docs/decisions.md; Harris and Kotzalas 2007).
 
     Parameters
     ----------
@@ -79,6 +59,12 @@ class AnalyticModel:
         self._out = np.zeros(ak.O_SIZE)
         self.ball = np.zeros((8, b.Z))
         self.warnings = []
+        self.outputs = select(ANALYTIC_OUTPUTS, self.scene)
+        self.output_names = tuple(v.name for v in self.outputs)
+        self.values = np.zeros(len(self.outputs))  # outputs of the last evaluation, in self.outputs order
+        self._gather = gather_plan(self.outputs, {"out": self._out})
+        self._slot = {name: k for k, name in enumerate(self.output_names)}
+        self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
 
     def _pack(self):
         b, s = self.bearing, self.scene
@@ -105,7 +91,7 @@ class AnalyticModel:
         brg[ak.B_CAPACITANCE] = 1.0 if s.capacitance else 0.0
         return brg
 
-    inputs = INPUTS
+    inputs = ANALYTIC_INPUTS
 
     def get_state(self):
         """The analytic model is algebraic: no solver state beyond the FMU variables."""
@@ -113,13 +99,6 @@ class AnalyticModel:
 
     def set_state(self, state):
         pass
-
-    @property
-    def outputs(self):
-        """Output variables of this scene (capacitance off removes C_bearing)."""
-        if self.scene.capacitance:
-            return ANALYTIC_OUTPUTS
-        return tuple(v for v in ANALYTIC_OUTPUTS if v.name not in CAPACITANCE_OUTPUTS)
 
     def check_inputs(self, omega, F_y, T_oil):
         """Raise InputError naming the first input outside its allowed range."""
@@ -132,6 +111,20 @@ class AnalyticModel:
         """Outputs (dict name -> SI value) for inner-ring speed omega (rad/s), radial load F_y (N)
         and oil temperature T_oil (K). Raises InputError for inputs outside their ranges or a load
         beyond the material limit; fills self.warnings (e.g. p_max above the ISO 76 limit)."""
+        self.update((omega, F_y, T_oil))
+        return self.as_dict()
+
+    def as_dict(self):
+        """The outputs of the last evaluation as a dict name -> SI value (integers for integer outputs)."""
+        result = dict(zip(self.output_names, self.values.tolist()))
+        for name in self._integers:
+            result[name] = int(result[name])
+        return result
+
+    def update(self, u):
+        """Evaluate for the inputs u = (omega, F_y, T_oil) in self.inputs order (rad/s, N, K) and fill
+        self.values (self.outputs order); returns self.values. Raises as evaluate()."""
+        omega, F_y, T_oil = u
         self.check_inputs(omega, F_y, T_oil)
         out = self._out
         ak.analytic_bearing(
@@ -147,28 +140,15 @@ class AnalyticModel:
         )
         self.warnings = pressure_warnings(out[ak.O_PMAX], f"F_y = {F_y} N")
         sign = -1.0 if F_y < 0.0 else 1.0
-        values = {
-            "Lambda_inner": out[ak.O_LAMBDA_I],
-            "Lambda_outer": out[ak.O_LAMBDA_O],
-            "h_min_inner": out[ak.O_HMIN_I],
-            "h_min_outer": out[ak.O_HMIN_O],
-            "regime": int(out[ak.O_REGIME]),
-            "C_bearing": out[ak.O_C_BEARING],
-            "Q_max_inner": out[ak.O_QMAX_I],
-            "Q_max_outer": out[ak.O_QMAX_O],
-            "p_max": out[ak.O_PMAX],
-            "omega_cage": out[ak.O_OMEGA_CAGE],
-            "omega_ball": out[ak.O_OMEGA_BALL],
-            "n_loaded": int(out[ak.O_N_LOADED]),
-            "y": sign * out[ak.O_DELTA_R],
-            "epsilon": min(max(out[ak.O_EPS], -1e6), 1e6),
-        }
-        if not self.scene.capacitance:
-            del values["C_bearing"]
-        for name, value in values.items():
-            if not math.isfinite(value):
-                raise InputError(
-                    f"output {name} is not finite ({value}) for omega = {omega} rad/s, "
-                    f"F_y = {F_y} N, T_oil = {T_oil} K: please report this case"
-                )
+        values, slot = self.values, self._slot
+        for source, index, target in self._gather:
+            values[target] = source[index]
+        values[slot["y"]] = sign * out[ak.O_DELTA_R]
+        values[slot["epsilon"]] = min(max(out[ak.O_EPS], -EPSILON_CAP), EPSILON_CAP)
+        if not math.isfinite(values.sum()) and not np.isfinite(values).all():  # NaN and inf propagate into a sum
+            k = int(np.argmin(np.isfinite(values)))
+            raise InputError(
+                f"output {self.output_names[k]} is not finite ({values[k]}) for omega = {omega} rad/s, "
+                f"F_y = {F_y} N, T_oil = {T_oil} K: please report this case"
+            )
         return values

@@ -1,14 +1,18 @@
 """QuasiStaticModel: facade of the quasi-static fidelity (kernels.jones_harris + kernels.contacts).
 
-One bearing, lubricant and scene; inputs and outputs are SI and declared as Variable tables that
-the FMU class turns into FMI variables. The solver state (inner-ring displacements and ball
-positions) is kept between calls for warm starts and is part of the FMU state.
+One bearing, lubricant and scene; inputs and outputs are SI and declared once in models.declarations
+(QUASI_STATIC_INPUTS, QUASI_STATIC_OUTPUTS): the model fills a preallocated output array in that order
+and the FMU class registers its FMI variables from the same declarations. The solver state (inner-ring
+displacements and ball positions) is kept between calls for warm starts and is part of the FMU state.
 """
 
 import math
 
 import numpy as np
 
+from bearing_fmu_common.variables import select
+
+from ..kernels import bearing_outputs as bo
 from ..kernels import contacts as ck
 from ..kernels import jones_harris as qk
 from ..kernels.geometry import ball_mass, curvature_radii, free_contact_angle
@@ -22,30 +26,24 @@ from ..kernels.hertz import (
 from ..kernels.torque import ALPHA_HYSTERESIS_STEEL, TL_SIZE
 from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, RACE_CONTROLS, Scene
+from .declarations import (
+    DOF_NAMES,
+    DOF_UNITS,
+    DRIVE_CONTROL,
+    LOAD_NAMES,
+    LOAD_UNITS,
+    QUASI_STATIC_INPUTS,
+    QUASI_STATIC_OUTPUTS,
+)
 from .variables import (
     DM_N_LIMIT,
     P_MAX_ERROR,
     InputError,
-    Variable,
     check_oil_temperature,
     check_speed,
     pressure_warnings,
 )
 
-DOF_NAMES = ("x", "y", "z", "theta_x", "theta_y")
-DOF_UNITS = ("m", "m", "m", "rad", "rad")
-LOAD_NAMES = ("F_x", "F_y", "F_z", "M_x", "M_y")
-LOAD_UNITS = ("N", "N", "N", "N.m", "N.m")
-DOF_WORDS = (
-    "radial displacement along x",
-    "radial displacement along y",
-    "axial displacement",
-    "tilt about x",
-    "tilt about y",
-)
-LOAD_WORDS = ("radial force along x", "radial force along y", "axial force", "moment about x", "moment about y")
-# which DOFs are load-controlled (1) for each drive (scene option)
-DRIVE_CONTROL = {"load": (1, 1, 1, 1, 1), "displacement": (0, 0, 0, 0, 0), "fixed_axial": (1, 1, 0, 1, 1)}
 RACE_CODES = {"outer": qk.RACE_OUTER, "inner": qk.RACE_INNER, "hybrid": qk.RACE_HYBRID}
 # readings of the hybrid model's gyroscopic-moment share (Python API only, for sensitivity studies;
 # the FMUs use 'spin_moments'): docs/quasistatic.md section 2, docs/reports/rabreau_torque_sensitivity.md
@@ -65,12 +63,8 @@ class SolverError(InputError):
     """The equilibrium could not be found (message says why and for which inputs)."""
 
 
-def _matrix_name(i, j):
-    return f"K[{i + 1},{j + 1}]"
-
-
 class QuasiStaticModel:
-    """Quasi-static 5-DOF bearing (SPEC 4.3) with film, capacitance and Houpert losses.
+    """Quasi-static 5-DOF bearing (Jones/Harris, docs/quasistatic.md) with film, capacitance and Houpert losses.
 
     bearing, lubricant: catalogue name or TOML path; scene: Scene with fidelity 'quasi_static';
     Pd: diametral clearance (m) overriding the bearing file, |Pd| <= 0.02 D;
@@ -141,6 +135,20 @@ class QuasiStaticModel:
                 f"(the upper bound is the material limit)"
             )
         self.z0 = self.axial_approach(self.F_preload) if self.F_preload else 0.0
+        self.inputs = select(QUASI_STATIC_INPUTS, self.scene)
+        self.input_names = tuple(v.name for v in self.inputs)
+        self._input_starts = {v.name: v.start for v in self.inputs}
+        self.outputs = select(QUASI_STATIC_OUTPUTS, self.scene)
+        self.output_names = tuple(v.name for v in self.outputs)
+        self.values = np.zeros(len(self.outputs))  # outputs of the last evaluation, in self.outputs order
+        # where each output slot comes from, as the codes of kernels.bearing_outputs
+        codes = {"out": bo.SRC_OUT, "d": bo.SRC_D, "F": bo.SRC_F, "K": bo.SRC_K, "ball_set": bo.SRC_BALL_SET}
+        self._source = np.array([codes[v.source[0]] for v in self.outputs], dtype=np.int64)
+        self._index = np.array([v.source[1] for v in self.outputs], dtype=np.int64)
+        self._K_flat = self.K.reshape(-1)  # a view: the solver writes K in place
+        self._summary = np.zeros(bo.BS_SIZE)
+        self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
+        self._load_controlled = tuple(bool(c) for c in self.control)  # per DOF, as plain booleans
 
     # -- set-up --------------------------------------------------------------------------------
     def _pack(self):
@@ -239,112 +247,13 @@ class QuasiStaticModel:
             )
         return float(d[2])
 
-    # -- variables -----------------------------------------------------------------------------
-    @property
-    def inputs(self):
-        """Input variables of this scene (drive and thermal options decide which exist)."""
-        out = [Variable("omega", "rad/s", "inner-ring angular speed (outer ring fixed); |omega| <= d_m n limit")]
-        for i in range(5):
-            if self.control[i]:
-                out.append(Variable(LOAD_NAMES[i], LOAD_UNITS[i], f"applied {LOAD_WORDS[i]} on the inner ring"))
-            else:
-                extra = (
-                    " (added to the assembly offset z0 of the parameter F_preload)"
-                    if i == 2 and self.scene.drive == "fixed_axial"
-                    else ""
-                )
-                out.append(
-                    Variable(
-                        DOF_NAMES[i],
-                        DOF_UNITS[i],
-                        f"imposed {DOF_WORDS[i]} of the inner ring relative to the outer ring{extra}",
-                    )
-                )
-        out.append(Variable("T_oil", "K", "oil temperature (viscosity, pressure-viscosity, density)"))
-        if self.scene.thermal_inputs:
-            out.append(
-                Variable(
-                    "dPd_thermal",
-                    "m",
-                    "change of diametral clearance from thermal and centrifugal "
-                    "growth (added to Pd, negative = tighter)",
-                )
-            )
-            if not self.control[2]:
-                out.append(
-                    Variable(
-                        "dz_thermal",
-                        "m",
-                        "imposed axial shift of the inner ring from thermal growth, added to z (fixed preload)",
-                    )
-                )
-        return tuple(out)
-
-    @property
-    def outputs(self):
-        """Output variables of this scene; options that are off remove theirs."""
-        s = self.scene
-        out = []
-        for i in range(5):
-            if self.control[i]:
-                out.append(Variable(DOF_NAMES[i], DOF_UNITS[i], f"{DOF_WORDS[i]} of the inner ring at equilibrium"))
-            else:
-                out.append(
-                    Variable(
-                        LOAD_NAMES[i],
-                        LOAD_UNITS[i],
-                        f"reaction: {LOAD_WORDS[i]} the balls exert (= the load needed to hold the imposed position)",
-                    )
-                )
-        if s.stiffness:
-            for i in range(5):
-                for j in range(5):
-                    out.append(
-                        Variable(
-                            _matrix_name(i, j),
-                            _stiffness_unit(i, j),
-                            f"stiffness dF_{i + 1}/dd_{j + 1}, (F) = (F_x, F_y, F_z, M_x, M_y), "
-                            f"(d) = (x, y, z, theta_x, theta_y), ball equilibrium condensed",
-                        )
-                    )
-        if s.torque:
-            out += [
-                Variable("torque", "N.m", "friction torque = P_loss/|omega| (0 at rest), Houpert components"),
-                Variable("P_loss", "W", "total power loss of the contacts"),
-                Variable("Q_inner_ring", "W", "heat to the inner ring (losses of the inner contacts)"),
-                Variable("Q_outer_ring", "W", "heat to the outer ring (losses of the outer contacts)"),
-            ]
-        out += [
-            Variable("Lambda_inner", "1", "film parameter h_min/sigma, minimum over loaded inner contacts (0 if none)"),
-            Variable("Lambda_outer", "1", "film parameter h_min/sigma, minimum over loaded outer contacts (0 if none)"),
-            Variable("h_min_inner", "m", "minimum film thickness, minimum over loaded inner contacts"),
-            Variable("h_min_outer", "m", "minimum film thickness, minimum over loaded outer contacts"),
-            Variable(
-                "regime", "1", "lubrication regime of the worst contact: 0 boundary, 1 mixed, 2 full film", "integer"
-            ),
-        ]
-        if s.capacitance:
-            out.append(Variable("C_bearing", "F", "electrical capacitance of the bearing (balls in parallel)"))
-        out += [
-            Variable("Q_max_inner", "N", "largest inner contact load"),
-            Variable("Q_max_outer", "N", "largest outer contact load"),
-            Variable("p_max", "Pa", "largest Hertz contact pressure (warning logged above 4.2 GPa)"),
-            Variable("alpha_inner", "rad", "inner contact angle of the most loaded ball"),
-            Variable("alpha_outer", "rad", "outer contact angle of the most loaded ball"),
-            Variable("omega_cage", "rad/s", "cage speed: orbital speed of the balls, mean weighted by inner load"),
-            Variable("omega_ball", "rad/s", "ball angular speed in the fixed frame (most loaded ball, sign of omega)"),
-            Variable("n_loaded", "1", "number of balls loaded on both races", "integer"),
-            Variable("iterations", "1", "Newton iterations of the last solve", "integer"),
-        ]
-        return tuple(out)
-
     # -- evaluation ----------------------------------------------------------------------------
     def check_inputs(self, values):
         """Raise InputError naming the first input outside its allowed range."""
         check_speed(values["omega"], self.omega_max)
         check_oil_temperature(values["T_oil"])
         for i in range(5):
-            if self.control[i]:
+            if self._load_controlled[i]:
                 name = LOAD_NAMES[i]
                 if not math.isfinite(values[name]):
                     raise InputError(f"{name} = {values[name]} {LOAD_UNITS[i]} is not a finite number")
@@ -370,18 +279,32 @@ class QuasiStaticModel:
                 raise InputError(f"{name} = {v} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m")
 
     def evaluate(self, **values):
-        """Outputs (dict name -> SI value) for the inputs of self.inputs (missing ones are 0, T_oil 313.15 K).
+        """Outputs (dict name -> SI value) for the inputs of self.inputs (missing ones take their start
+        value: 0, T_oil 313.15 K).
 
         Raises InputError for inputs out of range or loads beyond the material limit, SolverError
         when no equilibrium is found; fills self.warnings (p_max above the ISO 76 limit)."""
-        values = {"T_oil": 313.15, **values}
-        for var in self.inputs:
-            values.setdefault(var.name, 0.0)
+        starts = self._input_starts
+        self.update([values.get(name, starts[name]) for name in self.input_names])
+        return self.as_dict()
+
+    def as_dict(self):
+        """The outputs of the last evaluation as a dict name -> SI value (integers for integer outputs)."""
+        result = dict(zip(self.output_names, self.values.tolist()))
+        for name in self._integers:
+            result[name] = int(result[name])
+        return result
+
+    def update(self, u):
+        """Evaluate for the input values u in self.inputs order (SI) and fill self.values (self.outputs
+        order); returns self.values. Raises as evaluate()."""
+        values = dict(zip(self.input_names, u))
         self.check_inputs(values)
         omega = float(values["omega"])
-        applied = np.array([float(values[n]) if self.control[i] else 0.0 for i, n in enumerate(LOAD_NAMES)])
+        controlled = self._load_controlled
+        applied = np.array([float(values[n]) if controlled[i] else 0.0 for i, n in enumerate(LOAD_NAMES)])
         for i in range(5):
-            if not self.control[i]:
+            if not controlled[i]:
                 self.d[i] = float(values[DOF_NAMES[i]])
         if not self.control[2]:
             self.d[2] += self.z0 + float(values.get("dz_thermal", 0.0))
@@ -425,55 +348,29 @@ class QuasiStaticModel:
             raise SolverError(f"quasi-static equilibrium not found ({reason}, load residual {res:.3g} N) for {shown}")
 
     def _collect(self, omega, values):
-        out, balls = self.out, self.balls
+        """Fill self.values from the solver's and the contact kernel's arrays (declaration order)."""
+        out = self.out
         self.warnings = pressure_warnings(out[ck.CO_PMAX], "the loads")
-        q_i = balls[qk.BQ_Q_I]
-        j = int(np.argmax(q_i)) if q_i.max() > 0.0 else int(np.argmax(balls[qk.BQ_Q_O]))
-        w_m, w_R, beta = balls[qk.BQ_W_M, j], balls[qk.BQ_W_R, j], balls[qk.BQ_BETA, j]
-        spin_fixed = math.hypot(w_R * math.cos(beta) + w_m, w_R * math.sin(beta))
-        cage = float(np.dot(q_i, balls[qk.BQ_W_M]) / q_i.sum()) if q_i.sum() > 0.0 else float(balls[qk.BQ_W_M].mean())
-        result = {}
-        for i in range(5):
-            if self.control[i]:
-                result[DOF_NAMES[i]] = float(self.d[i])
-            else:
-                result[LOAD_NAMES[i]] = float(self.F[i])
-        if self.scene.stiffness:
-            for i in range(5):
-                for k in range(5):
-                    result[_matrix_name(i, k)] = float(self.K[i, k])
-        if self.scene.torque:
-            result.update(
-                torque=out[ck.CO_TORQUE],
-                P_loss=out[ck.CO_P_LOSS],
-                Q_inner_ring=out[ck.CO_Q_INNER_RING],
-                Q_outer_ring=out[ck.CO_Q_OUTER_RING],
+        bad = bo.quasi_static_outputs(
+            self.balls,
+            omega,
+            int(self.status[1]),
+            out,
+            self.d,
+            self.F,
+            self._K_flat,
+            self._source,
+            self._index,
+            self._summary,
+            self.values,
+        )
+        if bad >= 0:
+            shown = ", ".join(f"{v.name} = {values[v.name]:.6g}" for v in self.inputs)
+            raise SolverError(
+                f"output {self.output_names[bad]} is not finite ({self.values[bad]}) for {shown}: "
+                f"please report this case"
             )
-        result.update(
-            Lambda_inner=out[ck.CO_LAMBDA_I],
-            Lambda_outer=out[ck.CO_LAMBDA_O],
-            h_min_inner=out[ck.CO_HMIN_I],
-            h_min_outer=out[ck.CO_HMIN_O],
-            regime=int(out[ck.CO_REGIME]),
-        )
-        if self.scene.capacitance:
-            result["C_bearing"] = out[ck.CO_C_BEARING]
-        result.update(
-            Q_max_inner=out[ck.CO_QMAX_I],
-            Q_max_outer=out[ck.CO_QMAX_O],
-            p_max=out[ck.CO_PMAX],
-            alpha_inner=float(balls[qk.BQ_A_I, j]),
-            alpha_outer=float(balls[qk.BQ_A_O, j]),
-            omega_cage=cage,
-            omega_ball=math.copysign(spin_fixed, omega) if omega else 0.0,
-            n_loaded=int(out[ck.CO_N_LOADED]),
-            iterations=int(self.status[1]),
-        )
-        for name, value in result.items():
-            if not math.isfinite(value):
-                shown = ", ".join(f"{v.name} = {values[v.name]:.6g}" for v in self.inputs)
-                raise SolverError(f"output {name} is not finite ({value}) for {shown}: please report this case")
-        return result
+        return self.values
 
     # -- state (FMU get/set state, rollback) ---------------------------------------------------
     def get_state(self):
@@ -483,14 +380,3 @@ class QuasiStaticModel:
     def set_state(self, state):
         self.d[:] = state["d"]
         self.X[:] = state["X"]
-
-
-def _stiffness_unit(i, j):
-    """Unit of dF_i/dd_j: N/m, N (force per rad or moment per m) or N.m/rad (shown as N.m)."""
-    force_i = i < 3
-    length_j = j < 3
-    if force_i and length_j:
-        return "N/m"
-    if force_i or length_j:
-        return "N"
-    return "N.m"

@@ -1,4 +1,5 @@
-"""fmpy co-simulation master (SPEC 6). Talks to FMUs only through FMI; imports no physics.
+"""fmpy co-simulation master (docs/architecture.md, master). Talks to FMUs only through FMI; imports no
+physics.
 
 A run (spindle.cosim.runfile.RunSpec) couples FMU instances by connections output -> input and steps them
 with a fixed communication step H:
@@ -18,6 +19,9 @@ with a fixed communication step H:
   the step is redone as two halves (up to `max_halvings` times);
 - `limits` stop the run with the limit's message (e.g. thermal runaway) and keep the results so far.
 Each FMU file is extracted once per master into a private temporary directory, removed at close().
+Names are resolved once, when the run is wired: every step reads each instance's watched outputs with
+one getReal (and one getInteger) call on precomputed value references and sets each instance's
+connected inputs with one setReal call per type.
 """
 
 import csv
@@ -28,9 +32,9 @@ import tempfile
 import time as wallclock
 from dataclasses import dataclass, field
 
-# pythonfmu FMUs run inside this interpreter. SPEC 3: loading scipy's compiled libraries (numba
-# imports scipy) for the first time from inside an FMU can make the process abort at exit, so load
-# both here, before any FMU. (Not sufficient on its own: see spindle.cli.run.)
+# pythonfmu FMUs run inside this interpreter. Loading scipy's compiled libraries (numba imports scipy)
+# for the first time from inside an FMU can make the process abort at exit, so load both here, before
+# any FMU. (Not sufficient on its own: see spindle.cli.run.)
 import numba  # noqa: F401, E402
 import numpy as np
 import scipy.special  # noqa: F401, E402
@@ -42,11 +46,30 @@ from fmpy.fmi2 import (
     fmi2CallbackFreeMemoryTYPE,
     fmi2CallbackFunctions,
     fmi2CallbackLoggerTYPE,
+    fmi2Integer,
+    fmi2Real,
+    fmi2True,
+    fmi2ValueReference,
 )
 
 from .runfile import split_name
 
 STATUS_NAMES = {0: "OK", 1: "Warning", 2: "Discard", 3: "Error", 4: "Fatal", 5: "Pending"}
+# FMI types read and written every step through the FMU's own functions with preallocated ctypes
+# arrays (the values are the ones fmpy's getReal/setReal would pass: same C calls, same conversions)
+BATCHED = {
+    "Real": ("fmi2GetReal", "fmi2SetReal", fmi2Real),
+    "Integer": ("fmi2GetInteger", "fmi2SetInteger", fmi2Integer),
+    "Enumeration": ("fmi2GetInteger", "fmi2SetInteger", fmi2Integer),
+}
+# FMI type -> (FMU2Slave getter, setter, Python conversion); enumerations travel as integers
+ACCESSORS = {
+    "Real": ("getReal", "setReal", float),
+    "Integer": ("getInteger", "setInteger", int),
+    "Boolean": ("getBoolean", "setBoolean", bool),
+    "String": ("getString", "setString", str),
+    "Enumeration": ("getInteger", "setInteger", int),
+}
 
 
 class MasterError(RuntimeError):
@@ -66,6 +89,7 @@ class RunResult:
     setup_time: float = 0.0  # s, extraction + instantiation + initialisation
     rejected_steps: int = 0
     log: list = field(default_factory=list)
+    cpu_time: float = 0.0  # s, this process's CPU time for the stepping (not lengthened by other processes)
 
     def write_csv(self, path):
         """CSV with a header 'name [unit]' and one row per communication point (repr floats)."""
@@ -96,8 +120,9 @@ class Instance:
             guid=md.guid, unzipDirectory=unzip_dir, modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name
         )
         self.slave.instantiate(callbacks=self._callbacks, loggingOn=True)
+        self._do_step = self._checked("fmi2DoStep")
         self.cache = {}  # output name -> last value read
-        self._reads = {}  # type -> (names, value references) read into the cache
+        self._reads = []  # (getter, names, value references) read into the cache at each refresh
 
     def _logger(self, env, instance, status, category, message):
         text = message.decode("utf-8", "replace") if isinstance(message, bytes) else str(message)
@@ -112,56 +137,104 @@ class Instance:
         return self.variables[name]
 
     def call(self, what, fn, *args):
-        """Run an FMI call; on a non-OK status raise MasterError with the FMU's recent log lines."""
+        """Run an FMI call; on a non-OK status raise MasterError with the FMU's recent log lines.
+        `what` (str, or a function returning it: formatted only on failure) names the call."""
         n_log = len(self.log)
         try:
             return fn(*args)
         except FMICallException as exc:
             status = STATUS_NAMES.get(getattr(exc, "status", None), "failure")
             lines = "; ".join(self.log[n_log:]) or "no message logged"
+            what = what() if callable(what) else what
             raise MasterError(f"{self.name}: {what} returned {status}: {lines}") from None
 
+    def _accessor(self, kind, which):
+        getter, setter, convert = ACCESSORS[kind]
+        return getattr(self.slave, getter if which == "get" else setter), convert
+
     def set(self, values):
-        """Set variables by name (Real, Integer, Boolean, String)."""
+        """Set variables by name (Real, Integer, Boolean, String), one call each (set-up only)."""
         for name, value in values.items():
             v = self.var(name)
-            setter = {
-                "Real": (self.slave.setReal, float),
-                "Integer": (self.slave.setInteger, int),
-                "Boolean": (self.slave.setBoolean, bool),
-                "String": (self.slave.setString, str),
-                "Enumeration": (self.slave.setInteger, int),
-            }[v.type]
-            self.call(f"set {name} = {value!r}", setter[0], [v.valueReference], [setter[1](value)])
+            setter, convert = self._accessor(v.type, "set")
+            self.call(f"set {name} = {value!r}", setter, [v.valueReference], [convert(value)])
+
+    def _checked(self, function):
+        """The FMU's C function `function` (fmi2...), raising FMICallException on Discard or worse
+        as fmpy's wrappers do (a Warning passes)."""
+        raw = self.slave._functions[function]
+        component = self.slave.component
+
+        def call(*args):
+            status = raw(component, *args)
+            if status > 1:
+                raise FMICallException(function=function, status=status)
+
+        return call
+
+    def batch_reader(self, kind, vrs):
+        """A function returning the current values of the variables vrs (all of FMI type `kind`)."""
+        if kind not in BATCHED:
+            getter = self._accessor(kind, "get")[0]
+            return lambda: getter(vrs)
+        function, _, ctype = BATCHED[kind]
+        call, n = self._checked(function), len(vrs)
+        refs, buffer = (fmi2ValueReference * n)(*vrs), (ctype * n)()
+
+        def read():
+            call(refs, n, buffer)
+            return buffer[:]
+
+        return read
+
+    def batch_writer(self, kind, vrs):
+        """A function setting the variables vrs (all of FMI type `kind`) to a list of values."""
+        if kind not in BATCHED:
+            setter = self._accessor(kind, "set")[0]
+            return lambda values: setter(vrs, values)
+        function, ctype = BATCHED[kind][1], BATCHED[kind][2]
+        call, n = self._checked(function), len(vrs)
+        refs, array = (fmi2ValueReference * n)(*vrs), ctype * n
+        return lambda values: call(refs, n, array(*values))
+
+    def setter_plan(self, names):
+        """Batches that set these variables, resolved once: [(writer, convert, positions in `names`)],
+        one batch per FMI type."""
+        by_type = {}
+        for k, name in enumerate(names):
+            v = self.var(name)
+            by_type.setdefault(v.type, ([], []))
+            by_type[v.type][0].append(v.valueReference)
+            by_type[v.type][1].append(k)
+        return [
+            (self.batch_writer(kind, vrs), ACCESSORS[kind][2], positions) for kind, (vrs, positions) in by_type.items()
+        ]
 
     def watch(self, names):
-        """Read these outputs into the cache at every refresh()."""
+        """Read these outputs into the cache at every refresh(): one call per FMI type, value
+        references resolved here."""
         by_type = {}
         for name in sorted(set(names)):
             v = self.var(name)
             by_type.setdefault(v.type, []).append(name)
-        self._reads = {t: (ns, [self.variables[n].valueReference for n in ns]) for t, ns in by_type.items()}
+        self._reads = [
+            (self.batch_reader(kind, [self.variables[n].valueReference for n in ns]), ns)
+            for kind, ns in by_type.items()
+        ]
 
     def refresh(self):
-        getters = {
-            "Real": self.slave.getReal,
-            "Integer": self.slave.getInteger,
-            "Boolean": self.slave.getBoolean,
-            "Enumeration": self.slave.getInteger,
-        }
-        for kind, (names, vrs) in self._reads.items():
-            values = self.call("get outputs", getters[kind], vrs)
-            self.cache.update(zip(names, values))
+        cache = self.cache
+        for read, names in self._reads:
+            cache.update(zip(names, self.call("get outputs", read)))
+
+    def do_step(self, t, h):
+        """fmi2DoStep(t, h) (raises FMICallException on Discard or worse)."""
+        self._do_step(t, h, fmi2True)
 
     def start_value(self, name):
         """The variable's current value read from the FMU (its start value before any step)."""
         v = self.var(name)
-        getter = {
-            "Real": self.slave.getReal,
-            "Integer": self.slave.getInteger,
-            "Boolean": self.slave.getBoolean,
-            "Enumeration": self.slave.getInteger,
-        }[v.type]
+        getter, _ = self._accessor(v.type, "get")
         return self.call(f"get {name}", getter, [v.valueReference])[0]
 
     def close(self):
@@ -238,6 +311,21 @@ class Master:
                 self.recorded.append(qualified)
         for name, inst in self.instances.items():
             inst.watch(watched[name])
+        # resolved once: per target, its connected inputs in batches and where each value comes from
+        self._transfers = {}
+        for name, links in self.links.items():
+            sources = [(self.instances[s], s_var) for s, s_var, _ in links]
+            self._transfers[name] = [
+                (writer, convert, [sources[k] for k in positions])
+                for writer, convert, positions in self.instances[name].setter_plan([t for _, _, t in links])
+            ]
+        self._record = [(q, self.instances[split_name(q)[0]], split_name(q)[1]) for q in self.recorded]
+        self._limits = [
+            (lim, self.instances[split_name(lim.variable)[0]], split_name(lim.variable)[1]) for lim in spec.limits
+        ]
+        self._max_change = [
+            (q, allowed, self.instances[split_name(q)[0]], split_name(q)[1]) for q, allowed in spec.max_change.items()
+        ]
 
     def _initialise(self):
         spec = self.spec
@@ -283,9 +371,11 @@ class Master:
     # -- stepping --------------------------------------------------------------------------------
     def _transfer(self, name):
         inst = self.instances[name]
-        values = {t_var: self.instances[s].cache[s_var] for s, s_var, t_var in self.links[name]}
-        if values:
-            inst.set(values)
+        for writer, convert, sources in self._transfers[name]:
+            inst.call("set connected inputs", writer, [convert(src.cache[var]) for src, var in sources])
+
+    def _do_step(self, inst, t, h):
+        inst.call(lambda: f"doStep at t = {t:.9g} s, h = {h:.9g} s", inst.do_step, t, h)
 
     def _macro_step(self, t, h):
         """One communication step of the coupled system from t to t + h."""
@@ -293,24 +383,22 @@ class Master:
             for name in self.spec.order:
                 self._transfer(name)
             for name in self.spec.order:
-                inst = self.instances[name]
-                inst.call(f"doStep at t = {t:.9g} s, h = {h:.9g} s", inst.slave.doStep, t, h)
+                self._do_step(self.instances[name], t, h)
             for name in self.spec.order:
                 self.instances[name].refresh()
         else:
             for name in self.spec.order:
                 inst = self.instances[name]
                 self._transfer(name)
-                inst.call(f"doStep at t = {t:.9g} s, h = {h:.9g} s", inst.slave.doStep, t, h)
+                self._do_step(inst, t, h)
                 inst.refresh()
 
     def _values(self):
-        return {q: self.instances[split_name(q)[0]].cache[split_name(q)[1]] for q in self.recorded}
+        return {q: inst.cache[var] for q, inst, var in self._record}
 
     def _too_big_change(self, before):
-        for qualified, allowed in self.spec.max_change.items():
-            inst, var = split_name(qualified)
-            change = abs(self.instances[inst].cache[var] - before[qualified])
+        for qualified, allowed, inst, var in self._max_change:
+            change = abs(inst.cache[var] - before[qualified])
             if not change <= allowed:
                 return f"{qualified} changed by {change:.4g} (allowed {allowed})"
         return None
@@ -340,9 +428,8 @@ class Master:
                 i.slave.freeFMUstate(states[n])
 
     def _check_limits(self, t):
-        for lim in self.spec.limits:
-            inst, var = split_name(lim.variable)
-            value = self.instances[inst].cache[var]
+        for lim, inst, var in self._limits:
+            value = inst.cache[var]
             if not (lim.min <= value <= lim.max) or math.isnan(value):
                 return f"t = {t:.6g} s: {lim.variable} = {value:.6g} left [{lim.min:.6g}, {lim.max:.6g}]" + (
                     f": {lim.message}" if lim.message else ""
@@ -362,7 +449,7 @@ class Master:
         if message:
             status = "limit"
         bar = _Progress(n_steps, progress)
-        t_wall = wallclock.perf_counter()
+        t_wall, t_cpu = wallclock.perf_counter(), wallclock.process_time()
         for n in range(n_steps if status == "ok" else 0):
             t = spec.start + n * spec.step
             if spec.rollback:
@@ -377,7 +464,7 @@ class Master:
             if message:
                 status = "limit"
                 break
-        wall = wallclock.perf_counter() - t_wall
+        wall, cpu = wallclock.perf_counter() - t_wall, wallclock.process_time() - t_cpu
         bar.close()
         columns = {"time": np.array(times)}
         for q in self.recorded:
@@ -387,7 +474,7 @@ class Master:
             inst, var = split_name(q)
             units[q] = getattr(self.instances[inst].variables[var], "unit", None) or "1"
         log = [f"{n}: {line}" for n, i in self.instances.items() for line in i.log]
-        return RunResult(columns, units, status, message, wall, setup, rejected, log)
+        return RunResult(columns, units, status, message, wall, setup, rejected, log, cpu)
 
     def close(self):
         for inst in self.instances.values():

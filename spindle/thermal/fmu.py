@@ -1,23 +1,24 @@
-"""pythonfmu slave of the lumped thermal spindle (SPEC 4.9, 5): SpindleThermal.fmu.
+"""pythonfmu slave of the lumped thermal spindle (docs/spindle_thermal.md): SpindleThermal.fmu.
 
-Thin: the network, its integrator and the thermo-mechanics live in spindle.thermal.model / spindle.thermal.network;
-this class registers the model's declared inputs and outputs and calls model.step(h) in do_step.
-The network is read from a TOML file (parameter `spindle`: catalogue name or path), so a user can
-describe their own spindle without rebuilding the FMU. Bad input or parameters are logged with
-their allowed range and the call returns Discard/Error; the host never sees an exception.
+Thin (docs/architecture.md, FMUs): the network, its integrator and the thermo-mechanics live in
+spindle.thermal.model / spindle.thermal.network, every variable is declared once in
+spindle.thermal.declarations. This class registers the model's inputs and outputs from those
+declarations, keeps their values in lists read and written by precomputed index
+(bearing_fmu_common.fmi.DeclaredSlave) and calls model.advance(h) in do_step. The network is read from
+a TOML file (parameter `spindle`: catalogue name or path), so a user can describe their own spindle
+without rebuilding the FMU. Bad input or parameters are logged with their allowed range and the call
+returns Discard/Error; the host never sees an exception.
 """
 
-from pythonfmu import Fmi2Slave
 from pythonfmu.enums import Fmi2Status
 
-from bearing_fmu_common.fmi import add_unit_definitions, fmi_escape, input_variable, output_variable, parameter
+from bearing_fmu_common.fmi import DeclaredSlave, add_unit_definitions, declared_parameter, fmi_escape
 
+from .declarations import parameter_declarations
 from .model import DEFAULT_SPINDLE, SpindleThermalModel
 
-T_START = 293.15  # K, start value of the temperature inputs (20 C, the default assembly temperature)
 
-
-class SpindleThermal(Fmi2Slave):
+class SpindleThermal(DeclaredSlave):
     """Lumped thermal network of a spindle with bearing heat inputs and clearance/preload outputs."""
 
     author = "bearing_fmu developers"
@@ -32,47 +33,18 @@ class SpindleThermal(Fmi2Slave):
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
-        self.spindle = self.default_network
-        self.integrator = "exponential"
-        self.T_initial = 0.0
-        self.register_variable(
-            parameter("spindle", self.spindle, "spindle network: catalogue name or path of a spindle TOML file")
-        )
-        self.register_variable(
-            parameter(
-                "integrator", self.integrator, "exponential (exact for inputs held over the step) | implicit_euler"
-            )
-        )
-        self.register_variable(
-            parameter(
-                "T_initial",
-                self.T_initial,
-                "initial temperature of every node; 0 = the ambient temperature input",
-                unit="K",
-            )
-        )
+        for var in parameter_declarations(self.default_network):
+            setattr(self, var.name, var.start)
+            self.register_variable(declared_parameter(var))
         self._model = SpindleThermalModel(self.spindle, axial_float=self.axial_float)
         self._ready = False
-        self._values = {}
-        for var in self._model.inputs:
-            start = T_START if var.unit == "K" else 0.0
-            setattr(self, var.name, start)
-            self.register_variable(input_variable(var.name, var.unit, start, var.description))
+        self.register_declared(self._model.inputs, self._model.outputs)
+        self._input_names = tuple(v.name for v in self._model.inputs)
         self._model.initialize(**self._inputs())
-        self._values.update(self._model.outputs_values())
-        for var in self._model.outputs:
-            self.register_variable(
-                output_variable(
-                    var.name,
-                    var.unit,
-                    var.description,
-                    getter=lambda n=var.name: self._values[n],
-                    setter=lambda v, n=var.name: self._values.__setitem__(n, v),
-                )
-            )
+        self._y = self._model.values.tolist()
 
     def _inputs(self):
-        return {v.name: getattr(self, v.name) for v in self._model.inputs}
+        return dict(zip(self._input_names, self._u))
 
     def _guarded(self, action):
         try:
@@ -97,7 +69,7 @@ class SpindleThermal(Fmi2Slave):
             )
         self._model = model
         self._model.initialize(**self._inputs())
-        self._values.update(self._model.outputs_values())
+        self._y = self._model.values.tolist()
 
     def exit_initialization_mode(self):
         self._ready = self._guarded(self._initialise)
@@ -110,8 +82,8 @@ class SpindleThermal(Fmi2Slave):
             return False
 
         def step():
-            self._model.step(step_size, **self._inputs())
-            self._values.update(self._model.outputs_values())
+            self._model.advance(step_size, **self._inputs())
+            self._y = self._model.values.tolist()
 
         return self._guarded(step)
 

@@ -1,11 +1,12 @@
-"""SpindleThermalModel: facade of the lumped thermal spindle (SPEC 4.9; docs/spindle_thermal.md).
+"""SpindleThermalModel: facade of the lumped thermal spindle (docs/spindle_thermal.md).
 
 Reads a spindle TOML (a catalogue name in spindle/thermal/params/ or a path), packs it into the arrays of
 spindle.thermal.network, advances the temperatures with the exact exponential update (default) or backward
 Euler, and turns temperatures into thermal/centrifugal changes of bearing clearance and axial
-interference. Inputs and outputs are SI and declared as bearing_fmu.models.analytic.Variable tables that the
-FMU class turns into FMI variables. No scipy import on this path (SPEC 3): the eigendecomposition
-is numpy's.
+interference. Inputs and outputs are SI and declared once in spindle.thermal.declarations: the model
+fills a preallocated output array in that order and the FMU class registers its FMI variables from the
+same declarations. No scipy import on this path (a pythonfmu FMU that loads scipy's compiled libraries
+first can make its host abort at exit, spindle.cosim.master): the eigendecomposition is numpy's.
 """
 
 import math
@@ -16,9 +17,10 @@ from pathlib import Path
 import numpy as np
 
 from bearing_fmu.params import ParameterError, load_bearing, resolve_toml
-from bearing_fmu_common.variables import InputError, Variable
+from bearing_fmu_common.variables import InputError
 
 from . import network as nk
+from .declarations import DEFAULT_SPINDLE, input_declarations, output_declarations
 
 CATALOGUE = Path(__file__).resolve().parent / "params"
 INTEGRATORS = ("exponential", "implicit_euler")
@@ -32,9 +34,6 @@ SUBSTEPS_MAX = 100000
 
 class SpindleInputError(InputError):
     """An input of the thermal spindle is outside its allowed range (the message names it and the range)."""
-
-
-DEFAULT_SPINDLE = "b7214c_x_pair"
 
 
 # ---------------------------------------------------------------------------------------------- TOML
@@ -299,9 +298,22 @@ def _axial(section, node_index, n_bearings, where):
     return out
 
 
+def _admissible(unit):
+    """(test, allowed range as text) of an input of this unit (the range is written only for a message)."""
+    if unit == "W":
+        return (lambda x: math.isfinite(x) and abs(x) <= HEAT_MAX), f"[{-HEAT_MAX:g}, {HEAT_MAX:g}] W"
+    if unit == "K":
+        return (lambda x: math.isfinite(x) and 0.0 < x <= T_MAX), f"]0, {T_MAX:g}] K"
+    if unit == "rad/s":
+        return (lambda x: math.isfinite(x) and abs(x) <= OMEGA_MAX), f"[{-OMEGA_MAX:g}, {OMEGA_MAX:g}] rad/s"
+    if unit == "N/m":
+        return (lambda x: math.isfinite(x) and x >= 0.0), "[0, inf[ N/m (finite)"
+    return math.isfinite, f"finite {unit}"
+
+
 # --------------------------------------------------------------------------------------------- model
 class SpindleThermalModel:
-    """Lumped thermal spindle (SPEC 4.9): temperatures, clearance and axial-interference changes.
+    """Lumped thermal spindle (docs/spindle_thermal.md): temperatures, clearance and axial-interference changes.
 
     spindle: catalogue name (spindle/thermal/params/<name>.toml) or TOML path; integrator: 'exponential'
     (exact for inputs held over the step, default) | 'implicit_euler' (backward Euler, `substeps` >= 1
@@ -330,8 +342,16 @@ class SpindleThermalModel:
         self.axial_float = bool(net.axial and net.axial["axial_float"]) if axial_float is None else bool(axial_float)
         if self.axial_float and not net.axial:
             raise SpindleInputError(f"axial_float = true needs an [axial] section in spindle '{spindle}'")
-        self.inputs = self._input_table()
-        self.outputs = self._output_table()
+        self.inputs = input_declarations(net, self.axial_float)
+        self.outputs = output_declarations(net)
+        self.output_names = tuple(v.name for v in self.outputs)
+        self.values = np.zeros(len(self.outputs))  # outputs at the current state, in self.outputs order
+        self._slot = {name: k for k, name in enumerate(self.output_names)}
+        self._checks = [(v.name, v.unit, *_admissible(v.unit)) for v in self.inputs]
+        self._bearing_slots = [
+            tuple(self._slot[f"{kind}_{k}"] for kind in ("T_inner_ring", "T_outer_ring", "T_oil", "dPd_thermal"))
+            for k in range(1, len(net.bearings) + 1)
+        ]
         self._defaults = {v.name: (net.T_ref if v.unit == "K" else 0.0) for v in self.inputs}
         self._u = dict(self._defaults)
         self._cache_omega = None
@@ -340,74 +360,6 @@ class SpindleThermalModel:
         self.T0 = None  # initial node temperatures (K) for E_stored
         self.s = 0.0  # axial float of the shaft (m)
         self.time = 0.0  # s
-        self._out = None
-
-    # ---------------------------------------------------------------- tables
-    def _input_table(self):
-        net = self.net
-        out = [Variable(name, "W", text) for name, text in zip(net.heat_names, net.heat_text)]
-        out.append(Variable("omega", "rad/s", "shaft angular speed (rotating-shaft convection, centrifugal growth)"))
-        out += [
-            Variable(name, "K", f"temperature of the boundary '{b}'")
-            for name, b in zip(net.boundary_inputs, net.boundaries)
-        ]
-        if self.axial_float:
-            for k in (1, 2):
-                out.append(Variable(f"F_axial_{k}", "N", f"axial reaction of bearing {k} (axial float)"))
-            for k in (1, 2):
-                out.append(Variable(f"K_axial_{k}", "N/m", f"axial stiffness of bearing {k} (axial float), >= 0"))
-        return tuple(out)
-
-    def _output_table(self):
-        net = self.net
-        out = [Variable(f"T_{name}", "K", f"temperature of node '{name}'") for name in net.nodes]
-        names = {v.name for v in out}
-        for k, b in enumerate(net.bearings, start=1):
-            for alias, role, text in (
-                (f"T_inner_ring_{k}", "inner_ring", "inner ring"),
-                (f"T_outer_ring_{k}", "outer_ring", "outer ring"),
-                (f"T_oil_{k}", "ball_oil", "balls and oil"),
-            ):
-                if alias in names:
-                    if alias != f"T_{net.nodes[b[role]]}":
-                        raise ParameterError(
-                            f"{net.path}: output {alias} would name node '{alias[2:]}' and "
-                            f"bearing {k}'s {role} '{net.nodes[b[role]]}': rename the node"
-                        )
-                    continue
-                out.append(Variable(alias, "K", f"temperature of bearing {k}'s {text} (node '{net.nodes[b[role]]}')"))
-                names.add(alias)
-            out.append(
-                Variable(
-                    f"dPd_thermal_{k}",
-                    "m",
-                    f"change of bearing {k}'s diametral clearance from thermal "
-                    f"and centrifugal growth (negative = tighter)",
-                )
-            )
-        if net.axial:
-            out.append(
-                Variable(
-                    "dz_thermal",
-                    "m",
-                    "change of the pair's axial interference from shaft vs housing growth (> 0 tightens both bearings)",
-                )
-            )
-            for k in (1, 2):
-                out.append(
-                    Variable(
-                        f"dz_thermal_{k}",
-                        "m",
-                        f"change of bearing {k}'s local axial approach "
-                        f"(dz_thermal/2 {'+' if k == 1 else '-'} axial float)",
-                    )
-                )
-        out += [
-            Variable("P_in", "W", "sum of the heat inputs"),
-            Variable("P_out", "W", "heat flowing into the boundaries at the current temperatures"),
-            Variable("E_stored", "J", "heat stored since initialisation: sum of C (T - T_initial)"),
-        ]
-        return tuple(out)
 
     @property
     def parameters(self):
@@ -452,20 +404,10 @@ class SpindleThermalModel:
                 u[name] = float(value)
             except (TypeError, ValueError):
                 raise SpindleInputError(f"{name} = {value!r} is not a number") from None
-        for v in self.inputs:
-            x = u[v.name]
-            if v.unit == "W":
-                ok, allowed = math.isfinite(x) and abs(x) <= HEAT_MAX, f"[{-HEAT_MAX:g}, {HEAT_MAX:g}] W"
-            elif v.unit == "K":
-                ok, allowed = math.isfinite(x) and 0.0 < x <= T_MAX, f"]0, {T_MAX:g}] K"
-            elif v.unit == "rad/s":
-                ok, allowed = math.isfinite(x) and abs(x) <= OMEGA_MAX, f"[{-OMEGA_MAX:g}, {OMEGA_MAX:g}] rad/s"
-            elif v.unit == "N/m":
-                ok, allowed = math.isfinite(x) and x >= 0.0, "[0, inf[ N/m (finite)"
-            else:
-                ok, allowed = math.isfinite(x), f"finite {v.unit}"
-            if not ok:
-                raise SpindleInputError(f"{v.name} = {x} {v.unit} is outside the allowed range {allowed}")
+        for name, unit, admissible, allowed in self._checks:
+            x = u[name]
+            if not admissible(x):
+                raise SpindleInputError(f"{name} = {x} {unit} is outside the allowed range {allowed}")
         return u
 
     def _vectors(self, u):
@@ -502,8 +444,8 @@ class SpindleThermalModel:
         self.T = np.full(len(self.net.nodes), self._start_temperature(u))
         self.T0 = self.T.copy()
         self.s, self.time = 0.0, 0.0
-        self._out = self._outputs(self.T, u)
-        return self._out
+        self._outputs(self.T, u, self.values)
+        return self.outputs_values()
 
     def _start_temperature(self, u):
         if self.T_initial is not None:
@@ -511,7 +453,12 @@ class SpindleThermalModel:
         return u["T_ambient"] if "T_ambient" in u else u[self.net.boundary_inputs[0]]
 
     def step(self, h, **inputs):
-        """Advance h seconds (> 0) with `inputs` held over the step; returns the outputs."""
+        """Advance h seconds (> 0) with `inputs` held over the step; returns the outputs (dict name -> SI)."""
+        self.advance(h, **inputs)
+        return self.outputs_values()
+
+    def advance(self, h, **inputs):
+        """step() without building the output dict: the outputs are in self.values (self.outputs order)."""
         if self.T is None:
             self.initialize()
         if isinstance(h, bool) or not isinstance(h, (int, float)) or not (math.isfinite(h) and h > 0.0):
@@ -525,8 +472,8 @@ class SpindleThermalModel:
             T = nk.exponential_step(self.T, T_ss, op["sqrt_c"], op["V"], op["lam"], float(h))
         else:
             T = nk.implicit_euler_step(self.net.C, op["L"], f, self.T, float(h), self.substeps)
-        bad = np.flatnonzero(~(np.isfinite(T) & (T > 0.0)))
-        if bad.size:
+        if not (T.min() > 0.0 and T.max() < math.inf):  # a NaN fails both comparisons
+            bad = np.flatnonzero(~(np.isfinite(T) & (T > 0.0)))
             raise SpindleInputError(
                 f"node {self.net.nodes[bad[0]]} would reach T = {T[bad[0]]} K (non-physical) "
                 f"with these heat inputs; state left unchanged"
@@ -536,14 +483,13 @@ class SpindleThermalModel:
             self.s += (u["F_axial_2"] - u["F_axial_1"]) / (u["K_axial_1"] + u["K_axial_2"])
         self._u, self.T = u, T
         self.time += float(h)
-        self._out = self._outputs(T, u)
-        return self._out
+        self._outputs(T, u, self.values)
 
     def outputs_values(self):
         """Outputs (dict name -> float, SI) at the current state."""
-        if self._out is None:
+        if self.T is None:
             self.initialize()
-        return dict(self._out)
+        return dict(zip(self.output_names, self.values.tolist()))
 
     def steady_state(self, **inputs):
         """Outputs at the steady state for `inputs` (merged with the current ones), by a direct solve of
@@ -551,7 +497,9 @@ class SpindleThermalModel:
         u = self._merge(inputs)
         op = self._operator(u["omega"])
         P, Tb, _ = self._vectors(u)
-        return self._outputs(nk.cholesky_solve(op["R"], nk.source_vector(op["B"], Tb, P)), u)
+        values = np.zeros(len(self.outputs))
+        self._outputs(nk.cholesky_solve(op["R"], nk.source_vector(op["B"], Tb, P)), u, values)
+        return dict(zip(self.output_names, values.tolist()))
 
     def time_constants(self, omega=0.0):
         """Time constants 1/lambda (s) of the network at omega (rad/s), slowest first (generalised
@@ -581,22 +529,23 @@ class SpindleThermalModel:
         self._u = self._merge(state["inputs"])
         self.T, self.T0 = T, T0
         self.s, self.time = float(state["s"]), float(state["time"])
-        self._out = self._outputs(self.T, self._u)
+        self._outputs(self.T, self._u, self.values)
 
     # ---------------------------------------------------------------- outputs
-    def _outputs(self, T, u):
-        net = self.net
+    def _outputs(self, T, u, values):
+        """Fill `values` (self.outputs order) with the outputs for node temperatures T and inputs u."""
+        net, slot = self.net, self._slot
         omega = u["omega"]
         op = self._operator(omega)
         Tb = np.array([u[name] for name in net.boundary_inputs])
-        out = {f"T_{name}": float(t) for name, t in zip(net.nodes, T)}
-        for k, b in enumerate(net.bearings, start=1):
-            out[f"T_inner_ring_{k}"] = float(T[b["inner_ring"]])
-            out[f"T_outer_ring_{k}"] = float(T[b["outer_ring"]])
-            out[f"T_oil_{k}"] = float(T[b["ball_oil"]])
+        values[: len(net.nodes)] = T  # the node temperatures come first (declarations)
+        for b, (inner, outer, oil, dPd) in zip(net.bearings, self._bearing_slots):
+            values[inner] = T[b["inner_ring"]]
+            values[outer] = T[b["outer_ring"]]
+            values[oil] = T[b["ball_oil"]]
             r = 0.5 * b["d_i"]
             u_c = nk.centrifugal_radial_growth(b["rho"], b["E"], b["nu"], omega, b["a"], r, r)
-            out[f"dPd_thermal_{k}"] = nk.clearance_change(
+            values[dPd] = nk.clearance_change(
                 net.alpha_bearing,
                 b["d_i"],
                 b["d_o"],
@@ -618,11 +567,10 @@ class SpindleThermalModel:
                 T[ax["housing"]],
                 net.T_ref,
             )
-            out["dz_thermal"] = dz
-            out["dz_thermal_1"] = 0.5 * dz + self.s
-            out["dz_thermal_2"] = 0.5 * dz - self.s
-        out["P_in"] = float(sum(u[name] for name in net.heat_names))
-        out["P_out"] = nk.boundary_heat_flow(len(net.nodes), net.ends_i, net.ends_j, op["G"], T, Tb)
+            values[slot["dz_thermal"]] = dz
+            values[slot["dz_thermal_1"]] = 0.5 * dz + self.s
+            values[slot["dz_thermal_2"]] = 0.5 * dz - self.s
+        values[slot["P_in"]] = float(sum(u[name] for name in net.heat_names))
+        values[slot["P_out"]] = nk.boundary_heat_flow(len(net.nodes), net.ends_i, net.ends_j, op["G"], T, Tb)
         T0 = self.T0 if self.T0 is not None else np.full(len(T), self._start_temperature(u))
-        out["E_stored"] = float(np.dot(net.C, T - T0))
-        return out
+        values[slot["E_stored"]] = float(np.dot(net.C, T - T0))

@@ -1,9 +1,9 @@
-"""Acceptance of the closed-loop issue (issue 4: co-simulation master and closed thermo-mechanical loop;
-SPEC 4.9, 6) on the run files of runs/.
+"""The closed thermo-mechanical loop under the co-simulation master (docs/architecture.md, master;
+docs/spindle_thermal.md) on the run files of runs/.
 
 Spring preload (runs/closed_loop_spring.toml: B7214C X pair, 800 N spring, 10 000 rpm, 1 h, H = 1 s):
 temperatures rise monotonically after the first minute and settle; steady-state energy balance
-within 1 %; outer-ring rise of tens of kelvin (SPEC 4.9 magnitude check after Rabreau et al. 2018).
+within 1 %; outer-ring rise of tens of kelvin (magnitude check after Rabreau et al. 2018).
 Fixed preload (runs/closed_loop_fixed.toml): at 6000 rpm the preload rises with the temperatures
 and settles; at 10 000 rpm thermal runaway stops the run with a message; neither outcome depends on
 the communication step H in {0.1, 1, 5} s.
@@ -97,7 +97,7 @@ def test_spring_steady_state_energy_balance(spring):
 
 
 def test_spring_outer_ring_rise_is_tens_of_kelvin(spring):
-    """SPEC 4.9 magnitude check: Rabreau et al. (2018) measured an outer-ring rise of tens of K at
+    """Magnitude check: Rabreau et al. (2018) measured an outer-ring rise of tens of K at
     10 000 rpm (curves not tabulated: a plausibility band, 10-100 K, for the estimated network)."""
     for k in (1, 2):
         T = spring.columns[f"spindle.T_outer_ring_{k}"]

@@ -8,7 +8,7 @@ initialisation mode, then from the sources' outputs after exitInitializationMode
 
 The libcosim runs are in-process: libcosim calls the pythonfmu FMUs from its worker thread, which
 takes the GIL, and run_libcosim destroys the execution before returning. 30 consecutive fresh
-processes exited 0 when this was written; `test_fresh_processes_exit_0` keeps checking a few (SPEC 3).
+processes exited 0 when this was written; `test_fresh_processes_exit_0` keeps checking a few.
 """
 
 import shutil
@@ -147,7 +147,7 @@ def test_analytic_fmu_same_as_fmpy(analytic_fmu):
     record = [f"b.{o}" for o in ANALYTIC_OUTPUTS] + ["b.omega"]
     result = run_libcosim(system, 0.1, 0.5, record)
     assert result["time"].tolist() == pytest.approx([0.0, 0.1, 0.2, 0.3, 0.4, 0.5], abs=1e-15)
-    assert result["b.omega_cage"][0] == pytest.approx(198.0198, rel=1e-6)  # SPEC 4.8: cage 198.0 rad/s
+    assert result["b.omega_cage"][0] == pytest.approx(198.0198, rel=1e-6)  # 6208 pure-rolling cage speed
     assert result["b.regime"].dtype.kind == "i"
     assert_same(result, fmpy_jacobi(system, 0.1, 0.5, record), record)
 
@@ -259,7 +259,7 @@ def test_errors_name_instance_and_variable(analytic_fmu):
 
 
 def test_fresh_processes_exit_0(analytic_fmu):
-    """SPEC 3: a script that runs pythonfmu FMUs under libcosim exits 0 (no abort at exit), with a
+    """A script that runs pythonfmu FMUs under libcosim exits 0 (no abort at exit), with a
     plain return from the script, i.e. no os._exit workaround, and leaves no libcosim extraction."""
     leftovers = set(Path(tempfile.gettempdir()).glob("libcosim_*"))
     script = textwrap.dedent(f"""

@@ -1,4 +1,4 @@
-"""The closed loop under two independent masters (issue 4 acceptance, SPEC 6 "Cross-check"): the spring
+"""The closed loop under two independent masters (the cross-check of docs/architecture.md, master): the spring
 closed loop of runs/closed_loop_spring.toml (bearing_1, bearing_2, spindle), Jacobi, H = 1 s, 120 s,
 under spindle.cosim.libcosim_master.run_libcosim (libcosim 0.11.2's fixed-step algorithm) and under
 spindle.cosim.master (algorithm 'jacobi') agrees to 1e-6 relative on temperatures, torques and clearance

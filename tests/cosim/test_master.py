@@ -1,4 +1,4 @@
-"""spindle.cosim.master and spindle.cosim.runfile: the fmpy co-simulation master (SPEC 6).
+"""spindle.cosim.master and spindle.cosim.runfile: the fmpy co-simulation master (docs/architecture.md, master).
 
 Expectations come from the master's documented algorithm (spindle/cosim/master.py docstring) and, for
 the coupled runs, from the Python models driven by hand with the same algorithm: the FMUs run the
@@ -20,12 +20,10 @@ import numpy as np
 import pytest
 
 from bearing_fmu.build import SCENES_DIR
-from bearing_fmu.fmu import INPUT_START
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
 from spindle.cosim.master import Master, MasterError, run
 from spindle.cosim.runfile import RunFileError, parse_run
-from spindle.thermal.fmu import T_START
 from spindle.thermal.model import SpindleThermalModel
 
 OMEGA = 1047.1975511965977  # rad/s, 10 000 rpm (runs/closed_loop_spring.toml)
@@ -165,10 +163,10 @@ def hand_cosimulation(algorithm, step, n_steps):
     connected input its source's start value, exits all; each step every instance takes the outputs
     of t_n."""
     bearing = QuasiStaticModel(scene=Scene.from_toml(SCENES_DIR / "quasi_static.toml"))
-    b_in = {v.name: INPUT_START.get(v.name, 0.0) for v in bearing.inputs}
+    b_in = {v.name: v.start for v in bearing.inputs}
     b_start = bearing.evaluate(**b_in)  # instantiation
     probe = SpindleThermalModel(axial_float=False)
-    s_in = {v.name: (T_START if v.unit == "K" else 0.0) for v in probe.inputs}
+    s_in = {v.name: v.start for v in probe.inputs}
     s_start = probe.initialize(**s_in)  # instantiation
 
     def to_bearing(s_out):
@@ -258,7 +256,7 @@ def clock_doc(clock, **run):
 
 @pytest.mark.parametrize("start", [0.0, 1.0])
 def test_time_is_start_plus_n_h_from_an_integer_counter(start, clock_fmu):
-    """SPEC 6: t_n = start + n H from an integer step counter. Checked on the recorded times and on the
+    """t_n = start + n H from an integer step counter. Checked on the recorded times and on the
     currentCommunicationPoint each doStep receives: both are exactly start + n*H in floating point,
     which accumulating H would not give (the last assertion shows the difference exists)."""
     H, n = 0.1, 30
@@ -288,7 +286,7 @@ def test_limit_stops_the_run_with_its_message(spindle_thermal_fmu):
         ],
     }
     model = SpindleThermalModel(axial_float=False)
-    inputs = {v.name: (T_START if v.unit == "K" else 0.0) for v in model.inputs}
+    inputs = {v.name: v.start for v in model.inputs}
     inputs.update(SPINDLE_INPUTS, **heat)
     temperatures = [model.initialize(**inputs)["T_inner_ring_1"]]
     while temperatures[-1] <= T_max:

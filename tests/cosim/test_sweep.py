@@ -1,4 +1,4 @@
-"""Sweeps on Dask (SPEC 6; issue 4): 16 runs of the spring closed loop (runs/closed_loop_spring.toml
+"""Sweeps on Dask: 16 runs of the spring closed loop (runs/closed_loop_spring.toml
 shortened to 60 s), one per coolant temperature, on a local Dask cluster of 2 worker processes give
 the same table as the same 16 runs one after the other in this process (spindle.cosim.sweep.sequential).
 

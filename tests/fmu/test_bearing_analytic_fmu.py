@@ -1,4 +1,4 @@
-"""BearingAnalytic.fmu behaves as a well-made FMI 2.0 co-simulation FMU (SPEC 3, 5.3; issue 2).
+"""BearingAnalytic.fmu behaves as a well-made FMI 2.0 co-simulation FMU (docs/architecture.md, FMUs).
 
 - fmpy.validate_fmu finds no problem; every variable has a description, every Real a unit;
 - fmpy simulate_fmu (with output_interval) and a hand-written FMU2Slave loop equal the Python
@@ -7,7 +7,7 @@
 - bad inputs give a logged message naming the input and its range and fmi2Discard, the host
   survives and a corrected input recovers; '%' in a message cannot crash the host;
 - FMU state get/set/serialise round trip is exact;
-- 30 consecutive fresh-process simulations all exit 0 (SPEC 3: scipy/numba teardown crashes).
+- 30 consecutive fresh-process simulations all exit 0 (no scipy/numba crash at interpreter teardown).
 """
 
 from contextlib import ExitStack

@@ -1,4 +1,4 @@
-"""Bearing.fmu (load-driven) and BearingDisp.fmu (displacement-driven), the quasi-static scenes (issue 3).
+"""Bearing.fmu (load-driven) and BearingDisp.fmu (displacement-driven), the quasi-static scenes (docs/quasistatic.md).
 
 - fmpy.validate_fmu finds no problem; every variable has a description and a unit; K[i,j] exist;
 - a hand-written FMU2Slave loop equals the Python model bit for bit when the model sees the same

@@ -1,12 +1,12 @@
 """SpindleThermal.fmu and SpindleThermalFixed.fmu behave as well-made FMI 2.0 co-simulation FMUs
-(SPEC 3, 4.9, 5.2, 5.3).
+(docs/architecture.md, FMUs; the model: docs/spindle_thermal.md).
 
-- fmpy.validate_fmu finds no problem (SPEC 3: CI must assert `validate_fmu(path) == []`); every
+- fmpy.validate_fmu finds no problem (CI asserts `validate_fmu(path) == []`); every
   variable has a description, every Real a declared unit; state get/set and serialisation are
-  declared (SPEC 5.3);
+  declared;
 - the FMU's variables are the Python model's tables (spindle.thermal.fmu registers model.inputs/outputs),
-  and the fixed-preload FMU alone has the axial-float inputs F_axial_k/K_axial_k (SPEC 5.2: what a
-  scene does not need is not exposed; spindle.build.THERMAL_FMUS);
+  and the fixed-preload FMU alone has the axial-float inputs F_axial_k/K_axial_k (what a scene
+  does not need is not exposed; spindle.build.THERMAL_FMUS);
 - a hand-written FMU2Slave loop equals spindle.thermal.model.SpindleThermalModel bit for bit: the FMU runs
   the same model code in the same interpreter (spindle/thermal/fmu.py is a thin wrapper), and the model has
   no history other than its state (temperatures, axial float, held inputs; the operator cache is a
@@ -14,11 +14,11 @@
   bits; any difference would be an FMI transport error (wrong variable, lost input, float
   formatting);
 - the full state round trip (getFMUstate/setFMUstate and serialize/deserialize, also into a second
-  instance) reproduces the continuation exactly (SPEC 5.3; the master's rollback relies on it);
+  instance) reproduces the continuation exactly (the master's rollback relies on it);
 - bad inputs (NaN heat, negative ambient temperature) and an unknown `spindle` parameter give a
   logged message naming the input and fmi2Discard/fmi2Error; the host process survives (run in a
   fresh process through tests/fmu/probe.py's helpers so a crash cannot take pytest down) and a
-  corrected input recovers (SPEC 3, 5.3).
+  corrected input recovers.
 """
 
 import json
@@ -32,7 +32,7 @@ import pytest
 from fmpy import read_model_description
 from fmpy.validation import validate_fmu
 
-from spindle.thermal.fmu import T_START
+from spindle.thermal.declarations import T_START
 from spindle.thermal.model import SpindleThermalModel
 from tests.fmu.harness import opened
 
@@ -62,7 +62,7 @@ def test_validate_fmu_and_model_description(fixture, request):
         if v.type == "Real":
             assert v.unit in units, v.name
         if v.causality == "output":
-            assert v.initial == "exact", v.name  # SPEC 3: what makes validate_fmu pass on pythonfmu FMUs
+            assert v.initial == "exact", v.name  # what makes validate_fmu pass on pythonfmu FMUs
     assert {v.name for v in md.modelVariables if v.causality == "parameter"} == {"spindle", "integrator", "T_initial"}
 
 
@@ -76,8 +76,8 @@ def test_variables_are_the_model_tables(fixture, request):
 
 
 def test_axial_float_inputs_only_in_the_fixed_preload_fmu(spindle_thermal_fmu, spindle_thermal_fixed_fmu):
-    """SPEC 5.2 (what a scene does not need is not exposed) and spindle.build.THERMAL_FMUS: a spring-
-    preloaded pair keeps its axial force whatever the growth, so SpindleThermal has no axial-float
+    """What a scene does not need is not exposed (docs/architecture.md, scenes; spindle.build.THERMAL_FMUS):
+    a spring-preloaded pair keeps its axial force whatever the growth, so SpindleThermal has no axial-float
     inputs; the fixed-preload FMU needs the bearings' axial reactions and stiffnesses."""
     spring, fixed = set(inputs_of(spindle_thermal_fmu)), set(inputs_of(spindle_thermal_fixed_fmu))
     assert not spring & AXIAL_FLOAT_INPUTS
@@ -106,8 +106,8 @@ AXIAL_STEPS = [
 
 
 def start_inputs(model):
-    """The FMU's input start values (spindle/thermal/fmu.py: T_START for temperatures, 0 otherwise)."""
-    return {v.name: (T_START if v.unit == "K" else 0.0) for v in model.inputs}
+    """The FMU's input start values (spindle/thermal/declarations.py: T_START for temperatures, 0 otherwise)."""
+    return {v.name: v.start for v in model.inputs}
 
 
 @pytest.mark.parametrize(
@@ -151,7 +151,7 @@ def test_hand_written_loop_equals_python_model_bit_for_bit(fixture, parameters, 
 
 def test_state_round_trip_is_exact(spindle_thermal_fixed_fmu):
     """getFMUstate/setFMUstate and serialize/deserialize: after restoring the state of t = 1 s, the
-    same inputs give the same outputs, bit for bit, as the first time (SPEC 5.3). The fixed-preload FMU
+    same inputs give the same outputs, bit for bit, as the first time. The fixed-preload FMU
     is used because its state includes the axial float s, which is no FMI variable. The serialised
     state also restarts a second instance of the FMU (restart from a saved run)."""
     path = spindle_thermal_fixed_fmu
@@ -230,7 +230,7 @@ def test_bad_inputs_are_reported_and_host_survives(fixture, request):
     """NaN heat and a negative ambient temperature: fmi2Discard (2) or fmi2Error (3), never Fatal, with
     an error message naming the input, its value and the allowed range (spindle.thermal.model._merge); the
     state is left unchanged (outputs as before the refused step) and a corrected input steps again.
-    An unknown `spindle` (with a '%' in it: pythonfmu's log() is printf-style, SPEC 3) is reported at
+    An unknown `spindle` (with a '%' in it: pythonfmu's log() is printf-style) is reported at
     initialisation and the next doStep is refused. The process exits 0."""
     path = request.getfixturevalue(fixture)
     script = BAD_INPUT_SCRIPT.format(fmu_tests=str(Path(__file__).parent), path=str(path), omega=OMEGA)

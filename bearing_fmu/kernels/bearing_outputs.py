@@ -1,0 +1,90 @@
+"""The quasi-static facade's output array, filled in declaration order in one compiled call.
+
+quasi_static_outputs() takes the solver's arrays (kernels.jones_harris: displacements d, reactions F,
+stiffness K, per-ball results) and the contact outputs (kernels.contacts CO_*) and writes each output
+slot from the source named by models.declarations, after deriving the outputs that summarise the
+ball set:
+- the most loaded ball: the ball with the largest inner contact load (the largest outer contact load
+  if no ball touches the inner race); its inner and outer contact angles (rad);
+- the cage speed (rad/s): orbital speed of the balls, mean weighted by inner contact load (plain mean
+  when no ball is loaded on the inner race);
+- the ball's angular speed in the fixed frame (rad/s): the magnitude of the spin w_R about the axis
+  pitched by beta plus the orbital speed w_m about the bearing axis, |(w_R cos beta + w_m, w_R sin beta)|
+  (Harris and Kotzalas 2007, ball kinematics), of the most loaded ball, with the sign of omega; 0 at rest.
+"""
+
+import math
+
+from bearing_fmu_common.jit import kernel
+
+from .jones_harris import BQ_A_I, BQ_A_O, BQ_BETA, BQ_Q_I, BQ_Q_O, BQ_W_M, BQ_W_R
+
+# source codes of an output slot (models.declarations `source` arrays)
+SRC_OUT = 0  # the contact kernel's output array (kernels.contacts CO_*)
+SRC_D = 1  # the solver's displacements
+SRC_F = 2  # the solver's reactions
+SRC_K = 3  # the stiffness matrix, flattened row by row
+SRC_BALL_SET = 4  # the ball-set summary below (BS_*)
+# the ball-set summary
+BS_ALPHA_I = 0  # inner contact angle of the most loaded ball (rad)
+BS_ALPHA_O = 1  # outer contact angle of the most loaded ball (rad)
+BS_CAGE = 2  # cage speed (rad/s)
+BS_BALL = 3  # ball angular speed in the fixed frame (rad/s)
+BS_ITERATIONS = 4  # Newton iterations of the solve (-)
+BS_SIZE = 5
+
+
+@kernel
+def ball_set_summary(balls, omega, iterations, summary):
+    """Fill summary[BS_*] from the per-ball results `balls` (BQ_* rows, one column per ball), the
+    inner-ring speed omega (rad/s) and the solver's iteration count."""
+    Z = balls.shape[1]
+    total = 0.0
+    weighted = 0.0
+    j = 0
+    for k in range(Z):
+        q = balls[BQ_Q_I, k]
+        total += q
+        weighted += q * balls[BQ_W_M, k]
+        if q > balls[BQ_Q_I, j]:
+            j = k
+    if total > 0.0:
+        cage = weighted / total
+    else:  # no ball on the inner race: most loaded on the outer race, plain mean orbital speed
+        cage = 0.0
+        for k in range(Z):
+            cage += balls[BQ_W_M, k]
+            if balls[BQ_Q_O, k] > balls[BQ_Q_O, j]:
+                j = k
+        cage /= Z
+    w_m, w_r, beta = balls[BQ_W_M, j], balls[BQ_W_R, j], balls[BQ_BETA, j]
+    spin = math.hypot(w_r * math.cos(beta) + w_m, w_r * math.sin(beta))
+    summary[BS_ALPHA_I] = balls[BQ_A_I, j]
+    summary[BS_ALPHA_O] = balls[BQ_A_O, j]
+    summary[BS_CAGE] = cage
+    summary[BS_BALL] = math.copysign(spin, omega) if omega != 0.0 else 0.0
+    summary[BS_ITERATIONS] = iterations
+
+
+@kernel
+def quasi_static_outputs(balls, omega, iterations, out, d, F, K_flat, source, index, summary, values):
+    """Fill values[k] = (source array source[k])[index[k]] for every output slot k (SRC_* codes), after
+    ball_set_summary(); returns the first slot whose value is not finite, -1 if every value is."""
+    ball_set_summary(balls, omega, iterations, summary)
+    bad = -1
+    for k in range(values.shape[0]):
+        code, i = source[k], index[k]
+        if code == SRC_OUT:
+            v = out[i]
+        elif code == SRC_D:
+            v = d[i]
+        elif code == SRC_F:
+            v = F[i]
+        elif code == SRC_K:
+            v = K_flat[i]
+        else:
+            v = summary[i]
+        values[k] = v
+        if bad < 0 and not math.isfinite(v):
+            bad = k
+    return bad

@@ -1,0 +1,296 @@
+"""Every input, output and parameter of the bearing fidelities, declared once.
+
+The facades (analytic.AnalyticModel, quasi_static.QuasiStaticModel) fill their output arrays in the
+order declared here, the FMU classes (bearing_fmu.fmu) register their FMI variables from these
+declarations, and the variable lists of fmus/<Name>.md and of the README are generated from them
+(bearing_fmu.build.variables_markdown). A declaration says which scene option enables it (`option`,
+`drives`) and where its value comes from (`source`: a slot of a kernel's output array or of the
+solver's arrays; none = computed by the facade).
+
+Source arrays: "out" is the kernel's output array (radial_bearing.O_* for the analytic fidelity,
+contacts.CO_* for the quasi-static one); "d", "F" and "K" are the quasi-static solver's
+displacements, reactions and stiffness matrix (K flattened row by row); "ball_set" is the summary of
+the ball set (bearing_outputs.BS_*: most loaded ball, cage speed, iterations).
+"""
+
+from bearing_fmu_common.variables import Variable
+
+from ..kernels import bearing_outputs as bo
+from ..kernels import contacts as ck
+from ..kernels import radial_bearing as ak
+
+T_OIL_START = 313.15  # K (40 C): every other input starts at 0 (at rest, unloaded, centred)
+DEFAULT_FIXED_PRELOAD = 800.0  # N, Rabreau et al. 2018 rig (fixed_axial scenes only)
+
+OMEGA = Variable("omega", "rad/s", "inner-ring angular speed (outer ring fixed); |omega| <= d_m n limit")
+T_OIL = Variable("T_oil", "K", "oil temperature (viscosity, pressure-viscosity, density)", start=T_OIL_START)
+LAMBDA = "film parameter h_min/sigma, minimum over loaded {} contacts (0 if none)"
+H_MIN = "minimum film thickness, minimum over loaded {} contacts"
+REGIME = "lubrication regime of the worst contact: 0 boundary, 1 mixed, 2 full film"
+CAPACITANCE = "electrical capacitance of the bearing (balls in parallel)"
+
+# -- analytic fidelity ------------------------------------------------------------------------------
+ANALYTIC_INPUTS = (
+    OMEGA,
+    Variable("F_y", "N", "radial load on the inner ring along the psi = 0 line"),
+    T_OIL,
+)
+
+ANALYTIC_OUTPUTS = (
+    Variable("Lambda_inner", "1", LAMBDA.format("inner"), source=("out", ak.O_LAMBDA_I)),
+    Variable("Lambda_outer", "1", LAMBDA.format("outer"), source=("out", ak.O_LAMBDA_O)),
+    Variable("h_min_inner", "m", H_MIN.format("inner"), source=("out", ak.O_HMIN_I)),
+    Variable("h_min_outer", "m", H_MIN.format("outer"), source=("out", ak.O_HMIN_O)),
+    Variable("regime", "1", REGIME, "integer", source=("out", ak.O_REGIME)),
+    Variable("C_bearing", "F", CAPACITANCE, option="capacitance", source=("out", ak.O_C_BEARING)),
+    Variable("Q_max_inner", "N", "largest inner contact load", source=("out", ak.O_QMAX_I)),
+    Variable(
+        "Q_max_outer", "N", "largest outer contact load (includes centrifugal force)", source=("out", ak.O_QMAX_O)
+    ),
+    Variable("p_max", "Pa", "largest Hertz contact pressure", source=("out", ak.O_PMAX)),
+    Variable("omega_cage", "rad/s", "cage angular speed (pure rolling)", source=("out", ak.O_OMEGA_CAGE)),
+    Variable(
+        "omega_ball",
+        "rad/s",
+        "ball spin speed about its own axis in the fixed frame (pure rolling)",
+        source=("out", ak.O_OMEGA_BALL),
+    ),
+    Variable("n_loaded", "1", "number of balls loaded on both races", "integer", source=("out", ak.O_N_LOADED)),
+    Variable("y", "m", "radial displacement of the inner ring along F_y"),  # signed radial approach
+    Variable("epsilon", "1", "load parameter eps = (1 - P_d/(2 delta_r))/2, capped at 1e6 (centred preloaded ring)"),
+)
+
+ANALYTIC_PARAMETERS = (
+    Variable(
+        "bearing", "", "bearing catalogue name (6208, 6306) or path of a bearing TOML file", "string", start="6208"
+    ),
+    Variable(
+        "lubricant",
+        "",
+        "lubricant catalogue name or path of a lubricant TOML file",
+        "string",
+        start="guessasma_oil",
+    ),
+    Variable(
+        "Pd",
+        "m",
+        "diametral clearance used by the model, overrides the bearing file value (negative = preload), |Pd| <= 0.02 D",
+        start=0.0,
+    ),
+)
+
+# -- quasi-static fidelity --------------------------------------------------------------------------
+DOF_NAMES = ("x", "y", "z", "theta_x", "theta_y")
+DOF_UNITS = ("m", "m", "m", "rad", "rad")
+LOAD_NAMES = ("F_x", "F_y", "F_z", "M_x", "M_y")
+LOAD_UNITS = ("N", "N", "N", "N.m", "N.m")
+DOF_WORDS = (
+    "radial displacement along x",
+    "radial displacement along y",
+    "axial displacement",
+    "tilt about x",
+    "tilt about y",
+)
+LOAD_WORDS = ("radial force along x", "radial force along y", "axial force", "moment about x", "moment about y")
+# which DOFs are load-controlled (1) for each drive (scene option)
+DRIVE_CONTROL = {"load": (1, 1, 1, 1, 1), "displacement": (0, 0, 0, 0, 0), "fixed_axial": (1, 1, 0, 1, 1)}
+
+
+def _drives(dof, controlled):
+    """The drives in which DOF `dof` is load-controlled (controlled=1) or imposed (0)."""
+    return tuple(drive for drive, control in DRIVE_CONTROL.items() if control[dof] == controlled)
+
+
+def _dof_inputs():
+    out = []
+    for i in range(5):
+        out.append(
+            Variable(LOAD_NAMES[i], LOAD_UNITS[i], f"applied {LOAD_WORDS[i]} on the inner ring", drives=_drives(i, 1))
+        )
+        imposed = f"imposed {DOF_WORDS[i]} of the inner ring relative to the outer ring"
+        if i == 2:  # a fixed preload adds the assembly offset to the imposed axial position
+            out.append(Variable(DOF_NAMES[i], DOF_UNITS[i], imposed, drives=("displacement",)))
+            out.append(
+                Variable(
+                    DOF_NAMES[i],
+                    DOF_UNITS[i],
+                    f"{imposed} (added to the assembly offset z0 of the parameter F_preload)",
+                    drives=("fixed_axial",),
+                )
+            )
+        else:
+            out.append(Variable(DOF_NAMES[i], DOF_UNITS[i], imposed, drives=_drives(i, 0)))
+    return out
+
+
+QUASI_STATIC_INPUTS = (
+    OMEGA,
+    *_dof_inputs(),
+    T_OIL,
+    Variable(
+        "dPd_thermal",
+        "m",
+        "change of diametral clearance from thermal and centrifugal growth (added to Pd, negative = tighter)",
+        option="thermal_inputs",
+    ),
+    Variable(
+        "dz_thermal",
+        "m",
+        "imposed axial shift of the inner ring from thermal growth, added to z (fixed preload)",
+        option="thermal_inputs",
+        drives=_drives(2, 0),
+    ),
+)
+
+
+def _stiffness_unit(i, j):
+    """Unit of dF_i/dd_j: N/m, N (force per rad or moment per m) or N.m/rad (shown as N.m)."""
+    force_i, length_j = i < 3, j < 3
+    if force_i and length_j:
+        return "N/m"
+    if force_i or length_j:
+        return "N"
+    return "N.m"
+
+
+def stiffness_name(i, j):
+    """FMI name of the stiffness entry dF_i/dd_j (0-based i, j): K[i+1,j+1]."""
+    return f"K[{i + 1},{j + 1}]"
+
+
+def _dof_outputs():
+    """Per DOF, in DOF order: its equilibrium value where it is load-controlled, its reaction where imposed."""
+    out = []
+    for i in range(5):
+        out.append(
+            Variable(
+                DOF_NAMES[i],
+                DOF_UNITS[i],
+                f"{DOF_WORDS[i]} of the inner ring at equilibrium",
+                drives=_drives(i, 1),
+                source=("d", i),
+            )
+        )
+        out.append(
+            Variable(
+                LOAD_NAMES[i],
+                LOAD_UNITS[i],
+                f"reaction: {LOAD_WORDS[i]} the balls exert (= the load needed to hold the imposed position)",
+                drives=_drives(i, 0),
+                source=("F", i),
+            )
+        )
+    return out
+
+
+QUASI_STATIC_OUTPUTS = (
+    *_dof_outputs(),
+    *(
+        Variable(
+            stiffness_name(i, j),
+            _stiffness_unit(i, j),
+            f"stiffness dF_{i + 1}/dd_{j + 1}, (F) = (F_x, F_y, F_z, M_x, M_y), "
+            f"(d) = (x, y, z, theta_x, theta_y), ball equilibrium condensed",
+            option="stiffness",
+            source=("K", 5 * i + j),
+        )
+        for i in range(5)
+        for j in range(5)
+    ),
+    Variable(
+        "torque",
+        "N.m",
+        "friction torque = P_loss/|omega| (0 at rest), Houpert components",
+        option="torque",
+        source=("out", ck.CO_TORQUE),
+    ),
+    Variable("P_loss", "W", "total power loss of the contacts", option="torque", source=("out", ck.CO_P_LOSS)),
+    Variable(
+        "Q_inner_ring",
+        "W",
+        "heat to the inner ring (losses of the inner contacts)",
+        option="torque",
+        source=("out", ck.CO_Q_INNER_RING),
+    ),
+    Variable(
+        "Q_outer_ring",
+        "W",
+        "heat to the outer ring (losses of the outer contacts)",
+        option="torque",
+        source=("out", ck.CO_Q_OUTER_RING),
+    ),
+    Variable("Lambda_inner", "1", LAMBDA.format("inner"), source=("out", ck.CO_LAMBDA_I)),
+    Variable("Lambda_outer", "1", LAMBDA.format("outer"), source=("out", ck.CO_LAMBDA_O)),
+    Variable("h_min_inner", "m", H_MIN.format("inner"), source=("out", ck.CO_HMIN_I)),
+    Variable("h_min_outer", "m", H_MIN.format("outer"), source=("out", ck.CO_HMIN_O)),
+    Variable("regime", "1", REGIME, "integer", source=("out", ck.CO_REGIME)),
+    Variable("C_bearing", "F", CAPACITANCE, option="capacitance", source=("out", ck.CO_C_BEARING)),
+    Variable("Q_max_inner", "N", "largest inner contact load", source=("out", ck.CO_QMAX_I)),
+    Variable("Q_max_outer", "N", "largest outer contact load", source=("out", ck.CO_QMAX_O)),
+    Variable(
+        "p_max", "Pa", "largest Hertz contact pressure (warning logged above 4.2 GPa)", source=("out", ck.CO_PMAX)
+    ),
+    Variable("alpha_inner", "rad", "inner contact angle of the most loaded ball", source=("ball_set", bo.BS_ALPHA_I)),
+    Variable("alpha_outer", "rad", "outer contact angle of the most loaded ball", source=("ball_set", bo.BS_ALPHA_O)),
+    Variable(
+        "omega_cage",
+        "rad/s",
+        "cage speed: orbital speed of the balls, mean weighted by inner load",
+        source=("ball_set", bo.BS_CAGE),
+    ),
+    Variable(
+        "omega_ball",
+        "rad/s",
+        "ball angular speed in the fixed frame (most loaded ball, sign of omega)",
+        source=("ball_set", bo.BS_BALL),
+    ),
+    Variable("n_loaded", "1", "number of balls loaded on both races", "integer", source=("out", ck.CO_N_LOADED)),
+    Variable(
+        "iterations", "1", "Newton iterations of the last solve", "integer", source=("ball_set", bo.BS_ITERATIONS)
+    ),
+)
+
+QUASI_STATIC_PARAMETERS = (
+    Variable(
+        "bearing",
+        "",
+        "bearing catalogue name (6208, 6306, B7214C) or path of a bearing TOML file",
+        "string",
+        start="B7214C",
+    ),
+    Variable(
+        "lubricant",
+        "",
+        "lubricant catalogue name or path of a lubricant TOML file",
+        "string",
+        start="iso_vg68_mineral",
+    ),
+    Variable(
+        "Pd_from_file",
+        "",
+        "true: diametral clearance from the bearing file; false: from the parameter Pd",
+        "boolean",
+        start=True,
+    ),
+    Variable(
+        "Pd",
+        "m",
+        "diametral clearance used when Pd_from_file is false (negative = preload), |Pd| <= 0.02 D",
+        start=0.0,
+    ),
+    Variable(
+        "race_control",
+        "",
+        "ball race-control hypothesis: outer | inner | hybrid (Rabreau 2018)",
+        "string",
+        start=None,  # the scene's race_control
+    ),
+    Variable(
+        "F_preload",
+        "N",
+        "axial preload set at assembly (at rest, no thermal change; default: the Rabreau rig's 800 N); the "
+        "input z is added to the axial approach that carries it. 0 = z is the axial approach itself",
+        drives=("fixed_axial",),  # only a fixed-preload bearing has an assembly offset
+        start=DEFAULT_FIXED_PRELOAD,
+    ),
+)

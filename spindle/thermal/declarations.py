@@ -1,0 +1,98 @@
+"""Every input, output and parameter of the thermal spindle FMUs, declared once.
+
+The variables follow the network (node names, heat inputs, boundaries and bearings of the spindle
+TOML), so they are declared as rules expanded for a network. SpindleThermalModel fills its output
+array in the order of output_declarations(), the FMU class (spindle.thermal.fmu) registers its FMI
+variables from the same declarations, and fmus/<Name>.md is generated from them (spindle.build).
+"""
+
+from bearing_fmu.params import ParameterError
+from bearing_fmu_common.variables import Variable
+
+T_START = 293.15  # K, start value of the temperature inputs of the FMU (20 C, the default assembly temperature)
+DEFAULT_SPINDLE = "b7214c_x_pair"
+
+
+def parameter_declarations(network=DEFAULT_SPINDLE):
+    """The FMU's parameters; `network` is the start value of `spindle` (the network it was built with)."""
+    return (
+        Variable(
+            "spindle", "", "spindle network: catalogue name or path of a spindle TOML file", "string", start=network
+        ),
+        Variable(
+            "integrator",
+            "",
+            "exponential (exact for inputs held over the step) | implicit_euler",
+            "string",
+            start="exponential",
+        ),
+        Variable("T_initial", "K", "initial temperature of every node; 0 = the ambient temperature input", start=0.0),
+    )
+
+
+def input_declarations(net, axial_float):
+    """Inputs of a network (spindle.thermal.model.Network): heat inputs (W), shaft speed, boundary
+    temperatures and, with axial_float, the axial reaction and stiffness of each bearing of the pair."""
+    out = [Variable(name, "W", text) for name, text in zip(net.heat_names, net.heat_text)]
+    out.append(Variable("omega", "rad/s", "shaft angular speed (rotating-shaft convection, centrifugal growth)"))
+    out += [
+        Variable(name, "K", f"temperature of the boundary '{b}'", start=T_START)
+        for name, b in zip(net.boundary_inputs, net.boundaries)
+    ]
+    if axial_float:
+        for k in (1, 2):
+            out.append(Variable(f"F_axial_{k}", "N", f"axial reaction of bearing {k} (axial float)"))
+        for k in (1, 2):
+            out.append(Variable(f"K_axial_{k}", "N/m", f"axial stiffness of bearing {k} (axial float), >= 0"))
+    return tuple(out)
+
+
+def output_declarations(net):
+    """Outputs of a network: node temperatures, ring and oil temperatures and clearance change per
+    bearing, the pair's axial interference (with an [axial] section), heat balance."""
+    out = [Variable(f"T_{name}", "K", f"temperature of node '{name}'") for name in net.nodes]
+    names = {v.name for v in out}
+    for k, b in enumerate(net.bearings, start=1):
+        for alias, role, text in (
+            (f"T_inner_ring_{k}", "inner_ring", "inner ring"),
+            (f"T_outer_ring_{k}", "outer_ring", "outer ring"),
+            (f"T_oil_{k}", "ball_oil", "balls and oil"),
+        ):
+            if alias in names:  # a node already carries this name: it is that node's output
+                if alias != f"T_{net.nodes[b[role]]}":
+                    raise ParameterError(
+                        f"{net.path}: output {alias} would name node '{alias[2:]}' and "
+                        f"bearing {k}'s {role} '{net.nodes[b[role]]}': rename the node"
+                    )
+                continue
+            out.append(Variable(alias, "K", f"temperature of bearing {k}'s {text} (node '{net.nodes[b[role]]}')"))
+            names.add(alias)
+        out.append(
+            Variable(
+                f"dPd_thermal_{k}",
+                "m",
+                f"change of bearing {k}'s diametral clearance from thermal and centrifugal growth (negative = tighter)",
+            )
+        )
+    if net.axial:
+        out.append(
+            Variable(
+                "dz_thermal",
+                "m",
+                "change of the pair's axial interference from shaft vs housing growth (> 0 tightens both bearings)",
+            )
+        )
+        for k in (1, 2):
+            out.append(
+                Variable(
+                    f"dz_thermal_{k}",
+                    "m",
+                    f"change of bearing {k}'s local axial approach (dz_thermal/2 {'+' if k == 1 else '-'} axial float)",
+                )
+            )
+    out += [
+        Variable("P_in", "W", "sum of the heat inputs"),
+        Variable("P_out", "W", "heat flowing into the boundaries at the current temperatures"),
+        Variable("E_stored", "J", "heat stored since initialisation: sum of C (T - T_initial)"),
+    ]
+    return tuple(out)
