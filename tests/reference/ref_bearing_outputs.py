@@ -49,3 +49,7 @@ def quasi_static_outputs(balls, omega, iterations, out, d, F, K_flat, source, in
         values[k] = arrays[int(code)][int(i)]
     bad = [k for k in range(len(values)) if not math.isfinite(values[k])]
     return bad[0] if bad else -1
+
+
+KERNEL_MODULE = "bearing_fmu.kernels.bearing_outputs"
+TWINS = {"ball_set_summary": ball_set_summary, "quasi_static_outputs": quasi_static_outputs}
