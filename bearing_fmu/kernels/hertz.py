@@ -13,8 +13,8 @@ Harris & Kotzalas 2006, ch. 6):
   delta = K [ (9 / (2 E R)) (Q / (pi k E'))^2 ]^(1/3),  p_max = 3 Q / (2 pi a b),
 with R = Rx Ry / (Rx + Ry).  The exact k solves Ry/Rx = (k^2 E - K) / (K - E)
 (Johnson 1985, Contact Mechanics, eqs. 3.63-3.64).  Hamrock & Brewe (1983): k = alpha^(2/pi),
-E = 1 + q/alpha, K = pi/2 + q ln(alpha), q = pi/2 - 1, alpha = Ry/Rx >= 1 (the seeds print
-1 + q ln alpha: a typesetting error, docs/decisions.md).
+E = 1 + q/alpha, K = pi/2 + q ln(alpha), q = pi/2 - 1, alpha = Ry/Rx >= 1 (Guessasma 2018 and
+Farah 2020 print 1 + q ln alpha: a typesetting error, docs/decisions.md).
 """
 
 import math

@@ -62,7 +62,7 @@ RACE_HYBRID = 2  # hybrid pitch angle, gyroscopic moment shared in proportion to
 # studies only (docs/reports/rabreau_torque_sensitivity.md); every code >= RACE_HYBRID is hybrid:
 RACE_HYBRID_OUTER_SPLIT = 3  # lam_i = 0, lam_o = 2 (the outer race takes it all, as in ORC)
 RACE_HYBRID_INNER_SPLIT = 4  # lam_i = 2, lam_o = 0 (the inner race takes it all, as in IRC)
-RACE_HYBRID_EQUAL_SPLIT = 5  # lam_i = lam_o = 1 (Harris without race control; from memory)
+RACE_HYBRID_EQUAL_SPLIT = 5  # lam_i = lam_o = 1 (Harris without race control; unverified, docs/decisions.md)
 RACE_HYBRID_CONTROLLING = 6  # all of it on the race with the larger spin moment (Jones' criterion)
 
 # rows of the per-ball output array

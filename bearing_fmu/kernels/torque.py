@@ -34,7 +34,8 @@ TL_HEATHCOTE = 2
 TL_SPIN = 3
 TL_SIZE = 4
 
-# Hysteresis loss factor of bearing steel. ESTIMATED: Harris, Rolling Bearing Analysis, from memory.
+# Hysteresis loss factor of bearing steel. ESTIMATED (Harris, Rolling Bearing Analysis; unverified, see the
+# unverified-sources table of docs/decisions.md).
 ALPHA_HYSTERESIS_STEEL = 0.007
 
 # Heathcote constant (note 4b). Rolling bands at y = +-c a where the line load
@@ -61,11 +62,11 @@ LUB_OIL_BATH = 1
 LUB_OIL_JET = 2  # also oil bath with a vertical shaft
 
 # ISO 76:2006 Table 1, f0 (N/mm^2) of radial and angular-contact groove ball bearings at
-# gamma = D cos(alpha)/d_m = 0.00, 0.01, ..., 0.40, linear interpolation in between. FROM MEMORY:
-# no copy of the standard was found. Every entry agrees within 0.45 % with f0 = Q_max/(5 D^2) for a
-# Hertz pressure of 4200 MPa on the governing contact (inner groove 0.52 D, outer 0.53 D,
-# E = 207 GPa, nu = 0.3, Stribeck factor 5), which the twin computes; all round to the table's
-# digit except gamma = 0.13 (15.6 here, 15.65 from Hertz).
+# gamma = D cos(alpha)/d_m = 0.00, 0.01, ..., 0.40, linear interpolation in between. UNVERIFIED
+# (docs/decisions.md, unverified sources): no copy of the standard was at hand. Every entry agrees
+# within 0.45 % with f0 = Q_max/(5 D^2) for a Hertz pressure of 4200 MPa on the governing contact
+# (inner groove 0.52 D, outer 0.53 D, E = 207 GPa, nu = 0.3, Stribeck factor 5), which the twin
+# computes; all round to the table's digit except gamma = 0.13 (15.6 here, 15.65 from Hertz).
 ISO76_F0 = (
     14.7,
     14.9,
@@ -194,7 +195,7 @@ def contact_losses(Q, u_mean, omega_spin, Rx, Ry, a_y, b_x, ell_E, f, D, E_red, 
 
 @kernel
 def palmgren_f0(kind, lubrication):
-    """Palmgren lubrication factor f0 (-) (Harris, from memory, ESTIMATED; note 4d).
+    """Palmgren lubrication factor f0 (-) (Harris; ESTIMATED and unverified, docs/decisions.md; note 4d).
 
     kind: PALMGREN_DEEP_GROOVE (oil mist 1, oil bath 2, jet or vertical-shaft bath 4) or
     PALMGREN_ANGULAR_CONTACT single row (1.7, 3.3, 6.6; low confidence). lubrication: LUB_OIL_MIST,
@@ -240,7 +241,7 @@ def palmgren_load_torque(f1, P1, dm):
 
 @kernel
 def palmgren_f1(kind, P0, C0):
-    """Palmgren load factor f1 = z (P0/C0)^y (-) (Harris, from memory, ESTIMATED; note 4d).
+    """Palmgren load factor f1 = z (P0/C0)^y (-) (Harris; ESTIMATED and unverified, docs/decisions.md; note 4d).
 
     Deep groove z = 0.0005 (middle of 0.0004-0.0006), y = 0.55; angular contact z = 0.001,
     y = 0.33. P0 static equivalent load (N), C0 basic static rating (N). P0 <= 0 gives 0.
@@ -285,7 +286,7 @@ def palmgren_equivalent_load(kind, F_r, F_a, alpha):
 @kernel
 def iso76_f0(gamma):
     """ISO 76 factor f0 (N/mm^2) of radial/angular-contact groove ball bearings at
-    gamma = D cos(alpha)/d_m (-): Table 1 (ISO76_F0, from memory, see above), linear interpolation;
+    gamma = D cos(alpha)/d_m (-): Table 1 (ISO76_F0, unverified, see above), linear interpolation;
     gamma is clamped to the table's [0, 0.40]."""
     g = min(max(gamma, 0.0), ISO76_GAMMA_MAX) / ISO76_GAMMA_STEP
     i = min(int(g), len(ISO76_F0) - 2)

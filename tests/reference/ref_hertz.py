@@ -9,7 +9,8 @@ form of the same relation (see hertz_ratio). Contact size, approach and pressure
   a = (6 k^2 E Q R / (pi E'))^(1/3),  b = (6 E Q R / (pi k E'))^(1/3),
   delta = K [ (9 / (2 E R)) (Q / (pi k E'))^2 ]^(1/3),  p_max = 3 Q / (2 pi a b),
 with R = 1 / (1/Rx + 1/Ry). Hamrock & Brewe (1983): k = alpha^(2/pi), E = 1 + q/alpha,
-K = pi/2 + q ln alpha, q = pi/2 - 1 (the seeds' 1 + q ln alpha is a typesetting error, docs/decisions.md).
+K = pi/2 + q ln alpha, q = pi/2 - 1 (Guessasma 2018 and Farah 2020 print 1 + q ln alpha: a typesetting error,
+docs/decisions.md).
 """
 
 import math

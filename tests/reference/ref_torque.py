@@ -10,7 +10,7 @@ scipy over the ellipse, with the Hertz pressure p = (3Q/(2 pi a b)) sqrt(1 - x^2
 - spin: int mu p r dA, with the minor semi-axis recovered from ell_E = E(m), m = 1 - (b/a)^2;
 - ISO 76 f0: from its definition, a Hertz pressure of 4200 MPa at the centre of the governing contact
   (inner groove 0.52 D, outer 0.53 D, E = 207 GPa, nu = 0.3) with Stribeck's Q_max = 5 C0/(Z cos alpha),
-  so f0 = Q_max / (5 D^2) in N/mm^2 (ISO/TR 10657 background; E, nu and the factor 5 from memory,
+  so f0 = Q_max / (5 D^2) in N/mm^2 (ISO/TR 10657 background; E, nu and the factor 5 unverified,
   confirmed by the agreement with the table).
 Houpert's rolling force and the Palmgren formulas are closed forms, written out in their printed units.
 """
@@ -28,7 +28,7 @@ DEEP_GROOVE, ANGULAR_CONTACT = 0, 1
 OIL_MIST, OIL_BATH, OIL_JET = 0, 1, 2
 QUAD_RTOL = 1e-10  # requested accuracy of every 2D quadrature, relative to the caller's scale
 
-# Palmgren f0 (Harris, from memory) by (kind, lubrication).
+# Palmgren f0 (Harris; unverified, docs/decisions.md) by (kind, lubrication).
 PALMGREN_F0 = {
     (DEEP_GROOVE, OIL_MIST): 1.0,
     (DEEP_GROOVE, OIL_BATH): 2.0,
