@@ -12,6 +12,7 @@ Next to each FMU go its scene file, a reference result (<Name>_ref.csv) and its 
 import argparse
 import csv
 import hashlib
+import io
 import math
 import shutil
 import sys
@@ -155,7 +156,7 @@ def build_fmu(scene_file, out_dir=DEFAULT_OUT):
         imports="from bearing_fmu.scene import Scene  # noqa: E402\n",
     )
     out_dir = Path(out_dir)
-    shutil.copy2(scene_file, out_dir / f"{fmu_name}_scene.toml")
+    write_if_changed(out_dir / f"{fmu_name}_scene.toml", Path(scene_file).read_text())
     write_reference(scene_dict, out_dir / f"{fmu_name}_ref.csv")
     write_if_changed(out_dir / f"{fmu_name}.md", variables_markdown(*scene_variables(scene_file)))
     return Path(path)
@@ -168,8 +169,8 @@ FMI_TYPES = {"real": "Real", "integer": "Integer", "boolean": "Boolean", "string
 def write_if_changed(path, text):
     """Write text to path unless the file already holds exactly that (a build leaves tracked files alone)."""
     path = Path(path)
-    if not path.is_file() or path.read_text() != text:
-        path.write_text(text)
+    if not path.is_file() or path.read_bytes() != text.encode():
+        path.write_bytes(text.encode())
 
 
 def _toml_value(value):
@@ -266,11 +267,17 @@ def write_reference(scene_dict, path):
     for inputs in reference_inputs(scene):
         out = model.evaluate(**inputs)
         rows.append({**inputs, **out})
-    with open(path, "w", newline="") as fh:
-        writer = csv.DictWriter(fh, fieldnames=list(rows[0]))
-        writer.writeheader()
-        for row in rows:
-            writer.writerow({k: repr(float(v)) if isinstance(v, float) else repr(v) for k, v in row.items()})
+    write_if_changed(path, csv_text(rows, lambda v: repr(float(v)) if isinstance(v, float) else repr(v)))
+
+
+def csv_text(rows, cell):
+    """CSV text of a list of dicts (header = the first row's keys), each value written by cell(value)."""
+    buffer = io.StringIO(newline="")
+    writer = csv.DictWriter(buffer, fieldnames=list(rows[0]))
+    writer.writeheader()
+    for row in rows:
+        writer.writerow({k: cell(v) for k, v in row.items()})
+    return buffer.getvalue()
 
 
 def main(argv=None):

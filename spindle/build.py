@@ -11,9 +11,7 @@ README.md or a committed fmus/<Name>.md is out of date.
 """
 
 import argparse
-import csv
 import math
-import shutil
 from pathlib import Path
 
 from bearing_fmu import build as bearing_build
@@ -52,11 +50,7 @@ def write_reference(path, spindle=DEFAULT_SPINDLE, axial_float=None, step=60.0, 
     for n in range(int(round(stop / step))):
         model.step(step, **inputs)
         rows.append({"time": (n + 1) * step, **model.outputs_values()})
-    with open(path, "w", newline="") as fh:
-        writer = csv.DictWriter(fh, fieldnames=list(rows[0]))
-        writer.writeheader()
-        for row in rows:
-            writer.writerow({k: repr(float(v)) for k, v in row.items()})
+    bearing_build.write_if_changed(path, bearing_build.csv_text(rows, lambda v: repr(float(v))))
 
 
 # thermal FMUs: name -> the network whose inputs/outputs it exposes. The fixed-preload network adds
@@ -74,7 +68,7 @@ def build_thermal_fmu(name, network, axial_float, out_dir=DEFAULT_OUT):
         package_dirs=(bearing_build.PACKAGE_DIR, bearing_build.COMMON_DIR, SPINDLE_DIR),
         body=f"default_network = {network!r}\n    axial_float = {axial_float!r}",
     )
-    shutil.copy2(network_path(network), Path(out_dir) / f"{name}_network.toml")
+    bearing_build.write_if_changed(Path(out_dir) / f"{name}_network.toml", network_path(network).read_text())
     write_reference(Path(out_dir) / f"{name}_ref.csv", network, axial_float)
     bearing_build.write_if_changed(
         Path(out_dir) / f"{name}.md", bearing_build.variables_markdown(*thermal_variables(name))
