@@ -90,9 +90,9 @@ def _ring_mass(bearing):
 class DemModel:
     """DEM bearing: Z balls + Z cage balls + translating inner ring.
 
-    bearing, lubricant: catalogue name or TOML path (as the other fidelities). scene: Scene whose physics
-    options are used (film formula, Hertz solution, roughness factor, capacitance floor and background,
-    permittivity pressure); its fidelity field is not read. dt: fixed time step (s); None = SAFETY x the
+    bearing, lubricant: catalogue name or TOML path (as the other fidelities). scene: Scene with fidelity
+    'dem' (film formula, Hertz solution, roughness factor, capacitance on/off, floor, background and
+    permittivity pressure). dt: fixed time step (s); None = SAFETY x the
     stability limit of the stiffest contact pair at the loads of each advance() call. refresh: tribology
     refresh interval in steps (>= 1); None = every REFRESH_INTERVAL of simulated time. Pd: diametral
     clearance (m) overriding the file. ring_mass: inner-ring mass (kg); None = estimated from the bore.
@@ -110,7 +110,9 @@ class DemModel:
         ring_mass=None,
         kt_ratio=KT_RATIO,
     ):
-        self.scene = (scene or Scene(name="dem")).validate()
+        self.scene = (scene or Scene(name="dem", fidelity="dem")).validate()
+        if self.scene.fidelity != "dem":
+            raise InputError(f"scene '{self.scene.name}' has fidelity {self.scene.fidelity!r}: DemModel needs 'dem'")
         self.bearing = b = load_bearing(bearing)
         self.lubricant = load_lubricant(lubricant)
         self.Pd = b.Pd if Pd is None else float(Pd)

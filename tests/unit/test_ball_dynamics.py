@@ -204,7 +204,7 @@ def test_capacitance_off_is_not_computed():
     """A scene without capacitance neither computes the contact capacitances nor exposes C_bearing."""
     from bearing_fmu.scene import Scene
 
-    model = DemModel("6208", "guessasma_oil", scene=Scene(name="dem", capacitance=False))
+    model = DemModel("6208", "guessasma_oil", scene=Scene(name="dem", fidelity="dem", capacitance=False))
     out = model.advance(2e-3, omega=50.0, F_x=3000.0)
     assert "C_bearing" not in out
     assert not model.trib[s.T_CAP].any()
