@@ -232,6 +232,30 @@ def test_bad_time_step_is_rejected(dt):
         DemModel("6208", "guessasma_oil", dt=dt)
 
 
+@pytest.mark.parametrize(
+    "kwargs, word",
+    [
+        ({"safety": 0.0}, "safety"),
+        ({"safety": 1.5}, "safety"),
+        ({"safety": math.nan}, "safety"),
+        ({"refresh_interval": -1e-6}, "refresh_interval"),
+        ({"refresh_interval": math.inf}, "refresh_interval"),
+    ],
+)
+def test_bad_step_settings_are_rejected(kwargs, word):
+    with pytest.raises(InputError, match=f"{word} = .* allowed range"):
+        DemModel("6208", "guessasma_oil", **kwargs)
+
+
+def test_step_settings_set_the_time_step_and_the_refresh():
+    """dt = safety x the stability limit at the call's loads; refresh = the interval in whole steps."""
+    model = DemModel("6208", "guessasma_oil", safety=0.25, refresh_interval=30e-6)
+    limit = model.stable_time_step(F_x=3000.0, omega=0.0)  # at the state the call starts from
+    model.advance(1e-4, omega=0.0, F_x=3000.0)
+    assert model.dt <= 0.25 * limit and model.dt == pytest.approx(0.25 * limit, rel=0.05)
+    assert model.refresh == round(30e-6 / model.dt)
+
+
 def test_too_large_time_step_is_reported():
     """dt = 20 us is beyond the stability limit (about 6 us at 3 kN): the monitor stops the run and names a
     time step that works."""
