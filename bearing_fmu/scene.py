@@ -10,7 +10,7 @@ from dataclasses import dataclass, fields, replace
 from .kernels.capacitance import PRESSURE_MAX, PRESSURE_MEAN
 from .kernels.ehl import FILM_CHITTENDEN, FILM_HAMROCK_DOWSON, FILM_MASJEDI_KHONSARI
 
-FIDELITIES = ("analytic", "quasi_static")
+FIDELITIES = ("analytic", "quasi_static", "dem")
 DRIVES = ("load", "displacement", "fixed_axial")  # which DOFs are load- or displacement-controlled
 RACE_CONTROLS = ("outer", "inner", "hybrid")
 FILM_FORMULAS = {
@@ -31,7 +31,10 @@ class Scene:
     """Build-time model options.
 
     fidelity: 'analytic' (Stribeck/Sjovall + Hertz + EHL) |
-        'quasi_static' (Jones/Harris 5-DOF ball equilibrium, docs/quasistatic.md).
+        'quasi_static' (Jones/Harris 5-DOF ball equilibrium, docs/quasistatic.md) |
+        'dem' (ball dynamics, docs/dem.md: load-driven; the gyroscopic and centrifugal effects, the friction
+        torque and the thermal clearance input come from the dynamics, so the options that switch them are
+        quasi-static ones; film, hertz, roughness_factor and the capacitance options apply).
     drive (quasi_static): 'load' (loads in, displacements out), 'displacement' (displacements in,
         reaction loads out) or 'fixed_axial' (radial loads and tilting moments in, axial position in:
         a fixed-preload bearing).
@@ -106,6 +109,17 @@ class Scene:
                     out.append(f"{option} = true needs fidelity = 'quasi_static'")
             if self.drive != "load":
                 out.append(f"drive = {self.drive!r} needs fidelity = 'quasi_static' (analytic is load-driven)")
+        if self.fidelity == "dem":
+            for option in ("gyroscopic", "torque", "stiffness", "thermal_inputs"):
+                if getattr(self, option):
+                    out.append(
+                        f"{option} = true is a quasi-static option (the DEM always has the gyroscopic moment, the "
+                        "torque and the dPd_thermal input, and no stiffness outputs)"
+                    )
+            if self.drive != "load":
+                out.append(f"drive = {self.drive!r} needs fidelity = 'quasi_static' (the DEM is load-driven)")
+            if not self.centrifugal:
+                out.append("centrifugal = false is not possible with fidelity = 'dem' (the balls' orbit makes it)")
         if self.background_capacitance > 0.0 and not self.capacitance:
             out.append("background_capacitance > 0 needs capacitance = true")
         return out

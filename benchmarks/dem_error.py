@@ -11,11 +11,12 @@ A run the monitor stops is reported as unstable with its cause.
 Run: python -m benchmarks.dem_error -> docs/reports/dem_error.md and .png
 """
 
+import os
 import time
 
 import numpy as np
 
-from bearing_fmu.models.dem import DemUnstableError
+from bearing_fmu.models.dem import REFRESH_INTERVAL, SAFETY, DemModel, DemUnstableError
 
 from .common import REPORTS, machine, write_report
 from .dem_timing import F_R, OMEGA, steady_model
@@ -27,12 +28,22 @@ REF_DT = 0.1e-6
 DTS = (0.25e-6, 0.5e-6, 1e-6, 2e-6, 3e-6, 4e-6, 6e-6, 8e-6)
 REFRESHES = (1, 10, 100)
 QUANTITIES = ("Q_max_outer", "h_min_outer", "omega_cage", "C_bearing", "torque")
+# the facade's settings on the front: (safety factor on the stability limit, refresh interval in s)
+SETTINGS = ((0.5, 20e-6), (0.5, 40e-6), (0.65, 20e-6), (0.65, 40e-6), (0.8, 40e-6))
+# choice of the default: the cheapest setting whose every error is within ERROR_BUDGET (50 x below the
+# tightest validation tolerance, 1 %) and that starts up without a monitor stop at every point of ROBUSTNESS
+# (the step is fixed over an advance() call while the loads vary with the balls' positions; a start-up
+# crosses the light-load ball entries that chatter first)
+ERROR_BUDGET = 2e-4
+ROBUSTNESS = [(F, w) for F in (750.0, 3000.0, 7500.0) for w in (100.0, 500.0, 1100.0, 1700.0)]  # (N, rad/s)
 
 
-def run(model, start, dt, refresh):
-    """Means of QUANTITIES over the last intervals, CPU ms per simulated ms, effective (dt, refresh), error."""
+def run(model, start, dt, refresh, setting=(SAFETY, REFRESH_INTERVAL)):
+    """Means of QUANTITIES over the last intervals, CPU ms per simulated ms, effective (dt, refresh), error.
+    dt, refresh None: the facade's choice with setting = (safety, refresh interval in s)."""
     model.set_state(start)
     model.dt_fixed, model.refresh_fixed = dt, refresh
+    model.safety, model.refresh_interval = setting
     t0 = model.time
     samples = []
     c0 = time.thread_time()
@@ -46,7 +57,23 @@ def run(model, start, dt, refresh):
     return means, cpu, (model.dt, model.refresh), None
 
 
+def starts_up(setting):
+    """None if the 6208 starts up (2 ms at rest, 5 ms ramp, held to 50 ms) at every ROBUSTNESS point with the
+    facade's choice for setting = (safety, refresh interval in s); else the first failure (load, speed)."""
+    for F, omega in ROBUSTNESS:
+        model = DemModel("6208", "guessasma_oil", safety=setting[0], refresh_interval=setting[1])
+        try:
+            model.advance(2e-3, omega=0.0, F_x=F)
+            for k in range(1, 21):
+                model.advance(2e-3 + 5e-3 * k / 20, omega=omega * k / 20, F_x=F)
+            model.advance(0.05, omega=omega, F_x=F)
+        except DemUnstableError:
+            return f"stopped at {F:g} N, {omega:g} rad/s"
+    return None
+
+
 def main():
+    load_before = f"{os.getloadavg()[0]:.1f}"
     model = steady_model()
     start = model.get_state()
     ref, ref_cpu, _, _ = run(model, start, REF_DT, 1)
@@ -55,11 +82,22 @@ def main():
         for dt in DTS:
             means, cpu, used, failure = run(model, start, dt, refresh)
             rows.append((dt, refresh, means, cpu, failure))
-    default_means, default_cpu, (default_dt, default_refresh), _ = run(model, start, None, None)
-    rows.append((default_dt, default_refresh, default_means, default_cpu, None))
 
     def errors(means):
         return {q: abs(means[q] - ref[q]) / abs(ref[q]) for q in QUANTITIES}
+
+    settings = []
+    for setting in SETTINGS:
+        means, cpu, (dt, refresh), failure = run(model, start, None, None, setting)
+        settings.append((setting, dt, refresh, means, cpu, failure or starts_up(setting)))
+    fit = [
+        row
+        for row in settings
+        if row[3] is not None and row[5] is None and max(errors(row[3]).values()) <= ERROR_BUDGET
+    ]
+    chosen = min(fit, key=lambda row: row[4])[0] if fit else None
+    default = next(row for row in settings if row[0] == (SAFETY, REFRESH_INTERVAL))
+    _, default_dt, default_refresh, default_means, default_cpu, _ = default
 
     lines = [
         "# DEM error against run time (6208, 500 rad/s, 3 kN)",
@@ -68,9 +106,8 @@ def main():
         f"(t = 30 ms) and advances {RUN_TIME * 1e3:.0f} ms in 1 ms intervals; the outputs are averaged over the "
         f"last {AVERAGE_OVER} intervals. Reference: dt = {REF_DT * 1e6:.2f} us, tribology every step "
         f"({ref_cpu:.2f} ms CPU per simulated ms): " + ", ".join(f"{q} = {ref[q]:.6g}" for q in QUANTITIES) + ".",
-        "Relative errors; CPU = thread CPU time per simulated ms (ms). The last row is the default "
-        f"(dt = {default_dt * 1e6:.2f} us = half the stability limit, refresh every {default_refresh} steps = "
-        f"{default_dt * default_refresh * 1e6:.0f} us).",
+        "Relative errors; CPU = thread CPU time per simulated ms (ms), the machine's load average "
+        f"{load_before} before and {{load_after}} after the run (2 shared cores: CPU times carry the contention).",
         "",
         "| dt (us) | refresh (steps) | CPU (ms/ms) | " + " | ".join(QUANTITIES) + " |",
         "|---|---|---|" + "---|" * len(QUANTITIES),
@@ -80,13 +117,42 @@ def main():
             lines.append(f"| {dt * 1e6:.2f} | {refresh} | unstable | {failure} |" + " |" * (len(QUANTITIES) - 1))
             continue
         err = errors(means)
-        mark = " (default)" if (dt, refresh) == (default_dt, default_refresh) and means is default_means else ""
         lines.append(
-            f"| {dt * 1e6:.2f}{mark} | {refresh} | {cpu:.3f} | "
-            + " | ".join(f"{err[q]:.1e}" for q in QUANTITIES)
-            + " |"
+            f"| {dt * 1e6:.2f} | {refresh} | {cpu:.3f} | " + " | ".join(f"{err[q]:.1e}" for q in QUANTITIES) + " |"
         )
-    write_report("dem_error.md", "\n".join(lines) + "\n")
+    lines += [
+        "",
+        "## The facade's settings (dt = safety x the stability limit, refresh every interval of simulated time)",
+        "",
+        f"Choice of the default: the cheapest setting whose every error is within {ERROR_BUDGET:g} (50 x below the "
+        "tightest validation tolerance, 1 %) and that starts the 6208 up (2 ms at rest, 5 ms ramp, held to 50 ms) "
+        "without a monitor stop at 0.75, 3 and 7.5 kN x 100, 500, 1100 and 1700 rad/s (the step is fixed over an "
+        "advance() call while the loads vary with the balls' positions; a start-up crosses the light-load ball "
+        "entries, which chatter first). "
+        + (
+            f"Chosen: safety {chosen[0]}, refresh every {chosen[1] * 1e6:g} us; the facade's default is safety "
+            f"{SAFETY}, every {REFRESH_INTERVAL * 1e6:g} us"
+            + (" (the same)." if chosen == (SAFETY, REFRESH_INTERVAL) else " (NOT the chosen one).")
+            if chosen
+            else "No setting meets the rule."
+        ),
+        "",
+        "| safety | refresh interval (us) | dt (us) | refresh (steps) | CPU (ms/ms) | starts up everywhere | "
+        + " | ".join(QUANTITIES)
+        + " |",
+        "|---|---|---|---|---|---|" + "---|" * len(QUANTITIES),
+    ]
+    for setting, dt, refresh, means, cpu, failure in settings:
+        mark = " (default)" if setting == (SAFETY, REFRESH_INTERVAL) else ""
+        head = f"| {setting[0]}{mark} | {setting[1] * 1e6:g} | {dt * 1e6:.2f} | {refresh} |"
+        if means is None:
+            lines.append(f"{head} unstable | | {failure} |" + " |" * (len(QUANTITIES) - 1))
+            continue
+        err = errors(means)
+        lines.append(
+            f"{head} {cpu:.3f} | {failure or 'yes'} | " + " | ".join(f"{err[q]:.1e}" for q in QUANTITIES) + " |"
+        )
+    write_report("dem_error.md", "\n".join(lines).replace("{load_after}", f"{os.getloadavg()[0]:.1f}") + "\n")
 
     import matplotlib
 
@@ -103,6 +169,10 @@ def main():
                 )
                 for cpu, err, dt in pts:
                     ax.annotate(f"{dt * 1e6:g}", (cpu, max(err, 1e-12)), fontsize=6)
+        for setting, _, _, means, cpu, _ in settings:
+            if means is not None and setting != (SAFETY, REFRESH_INTERVAL):
+                ax.loglog([cpu], [max(errors(means)[q], 1e-12)], "k^", markersize=5)
+                ax.annotate(f"{setting[0]}/{setting[1] * 1e6:g}", (cpu, max(errors(means)[q], 1e-12)), fontsize=6)
         ax.loglog([default_cpu], [max(errors(default_means)[q], 1e-12)], "r*", markersize=12, label="default")
         ax.set_title(q)
         ax.set_xlabel("CPU ms per simulated ms")

@@ -45,8 +45,8 @@ CAGE_GAP_OVER_D = 0.0026  # pocket play of an estimated cage ball: the seeds' 62
 ALPHA_E = 0.08  # s/m, hysteretic damping constant of steel (Guessasma 2018 eq. 4)
 KT_RATIO = 2.0 / 3.0  # tangential / normal stiffness, lower end of the seeds' [2/3, 1]
 V_REG = 1e-3  # m/s, speed below which the resistances' directions are regularised
-SAFETY = 0.5  # default time step over the stability limit of the stiffest pair
-REFRESH_INTERVAL = 20e-6  # s, default simulated time between two tribology refreshes
+SAFETY = 0.5  # default time step over the stability limit of the stiffest pair (docs/reports/dem_error.md)
+REFRESH_INTERVAL = 20e-6  # s, default simulated time between two tribology refreshes (the same report)
 # consecutive slipping reversals of one spring that count as chatter: sustained chatter (6208 at 3 kN,
 # 500 rad/s, dt >= 7 us) reverses for hundreds of steps and multiplies the torque; a lightly loaded ball
 # entering the load zone during a start-up reverses for up to ~15 steps without changing the results
@@ -90,11 +90,12 @@ def _ring_mass(bearing):
 class DemModel:
     """DEM bearing: Z balls + Z cage balls + translating inner ring.
 
-    bearing, lubricant: catalogue name or TOML path (as the other fidelities). scene: Scene whose physics
-    options are used (film formula, Hertz solution, roughness factor, capacitance floor and background,
-    permittivity pressure); its fidelity field is not read. dt: fixed time step (s); None = SAFETY x the
+    bearing, lubricant: catalogue name or TOML path (as the other fidelities). scene: Scene with fidelity
+    'dem' (film formula, Hertz solution, roughness factor, capacitance on/off, floor, background and
+    permittivity pressure). dt: fixed time step (s); None = safety x the
     stability limit of the stiffest contact pair at the loads of each advance() call. refresh: tribology
-    refresh interval in steps (>= 1); None = every REFRESH_INTERVAL of simulated time. Pd: diametral
+    refresh interval in steps (>= 1); None = every refresh_interval (s) of simulated time. The defaults
+    SAFETY and REFRESH_INTERVAL are chosen from the error-vs-run-time front (docs/reports/dem_error.md). Pd: diametral
     clearance (m) overriding the file. ring_mass: inner-ring mass (kg); None = estimated from the bore.
     kt_ratio: tangential/normal stiffness (-).
     """
@@ -109,8 +110,12 @@ class DemModel:
         Pd=None,
         ring_mass=None,
         kt_ratio=KT_RATIO,
+        safety=SAFETY,
+        refresh_interval=REFRESH_INTERVAL,
     ):
-        self.scene = (scene or Scene(name="dem")).validate()
+        self.scene = (scene or Scene(name="dem", fidelity="dem")).validate()
+        if self.scene.fidelity != "dem":
+            raise InputError(f"scene '{self.scene.name}' has fidelity {self.scene.fidelity!r}: DemModel needs 'dem'")
         self.bearing = b = load_bearing(bearing)
         self.lubricant = load_lubricant(lubricant)
         self.Pd = b.Pd if Pd is None else float(Pd)
@@ -121,6 +126,12 @@ class DemModel:
             raise InputError(f"dt = {dt} s is outside the allowed range ]0, 1e-4] s")
         if refresh is not None and not (float(refresh) == int(refresh) and 1 <= int(refresh) <= 100000):
             raise InputError(f"refresh = {refresh} steps is outside the allowed range [1, 100000] (a whole number)")
+        if not (math.isfinite(safety) and 0.0 < safety <= 1.0):
+            raise InputError(f"safety = {safety} is outside the allowed range ]0, 1]")
+        if not (math.isfinite(refresh_interval) and 0.0 < refresh_interval <= 1e-3):
+            raise InputError(f"refresh_interval = {refresh_interval} s is outside the allowed range ]0, 1e-3] s")
+        self.safety = float(safety)
+        self.refresh_interval = float(refresh_interval)
         if not (math.isfinite(kt_ratio) and 0.1 <= kt_ratio <= 1.5):
             raise InputError(f"kt_ratio = {kt_ratio} is outside the allowed range [0.1, 1.5]")
         if ring_mass is not None and not (math.isfinite(ring_mass) and ring_mass > 0.0):
@@ -364,10 +375,10 @@ class DemModel:
         dt = self.dt_fixed
         if dt is None:
             # the limit falls with speed (centrifugal load): take the faster end of the interval
-            dt = SAFETY * self.stable_time_step(F_x, F_y, F_z, max(abs(self.omega), abs(omega)))
+            dt = self.safety * self.stable_time_step(F_x, F_y, F_z, max(abs(self.omega), abs(omega)))
         n_steps = max(1, math.ceil(interval / dt * (1.0 - 1e-12)))
         dt = interval / n_steps  # land exactly on t_end
-        refresh = self.refresh_fixed or max(1, round(REFRESH_INTERVAL / dt))
+        refresh = self.refresh_fixed or max(1, round(self.refresh_interval / dt))
         self.par[s.P_REFRESH] = refresh
         self.dt, self.refresh = dt, refresh
         omega0 = self.omega
@@ -434,7 +445,7 @@ class DemModel:
             where = f" at the {race} contact of ball {index % Z}"
         # the state at the stop is already disturbed: judge from the inputs alone
         limit = self.stable_time_step(F_x, F_y, F_z, self.omega, include_state=False)
-        suggestion = min(0.5 * dt, SAFETY * limit) if math.isfinite(limit) else 0.5 * dt
+        suggestion = min(0.5 * dt, self.safety * limit) if math.isfinite(limit) else 0.5 * dt
         raise DemUnstableError(
             f"DEM stopped at t = {self.time:.9g} s (step {step} of the interval){where}: "
             f"{STATUS_WORDS[code]}. dt = {dt:.3g} s is too large here; use dt <= {suggestion:.3g} s "

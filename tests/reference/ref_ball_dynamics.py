@@ -203,7 +203,7 @@ def forces(st, par, omega, F_ring, vel, dt):
             # regularised resistances: viscous below max(w_reg, M / (I / (4 dt))), Coulomb-like above
             M_roll = trib[s.T_F_ROLL, race, j] * 0.5 * D
             M_spin = trib[s.T_M_SPIN, race, j]
-            rate = par[s.P_I_BALL] / (4.0 * dt)
+            rate = par[s.P_I_BALL] / (4.0 * dt) if dt > 0.0 else math.inf  # dt = 0: the state's accelerations
             m_ball[:, j] += (
                 np.cross(r_c, F_t)
                 - M_roll * q / max(np.linalg.norm(q), w_reg, M_roll / rate)
@@ -263,6 +263,21 @@ def step(st, par, omega, F_ring, dt):
     return power
 
 
+def initialise_accelerations(st, par, lub, omega, F_ring, T_oil):
+    """Tribology and accelerations of a state at rest in time: forces at the current velocities, no step
+    (the springs keep their lengths)."""
+    refresh(st, par, lub, omega, T_oil)
+    balls, cage, ring = st["balls"], st["cage"], st["ring"]
+    saved = st["spring"].copy()
+    vel = tuple(a[r : r + 3].copy() for a, r in ((balls, s.B_VX), (balls, s.B_WX), (cage, s.C_VX), (ring, s.R_VX)))
+    f_b, m_b, f_c, f_r, _ = forces(st, par, omega, F_ring, vel, 0.0)
+    st["spring"][...] = saved
+    balls[s.B_AX : s.B_AX + 3] = f_b / par[s.P_M_BALL]
+    balls[s.B_ALX : s.B_ALX + 3] = m_b / par[s.P_I_BALL]
+    cage[s.C_AX : s.C_AX + 3] = f_c / par[s.P_M_CAGE]
+    ring[s.R_AX : s.R_AX + 3] = f_r / par[s.P_M_RING]
+
+
 def advance(st, par, lub, n_steps, dt, omega0, omega1, F_ring, T_oil):
     """n_steps steps (omega linear from omega0 to omega1); returns the energy dissipated per race (J)."""
     refresh_every = int(par[s.P_REFRESH])
@@ -273,3 +288,7 @@ def advance(st, par, lub, n_steps, dt, omega0, omega1, F_ring, T_oil):
         power = step(st, par, omega0 + (omega1 - omega0) * (n + 1) / n_steps, F_ring, dt)
         energy += power * dt + st["trib"][s.T_P_FILM].sum(axis=1) * dt
     return energy
+
+
+KERNEL_MODULE = "bearing_fmu.kernels.ball_dynamics.integrator"
+TWINS = {"advance": advance, "initialise_accelerations": initialise_accelerations}

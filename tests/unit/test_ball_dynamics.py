@@ -204,7 +204,7 @@ def test_capacitance_off_is_not_computed():
     """A scene without capacitance neither computes the contact capacitances nor exposes C_bearing."""
     from bearing_fmu.scene import Scene
 
-    model = DemModel("6208", "guessasma_oil", scene=Scene(name="dem", capacitance=False))
+    model = DemModel("6208", "guessasma_oil", scene=Scene(name="dem", fidelity="dem", capacitance=False))
     out = model.advance(2e-3, omega=50.0, F_x=3000.0)
     assert "C_bearing" not in out
     assert not model.trib[s.T_CAP].any()
@@ -230,6 +230,30 @@ def test_thermal_clearance_change_acts_like_the_clearance():
 def test_bad_time_step_is_rejected(dt):
     with pytest.raises(InputError, match="dt = .* allowed range"):
         DemModel("6208", "guessasma_oil", dt=dt)
+
+
+@pytest.mark.parametrize(
+    "kwargs, word",
+    [
+        ({"safety": 0.0}, "safety"),
+        ({"safety": 1.5}, "safety"),
+        ({"safety": math.nan}, "safety"),
+        ({"refresh_interval": -1e-6}, "refresh_interval"),
+        ({"refresh_interval": math.inf}, "refresh_interval"),
+    ],
+)
+def test_bad_step_settings_are_rejected(kwargs, word):
+    with pytest.raises(InputError, match=f"{word} = .* allowed range"):
+        DemModel("6208", "guessasma_oil", **kwargs)
+
+
+def test_step_settings_set_the_time_step_and_the_refresh():
+    """dt = safety x the stability limit at the call's loads; refresh = the interval in whole steps."""
+    model = DemModel("6208", "guessasma_oil", safety=0.25, refresh_interval=30e-6)
+    limit = model.stable_time_step(F_x=3000.0, omega=0.0)  # at the state the call starts from
+    model.advance(1e-4, omega=0.0, F_x=3000.0)
+    assert model.dt <= 0.25 * limit and model.dt == pytest.approx(0.25 * limit, rel=0.05)
+    assert model.refresh == round(30e-6 / model.dt)
 
 
 def test_too_large_time_step_is_reported():

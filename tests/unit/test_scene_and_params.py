@@ -13,10 +13,41 @@ from bearing_fmu.scene import Scene, SceneError
 
 def test_scene_reports_every_problem_at_once():
     with pytest.raises(SceneError) as info:
-        Scene(fidelity="dem", film="nope", hertz="rough", roughness_factor=5.0).validate()
+        Scene(fidelity="fem", film="nope", hertz="rough", roughness_factor=5.0).validate()
     text = str(info.value)
     for word in ("fidelity", "film", "hertz", "roughness_factor"):
         assert word in text
+
+
+@pytest.mark.parametrize(
+    "option, word",
+    [
+        ({"gyroscopic": True}, "gyroscopic"),
+        ({"torque": True}, "torque"),
+        ({"stiffness": True}, "stiffness"),
+        ({"thermal_inputs": True}, "thermal_inputs"),
+        ({"drive": "displacement"}, "load-driven"),
+        ({"centrifugal": False}, "centrifugal"),
+    ],
+)
+def test_dem_scene_rejects_quasi_static_options(option, word):
+    with pytest.raises(SceneError, match=word):
+        Scene(name="d", fidelity="dem", **option).validate()
+
+
+def test_dem_scene_takes_the_physics_options():
+    scene = Scene(name="d", fidelity="dem", film="chittenden", hertz="approximate", capacitance=False).validate()
+    assert scene.fidelity == "dem"
+
+
+def test_each_facade_requires_its_fidelity():
+    from bearing_fmu.models.dem import DemModel
+    from bearing_fmu.models.quasi_static import QuasiStaticModel
+
+    with pytest.raises(InputError, match="DemModel needs 'dem'"):
+        DemModel(scene=Scene(name="q", fidelity="quasi_static"))
+    with pytest.raises(InputError, match="QuasiStaticModel needs 'quasi_static'"):
+        QuasiStaticModel(scene=Scene(name="d", fidelity="dem"))
 
 
 def test_scene_rejects_unknown_options():

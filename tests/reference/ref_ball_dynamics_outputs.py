@@ -1,0 +1,100 @@
+"""Twin of bearing_fmu.kernels.ball_dynamics.outputs: contact loads, contact angles and bearing-level outputs.
+
+Written from the definitions with vector algebra (the groove-torus contact of ref_ball_dynamics, Hertz
+Q = K_h delta^1.5), sharing only the array layout (the kernel's slot constants):
+- contact angle: angle of the contact normal from the radial plane, atan2(|n_z|, |n_radial|);
+- cage speed: mean change of the balls' orbital angles over the interval; ball speeds of the most loaded
+  ball (inner race, or the outer one when no inner contact is loaded), in the fixed frame and relative to
+  the cage;
+- films over loaded contacts: smallest Lambda and h_min per race, h_c of the most loaded contact; the
+  regime of the smaller Lambda; largest SRR and Hertz pressure of a loaded contact;
+- capacitance: balls loaded on both races in parallel, each the series of its two contacts, plus background;
+- power = energy dissipated over the interval / interval; torque = power / |omega|; cage slip against the
+  kinematic cage speed (Harris).
+"""
+
+import math
+
+import numpy as np
+
+from bearing_fmu.kernels.ball_dynamics import state as s
+from tests.reference import ref_capacitance, ref_ehl, ref_geometry
+from tests.reference.ref_ball_dynamics import groove_contact, race_centre
+from tests.reference.ref_ball_dynamics_monitor import kinetic_energy
+
+KERNEL_MODULE = "bearing_fmu.kernels.ball_dynamics.outputs"
+
+
+def _contacts(balls, ring, par):
+    """Per race and ball: (delta (m), normal n) of the ball-race contact."""
+    result = []
+    for race in range(2):
+        centre, rho = race_centre(race, ring, par)
+        rg = par[s.P_RG_I + race]
+        result.append([groove_contact(balls[s.B_X : s.B_X + 3, j], centre, rho, rg) for j in range(balls.shape[1])])
+    return result
+
+
+def contact_loads(balls, ring, par):
+    """Normal loads Q[race, ball] (N), 0 where the contact is open."""
+    return np.array(
+        [
+            [par[s.P_KH_I + race] * max(d, 0.0) ** 1.5 for d, _ in row]
+            for race, row in enumerate(_contacts(balls, ring, par))
+        ]
+    )
+
+
+def contact_angles(balls, ring, par):
+    """Contact angles alpha[race, ball] (rad) of the contact normals from the radial plane, 0 where open."""
+    return np.array(
+        [
+            [math.atan2(abs(n[2]), math.hypot(n[0], n[1])) if d > 0.0 else 0.0 for d, n in row]
+            for row in _contacts(balls, ring, par)
+        ]
+    )
+
+
+def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, c_background):
+    """Bearing-level outputs out[O_*] at inner-ring speed omega (rad/s) after an interval (s)."""
+    Z = balls.shape[1]
+    Q = contact_loads(balls, ring, par)
+    alpha = contact_angles(balls, ring, par)
+    out = np.zeros(s.O_SIZE)
+    loaded = Q > 0.0
+    for race in range(2):
+        if loaded[race].any():
+            most = int(np.argmax(Q[race]))
+            out[s.O_QMAX_I + race] = Q[race, most]
+            out[s.O_LAMBDA_I + race] = trib[s.T_LAMBDA, race][loaded[race]].min()
+            out[s.O_HMIN_I + race] = trib[s.T_H_MIN, race][loaded[race]].min()
+            out[s.O_HC_I + race] = trib[s.T_H_C, race, most]
+    if loaded.any():
+        out[s.O_SRR_MAX] = max(trib[s.T_SRR][loaded].max(), 0.0)
+        out[s.O_PMAX] = max(trib[s.T_P_MAX][loaded].max(), 0.0)
+    out[s.O_REGIME] = ref_ehl.lubrication_regime(min(out[s.O_LAMBDA_I], out[s.O_LAMBDA_O]))
+    j = int(np.argmax(Q[0])) if loaded[0].any() else int(np.argmax(Q[1]))
+    both = loaded[0] & loaded[1]
+    out[s.O_N_LOADED] = both.sum()
+    out[s.O_C_BEARING] = c_background + sum(
+        ref_capacitance.ball_capacitance(trib[s.T_CAP, 0, k], trib[s.T_CAP, 1, k]) for k in range(Z) if both[k]
+    )
+    omega_cage = (balls[s.B_ORBIT].sum() - orbit0) / (Z * interval) if interval > 0.0 else 0.0
+    out[s.O_OMEGA_CAGE] = omega_cage
+    w = balls[s.B_WX : s.B_WX + 3, j]
+    out[s.O_OMEGA_BALL] = math.copysign(np.linalg.norm(w), omega) if omega != 0.0 else np.linalg.norm(w)
+    out[s.O_OMEGA_BALL_REL] = np.linalg.norm(w - np.array([0.0, 0.0, omega_cage]))
+    out[s.O_ALPHA_I] = alpha[0, j]
+    out[s.O_ALPHA_O] = alpha[1, j]
+    if interval > 0.0:
+        out[s.O_Q_INNER_RING] = acc[s.A_DISS_I] / interval
+        out[s.O_Q_OUTER_RING] = acc[s.A_DISS_O] / interval
+    out[s.O_P_LOSS] = out[s.O_Q_INNER_RING] + out[s.O_Q_OUTER_RING]
+    out[s.O_TORQUE] = out[s.O_P_LOSS] / abs(omega) if omega != 0.0 else 0.0
+    kinematic_cage = ref_geometry.rolling_kinematics(omega, par[s.P_D], par[s.P_DM], par[s.P_ALPHA0])[0]
+    out[s.O_CAGE_SLIP] = 1.0 - omega_cage / kinematic_cage if kinematic_cage != 0.0 else 0.0
+    out[s.O_KINETIC] = kinetic_energy(balls, cage, ring, par)
+    return out
+
+
+TWINS = {"contact_loads": contact_loads, "contact_angles": contact_angles, "bearing_outputs": bearing_outputs}

@@ -1,0 +1,116 @@
+"""The DEM kernels that the facade calls directly (besides advance) against their plain-Python twins:
+the accelerations of a new state, the time-step limit, the kinetic energy, contact loads and angles and the
+bearing-level outputs. States: a 6208 under 3 kN in a speed ramp, and a B7214C under axial load (non-zero
+contact angles)."""
+
+import numpy as np
+import pytest
+
+from bearing_fmu.kernels.ball_dynamics import integrator as dyn
+from bearing_fmu.kernels.ball_dynamics import monitor, outputs
+from bearing_fmu.kernels.ball_dynamics import state as s
+from bearing_fmu.models.dem import DemModel
+from tests.reference import ref_ball_dynamics as ref
+from tests.reference import ref_ball_dynamics_monitor as ref_monitor
+from tests.reference import ref_ball_dynamics_outputs as ref_outputs
+
+RTOL = 1e-10  # same operations in another order (vector algebra against scalar loops)
+
+
+@pytest.fixture(scope="module")
+def models():
+    """6208: 3 kN radial, 0 -> 200 rad/s over 2 ms after 0.5 ms at rest; B7214C: 800 N axial, 0 -> 300 rad/s."""
+    m6208 = DemModel("6208", "guessasma_oil", dt=3e-6, refresh=10)
+    m6208.advance(0.5e-3, omega=0.0, F_x=3000.0)
+    for k in range(1, 5):
+        m6208.advance(0.5e-3 + 0.5e-3 * k, omega=50.0 * k, F_x=3000.0)
+    b7214 = DemModel("B7214C", "iso_vg68_mineral")
+    b7214.advance(0.5e-3, omega=0.0, F_z=800.0, F_x=200.0)
+    b7214.advance(1e-3, omega=300.0, F_z=800.0, F_x=200.0)
+    return {"6208": m6208, "B7214C": b7214}
+
+
+def _copy(state):
+    return {k: (v.copy() if isinstance(v, np.ndarray) else v) for k, v in state.items()}
+
+
+@pytest.mark.parametrize("name", ["6208", "B7214C"])
+def test_initialise_accelerations_matches_twin(models, name):
+    model = models[name]
+    kernel_state, twin_state = _copy(model.get_state()), _copy(model.get_state())
+    F, omega, T_oil = (3000.0, 50.0, 800.0), model.omega, 313.15
+    Z = model.bearing.Z
+    dyn.initialise_accelerations(
+        *(kernel_state[k] for k in ("balls", "cage", "ring", "spring", "trib", "counters")),
+        model.par,
+        model.lubricant.array,
+        omega,
+        *F,
+        T_oil,
+        np.zeros((s.W_SIZE, Z)),
+        np.zeros(s.A_SIZE),
+    )
+    ref.initialise_accelerations(twin_state, model.par, model.lubricant.array, omega, np.array(F), T_oil)
+    # one scale per quantity: the balls' accelerations (a cage ball resting in its channel carries round-off)
+    for name_, rows in (("balls", slice(s.B_AX, s.B_AX + 3)), ("balls", slice(s.B_ALX, s.B_ALX + 3))):
+        b = twin_state[name_][rows]
+        assert np.max(np.abs(b)) > 0.0
+        np.testing.assert_allclose(kernel_state[name_][rows], b, rtol=RTOL, atol=RTOL * np.max(np.abs(b)))
+    cage_acc = slice(s.C_AX, s.C_AX + 3)
+    np.testing.assert_allclose(
+        kernel_state["cage"][cage_acc],
+        twin_state["cage"][cage_acc],
+        rtol=RTOL,
+        atol=RTOL * np.max(np.abs(twin_state["balls"][s.B_AX : s.B_AX + 3])),
+    )
+    ring_acc = slice(s.R_AX, s.R_AX + 3)
+    np.testing.assert_allclose(kernel_state["ring"][ring_acc], twin_state["ring"][ring_acc], rtol=1e-9, atol=1e-6)
+    np.testing.assert_array_equal(kernel_state["spring"], model.get_state()["spring"])  # no step: springs kept
+    trib_a, trib_b = kernel_state["trib"], twin_state["trib"]
+    finite = np.isfinite(trib_b)
+    np.testing.assert_array_equal(finite, np.isfinite(trib_a))
+    np.testing.assert_allclose(trib_a[finite], trib_b[finite], rtol=1e-9, atol=1e-20)
+
+
+@pytest.mark.parametrize("name", ["6208", "B7214C"])
+def test_time_step_limit_and_kinetic_energy_match_twin(models, name):
+    model = models[name]
+    Z = model.bearing.Z
+    rng = np.random.default_rng(3)
+    for Q_cage in (0.0, 25.0):
+        Q_i, Q_o = rng.uniform(0.0, 2000.0, Z), rng.uniform(0.0, 2000.0, Z)
+        Q_i[0] = 0.0  # an open contact
+        kernel = monitor.critical_time_step(model.par, Q_i, Q_o, Q_cage)
+        assert kernel == pytest.approx(ref_monitor.critical_time_step(model.par, Q_i, Q_o, Q_cage), rel=1e-12)
+    zero = np.zeros(Z)
+    assert monitor.critical_time_step(model.par, zero, zero, 0.0) == ref_monitor.critical_time_step(
+        model.par, zero, zero, 0.0
+    )
+    energy = monitor.kinetic_energy(model.balls, model.cage, model.ring, model.par)
+    assert energy > 0.0
+    assert energy == pytest.approx(
+        ref_monitor.kinetic_energy(model.balls, model.cage, model.ring, model.par), rel=1e-12
+    )
+
+
+@pytest.mark.parametrize("name", ["6208", "B7214C"])
+def test_contact_loads_angles_and_outputs_match_twin(models, name):
+    model = models[name]
+    Z = model.bearing.Z
+    Q, alpha = np.zeros((2, Z)), np.zeros((2, Z))
+    outputs.contact_loads(model.balls, model.ring, model.par, Q)
+    outputs.contact_angles(model.balls, model.ring, model.par, alpha)
+    Q_twin = ref_outputs.contact_loads(model.balls, model.ring, model.par)
+    np.testing.assert_allclose(Q, Q_twin, rtol=1e-9, atol=1e-9 * Q_twin.max())
+    np.testing.assert_allclose(alpha, ref_outputs.contact_angles(model.balls, model.ring, model.par), atol=1e-12)
+    assert Q_twin.max() > 100.0
+    assert (Q_twin == 0.0).any() or name == "B7214C"  # the 6208 under radial load has open contacts
+    acc = np.zeros(s.A_SIZE)
+    acc[s.A_DISS_I], acc[s.A_DISS_O] = 2.0e-3, 3.0e-3
+    orbit0 = float(model.balls[s.B_ORBIT].sum()) - 0.1 * Z
+    args = (model.balls, model.cage, model.ring, model.trib, model.par, acc, model.omega, 1e-3, orbit0, 1e-11)
+    out = np.zeros(s.O_SIZE)
+    outputs.bearing_outputs(*args, Q, alpha, out)
+    twin = ref_outputs.bearing_outputs(*args)
+    np.testing.assert_allclose(out, twin, rtol=1e-9, atol=1e-25)
+    assert out[s.O_C_BEARING] > 1e-11 and out[s.O_TORQUE] > 0.0 and out[s.O_QMAX_I] > 0.0
