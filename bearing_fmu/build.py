@@ -18,6 +18,8 @@ from pathlib import Path
 
 from pythonfmu.builder import FmuBuilder
 
+from bearing_fmu_common.runtime.build import install_runtime
+
 from .fmu import DEFAULT_FIXED_PRELOAD
 from .models.analytic import AnalyticModel
 from .models.quasi_static import QuasiStaticModel
@@ -93,7 +95,8 @@ def build_python_fmu(
     fmu_name, module, base_class, out_dir, package_dirs=(PACKAGE_DIR, COMMON_DIR), body="pass", imports=""
 ):
     """Build a pythonfmu FMU whose slave class `fmu_name` derives from module.base_class, bundling
-    the given package directories in resources/ (copied to a stable cache directory at load)."""
+    the given package directories in resources/ (copied to a stable cache directory at load). Its
+    binary is the project's FMI layer (bearing_fmu_common/runtime), not pythonfmu's."""
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     package_dirs = [Path(p) for p in package_dirs]
@@ -125,7 +128,7 @@ def build_python_fmu(
             canSerializeFMUstate=True,
         )
         sys.modules.pop(entry.stem, None)
-    return Path(path)
+    return install_runtime(path)
 
 
 def scene_files():
