@@ -2,15 +2,15 @@
 
 Thin on purpose: physics lives in the kernels, input checks in the models. The model declares its
 inputs and outputs (bearing_fmu.models.analytic.Variable); the slave registers them, so the FMU and the
-Python model cannot drift. Bad input never raises out of an FMI call (a Python exception becomes
-fmi2Fatal in pythonfmu): it is logged with its allowed range and do_step returns False
-(fmi2Discard); the outputs keep their last valid values.
+Python model cannot drift. Bad input never raises out of an FMI call: it is logged with its allowed
+range and do_step returns False (fmi2Discard); the outputs keep their last valid values. A refused
+parameter makes exit_initialization_mode return False (fmi2Error). Statuses: docs/fmu_runtime.md.
 """
 
 from pythonfmu import Fmi2Slave
 from pythonfmu.enums import Fmi2Status
 
-from bearing_fmu_common.fmi import add_unit_definitions, fmi_escape, input_variable, output_variable, parameter
+from bearing_fmu_common.fmi import add_unit_definitions, input_variable, output_variable, parameter
 
 from .models.analytic import AnalyticModel
 from .models.quasi_static import QuasiStaticModel
@@ -72,7 +72,7 @@ class _BearingSlave(Fmi2Slave):
     def _update(self):
         values = self._model.evaluate(**{v.name: getattr(self, v.name) for v in self._model.inputs})
         for warning in self._model.warnings:
-            self.log(fmi_escape(warning), Fmi2Status.warning)
+            self.log(warning, Fmi2Status.warning)
         self._values.update(values)
 
     def _guarded(self, action):
@@ -81,14 +81,20 @@ class _BearingSlave(Fmi2Slave):
             action()
             return True
         except (InputError, ParameterError, SceneError) as exc:
-            self.log(fmi_escape(f"{self.instance_name}: {exc}"), Fmi2Status.error)
-        except Exception as exc:  # never let an exception reach the host as fmi2Fatal
-            self.log(fmi_escape(f"{self.instance_name}: internal error {type(exc).__name__}: {exc}"), Fmi2Status.error)
+            self.log(f"{self.instance_name}: {exc}", Fmi2Status.error)
+        except Exception as exc:  # logged as the model's own message, not a traceback
+            self.log(f"{self.instance_name}: internal error {type(exc).__name__}: {exc}", Fmi2Status.error)
         return False
 
     # -- FMI -------------------------------------------------------------------------------------
     def exit_initialization_mode(self):
-        self._ready = self._guarded(lambda: (self._build_model(), self._update()))
+        # a refused parameter fails initialisation (fmi2Error: parameters are fixed from here on); a
+        # bad input is logged and refused again by the first doStep (fmi2Discard): the host may still
+        # correct an input (and libcosim 0.11 aborts the process on fmi2Error here, docs/fmu_runtime.md)
+        self._ready = self._guarded(self._build_model)
+        if self._ready:
+            self._guarded(self._update)
+        return self._ready
 
     def do_step(self, current_time, step_size):
         if not self._ready:

@@ -10,7 +10,7 @@ their allowed range and the call returns Discard/Error; the host never sees an e
 from pythonfmu import Fmi2Slave
 from pythonfmu.enums import Fmi2Status
 
-from bearing_fmu_common.fmi import add_unit_definitions, fmi_escape, input_variable, output_variable, parameter
+from bearing_fmu_common.fmi import add_unit_definitions, input_variable, output_variable, parameter
 
 from .model import DEFAULT_SPINDLE, SpindleThermalModel
 
@@ -78,8 +78,8 @@ class SpindleThermal(Fmi2Slave):
         try:
             action()
             return True
-        except Exception as exc:  # never let an exception reach the host (it would be fmi2Fatal)
-            self.log(fmi_escape(f"{self.instance_name}: {exc}"), Fmi2Status.error)
+        except Exception as exc:  # logged as the model's own message, not a traceback
+            self.log(f"{self.instance_name}: {exc}", Fmi2Status.error)
             return False
 
     def _initialise(self):
@@ -101,12 +101,11 @@ class SpindleThermal(Fmi2Slave):
 
     def exit_initialization_mode(self):
         self._ready = self._guarded(self._initialise)
+        return self._ready  # False: fmi2Error from fmi2ExitInitializationMode
 
     def do_step(self, current_time, step_size):
         if not self._ready:
-            self.log(
-                fmi_escape(f"{self.instance_name}: not initialised (see the error at initialisation)"), Fmi2Status.error
-            )
+            self.log(f"{self.instance_name}: not initialised (see the error at initialisation)", Fmi2Status.error)
             return False
 
         def step():
