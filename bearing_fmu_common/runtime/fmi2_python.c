@@ -193,12 +193,13 @@ static int ensure_python(const char *resources, char *error, size_t size)
 {
     int ok = 1;
     pthread_mutex_lock(&init_lock);
-    void *visible = dlsym(RTLD_DEFAULT, "Py_IsInitialized");
-    if (visible != NULL && visible != (void *)&Py_IsInitialized) {
-        snprintf(error, size,
-                 "the host process runs another Python than the one this FMU's binary links (%s); "
-                 "use that interpreter built with --enable-shared, or a native host",
-                 Py_GetVersion());
+    /* A host's interpreter takes precedence over the linked libpython (its symbols come first in
+     * the global scope): it must be the version the layer was compiled for. */
+    char version[16];
+    snprintf(version, sizeof version, "%d.%d.", PY_MAJOR_VERSION, PY_MINOR_VERSION);
+    if (strncmp(Py_GetVersion(), version, strlen(version)) != 0) {
+        snprintf(error, size, "the host runs Python %.20s; this FMU's binary is built for Python %s%d", Py_GetVersion(),
+                 version, PY_MICRO_VERSION);
         ok = 0;
     } else if (!Py_IsInitialized()) {
         /* libpython came in with this library, local to it: make its symbols global so that
