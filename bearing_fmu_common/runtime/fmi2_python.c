@@ -198,8 +198,8 @@ static int ensure_python(const char *resources, char *error, size_t size)
     char version[16];
     snprintf(version, sizeof version, "%d.%d.", PY_MAJOR_VERSION, PY_MINOR_VERSION);
     if (strncmp(Py_GetVersion(), version, strlen(version)) != 0) {
-        snprintf(error, size, "the host runs Python %.20s; this FMU's binary is built for Python %s%d", Py_GetVersion(),
-                 version, PY_MICRO_VERSION);
+        snprintf(error, size, "the host runs Python %.*s; this FMU's binary is built for Python %s%d",
+                 (int)strcspn(Py_GetVersion(), " "), Py_GetVersion(), version, PY_MICRO_VERSION);
         ok = 0;
     } else if (!Py_IsInitialized()) {
         /* libpython came in with this library, local to it: make its symbols global so that
