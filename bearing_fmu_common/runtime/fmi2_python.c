@@ -231,6 +231,11 @@ static int ensure_python(const char *resources, char *error, size_t size)
         }
     }
     if (ok && helper == NULL) {
+        /* keep this library (and so `helper`) loaded when a host unloads it after fmi2FreeInstance
+         * (fmpy does): a reload would compile the helper again and lose the previous one */
+        Dl_info self;
+        if (dladdr((void *)&fmi2Instantiate, &self) && self.dli_fname != NULL)
+            dlopen(self.dli_fname, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
         PyGILState_STATE gil = PyGILState_Ensure();
         PyObject *globals = PyDict_New();
         PyDict_SetItemString(globals, "__builtins__", PyEval_GetBuiltins());
