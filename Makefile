@@ -13,7 +13,7 @@ $(STAMP): pyproject.toml
 	touch $(STAMP)
 
 # FMUs are rebuilt only when a bundled source changed (or the environment was reinstalled)
-FMU_SOURCES := $(shell find bearing_fmu bearing_fmu_common spindle -name '*.py' -o -name '*.toml' | grep -v __pycache__)
+FMU_SOURCES := $(shell find bearing_fmu bearing_fmu_common spindle -name '*.py' -o -name '*.toml' -o -name '*.c' | grep -v __pycache__)
 FMU_STAMP := fmus/.built
 
 $(FMU_STAMP): $(STAMP) $(FMU_SOURCES)

@@ -21,6 +21,7 @@ from pathlib import Path
 
 from pythonfmu.builder import FmuBuilder
 
+from bearing_fmu_common.runtime.build import install_runtime
 from bearing_fmu_common.variables import select
 
 from .models.analytic import AnalyticModel
@@ -98,7 +99,8 @@ def build_python_fmu(
     fmu_name, module, base_class, out_dir, package_dirs=(PACKAGE_DIR, COMMON_DIR), body="pass", imports=""
 ):
     """Build a pythonfmu FMU whose slave class `fmu_name` derives from module.base_class, bundling
-    the given package directories in resources/ (copied to a stable cache directory at load)."""
+    the given package directories in resources/ (copied to a stable cache directory at load). Its
+    binary is the project's FMI layer (bearing_fmu_common/runtime), not pythonfmu's."""
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     package_dirs = [Path(p) for p in package_dirs]
@@ -130,7 +132,7 @@ def build_python_fmu(
             canSerializeFMUstate=True,
         )
         sys.modules.pop(entry.stem, None)
-    return Path(path)
+    return install_runtime(path)
 
 
 def scene_files():

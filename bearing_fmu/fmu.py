@@ -5,13 +5,14 @@ models, every variable is declared once in bearing_fmu.models.declarations. The 
 model's inputs and outputs from those declarations and keeps their values in two lists read and
 written by precomputed index (bearing_fmu_common.fmi.DeclaredSlave); a step hands the input list to
 model.update() and takes the model's output array as the new output list. Bad input never raises out
-of an FMI call (a Python exception becomes fmi2Fatal in pythonfmu): it is logged with its allowed
-range and do_step returns False (fmi2Discard); the outputs keep their last valid values.
+of an FMI call: it is logged with its allowed range and do_step returns False (fmi2Discard); the
+outputs keep their last valid values. A refused parameter makes exit_initialization_mode return False
+(fmi2Error). Statuses: docs/fmu_runtime.md.
 """
 
 from pythonfmu.enums import Fmi2Status
 
-from bearing_fmu_common.fmi import DeclaredSlave, add_unit_definitions, declared_parameter, fmi_escape
+from bearing_fmu_common.fmi import DeclaredSlave, add_unit_definitions, declared_parameter
 from bearing_fmu_common.variables import select
 
 from .models.analytic import AnalyticModel
@@ -57,7 +58,7 @@ class _BearingSlave(DeclaredSlave):
     def _update(self):
         values = self._model.update(self._u)
         for warning in self._model.warnings:
-            self.log(fmi_escape(warning), Fmi2Status.warning)
+            self.log(warning, Fmi2Status.warning)
         self._y = values.tolist()
 
     def _guarded(self, action):
@@ -66,14 +67,20 @@ class _BearingSlave(DeclaredSlave):
             action()
             return True
         except (InputError, ParameterError, SceneError) as exc:
-            self.log(fmi_escape(f"{self.instance_name}: {exc}"), Fmi2Status.error)
-        except Exception as exc:  # never let an exception reach the host as fmi2Fatal
-            self.log(fmi_escape(f"{self.instance_name}: internal error {type(exc).__name__}: {exc}"), Fmi2Status.error)
+            self.log(f"{self.instance_name}: {exc}", Fmi2Status.error)
+        except Exception as exc:  # logged as the model's own message, not a traceback
+            self.log(f"{self.instance_name}: internal error {type(exc).__name__}: {exc}", Fmi2Status.error)
         return False
 
     # -- FMI -------------------------------------------------------------------------------------
     def exit_initialization_mode(self):
-        self._ready = self._guarded(lambda: (self._build_model(), self._update()))
+        # a refused parameter fails initialisation (fmi2Error: parameters are fixed from here on); a
+        # bad input is logged and refused again by the first doStep (fmi2Discard): the host may still
+        # correct an input (and libcosim 0.11 aborts the process on fmi2Error here, docs/fmu_runtime.md)
+        self._ready = self._guarded(self._build_model)
+        if self._ready:
+            self._guarded(self._update)
+        return self._ready
 
     def do_step(self, current_time, step_size):
         if not self._ready:

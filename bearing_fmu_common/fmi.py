@@ -1,5 +1,5 @@
-"""FMI helpers shared by the slave classes: SI units in modelDescription, safe logging, variables
-registered from declarations and read by precomputed index.
+"""FMI helpers shared by the slave classes: SI units in modelDescription, variables registered from
+declarations and read by precomputed index.
 
 pythonfmu 0.7 writes no units; FMI 2.0 wants a `unit` attribute on each Real and the unit defined
 in <UnitDefinitions> by its SI base-unit exponents.
@@ -55,11 +55,6 @@ def add_unit_definitions(root: Element, variables):
     position = list(root).index(root.find("CoSimulation")) + 1
     root.insert(position, defs)
     return root
-
-
-def fmi_escape(message: str) -> str:
-    """Make a message safe for pythonfmu's log(): it is used as a printf format, so '%' must be doubled."""
-    return message.replace("%", "%%")
 
 
 def parameter(name, start, description, unit=None):

@@ -23,7 +23,7 @@ def _fmu(name, scene_file):
 
     path = FMU_DIR / f"{name}.fmu"
     newest_source = max(
-        p.stat().st_mtime for d in (PACKAGE_DIR, COMMON_DIR) for p in d.rglob("*") if p.suffix in (".py", ".toml")
+        p.stat().st_mtime for d in (PACKAGE_DIR, COMMON_DIR) for p in d.rglob("*") if p.suffix in (".py", ".toml", ".c")
     )
     if not path.is_file() or path.stat().st_mtime < newest_source:
         build_fmu(SCENES_DIR / scene_file, FMU_DIR)
@@ -64,7 +64,7 @@ def _thermal_fmu(name):
         p.stat().st_mtime
         for d in (PACKAGE_DIR, COMMON_DIR, SPINDLE_DIR)
         for p in d.rglob("*")
-        if p.suffix in (".py", ".toml")
+        if p.suffix in (".py", ".toml", ".c")
     )
     if not path.is_file() or path.stat().st_mtime < newest_source:
         network, axial_float = THERMAL_FMUS[name]

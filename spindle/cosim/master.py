@@ -359,13 +359,17 @@ class Master:
 
     @staticmethod
     def _exit_initialisation(inst):
-        """fmi2ExitInitializationMode; an FMU that logs an error there has failed to initialise even
-        if the call returned OK (pythonfmu ignores the slave's verdict at this call)."""
+        """fmi2ExitInitializationMode; it failed if it returned Error/Fatal or if the FMU logged an error
+        there (an FMU built on pythonfmu's own binary returns OK whatever its slave says)."""
         n_log = len(inst.log)
-        inst.call("exitInitializationMode", inst.slave.exitInitializationMode)
+        try:
+            inst.slave.exitInitializationMode()
+            refused = False
+        except FMICallException:
+            refused = True
         errors = [line for line in inst.log[n_log:] if line.startswith(("[Error]", "[Fatal]"))]
-        if errors:
-            raise MasterError(f"{inst.name}: initialisation failed: {'; '.join(errors)}")
+        if refused or errors:
+            raise MasterError(f"{inst.name}: initialisation failed: {'; '.join(errors) or 'no message logged'}")
         inst.refresh()
 
     # -- stepping --------------------------------------------------------------------------------

@@ -12,7 +12,7 @@ returns Discard/Error; the host never sees an exception.
 
 from pythonfmu.enums import Fmi2Status
 
-from bearing_fmu_common.fmi import DeclaredSlave, add_unit_definitions, declared_parameter, fmi_escape
+from bearing_fmu_common.fmi import DeclaredSlave, add_unit_definitions, declared_parameter
 
 from .declarations import parameter_declarations
 from .model import DEFAULT_SPINDLE, SpindleThermalModel
@@ -50,8 +50,8 @@ class SpindleThermal(DeclaredSlave):
         try:
             action()
             return True
-        except Exception as exc:  # never let an exception reach the host (it would be fmi2Fatal)
-            self.log(fmi_escape(f"{self.instance_name}: {exc}"), Fmi2Status.error)
+        except Exception as exc:  # logged as the model's own message, not a traceback
+            self.log(f"{self.instance_name}: {exc}", Fmi2Status.error)
             return False
 
     def _initialise(self):
@@ -73,12 +73,11 @@ class SpindleThermal(DeclaredSlave):
 
     def exit_initialization_mode(self):
         self._ready = self._guarded(self._initialise)
+        return self._ready  # False: fmi2Error from fmi2ExitInitializationMode
 
     def do_step(self, current_time, step_size):
         if not self._ready:
-            self.log(
-                fmi_escape(f"{self.instance_name}: not initialised (see the error at initialisation)"), Fmi2Status.error
-            )
+            self.log(f"{self.instance_name}: not initialised (see the error at initialisation)", Fmi2Status.error)
             return False
 
         def step():

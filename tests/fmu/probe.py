@@ -14,6 +14,7 @@ from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import FMU2Slave, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
 
 messages = []
+init_statuses = []  # status of each fmi2ExitInitializationMode (0 = OK, 3 = a refused parameter)
 
 
 def _logger(component, instance, status, category, message):
@@ -42,7 +43,11 @@ def open_fmu(path, parameters=None):
             fmu.setString([vr[name]], [value])
         else:
             fmu.setReal([vr[name]], [value])
-    fmu.exitInitializationMode()
+    try:
+        fmu.exitInitializationMode()
+        init_statuses.append(0)
+    except FMICallException as exc:  # a refused parameter: fmi2Error with the reason logged
+        init_statuses.append(exc.status)
     return fmu, vr, unzip
 
 
@@ -79,6 +84,7 @@ def main():
     elif scenario in ("unknown_bearing", "percent_in_name"):
         name = "no_such_bearing" if scenario == "unknown_bearing" else "100%_bearing_%s_%d"
         fmu, vr, unzip = open_fmu(path, {"bearing": name})
+        report["init_status"] = init_statuses[-1]
         report["status"] = step_status(fmu, 0.0)
         fmu.setString([vr["bearing"]], ["6208"])  # a corrected parameter recovers
     elif scenario == "qs_bad_inputs":
@@ -104,6 +110,7 @@ def main():
         report["results"] = results
     elif scenario == "qs_bad_race_control":
         fmu, vr, unzip = open_fmu(path, {"race_control": "sideways"})
+        report["init_status"] = init_statuses[-1]
         report["status"] = step_status(fmu, 0.0)
     elif scenario == "simulate":
         fmu, vr, unzip = open_fmu(path)

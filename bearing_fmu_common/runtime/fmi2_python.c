@@ -1,0 +1,792 @@
+/* FMI 2.0 co-simulation export layer for Python slaves (pythonfmu's Fmi2Slave protocol).
+ *
+ * SPDX-License-Identifier: MIT. Written from the FMI 2.0.4 standard (Modelica Association); the
+ * fmi2*.h headers come from fmpy's package data at build time. docs/fmu_runtime.md explains the
+ * statuses, the environment of native hosts and why Python is never finalised.
+ *
+ * One shared library serves every FMU: fmi2Instantiate reads resources/slavemodule.txt (written by
+ * pythonfmu's builder), imports that module with resources/ on sys.path (once per process: later
+ * instances, from any extraction of the FMU, reuse it and add nothing to sys.path) and instantiates
+ * its Fmi2Slave subclass. Every call holds the GIL (PyGILState_Ensure), so a Python host (fmpy, whose
+ * ctypes calls release the GIL) and a native host on any thread are served the same way.
+ */
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+
+#include <dlfcn.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fmi2Functions.h"
+
+#define PYTHON_ENV "BEARING_FMU_PYTHON" /* a Python executable (e.g. venv/bin/python) for a native host */
+#define PYTHON_HINT "python.txt"        /* resources/ file: the interpreter that built the FMU */
+
+/* Python code the layer needs; compiled once into its own namespace. */
+static const char *HELPER_SOURCE =
+    "import importlib, inspect, os, pickle, sys, traceback\n"
+    "def slave_class(resources):\n"
+    "    with open(os.path.join(resources, 'slavemodule.txt'), encoding='utf-8') as fh:\n"
+    "        name = fh.readline().strip()\n"
+    "    if name not in sys.modules and resources not in sys.path:\n"
+    "        sys.path.insert(0, resources)\n"
+    "    module = importlib.import_module(name)\n"
+    "    found = [c for c in vars(module).values() if inspect.isclass(c) and not inspect.isabstract(c)\n"
+    "             and any(k.__name__ == 'Fmi2Slave' for k in c.__mro__)]\n"
+    "    if not found:\n"
+    "        raise ImportError(f'no Fmi2Slave subclass in module {name} ({module.__file__})')\n"
+    "    return max(found, key=lambda c: len(c.__mro__))\n"
+    "def describe(kind, value, tb):\n"
+    "    return ''.join(traceback.format_exception(kind, value, tb)).rstrip()\n"
+    "def dumps(state):\n"
+    "    return pickle.dumps(state, protocol=pickle.HIGHEST_PROTOCOL)\n"
+    "loads = pickle.loads\n";
+
+typedef struct {
+    PyObject *cls;     /* the slave class (kept for fmi2Reset) */
+    PyObject *kwargs;  /* its constructor arguments */
+    PyObject *slave;   /* the Fmi2Slave instance */
+    PyObject *strings; /* bytes behind the pointers of the last fmi2GetString */
+    fmi2CallbackLogger logger;
+    fmi2ComponentEnvironment env;
+    char *name;
+    int logging_on;
+    fmi2Real time; /* end of the last accepted step: fmi2LastSuccessfulTime */
+    int discarded; /* the last doStep returned fmi2Discard at (discard_t, discard_h) */
+    fmi2Real discard_t, discard_h;
+} Instance;
+
+static pthread_mutex_t init_lock = PTHREAD_MUTEX_INITIALIZER;
+static PyObject *helper; /* namespace of HELPER_SOURCE; lives as long as the process */
+
+/* -- logging -------------------------------------------------------------------------------- */
+
+/* The FMI logger takes a printf format: pass the text with every '%' doubled so that a host that
+ * formats prints it unchanged and a message can never be read as a conversion. */
+static void emit(const Instance *c, fmi2Status status, const char *category, const char *text)
+{
+    if (c->logger == NULL || (status == fmi2OK && !c->logging_on))
+        return; /* warnings and errors always reach the host; debug messages only if asked for */
+    size_t n = strlen(text), extra = 0;
+    for (size_t i = 0; i < n; i++)
+        extra += text[i] == '%';
+    char *format = malloc(n + extra + 1);
+    if (format == NULL)
+        return;
+    char *out = format;
+    for (size_t i = 0; i < n; i++) {
+        *out++ = text[i];
+        if (text[i] == '%')
+            *out++ = '%';
+    }
+    *out = '\0';
+    c->logger(c->env, c->name, status, category, format);
+    free(format);
+}
+
+static void emitf(const Instance *c, fmi2Status status, const char *fmt, ...)
+{
+    char text[1024];
+    va_list args;
+    va_start(args, fmt);
+    vsnprintf(text, sizeof text, fmt, args);
+    va_end(args);
+    emit(c, status, status >= fmi2Error ? "logStatusError" : "logAll", text);
+}
+
+/* Pass the slave's queued log messages (pythonfmu LogMsg: status, category, msg) to the host. */
+static void flush_log(const Instance *c)
+{
+    if (c->slave == NULL)
+        return;
+    PyObject *queue = PyObject_GetAttrString(c->slave, "log_queue");
+    if (queue == NULL || !PyList_Check(queue)) {
+        Py_XDECREF(queue);
+        PyErr_Clear();
+        return;
+    }
+    Py_ssize_t n = PyList_Size(queue);
+    for (Py_ssize_t i = 0; i < n; i++) {
+        PyObject *entry = PyList_GetItem(queue, i);
+        PyObject *status = PyObject_GetAttrString(entry, "status");
+        PyObject *category = PyObject_GetAttrString(entry, "category");
+        PyObject *msg = PyObject_GetAttrString(entry, "msg");
+        PyObject *msg_text = msg ? PyObject_Str(msg) : NULL;
+        PyObject *category_text = category && category != Py_None ? PyObject_Str(category) : NULL;
+        long level = status ? PyLong_AsLong(status) : fmi2Error;
+        const char *text = msg_text ? PyUnicode_AsUTF8(msg_text) : NULL;
+        const char *cat = category_text ? PyUnicode_AsUTF8(category_text) : NULL;
+        PyErr_Clear();
+        emit(c, level >= fmi2OK && level <= fmi2Pending ? (fmi2Status)level : fmi2Error, cat ? cat : "logAll",
+             text ? text : "(unprintable log message)");
+        Py_XDECREF(status);
+        Py_XDECREF(category);
+        Py_XDECREF(msg);
+        Py_XDECREF(msg_text);
+        Py_XDECREF(category_text);
+    }
+    PyList_SetSlice(queue, 0, n, NULL);
+    Py_DECREF(queue);
+}
+
+/* Log the pending Python exception with its traceback as an fmi2Error message; clears it. */
+static void log_exception(const Instance *c, const char *what)
+{
+    PyObject *kind, *value, *tb;
+    PyErr_Fetch(&kind, &value, &tb);
+    PyErr_NormalizeException(&kind, &value, &tb);
+    flush_log(c); /* what the slave logged came first */
+    PyObject *text = NULL;
+    if (helper != NULL && kind != NULL)
+        text = PyObject_CallMethod(helper, "describe", "(OOO)", kind, value ? value : Py_None, tb ? tb : Py_None);
+    const char *utf8 = text ? PyUnicode_AsUTF8(text) : NULL;
+    PyErr_Clear();
+    emitf(c, fmi2Error, "%s: %s: %s", c->name, what, utf8 ? utf8 : "unknown Python error");
+    Py_XDECREF(text);
+    Py_XDECREF(kind);
+    Py_XDECREF(value);
+    Py_XDECREF(tb);
+}
+
+/* Status of a slave method's result (new reference or NULL), consumed here: None/True -> OK,
+ * False -> if_false, an int (pythonfmu's Fmi2Status) -> that status; an exception -> fmi2Error. */
+static fmi2Status settle(Instance *c, const char *what, PyObject *result, fmi2Status if_false)
+{
+    fmi2Status status = fmi2OK;
+    if (result == NULL) {
+        log_exception(c, what);
+        return fmi2Error;
+    }
+    if (result == Py_False)
+        status = if_false;
+    else if (PyLong_Check(result) && result != Py_True) {
+        long value = PyLong_AsLong(result);
+        status = value >= fmi2OK && value <= fmi2Fatal ? (fmi2Status)value : fmi2Error;
+    }
+    Py_DECREF(result);
+    flush_log(c);
+    return status;
+}
+
+/* -- interpreter ---------------------------------------------------------------------------- */
+
+/* Read the first line of resources/<name> into buf; 0 if absent. */
+static int read_hint(const char *resources, const char *name, char *buf, size_t size)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s", resources, name);
+    FILE *fh = fopen(path, "r");
+    if (fh == NULL)
+        return 0;
+    int ok = fgets(buf, (int)size, fh) != NULL;
+    fclose(fh);
+    buf[strcspn(buf, "\r\n")] = '\0';
+    return ok && buf[0] != '\0';
+}
+
+/* Make sure an interpreter runs: the host's (Python hosts) or one started here (native hosts).
+ * Never finalised (docs/fmu_runtime.md): numba's compiled code and LLVM's static objects are torn
+ * down by the C runtime at exit, and a Py_Finalize after that calls into freed LLVM state. */
+static int ensure_python(const char *resources, char *error, size_t size)
+{
+    int ok = 1;
+    pthread_mutex_lock(&init_lock);
+    /* A host's interpreter takes precedence over the linked libpython (its symbols come first in
+     * the global scope): it must be the version the layer was compiled for. */
+    char version[16];
+    snprintf(version, sizeof version, "%d.%d.", PY_MAJOR_VERSION, PY_MINOR_VERSION);
+    if (strncmp(Py_GetVersion(), version, strlen(version)) != 0) {
+        snprintf(error, size, "the host runs Python %.*s; this FMU's binary is built for Python %s%d",
+                 (int)strcspn(Py_GetVersion(), " "), Py_GetVersion(), version, PY_MICRO_VERSION);
+        ok = 0;
+    } else if (!Py_IsInitialized()) {
+        /* libpython came in with this library, local to it: make its symbols global so that
+         * extension modules (numpy, numba) resolve against it, and keep it loaded for good. */
+        Dl_info info;
+        if (dladdr((void *)&Py_IsInitialized, &info) && info.dli_fname != NULL)
+            dlopen(info.dli_fname, RTLD_NOW | RTLD_GLOBAL | RTLD_NOLOAD | RTLD_NODELETE);
+        char python[4096] = "";
+        const char *env = getenv(PYTHON_ENV);
+        if (env != NULL && env[0] != '\0')
+            snprintf(python, sizeof python, "%s", env);
+        else
+            read_hint(resources, PYTHON_HINT, python, sizeof python);
+        PyConfig config;
+        PyConfig_InitPythonConfig(&config);
+        config.install_signal_handlers = 0; /* SIGINT and friends stay the host's */
+        config.parse_argv = 0;
+        PyStatus status = python[0] ? PyConfig_SetBytesString(&config, &config.program_name, python)
+                                    : PyStatus_Ok();
+        if (!PyStatus_Exception(status))
+            status = Py_InitializeFromConfig(&config);
+        PyConfig_Clear(&config);
+        if (PyStatus_Exception(status)) {
+            snprintf(error, size, "cannot start Python (%s = %s): %s", PYTHON_ENV, python[0] ? python : "unset",
+                     status.err_msg ? status.err_msg : "unknown error");
+            ok = 0;
+        } else {
+            PyEval_SaveThread(); /* release the GIL: every call below takes it with PyGILState_Ensure */
+        }
+    }
+    if (ok && helper == NULL) {
+        /* keep this library (and so `helper`) loaded when a host unloads it after fmi2FreeInstance
+         * (fmpy does): a reload would compile the helper again and lose the previous one */
+        Dl_info self;
+        if (dladdr((void *)&fmi2Instantiate, &self) && self.dli_fname != NULL)
+            dlopen(self.dli_fname, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+        PyGILState_STATE gil = PyGILState_Ensure();
+        PyObject *globals = PyDict_New();
+        PyDict_SetItemString(globals, "__builtins__", PyEval_GetBuiltins());
+        PyObject *done = PyRun_String(HELPER_SOURCE, Py_file_input, globals, globals);
+        if (done == NULL) {
+            PyErr_Print();
+            snprintf(error, size, "the runtime's helper code failed to compile");
+            Py_DECREF(globals);
+            ok = 0;
+        } else {
+            Py_DECREF(done);
+            helper = PyModule_New("bearing_fmu_runtime");
+            PyDict_Update(PyModule_GetDict(helper), globals);
+            Py_DECREF(globals);
+        }
+        PyGILState_Release(gil);
+    }
+    pthread_mutex_unlock(&init_lock);
+    return ok;
+}
+
+/* fmuResourceLocation is a file URI (file:///path or file:/path, percent-encoded). */
+static char *uri_to_path(const char *uri)
+{
+    if (uri == NULL)
+        return NULL;
+    const char *p = uri;
+    if (strncmp(p, "file://", 7) == 0) {
+        p += 7;
+        if (strncmp(p, "localhost", 9) == 0)
+            p += 9;
+    } else if (strncmp(p, "file:", 5) == 0) {
+        p += 5;
+    }
+    char *path = malloc(strlen(p) + 1), *out = path;
+    if (path == NULL)
+        return NULL;
+    for (; *p; p++) {
+        unsigned int byte;
+        if (p[0] == '%' && p[1] && p[2] && sscanf(p + 1, "%2x", &byte) == 1) {
+            *out++ = (char)byte;
+            p += 2;
+        } else {
+            *out++ = *p;
+        }
+    }
+    *out = '\0';
+    size_t n = strlen(path);
+    while (n > 1 && path[n - 1] == '/')
+        path[--n] = '\0';
+    return path;
+}
+
+/* -- instance ------------------------------------------------------------------------------- */
+
+#define WITH_GIL(c)                                                                                \
+    if ((c) == NULL)                                                                               \
+        return fmi2Error;                                                                          \
+    PyGILState_STATE gil__ = PyGILState_Ensure()
+#define RETURN(value)                                                                              \
+    do {                                                                                           \
+        fmi2Status value__ = (value);                                                              \
+        PyGILState_Release(gil__);                                                                 \
+        return value__;                                                                            \
+    } while (0)
+
+const char *fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
+const char *fmi2GetVersion(void) { return fmi2Version; }
+
+static int create_slave(Instance *c)
+{
+    PyObject *args = PyTuple_New(0);
+    c->slave = PyObject_Call(c->cls, args, c->kwargs);
+    Py_DECREF(args);
+    if (c->slave == NULL) {
+        log_exception(c, "creating the slave");
+        return 0;
+    }
+    flush_log(c);
+    return 1;
+}
+
+static void release(Instance *c)
+{
+    Py_XDECREF(c->slave);
+    Py_XDECREF(c->cls);
+    Py_XDECREF(c->kwargs);
+    Py_XDECREF(c->strings);
+    free(c->name);
+    free(c);
+}
+
+fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
+                              fmi2String fmuResourceLocation, const fmi2CallbackFunctions *functions,
+                              fmi2Boolean visible, fmi2Boolean loggingOn)
+{
+    (void)fmuGUID;
+    Instance *c = calloc(1, sizeof *c);
+    if (c == NULL)
+        return NULL;
+    c->name = strdup(instanceName ? instanceName : "");
+    c->logger = functions ? functions->logger : NULL;
+    c->env = functions ? functions->componentEnvironment : NULL;
+    c->logging_on = loggingOn;
+    char error[1024];
+    char *resources = uri_to_path(fmuResourceLocation);
+    if (fmuType != fmi2CoSimulation || resources == NULL) {
+        emitf(c, fmi2Error, "%s: only co-simulation with a resource location is supported", c->name);
+        free(resources);
+        free(c->name);
+        free(c);
+        return NULL;
+    }
+    if (!ensure_python(resources, error, sizeof error)) {
+        emitf(c, fmi2Error, "%s: %s", c->name, error);
+        free(resources);
+        free(c->name);
+        free(c);
+        return NULL;
+    }
+    PyGILState_STATE gil = PyGILState_Ensure();
+    c->cls = PyObject_CallMethod(helper, "slave_class", "(s)", resources);
+    if (c->cls == NULL)
+        log_exception(c, "loading the slave class");
+    else
+        c->kwargs = Py_BuildValue("{s:s,s:s,s:O}", "instance_name", c->name, "resources", resources, "visible",
+                                  visible ? Py_True : Py_False);
+    int ok = c->cls != NULL && c->kwargs != NULL && create_slave(c);
+    if (!ok) {
+        release(c);
+        c = NULL;
+    }
+    PyGILState_Release(gil);
+    free(resources);
+    return c;
+}
+
+void fmi2FreeInstance(fmi2Component component)
+{
+    Instance *c = component;
+    if (c == NULL)
+        return;
+    PyGILState_STATE gil = PyGILState_Ensure();
+    flush_log(c);
+    release(c);
+    PyGILState_Release(gil);
+    /* the last instance leaves the interpreter running: see ensure_python */
+}
+
+fmi2Status fmi2SetDebugLogging(fmi2Component component, fmi2Boolean loggingOn, size_t nCategories,
+                               const fmi2String categories[])
+{
+    Instance *c = component;
+    (void)nCategories;
+    (void)categories;
+    if (c == NULL)
+        return fmi2Error;
+    c->logging_on = loggingOn;
+    return fmi2OK;
+}
+
+fmi2Status fmi2SetupExperiment(fmi2Component component, fmi2Boolean toleranceDefined, fmi2Real tolerance,
+                               fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime)
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    c->time = startTime;
+    c->discarded = 0;
+    PyObject *stop = stopTimeDefined ? PyFloat_FromDouble(stopTime) : Py_NewRef(Py_None);
+    PyObject *tol = toleranceDefined ? PyFloat_FromDouble(tolerance) : Py_NewRef(Py_None);
+    PyObject *r = PyObject_CallMethod(c->slave, "setup_experiment", "(dOO)", startTime, stop, tol);
+    Py_DECREF(stop);
+    Py_DECREF(tol);
+    RETURN(settle(c, "setup_experiment", r, fmi2Error));
+}
+
+fmi2Status fmi2EnterInitializationMode(fmi2Component component)
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    RETURN(settle(c, "enter_initialization_mode", PyObject_CallMethod(c->slave, "enter_initialization_mode", NULL),
+                  fmi2Error));
+}
+
+fmi2Status fmi2ExitInitializationMode(fmi2Component component)
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    RETURN(settle(c, "exit_initialization_mode", PyObject_CallMethod(c->slave, "exit_initialization_mode", NULL),
+                  fmi2Error));
+}
+
+fmi2Status fmi2Terminate(fmi2Component component)
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    RETURN(settle(c, "terminate", PyObject_CallMethod(c->slave, "terminate", NULL), fmi2Error));
+}
+
+fmi2Status fmi2Reset(fmi2Component component)
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    Py_CLEAR(c->slave);
+    c->discarded = 0;
+    RETURN(create_slave(c) ? fmi2OK : fmi2Error);
+}
+
+/* -- variables ------------------------------------------------------------------------------ */
+
+static PyObject *reference_list(const fmi2ValueReference vr[], size_t nvr)
+{
+    PyObject *list = PyList_New((Py_ssize_t)nvr);
+    for (size_t i = 0; list != NULL && i < nvr; i++)
+        PyList_SET_ITEM(list, (Py_ssize_t)i, PyLong_FromUnsignedLong(vr[i]));
+    return list;
+}
+
+/* slave.<method>(vrs) -> a list of nvr values, or NULL with the problem logged. */
+static PyObject *get_values(Instance *c, const char *method, const fmi2ValueReference vr[], size_t nvr)
+{
+    PyObject *vrs = reference_list(vr, nvr);
+    PyObject *values = vrs ? PyObject_CallMethod(c->slave, method, "(O)", vrs) : NULL;
+    Py_XDECREF(vrs);
+    if (values != NULL && (!PyList_Check(values) || (size_t)PyList_Size(values) != nvr)) {
+        Py_DECREF(values);
+        values = NULL;
+        PyErr_Format(PyExc_TypeError, "%s returned no list of %zu values", method, nvr);
+    }
+    if (values == NULL)
+        log_exception(c, method);
+    return values;
+}
+
+/* slave.<method>(vrs, values) with values built by make(i). */
+#define SET_VALUES(method, make)                                                                   \
+    Instance *c = component;                                                                       \
+    WITH_GIL(c);                                                                                   \
+    PyObject *vrs = reference_list(vr, nvr), *values = PyList_New((Py_ssize_t)nvr);                \
+    for (size_t i = 0; values != NULL && i < nvr; i++)                                             \
+        PyList_SET_ITEM(values, (Py_ssize_t)i, make);                                              \
+    PyObject *r = vrs && values ? PyObject_CallMethod(c->slave, method, "(OO)", vrs, values) : NULL; \
+    Py_XDECREF(vrs);                                                                               \
+    Py_XDECREF(values);                                                                            \
+    RETURN(settle(c, method, r, fmi2Error))
+
+fmi2Status fmi2SetReal(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[])
+{
+    SET_VALUES("set_real", PyFloat_FromDouble(value[i]));
+}
+
+fmi2Status fmi2SetInteger(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,
+                          const fmi2Integer value[])
+{
+    SET_VALUES("set_integer", PyLong_FromLong(value[i]));
+}
+
+fmi2Status fmi2SetBoolean(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,
+                          const fmi2Boolean value[])
+{
+    SET_VALUES("set_boolean", PyBool_FromLong(value[i]));
+}
+
+fmi2Status fmi2SetString(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,
+                         const fmi2String value[])
+{
+    SET_VALUES("set_string", PyUnicode_DecodeUTF8(value[i] ? value[i] : "", (Py_ssize_t)strlen(value[i] ? value[i] : ""),
+                                                 "replace"));
+}
+
+fmi2Status fmi2GetReal(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[])
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    PyObject *values = get_values(c, "get_real", vr, nvr);
+    if (values == NULL)
+        RETURN(fmi2Error);
+    for (size_t i = 0; i < nvr; i++)
+        value[i] = PyFloat_AsDouble(PyList_GET_ITEM(values, (Py_ssize_t)i));
+    Py_DECREF(values);
+    if (PyErr_Occurred()) {
+        log_exception(c, "get_real");
+        RETURN(fmi2Error);
+    }
+    flush_log(c);
+    RETURN(fmi2OK);
+}
+
+fmi2Status fmi2GetInteger(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[])
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    PyObject *values = get_values(c, "get_integer", vr, nvr);
+    if (values == NULL)
+        RETURN(fmi2Error);
+    for (size_t i = 0; i < nvr; i++)
+        value[i] = (fmi2Integer)PyLong_AsLong(PyList_GET_ITEM(values, (Py_ssize_t)i));
+    Py_DECREF(values);
+    if (PyErr_Occurred()) {
+        log_exception(c, "get_integer");
+        RETURN(fmi2Error);
+    }
+    flush_log(c);
+    RETURN(fmi2OK);
+}
+
+fmi2Status fmi2GetBoolean(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[])
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    PyObject *values = get_values(c, "get_boolean", vr, nvr);
+    if (values == NULL)
+        RETURN(fmi2Error);
+    int failed = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        int truth = PyObject_IsTrue(PyList_GET_ITEM(values, (Py_ssize_t)i));
+        failed |= truth < 0;
+        value[i] = truth > 0 ? fmi2True : fmi2False;
+    }
+    Py_DECREF(values);
+    if (failed) {
+        log_exception(c, "get_boolean");
+        RETURN(fmi2Error);
+    }
+    flush_log(c);
+    RETURN(fmi2OK);
+}
+
+fmi2Status fmi2GetString(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2String value[])
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    PyObject *values = get_values(c, "get_string", vr, nvr);
+    if (values == NULL)
+        RETURN(fmi2Error);
+    PyObject *strings = PyList_New((Py_ssize_t)nvr); /* the pointers stay valid until the next call */
+    for (size_t i = 0; strings != NULL && i < nvr; i++) {
+        PyObject *bytes = PyUnicode_AsUTF8String(PyList_GET_ITEM(values, (Py_ssize_t)i));
+        if (bytes == NULL) {
+            Py_CLEAR(strings);
+            break;
+        }
+        PyList_SET_ITEM(strings, (Py_ssize_t)i, bytes);
+        value[i] = PyBytes_AS_STRING(bytes);
+    }
+    Py_DECREF(values);
+    if (strings == NULL) {
+        log_exception(c, "get_string");
+        RETURN(fmi2Error);
+    }
+    Py_XSETREF(c->strings, strings);
+    flush_log(c);
+    RETURN(fmi2OK);
+}
+
+/* -- state ---------------------------------------------------------------------------------- */
+
+/* An FMU state is the slave's _get_fmu_state() object (a new reference); serialised with pickle. */
+fmi2Status fmi2GetFMUstate(fmi2Component component, fmi2FMUstate *state)
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    PyObject *got = PyObject_CallMethod(c->slave, "_get_fmu_state", NULL);
+    if (got == NULL) {
+        log_exception(c, "_get_fmu_state");
+        RETURN(fmi2Error);
+    }
+    Py_XDECREF((PyObject *)*state); /* FMI: a state passed in is overwritten */
+    *state = got;
+    flush_log(c);
+    RETURN(fmi2OK);
+}
+
+fmi2Status fmi2SetFMUstate(fmi2Component component, fmi2FMUstate state)
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    if (state == NULL) {
+        emitf(c, fmi2Error, "%s: fmi2SetFMUstate with no state", c->name);
+        RETURN(fmi2Error);
+    }
+    c->discarded = 0;
+    RETURN(settle(c, "_set_fmu_state", PyObject_CallMethod(c->slave, "_set_fmu_state", "(O)", (PyObject *)state),
+                  fmi2Error));
+}
+
+fmi2Status fmi2FreeFMUstate(fmi2Component component, fmi2FMUstate *state)
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    if (state != NULL) {
+        Py_XDECREF((PyObject *)*state);
+        *state = NULL;
+    }
+    RETURN(fmi2OK);
+}
+
+static PyObject *pickled(Instance *c, fmi2FMUstate state)
+{
+    PyObject *bytes = state ? PyObject_CallMethod(helper, "dumps", "(O)", (PyObject *)state) : NULL;
+    if (bytes == NULL && state == NULL)
+        emitf(c, fmi2Error, "%s: no FMU state to serialise", c->name);
+    else if (bytes == NULL)
+        log_exception(c, "serialising the FMU state");
+    return bytes;
+}
+
+fmi2Status fmi2SerializedFMUstateSize(fmi2Component component, fmi2FMUstate state, size_t *size)
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    PyObject *bytes = pickled(c, state);
+    if (bytes == NULL)
+        RETURN(fmi2Error);
+    *size = (size_t)PyBytes_GET_SIZE(bytes);
+    Py_DECREF(bytes);
+    RETURN(fmi2OK);
+}
+
+fmi2Status fmi2SerializeFMUstate(fmi2Component component, fmi2FMUstate state, fmi2Byte serializedState[],
+                                 size_t size)
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    PyObject *bytes = pickled(c, state);
+    if (bytes == NULL)
+        RETURN(fmi2Error);
+    size_t n = (size_t)PyBytes_GET_SIZE(bytes);
+    if (n != size) {
+        emitf(c, fmi2Error, "%s: the state needs %zu bytes, the host gave %zu (fmi2SerializedFMUstateSize)", c->name,
+              n, size);
+        Py_DECREF(bytes);
+        RETURN(fmi2Error);
+    }
+    memcpy(serializedState, PyBytes_AS_STRING(bytes), n);
+    Py_DECREF(bytes);
+    RETURN(fmi2OK);
+}
+
+fmi2Status fmi2DeSerializeFMUstate(fmi2Component component, const fmi2Byte serializedState[], size_t size,
+                                   fmi2FMUstate *state)
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    PyObject *bytes = PyBytes_FromStringAndSize(serializedState, (Py_ssize_t)size);
+    PyObject *loaded = bytes ? PyObject_CallMethod(helper, "loads", "(O)", bytes) : NULL;
+    Py_XDECREF(bytes);
+    if (loaded == NULL) {
+        log_exception(c, "deserialising the FMU state");
+        RETURN(fmi2Error);
+    }
+    Py_XDECREF((PyObject *)*state);
+    *state = loaded;
+    RETURN(fmi2OK);
+}
+
+/* -- stepping ------------------------------------------------------------------------------- */
+
+fmi2Status fmi2DoStep(fmi2Component component, fmi2Real currentCommunicationPoint,
+                      fmi2Real communicationStepSize, fmi2Boolean noSetFMUStatePriorToCurrentPoint)
+{
+    Instance *c = component;
+    (void)noSetFMUStatePriorToCurrentPoint;
+    WITH_GIL(c);
+    fmi2Real t = currentCommunicationPoint, h = communicationStepSize;
+    PyObject *r = PyObject_CallMethod(c->slave, "do_step", "(dd)", t, h);
+    fmi2Status status = settle(c, "do_step", r, fmi2Discard);
+    if (status == fmi2Discard && c->discarded && c->discard_t == t && c->discard_h == h) {
+        /* the host retried the refused step unchanged (fmpy does so forever): stop it here */
+        emitf(c, fmi2Error,
+              "%s: the step at t = %.17g s, h = %.17g s was refused twice; the reason is logged above", c->name, t, h);
+        status = fmi2Error;
+    }
+    c->discarded = status == fmi2Discard;
+    c->discard_t = t;
+    c->discard_h = h;
+    if (status <= fmi2Warning)
+        c->time = t + h;
+    RETURN(status);
+}
+
+fmi2Status fmi2CancelStep(fmi2Component component)
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    emitf(c, fmi2Error, "%s: fmi2CancelStep: steps are synchronous, nothing to cancel", c->name);
+    RETURN(fmi2Error);
+}
+
+fmi2Status fmi2GetStatus(fmi2Component component, const fmi2StatusKind s, fmi2Status *value)
+{
+    (void)component, (void)s, (void)value;
+    return fmi2Discard; /* FMI: fmi2Discard when the status is not available (no asynchronous step) */
+}
+
+fmi2Status fmi2GetRealStatus(fmi2Component component, const fmi2StatusKind s, fmi2Real *value)
+{
+    Instance *c = component;
+    if (c == NULL || s != fmi2LastSuccessfulTime)
+        return fmi2Discard;
+    *value = c->time;
+    return fmi2OK;
+}
+
+fmi2Status fmi2GetIntegerStatus(fmi2Component component, const fmi2StatusKind s, fmi2Integer *value)
+{
+    (void)component, (void)s, (void)value;
+    return fmi2Discard;
+}
+
+fmi2Status fmi2GetBooleanStatus(fmi2Component component, const fmi2StatusKind s, fmi2Boolean *value)
+{
+    if (component == NULL || s != fmi2Terminated)
+        return fmi2Discard;
+    *value = fmi2False; /* a refused step never ends the simulation by itself: the host decides */
+    return fmi2OK;
+}
+
+fmi2Status fmi2GetStringStatus(fmi2Component component, const fmi2StatusKind s, fmi2String *value)
+{
+    (void)component, (void)s, (void)value;
+    return fmi2Discard;
+}
+
+/* -- not provided by a Python slave ----------------------------------------------------------- */
+
+static fmi2Status unsupported(fmi2Component component, const char *what)
+{
+    Instance *c = component;
+    WITH_GIL(c);
+    emitf(c, fmi2Error, "%s: %s is not supported by this FMU", c->name, what);
+    RETURN(fmi2Error);
+}
+
+fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference u[], size_t nu,
+                                        const fmi2ValueReference z[], size_t nz, const fmi2Real du[], fmi2Real dz[])
+{
+    (void)u, (void)nu, (void)z, (void)nz, (void)du, (void)dz;
+    return unsupported(c, "fmi2GetDirectionalDerivative");
+}
+
+fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                                       const fmi2Integer order[], const fmi2Real value[])
+{
+    (void)vr, (void)nvr, (void)order, (void)value;
+    return unsupported(c, "fmi2SetRealInputDerivatives");
+}
+
+fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                                        const fmi2Integer order[], fmi2Real value[])
+{
+    (void)vr, (void)nvr, (void)order, (void)value;
+    return unsupported(c, "fmi2GetRealOutputDerivatives");
+}
