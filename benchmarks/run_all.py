@@ -3,6 +3,9 @@
 from . import (
     closed_loop,
     cosim_error,
+    dem_error,
+    dem_figures,
+    dem_timing,
     ehl_film_table,
     fixed_preload_stability,
     fmu_startup,
@@ -30,6 +33,9 @@ def main():
         closed_loop,
         cosim_error,
         fixed_preload_stability,
+        dem_timing,
+        dem_error,
+        dem_figures,
     ):
         module.main()
 
