@@ -20,6 +20,8 @@ import tomllib
 
 import numpy as np
 
+from bearing_fmu_common.variables import gather_plan, select
+
 from ..kernels.ball_dynamics import integrator as dyn
 from ..kernels.ball_dynamics import state as s
 from ..kernels.ball_dynamics.monitor import critical_time_step
@@ -35,6 +37,8 @@ from ..kernels.hertz import (
 from ..kernels.torque import ALPHA_HYSTERESIS_STEEL
 from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
+from .declarations import DEM_INPUTS, DEM_OUTPUTS
+from .declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
 from .variables import DM_N_LIMIT, P_MAX_ERROR, InputError, check_oil_temperature, check_speed
 
 # PA66 cage balls when the bearing file has no [material.cage] (Farah 2020: E_c = 3.3 GPa, nu_c = 0.41)
@@ -46,7 +50,6 @@ ALPHA_E = 0.08  # s/m, hysteretic damping constant of steel (Guessasma 2018 eq. 
 KT_RATIO = 2.0 / 3.0  # tangential / normal stiffness, lower end of the seeds' [2/3, 1]
 V_REG = 1e-3  # m/s, speed below which the resistances' directions are regularised
 SAFETY = 0.5  # default time step over the stability limit of the stiffest pair (docs/reports/dem_error.md)
-REFRESH_INTERVAL = 20e-6  # s, default simulated time between two tribology refreshes (the same report)
 # consecutive slipping reversals of one spring that count as chatter: sustained chatter (6208 at 3 kN,
 # 500 rad/s, dt >= 7 us) reverses for hundreds of steps and multiplies the torque; a lightly loaded ball
 # entering the load zone during a start-up reverses for up to ~15 steps without changing the results
@@ -161,6 +164,16 @@ class DemModel:
         self.refresh = 0  # its tribology refresh interval (steps)
         self._place_bodies()
         self._initialise(0.0, 0.0, 0.0, 0.0, T_OIL_DEFAULT)
+        # the FMU interface (update): variables of the scene in declaration order, filled by one copy plan
+        self.inputs = select(DEM_INPUTS, self.scene)
+        self.outputs = select(DEM_OUTPUTS, self.scene)
+        self.output_names = tuple(v.name for v in self.outputs)
+        self.values = np.zeros(len(self.outputs))
+        self.warnings = []  # update() logs none: the monitor stops a step instead
+        self._plan = gather_plan(self.outputs, {"out": self.out, "ring": self.ring, "status": self.status})
+        self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
+        self._before = self.get_state()  # state at the start of the last update(), restored when it fails
+        self._gather()
 
     # -- set-up --------------------------------------------------------------------------------
     def _pack(self, ring_mass, kt_ratio):
@@ -363,15 +376,19 @@ class DemModel:
         hold), loads F_x, F_y, F_z (N) on the inner ring, oil temperature T_oil (K), change of diametral
         clearance dPd_thermal (m, added to Pd, negative = tighter: the outer groove circle moves by half of
         it; the Hertz constants stay those of the nominal geometry, as in the quasi-static fidelity).
-        Returns outputs().
+        Returns outputs_dict().
 
         Raises InputError for inputs out of range, DemUnstableError when the monitor stops the run (the
         state is then left at the offending step: restore a saved state to retry)."""
         omega = self.omega if omega is None else float(omega)
-        F_x, F_y, F_z, T_oil, dPd_thermal = float(F_x), float(F_y), float(F_z), float(T_oil), float(dPd_thermal)
-        self._check(float(t_end), omega, F_x, F_y, F_z, T_oil, dPd_thermal)
+        self._advance(float(t_end), omega, float(F_x), float(F_y), float(F_z), float(T_oil), float(dPd_thermal))
+        return self.outputs_dict()
+
+    def _advance(self, t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal):
+        """advance() without building the output dict (floats in SI units, omega given)."""
+        self._check(t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
         self.par[s.P_RHO_O] = self._rho_outer + 0.5 * dPd_thermal
-        interval = float(t_end) - self.time
+        interval = t_end - self.time
         dt = self.dt_fixed
         if dt is None:
             # the limit falls with speed (centrifugal load): take the faster end of the interval
@@ -409,6 +426,7 @@ class DemModel:
         self.omega = omega0 + (omega - omega0) * done / n_steps
         if self.status[s.ST_CODE] != s.STATUS_OK:
             self._raise_unstable(dt, F_x, F_y, F_z)
+        self.ring[s.R_TIME] = t_end  # the sum of n steps of interval/n misses t_end by rounding: land on it
         bearing_outputs(
             self.balls,
             self.cage,
@@ -424,7 +442,6 @@ class DemModel:
             self._alpha,
             self.out,
         )
-        return self.outputs()
 
     def _energy_limit(self, omega, force):
         """Bound (J) of the kinetic energy: ENERGY_FACTOR x (pure-rolling kinetic energy at omega + load x groove
@@ -453,7 +470,7 @@ class DemModel:
         )
 
     # -- outputs -------------------------------------------------------------------------------
-    def outputs(self):
+    def outputs_dict(self):
         """Bearing-level outputs of the last advance() (names as the quasi-static fidelity), SI units."""
         o = self.out
         result = dict(
@@ -487,6 +504,52 @@ class DemModel:
         )
         if not self.scene.capacitance:
             del result["C_bearing"]
+        return result
+
+    # -- FMU interface ---------------------------------------------------------------------------
+    def update(self, u, interval=0.0):
+        """Advance by `interval` (s; 0 = only report the current state) with the input values u in self.inputs
+        order (omega, F_x, F_y, F_z, T_oil, dPd_thermal; SI) as advance() takes them, and fill self.values
+        (self.outputs order: the declarations of models.declarations.DEM_OUTPUTS); returns self.values.
+
+        Raises InputError for inputs out of range (nothing changed) and DemUnstableError when the monitor stops
+        the step: the state is then restored to the start of the step and self.status keeps the monitor's code."""
+        if interval != 0.0:
+            if not (math.isfinite(interval) and interval > 0.0):
+                raise InputError(f"communication step = {interval} s is outside the allowed range ]0, inf[ s")
+            omega, F_x, F_y, F_z, T_oil, dPd_thermal = (float(v) for v in u)
+            self.status[s.ST_CODE] = s.STATUS_OK  # a refused input leaves no stale monitor code
+            self._check(self.time + interval, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
+            self._copy_state(self._before, self.__dict__)
+            self._before["omega"] = self.omega
+            try:
+                self._advance(self.time + interval, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
+            except DemUnstableError:
+                self._copy_state(self.__dict__, self._before)
+                self.omega = self._before["omega"]
+                raise
+        self._gather()
+        return self.values
+
+    def _gather(self):
+        for src, idx, dst in self._plan:
+            self.values[dst] = src[idx]
+
+    def _copy_state(self, target, source):
+        for name in self.STATE_ARRAYS:
+            np.copyto(target[name], source[name])
+
+    def evaluate(self, time, **values):
+        """Advance to `time` (s) with the named inputs (missing ones take their start values: 0, T_oil 313.15 K) as
+        update() does; the outputs as a dict name -> SI value (integers for integer outputs)."""
+        self.update([values.get(v.name, v.start) for v in self.inputs], float(time) - self.time)
+        return self.as_dict()
+
+    def as_dict(self):
+        """The outputs of the last update() as a dict name -> SI value (integers for integer outputs)."""
+        result = dict(zip(self.output_names, self.values.tolist()))
+        for name in self._integers:
+            result[name] = int(result[name])
         return result
 
     def contacts(self):

@@ -1,0 +1,196 @@
+"""BearingDEM.fmu, the DEM (ball dynamics) scene (docs/dem.md).
+
+- fmpy.validate_fmu finds no problem; the inputs and outputs shared with Bearing.fmu have its names
+  and units; the scene's absent options (stiffness) are not exposed;
+- a hand-written FMU2Slave loop over a speed ramp and a load step equals the Python DemModel bit for
+  bit: one doStep is one DemModel.update (one advance over the communication step);
+- FMU state: get -> step -> set -> step is bit-identical, and a serialised state restored into a new
+  instance steps bit-identically (every DEM array travels in the state);
+- bad inputs (NaN load, speed beyond the d_m n limit), a bad parameter and a time step the monitor
+  flags give a logged message naming the cause and its range, fmi2Discard/fmi2Error, finite outputs,
+  and the instance recovers.
+"""
+
+import math
+
+import pytest
+from fmpy import read_model_description
+from fmpy.validation import validate_fmu
+
+from bearing_fmu.build import SCENES_DIR
+from bearing_fmu.kernels.ball_dynamics.state import (
+    ST_CODE,
+    STATUS_ENERGY,
+    STATUS_NOT_FINITE,
+    STATUS_OK,
+    STATUS_PENETRATION,
+)
+from bearing_fmu.models.dem import DemModel, DemUnstableError
+from bearing_fmu.scene import Scene
+from tests.conftest import _fmu
+from tests.fmu import probe
+from tests.fmu.harness import opened
+
+H = 0.5e-3  # s, communication step of the scripted sequences
+INTEGER_OUTPUTS = ("regime", "n_loaded", "monitor_status")
+# speed ramp 0 -> 500 rad/s over 3 ms at 3 kN, then a load step to 4 kN and a lateral load (omega, F_x, F_y)
+SCRIPT = [(500.0 * min(1.0, (n + 1) / 6), 3000.0 if n < 8 else 4000.0, 0.0 if n < 8 else -500.0) for n in range(11)]
+
+
+@pytest.fixture(scope="module")
+def dem_fmu():
+    return _fmu("BearingDEM", "dem.toml")
+
+
+def dem_scene():
+    return Scene.from_toml(SCENES_DIR / "dem.toml")
+
+
+def output_names(path):
+    return [v.name for v in read_model_description(str(path)).modelVariables if v.causality == "output"]
+
+
+def read_outputs(fmu, vr, names):
+    reals = [n for n in names if n not in INTEGER_OUTPUTS]
+    ints = [n for n in names if n in INTEGER_OUTPUTS]
+    got = dict(zip(reals, fmu.getReal([vr[n] for n in reals])))
+    got.update(zip(ints, fmu.getInteger([vr[n] for n in ints])))
+    return got
+
+
+def set_inputs(fmu, vr, omega, F_x, F_y=0.0):
+    fmu.setReal([vr["omega"], vr["F_x"], vr["F_y"], vr["T_oil"]], [omega, F_x, F_y, 313.15])
+
+
+def test_validate_and_variables(dem_fmu):
+    assert validate_fmu(str(dem_fmu)) == []
+    md = read_model_description(str(dem_fmu))
+    assert md.coSimulation.canGetAndSetFMUstate and md.coSimulation.canSerializeFMUstate
+    by_name = {v.name: v for v in md.modelVariables}
+    inputs = {n for n, v in by_name.items() if v.causality == "input"}
+    outputs = {n for n, v in by_name.items() if v.causality == "output"}
+    parameters = {n for n, v in by_name.items() if v.causality == "parameter"}
+    assert inputs == {"omega", "F_x", "F_y", "F_z", "T_oil", "dPd_thermal"}
+    shared = {"x", "y", "z", "torque", "P_loss", "Q_inner_ring", "Q_outer_ring", "Lambda_inner", "Lambda_outer"}
+    shared |= {"h_min_inner", "h_min_outer", "regime", "C_bearing", "Q_max_inner", "Q_max_outer", "p_max"}
+    shared |= {"alpha_inner", "alpha_outer", "omega_cage", "omega_ball", "n_loaded"}
+    assert outputs == shared | {"cage_slip", "SRR_max", "monitor_status"}
+    assert not any(n.startswith("K[") for n in by_name)  # the scene has no stiffness: not exposed
+    assert parameters == {"bearing", "lubricant", "Pd_from_file", "Pd", "dt", "refresh_interval"}
+    quasi_static = {v.name: v for v in read_model_description(str(_fmu("Bearing", "quasi_static.toml"))).modelVariables}
+    for name in shared | inputs:
+        assert (by_name[name].unit, by_name[name].type) == (quasi_static[name].unit, quasi_static[name].type), name
+    assert by_name["dt"].unit == "s" and by_name["refresh_interval"].unit == "s"
+
+
+def test_fmu_equals_python_model_over_ramp_and_load_step(dem_fmu):
+    """Every output after every step equals DemModel.evaluate at the same inputs, to the bit."""
+    model = DemModel(scene=dem_scene())
+    names = output_names(dem_fmu)
+    with opened(dem_fmu, "loop") as (fmu, vr):
+        for n, (omega, F_x, F_y) in enumerate(SCRIPT):
+            set_inputs(fmu, vr, omega, F_x, F_y)
+            fmu.doStep(n * H, H)
+            got = read_outputs(fmu, vr, names)
+            ref = model.evaluate(model.time + H, omega=omega, F_x=F_x, F_y=F_y)  # the FMU's step: H from its time
+            assert got == ref, n
+    assert ref["omega_cage"] > 100.0 and ref["Q_max_outer"] > 1000.0 and ref["torque"] > 0.0
+
+
+def test_state_round_trip_and_serialisation_are_bit_identical(dem_fmu):
+    names = output_names(dem_fmu)
+    with opened(dem_fmu, "state") as (fmu, vr):
+        for n, (omega, F_x, F_y) in enumerate(SCRIPT[:4]):
+            set_inputs(fmu, vr, omega, F_x, F_y)
+            fmu.doStep(n * H, H)
+        state = fmu.getFMUstate()
+        blob = fmu.serializeFMUstate(state)
+        set_inputs(fmu, vr, 450.0, 3500.0, 200.0)
+        fmu.doStep(4 * H, H)
+        after = read_outputs(fmu, vr, names)
+        set_inputs(fmu, vr, 100.0, 500.0)
+        fmu.doStep(5 * H, H)  # a different history, to be undone
+        fmu.setFMUstate(state)
+        set_inputs(fmu, vr, 450.0, 3500.0, 200.0)
+        fmu.doStep(4 * H, H)
+        assert read_outputs(fmu, vr, names) == after
+        fmu.freeFMUstate(state)
+    with opened(dem_fmu, "restored") as (fresh, vr):
+        fresh.setFMUstate(fresh.deSerializeFMUstate(blob))
+        set_inputs(fresh, vr, 450.0, 3500.0, 200.0)
+        fresh.doStep(4 * H, H)
+        assert read_outputs(fresh, vr, names) == after
+
+
+def step_status(fmu, t, h):
+    return probe.step_status(fmu, t, h)
+
+
+def error_messages():
+    return [m["message"] for m in probe.messages if m["status"] >= 2]
+
+
+def test_bad_inputs_are_refused_with_their_range_and_the_instance_recovers(dem_fmu):
+    probe.messages.clear()
+    fmu, vr, _ = probe.open_fmu(str(dem_fmu))
+    set_inputs(fmu, vr, 100.0, 3000.0)
+    assert step_status(fmu, 0.0, H) == 0
+    good = read_outputs(fmu, vr, output_names(dem_fmu))
+    cases = (("F_x", math.nan), ("F_z", math.inf), ("omega", 1e5), ("T_oil", 0.0), ("dPd_thermal", 1.0))
+    for k, (name, bad) in enumerate(cases):
+        set_inputs(fmu, vr, 100.0, 3000.0)
+        fmu.setReal([vr["F_z"], vr["dPd_thermal"]], [0.0, 0.0])
+        fmu.setReal([vr[name]], [bad])
+        # fmi2Discard; the runtime turns a second refusal of the same (t, h) into fmi2Error, so each case its own t
+        assert step_status(fmu, H + k * 1e-6, H) == 2, name
+        assert read_outputs(fmu, vr, output_names(dem_fmu)) == good  # last valid values, all finite
+    texts = error_messages()
+    assert any("F_x = nan N" in t and "allowed range" in t for t in texts)
+    assert any("F_z = inf N" in t for t in texts)
+    assert any("omega = 100000.0" in t and "allowed range" in t for t in texts)
+    assert any("T_oil = 0.0 K" in t for t in texts)
+    assert any("dPd_thermal = 1.0 m" in t for t in texts)
+    set_inputs(fmu, vr, 100.0, 3000.0)
+    fmu.setReal([vr["F_z"], vr["dPd_thermal"]], [0.0, 0.0])
+    assert step_status(fmu, H, H) == 0  # corrected input: the step goes through
+    fmu.terminate()
+    fmu.freeInstance()
+
+
+def test_bad_parameter_fails_initialisation_with_its_range(dem_fmu):
+    probe.messages.clear()
+    probe.init_statuses.clear()
+    fmu, vr, _ = probe.open_fmu(str(dem_fmu), {"dt": -1e-6})
+    assert probe.init_statuses == [3]  # fmi2Error
+    assert any("dt = -1e-06 s" in t and "]0, 1e-4] s" in t for t in error_messages())
+    assert step_status(fmu, 0.0, H) == 2
+    fmu.freeInstance()
+
+
+def test_time_step_the_monitor_flags_is_discarded_and_rolled_back(dem_fmu):
+    """dt = 20 us is beyond the stability limit at 3 kN (about 6 us, docs/dem.md): the monitor stops the
+    step; the FMU returns fmi2Discard with the monitor's message, names the cause in monitor_status and
+    keeps its last valid outputs."""
+    probe.messages.clear()
+    fmu, vr, _ = probe.open_fmu(str(dem_fmu), {"dt": 20e-6})
+    set_inputs(fmu, vr, 0.0, 3000.0)
+    assert step_status(fmu, 0.0, 5e-3) == 2
+    code = fmu.getInteger([vr["monitor_status"]])[0]
+    assert code in (STATUS_NOT_FINITE, STATUS_PENETRATION, STATUS_ENERGY)
+    assert any("DEM stopped at" in t and "use dt <=" in t for t in error_messages())
+    assert all(math.isfinite(v) for v in fmu.getReal([vr["x"], vr["torque"], vr["Q_max_outer"]]))
+    fmu.freeInstance()
+
+
+def test_monitor_stop_restores_the_state_at_the_start_of_the_step():
+    """DemModel.update (the FMU's step) puts every array back when the monitor stops the step, so the
+    instance stays at the last communication point (as after a refused input)."""
+    model = DemModel(scene=dem_scene(), dt=20e-6)
+    before = model.get_state()
+    with pytest.raises(DemUnstableError):
+        model.update([0.0, 3000.0, 0.0, 0.0, 313.15, 0.0], 5e-3)
+    assert model.status[ST_CODE] != STATUS_OK
+    after = model.get_state()
+    assert after["omega"] == before["omega"] and model.time == 0.0
+    for name in DemModel.STATE_ARRAYS:
+        assert (after[name] == before[name]).all(), name
