@@ -12,7 +12,7 @@ contacts.CO_* for the quasi-static one); "d", "F" and "K" are the quasi-static s
 displacements, reactions and stiffness matrix (K flattened row by row); "ball_set" is the summary of
 the ball set (bearing_outputs.BS_*: most loaded ball, cage speed, iterations). DEM fidelity: "out",
 "ring" and "status" are the ball-dynamics output, inner-ring and monitor-status arrays
-(kernels.ball_dynamics.state O_*, R_*, ST_*).
+(kernels.ball_dynamics.state O_*, R_*, ST_*), "K" the facade's condensed stiffness (row by row).
 """
 
 from dataclasses import replace
@@ -331,6 +331,18 @@ DEM_OUTPUTS = (
     *(
         _dem_output(name, ("ring", ds.R_X + i), f"{DOF_WORDS[i]} of the inner ring at the end of the step")
         for i, name in enumerate(("x", "y", "z"))
+    ),
+    *(
+        _dem_output(
+            stiffness_name(i, j),
+            ("K", 5 * i + j),
+            f"stiffness dF_{i + 1}/dd_{j + 1} at the end of the step, (F) = (F_x, F_y, F_z, M_x, M_y), "
+            f"(d) = (x, y, z, theta_x, theta_y), contact tangent stiffnesses with each ball's inner and outer "
+            f"contact in series (docs/dem.md)",
+            option="stiffness",
+        )
+        for i in range(5)
+        for j in range(5)
     ),
     _dem_output("torque", ("out", ds.O_TORQUE), f"friction torque = P_loss/|omega| (0 at rest), {DEM_OUTPUT_WORDS}"),
     _dem_output("P_loss", ("out", ds.O_P_LOSS), f"total power loss of the contacts, {DEM_OUTPUT_WORDS}"),
