@@ -430,7 +430,6 @@ class DemModel:
         self.omega = omega0 + (omega - omega0) * done / n_steps
         if self.status[s.ST_CODE] != s.STATUS_OK:
             self._raise_unstable(dt, F_x, F_y, F_z)
-        self.ring[s.R_TIME] = t_end  # the sum of n steps of interval/n misses t_end by rounding: land on it
         bearing_outputs(
             self.balls,
             self.cage,
@@ -521,19 +520,23 @@ class DemModel:
         if interval != 0.0:
             if not (math.isfinite(interval) and interval > 0.0):
                 raise InputError(f"communication step = {interval} s is outside the allowed range ]0, inf[ s")
-            omega, F_x, F_y, F_z, T_oil, dPd_thermal = (float(v) for v in u)
-            self.status[s.ST_CODE] = s.STATUS_OK  # a refused input leaves no stale monitor code
-            self._check(self.time + interval, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
-            self._copy_state(self._before, self.__dict__)
-            self._before["omega"] = self.omega
-            try:
-                self._advance(self.time + interval, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
-            except DemUnstableError:
-                self._copy_state(self.__dict__, self._before)
-                self.omega = self._before["omega"]
-                raise
+            self._step_to(self.time + interval, u)
         self._gather()
         return self.values
+
+    def _step_to(self, t_end, u):
+        """update()'s step to t_end (s): advance, or on a monitor stop restore the state and raise."""
+        omega, F_x, F_y, F_z, T_oil, dPd_thermal = (float(v) for v in u)
+        self.status[s.ST_CODE] = s.STATUS_OK  # a refused input leaves no stale monitor code
+        self._check(t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
+        self._copy_state(self._before, self.__dict__)
+        self._before["omega"] = self.omega
+        try:
+            self._advance(t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
+        except DemUnstableError:
+            self._copy_state(self.__dict__, self._before)
+            self.omega = self._before["omega"]
+            raise
 
     def _gather(self):
         if self.scene.stiffness:
@@ -599,8 +602,10 @@ class DemModel:
 
     def evaluate(self, time, **values):
         """Advance to `time` (s) with the named inputs (missing ones take their start values: 0, T_oil 313.15 K) as
-        update() does; the outputs as a dict name -> SI value (integers for integer outputs)."""
-        self.update([values.get(v.name, v.start) for v in self.inputs], float(time) - self.time)
+        update() does (update(u, H) is evaluate(self.time + H, ...)); the outputs as a dict name -> SI value
+        (integers for integer outputs)."""
+        self._step_to(float(time), [values.get(v.name, v.start) for v in self.inputs])
+        self._gather()
         return self.as_dict()
 
     def as_dict(self):
