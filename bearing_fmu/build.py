@@ -26,6 +26,7 @@ from bearing_fmu_common.variables import select
 
 from .models.analytic import AnalyticModel
 from .models.declarations import DEFAULT_FIXED_PRELOAD
+from .models.dem import DemModel
 from .models.quasi_static import QuasiStaticModel
 from .scene import Scene
 
@@ -239,11 +240,13 @@ def scene_variables(scene_file):
 def reference_inputs(scene):
     """The reference experiment of a scene (input dicts, SI): a speed ramp at constant load.
 
-    analytic: 6208 at 3 kN radial, 40 C, 0-1700 rad/s; quasi_static: B7214C at 800 N axial and
-    500 N radial (load drive) or at z = 20 um, x = 2 um (imposed) or with 500 N radial at 5 um beyond
+    analytic: 6208 at 3 kN radial, 40 C, 0-1700 rad/s; dem: dem_reference_inputs(); quasi_static: B7214C
+    at 800 N axial and 500 N radial (load drive) or at z = 20 um, x = 2 um (imposed) or with 500 N radial at 5 um beyond
     the 800 N assembly offset (fixed_axial), 40 C, 0-10 000 rpm."""
     if scene.fidelity == "analytic":
         return [{"omega": float(w), "F_y": 3000.0, "T_oil": 313.15} for w in range(0, 1701, 50)]
+    if scene.fidelity == "dem":
+        return dem_reference_inputs()
     speeds = [n * 2.0 * math.pi / 60.0 for n in range(0, 10001, 500)]
     if scene.drive == "displacement":
         return [{"omega": w, "x": 2e-6, "z": 20e-6, "T_oil": 313.15} for w in speeds]
@@ -252,10 +255,27 @@ def reference_inputs(scene):
     return [{"omega": w, "F_x": 500.0, "F_z": 800.0, "T_oil": 313.15} for w in speeds]
 
 
+DEM_REFERENCE_STEP = 0.5e-3  # s, communication step of the DEM reference experiment
+
+
+def dem_reference_inputs():
+    """The DEM reference experiment, one dict per communication point (time = end of the step, s): the 6208
+    at 3 kN radial, 40 C, speed ramp 0 -> 500 rad/s over 5 ms, steady to 6 ms, then a load step to 4 kN
+    held to 8 ms (a step of 0.5 ms). Each row's inputs hold over the step that ends at its time."""
+    rows = []
+    for n in range(1, 17):
+        t = n * DEM_REFERENCE_STEP
+        omega = 500.0 * min(t / 5e-3, 1.0)
+        rows.append({"time": t, "omega": omega, "F_x": 3000.0 if t <= 6e-3 else 4000.0, "T_oil": 313.15})
+    return rows
+
+
 def make_model(scene):
     """The Python model of a scene with its FMU's default parameters."""
     if scene.fidelity == "analytic":
         return AnalyticModel(scene=scene)
+    if scene.fidelity == "dem":
+        return DemModel(scene=scene)
     if scene.drive == "fixed_axial":
         return QuasiStaticModel(scene=scene, F_preload=DEFAULT_FIXED_PRELOAD)
     return QuasiStaticModel(scene=scene)

@@ -41,7 +41,7 @@ class Scene:
     race_control (quasi_static): default of the FMU parameter race_control, 'outer' | 'inner' | 'hybrid'.
     gyroscopic (quasi_static): ball gyroscopic moment on.
     torque (quasi_static): friction torque, power loss and ring heat outputs (Houpert components).
-    stiffness (quasi_static): the 5x5 stiffness outputs K[i,j].
+    stiffness (quasi_static, dem): the 5x5 stiffness outputs K[i,j].
     thermal_inputs (quasi_static): inputs dPd_thermal (and dz_thermal when z is imposed).
     film: EHL film formula, 'hamrock_dowson' (default, as Guessasma 2018 and Farah 2020) | 'masjedi_khonsari' |
         'chittenden'.
@@ -110,11 +110,11 @@ class Scene:
             if self.drive != "load":
                 out.append(f"drive = {self.drive!r} needs fidelity = 'quasi_static' (analytic is load-driven)")
         if self.fidelity == "dem":
-            for option in ("gyroscopic", "torque", "stiffness", "thermal_inputs"):
+            for option in ("gyroscopic", "torque", "thermal_inputs"):
                 if getattr(self, option):
                     out.append(
                         f"{option} = true is a quasi-static option (the DEM always has the gyroscopic moment, the "
-                        "torque and the dPd_thermal input, and no stiffness outputs)"
+                        "torque and the dPd_thermal input)"
                     )
             if self.drive != "load":
                 out.append(f"drive = {self.drive!r} needs fidelity = 'quasi_static' (the DEM is load-driven)")

@@ -117,9 +117,11 @@ def _summary(name, scene):
     """A few words on what the FMU models: its fidelity and drive, or its network options."""
     if scene:
         scene = scene[0]
-        return (
-            "analytic bearing" if scene.fidelity == "analytic" else f"quasi-static bearing, {DRIVE_WORDS[scene.drive]}"
-        )
+        if scene.fidelity == "analytic":
+            return "analytic bearing"
+        if scene.fidelity == "dem":
+            return "DEM (ball dynamics) bearing, loads in, displacements out"
+        return f"quasi-static bearing, {DRIVE_WORDS[scene.drive]}"
     return "thermal spindle" + (", axial float of a fixed-preload pair" if THERMAL_FMUS[name][1] else "")
 
 

@@ -1,6 +1,6 @@
 """Every input, output and parameter of the bearing fidelities, declared once.
 
-The facades (analytic.AnalyticModel, quasi_static.QuasiStaticModel) fill their output arrays in the
+The facades (analytic.AnalyticModel, quasi_static.QuasiStaticModel, dem.DemModel) fill their output arrays in the
 order declared here, the FMU classes (bearing_fmu.fmu) register their FMI variables from these
 declarations, and the variable lists of fmus/<Name>.md and of the README are generated from them
 (bearing_fmu.build.variables_markdown). A declaration says which scene option enables it (`option`,
@@ -10,14 +10,19 @@ solver's arrays; none = computed by the facade).
 Source arrays: "out" is the kernel's output array (radial_bearing.O_* for the analytic fidelity,
 contacts.CO_* for the quasi-static one); "d", "F" and "K" are the quasi-static solver's
 displacements, reactions and stiffness matrix (K flattened row by row); "ball_set" is the summary of
-the ball set (bearing_outputs.BS_*: most loaded ball, cage speed, iterations).
+the ball set (bearing_outputs.BS_*: most loaded ball, cage speed, iterations). DEM fidelity: "out",
+"ring" and "status" are the ball-dynamics output, inner-ring and monitor-status arrays
+(kernels.ball_dynamics.state O_*, R_*, ST_*), "K" the facade's condensed stiffness (row by row).
 """
+
+from dataclasses import replace
 
 from bearing_fmu_common.variables import Variable
 
 from ..kernels import bearing_outputs as bo
 from ..kernels import contacts as ck
 from ..kernels import radial_bearing as ak
+from ..kernels.ball_dynamics import state as ds
 
 T_OIL_START = 313.15  # K (40 C): every other input starts at 0 (at rest, unloaded, centred)
 DEFAULT_FIXED_PRELOAD = 800.0  # N, Rabreau et al. 2018 rig (fixed_axial scenes only)
@@ -292,5 +297,116 @@ QUASI_STATIC_PARAMETERS = (
         "input z is added to the axial approach that carries it. 0 = z is the axial approach itself",
         drives=("fixed_axial",),  # only a fixed-preload bearing has an assembly offset
         start=DEFAULT_FIXED_PRELOAD,
+    ),
+)
+
+# -- DEM fidelity (ball dynamics, docs/dem.md) ------------------------------------------------------
+# Same names, units and meaning as the quasi-static load-driven FMU where they apply. One doStep
+# integrates the communication step H: the speed goes linearly from its value at the previous
+# communication point to the input (a first-order hold: no speed jump at a point), loads, oil
+# temperature and clearance change are held. Loads, film, angles and positions are end-of-step values;
+# the power outputs are the energy dissipated in the contacts over the step divided by H.
+DEM_REFRESH_INTERVAL = 20e-6  # s, default simulated time between two tribology refreshes (docs/reports/dem_error.md)
+_BY_NAME = {v.name: v for v in QUASI_STATIC_INPUTS + QUASI_STATIC_OUTPUTS if not v.drives or "load" in v.drives}
+_BY_NAME_PARAMETERS = {v.name: v for v in QUASI_STATIC_PARAMETERS}
+DEM_OUTPUT_WORDS = "mean over the communication step (energy dissipated in the contacts / H)"
+
+
+def _dem_output(name, source, description=None, option=""):
+    """The quasi-static output `name` with the DEM's source (and description where the meaning differs)."""
+    var = _BY_NAME[name]
+    return replace(var, source=source, option=option, description=description or var.description)
+
+
+DEM_INPUTS = (
+    OMEGA,
+    _BY_NAME["F_x"],
+    _BY_NAME["F_y"],
+    _BY_NAME["F_z"],
+    T_OIL,
+    replace(_BY_NAME["dPd_thermal"], option=""),  # the DEM always has it
+)
+
+DEM_OUTPUTS = (
+    *(
+        _dem_output(name, ("ring", ds.R_X + i), f"{DOF_WORDS[i]} of the inner ring at the end of the step")
+        for i, name in enumerate(("x", "y", "z"))
+    ),
+    *(
+        _dem_output(
+            stiffness_name(i, j),
+            ("K", 5 * i + j),
+            f"stiffness dF_{i + 1}/dd_{j + 1} at the end of the step, (F) = (F_x, F_y, F_z, M_x, M_y), "
+            f"(d) = (x, y, z, theta_x, theta_y), contact tangent stiffnesses with each ball's inner and outer "
+            f"contact in series (docs/dem.md)",
+            option="stiffness",
+        )
+        for i in range(5)
+        for j in range(5)
+    ),
+    _dem_output("torque", ("out", ds.O_TORQUE), f"friction torque = P_loss/|omega| (0 at rest), {DEM_OUTPUT_WORDS}"),
+    _dem_output("P_loss", ("out", ds.O_P_LOSS), f"total power loss of the contacts, {DEM_OUTPUT_WORDS}"),
+    _dem_output(
+        "Q_inner_ring", ("out", ds.O_Q_INNER_RING), f"heat to the inner ring (inner contacts), {DEM_OUTPUT_WORDS}"
+    ),
+    _dem_output(
+        "Q_outer_ring", ("out", ds.O_Q_OUTER_RING), f"heat to the outer ring (outer contacts), {DEM_OUTPUT_WORDS}"
+    ),
+    _dem_output("Lambda_inner", ("out", ds.O_LAMBDA_I)),
+    _dem_output("Lambda_outer", ("out", ds.O_LAMBDA_O)),
+    _dem_output("h_min_inner", ("out", ds.O_HMIN_I)),
+    _dem_output("h_min_outer", ("out", ds.O_HMIN_O)),
+    _dem_output("regime", ("out", ds.O_REGIME)),
+    _dem_output(
+        "C_bearing",
+        ("out", ds.O_C_BEARING),
+        f"{CAPACITANCE}, at the last tribology refresh of the step",
+        option="capacitance",
+    ),
+    _dem_output("Q_max_inner", ("out", ds.O_QMAX_I), "largest inner contact load at the end of the step"),
+    _dem_output("Q_max_outer", ("out", ds.O_QMAX_O), "largest outer contact load at the end of the step"),
+    _dem_output("p_max", ("out", ds.O_PMAX), "largest Hertz contact pressure of a loaded contact at the last refresh"),
+    _dem_output("alpha_inner", ("out", ds.O_ALPHA_I), "inner contact angle of the most loaded ball (end of step)"),
+    _dem_output("alpha_outer", ("out", ds.O_ALPHA_O), "outer contact angle of the most loaded ball (end of step)"),
+    _dem_output("omega_cage", ("out", ds.O_OMEGA_CAGE), "cage speed: mean orbital speed of the balls over the step"),
+    _dem_output(
+        "omega_ball",
+        ("out", ds.O_OMEGA_BALL),
+        "angular speed of the most loaded ball in the fixed frame (end of step, sign of omega)",
+    ),
+    _dem_output("n_loaded", ("out", ds.O_N_LOADED), "number of balls loaded on both races (end of step)"),
+    Variable(
+        "cage_slip",
+        "1",
+        "cage slip 1 - omega_cage/(pure-rolling cage speed) (0 at rest)",
+        source=("out", ds.O_CAGE_SLIP),
+    ),
+    Variable(
+        "SRR_max",
+        "1",
+        "largest slide-to-roll ratio of a loaded contact at the last refresh",
+        source=("out", ds.O_SRR_MAX),
+    ),
+    Variable(
+        "monitor_status",
+        "1",
+        "stability monitor of the last doStep: 0 ok, 1 non-finite force, 2 penetration beyond the material "
+        "limit, 3 energy growth, 4 tangential chatter (a non-zero code comes with fmi2Discard)",
+        "integer",
+        source=("status", ds.ST_CODE),
+    ),
+)
+
+DEM_PARAMETERS = (
+    replace(_BY_NAME_PARAMETERS["bearing"], start="6208"),
+    replace(_BY_NAME_PARAMETERS["lubricant"], start="guessasma_oil"),
+    _BY_NAME_PARAMETERS["Pd_from_file"],
+    _BY_NAME_PARAMETERS["Pd"],
+    Variable("dt", "s", "DEM time step, 0 = automatic (half the stability limit of the stiffest pair); <= 1e-4 s"),
+    Variable(
+        "refresh_interval",
+        "s",
+        "simulated time between two tribology refreshes (film, friction, damping, capacitance), ]0, 1e-3] s",
+        start=DEM_REFRESH_INTERVAL,
     ),
 )

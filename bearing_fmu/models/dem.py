@@ -20,10 +20,14 @@ import tomllib
 
 import numpy as np
 
+from bearing_fmu_common.variables import gather_plan, select
+
 from ..kernels.ball_dynamics import integrator as dyn
 from ..kernels.ball_dynamics import state as s
+from ..kernels.ball_dynamics.contacts import groove_approach
 from ..kernels.ball_dynamics.monitor import critical_time_step
 from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_angles, contact_loads
+from ..kernels.ball_dynamics.tribology import race_circle
 from ..kernels.geometry import ball_mass, curvature_radii, free_contact_angle, rolling_kinematics
 from ..kernels.hertz import (
     hertz_coefficients_approx,
@@ -35,6 +39,8 @@ from ..kernels.hertz import (
 from ..kernels.torque import ALPHA_HYSTERESIS_STEEL
 from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
+from .declarations import DEM_INPUTS, DEM_OUTPUTS
+from .declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
 from .variables import DM_N_LIMIT, P_MAX_ERROR, InputError, check_oil_temperature, check_speed
 
 # PA66 cage balls when the bearing file has no [material.cage] (Farah 2020: E_c = 3.3 GPa, nu_c = 0.41)
@@ -46,7 +52,6 @@ ALPHA_E = 0.08  # s/m, hysteretic damping constant of steel (Guessasma 2018 eq. 
 KT_RATIO = 2.0 / 3.0  # tangential / normal stiffness, lower end of the seeds' [2/3, 1]
 V_REG = 1e-3  # m/s, speed below which the resistances' directions are regularised
 SAFETY = 0.5  # default time step over the stability limit of the stiffest pair (docs/reports/dem_error.md)
-REFRESH_INTERVAL = 20e-6  # s, default simulated time between two tribology refreshes (the same report)
 # consecutive slipping reversals of one spring that count as chatter: sustained chatter (6208 at 3 kN,
 # 500 rad/s, dt >= 7 us) reverses for hundreds of steps and multiplies the torque; a lightly loaded ball
 # entering the load zone during a start-up reverses for up to ~15 steps without changing the results
@@ -161,6 +166,18 @@ class DemModel:
         self.refresh = 0  # its tribology refresh interval (steps)
         self._place_bodies()
         self._initialise(0.0, 0.0, 0.0, 0.0, T_OIL_DEFAULT)
+        # the FMU interface (update): variables of the scene in declaration order, filled by one copy plan
+        self.inputs = select(DEM_INPUTS, self.scene)
+        self.outputs = select(DEM_OUTPUTS, self.scene)
+        self.output_names = tuple(v.name for v in self.outputs)
+        self.values = np.zeros(len(self.outputs))
+        self.warnings = []  # update() logs none: the monitor stops a step instead
+        self.K = np.zeros((5, 5))  # condensed stiffness of the last update (scene option stiffness)
+        arrays = {"out": self.out, "ring": self.ring, "status": self.status, "K": self.K.reshape(-1)}
+        self._plan = gather_plan(self.outputs, arrays)
+        self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
+        self._before = self.get_state()  # state at the start of the last update(), restored when it fails
+        self._gather()
 
     # -- set-up --------------------------------------------------------------------------------
     def _pack(self, ring_mass, kt_ratio):
@@ -363,15 +380,19 @@ class DemModel:
         hold), loads F_x, F_y, F_z (N) on the inner ring, oil temperature T_oil (K), change of diametral
         clearance dPd_thermal (m, added to Pd, negative = tighter: the outer groove circle moves by half of
         it; the Hertz constants stay those of the nominal geometry, as in the quasi-static fidelity).
-        Returns outputs().
+        Returns outputs_dict().
 
         Raises InputError for inputs out of range, DemUnstableError when the monitor stops the run (the
         state is then left at the offending step: restore a saved state to retry)."""
         omega = self.omega if omega is None else float(omega)
-        F_x, F_y, F_z, T_oil, dPd_thermal = float(F_x), float(F_y), float(F_z), float(T_oil), float(dPd_thermal)
-        self._check(float(t_end), omega, F_x, F_y, F_z, T_oil, dPd_thermal)
+        self._advance(float(t_end), omega, float(F_x), float(F_y), float(F_z), float(T_oil), float(dPd_thermal))
+        return self.outputs_dict()
+
+    def _advance(self, t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal):
+        """advance() without building the output dict (floats in SI units, omega given)."""
+        self._check(t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
         self.par[s.P_RHO_O] = self._rho_outer + 0.5 * dPd_thermal
-        interval = float(t_end) - self.time
+        interval = t_end - self.time
         dt = self.dt_fixed
         if dt is None:
             # the limit falls with speed (centrifugal load): take the faster end of the interval
@@ -424,7 +445,6 @@ class DemModel:
             self._alpha,
             self.out,
         )
-        return self.outputs()
 
     def _energy_limit(self, omega, force):
         """Bound (J) of the kinetic energy: ENERGY_FACTOR x (pure-rolling kinetic energy at omega + load x groove
@@ -453,7 +473,7 @@ class DemModel:
         )
 
     # -- outputs -------------------------------------------------------------------------------
-    def outputs(self):
+    def outputs_dict(self):
         """Bearing-level outputs of the last advance() (names as the quasi-static fidelity), SI units."""
         o = self.out
         result = dict(
@@ -487,6 +507,112 @@ class DemModel:
         )
         if not self.scene.capacitance:
             del result["C_bearing"]
+        return result
+
+    # -- FMU interface ---------------------------------------------------------------------------
+    def update(self, u, interval=0.0):
+        """Advance by `interval` (s; 0 = only report the current state) with the input values u in self.inputs
+        order (omega, F_x, F_y, F_z, T_oil, dPd_thermal; SI) as advance() takes them, and fill self.values
+        (self.outputs order: the declarations of models.declarations.DEM_OUTPUTS); returns self.values.
+
+        Raises InputError for inputs out of range (nothing changed) and DemUnstableError when the monitor stops
+        the step: the state is then restored to the start of the step and self.status keeps the monitor's code."""
+        if interval != 0.0:
+            if not (math.isfinite(interval) and interval > 0.0):
+                raise InputError(f"communication step = {interval} s is outside the allowed range ]0, inf[ s")
+            self._step_to(self.time + interval, u)
+        self._gather()
+        return self.values
+
+    def _step_to(self, t_end, u):
+        """update()'s step to t_end (s): advance, or on a monitor stop restore the state and raise."""
+        omega, F_x, F_y, F_z, T_oil, dPd_thermal = (float(v) for v in u)
+        self.status[s.ST_CODE] = s.STATUS_OK  # a refused input leaves no stale monitor code
+        self._check(t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
+        self._copy_state(self._before, self.__dict__)
+        self._before["omega"] = self.omega
+        try:
+            self._advance(t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
+        except DemUnstableError:
+            self._copy_state(self.__dict__, self._before)
+            self.omega = self._before["omega"]
+            raise
+
+    def _gather(self):
+        if self.scene.stiffness:
+            self.stiffness_matrix(self.K)
+        for src, idx, dst in self._plan:
+            self.values[dst] = src[idx]
+
+    def stiffness_matrix(self, K=None):
+        """5x5 stiffness dF_i/dd_j of the inner ring in the current state, (F) = (F_x, F_y, F_z, M_x, M_y) in N and
+        N.m, (d) = (x, y, z, theta_x, theta_y) in m and rad, the quasi-static fidelity's convention (docs/dem.md,
+        Stiffness): each loaded contact is a spring of tangent stiffness 1.5 K_h delta^0.5 (N/m) along its normal
+        plus Q/(r_g + delta) across it in the ball's radial plane (the normal turns about the groove's curvature
+        centre); each ball's inner and outer contacts are condensed in series (the ball's two in-plane
+        coordinates eliminated), and the ball acts on the inner groove's curvature-centre point at its azimuth.
+        A ball open on either race adds nothing. Written into K (float64[5, 5]) if given; returned."""
+        K = np.zeros((5, 5)) if K is None else K
+        p, balls, ring = self.par, self.balls, self.ring
+        circles = (race_circle(0, ring, p), race_circle(1, ring, p))
+        rho_i, z_i = p[s.P_RHO_I], p[s.P_Z_I]
+        reduced, maps = [], []
+        for j in range(balls.shape[1]):
+            x, y, z = balls[s.B_X, j], balls[s.B_X + 1, j], balls[s.B_X + 2, j]
+            r = math.hypot(x, y)
+            c, sn = x / r, y / r  # the ball's radial direction e_r = (c, sn, 0)
+            springs = []  # (xx, xz, zz) of each contact's 2x2 stiffness in the radial plane (e_r, e_z)
+            for race in (0, 1):
+                cx, cy, cz, rho = circles[race]
+                delta, nx, ny, nz = groove_approach(x, y, z, cx, cy, cz, rho, p[s.P_RG_I + race])
+                if delta <= 0.0:
+                    break
+                k_n = 1.5 * p[s.P_KH_I + race] * math.sqrt(delta)
+                k_t = p[s.P_KH_I + race] * delta * math.sqrt(delta) / (p[s.P_RG_I + race] + delta)  # Q/(r_g + delta)
+                n_r, n_z = nx * c + ny * sn, nz
+                scale = 1.0 / (n_r * n_r + n_z * n_z)
+                d = k_n - k_t
+                springs.append((k_t + d * n_r * n_r * scale, d * n_r * n_z * scale, k_t + d * n_z * n_z * scale))
+            if len(springs) < 2:
+                continue
+            (a, b, e), (a_o, b_o, e_o) = springs
+            # the ball condensed: K_i - K_i (K_i + K_o)^-1 K_i, i.e. K_i and K_o in series
+            sa, sb, se = a + a_o, b + b_o, e + e_o
+            det = sa * se - sb * sb
+            ia, ib, ie = se / det, -sb / det, sa / det
+            # K_i (S^-1 K_i): m = S^-1 K_i
+            m11, m12 = ia * a + ib * b, ia * b + ib * e
+            m21, m22 = ib * a + ie * b, ib * b + ie * e
+            reduced.append(
+                ((a - (a * m11 + b * m21), b - (a * m12 + b * m22)), (b - (b * m11 + e * m21), e - (b * m12 + e * m22)))
+            )
+            # displacement of the inner curvature-centre point at the azimuth (rho_i e_r + z_i e_z from the ring's
+            # origin) along e_r and e_z for the ring DOFs (x, y, z, theta_x, theta_y)
+            maps.append(((c, sn, 0.0, -z_i * sn, z_i * c), (0.0, 0.0, 1.0, rho_i * sn, -rho_i * c)))
+        if reduced:
+            G = np.array(maps)
+            np.einsum("jai,jab,jbk->ik", G, np.array(reduced), G, out=K)
+        else:
+            K[...] = 0.0
+        return K
+
+    def _copy_state(self, target, source):
+        for name in self.STATE_ARRAYS:
+            np.copyto(target[name], source[name])
+
+    def evaluate(self, time, **values):
+        """Advance to `time` (s) with the named inputs (missing ones take their start values: 0, T_oil 313.15 K) as
+        update() does (update(u, H) is evaluate(self.time + H, ...)); the outputs as a dict name -> SI value
+        (integers for integer outputs)."""
+        self._step_to(float(time), [values.get(v.name, v.start) for v in self.inputs])
+        self._gather()
+        return self.as_dict()
+
+    def as_dict(self):
+        """The outputs of the last update() as a dict name -> SI value (integers for integer outputs)."""
+        result = dict(zip(self.output_names, self.values.tolist()))
+        for name in self._integers:
+            result[name] = int(result[name])
         return result
 
     def contacts(self):

@@ -312,7 +312,7 @@ def test_record_returns_time_series_of_outputs_and_contacts():
     rec = model.record(1.5e-3, 1e-4, omega=10.0, F_x=3000.0)
     np.testing.assert_allclose(rec["t"], np.linspace(1.1e-3, 1.5e-3, 5), rtol=1e-12)
     assert rec["contacts"]["Q_inner"].shape == (5, model.bearing.Z) and rec["omega_cage"].shape == (5,)
-    assert rec["Lambda_outer"][-1] == model.outputs()["Lambda_outer"]
+    assert rec["Lambda_outer"][-1] == model.outputs_dict()["Lambda_outer"]
     model.set_state(saved)
     for k in range(1, 6):
         out = model.advance(1e-3 + k * 1e-4, omega=10.0 * k / 5, F_x=3000.0)

@@ -45,7 +45,7 @@ def steady_means(model, omega, until=0.030, window=0.010, parts=5):
 def steady_500():
     model = DemModel("6208", "guessasma_oil")
     start_up(model, 500.0)
-    ramp_srr = model.outputs()["SRR_max"]
+    ramp_srr = model.outputs_dict()["SRR_max"]
     return model, steady_means(model, 500.0), ramp_srr
 
 
