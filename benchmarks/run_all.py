@@ -5,6 +5,7 @@ from . import (
     cosim_error,
     dem_error,
     dem_figures,
+    dem_fmu,
     dem_timing,
     ehl_film_table,
     fixed_preload_stability,
@@ -36,6 +37,7 @@ def main():
         dem_timing,
         dem_error,
         dem_figures,
+        dem_fmu,
     ):
         module.main()
 
