@@ -158,7 +158,7 @@ def main():
         "",
         f"Kernel calls per run: {', '.join(f'{k} {v}' for k, v in kernel_names(recorder.calls).items())}. "
         f"The compiled kernels are {100 * floor / step:.0f} % of a step; the rest is the FMU layer "
-        "(pythonfmu getters and setters, the facades' input checks and output tables) and the master's "
+        "(the FMI layer's C-to-Python calls and the slaves' getters and setters, the facades' input checks and output tables) and the master's "
         "fmpy calls. Before the FMU layer was thinned (outputs in a preallocated array read by "
         "precomputed index, input and output tables built once, the master's value references resolved "
         f"once and transferred in batches), the same measurement gave {BEFORE}.",

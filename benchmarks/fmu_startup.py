@@ -160,7 +160,7 @@ def main(warm_runs=7):
         "The ratio is the median over the warm runs of each run's own ratio of CPU times (step and kernels "
         "measured in the same process with `time.process_time`, which other processes on the shared cores do "
         "not lengthen; the wall times are given for the step target). The analytic kernel takes a few microseconds, so there the fixed cost of four FMI "
-        "calls per step (fmpy ctypes, pythonfmu's C++ to Python dispatch) dominates; the quasi-static solve "
+        "calls per step (fmpy ctypes, the FMI layer's C-to-Python dispatch) dominates; the quasi-static solve "
         "is what a co-simulation pays for. Before the FMU layer was thinned (outputs in a preallocated "
         f"array read by precomputed index, input and output tables built once), the same measurement gave {BEFORE}.",
     ]
