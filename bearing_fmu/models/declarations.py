@@ -246,7 +246,11 @@ QUASI_STATIC_OUTPUTS = (
     ),
     Variable("n_loaded", "1", "number of balls loaded on both races", "integer", source=("out", ck.CO_N_LOADED)),
     Variable(
-        "iterations", "1", "Newton iterations of the last solve", "integer", source=("ball_set", bo.BS_ITERATIONS)
+        "iterations",
+        "1",
+        "work of the last solve: bearing evaluations after the first (Newton iterations plus cut line-search steps)",
+        "integer",
+        source=("ball_set", bo.BS_ITERATIONS),
     ),
 )
 
