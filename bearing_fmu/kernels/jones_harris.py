@@ -809,8 +809,10 @@ def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
     for i in range(n):
         f_ref = max(f_ref, abs(F_applied[idx[i]]) / scale[idx[i]])
     loads = (F_applied, idx, n, scale, qs, dPd, omega, X, X_try, d_try, F, J, contact, jacobian, status, f_ref)
-    _centre_if_unloaded(F_applied, idx, n, A1_0, d)
     ball_status = ring_loads(d, qs, dPd, omega, X, F, J, contact, jacobian, f_ref)
+    if n > 0 and _free_ring_start(F_applied, idx, n, A1_0, d, contact):
+        ball_status = ring_loads(d, qs, dPd, omega, X, F, J, contact, jacobian, f_ref)
+        status[1] += 1
     res = _residual_norm(F_applied, F, idx, n, scale)
     for it in range(maxit + 1):
         if not math.isfinite(res):
@@ -850,21 +852,32 @@ def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
 
 
 @kernel
-def _centre_if_unloaded(F_applied, idx, n, A1_0, d):
-    """Start at the centre of the clearance when no load is applied (docs/quasistatic.md section 3).
+def _free_ring_start(F_applied, idx, n, A1_0, d, contact):
+    """Where the Newton on the n load-controlled DOFs idx[:n] starts when the ring is free in its
+    clearance (docs/quasistatic.md section 3); contact: the contact state at the warm start d.
+    Returns True when d was changed (the caller evaluates again).
 
-    Under zero load a ring with clearance is free: every position inside the clearance balances the
-    load, and Newton would stop wherever the warm start left it (a result that depends on the load
-    history). With all n load-controlled loads zero, those DOFs start (and, if no ball is squeezed there,
-    stay) at the centre: x = y = 0, no tilt, z = -A1_0 = -A sin(alpha0) for an angular-contact bearing
-    (midway in its end play), z = 0 for a deep-groove one. A bearing without clearance is then solved
-    from this symmetric start, which makes its result a function of the inputs as well."""
+    Under zero load every position inside the clearance balances the load, and Newton would stop
+    wherever the warm start left it (a result that depends on the load history). With all applied loads
+    zero, the DOFs start (and, if no ball is squeezed there, stay) at the centre of the clearance: no
+    radial shift, no tilt, z = -A1_0 = -A sin(alpha0) for an angular-contact bearing (midway in its end
+    play), z = 0 for a deep-groove one. Under a load with no inner contact loaded at the warm start (the
+    ring still at that centre, say), they start instead at d = 0, where the balls touch at the free
+    contact angle: the flat plateau of a free ring is not crossed step by step."""
+    zero = True
     for a in range(n):
-        if F_applied[idx[a]] != 0.0:
-            return
+        zero = zero and F_applied[idx[a]] == 0.0
+    if not zero:
+        for j in range(contact.shape[1]):
+            if contact[CS_Q_I, j] > 0.0:
+                return False
+    changed = False
     for a in range(n):
         i = idx[a]
-        d[i] = -A1_0 if i == 2 else 0.0
+        target = -A1_0 if (zero and i == 2) else 0.0
+        changed = changed or d[i] != target
+        d[i] = target
+    return changed
 
 
 @kernel

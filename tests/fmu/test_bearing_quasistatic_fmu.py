@@ -139,7 +139,7 @@ def test_simulate_fmu_equals_python_model(bearing_fmu):
         output=["z", "x", "theta_y", "torque", "K[3,3]", "K[1,5]", "alpha_outer", "C_bearing"],
     )
     model = QuasiStaticModel(scene=scene_of("quasi_static.toml"))
-    model.evaluate()  # the FMU's history: its defaults (zero load, the clearance centre) at construction
+    model.evaluate()  # the FMU's history: its defaults (zero load: the clearance centre) at construction
     for row in res[1:]:
         n = int(round(row["time"] / 0.1)) - 1  # outputs at t_n from the inputs held at t_(n-1)
         ref = model.evaluate(omega=1047.0 * t[n], F_z=800.0 + 500.0 * t[n], F_x=100.0 * t[n])

@@ -462,23 +462,23 @@ def _scales(F_applied, p):
     return d_scale, f_scale
 
 
-def clearance_centre(p):
+def zero_load_position(p):
     """The ring's position at zero load when it is free in its clearance (docs/quasistatic.md section 3):
-    no radial shift, no tilt, axially midway between the two shoulders' contacts, i.e. where the
-    curvature centres of a ball line up radially: z = -A sin(alpha0) for an angular-contact bearing
-    (its z = 0 is where the balls touch at alpha0), 0 for a deep-groove one."""
+    the centre of the clearance, i.e. no radial shift, no tilt, and axially midway between the two
+    shoulders' contacts, where the curvature centres of a ball line up radially: z = -A sin(alpha0) for
+    an angular-contact bearing (its z = 0 is where the balls touch at alpha0), 0 for a deep-groove one."""
     return np.array([0.0, 0.0, -geometry(p)["A1_0"], 0.0, 0.0])
 
 
 def solve_loads(F_applied, p, d0=None):
     """Inner-ring displacement d (5,) carrying F_applied = (F_x, F_y, F_z, M_x, M_y): scipy root
     ('hybr', then 'lm' if needed) on d in um / mrad, residual scaled by the load scale. Under zero load
-    the root is searched from the clearance centre, which is the answer itself when no inner contact
-    is loaded there (any position inside the clearance balances zero load; this one is documented)."""
+    the root is searched from zero_load_position, which is the answer itself when no inner contact is
+    loaded there (any position inside the clearance balances zero load; this one is documented)."""
     F_applied = np.asarray(F_applied, dtype=float)
     d_scale, f_scale = _scales(F_applied, p)
     if not F_applied.any():
-        centre = clearance_centre(p)
+        centre = zero_load_position(p)
         if all(b["Q_i"] == 0.0 for b in bearing_loads(centre, p)[1]):
             return centre
         d0 = centre
@@ -624,6 +624,6 @@ TWINS = {
     "ring_loads": bearing_loads,
     "bearing_loads": bearing_loads,
     "solve_quasistatic": solve_loads,
-    "_centre_if_unloaded": clearance_centre,
+    "_free_ring_start": zero_load_position,
     "_solve_small": solve_small,
 }

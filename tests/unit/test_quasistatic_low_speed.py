@@ -3,7 +3,7 @@
 At low non-zero speed the balls that the load does not press are held on the outer race by a
 centrifugal force of nanonewtons; their equilibrium is judged against the bearing-level load per ball
 (jones_harris._ball_newton), a warm start where such a ball floated is replaced, and a ring free in its
-clearance under zero load sits at the documented centre (docs/quasistatic.md section 3). Speeds,
+clearance under zero load sits at the documented position (docs/quasistatic.md section 3). Speeds,
 loads and bearings are those with which engineers drive the FMU: a run-up from rest under radial,
 axial and moment loads, and a grid of low speeds from 0.1 rpm.
 """
@@ -81,10 +81,11 @@ def test_zero_load_in_clearance_gives_the_centre_whatever_the_history(label, p, 
     p = dict(p, omega=rpm * RPM)
     qs = pack(p)
     centre = ref.solve_loads(np.zeros(5), p)
-    assert np.array_equal(centre, ref.clearance_centre(p))
+    assert np.array_equal(centre, ref.zero_load_position(p))
     start = np.array([3e-6, -1e-6, 7e-6, 1e-4, -1e-4])  # the kernel's rule on all five DOFs load-controlled
-    qk._centre_if_unloaded(np.zeros(5), np.arange(5), 5, qk.qs_geometry(qs, 0.0)[3], start)
-    assert np.array_equal(start, ref.clearance_centre(p))
+    A1_0 = qk.qs_geometry(qs, 0.0)[3]
+    assert qk._free_ring_start(np.zeros(5), np.arange(5), 5, A1_0, start, np.zeros((qk.CS_SIZE, p["Z"])))
+    assert np.array_equal(start, ref.zero_load_position(p))
     A = (p["f_i"] + p["f_o"] - 1.0) * p["D"]
     results = []
     for d0 in (None, (0.0, 0.0, 20e-6, 0.0, 0.0), (0.0, 0.0, -0.3 * A, 0.0, 0.0), (5e-6, -3e-6, 0.0, 1e-4, 0.0)):
