@@ -39,6 +39,7 @@ from .variables import (
     DM_N_LIMIT,
     P_MAX_ERROR,
     InputError,
+    check_clearance,
     check_oil_temperature,
     check_speed,
     pressure_warnings,
@@ -67,7 +68,8 @@ class QuasiStaticModel:
     """Quasi-static 5-DOF bearing (Jones/Harris, docs/quasistatic.md) with film, capacitance and Houpert losses.
 
     bearing, lubricant: catalogue name or TOML path; scene: Scene with fidelity 'quasi_static';
-    Pd: diametral clearance (m) overriding the bearing file, |Pd| <= 0.02 D;
+    Pd: diametral clearance (m) overriding the bearing file (None: the file's), within
+        -(f_i + f_o - 1) D <= Pd <= (f_i + f_o - 1) D (free contact angle up to 60 deg);
     race_control: 'outer' | 'inner' | 'hybrid' (default: the scene's);
     hybrid_split: with race_control 'hybrid', how the gyroscopic moment is shared between the races:
         'spin_moments' (default, lam_i = 2C/(1+C)); 'outer', 'inner', 'equal' and 'controlling_race'
@@ -96,9 +98,7 @@ class QuasiStaticModel:
         self.lubricant = load_lubricant(lubricant)
         b = self.bearing
         self.Pd = b.Pd if Pd is None else float(Pd)
-        limit = 0.02 * b.D
-        if not (math.isfinite(self.Pd) and abs(self.Pd) <= limit):
-            raise InputError(f"Pd = {Pd} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m (|Pd| <= 0.02 D)")
+        check_clearance(self.Pd, b, Pd is not None)
         self.race_control = race_control or self.scene.race_control
         if self.race_control not in RACE_CONTROLS:
             raise InputError(f"race_control = {self.race_control!r}: allowed {list(RACE_CONTROLS)}")
