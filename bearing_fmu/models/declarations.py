@@ -72,9 +72,16 @@ ANALYTIC_PARAMETERS = (
         start="guessasma_oil",
     ),
     Variable(
+        "Pd_from_file",
+        "",
+        "true: diametral clearance from the bearing file; false: from the parameter Pd",
+        "boolean",
+        start=True,
+    ),
+    Variable(
         "Pd",
         "m",
-        "diametral clearance used by the model, overrides the bearing file value (negative = preload), |Pd| <= 0.02 D",
+        "diametral clearance used when Pd_from_file is false (negative = preload), |Pd| <= (f_i + f_o - 1) D",
         start=0.0,
     ),
 )
@@ -279,7 +286,7 @@ QUASI_STATIC_PARAMETERS = (
     Variable(
         "Pd",
         "m",
-        "diametral clearance used when Pd_from_file is false (negative = preload), |Pd| <= 0.02 D",
+        "diametral clearance used when Pd_from_file is false (negative = preload), |Pd| <= (f_i + f_o - 1) D",
         start=0.0,
     ),
     Variable(
