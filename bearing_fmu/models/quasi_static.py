@@ -346,6 +346,31 @@ class QuasiStaticModel:
             }[status]
             shown = ", ".join(f"{v.name} = {values[v.name]:.6g} {v.unit}" for v in self.inputs)
             raise SolverError(f"quasi-static equilibrium not found ({reason}, load residual {res:.3g} N) for {shown}")
+        if self.bearing.kind == "angular_contact":
+            self._check_thrust_side(d_start, X_start, values)
+
+    def _check_thrust_side(self, d_start, X_start, values):
+        """Refuse a solution that needs the shoulder a single-row angular-contact bearing does not have.
+
+        The kernel's grooves are full circles; the bearing's inner ring has its thrust shoulder on the side of
+        positive contact angles only (z = 0 where the balls touch it at the free angle). A loaded inner contact
+        at a negative angle would be a ball pressed on the missing shoulder: the load (a reverse thrust, or a
+        radial load or moment with too little thrust) must be carried by another bearing or a preload
+        (models.pair, or a second bearing FMU)."""
+        balls = self.balls
+        wrong = (balls[qk.BQ_Q_I] > 0.0) & (balls[qk.BQ_A_I] < 0.0)
+        if not wrong.any():
+            return
+        j = int(np.argmax(np.where(wrong, balls[qk.BQ_Q_I], -1.0)))
+        self.d[:] = d_start
+        self.X[:] = X_start
+        shown = ", ".join(f"{v.name} = {values[v.name]:.6g} {v.unit}" for v in self.inputs)
+        raise InputError(
+            f"bearing '{self.bearing.name}' is a single-row angular-contact bearing: it carries thrust in +z only, "
+            f"and these loads need its missing shoulder (ball {j} would carry {balls[qk.BQ_Q_I, j]:.4g} N at a "
+            f"contact angle of {math.degrees(balls[qk.BQ_A_I, j]):.3g} deg). Carry the reverse thrust with a "
+            f"second bearing or a preload (bearing_fmu.models.pair). Inputs: {shown}"
+        )
 
     def _collect(self, omega, values):
         """Fill self.values from the solver's and the contact kernel's arrays (declaration order)."""

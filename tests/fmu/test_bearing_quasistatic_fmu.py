@@ -149,11 +149,11 @@ def test_simulate_fmu_equals_python_model(bearing_fmu):
 
 def test_low_speeds_and_run_up_from_rest_step_without_refusal(bearing_fmu):
     """Through the FMU (fmpy raises on a refused step): the B7214C at low speeds 0.1-600 rpm under
-    no load, 5 kN radial + 500 N axial and 5 kN + 2 kN + 60 N.m, then the first 200 ms of a run-up
+    no load, 5 kN radial + 500 N axial and 5 kN + 2 kN radial + 2 kN axial + 60 N.m, then the first 200 ms of a run-up
     from rest to 10 000 rpm in 1 s at 1 ms steps under 5 kN + 500 N: every step accepted, outputs equal
     to the Python model's (the steps that were refused before the ball test was scaled to the bearing)."""
     rpm = 2.0 * np.pi / 60.0
-    loads = ({}, dict(F_x=5000.0, F_z=500.0), dict(F_x=5000.0, F_y=2000.0, M_x=60.0))
+    loads = ({}, dict(F_x=5000.0, F_z=500.0), dict(F_x=5000.0, F_y=2000.0, F_z=2000.0, M_x=60.0))
     steps = [dict(omega=n * rpm, **load) for n in (0.1, 1.0, 10.0, 79.0, 116.0, 537.0, 600.0) for load in loads]
     steps += [dict(omega=10000.0 * rpm * k / 1000, F_x=5000.0, F_z=500.0) for k in range(201)]
     model = QuasiStaticModel(scene=scene_of("quasi_static.toml"))

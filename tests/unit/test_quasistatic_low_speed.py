@@ -13,7 +13,7 @@ import math
 import numpy as np
 import pytest
 
-from bearing_fmu import QuasiStaticModel, Scene
+from bearing_fmu import InputError, QuasiStaticModel, Scene
 from bearing_fmu.build import SCENES_DIR
 from bearing_fmu.kernels import jones_harris as qk
 from tests.reference import ref_quasistatic as ref
@@ -23,9 +23,9 @@ RPM = 2.0 * math.pi / 60.0
 SCENE = Scene.from_toml(SCENES_DIR / "quasi_static.toml")  # the scene of Bearing.fmu
 # loads (N, N.m) of the run-ups and of the grid: radial + axial, radial + moment, pure axial, none
 LOADS = {
-    "B7214C": (
+    "B7214C": (  # a single-row angular-contact bearing: every load with the thrust that keeps it on its shoulder
         dict(F_x=5000.0, F_z=500.0),
-        dict(F_x=5000.0, F_y=2000.0, M_x=60.0),
+        dict(F_x=5000.0, F_y=2000.0, F_z=2000.0, M_x=60.0),
         dict(F_z=2000.0),
         dict(F_x=3000.0, F_z=1000.0, M_y=-40.0),
         {},
@@ -97,7 +97,9 @@ def test_zero_load_in_clearance_gives_the_centre_whatever_the_history(label, p, 
     # the same through the facade after a load history (the issue's +74 / -74 / 0 um)
     m = QuasiStaticModel("B7214C" if p["angular"] else "6208", scene=SCENE, Pd=p["Pd"])
     seen = []
-    for history in (dict(F_z=1000.0), dict(F_z=-1000.0), {}):
+    # (an angular-contact bearing takes thrust in +z only: its histories differ in size and direction)
+    histories = (dict(F_z=1000.0), dict(F_x=2000.0, F_z=3000.0)) if p["angular"] else (dict(F_z=1000.0), dict(F_z=-1e3))
+    for history in (*histories, {}):
         m.evaluate(omega=rpm * RPM, **history)
         seen.append(m.evaluate(omega=rpm * RPM)["z"])
     assert seen[0] == seen[1] == seen[2]
@@ -113,3 +115,16 @@ def test_low_speed_solution_matches_twin():
     d_ref = ref.solve_loads(F_applied, p)
     scale = np.array([1, 1, 1, p["dm"] / 2, p["dm"] / 2])
     assert np.max(np.abs((d - d_ref) * scale)) <= 1e-6 * np.max(np.abs(d_ref * scale))
+
+
+@pytest.mark.parametrize("load", [dict(F_z=-100.0), dict(F_x=5000.0, F_y=2000.0, M_x=60.0)])
+def test_reverse_thrust_on_single_angular_contact_bearing_is_refused(load):
+    """A single-row angular-contact bearing has its thrust shoulder on one side: a reverse thrust, or a
+    radial load and moment without the thrust that keeps every loaded ball on that shoulder, is refused
+    with the reason (no result computed on a shoulder that does not exist); the model keeps its state."""
+    m = QuasiStaticModel("B7214C", scene=SCENE)
+    m.evaluate(F_z=800.0)
+    state = m.get_state()
+    with pytest.raises(InputError, match="single-row angular-contact bearing.*missing shoulder"):
+        m.evaluate(**load)
+    assert m.get_state() == state
