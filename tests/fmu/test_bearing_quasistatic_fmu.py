@@ -193,6 +193,7 @@ def test_bad_inputs_are_reported_and_host_survives(bearing_fmu):
     assert any("T_oil = 0.0 K" in t and "[233.15, 473.15] K" in t for t in texts)
     assert any("F_z = inf" in t for t in texts)
     assert any("material limit" in t for t in texts)
+    assert any("F_z = -500" in t and "missing shoulder" in t for t in texts)  # reported, not computed
     assert any("dPd_thermal = 1.0 m" in t for t in texts)
 
 
