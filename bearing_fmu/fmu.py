@@ -121,10 +121,10 @@ class BearingAnalytic(_BearingSlave):
     parameters = ANALYTIC_PARAMETERS
 
     def _model_key(self):
-        return self.bearing, self.lubricant, float(self.Pd)
+        return self.bearing, self.lubricant, bool(self.Pd_from_file), float(self.Pd)
 
     def _make_model(self):
-        return AnalyticModel(self.bearing, self.lubricant, self.scene, Pd=self.Pd)
+        return AnalyticModel(self.bearing, self.lubricant, self.scene, Pd=None if self.Pd_from_file else self.Pd)
 
 
 class BearingQuasiStatic(_BearingSlave):

@@ -246,8 +246,8 @@ def main():
         "- **cold**: d = 0 and X = 0 copied in before each call (the facade's fallback after a failed warm start).",
         "- **warm**: d and X copied in before each call from the solution at a load 1 % higher (every "
         "applied load x 1.01): what one co-simulation step sees.",
-        "- iterations: Newton iterations of the global solve (each costs one `bearing_loads` plus "
-        "backtracking evaluations if a step is cut).",
+        "- iterations: the solver's work, bearing evaluations after the first (one per Newton iteration plus "
+        "one per cut line-search step).",
         "",
     ]
 

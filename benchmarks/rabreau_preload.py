@@ -298,7 +298,7 @@ def main():
         "",
         "## Convergence",
         "",
-        f"{len(data) * len(FORCES)} warm solves and as many cold ones; Newton iterations of the warm sweep "
+        f"{len(data) * len(FORCES)} warm solves and as many cold ones; solver work (bearing evaluations after the first) of the warm sweep "
         f"{int(np.nanmin(iters))}-{int(np.nanmax(iters))}.",
     ]
     lines += ["Problems (failures, warm/cold disagreement): " + ("none." if not problems else "")]

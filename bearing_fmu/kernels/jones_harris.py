@@ -162,6 +162,10 @@ KG_DC = 3  # d/dC
 
 _H_CSTEP = 1e-30  # complex-step increment: exact derivatives, no subtraction error
 _BALL_MAXIT = 60
+_BALL_RTOL = 1e-13  # ball residual relative to its loads plus the bearing-level load per ball (_ball_newton)
+_BALL_TRIES = 8  # step halvings of the ball line search (down to 1/128): bounds the cost of a bad start
+_LOADS_TRIES = 12  # step halvings of the global line search (down to 1/2048)
+_F_FLOOR = 1e-3  # N: load scale of a bearing with no applied load (global and ball convergence tests)
 
 
 def line_search(residual_at):
@@ -415,12 +419,13 @@ def _chain(kg, row, dai_A1, dai_A2, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2):
 def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond):
     """Solve one ball's equilibrium for curvature-centre offset (A1, A2) (m); warm start from X[:, j].
 
-    geo = (r_i, r_o, K_series) with K_series the Hertz constant of both contacts in series.
+    geo = (r_i, r_o, K_series, f_ball) with K_series the Hertz constant of both contacts in series and
+    f_ball (N) the bearing-level load per ball of the convergence test (_ball_newton).
     Fills X[:, j] and cond (BE_*): ring load, friction couple, their derivatives w.r.t. A with the ball
     position condensed, contact loads, angles and the hybrid ratio; kg, w: work arrays of _ball_eval.
     Returns 0 (converged), 1 (unloaded ball), 2 (not converged).
     """
-    r_i, r_o, K_s = geo
+    r_i, r_o, K_s, f_ball = geo
     cen = qs[QS_CENTRIFUGAL] > 0.5 and omega != 0.0
     gyro = qs[QS_GYROSCOPIC] > 0.5 and omega != 0.0
     for k in range(BE_SIZE):
@@ -439,7 +444,14 @@ def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond):
     dm = qs[QS_DM]
     ball = (A1, A2, r_i, r_o, qs[QS_K_I], qs[QS_K_O], qs[QS_FI], omega, D / dm, dm, D, qs[QS_M_BALL],
             int(qs[QS_RACE]), cen, gyro, qs[QS_C_HYB])  # fmt: skip
-    status = _ball_newton(x, ball, F_c0, kg, w)
+    status = _ball_newton(x, ball, F_c0, f_ball, kg, w)
+    if status == 2 and (x[0] != 0.0 or x[1] != 0.0):
+        # a warm start far from this solution (the ball floated in its clearance at the last solve and sits
+        # where the damped steps crawl): once more from the cold start
+        x[0] = 0.0
+        x[1] = 0.0
+        _ball_start(A1, A2, x, r_i, r_o, qs[QS_K_I], qs[QS_K_O], F_c0)
+        status = _ball_newton(x, ball, F_c0, f_ball, kg, w)
     if not _condense(w, cond):
         return 2
     if w[EV_Q_I] <= 0.0 and w[EV_Q_O] <= 0.0:
@@ -492,11 +504,18 @@ def _static_ball(A1, A2, X, j, r_i, r_o, K_s, K_i, K_o, cond):
 def _ball_start(A1, A2, x, r_i, r_o, K_i, K_o, F_c0):
     """Start of the ball Newton in x (2, m): kept when it is a plausible ball position (warm start), else
     the static split of the approach plus the centrifugal outer deflection, or the ball resting on the
-    outer race under the centrifugal force F_c0 (N)."""
-    if x[1] > 0.0 and math.hypot(x[0], x[1]) > 0.5 * r_o:
-        return
+    outer race under the centrifugal force F_c0 (N).
+
+    Plausible means pressed into the outer race (|x| > r_o: a solved ball always is, by its centrifugal
+    force or by a loaded inner contact) and, when the races squeeze the ball (approach delta > 0), into
+    the inner race as well. A warm start that touches one race only (a ball that was unloaded at the last
+    solve and floats in its clearance) leaves Newton with the stiffness of one contact and a residual of
+    the other's sign: the damped steps crawl (tens of iterations of 1/32 steps), so such a start is
+    replaced."""
     L = math.hypot(A1, A2)
     delta = L - r_i - r_o
+    if x[1] > 0.0 and math.hypot(x[0], x[1]) > r_o and (delta <= 0.0 or math.hypot(A1 - x[0], A2 - x[1]) > r_i):
+        return
     if delta > 0.0:
         d_o = delta / (1.0 + (K_o / K_i) ** (2.0 / 3.0)) + (F_c0 / K_o) ** (2.0 / 3.0)
         x[0] = A1 / L * (r_o + d_o)
@@ -515,15 +534,20 @@ def _ball_residual_at(x, lam, step, args):
 
 
 @kernel
-def _ball_newton(x, ball, F_c0, kg, w):
+def _ball_newton(x, ball, F_c0, f_ball, kg, w):
     """Damped Newton on the ball position x (2, m, updated in place) from its start; w holds the
-    evaluation at the final x. Returns 0 (converged) or 2 (not converged: iteration cap or singular dr/dX)."""
+    evaluation at the final x. Returns 0 (converged) or 2 (not converged: iteration cap or singular dr/dX).
+
+    Converged when |r| <= _BALL_RTOL (Q_i + Q_o + |F_c0| + f_ball): f_ball (N) is the bearing-level load
+    per ball, so that a nearly unloaded ball (at low speed its loads are the tiny centrifugal force, and
+    rounding in its position alone gives a residual far above 1e-13 of them) is judged against the loads
+    that the global equilibrium balances, not against its own."""
     r_i, r_o, D = ball[2], ball[3], ball[10]  # layout of `ball`: _ball_eval
     _ball_eval(x[0], x[1], ball, kg, w)
     res = math.hypot(w[EV_R1], w[EV_R2])
     for _ in range(_BALL_MAXIT):
-        scale = w[EV_Q_I] + w[EV_Q_O] + abs(F_c0) + 1e-300
-        if res <= 1e-13 * scale:
+        scale = w[EV_Q_I] + w[EV_Q_O] + abs(F_c0) + f_ball + 1e-300
+        if res <= _BALL_RTOL * scale:
             return 0
         det = w[EV_DR1_DX1] * w[EV_DR2_DX2] - w[EV_DR1_DX2] * w[EV_DR2_DX1]
         if det == 0.0 or not math.isfinite(det):
@@ -538,7 +562,7 @@ def _ball_newton(x, ball, F_c0, kg, w):
             s2 *= cap / norm
         if norm < 1e-15 * D:
             return 0
-        lam, res = _ball_line_search(x, (s1, s2), res, 30, (ball, kg, w))
+        lam, res = _ball_line_search(x, (s1, s2), res, _BALL_TRIES, (ball, kg, w))
         x[0] += lam * s1
         x[1] += lam * s2
     return 2
@@ -592,9 +616,11 @@ def bearing_loads(d, qs, dPd, omega, X, F, K, balls):
 
 
 @kernel
-def ring_loads(d, qs, dPd, omega, X, F, K, contact, jacobian):
+def ring_loads(d, qs, dPd, omega, X, F, K, contact, jacobian, f_load=0.0):
     """Loads F (5, N and N.m) on the inner ring at displacements d (5, m and rad), and K = dF/dd (5x5)
     when `jacobian` (otherwise K is not touched); clearance change dPd (m), speed omega (rad/s).
+    f_load (N): the bearing-level load (largest applied load; at least _F_FLOOR), whose share per ball
+    sets the force scale of the ball convergence test.
 
     X (2, Z): ball positions, warm start and updated; contact (CS_SIZE, Z): per-ball contact state
     (filled), from which ball_outputs derives the per-ball outputs once the solve has converged.
@@ -603,7 +629,7 @@ def ring_loads(d, qs, dPd, omega, X, F, K, contact, jacobian):
     Z = int(qs[QS_Z])
     A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
     K_s = (qs[QS_K_I] ** (-2.0 / 3.0) + qs[QS_K_O] ** (-2.0 / 3.0)) ** -1.5
-    geo = (r_i, r_o, K_s)
+    geo = (r_i, r_o, K_s, max(f_load, _F_FLOOR) / Z)
     kg = np.empty((3, 4))
     w = np.empty(EV_SIZE)
     cond = np.empty(BE_SIZE)
@@ -777,18 +803,22 @@ def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
     step = np.empty(5)
     d_try = np.empty(5)
     X_try = X.copy()
-    status = np.zeros(1, np.int64)  # worst ball status of the last evaluation
-    loads = (F_applied, idx, n, scale, qs, dPd, omega, X, X_try, d_try, F, J, contact, jacobian, status)
-    ball_status = ring_loads(d, qs, dPd, omega, X, F, J, contact, jacobian)
-    res = _residual_norm(F_applied, F, idx, n, scale)
-    f_ref = 1e-3
+    # worst ball status of the last evaluation, bearing evaluations after the first (the work reported)
+    status = np.zeros(2, np.int64)
+    f_ref = _F_FLOOR
     for i in range(n):
         f_ref = max(f_ref, abs(F_applied[idx[i]]) / scale[idx[i]])
+    loads = (F_applied, idx, n, scale, qs, dPd, omega, X, X_try, d_try, F, J, contact, jacobian, status, f_ref)
+    ball_status = ring_loads(d, qs, dPd, omega, X, F, J, contact, jacobian, f_ref)
+    if n > 0 and _free_ring_start(F_applied, idx, n, A1_0, d, contact):
+        ball_status = ring_loads(d, qs, dPd, omega, X, F, J, contact, jacobian, f_ref)
+        status[1] += 1
+    res = _residual_norm(F_applied, F, idx, n, scale)
     for it in range(maxit + 1):
         if not math.isfinite(res):
-            return QS_NOT_FINITE, it, res
+            return QS_NOT_FINITE, status[1], res
         if res <= tol * max(f_ref, _mean_ball_load(contact)) or n == 0:
-            return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), it, res
+            return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), status[1], res
         if it == maxit:
             break
         kmax = 0.0
@@ -807,29 +837,59 @@ def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
         for a in range(n):
             big = max(big, abs(Rw[a]))
         if big < 1e-15 * A:
-            return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), it, res
+            return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), status[1], res
         f = 1.0 if big <= step_cap else step_cap / big
         for a in range(5):
             step[a] = 0.0
         for a in range(n):
             step[idx[a]] = f * Rw[a] / scale[idx[a]]
-        _, res = _loads_line_search(d, step, res, 40, loads)  # leaves d_try, X_try, F, J, contact at the step
+        _, res = _loads_line_search(d, step, res, _LOADS_TRIES, loads)  # d_try, X_try, F, J, contact: at the step
         for a in range(5):
             d[a] = d_try[a]
         X[:, :] = X_try
         ball_status = status[0]
-    return QS_NOT_CONVERGED, maxit, res
+    return QS_NOT_CONVERGED, status[1], res
+
+
+@kernel
+def _free_ring_start(F_applied, idx, n, A1_0, d, contact):
+    """Where the Newton on the n load-controlled DOFs idx[:n] starts when the ring is free in its
+    clearance (docs/quasistatic.md section 3); contact: the contact state at the warm start d.
+    Returns True when d was changed (the caller evaluates again).
+
+    Under zero load every position inside the clearance balances the load, and Newton would stop
+    wherever the warm start left it (a result that depends on the load history). With all applied loads
+    zero, the DOFs start (and, if no ball is squeezed there, stay) at the centre of the clearance: no
+    radial shift, no tilt, z = -A1_0 = -A sin(alpha0) for an angular-contact bearing (midway in its end
+    play), z = 0 for a deep-groove one. Under a load with no inner contact loaded at the warm start (the
+    ring still at that centre, say), they start instead at d = 0, where the balls touch at the free
+    contact angle: the flat plateau of a free ring is not crossed step by step."""
+    zero = True
+    for a in range(n):
+        zero = zero and F_applied[idx[a]] == 0.0
+    if not zero:
+        for j in range(contact.shape[1]):
+            if contact[CS_Q_I, j] > 0.0:
+                return False
+    changed = False
+    for a in range(n):
+        i = idx[a]
+        target = -A1_0 if (zero and i == 2) else 0.0
+        changed = changed or d[i] != target
+        d[i] = target
+    return changed
 
 
 @kernel
 def _loads_residual_at(d, lam, step, loads):
     """Evaluate the bearing at d + lam step into d_try, X_try (from X), F, J, contact and the status of
-    `loads` (_global_newton); returns the load residual norm (N)."""
-    F_applied, idx, n, scale, qs, dPd, omega, X, X_try, d_try, F, J, contact, jacobian, status = loads
+    `loads` (_global_newton), counting the evaluation; returns the load residual norm (N)."""
+    F_applied, idx, n, scale, qs, dPd, omega, X, X_try, d_try, F, J, contact, jacobian, status, f_ref = loads
     for a in range(5):
         d_try[a] = d[a] + lam * step[a]
     X_try[:, :] = X
-    status[0] = ring_loads(d_try, qs, dPd, omega, X_try, F, J, contact, jacobian)
+    status[0] = ring_loads(d_try, qs, dPd, omega, X_try, F, J, contact, jacobian, f_ref)
+    status[1] += 1
     return _residual_norm(F_applied, F, idx, n, scale)
 
 

@@ -18,7 +18,7 @@ from ..kernels.loaddist import gauss_legendre
 from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
 from .declarations import ANALYTIC_INPUTS, ANALYTIC_OUTPUTS
-from .variables import DM_N_LIMIT, InputError, check_oil_temperature, check_speed, pressure_warnings
+from .variables import DM_N_LIMIT, InputError, check_clearance, check_oil_temperature, check_speed, pressure_warnings
 
 GAUSS_NODES = 48  # quadrature points on the loaded arc (J_r(0.5) exact to < 1e-8)
 EPSILON_CAP = 1e6  # |epsilon| shown at most (a centred preloaded ring has delta_r = 0: eps is infinite)
@@ -31,7 +31,8 @@ class AnalyticModel:
     ----------
     bearing, lubricant : catalogue name or TOML path (bearing_fmu/params).
     scene : Scene or None (default analytic scene).
-    Pd : diametral clearance (m) overriding the parameter file, |Pd| <= 0.02 D.
+    Pd : diametral clearance (m) overriding the bearing file (None: the file's), within
+        -(f_i + f_o - 1) D <= Pd <= (f_i + f_o - 1) D (free contact angle up to 60 deg).
     """
 
     def __init__(self, bearing="6208", lubricant="guessasma_oil", scene=None, Pd=None):
@@ -45,9 +46,7 @@ class AnalyticModel:
                 f"deep-groove bearings (contact angle 0); use the quasi-static fidelity"
             )
         self.Pd = b.Pd if Pd is None else float(Pd)
-        limit = 0.02 * b.D
-        if not (math.isfinite(self.Pd) and abs(self.Pd) <= limit):
-            raise InputError(f"Pd = {Pd} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m (|Pd| <= 0.02 D)")
+        check_clearance(self.Pd, b, Pd is not None)
         self.omega_max = DM_N_LIMIT / (b.dm * 1e3) * 2.0 * math.pi / 60.0
         self.brg = self._pack()
         if min(self.brg[ak.B_SIGMA_I], self.brg[ak.B_SIGMA_O]) <= 0.0:

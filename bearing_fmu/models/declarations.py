@@ -77,9 +77,16 @@ ANALYTIC_PARAMETERS = (
         start="guessasma_oil",
     ),
     Variable(
+        "Pd_from_file",
+        "",
+        "true: diametral clearance from the bearing file; false: from the parameter Pd",
+        "boolean",
+        start=True,
+    ),
+    Variable(
         "Pd",
         "m",
-        "diametral clearance used by the model, overrides the bearing file value (negative = preload), |Pd| <= 0.02 D",
+        "diametral clearance used when Pd_from_file is false (negative = preload), |Pd| <= (f_i + f_o - 1) D",
         start=0.0,
     ),
 )
@@ -251,7 +258,11 @@ QUASI_STATIC_OUTPUTS = (
     ),
     Variable("n_loaded", "1", "number of balls loaded on both races", "integer", source=("out", ck.CO_N_LOADED)),
     Variable(
-        "iterations", "1", "Newton iterations of the last solve", "integer", source=("ball_set", bo.BS_ITERATIONS)
+        "iterations",
+        "1",
+        "work of the last solve: bearing evaluations after the first (Newton iterations plus cut line-search steps)",
+        "integer",
+        source=("ball_set", bo.BS_ITERATIONS),
     ),
 )
 
@@ -280,7 +291,7 @@ QUASI_STATIC_PARAMETERS = (
     Variable(
         "Pd",
         "m",
-        "diametral clearance used when Pd_from_file is false (negative = preload), |Pd| <= 0.02 D",
+        "diametral clearance used when Pd_from_file is false (negative = preload), |Pd| <= (f_i + f_o - 1) D",
         start=0.0,
     ),
     Variable(

@@ -39,6 +39,7 @@ from .variables import (
     DM_N_LIMIT,
     P_MAX_ERROR,
     InputError,
+    check_clearance,
     check_oil_temperature,
     check_speed,
     pressure_warnings,
@@ -67,7 +68,8 @@ class QuasiStaticModel:
     """Quasi-static 5-DOF bearing (Jones/Harris, docs/quasistatic.md) with film, capacitance and Houpert losses.
 
     bearing, lubricant: catalogue name or TOML path; scene: Scene with fidelity 'quasi_static';
-    Pd: diametral clearance (m) overriding the bearing file, |Pd| <= 0.02 D;
+    Pd: diametral clearance (m) overriding the bearing file (None: the file's), within
+        -(f_i + f_o - 1) D <= Pd <= (f_i + f_o - 1) D (free contact angle up to 60 deg);
     race_control: 'outer' | 'inner' | 'hybrid' (default: the scene's);
     hybrid_split: with race_control 'hybrid', how the gyroscopic moment is shared between the races:
         'spin_moments' (default, lam_i = 2C/(1+C)); 'outer', 'inner', 'equal' and 'controlling_race'
@@ -96,9 +98,7 @@ class QuasiStaticModel:
         self.lubricant = load_lubricant(lubricant)
         b = self.bearing
         self.Pd = b.Pd if Pd is None else float(Pd)
-        limit = 0.02 * b.D
-        if not (math.isfinite(self.Pd) and abs(self.Pd) <= limit):
-            raise InputError(f"Pd = {Pd} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m (|Pd| <= 0.02 D)")
+        check_clearance(self.Pd, b, Pd is not None)
         self.race_control = race_control or self.scene.race_control
         if self.race_control not in RACE_CONTROLS:
             raise InputError(f"race_control = {self.race_control!r}: allowed {list(RACE_CONTROLS)}")
@@ -346,6 +346,31 @@ class QuasiStaticModel:
             }[status]
             shown = ", ".join(f"{v.name} = {values[v.name]:.6g} {v.unit}" for v in self.inputs)
             raise SolverError(f"quasi-static equilibrium not found ({reason}, load residual {res:.3g} N) for {shown}")
+        if self.bearing.kind == "angular_contact":
+            self._check_thrust_side(d_start, X_start, values)
+
+    def _check_thrust_side(self, d_start, X_start, values):
+        """Refuse a solution that needs the shoulder a single-row angular-contact bearing does not have.
+
+        The kernel's grooves are full circles; the bearing's inner ring has its thrust shoulder on the side of
+        positive contact angles only (z = 0 where the balls touch it at the free angle). A loaded inner contact
+        at a negative angle would be a ball pressed on the missing shoulder: the load (a reverse thrust, or a
+        radial load or moment with too little thrust) must be carried by another bearing or a preload
+        (models.pair, or a second bearing FMU)."""
+        balls = self.balls
+        wrong = (balls[qk.BQ_Q_I] > 0.0) & (balls[qk.BQ_A_I] < 0.0)
+        if not wrong.any():
+            return
+        j = int(np.argmax(np.where(wrong, balls[qk.BQ_Q_I], -1.0)))
+        self.d[:] = d_start
+        self.X[:] = X_start
+        shown = ", ".join(f"{v.name} = {values[v.name]:.6g} {v.unit}" for v in self.inputs)
+        raise InputError(
+            f"bearing '{self.bearing.name}' is a single-row angular-contact bearing: it carries thrust in +z only, "
+            f"and these loads need its missing shoulder (ball {j} would carry {balls[qk.BQ_Q_I, j]:.4g} N at a "
+            f"contact angle of {math.degrees(balls[qk.BQ_A_I, j]):.3g} deg). Carry the reverse thrust with a "
+            f"second bearing or a preload (bearing_fmu.models.pair). Inputs: {shown}"
+        )
 
     def _collect(self, omega, values):
         """Fill self.values from the solver's and the contact kernel's arrays (declaration order)."""

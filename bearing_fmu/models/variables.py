@@ -1,4 +1,4 @@
-"""Input checks shared by the bearing fidelities: speed, oil temperature and contact-pressure limits.
+"""Input checks shared by the bearing fidelities: clearance, speed, oil temperature and contact-pressure limits.
 
 Every check raises InputError with a message naming the input, its value and the allowed range.
 """
@@ -44,3 +44,18 @@ def pressure_warnings(p_max, loads):
             f"(ISO 76 static limit): permanent raceway deformation expected"
         ]
     return []
+
+
+def check_clearance(Pd, bearing, given):
+    """Raise InputError unless the diametral clearance Pd (m) lies within the geometric limits of the
+    bearing (params.clearance_limits: -A <= P_d <= A, A = (f_i + f_o - 1) D, i.e. free contact angle up to
+    60 deg). given: True when Pd was set by the user, False when it was read from the bearing file."""
+    from ..params import clearance_limits
+
+    low, high = clearance_limits(bearing.D, bearing.f_i, bearing.f_o)
+    if not (math.isfinite(Pd) and low <= Pd <= high):
+        origin = "set" if given else f"read from {bearing.path}"
+        raise InputError(
+            f"Pd = {Pd} m ({origin}) is outside the allowed range [{low:.4g}, {high:.4g}] m "
+            f"(|Pd| <= (f_i + f_o - 1) D: free contact angle up to 60 deg)"
+        )

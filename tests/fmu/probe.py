@@ -99,6 +99,7 @@ def main():
             ("F_x", -float("inf")),
             ("F_z", 1e8),
             ("dPd_thermal", 1.0),
+            ("F_z", -500.0),  # reverse thrust on the single-row angular-contact B7214C
         ]
         for n, (name, bad) in enumerate(cases):
             fmu.setReal([vr[k] for k in good], list(good.values()))

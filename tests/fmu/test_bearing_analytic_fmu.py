@@ -46,7 +46,7 @@ def test_model_description_units_and_descriptions(analytic_fmu):
     md = read_model_description(str(analytic_fmu))
     assert md.coSimulation.canGetAndSetFMUstate and md.coSimulation.canSerializeFMUstate
     names = {v.name for v in md.modelVariables}
-    assert set(OUTPUTS) <= names and {"omega", "F_y", "T_oil", "bearing", "lubricant", "Pd"} <= names
+    assert set(OUTPUTS) <= names and {"omega", "F_y", "T_oil", "bearing", "lubricant", "Pd_from_file", "Pd"} <= names
     units = {u.name for u in md.unitDefinitions}
     for v in md.modelVariables:
         assert v.description, v.name
@@ -81,7 +81,7 @@ def test_simulate_fmu_equals_python_model(analytic_fmu):
 
 def test_hand_written_loop_equals_python_model(analytic_fmu):
     model = AnalyticModel("6208", "guessasma_oil", Pd=5e-6)
-    with opened(analytic_fmu, "loop", {"Pd": 5e-6}) as (fmu, vr):
+    with opened(analytic_fmu, "loop", {"Pd_from_file": False, "Pd": 5e-6}) as (fmu, vr):
         real_out = [n for n in OUTPUTS if n not in ("regime", "n_loaded")]
         for n, (w, F, T) in enumerate(
             [
@@ -173,3 +173,31 @@ def test_many_instances_in_one_process(analytic_fmu):
             fmu.doStep(0.0, 1.0)
         lambdas = [fmu.getReal([vr["Lambda_outer"]])[0] for fmu, vr in group]
     assert lambdas[0] < lambdas[1] < lambdas[2]  # each instance keeps its own inputs
+
+
+def test_same_clearance_and_q_max_in_both_fmus_and_models(analytic_fmu, bearing_fmu):
+    """One clearance rule: a deep-groove bearing with clearance (6306, P_d = 12.5 um in its file) under
+    3 kN radial at rest gives through BearingAnalytic.fmu and Bearing.fmu, with their default parameters,
+    exactly the Q_max of the Python models, which both use the file's clearance. The two fidelities agree
+    within 2 %: the analytic one integrates a continuous ball distribution (docs/decisions.md), the
+    quasi-static one sums the 8 discrete balls (1.1 % apart here; the FMU's old Pd = 0 override gave
+    4.5 %)."""
+    from bearing_fmu.build import SCENES_DIR
+    from bearing_fmu.models.quasi_static import QuasiStaticModel
+    from bearing_fmu.scene import Scene
+
+    analytic = AnalyticModel("6306", "guessasma_oil")
+    quasi = QuasiStaticModel("6306", scene=Scene.from_toml(SCENES_DIR / "quasi_static.toml"))
+    assert analytic.Pd == quasi.Pd == analytic.bearing.Pd > 0.0
+    q_analytic = analytic.evaluate(0.0, 3000.0, 313.15)["Q_max_inner"]
+    quasi.evaluate()  # the FMU's history: its defaults at construction
+    q_quasi = quasi.evaluate(F_y=3000.0)["Q_max_inner"]
+    with opened(analytic_fmu, "a", {"bearing": "6306", "lubricant": "guessasma_oil"}) as (fmu, vr):
+        fmu.setReal([vr["F_y"]], [3000.0])
+        fmu.doStep(0.0, 0.1)
+        assert fmu.getReal([vr["Q_max_inner"]])[0] == q_analytic
+    with opened(bearing_fmu, "q", {"bearing": "6306"}) as (fmu, vr):
+        fmu.setReal([vr["F_y"]], [3000.0])
+        fmu.doStep(0.0, 0.1)
+        assert fmu.getReal([vr["Q_max_inner"]])[0] == q_quasi
+    assert abs(q_analytic / q_quasi - 1.0) <= 0.02

@@ -139,11 +139,26 @@ def test_simulate_fmu_equals_python_model(bearing_fmu):
         output=["z", "x", "theta_y", "torque", "K[3,3]", "K[1,5]", "alpha_outer", "C_bearing"],
     )
     model = QuasiStaticModel(scene=scene_of("quasi_static.toml"))
+    model.evaluate()  # the FMU's history: its defaults (zero load: the clearance centre) at construction
     for row in res[1:]:
         n = int(round(row["time"] / 0.1)) - 1  # outputs at t_n from the inputs held at t_(n-1)
         ref = model.evaluate(omega=1047.0 * t[n], F_z=800.0 + 500.0 * t[n], F_x=100.0 * t[n])
         for name in res.dtype.names[1:]:
             assert close(float(row[name]), ref[name], rel=1e-8), (row["time"], name, row[name], ref[name])
+
+
+def test_low_speeds_and_run_up_from_rest_step_without_refusal(bearing_fmu):
+    """Through the FMU (fmpy raises on a refused step): the B7214C at low speeds 0.1-600 rpm under
+    no load, 5 kN radial + 500 N axial and 5 kN + 2 kN radial + 2 kN axial + 60 N.m, then the first 200 ms of a run-up
+    from rest to 10 000 rpm in 1 s at 1 ms steps under 5 kN + 500 N: every step accepted, outputs equal
+    to the Python model's (the steps that were refused before the ball test was scaled to the bearing)."""
+    rpm = 2.0 * np.pi / 60.0
+    loads = ({}, dict(F_x=5000.0, F_z=500.0), dict(F_x=5000.0, F_y=2000.0, F_z=2000.0, M_x=60.0))
+    steps = [dict(omega=n * rpm, **load) for n in (0.1, 1.0, 10.0, 79.0, 116.0, 537.0, 600.0) for load in loads]
+    steps += [dict(omega=10000.0 * rpm * k / 1000, F_x=5000.0, F_z=500.0) for k in range(201)]
+    model = QuasiStaticModel(scene=scene_of("quasi_static.toml"))
+    ref = assert_replay_equals_model(bearing_fmu, model, steps)
+    assert ref["n_loaded"] > 0
 
 
 def test_state_round_trip_is_exact(bearing_fmu):
@@ -178,6 +193,7 @@ def test_bad_inputs_are_reported_and_host_survives(bearing_fmu):
     assert any("T_oil = 0.0 K" in t and "[233.15, 473.15] K" in t for t in texts)
     assert any("F_z = inf" in t for t in texts)
     assert any("material limit" in t for t in texts)
+    assert any("F_z = -500" in t and "missing shoulder" in t for t in texts)  # reported, not computed
     assert any("dPd_thermal = 1.0 m" in t for t in texts)
 
 

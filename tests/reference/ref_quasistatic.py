@@ -46,7 +46,9 @@ from tests.reference import ref_hertz
 # tolerances of the nested solves
 # ---------------------------------------------------------------------------------------------------
 BALL_XTOL = 1e-14  # scipy 'hybr' relative step tolerance on (delta_o [um], a_o [mrad])
-BALL_RTOL = 1e-10  # accepted ball residual, relative to the ball's largest contact load
+BALL_RTOL = 1e-10  # accepted ball residual, relative to the ball's largest load or the load floor per ball
+LOAD_FLOOR = 1e-3  # N, shared by the Z balls: the scale of a ball whose own loads are the tiny centrifugal
+# force of a low speed (its residual cannot fall below 1e-10 of those by rounding in its position alone)
 BEARING_XTOL = 1e-13  # scipy 'hybr' relative step tolerance on (x, y, z [um], theta [mrad])
 BEARING_RTOL = 1e-9  # accepted bearing residual, relative to the load scale
 UM = 1e-6  # m per scaled length unit
@@ -374,7 +376,8 @@ def ball_state(A1, A2, p, guess=None, g=None):
         for method, options in (("hybr", dict(xtol=BALL_XTOL)), ("lm", dict(xtol=BALL_XTOL, ftol=1e-15))):
             sol = root(residual, u0, method=method, options=options)
             s = _state(*position(sol.x), A1, A2, p, g)
-            err = max(abs(s["res_axial"]), abs(s["res_radial"])) / max(s["Q_i"], s["Q_o"], s["F_c"], 1e-300)
+            load = max(s["Q_i"], s["Q_o"], s["F_c"], LOAD_FLOOR / g["Z"])
+            err = max(abs(s["res_axial"]), abs(s["res_radial"])) / load
             if best is None or err < best[0]:
                 best = (err, s)
             if err <= BALL_RTOL:
@@ -459,11 +462,26 @@ def _scales(F_applied, p):
     return d_scale, f_scale
 
 
+def zero_load_position(p):
+    """The ring's position at zero load when it is free in its clearance (docs/quasistatic.md section 3):
+    the centre of the clearance, i.e. no radial shift, no tilt, and axially midway between the two
+    shoulders' contacts, where the curvature centres of a ball line up radially: z = -A sin(alpha0) for
+    an angular-contact bearing (its z = 0 is where the balls touch at alpha0), 0 for a deep-groove one."""
+    return np.array([0.0, 0.0, -geometry(p)["A1_0"], 0.0, 0.0])
+
+
 def solve_loads(F_applied, p, d0=None):
     """Inner-ring displacement d (5,) carrying F_applied = (F_x, F_y, F_z, M_x, M_y): scipy root
-    ('hybr', then 'lm' if needed) on d in um / mrad, residual scaled by the load scale."""
+    ('hybr', then 'lm' if needed) on d in um / mrad, residual scaled by the load scale. Under zero load
+    the root is searched from zero_load_position, which is the answer itself when no inner contact is
+    loaded there (any position inside the clearance balances zero load; this one is documented)."""
     F_applied = np.asarray(F_applied, dtype=float)
     d_scale, f_scale = _scales(F_applied, p)
+    if not F_applied.any():
+        centre = zero_load_position(p)
+        if all(b["Q_i"] == 0.0 for b in bearing_loads(centre, p)[1]):
+            return centre
+        d0 = centre
     start = initial_displacement(F_applied, p) if d0 is None else np.asarray(d0, dtype=float)
 
     def residual(u):
@@ -606,5 +624,6 @@ TWINS = {
     "ring_loads": bearing_loads,
     "bearing_loads": bearing_loads,
     "solve_quasistatic": solve_loads,
+    "_free_ring_start": zero_load_position,
     "_solve_small": solve_small,
 }

@@ -84,7 +84,8 @@ def test_ball_equilibrium_matches_twin(label, p, d):
     inner_free = 0  # balls off the inner race (held on the outer one by the centrifugal force, or free)
     for j, psi in enumerate(g["psi"]):
         A1, A2 = ref.groove_centre_offset(d, psi, g)
-        status = qk.ball_equilibrium(A1, A2, X, j, qs, (g["r_i"], g["r_o"], K_s), p["omega"], kg, w, cond)
+        geo = (g["r_i"], g["r_o"], K_s, qk._F_FLOOR / g["Z"])  # the strictest ball test: no applied load
+        status = qk.ball_equilibrium(A1, A2, X, j, qs, geo, p["omega"], kg, w, cond)
         twin = ref.ball_state(A1, A2, p, g=g)
         q_scale = max(twin["Q_i"], twin["Q_o"], 1e-3)
         assert status in (0, 1)
