@@ -1,6 +1,6 @@
 """DEM error against run time: time step dt and tribology refresh interval N against a fine reference.
 
-Operating point: the seeds' 6208, P_d = 0, F_r = 3 kN, 500 rad/s, guessasma_oil. One steady state (start-up
+Operating point: the 6208 of Guessasma & Machado (2018), P_d = 0, F_r = 3 kN, 500 rad/s, guessasma_oil. One steady state (start-up
 of the validation run to 30 ms at the default settings) is the start of every run; each run advances
 RUN_TIME with one output interval per ms and averages the outputs of the last AVERAGE_OVER intervals:
 Q_max_outer (instantaneous at the interval ends), h_min_outer (the thinnest loaded outer film, i.e. near

@@ -1,4 +1,4 @@
-"""Figures of the DEM like the seed papers' (Guessasma & Machado 2018 Fig. 8-12; Farah et al. 2020 Fig. 8):
+"""Figures of the DEM like the papers' (Guessasma & Machado 2018 Fig. 8-12; Farah et al. 2020 Fig. 8):
 the 6208, P_d = 0, F_r = 3 kN, guessasma_oil.
 
 (a) ball spin and cage speed against time through the start-up (5 ms ramp to 500 rad/s);

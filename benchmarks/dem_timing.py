@@ -2,7 +2,7 @@
 product: <= 1.2 us per step with the multirate tribology, <= 2 us with every per-contact quantity every step,
 1 ms simulated <= 0.5 ms wall at the default time step), with a profile of where the time goes.
 
-Operating point: the seeds' 6208, P_d = 0, F_r = 3 kN, 500 rad/s, guessasma_oil, steady rolling after the
+Operating point: the 6208 of Guessasma & Machado (2018), P_d = 0, F_r = 3 kN, 500 rad/s, guessasma_oil, steady rolling after the
 start-up of the validation (2 ms at rest, 5 ms ramp, run to 30 ms). Each figure is the median over
 REPEATS calls of advance() of STEPS steps each: one Python call per interval, so the per-call overhead
 (input checks, outputs) is spread over STEPS steps. The machine is shared by several users: the CPU

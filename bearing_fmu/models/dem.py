@@ -47,9 +47,10 @@ from .variables import DM_N_LIMIT, P_MAX_ERROR, InputError, check_oil_temperatur
 CAGE_E = 3.3e9
 CAGE_NU = 0.41
 CAGE_RHO = 1140.0  # kg/m^3, typical PA66 (estimated)
-CAGE_GAP_OVER_D = 0.0026  # pocket play of an estimated cage ball: the seeds' 6208 has 0.033 mm for D = 12.6 mm
+# pocket play of an estimated cage ball: the 6208 of Guessasma & Machado (2018) has 0.033 mm for D = 12.6 mm
+CAGE_GAP_OVER_D = 0.0026
 ALPHA_E = 0.08  # s/m, hysteretic damping constant of steel (Guessasma 2018 eq. 4)
-KT_RATIO = 2.0 / 3.0  # tangential / normal stiffness, lower end of the seeds' [2/3, 1]
+KT_RATIO = 2.0 / 3.0  # tangential / normal stiffness, lower end of the papers' [2/3, 1]
 V_REG = 1e-3  # m/s, speed below which the resistances' directions are regularised
 SAFETY = 0.5  # default time step over the stability limit of the stiffest pair (docs/reports/dem_error.md)
 # consecutive slipping reversals of one spring that count as chatter: sustained chatter (6208 at 3 kN,

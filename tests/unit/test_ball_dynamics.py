@@ -1,6 +1,6 @@
 """kernels.ball_dynamics against its twin tests/reference/ref_ball_dynamics.py, plus contact-geometry checks.
 
-Kernel vs twin: both start from one state taken in the middle of a start-up of the seeds' 6208
+Kernel vs twin: both start from one state taken in the middle of a start-up of the 6208 of Guessasma & Machado (2018)
 (3 kN radial, speed ramping through 300 rad/s, so springs are loaded, some contacts slip, the
 films are in the mixed regime) and run STEPS steps of 3 us with the tribology refreshed every 10 steps.
 Tolerance RTOL = 1e-8 on every state array, relative to each array's scale: the two differ only in
@@ -159,7 +159,7 @@ def test_static_load_matches_hertz_ball_at_psi_0():
 
 def test_critical_time_step_of_the_squeezed_ball():
     """Ball between two races at 1457 N: 2/omega with omega^2 = 3.5 k_t/m (tangential, the stiffer) where
-    k_t = (2/3)(K_i^(2/3) + K_o^(2/3)) Q^(1/3); about 6 us for the 6208 (the seeds run at 1 us)."""
+    k_t = (2/3)(K_i^(2/3) + K_o^(2/3)) Q^(1/3); about 6 us for the 6208 (the papers run at 1 us)."""
     model = DemModel("6208", "guessasma_oil")
     p = model.par
     Z = model.bearing.Z

@@ -7,7 +7,7 @@ analytic solution; eps = 0.685 / 0.5 / 0.40 for P_d = -12.6 / 0 / +12.6 um at F_
 Operating point: P_d = 0, F_r = 3 kN, eta = 0.04 Pa.s, xi = 2.3e-8 1/Pa, sigma = 1.25 x 0.3 um,
 Hamrock-Dowson film; default time step (half the stability limit of the stiffest pair).
 
-Protocol (the seeds' start-up): 2 ms at rest under the load (the ring settles), speed ramp over 5 ms,
+Protocol (the papers' start-up): 2 ms at rest under the load (the ring settles), speed ramp over 5 ms,
 then steady running; steady values are taken after 30 ms, as means over 10 ms.
 """
 

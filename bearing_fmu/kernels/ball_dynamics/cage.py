@@ -1,13 +1,14 @@
-"""The seeds' cage: Z PA66 cage balls between the steel balls, guided on the pitch circle.
+"""The cage of Guessasma & Machado (2018) and Farah et al. (2020): Z PA66 cage balls between the steel
+balls, guided on the pitch circle.
 
 Guessasma & Machado (2018) and Farah et al. (2020) replace the cage by Z small PA66 balls (radius
 R_z) that sit between the steel balls and run between two coaxial toruses. Their contacts are
 frictionless and critically damped; the steel ball - cage ball law is Hertz sphere-sphere,
 Q = (4/3) E* sqrt(R_eq) delta^1.5 with 1/E* = (1 - nu^2)/E + (1 - nu_c^2)/E_c and
-R_eq = R_b R_z/(R_b + R_z) (Johnson 1985, Contact Mechanics, eq. 4.22; the seeds' two printed
+R_eq = R_b R_z/(R_b + R_z) (Johnson 1985, Contact Mechanics, eq. 4.22; the two papers' printed
 variants disagree with each other and with Hertz, so Hertz is used).
 
-The seeds give neither the toruses' dimensions nor their contact law. Here the two toruses are the
+The papers give neither the toruses' dimensions nor their contact law. Here the two toruses are the
 walls of the toroidal channel they bound: a cage ball touches them when its centre leaves the
 channel's centre circle (the balls' pitch circle at rest) by more than a radial play; the approach
 is that distance minus the play and the normal points from the circle to the cage-ball centre.

@@ -103,7 +103,7 @@ P_K_GUIDE = 37  # Hertz constant cage ball - guide channel (N/m^1.5)
 P_R_GUIDE = 38  # radius of the guide channel's centre circle (m)
 P_Z_GUIDE = 39  # its axial position (m)
 P_GUIDE_GAP = 40  # radial play of a cage ball in the channel (m)
-P_ZETA_CAGE = 41  # damping ratio of the cage contacts (-), 1 = critical (the seeds)
+P_ZETA_CAGE = 41  # damping ratio of the cage contacts (-), 1 = critical (Guessasma & Machado 2018)
 P_M_RING = 42  # inner-ring mass (kg)
 P_REFRESH = 43  # tribology refresh interval (steps)
 P_DELTA_LIM_I = 44  # physical penetration limit of a ball-race contact (m), inner
