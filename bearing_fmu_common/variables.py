@@ -5,6 +5,14 @@ the scene option that enables it, where its value comes from, its start value). 
 their output arrays in declaration order, the FMU classes register their FMI variables from the same
 declarations and the variable lists of the documentation (fmus/<Name>.md, README) are generated from
 them, so a Python model, its FMU and their documentation cannot drift apart.
+
+A Real input or parameter declares its allowed range once (`min`, `max`, and `limits`: why these
+bounds): the FMU writes them as min/max into modelDescription.xml and the models refuse anything
+outside them with `Variable.check`, so the declared range and the check are the same numbers. Where a
+model's limit depends on another parameter (the d_m n speed limit, the material load limit, the groove
+clearance of the bearing), the declaration holds the widest static bound and the model narrows it at
+run time (`check(value, low, high, why)`); the message then states the narrower range. A String
+parameter may list its allowed values (`choices`).
 """
 
 from dataclasses import dataclass
@@ -26,12 +34,45 @@ class Variable:
     drives: tuple = ()  # scene drives in which it exists; () = every drive
     source: tuple = ()  # (array, index): the value is array[index] of the facade; () = computed by the facade
     start: object = 0.0  # start value of an input or parameter; None = the scene's attribute of that name
+    min: float = None  # allowed range of a Real input or parameter (FMI min/max); None = not declared
+    max: float = None
+    limits: str = ""  # why these bounds (shown in the documentation and in refusals)
+    choices: tuple = ()  # allowed values of a String parameter; () = any (e.g. a catalogue name or path)
 
     def enabled(self, scene):
         """True if this variable exists in `scene` (its option is on and the scene's drive is listed)."""
         if self.option and not getattr(scene, self.option):
             return False
         return not self.drives or getattr(scene, "drive", None) in self.drives
+
+    def range_text(self, low=None, high=None):
+        """The allowed range as text, e.g. '[-1e+05, 100000] rad/s' (low/high: narrower run-time bounds)."""
+        low = self.min if low is None else max(low, self.min)
+        high = self.max if high is None else min(high, self.max)
+        unit = "" if self.unit in ("", "1") else f" {self.unit}"
+        return f"[{low:.6g}, {high:.6g}]{unit}"
+
+    def check(self, value, low=None, high=None, why=""):
+        """Raise InputError unless value is a finite number within the declared range [min, max], narrowed
+        to [low, high] when given (a limit that depends on other parameters; `why` says which). The
+        message names the variable, its value and the allowed range."""
+        lo = self.min if low is None else max(low, self.min)
+        hi = self.max if high is None else min(high, self.max)
+        if lo <= value <= hi:  # False for NaN
+            return
+        reason = why or self.limits
+        unit = "" if self.unit in ("", "1") else f" {self.unit}"
+        raise InputError(
+            f"{self.name} = {value}{unit} is outside the allowed range {self.range_text(low, high)}"
+            + (f" ({reason})" if reason else "")
+        )
+
+    def check_choice(self, value):
+        """Raise InputError unless the String value is one of `choices` (any non-empty value without them)."""
+        if (value in self.choices) if self.choices else bool(value):
+            return
+        allowed = ", ".join(repr(c) for c in self.choices) if self.choices else "a non-empty name or path"
+        raise InputError(f"{self.name} = {value!r} is not allowed: allowed values {allowed}")
 
     def start_in(self, scene):
         """Start value in `scene` (outputs: None, they start from the model at the start inputs)."""

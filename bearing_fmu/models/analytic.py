@@ -18,8 +18,18 @@ from ..kernels.loaddist import gauss_legendre
 from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
 from .declarations import ANALYTIC_INPUTS, ANALYTIC_OUTPUTS
-from .variables import DM_N_LIMIT, InputError, check_clearance, check_oil_temperature, check_speed, pressure_warnings
+from .variables import (
+    DM_N_LIMIT,
+    MATERIAL_LIMIT,
+    InputError,
+    check_clearance,
+    check_oil_temperature,
+    check_speed,
+    material_load_limit,
+    pressure_warnings,
+)
 
+F_Y = ANALYTIC_INPUTS[1]
 GAUSS_NODES = 48  # quadrature points on the loaded arc (J_r(0.5) exact to < 1e-8)
 EPSILON_CAP = 1e6  # |epsilon| shown at most (a centred preloaded ring has delta_r = 0: eps is infinite)
 
@@ -54,6 +64,14 @@ class AnalyticModel:
                 f"bearing '{b.name}': composite roughness sigma must be > 0 (Lambda = h_min/sigma); "
                 f"give surface.inner_race_Ra / outer_race_Ra / ball_Ra > 0 m"
             )
+        contacts = [
+            [self.brg[k] for k in keys]
+            for keys in (
+                (ak.B_RX_I, ak.B_RY_I, ak.B_K_I, ak.B_EE_I, ak.B_KK_I),
+                (ak.B_RX_O, ak.B_RY_O, ak.B_K_O, ak.B_EE_O, ak.B_KK_O),
+            )
+        ]
+        self.load_limit = material_load_limit(b.Z, self.brg[ak.B_E_RED], contacts)
         self.nodes, self.weights = gauss_legendre(GAUSS_NODES)
         self._out = np.zeros(ak.O_SIZE)
         self.ball = np.zeros((8, b.Z))
@@ -102,8 +120,13 @@ class AnalyticModel:
     def check_inputs(self, omega, F_y, T_oil):
         """Raise InputError naming the first input outside its allowed range."""
         check_speed(omega, self.omega_max)
-        if not math.isfinite(F_y):
-            raise InputError(f"F_y = {F_y} N is not a finite number")
+        limit = self.load_limit
+        F_Y.check(
+            F_y,
+            -limit,
+            limit,
+            MATERIAL_LIMIT,
+        )
         check_oil_temperature(T_oil)
 
     def evaluate(self, omega, F_y, T_oil):

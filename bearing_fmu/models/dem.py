@@ -39,9 +39,9 @@ from ..kernels.hertz import (
 from ..kernels.torque import ALPHA_HYSTERESIS_STEEL
 from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
-from .declarations import DEM_INPUTS, DEM_OUTPUTS
+from .declarations import DEM_DT_MAX, DEM_INPUTS, DEM_OUTPUTS, DEM_REFRESH_MAX, PD
 from .declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
-from .variables import DM_N_LIMIT, P_MAX_ERROR, InputError, check_oil_temperature, check_speed
+from .variables import DM_N_LIMIT, MATERIAL_LIMIT, P_MAX_ERROR, InputError, check_oil_temperature, check_speed
 
 # PA66 cage balls when the bearing file has no [material.cage] (Farah 2020: E_c = 3.3 GPa, nu_c = 0.41)
 CAGE_E = 3.3e9
@@ -67,6 +67,10 @@ STATUS_WORDS = {
     s.STATUS_ENERGY: "the kinetic energy grew beyond the bound of the inputs (energy growth without input)",
     s.STATUS_CHATTER: "a tangential spring chattered against its Coulomb limit (slip direction reversing every step)",
 }
+
+
+_LOADS = DEM_INPUTS[1:4]  # F_x, F_y, F_z
+_DPD_THERMAL = DEM_INPUTS[5]
 
 
 class DemUnstableError(InputError):
@@ -125,17 +129,19 @@ class DemModel:
         self.bearing = b = load_bearing(bearing)
         self.lubricant = load_lubricant(lubricant)
         self.Pd = b.Pd if Pd is None else float(Pd)
-        limit = 0.02 * b.D
+        limit = min(0.02 * b.D, PD.max) if Pd is not None else 0.02 * b.D  # the parameter: also its declared range
         if not (math.isfinite(self.Pd) and abs(self.Pd) <= limit):
             raise InputError(f"Pd = {Pd} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m (|Pd| <= 0.02 D)")
-        if dt is not None and not (math.isfinite(dt) and 0.0 < dt <= 1e-4):
-            raise InputError(f"dt = {dt} s is outside the allowed range ]0, 1e-4] s")
+        if dt is not None and not (math.isfinite(dt) and 0.0 < dt <= DEM_DT_MAX):
+            raise InputError(f"dt = {dt} s is outside the allowed range ]0, {DEM_DT_MAX:g}] s")
         if refresh is not None and not (float(refresh) == int(refresh) and 1 <= int(refresh) <= 100000):
             raise InputError(f"refresh = {refresh} steps is outside the allowed range [1, 100000] (a whole number)")
         if not (math.isfinite(safety) and 0.0 < safety <= 1.0):
             raise InputError(f"safety = {safety} is outside the allowed range ]0, 1]")
-        if not (math.isfinite(refresh_interval) and 0.0 < refresh_interval <= 1e-3):
-            raise InputError(f"refresh_interval = {refresh_interval} s is outside the allowed range ]0, 1e-3] s")
+        if not (math.isfinite(refresh_interval) and 0.0 < refresh_interval <= DEM_REFRESH_MAX):
+            raise InputError(
+                f"refresh_interval = {refresh_interval} s is outside the allowed range ]0, {DEM_REFRESH_MAX:g}] s"
+            )
         self.safety = float(safety)
         self.refresh_interval = float(refresh_interval)
         if not (math.isfinite(kt_ratio) and 0.1 <= kt_ratio <= 1.5):
@@ -351,17 +357,11 @@ class DemModel:
         check_speed(omega, self.omega_max)
         check_oil_temperature(T_oil)
         limit = 0.02 * self.bearing.D
-        if not (math.isfinite(dPd_thermal) and abs(dPd_thermal) <= limit):
-            raise InputError(
-                f"dPd_thermal = {dPd_thermal} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m"
-            )
+        _DPD_THERMAL.check(dPd_thermal, -limit, limit, "|dPd_thermal| <= 0.02 D")
         load_limit = self.load_limit
-        for name, value in (("F_x", F_x), ("F_y", F_y), ("F_z", F_z)):
-            if not (math.isfinite(value) and abs(value) <= load_limit):
-                raise InputError(
-                    f"{name} = {value} N is outside the allowed range [{-load_limit:.4g}, {load_limit:.4g}] N "
-                    f"(beyond it even Z equally loaded balls pass p_max = {P_MAX_ERROR / 1e9:.1f} GPa)"
-                )
+        why = MATERIAL_LIMIT
+        for var, value in zip(_LOADS, (F_x, F_y, F_z)):
+            var.check(value, -load_limit, load_limit, why)
 
     def _load_limit(self):
         """Largest admissible load (N): Z balls at the contact load of the penetration limit (p_max = 6 GPa);

@@ -27,21 +27,23 @@ from ..kernels.torque import ALPHA_HYSTERESIS_STEEL, TL_SIZE
 from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, RACE_CONTROLS, Scene
 from .declarations import (
+    DISPLACEMENT_LIMIT,
     DOF_NAMES,
-    DOF_UNITS,
     DRIVE_CONTROL,
     LOAD_NAMES,
-    LOAD_UNITS,
     QUASI_STATIC_INPUTS,
     QUASI_STATIC_OUTPUTS,
+    QUASI_STATIC_PARAMETERS,
 )
 from .variables import (
     DM_N_LIMIT,
-    P_MAX_ERROR,
+    MATERIAL_LIMIT,
+    TILT_LIMIT,
     InputError,
     check_clearance,
     check_oil_temperature,
     check_speed,
+    material_load_limit,
     pressure_warnings,
 )
 
@@ -55,9 +57,7 @@ HYBRID_SPLITS = {
     "equal": qk.RACE_HYBRID_EQUAL_SPLIT,
     "controlling_race": qk.RACE_HYBRID_CONTROLLING,
 }
-# admissible imposed displacements: a fraction of the groove clearance A = (f_i + f_o - 1) D
-DISPLACEMENT_LIMIT = 0.5  # x A (m); beyond this the Hertz loads pass any material limit
-TILT_LIMIT = 0.01  # rad
+_PARAMETERS = {v.name: v for v in QUASI_STATIC_PARAMETERS}
 
 
 class SolverError(InputError):
@@ -99,9 +99,9 @@ class QuasiStaticModel:
         b = self.bearing
         self.Pd = b.Pd if Pd is None else float(Pd)
         check_clearance(self.Pd, b, Pd is not None)
-        self.race_control = race_control or self.scene.race_control
+        self.race_control = self.scene.race_control if race_control is None else race_control
         if self.race_control not in RACE_CONTROLS:
-            raise InputError(f"race_control = {self.race_control!r}: allowed {list(RACE_CONTROLS)}")
+            raise InputError(f"race_control = {self.race_control!r} is not allowed: allowed {list(RACE_CONTROLS)}")
         if hybrid_split not in HYBRID_SPLITS:
             raise InputError(f"hybrid_split = {hybrid_split!r}: allowed {list(HYBRID_SPLITS)}")
         self.hybrid_split = hybrid_split
@@ -129,11 +129,7 @@ class QuasiStaticModel:
                 f"F_preload = {F_preload} N needs drive = 'fixed_axial' (scene '{self.scene.name}' "
                 f"has drive {self.scene.drive!r})"
             )
-        if not (math.isfinite(self.F_preload) and 0.0 <= self.F_preload < self.load_limit):
-            raise InputError(
-                f"F_preload = {F_preload} N is outside the allowed range [0, {self.load_limit:.4g}) N "
-                f"(the upper bound is the material limit)"
-            )
+        _PARAMETERS["F_preload"].check(self.F_preload, 0.0, self.load_limit, "the upper bound is the material limit")
         self.z0 = self.axial_approach(self.F_preload) if self.F_preload else 0.0
         self.inputs = select(QUASI_STATIC_INPUTS, self.scene)
         self.input_names = tuple(v.name for v in self.inputs)
@@ -149,6 +145,27 @@ class QuasiStaticModel:
         self._summary = np.zeros(bo.BS_SIZE)
         self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
         self._load_controlled = tuple(bool(c) for c in self.control)  # per DOF, as plain booleans
+        self._checks = self._input_checks()
+
+    def _input_checks(self):
+        """(declaration, low, high, why) of each load, displacement and thermal input: the declared range
+        narrowed by this bearing's limits (material load limit, groove clearance, 0.02 D)."""
+        by_name = {v.name: v for v in self.inputs}
+        out = []
+        for i, name in enumerate(LOAD_NAMES):
+            if name in by_name:
+                limit = self.load_limit * (1.0 if i < 3 else 0.5 * self.bearing.dm)
+                why = MATERIAL_LIMIT
+                out.append((by_name[name], -limit, limit, why))
+        for var in self.inputs:
+            if var.unit in ("m", "rad") and var.name not in ("dPd_thermal", "dz_thermal"):  # imposed DOFs
+                tilt = var.unit == "rad"
+                limit = TILT_LIMIT if tilt else DISPLACEMENT_LIMIT * self.groove
+                why = "" if tilt else "|d| <= 0.5 (f_i + f_o - 1) D: beyond it past any material limit"
+                out.append((var, -limit, limit, why))
+        limit = 0.02 * self.bearing.D
+        out += [(by_name[n], -limit, limit, "|value| <= 0.02 D") for n in ("dPd_thermal", "dz_thermal") if n in by_name]
+        return tuple(out)
 
     # -- set-up --------------------------------------------------------------------------------
     def _pack(self):
@@ -203,24 +220,12 @@ class QuasiStaticModel:
         return qs, cp
 
     def _load_limit(self):
-        """Largest admissible load (N): all Z balls at the contact load giving p_max = P_MAX_ERROR.
-
-        p_max ~ Q^(1/3), so Q_lim = Q (P_MAX_ERROR / p(Q))^3; no real load distribution shares a load
-        better than equally over all balls, so a larger load certainly passes the material limit."""
+        """Largest admissible load (N): all Z balls at the contact load giving p_max = P_MAX_ERROR."""
         cp = self.cp
-        q_lim = math.inf
-        for o in (0, 5):
-            p_unit = hertz_contact(
-                1.0,
-                cp[ck.CP_RX_I + o],
-                cp[ck.CP_RY_I + o],
-                cp[ck.CP_E_RED],
-                cp[ck.CP_K_I + o],
-                cp[ck.CP_EE_I + o],
-                cp[ck.CP_KK_I + o],
-            )[3]
-            q_lim = min(q_lim, (P_MAX_ERROR / p_unit) ** 3)
-        return self.bearing.Z * q_lim
+        contacts = [
+            [cp[key + o] for key in (ck.CP_RX_I, ck.CP_RY_I, ck.CP_K_I, ck.CP_EE_I, ck.CP_KK_I)] for o in (0, 5)
+        ]
+        return material_load_limit(self.bearing.Z, cp[ck.CP_E_RED], contacts)
 
     def axial_approach(self, F_axial):
         """Axial approach z (m) at which this bearing alone carries the axial load F_axial (N) at rest,
@@ -252,31 +257,8 @@ class QuasiStaticModel:
         """Raise InputError naming the first input outside its allowed range."""
         check_speed(values["omega"], self.omega_max)
         check_oil_temperature(values["T_oil"])
-        for i in range(5):
-            if self._load_controlled[i]:
-                name = LOAD_NAMES[i]
-                if not math.isfinite(values[name]):
-                    raise InputError(f"{name} = {values[name]} {LOAD_UNITS[i]} is not a finite number")
-                limit = self.load_limit * (1.0 if i < 3 else 0.5 * self.bearing.dm)
-                if abs(values[name]) > limit:
-                    raise InputError(
-                        f"{name} = {values[name]} {LOAD_UNITS[i]} is beyond the material limit: even "
-                        f"shared equally by all balls it gives p_max > {P_MAX_ERROR / 1e9:.1f} GPa "
-                        f"(allowed |{name}| <= {limit:.4g} {LOAD_UNITS[i]})"
-                    )
-            else:
-                name = DOF_NAMES[i]
-                limit = TILT_LIMIT if i >= 3 else DISPLACEMENT_LIMIT * self.groove
-                if not (math.isfinite(values[name]) and abs(values[name]) <= limit):
-                    raise InputError(
-                        f"{name} = {values[name]} {DOF_UNITS[i]} is outside the allowed range "
-                        f"[{-limit:.4g}, {limit:.4g}] {DOF_UNITS[i]}"
-                    )
-        limit = 0.02 * self.bearing.D
-        for name in ("dPd_thermal", "dz_thermal"):
-            v = values.get(name, 0.0)
-            if not (math.isfinite(v) and abs(v) <= limit):
-                raise InputError(f"{name} = {v} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m")
+        for var, low, high, why in self._checks:
+            var.check(values[var.name], low, high, why)
 
     def evaluate(self, **values):
         """Outputs (dict name -> SI value) for the inputs of self.inputs (missing ones take their start
