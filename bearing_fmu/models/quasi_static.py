@@ -351,7 +351,8 @@ class QuasiStaticModel:
             f"bearing '{self.bearing.name}' is a single-row angular-contact bearing: it carries thrust in +z only, "
             f"and these loads need its missing shoulder (ball {j} would carry {balls[qk.BQ_Q_I, j]:.4g} N at a "
             f"contact angle of {math.degrees(balls[qk.BQ_A_I, j]):.3g} deg). Carry the reverse thrust with a "
-            f"second bearing or a preload (bearing_fmu.models.pair). Inputs: {shown}"
+            f"second bearing or a preload (bearing_fmu.models.pair). Allowed: loads with which every loaded ball "
+            f"touches the inner ring at a contact angle >= 0. Inputs: {shown}"
         )
 
     def _collect(self, omega, values):
