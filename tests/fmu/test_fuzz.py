@@ -125,3 +125,22 @@ def test_every_input_and_real_parameter_declares_its_range():
         if v.kind == "real" and not (v.min is not None and v.min <= v.start_in(None) <= v.max and v.limits)
     ]
     assert not missing
+
+
+@pytest.mark.parametrize(
+    "fixture,name,value,message",
+    [
+        ("analytic_fmu", "bearing", "62O8", "unknown bearing '62O8'"),
+        ("bearing_fmu", "race_control", "", "race_control = '' is not allowed"),
+        ("spindle_thermal_fmu", "T_initial", "-300", "T_initial = -300.0 K is outside the allowed range [0, 1000] K"),
+    ],
+)
+def test_fmpy_simulate_command_exits_non_zero_with_the_fmu_message(request, fixture, name, value, message):
+    """`fmpy simulate` (fmpy's command line, no debug logging) with a refused parameter."""
+    path = request.getfixturevalue(fixture)
+    fmpy = Path(sys.executable).with_name("fmpy")
+    command = [str(fmpy), "simulate", str(path), "--start-values", name, value, "--stop-time", "2"]
+    proc = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    assert proc.returncode != 0
+    assert message in proc.stdout + proc.stderr, (proc.stdout, proc.stderr[-2000:])
+    assert "fmi2ExitInitializationMode failed with status 3 (error)" in proc.stderr
