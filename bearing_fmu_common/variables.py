@@ -45,10 +45,13 @@ class Variable:
             return False
         return not self.drives or getattr(scene, "drive", None) in self.drives
 
+    def bounds(self, low=None, high=None):
+        """The allowed range (lo, hi): the declared [min, max], narrowed to [low, high] where given."""
+        return (self.min if low is None else max(low, self.min), self.max if high is None else min(high, self.max))
+
     def range_text(self, low=None, high=None):
-        """The allowed range as text, e.g. '[-1e+05, 100000] rad/s' (low/high: narrower run-time bounds)."""
-        low = self.min if low is None else max(low, self.min)
-        high = self.max if high is None else min(high, self.max)
+        """The allowed range as text, e.g. '[-100000, 100000] rad/s' (low/high: narrower run-time bounds)."""
+        low, high = self.bounds(low, high)
         unit = "" if self.unit in ("", "1") else f" {self.unit}"
         return f"[{low:.6g}, {high:.6g}]{unit}"
 
@@ -56,8 +59,7 @@ class Variable:
         """Raise InputError unless value is a finite number within the declared range [min, max], narrowed
         to [low, high] when given (a limit that depends on other parameters; `why` says which). The
         message names the variable, its value and the allowed range."""
-        lo = self.min if low is None else max(low, self.min)
-        hi = self.max if high is None else min(high, self.max)
+        lo, hi = self.bounds(low, high)
         if lo <= value <= hi:  # False for NaN
             return
         reason = why or self.limits
@@ -77,6 +79,27 @@ class Variable:
     def start_in(self, scene):
         """Start value in `scene` (outputs: None, they start from the model at the start inputs)."""
         return getattr(scene, self.name) if self.start is None else self.start
+
+
+class InputLimits:
+    """The allowed range of each input of a model, precomputed: the declared range narrowed by the limits
+    that depend on the model's parameters (narrowed: name -> (low, high, why)), so that checking the inputs
+    of a step costs one comparison per input; a refusal is raised by Variable.check (its message)."""
+
+    def __init__(self, variables, narrowed=None):
+        narrowed = narrowed or {}
+        self._rows = {}
+        for k, var in enumerate(variables):
+            low, high, why = narrowed.get(var.name, (None, None, ""))
+            self._rows[k] = (var, low, high, why)
+        self._fast = tuple((k, *var.bounds(low, high)) for k, (var, low, high, _) in self._rows.items())
+
+    def check(self, u):
+        """Raise InputError naming the first input of u (values in the variables' order) outside its range."""
+        for k, lo, hi in self._fast:
+            if not lo <= u[k] <= hi:  # True for NaN
+                var, low, high, why = self._rows[k]
+                var.check(u[k], low, high, why)
 
 
 def select(declarations, scene):

@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 
-from bearing_fmu_common.variables import gather_plan, select
+from bearing_fmu_common.variables import InputLimits, gather_plan, select
 
 from ..kernels import radial_bearing as ak
 from ..kernels.geometry import ball_mass, curvature_radii
@@ -23,13 +23,10 @@ from .variables import (
     MATERIAL_LIMIT,
     InputError,
     check_clearance,
-    check_oil_temperature,
-    check_speed,
     material_load_limit,
     pressure_warnings,
 )
 
-F_Y = ANALYTIC_INPUTS[1]
 GAUSS_NODES = 48  # quadrature points on the loaded arc (J_r(0.5) exact to < 1e-8)
 EPSILON_CAP = 1e6  # |epsilon| shown at most (a centred preloaded ring has delta_r = 0: eps is infinite)
 
@@ -72,6 +69,13 @@ class AnalyticModel:
             )
         ]
         self.load_limit = material_load_limit(b.Z, self.brg[ak.B_E_RED], contacts)
+        self._limits = InputLimits(
+            self.inputs,
+            {
+                "omega": (-self.omega_max, self.omega_max, f"d_m n <= {DM_N_LIMIT:.0e} mm.rpm"),
+                "F_y": (-self.load_limit, self.load_limit, MATERIAL_LIMIT),
+            },
+        )
         self.nodes, self.weights = gauss_legendre(GAUSS_NODES)
         self._out = np.zeros(ak.O_SIZE)
         self.ball = np.zeros((8, b.Z))
@@ -119,15 +123,7 @@ class AnalyticModel:
 
     def check_inputs(self, omega, F_y, T_oil):
         """Raise InputError naming the first input outside its allowed range."""
-        check_speed(omega, self.omega_max)
-        limit = self.load_limit
-        F_Y.check(
-            F_y,
-            -limit,
-            limit,
-            MATERIAL_LIMIT,
-        )
-        check_oil_temperature(T_oil)
+        self._limits.check((omega, F_y, T_oil))
 
     def evaluate(self, omega, F_y, T_oil):
         """Outputs (dict name -> SI value) for inner-ring speed omega (rad/s), radial load F_y (N)

@@ -20,7 +20,7 @@ import tomllib
 
 import numpy as np
 
-from bearing_fmu_common.variables import gather_plan, select
+from bearing_fmu_common.variables import InputLimits, gather_plan, select
 
 from ..kernels.ball_dynamics import integrator as dyn
 from ..kernels.ball_dynamics import state as s
@@ -41,7 +41,7 @@ from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
 from .declarations import DEM_DT_MAX, DEM_INPUTS, DEM_OUTPUTS, DEM_REFRESH_MAX, PD
 from .declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
-from .variables import DM_N_LIMIT, MATERIAL_LIMIT, P_MAX_ERROR, InputError, check_oil_temperature, check_speed
+from .variables import DM_N_LIMIT, MATERIAL_LIMIT, P_MAX_ERROR, InputError
 
 # PA66 cage balls when the bearing file has no [material.cage] (Farah 2020: E_c = 3.3 GPa, nu_c = 0.41)
 CAGE_E = 3.3e9
@@ -67,10 +67,6 @@ STATUS_WORDS = {
     s.STATUS_ENERGY: "the kinetic energy grew beyond the bound of the inputs (energy growth without input)",
     s.STATUS_CHATTER: "a tangential spring chattered against its Coulomb limit (slip direction reversing every step)",
 }
-
-
-_LOADS = DEM_INPUTS[1:4]  # F_x, F_y, F_z
-_DPD_THERMAL = DEM_INPUTS[5]
 
 
 class DemUnstableError(InputError):
@@ -154,6 +150,11 @@ class DemModel:
         self.omega_max = DM_N_LIMIT / (b.dm * 1e3) * 2.0 * math.pi / 60.0
         self.par = self._pack(ring_mass, kt_ratio)
         self.load_limit = self._load_limit()
+        limit, load = 0.02 * b.D, self.load_limit
+        narrowed = {name: (-load, load, MATERIAL_LIMIT) for name in ("F_x", "F_y", "F_z")}
+        narrowed["omega"] = (-self.omega_max, self.omega_max, f"d_m n <= {DM_N_LIMIT:.0e} mm.rpm")
+        narrowed["dPd_thermal"] = (-limit, limit, "|dPd_thermal| <= 0.02 D")
+        self._limits = InputLimits(DEM_INPUTS, narrowed)
         self._rho_outer = float(self.par[s.P_RHO_O])  # at the nominal clearance
         Z = b.Z
         self.balls = np.zeros((s.B_SIZE, Z))
@@ -354,14 +355,7 @@ class DemModel:
             raise InputError(
                 f"t_end = {t_end} s is outside the allowed range ]{t:.9g}, inf[ s (after the current time)"
             )
-        check_speed(omega, self.omega_max)
-        check_oil_temperature(T_oil)
-        limit = 0.02 * self.bearing.D
-        _DPD_THERMAL.check(dPd_thermal, -limit, limit, "|dPd_thermal| <= 0.02 D")
-        load_limit = self.load_limit
-        why = MATERIAL_LIMIT
-        for var, value in zip(_LOADS, (F_x, F_y, F_z)):
-            var.check(value, -load_limit, load_limit, why)
+        self._limits.check((omega, F_x, F_y, F_z, T_oil, dPd_thermal))
 
     def _load_limit(self):
         """Largest admissible load (N): Z balls at the contact load of the penetration limit (p_max = 6 GPa);

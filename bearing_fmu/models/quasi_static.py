@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from bearing_fmu_common.variables import select
+from bearing_fmu_common.variables import InputLimits, select
 
 from ..kernels import bearing_outputs as bo
 from ..kernels import contacts as ck
@@ -41,8 +41,6 @@ from .variables import (
     TILT_LIMIT,
     InputError,
     check_clearance,
-    check_oil_temperature,
-    check_speed,
     material_load_limit,
     pressure_warnings,
 )
@@ -145,27 +143,25 @@ class QuasiStaticModel:
         self._summary = np.zeros(bo.BS_SIZE)
         self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
         self._load_controlled = tuple(bool(c) for c in self.control)  # per DOF, as plain booleans
-        self._checks = self._input_checks()
+        self._limits = self._input_limits()
 
-    def _input_checks(self):
-        """(declaration, low, high, why) of each load, displacement and thermal input: the declared range
-        narrowed by this bearing's limits (material load limit, groove clearance, 0.02 D)."""
-        by_name = {v.name: v for v in self.inputs}
-        out = []
+    def _input_limits(self):
+        """The allowed range of each input: the declared one narrowed by this bearing's limits (d_m n, material
+        load limit, groove clearance A for imposed displacements, 0.02 D for thermal changes)."""
+        narrowed = {"omega": (-self.omega_max, self.omega_max, f"d_m n <= {DM_N_LIMIT:.0e} mm.rpm")}
         for i, name in enumerate(LOAD_NAMES):
-            if name in by_name:
-                limit = self.load_limit * (1.0 if i < 3 else 0.5 * self.bearing.dm)
-                why = MATERIAL_LIMIT
-                out.append((by_name[name], -limit, limit, why))
-        for var in self.inputs:
-            if var.unit in ("m", "rad") and var.name not in ("dPd_thermal", "dz_thermal"):  # imposed DOFs
-                tilt = var.unit == "rad"
-                limit = TILT_LIMIT if tilt else DISPLACEMENT_LIMIT * self.groove
-                why = "" if tilt else "|d| <= 0.5 (f_i + f_o - 1) D: beyond it past any material limit"
-                out.append((var, -limit, limit, why))
+            limit = self.load_limit * (1.0 if i < 3 else 0.5 * self.bearing.dm)
+            narrowed[name] = (-limit, limit, MATERIAL_LIMIT)
+        for i, name in enumerate(DOF_NAMES):
+            if i >= 3:
+                narrowed[name] = (-TILT_LIMIT, TILT_LIMIT, "")
+            else:
+                limit = DISPLACEMENT_LIMIT * self.groove
+                narrowed[name] = (-limit, limit, "|d| <= 0.5 (f_i + f_o - 1) D: beyond it past any material limit")
         limit = 0.02 * self.bearing.D
-        out += [(by_name[n], -limit, limit, "|value| <= 0.02 D") for n in ("dPd_thermal", "dz_thermal") if n in by_name]
-        return tuple(out)
+        for name in ("dPd_thermal", "dz_thermal"):
+            narrowed[name] = (-limit, limit, "|value| <= 0.02 D")
+        return InputLimits(self.inputs, narrowed)
 
     # -- set-up --------------------------------------------------------------------------------
     def _pack(self):
@@ -254,11 +250,8 @@ class QuasiStaticModel:
 
     # -- evaluation ----------------------------------------------------------------------------
     def check_inputs(self, values):
-        """Raise InputError naming the first input outside its allowed range."""
-        check_speed(values["omega"], self.omega_max)
-        check_oil_temperature(values["T_oil"])
-        for var, low, high, why in self._checks:
-            var.check(values[var.name], low, high, why)
+        """Raise InputError naming the first input (values: name -> SI value) outside its allowed range."""
+        self._limits.check([values[name] for name in self.input_names])
 
     def evaluate(self, **values):
         """Outputs (dict name -> SI value) for the inputs of self.inputs (missing ones take their start
@@ -280,8 +273,8 @@ class QuasiStaticModel:
     def update(self, u):
         """Evaluate for the input values u in self.inputs order (SI) and fill self.values (self.outputs
         order); returns self.values. Raises as evaluate()."""
+        self._limits.check(u)
         values = dict(zip(self.input_names, u))
-        self.check_inputs(values)
         omega = float(values["omega"])
         controlled = self._load_controlled
         applied = np.array([float(values[n]) if controlled[i] else 0.0 for i, n in enumerate(LOAD_NAMES)])

@@ -144,3 +144,17 @@ def test_fmpy_simulate_command_exits_non_zero_with_the_fmu_message(request, fixt
     assert proc.returncode != 0
     assert message in proc.stdout + proc.stderr, (proc.stdout, proc.stderr[-2000:])
     assert "fmi2ExitInitializationMode failed with status 3 (error)" in proc.stderr
+
+
+@pytest.mark.parametrize("arguments", all_variables(), ids=lambda a: a[0])
+def test_model_description_declares_the_checked_ranges(request, arguments):
+    """min/max in modelDescription.xml are the declarations' numbers, the ones the models check against."""
+    from fmpy import read_model_description
+
+    name, _, _, parameters, inputs, *_ = arguments
+    md = read_model_description(str(request.getfixturevalue(FIXTURES[name])))
+    xml = {v.name: v for v in md.modelVariables if v.causality in ("input", "parameter")}
+    for var in (*parameters, *inputs):
+        declared = (var.min, var.max) if var.kind == "real" else (None, None)
+        written = tuple(None if x is None else float(x) for x in (xml[var.name].min, xml[var.name].max))
+        assert written == declared, var.name
