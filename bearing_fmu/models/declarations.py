@@ -151,7 +151,7 @@ DISPLACEMENT_LIMIT = 0.5  # x the groove clearance A (m): beyond it the Hertz lo
 DISPLACEMENT_LIMITS = (
     "static bound; |d| <= 0.5 (f_i + f_o - 1) D of the bearing applies (beyond: past any material limit)"
 )
-TILT_LIMITS = "beyond it the ring edges load any ball bearing past its material limit"
+TILT_LIMITS = "over 3 x the largest misalignment ball-bearing catalogues permit (10 arcmin = 2.9 mrad)"
 
 
 def _load_range(i):

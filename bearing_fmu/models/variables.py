@@ -14,11 +14,11 @@ P_MAX_ERROR = 6.0e9  # Pa, estimated: far beyond first yield of bearing steel; H
 DM_N_LIMIT = 4.0e6  # mm.rpm, d_m n beyond any oil-lubricated steel ball bearing (estimated)
 T_OIL_RANGE = (233.15, 473.15)  # K, -40..200 C: range of the viscosity laws of mineral and PAO oils
 # Static bounds (declared ranges; the bearing-dependent limit applies within them):
-OMEGA_MAX = 1e5  # rad/s (~955 000 rpm): d_m n = 4e6 mm.rpm is reached below it by any bearing with d_m >= 4 mm
-LOAD_MAX = 1e8  # N: ten times the static load rating C0 of the largest slewing ball bearings (~1e7 N)
+OMEGA_MAX = 1e5  # rad/s (~955 000 rpm): d_m n = 4e6 mm.rpm is reached below it by any bearing with d_m >= 5 mm
+LOAD_MAX = 1e8  # N: far beyond any ball bearing (the largest slewing ball bearings: C0 of order 1e7 N)
 MOMENT_MAX = 1e8  # N.m: LOAD_MAX at 1 m
-GROOVE_MAX = 1e-2  # m: groove clearance (f_i + f_o - 1) D of a 0.25 m ball at conformities 0.52 + 0.52
-TILT_LIMIT = 0.01  # rad: imposed tilt; beyond it the ring edges load any ball bearing past its material limit
+GROOVE_MAX = 1e-2  # m: groove clearance (f_i + f_o - 1) D of a 0.25 m ball (beyond any catalogue ball), 0.52 + 0.52
+TILT_LIMIT = 0.01  # rad: imposed tilt, over 3 x the largest misalignment ball-bearing catalogues permit
 THERMAL_SHIFT_MAX = 1e-3  # m: thermal/centrifugal clearance or axial change (spindle bearings: micrometres)
 OMEGA_LIMITS = f"|omega| <= {OMEGA_MAX:g} rad/s and d_m n <= {DM_N_LIMIT:.0e} mm.rpm of the bearing"
 LOAD_LIMITS = "static bound; the bearing's material limit (p_max = 6 GPa with the load on all balls) applies within"
