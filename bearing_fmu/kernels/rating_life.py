@@ -105,7 +105,8 @@ AC_ALPHA = (20.0, 25.0, 30.0, 35.0, 40.0, 45.0)  # deg
 AC_E = (0.57, 0.68, 0.80, 0.95, 1.14, 1.34)
 AC_X = (0.43, 0.41, 0.39, 0.37, 0.35, 0.33)
 AC_Y = (1.00, 0.87, 0.76, 0.66, 0.57, 0.50)
-AC_ALPHA_MIN = 15.0  # deg: no X, Y for angular contact below (ISO 281's 5 and 10 deg rows are not carried)
+AC_ALPHA_MIN = 15.0  # deg: below, the radial-contact row (0 deg) and the 15 deg row are interpolated in the angle
+# (an approximation: ISO 281's 5 and 10 deg rows are not carried; docs/rating_life.md)
 
 # layout of the life parameter array (built by the facades with rating_parameters())
 LP_C_R = 0  # basic dynamic radial load rating C_r (N)
@@ -172,14 +173,19 @@ def iso281_dynamic_rating(Z, D, dm, alpha):
 def iso281_factors(angular, alpha_deg, load_ratio):
     """ISO 281:2007 Table 3 factors (X, Y, e) of a single-row bearing with F_a/F_r > e.
 
-    angular: 1 = angular contact (nominal angle alpha_deg, 15-45 deg), 0 = radial contact groove bearing;
+    angular: 1 = angular contact (nominal angle alpha_deg, 0-45 deg), 0 = radial contact groove bearing;
     load_ratio = f_0 F_a / C_0r (-). Between 15 and 20 deg the 15 deg row (at this load ratio) and the 20 deg
-    row are interpolated linearly in the angle, as between the tabulated angles above."""
+    row are interpolated linearly in the angle, as between the tabulated angles above; below 15 deg the
+    radial-contact row and the 15 deg row (AC_ALPHA_MIN)."""
+    e0 = _interpolate(load_ratio, RADIAL_LOAD_RATIO, RADIAL_E)
+    y0 = _interpolate(load_ratio, RADIAL_LOAD_RATIO, RADIAL_Y)
     if angular < 0.5:
-        e = _interpolate(load_ratio, RADIAL_LOAD_RATIO, RADIAL_E)
-        return RADIAL_X, _interpolate(load_ratio, RADIAL_LOAD_RATIO, RADIAL_Y), e
+        return RADIAL_X, y0, e0
     e15 = _interpolate(load_ratio, AC15_LOAD_RATIO, AC15_E)
     y15 = _interpolate(load_ratio, AC15_LOAD_RATIO, AC15_Y)
+    if alpha_deg < AC_ALPHA_MIN:
+        t = max(alpha_deg, 0.0) / AC_ALPHA_MIN
+        return (1.0 - t) * RADIAL_X + t * AC15_X, (1.0 - t) * y0 + t * y15, (1.0 - t) * e0 + t * e15
     if alpha_deg <= AC_ALPHA[0]:
         t = (alpha_deg - AC_ALPHA_MIN) / (AC_ALPHA[0] - AC_ALPHA_MIN)
         return (1.0 - t) * AC15_X + t * AC_X[0], (1.0 - t) * y15 + t * AC_Y[0], (1.0 - t) * e15 + t * AC_E[0]

@@ -25,7 +25,7 @@ from ..kernels.hertz import (
     reduced_modulus,
 )
 from ..kernels.torque import ALPHA_HYSTERESIS_STEEL, TL_SIZE
-from ..params import ANGLE_MATCH, load_bearing, load_lubricant
+from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, RACE_CONTROLS, Scene
 from .declarations import (
     DOF_NAMES,
@@ -59,7 +59,6 @@ HYBRID_SPLITS = {
 # admissible imposed displacements: a fraction of the groove clearance A = (f_i + f_o - 1) D
 DISPLACEMENT_LIMIT = 0.5  # x A (m); beyond this the Hertz loads pass any material limit
 TILT_LIMIT = 0.01  # rad
-AC_ALPHA_LOW = math.radians(rl.AC_ALPHA_MIN) - ANGLE_MATCH  # rad: smallest angle rated as 15 deg (rating life)
 
 
 class SolverError(InputError):
@@ -212,22 +211,14 @@ class QuasiStaticModel:
         return qs, cp
 
     def _rating_parameters(self):
-        """kernels.rating_life LP_* array: deep-groove bearings at the nominal angle 0 (radial contact), angular
-        contact at the free contact angle of the clearance Pd (the file's nominal angle to within the files'
-        angle-clearance match ANGLE_MATCH; an angle that close below 15 deg counts as 15 deg). The angle comes
-        from Pd alone, so a bearing given by its angle and one given by the equivalent clearance agree bit for bit."""
+        """kernels.rating_life LP_* array. The ratings are those of the bearing's design: a deep-groove bearing at
+        the nominal angle 0 (radial contact), an angular-contact bearing at the nominal angle of its file (the
+        free contact angle of the file's clearance, which the file's angle gives; a Pd override, e.g. a
+        preload, changes the load distribution, not the rating). Taken from the clearance, the angle is the
+        same bit for bit whether the file gives the angle or the equivalent clearance."""
         b = self.bearing
         angular = b.kind == "angular_contact"
-        alpha = 0.0
-        if angular:
-            alpha = free_contact_angle(b.D, b.f_i, b.f_o, self.Pd)
-            alpha = max(alpha, math.radians(rl.AC_ALPHA_MIN)) if alpha > AC_ALPHA_LOW else alpha
-        if angular and alpha < math.radians(rl.AC_ALPHA_MIN):
-            raise InputError(
-                f"bearing '{b.name}': rating life (scene option life) covers angular-contact bearings of "
-                f"{rl.AC_ALPHA_MIN:g} to 45 deg (ISO 281 Table 3 as implemented); this one has "
-                f"{math.degrees(alpha):.4g} deg"
-            )
+        alpha = free_contact_angle(b.D, b.f_i, b.f_o, b.Pd) if angular else 0.0
         lp = np.zeros(rl.LP_SIZE)
         rl.rating_parameters(1.0 if angular else 0.0, b.Z, b.D, b.dm, b.f_i, b.f_o, alpha, lp)
         return lp

@@ -40,17 +40,20 @@ def iso281_dynamic_rating(Z, D, dm, alpha):
 
 
 def iso281_factors(angular, alpha_deg, load_ratio):
-    """(X, Y, e) for F_a/F_r > e: radial-contact row, or the angular-contact rows interpolated in the angle."""
+    """(X, Y, e) for F_a/F_r > e: radial-contact row, or the rows of 0 (radial contact), 15, 20, ..., 45 deg
+    interpolated in the angle."""
     if not angular:
         return (
             rl.RADIAL_X,
             _interpolate(load_ratio, rl.RADIAL_LOAD_RATIO, rl.RADIAL_Y),
             _interpolate(load_ratio, rl.RADIAL_LOAD_RATIO, rl.RADIAL_E),
         )
-    angles = (15.0, *rl.AC_ALPHA)
-    X = np.interp(alpha_deg, angles, (rl.AC15_X, *rl.AC_X))
-    Y = np.interp(alpha_deg, angles, (_interpolate(load_ratio, rl.AC15_LOAD_RATIO, rl.AC15_Y), *rl.AC_Y))
-    e = np.interp(alpha_deg, angles, (_interpolate(load_ratio, rl.AC15_LOAD_RATIO, rl.AC15_E), *rl.AC_E))
+    angles = (0.0, 15.0, *rl.AC_ALPHA)
+    radial_Y = _interpolate(load_ratio, rl.RADIAL_LOAD_RATIO, rl.RADIAL_Y)
+    radial_e = _interpolate(load_ratio, rl.RADIAL_LOAD_RATIO, rl.RADIAL_E)
+    X = np.interp(alpha_deg, angles, (rl.RADIAL_X, rl.AC15_X, *rl.AC_X))
+    Y = np.interp(alpha_deg, angles, (radial_Y, _interpolate(load_ratio, rl.AC15_LOAD_RATIO, rl.AC15_Y), *rl.AC_Y))
+    e = np.interp(alpha_deg, angles, (radial_e, _interpolate(load_ratio, rl.AC15_LOAD_RATIO, rl.AC15_E), *rl.AC_E))
     return float(X), float(Y), float(e)
 
 

@@ -20,7 +20,7 @@ GEOMETRIES = (
 ANGULAR = (0.0, 1.0, 1.0, 1.0)
 GAMMAS = np.linspace(0.0, 0.45, 91)
 LOAD_RATIOS = (0.05, 0.172, 0.3, 1.0, 2.5, 6.89, 9.0)
-ALPHAS_DEG = (15.0, 17.5, 20.0, 22.0, 30.0, 45.0)
+ALPHAS_DEG = (0.0, 10.0, 15.0, 17.5, 20.0, 22.0, 30.0, 45.0)
 
 
 def parameters(k):

@@ -10,9 +10,9 @@ import pytest
 
 from bearing_fmu.kernels import jones_harris as qk
 from bearing_fmu.kernels import rating_life as rl
+from bearing_fmu.kernels.geometry import free_contact_angle
 from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.models.quasi_static import QuasiStaticModel
-from bearing_fmu.models.variables import InputError
 from bearing_fmu.scene import Scene, SceneError
 from tests.reference import ref_rating_life as ref
 from tests.unit._compare import rel_err
@@ -73,8 +73,7 @@ def test_quasi_static_lives_are_the_twins_of_the_solution(bearing, loads):
     result = m.evaluate(omega=OMEGA, **loads)
     b = m.bearing
     lp = np.zeros(rl.LP_SIZE)
-    # the B7214C's clearance gives its nominal 15 deg to 4e-4 deg: rated at 15 deg (AC_ALPHA_LOW)
-    alpha = math.radians(15.0) if b.kind == "angular_contact" else 0.0
+    alpha = free_contact_angle(b.D, b.f_i, b.f_o, b.Pd) if b.kind == "angular_contact" else 0.0  # the file's
     ref.rating_parameters(b.kind == "angular_contact", b.Z, b.D, b.dm, b.f_i, b.f_o, alpha, lp)
     lp[[rl.LP_C_0R, rl.LP_F_0]] = m._life_parameters[[rl.LP_C_0R, rl.LP_F_0]]  # ISO 76 table (twinned elsewhere)
     out = np.zeros(rl.LO_SIZE)
@@ -97,9 +96,17 @@ def test_analytic_lives_are_the_twins_of_the_solution():
     assert rel_err([result[name] for name in LIFE], out) < 1e-10
 
 
-def test_angular_contact_below_15_degrees_is_refused_with_life():
-    with pytest.raises(InputError, match="15 to 45 deg"):
-        QuasiStaticModel("B7214C", "iso_vg68_mineral", Scene(name="q", fidelity="quasi_static", life=True), Pd=20e-6)
+def test_ratings_are_the_designs_whatever_the_mounted_clearance():
+    """A preload through Pd (free contact angle 0) changes the load distribution, not the bearing's ratings:
+    they stay those of its nominal 15 deg."""
+    scene = Scene(name="q", fidelity="quasi_static", life=True)
+    nominal = QuasiStaticModel("B7214C", "iso_vg68_mineral", scene)
+    preloaded = QuasiStaticModel("B7214C", "iso_vg68_mineral", scene, Pd=-5e-6)
+    assert np.array_equal(preloaded._life_parameters, nominal._life_parameters)
+    assert nominal._life_parameters[rl.LP_ALPHA_DEG] == pytest.approx(15.0, abs=1e-3)
+    a = nominal.evaluate(omega=OMEGA, F_z=800.0, F_y=200.0)
+    b = preloaded.evaluate(omega=OMEGA, F_z=800.0, F_y=200.0)
+    assert a["L10"] == pytest.approx(b["L10"], rel=1e-9) and a["L10r"] != b["L10r"]
 
 
 def test_scene_refuses_life_and_spring_constant_where_they_do_not_apply():
