@@ -88,6 +88,21 @@ def defect_frequencies(omega, D, dm, alpha, Z):
 
 
 @kernel
+def pass_frequencies(omega, omega_cage, omega_ball_cage, Z):
+    """Bearing defect frequencies in Hz from solved speeds (slip included where the fidelity has it).
+
+    omega: inner-ring speed (rad/s), outer ring fixed; omega_cage: cage speed in the fixed frame (rad/s);
+    omega_ball_cage: ball angular speed relative to the cage (rad/s); Z: number of balls.
+    Returns (FTF, BPFO, BPFI, BSF) as magnitudes: FTF = |omega_c| / 2 pi (cage turns), BPFO = Z FTF (balls
+    passing a point of the outer ring), BPFI = Z |omega - omega_c| / 2 pi (balls passing a point of the
+    inner ring), BSF = |omega_ball_cage| / 2 pi (ball turns relative to the cage; a ball defect strikes the
+    races at 2 BSF). In pure rolling these are defect_frequencies().
+    """
+    ftf = abs(omega_cage) / (2.0 * math.pi)
+    return ftf, Z * ftf, Z * abs(omega - omega_cage) / (2.0 * math.pi), abs(omega_ball_cage) / (2.0 * math.pi)
+
+
+@kernel
 def ball_mass(D, rho):
     """Mass (kg) of a ball of diameter D (m) and density rho (kg/m^3)."""
     return rho * math.pi * D**3 / 6.0

@@ -178,3 +178,26 @@ def test_seed_6208_speeds():
     assert w_rel == pytest.approx(1150.4, abs=0.05)
     assert w_c == pytest.approx(198.0, abs=0.05)
     assert u == pytest.approx(500.0 * 60.6e-3 * (1.0 - (12.6 / 60.6) ** 2) / 4.0, rel=1e-14, abs=0)
+
+
+@FAST
+@given(
+    omega=floats(min_value=-5000.0, max_value=5000.0),
+    cage=floats(min_value=-3000.0, max_value=3000.0),
+    ball=floats(min_value=-20000.0, max_value=20000.0),
+    Z=st.integers(min_value=3, max_value=40),
+)
+def test_pass_frequencies_twin(omega, cage, ball, Z):
+    """Frequencies from solved speeds (any slip, either sense) against the twin; closed forms: RTOL."""
+    assert_close(gk.pass_frequencies(omega, cage, ball, Z), rg.pass_frequencies(omega, cage, ball, Z), RTOL, "freq")
+
+
+def test_pass_frequencies_in_pure_rolling_are_the_defect_frequencies():
+    """Fed the pure-rolling speeds, the frequencies from speeds are the catalogue closed forms (magnitudes:
+    a frequency has no sense), for both senses of rotation and every contact angle."""
+    D, dm, Z = 12.6e-3, 60.6e-3, 9
+    for omega in (500.0, -500.0):
+        for alpha in ANGLES:
+            cage, ball_rel, _, _ = gk.rolling_kinematics(omega, D, dm, alpha)
+            closed = [abs(f) for f in gk.defect_frequencies(omega, D, dm, alpha, Z)]
+            assert_close(gk.pass_frequencies(omega, cage, ball_rel, Z), closed, RTOL, "pure rolling")
