@@ -8,6 +8,22 @@ import math
 
 from bearing_fmu_common.jit import kernel
 
+# Frame of every fidelity (docs/conventions.md): z on the bearing axis, azimuth psi from +x toward +y;
+# ball 1 (index 0) sits on +y, the line of a radial load F_y (the analytic fidelity's only radial input)
+BALL_1_AZIMUTH = 0.5 * math.pi  # rad
+
+
+@kernel
+def ball_direction(j, Z):
+    """Radial unit vector (cos psi_j, sin psi_j) of ball j (0-based) of Z, psi_j = BALL_1_AZIMUTH + 2 pi j / Z (rad);
+    a half-integer j gives the direction midway between two balls (the DEM's cage balls).
+
+    Written as (-sin t, cos t), t = 2 pi j / Z, so that ball 0 lies exactly on +y (cos(pi/2) would be 6e-17) and
+    the ball set is the exact quarter turn of the set that starts on +x.
+    """
+    t = 2.0 * math.pi * j / Z
+    return -math.sin(t), math.cos(t)
+
 
 @kernel
 def gamma_ratio(D, dm, alpha):

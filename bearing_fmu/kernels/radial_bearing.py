@@ -1,9 +1,10 @@
 """The `analytic` bearing fidelity: one pure function from (speed, radial load, oil state) to outputs.
 
-Deep-groove bearing (contact angle 0), outer ring fixed, radial load F_r along psi = 0:
+Deep-groove bearing (contact angle 0), outer ring fixed, radial load F_r on the +y axis (the input F_y):
 1. Sjovall distribution with clearance (loaddist): inner-ring shift delta_r from F_r, ball loads
    Q_i(psi_j) = K (delta_r cos psi_j - P_d/2)_+^1.5 with K the inner and outer Hertz contacts in
-   series, balls at psi_j = 2 pi j / Z (ball 0 on the load line, the most loaded configuration);
+   series, psi_j = 2 pi j / Z measured here from the load line: ball 0 (ball 1) on +y, the frame of every
+   fidelity (geometry.BALL_1_AZIMUTH, docs/conventions.md), the most loaded configuration;
 2. centrifugal load superposed on the outer contacts, Q_o = Q_i + F_c (first-order: the extra
    outer deflection is not fed back into delta_r; the quasi-static fidelity resolves it);
 3. Hertz per contact, EHL film (formula code), film parameter, regime, capacitance.

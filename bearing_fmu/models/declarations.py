@@ -59,7 +59,7 @@ def frequency_outputs(sources, words):
 # -- analytic fidelity ------------------------------------------------------------------------------
 ANALYTIC_INPUTS = (
     OMEGA,
-    Variable("F_y", "N", "radial load on the inner ring along the psi = 0 line"),
+    Variable("F_y", "N", "radial load on the inner ring along +y, the line of ball 1 (docs/conventions.md)"),
     T_OIL,
 )
 

@@ -90,6 +90,12 @@ def pass_frequencies(omega, omega_cage, omega_ball_cage, Z):
     return outer, Z * outer, Z * inner, ball
 
 
+def ball_direction(j, Z):
+    """Unit vector toward ball j: azimuth pi/2 + 2 pi j / Z from +x toward +y (ball 0 on +y)."""
+    psi = math.pi / 2.0 + 2.0 * math.pi * j / Z
+    return math.cos(psi), math.sin(psi)
+
+
 def ball_mass(D, rho):
     """m = rho (4/3) pi (D/2)^3."""
     return rho * 4.0 / 3.0 * math.pi * (D / 2.0) ** 3
@@ -110,6 +116,7 @@ TWINS = {
     "rolling_kinematics": rolling_kinematics,
     "defect_frequencies": defect_frequencies,
     "pass_frequencies": pass_frequencies,
+    "ball_direction": ball_direction,
     "ball_mass": ball_mass,
     "centrifugal_force": centrifugal_force,
 }

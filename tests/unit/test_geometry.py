@@ -201,3 +201,16 @@ def test_pass_frequencies_in_pure_rolling_are_the_defect_frequencies():
             cage, ball_rel, _, _ = gk.rolling_kinematics(omega, D, dm, alpha)
             closed = [abs(f) for f in gk.defect_frequencies(omega, D, dm, alpha, Z)]
             assert_close(gk.pass_frequencies(omega, cage, ball_rel, Z), closed, RTOL, "pure rolling")
+
+
+def test_ball_direction_twin_and_convention():
+    """Ball 0 exactly on +y, the others counter-clockwise (toward -x first) every 2 pi / Z; against the twin
+    to 2 ulp of a unit vector (the twin adds pi/2 in floating point: abs 1e-15)."""
+    for Z in (7, 8, 9, 16):
+        assert gk.ball_direction(0, Z) == (-0.0, 1.0)
+        for j in range(Z):
+            c, s = gk.ball_direction(j, Z)
+            assert_close((c, s), rg.ball_direction(j, Z), 0.0, f"ball {j} of {Z}", atol=1e-15)
+    # a quarter of the balls on: +y, -x, -y, +x in turn for Z = 8
+    quarter = [tuple(round(v) for v in gk.ball_direction(j, 8)) for j in (0, 2, 4, 6)]
+    assert quarter == [(0, 1), (-1, 0), (0, -1), (1, 0)]

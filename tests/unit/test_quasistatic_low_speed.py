@@ -109,7 +109,8 @@ def test_low_speed_solution_matches_twin():
     """6208 at 1 rpm under 5 kN + 2 kN + 60 N.m (a case refused before for every ball's tiny centrifugal
     load): displacements equal the twin's (scipy root on the same equations) to 1e-6 relative."""
     p = ref.params_6208(centrifugal=True, gyroscopic=True, omega=1.0 * RPM)
-    F_applied = (5000.0, 2000.0, 0.0, 60.0, 0.0)
+    # 5 kN along the line of ball 1 (+y), 2 kN across it (-x), 60 N.m about the y axis (docs/conventions.md)
+    F_applied = (-2000.0, 5000.0, 0.0, 0.0, 60.0)
     status, d, *_ = kernel_solve(pack(p, tol=1e-10), F_applied, p["omega"])
     assert status == qk.QS_OK
     d_ref = ref.solve_loads(F_applied, p)
