@@ -74,7 +74,7 @@ def test_facade_outputs_equal_the_twin_fill(scene_file):
     """The facade's output array is the twin's fill of the same solver and contact arrays; a NaN in a
     source array is reported at its slot."""
     model = QuasiStaticModel(scene=Scene.from_toml(SCENES_DIR / scene_file))
-    inputs = {"omega": 1047.2, "F_x": 300.0, "F_z": 800.0, "x": 2e-6, "z": 20e-6}
+    inputs = {"omega": 1047.2, "F_y": 300.0, "F_z": 800.0, "y": 2e-6, "z": 20e-6}  # radial on the line of ball 1
     got = model.evaluate(**{k: v for k, v in inputs.items() if k in model.input_names})
     ref = np.zeros(len(model.outputs))
     bad = rb.quasi_static_outputs(
