@@ -49,7 +49,7 @@ def run(model, start, dt, refresh, setting=(SAFETY, REFRESH_INTERVAL)):
     c0 = time.thread_time()
     try:
         for k in range(1, round(RUN_TIME / INTERVAL) + 1):
-            samples.append(model.advance(t0 + k * INTERVAL, omega=OMEGA, F_x=F_R))
+            samples.append(model.advance(t0 + k * INTERVAL, omega=OMEGA, F_y=F_R))
     except DemUnstableError as exc:
         return None, None, (model.dt, model.refresh), str(exc).split(": ", 1)[1].split(".")[0]
     cpu = (time.thread_time() - c0) * 1e3 / (RUN_TIME * 1e3)
@@ -63,10 +63,10 @@ def starts_up(setting):
     for F, omega in ROBUSTNESS:
         model = DemModel("6208", "guessasma_oil", safety=setting[0], refresh_interval=setting[1])
         try:
-            model.advance(2e-3, omega=0.0, F_x=F)
+            model.advance(2e-3, omega=0.0, F_y=F)
             for k in range(1, 21):
-                model.advance(2e-3 + 5e-3 * k / 20, omega=omega * k / 20, F_x=F)
-            model.advance(0.05, omega=omega, F_x=F)
+                model.advance(2e-3 + 5e-3 * k / 20, omega=omega * k / 20, F_y=F)
+            model.advance(0.05, omega=omega, F_y=F)
         except DemUnstableError:
             return f"stopped at {F:g} N, {omega:g} rad/s"
     return None

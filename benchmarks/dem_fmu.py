@@ -39,7 +39,7 @@ REPEATS = 5
 
 
 def schedule():
-    """(omega, F_x) of each 1 ms step: 2 at rest, 5 ramp steps, 33 steady (to 40 ms)."""
+    """(omega, F_y) of each 1 ms step: 2 at rest, 5 ramp steps, 33 steady (to 40 ms)."""
     steps = [(0.0, F_R)] * 2 + [(OMEGA * k / 5, F_R) for k in range(1, 6)]
     return steps + [(OMEGA, F_R)] * 33
 
@@ -52,9 +52,9 @@ def run_fmu():
         inputs = [vr[n] for n in ("omega", "F_x", "F_y", "F_z", "T_oil", "dPd_thermal")]
         real_vrs = [vr[n] for n in reals]
         int_vrs = [vr[n] for n in INTEGERS]
-        for n, (omega, F_x) in enumerate(schedule()):
+        for n, (omega, F_y) in enumerate(schedule()):
             t0 = time.perf_counter()
-            fmu.setReal(inputs, [omega, F_x, 0.0, 0.0, 313.15, 0.0])
+            fmu.setReal(inputs, [omega, 0.0, F_y, 0.0, 313.15, 0.0])
             fmu.doStep(n * H, H)
             values = fmu.getReal(real_vrs)
             fmu.getInteger(int_vrs)
@@ -67,9 +67,9 @@ def run_model(stiffness=True):
     scene = Scene.from_toml(SCENES_DIR / "dem.toml")
     model = DemModel(scene=replace(scene, stiffness=stiffness))
     walls = []
-    for omega, F_x in schedule():
+    for omega, F_y in schedule():
         t0 = time.perf_counter()
-        model.update([omega, F_x, 0.0, 0.0, 313.15, 0.0], H)
+        model.update([omega, 0.0, F_y, 0.0, 313.15, 0.0], H)
         walls.append(time.perf_counter() - t0)
     return walls
 

@@ -37,10 +37,10 @@ NEVER = 10**9  # a refresh interval longer than any run: contact law only
 
 def steady_model(dt=None):
     model = DemModel("6208", "guessasma_oil", dt=dt)
-    model.advance(2e-3, omega=0.0, F_x=F_R)
+    model.advance(2e-3, omega=0.0, F_y=F_R)
     for k in range(1, 21):
-        model.advance(2e-3 + 5e-3 * k / 20, omega=OMEGA * k / 20, F_x=F_R)
-    model.advance(0.03, omega=OMEGA, F_x=F_R)
+        model.advance(2e-3 + 5e-3 * k / 20, omega=OMEGA * k / 20, F_y=F_R)
+    model.advance(0.03, omega=OMEGA, F_y=F_R)
     return model
 
 
@@ -51,7 +51,7 @@ def per_step(model, refresh, steps=STEPS, repeats=REPEATS):
     cpu, wall = [], []
     for _ in range(repeats):
         c0, t0 = time.thread_time(), time.perf_counter()
-        model.advance(model.time + steps * dt, omega=OMEGA, F_x=F_R)
+        model.advance(model.time + steps * dt, omega=OMEGA, F_y=F_R)
         cpu.append((time.thread_time() - c0) / steps * 1e6)
         wall.append((time.perf_counter() - t0) / steps * 1e6)
     return statistics.median(cpu), min(cpu), statistics.median(wall)
@@ -65,7 +65,7 @@ def per_simulated_ms(model, repeats=REPEATS, dt=None):
     cpu, wall = [], []
     for _ in range(repeats):
         c0, t0 = time.thread_time(), time.perf_counter()
-        model.advance(model.time + 1e-3, omega=OMEGA, F_x=F_R)
+        model.advance(model.time + 1e-3, omega=OMEGA, F_y=F_R)
         cpu.append((time.thread_time() - c0) * 1e3)
         wall.append((time.perf_counter() - t0) * 1e3)
     return statistics.median(cpu), statistics.median(wall)

@@ -28,7 +28,14 @@ from ..kernels.ball_dynamics.contacts import groove_approach
 from ..kernels.ball_dynamics.monitor import critical_time_step
 from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_angles, contact_loads
 from ..kernels.ball_dynamics.tribology import race_circle
-from ..kernels.geometry import ball_mass, curvature_radii, free_contact_angle, rolling_kinematics
+from ..kernels.geometry import (
+    ball_direction,
+    ball_mass,
+    curvature_radii,
+    free_contact_angle,
+    pass_frequencies,
+    rolling_kinematics,
+)
 from ..kernels.hertz import (
     hertz_coefficients_approx,
     hertz_coefficients_exact,
@@ -181,7 +188,14 @@ class DemModel:
         self.values = np.zeros(len(self.outputs))
         self.warnings = []  # update() logs none: the monitor stops a step instead
         self.K = np.zeros((5, 5))  # condensed stiffness of the last update (scene option stiffness)
-        arrays = {"out": self.out, "ring": self.ring, "status": self.status, "K": self.K.reshape(-1)}
+        self.frequencies = np.zeros(4)  # FTF, BPFO, BPFI, BSF (Hz) of the last update
+        arrays = {
+            "out": self.out,
+            "ring": self.ring,
+            "status": self.status,
+            "K": self.K.reshape(-1),
+            "freq": self.frequencies,
+        }
         self._plan = gather_plan(self.outputs, arrays)
         self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
         self._before = self.get_state()  # state at the start of the last update(), restored when it fails
@@ -302,11 +316,11 @@ class DemModel:
         self.counters[:] = 0
         for j in range(Z):
             r, z = self._rest
-            psi = 2.0 * math.pi * j / Z
-            self.balls[s.B_X : s.B_X + 3, j] = (r * math.cos(psi), r * math.sin(psi), z)
-            psi_c = psi + math.pi / Z
+            c, sn = ball_direction(j, Z)  # ball 1 on +y (docs/conventions.md)
+            self.balls[s.B_X : s.B_X + 3, j] = (r * c, r * sn, z)
+            c, sn = ball_direction(j + 0.5, Z)  # the cage ball half a pitch ahead
             R = self.par[s.P_R_GUIDE]
-            self.cage[s.C_X : s.C_X + 3, j] = (R * math.cos(psi_c), R * math.sin(psi_c), self.par[s.P_Z_GUIDE])
+            self.cage[s.C_X : s.C_X + 3, j] = (R * c, R * sn, self.par[s.P_Z_GUIDE])
         self.omega = 0.0
 
     def _initialise(self, omega, F_x, F_y, F_z, T_oil):
@@ -536,6 +550,8 @@ class DemModel:
     def _gather(self):
         if self.scene.stiffness:
             self.stiffness_matrix(self.K)
+        o = self.out
+        self.frequencies[:] = pass_frequencies(self.omega, o[s.O_OMEGA_CAGE], o[s.O_OMEGA_BALL_REL], self.bearing.Z)
         for src, idx, dst in self._plan:
             self.values[dst] = src[idx]
 

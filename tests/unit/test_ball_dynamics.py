@@ -37,9 +37,9 @@ ORBIT_TOL = 1e-7  # rad
 def running_6208():
     """A 6208 under 3 kN in the middle of its speed ramp (0 -> 300 rad/s over 3 ms after 1 ms at rest)."""
     model = DemModel("6208", "guessasma_oil", dt=DT, refresh=10)
-    model.advance(1e-3, omega=0.0, F_x=3000.0)
+    model.advance(1e-3, omega=0.0, F_y=3000.0)
     for k in range(1, 16):
-        model.advance(1e-3 + k * 1e-4, omega=300.0 * k / 30, F_x=3000.0)
+        model.advance(1e-3 + k * 1e-4, omega=300.0 * k / 30, F_y=3000.0)
     return model
 
 
@@ -62,7 +62,7 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps):
     par[s.P_REFRESH] = 10
     par[s.P_FILM] = film
     lub = model.lubricant.array
-    omega0, omega1, F, T_oil = 150.0, 160.0, (3000.0, 0.0, 0.0), 313.15
+    omega0, omega1, F, T_oil = 150.0, 160.0, (0.0, 3000.0, 0.0), 313.15  # F_y, on the line of ball 1
     acc = np.zeros(s.A_SIZE)
     status = np.zeros(s.ST_SIZE, dtype=np.int64)
     dyn.advance(
@@ -146,13 +146,14 @@ def test_groove_approach_axial_offset_follows_the_torus():
         assert math.atan2(nz, nx) == pytest.approx(angle, rel=1e-12)
 
 
-def test_static_load_matches_hertz_ball_at_psi_0():
-    """At rest under F_x = 3 kN the ball at psi = 0 carries the same load on both races (no speed, no
+def test_static_load_matches_hertz_ball_on_the_load_line():
+    """At rest under F_y = 3 kN ball 1 (on +y, the load line) carries the same load on both races (no speed, no
     centrifugal force), and its approaches are those of kernels.hertz at that load."""
     model = DemModel("6208", "guessasma_oil")
-    model.advance(4e-3, omega=0.0, F_x=3000.0)
+    model.advance(4e-3, omega=0.0, F_y=3000.0)
     c = model.contacts()
     j = int(np.argmax(c["Q_inner"]))
+    assert j == 0  # ball 1 starts on +y (docs/conventions.md)
     assert c["Q_inner"][j] == pytest.approx(c["Q_outer"][j], rel=2e-3)
     assert 1300.0 < c["Q_inner"][j] < 1600.0
 
@@ -176,9 +177,9 @@ def test_state_round_trip_reproduces_the_run(running_6208):
     """get_state/set_state restore everything: two runs from one saved state agree bit for bit."""
     model = running_6208
     saved = model.get_state()
-    first = model.advance(model.time + 2e-4, omega=model.omega, F_x=3000.0)
+    first = model.advance(model.time + 2e-4, omega=model.omega, F_y=3000.0)
     model.set_state(saved)
-    second = model.advance(model.time + 2e-4, omega=model.omega, F_x=3000.0)
+    second = model.advance(model.time + 2e-4, omega=model.omega, F_y=3000.0)
     assert first == second
     model.set_state(saved)
 
@@ -205,7 +206,7 @@ def test_capacitance_off_is_not_computed():
     from bearing_fmu.scene import Scene
 
     model = DemModel("6208", "guessasma_oil", scene=Scene(name="dem", fidelity="dem", capacitance=False))
-    out = model.advance(2e-3, omega=50.0, F_x=3000.0)
+    out = model.advance(2e-3, omega=50.0, F_y=3000.0)
     assert "C_bearing" not in out
     assert not model.trib[s.T_CAP].any()
     assert model.trib[s.T_H_C].max() > 0.0
@@ -219,9 +220,9 @@ def test_thermal_clearance_change_acts_like_the_clearance():
     loads = []
     for Pd, dPd in ((12.6e-6, 0.0), (0.0, 12.6e-6)):
         model = DemModel("6208", "guessasma_oil", Pd=Pd)
-        model.advance(2e-3, omega=0.0, F_x=3000.0, dPd_thermal=dPd)
-        model.advance(7e-3, omega=100.0, F_x=3000.0, dPd_thermal=dPd)
-        model.advance(15e-3, omega=100.0, F_x=3000.0, dPd_thermal=dPd)
+        model.advance(2e-3, omega=0.0, F_y=3000.0, dPd_thermal=dPd)
+        model.advance(7e-3, omega=100.0, F_y=3000.0, dPd_thermal=dPd)
+        model.advance(15e-3, omega=100.0, F_y=3000.0, dPd_thermal=dPd)
         loads.append(model.contacts()["Q_inner"])
     assert np.max(np.abs(loads[0] - loads[1])) < 0.005 * np.max(loads[0])
 
@@ -250,8 +251,8 @@ def test_bad_step_settings_are_rejected(kwargs, word):
 def test_step_settings_set_the_time_step_and_the_refresh():
     """dt = safety x the stability limit at the call's loads; refresh = the interval in whole steps."""
     model = DemModel("6208", "guessasma_oil", safety=0.25, refresh_interval=30e-6)
-    limit = model.stable_time_step(F_x=3000.0, omega=0.0)  # at the state the call starts from
-    model.advance(1e-4, omega=0.0, F_x=3000.0)
+    limit = model.stable_time_step(F_y=3000.0, omega=0.0)  # at the state the call starts from
+    model.advance(1e-4, omega=0.0, F_y=3000.0)
     assert model.dt <= 0.25 * limit and model.dt == pytest.approx(0.25 * limit, rel=0.05)
     assert model.refresh == round(30e-6 / model.dt)
 
@@ -261,7 +262,7 @@ def test_too_large_time_step_is_reported():
     time step that works."""
     model = DemModel("6208", "guessasma_oil", dt=20e-6)
     with pytest.raises(DemUnstableError, match=r"use dt <= .* s"):
-        model.advance(5e-3, omega=0.0, F_x=3000.0)
+        model.advance(5e-3, omega=0.0, F_y=3000.0)
 
 
 @pytest.mark.parametrize("lubricant, T_oil", [("guessasma_oil", 313.15), ("iso_vg68_mineral", 343.15)])
@@ -307,13 +308,13 @@ def test_record_returns_time_series_of_outputs_and_contacts():
     """record() samples every interval: times, bearing outputs and per-ball arrays (n, Z) under 'contacts'; the last
     sample equals a direct advance() from the same state."""
     model = DemModel("6208", "guessasma_oil")
-    model.advance(1e-3, omega=0.0, F_x=3000.0)
+    model.advance(1e-3, omega=0.0, F_y=3000.0)
     saved = model.get_state()
-    rec = model.record(1.5e-3, 1e-4, omega=10.0, F_x=3000.0)
+    rec = model.record(1.5e-3, 1e-4, omega=10.0, F_y=3000.0)
     np.testing.assert_allclose(rec["t"], np.linspace(1.1e-3, 1.5e-3, 5), rtol=1e-12)
     assert rec["contacts"]["Q_inner"].shape == (5, model.bearing.Z) and rec["omega_cage"].shape == (5,)
     assert rec["Lambda_outer"][-1] == model.outputs_dict()["Lambda_outer"]
     model.set_state(saved)
     for k in range(1, 6):
-        out = model.advance(1e-3 + k * 1e-4, omega=10.0 * k / 5, F_x=3000.0)
+        out = model.advance(1e-3 + k * 1e-4, omega=10.0 * k / 5, F_y=3000.0)
     assert out["Q_max_inner"] == rec["Q_max_inner"][-1]

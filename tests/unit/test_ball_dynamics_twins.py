@@ -15,18 +15,23 @@ from tests.reference import ref_ball_dynamics_monitor as ref_monitor
 from tests.reference import ref_ball_dynamics_outputs as ref_outputs
 
 RTOL = 1e-10  # same operations in another order (vector algebra against scalar loops)
+# cage-ball accelerations: their contacts are damped, c0 delta^(1/4) v, whose rounding near contact onset is not
+# bounded by the force itself. Measured on the 6208 fixture with its rest phase 0.4, 0.5, 0.6, 0.7 ms, balls set
+# from +x or from +y: the largest difference is 2.4e-10 of the balls' acceleration scale, and RTOL failed for
+# 2 of the 4 states even with the earlier ball placement. 1e-9 is 4 times the largest measured difference.
+CAGE_RTOL = 1e-9
 
 
 @pytest.fixture(scope="module")
 def models():
     """6208: 3 kN radial, 0 -> 200 rad/s over 2 ms after 0.5 ms at rest; B7214C: 800 N axial, 0 -> 300 rad/s."""
     m6208 = DemModel("6208", "guessasma_oil", dt=3e-6, refresh=10)
-    m6208.advance(0.5e-3, omega=0.0, F_x=3000.0)
+    m6208.advance(0.5e-3, omega=0.0, F_y=3000.0)
     for k in range(1, 5):
-        m6208.advance(0.5e-3 + 0.5e-3 * k, omega=50.0 * k, F_x=3000.0)
+        m6208.advance(0.5e-3 + 0.5e-3 * k, omega=50.0 * k, F_y=3000.0)
     b7214 = DemModel("B7214C", "iso_vg68_mineral")
-    b7214.advance(0.5e-3, omega=0.0, F_z=800.0, F_x=200.0)
-    b7214.advance(1e-3, omega=300.0, F_z=800.0, F_x=200.0)
+    b7214.advance(0.5e-3, omega=0.0, F_z=800.0, F_y=200.0)
+    b7214.advance(1e-3, omega=300.0, F_z=800.0, F_y=200.0)
     return {"6208": m6208, "B7214C": b7214}
 
 
@@ -38,7 +43,7 @@ def _copy(state):
 def test_initialise_accelerations_matches_twin(models, name):
     model = models[name]
     kernel_state, twin_state = _copy(model.get_state()), _copy(model.get_state())
-    F, omega, T_oil = (3000.0, 50.0, 800.0), model.omega, 313.15
+    F, omega, T_oil = (-50.0, 3000.0, 800.0), model.omega, 313.15  # 3 kN on the line of ball 1 (+y), 50 N across
     Z = model.bearing.Z
     dyn.initialise_accelerations(
         *(kernel_state[k] for k in ("balls", "cage", "ring", "spring", "trib", "counters")),
@@ -60,8 +65,8 @@ def test_initialise_accelerations_matches_twin(models, name):
     np.testing.assert_allclose(
         kernel_state["cage"][cage_acc],
         twin_state["cage"][cage_acc],
-        rtol=RTOL,
-        atol=RTOL * np.max(np.abs(twin_state["balls"][s.B_AX : s.B_AX + 3])),
+        rtol=CAGE_RTOL,
+        atol=CAGE_RTOL * np.max(np.abs(twin_state["balls"][s.B_AX : s.B_AX + 3])),
     )
     ring_acc = slice(s.R_AX, s.R_AX + 3)
     np.testing.assert_allclose(kernel_state["ring"][ring_acc], twin_state["ring"][ring_acc], rtol=1e-9, atol=1e-6)

@@ -18,7 +18,13 @@ import pytest
 
 from bearing_fmu.kernels import jones_harris as qk
 from bearing_fmu.kernels.ball_dynamics.state import T_P_FILM
-from bearing_fmu.kernels.geometry import ball_mass, centrifugal_force, defect_frequencies, rolling_kinematics
+from bearing_fmu.kernels.geometry import (
+    BALL_1_AZIMUTH,
+    ball_mass,
+    centrifugal_force,
+    defect_frequencies,
+    rolling_kinematics,
+)
 from bearing_fmu.models.dem import DemModel, DemUnstableError
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
@@ -29,15 +35,15 @@ F_R = 3000.0
 
 def start_up(model, omega, F=F_R, ramp=5e-3, settle=2e-3, intervals=20):
     """Settle at rest under F, then ramp the speed linearly to omega (rad/s) over `ramp` seconds."""
-    model.advance(settle, omega=0.0, F_x=F)
+    model.advance(settle, omega=0.0, F_y=F)
     for k in range(1, intervals + 1):
-        model.advance(settle + ramp * k / intervals, omega=omega * k / intervals, F_x=F)
+        model.advance(settle + ramp * k / intervals, omega=omega * k / intervals, F_y=F)
 
 
 def steady_means(model, omega, until=0.030, window=0.010, parts=5):
     """Run to `until` at omega, then average the outputs of `parts` intervals over `window` seconds."""
-    model.advance(until, omega=omega, F_x=F_R)
-    samples = [model.advance(until + window * k / parts, omega=omega, F_x=F_R) for k in range(1, parts + 1)]
+    model.advance(until, omega=omega, F_y=F_R)
+    samples = [model.advance(until + window * k / parts, omega=omega, F_y=F_R) for k in range(1, parts + 1)]
     return {key: float(np.mean([s[key] for s in samples])) for key in samples[0]}
 
 
@@ -87,7 +93,7 @@ def test_film_parameter_and_torque_at_500_rad_s(steady_500):
     quasi-static model keeps a ball on the load line (the losses are not linear in the load)."""
     _, out, _ = steady_500
     qs = QuasiStaticModel("6208", "guessasma_oil", scene=Scene(name="qs", fidelity="quasi_static", torque=True))
-    ref = qs.evaluate(omega=500.0, F_x=F_R)
+    ref = qs.evaluate(omega=500.0, F_y=F_R)
     print(
         f"Lambda_out DEM {out['Lambda_outer']:.4f} QS {ref['Lambda_outer']:.4f}; Lambda_in DEM "
         f"{out['Lambda_inner']:.4f} QS {ref['Lambda_inner']:.4f}; C {out['C_bearing'] * 1e12:.1f} pF "
@@ -103,7 +109,7 @@ def test_film_parameter_and_torque_at_500_rad_s(steady_500):
     saved = model.get_state()
     power, film = [], []
     for _ in range(5):
-        power.append(model.advance(model.time + 1e-3, omega=500.0, F_x=F_R)["P_loss"])
+        power.append(model.advance(model.time + 1e-3, omega=500.0, F_y=F_R)["P_loss"])
         film.append(model.trib[T_P_FILM].sum())
     model.set_state(saved)
     print(f"P_loss {np.mean(power):.2f} W, of which Houpert film losses {np.mean(film):.2f} W")
@@ -115,20 +121,20 @@ def test_ring_displacement_spectrum_peaks_at_bpfo(steady_500):
     the balls pass the load line Z times per cage revolution). BPFO = Z f_r (1 - gamma)/2 = 283.64 Hz at
     500 rad/s (Harris & Kotzalas ch. 8). Ring displacement sampled at 10 kHz over 0.4 s (Hann window,
     16x zero padding: bin 2.5 Hz, interpolated peak well inside the 1 % = 2.8 Hz tolerance): the spectrum
-    across the load (y) peaks at BPFO within 1 %; along the load (x) its largest peak above 150 Hz does
+    across the load (x) peaks at BPFO within 1 %; along the load (y) its largest peak above 150 Hz does
     (a slower 52 Hz ball-set oscillation of similar amplitude sits below)."""
     model = steady_500[0]
     saved = model.get_state()
     fs, n = 10000.0, 4000
     t0 = model.time
     disp = np.array(
-        [[o["x"], o["y"]] for o in (model.advance(t0 + (i + 1) / fs, omega=500.0, F_x=F_R) for i in range(n))]
+        [[o["x"], o["y"]] for o in (model.advance(t0 + (i + 1) / fs, omega=500.0, F_y=F_R) for i in range(n))]
     )
     model.set_state(saved)
     bpfo = defect_frequencies(500.0, D, DM, 0.0, Z)[1]
     f = np.fft.rfftfreq(16 * n, 1.0 / fs)
     peaks = []
-    for axis, low in ((1, 20.0), (0, 150.0)):
+    for axis, low in ((0, 20.0), (1, 150.0)):  # across the load F_y, then along it
         spectrum = np.abs(np.fft.rfft((disp[:, axis] - disp[:, axis].mean()) * np.hanning(n), 16 * n))
         band = f > low
         peaks.append(f[band][np.argmax(spectrum[band])])
@@ -164,11 +170,11 @@ def test_film_parameter_versus_speed(quasi_static_6208, omega):
     ring at BPFO and the cage contacts; measured at most 1.2 %)."""
     model = DemModel("6208", "guessasma_oil")
     start_up(model, omega)
-    model.advance(0.047, omega=omega, F_x=F_R)
-    samples = [model.advance(0.047 + 0.002 * k, omega=omega, F_x=F_R) for k in range(1, 6)]
+    model.advance(0.047, omega=omega, F_y=F_R)
+    samples = [model.advance(0.047 + 0.002 * k, omega=omega, F_y=F_R) for k in range(1, 6)]
     lam_o = float(np.mean([o["Lambda_outer"] for o in samples]))
     lam_i = float(np.mean([o["Lambda_inner"] for o in samples]))
-    ref = quasi_static_6208.evaluate(omega=omega, F_x=F_R)
+    ref = quasi_static_6208.evaluate(omega=omega, F_y=F_R)
     c = model.contacts()
     j = int(np.argmax(c["Q_inner"]))
     F_c = centrifugal_force(ball_mass(D, 7850.0), DM, samples[-1]["omega_cage"])
@@ -201,13 +207,13 @@ def test_slow_drive_load_distribution_matches_quasi_static(Pd, F, eps_published)
     within 2 % of the quasi-static one and of the published value to its printed digits (+-0.005 +
     the 2 %). At eps = 0.5 no inner contact is loaded beyond |psi| > 90 deg."""
     model = DemModel("6208", "guessasma_oil", Pd=Pd)
-    model.advance(3e-3, omega=0.0, F_x=F)
-    model.advance(4e-3, omega=1.0, F_x=F)
-    out = model.advance(12e-3, omega=1.0, F_x=F)
+    model.advance(3e-3, omega=0.0, F_y=F)
+    model.advance(4e-3, omega=1.0, F_y=F)
+    out = model.advance(12e-3, omega=1.0, F_y=F)
     c = model.contacts()
-    offset = float(np.mean(np.angle(np.exp(1j * (c["psi"] - 2.0 * np.pi * np.arange(Z) / Z)))))
+    offset = float(np.mean(np.angle(np.exp(1j * (c["psi"] - BALL_1_AZIMUTH - 2.0 * np.pi * np.arange(Z) / Z)))))
     qs = QuasiStaticModel("6208", "guessasma_oil", scene=Scene(name="qs", fidelity="quasi_static"), Pd=Pd)
-    ref = qs.evaluate(omega=1.0, F_x=F * math.cos(offset), F_y=-F * math.sin(offset))
+    ref = qs.evaluate(omega=1.0, F_x=F * math.sin(offset), F_y=F * math.cos(offset))
     Q_qs = qs.balls[qk.BQ_Q_I]
     err = np.max(np.abs(c["Q_inner"] - Q_qs)) / Q_qs.max()
     eps = 0.5 * (1.0 - Pd / (2.0 * math.hypot(out["x"], out["y"])))
@@ -220,7 +226,7 @@ def test_slow_drive_load_distribution_matches_quasi_static(Pd, F, eps_published)
     assert eps == pytest.approx(eps_qs, rel=0.02)
     assert abs(eps - eps_published) <= 0.005 + 0.02 * eps_published
     if eps_published == 0.5:
-        behind = np.abs(np.angle(np.exp(1j * c["psi"]))) > 0.5 * math.pi
+        behind = np.abs(np.angle(np.exp(1j * (c["psi"] - BALL_1_AZIMUTH)))) > 0.5 * math.pi  # from the load line
         assert np.all(c["Q_inner"][behind] == 0.0)
 
 
@@ -230,11 +236,11 @@ def test_default_time_step_is_stable_for_0_2_s(omega, F):
     """At the default time step no instability for 0.2 s simulated over 100-1700 rad/s and 0.75-7.5 kN
     (the monitor would raise DemUnstableError), and the cage runs at its kinematic speed within 1 %."""
     model = DemModel("6208", "guessasma_oil")
-    model.advance(2e-3, omega=0.0, F_x=F)
+    model.advance(2e-3, omega=0.0, F_y=F)
     for k in range(1, 21):
-        model.advance(2e-3 + 5e-3 * k / 20, omega=omega * k / 20, F_x=F)
-    model.advance(0.2, omega=omega, F_x=F)
-    out = model.advance(0.21, omega=omega, F_x=F)
+        model.advance(2e-3 + 5e-3 * k / 20, omega=omega * k / 20, F_y=F)
+    model.advance(0.2, omega=omega, F_y=F)
+    out = model.advance(0.21, omega=omega, F_y=F)
     cage = rolling_kinematics(omega, D, DM, 0.0)[0]
     assert out["omega_cage"] == pytest.approx(cage, rel=0.01)
 

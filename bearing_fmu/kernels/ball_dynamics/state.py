@@ -5,8 +5,9 @@ restored as a whole (FMU state, rollback). Row-major ``[row, ball]`` layouts kee
 balls contiguous.
 
 Frames and signs: fixed frame with z along the bearing axis; the outer ring is fixed, the inner ring
-turns about z at omega (rad/s, prescribed) and translates (x, y, z). Azimuth psi is measured from x;
-a load F_x > 0 on the inner ring loads the ball at psi = 0.
+turns about z at omega (rad/s, prescribed) and translates (x, y, z). Azimuth psi is measured from x toward y;
+a load F_x > 0 on the inner ring loads the ball at psi = 0. Ball 1 (index 0) starts on +y, the line of F_y
+(docs/conventions.md).
 """
 
 # ---- steel balls: float64[B_SIZE, Z] ------------------------------------------------------------
