@@ -59,8 +59,11 @@ _PACKAGES = {packages!r}
 def _stable_copy():
     """Copy the bundled packages once per version to a stable directory (readable by every user who
     can read its base: a shared $BEARING_FMU_CACHE serves everyone)."""
+    home = os.path.expanduser("~")
+    if not (os.environ.get("BEARING_FMU_CACHE") or os.environ.get("XDG_CACHE_HOME") or os.path.isabs(home)):
+        raise OSError("no home directory")
     base = os.environ.get("BEARING_FMU_CACHE") or os.path.join(
-        os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"), "bearing_fmu")
+        os.environ.get("XDG_CACHE_HOME") or os.path.join(home, ".cache"), "bearing_fmu")
     target = Path(base) / _BUNDLE
     if not all((target / p / "__init__.py").is_file() for p in _PACKAGES):
         Path(base).mkdir(parents=True, exist_ok=True)

@@ -34,7 +34,6 @@ import sys
 import tempfile
 from pathlib import Path
 
-import numba
 from numba import njit
 from numba.core import caching
 
@@ -61,9 +60,13 @@ def kernel_source_hash(root=_ROOT):
 
 def cache_base():
     """$BEARING_FMU_CACHE, else bearing_fmu in the per-user cache directory (XDG_CACHE_HOME or ~/.cache;
-    ~/Library/Caches on macOS, LOCALAPPDATA on Windows)."""
+    ~/Library/Caches on macOS, LOCALAPPDATA on Windows). OSError if there is no home directory."""
     if os.environ.get("BEARING_FMU_CACHE"):
         return Path(os.environ["BEARING_FMU_CACHE"])
+    try:
+        Path.home()
+    except RuntimeError as error:  # no HOME and no password entry
+        raise FileNotFoundError(f"no home directory ({error})") from None
     if sys.platform == "win32":
         user = Path(os.environ.get("LOCALAPPDATA") or Path.home() / "AppData" / "Local")
     elif sys.platform == "darwin":
@@ -117,22 +120,27 @@ class CacheTiers:
 
     def __init__(self, key=None):
         self.key = key or kernel_source_hash()
-        user = user_cache_dir(self.key)
-        self.write, error = writable_dir(user)
-        self.read = [(user, None)]
+        try:
+            user = user_cache_dir(self.key)
+        except OSError as error:
+            user, self.write, self.read, failure = None, None, [], error
+        else:
+            self.write, failure = writable_dir(user)
+            self.read = [(user, None)]
         if self.write is None:
+            filled = user is not None and user.is_dir()
             self.write = private_temp_dir(self.key)
             self.read.append((self.write, None))
             logger.warning(
                 "bearing_fmu: numba cache %s cannot be written (%s); kernels compiled here are kept in %s%s",
-                user,
-                error,
+                user or "in the home directory",
+                failure,
                 self.write,
-                " (its existing entries are still used)" if user.is_dir() else "",
+                " (its existing entries are still used)" if filled else "",
             )
 
     def add_compiled_dir(self, path):
-        """Use the compiled code under path (built by build_compiled_dir's layout: target.json and
+        """Use the compiled code under path (as bearing_fmu.compiled_code writes it: target.json and
         <kernel source hash>/...) if it was built for this platform and these sources."""
         path = Path(path)
         try:
@@ -248,6 +256,3 @@ def kernel(function=None, **overrides):
         return dispatcher
 
     return decorate if function is None else decorate(function)
-
-
-__all__ = ["kernel", "add_compiled_dir", "kernel_source_hash", "cache_base", "JIT_OPTIONS", "numba"]

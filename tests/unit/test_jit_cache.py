@@ -249,3 +249,17 @@ def test_a_directory_without_target_description_is_not_registered(tmp_path):
     (tmp_path / jit.kernel_source_hash()).mkdir()
     assert jit.add_compiled_dir(tmp_path) is False
     assert jit.add_compiled_dir(tmp_path / "missing") is False
+
+
+def test_no_home_directory_at_all_falls_back_with_a_warning(tmp_path, monkeypatch, caplog):
+    def no_home():
+        raise RuntimeError("Could not determine home directory.")
+
+    for name in ("BEARING_FMU_CACHE", "XDG_CACHE_HOME", "NUMBA_CACHE_DIR"):
+        monkeypatch.delenv(name, raising=False)
+    monkeypatch.setattr(jit.Path, "home", staticmethod(no_home))
+    monkeypatch.setattr(jit.tempfile, "tempdir", str(tmp_path))
+    tiers = jit.CacheTiers("h" * 64)
+    assert tiers.write == tmp_path / f"bearing_fmu-{os.getuid()}" / "numba" / ("h" * 64)
+    assert tiers.read == [(tiers.write, None)]
+    assert "no home directory" in caplog.text and str(tiers.write) in caplog.text
