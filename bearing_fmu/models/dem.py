@@ -37,11 +37,18 @@ from ..kernels.hertz import (
     reduced_modulus,
 )
 from ..kernels.torque import ALPHA_HYSTERESIS_STEEL
-from ..params import load_bearing, load_lubricant
+from ..params import clearance_limits, load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
 from .declarations import DEM_INPUTS, DEM_OUTPUTS
 from .declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
-from .variables import DM_N_LIMIT, P_MAX_ERROR, InputError, check_oil_temperature, check_speed
+from .variables import (
+    DM_N_LIMIT,
+    P_MAX_ERROR,
+    InputError,
+    check_clearance,
+    check_oil_temperature,
+    check_speed,
+)
 
 # PA66 cage balls when the bearing file has no [material.cage] (Farah 2020: E_c = 3.3 GPa, nu_c = 0.41)
 CAGE_E = 3.3e9
@@ -125,9 +132,8 @@ class DemModel:
         self.bearing = b = load_bearing(bearing)
         self.lubricant = load_lubricant(lubricant)
         self.Pd = b.Pd if Pd is None else float(Pd)
-        limit = 0.02 * b.D
-        if not (math.isfinite(self.Pd) and abs(self.Pd) <= limit):
-            raise InputError(f"Pd = {Pd} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m (|Pd| <= 0.02 D)")
+        check_clearance(self.Pd, b, Pd is not None)
+        self._clearance_limits = clearance_limits(b.D, b.f_i, b.f_o)
         if dt is not None and not (math.isfinite(dt) and 0.0 < dt <= 1e-4):
             raise InputError(f"dt = {dt} s is outside the allowed range ]0, 1e-4] s")
         if refresh is not None and not (float(refresh) == int(refresh) and 1 <= int(refresh) <= 100000):
@@ -350,10 +356,13 @@ class DemModel:
             )
         check_speed(omega, self.omega_max)
         check_oil_temperature(T_oil)
-        limit = 0.02 * self.bearing.D
-        if not (math.isfinite(dPd_thermal) and abs(dPd_thermal) <= limit):
+        # the clearance in effect, P_d + dPd_thermal, keeps the geometric limits of P_d itself (|P_d| <= A:
+        # neither an interference beyond the groove clearance nor a free contact angle beyond 60 deg)
+        low, high = self._clearance_limits
+        if not (math.isfinite(dPd_thermal) and low <= self.Pd + dPd_thermal <= high):
             raise InputError(
-                f"dPd_thermal = {dPd_thermal} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m"
+                f"dPd_thermal = {dPd_thermal} m is outside the allowed range [{low - self.Pd:.4g}, "
+                f"{high - self.Pd:.4g}] m (Pd + dPd_thermal within [{low:.4g}, {high:.4g}] m)"
             )
         load_limit = self.load_limit
         for name, value in (("F_x", F_x), ("F_y", F_y), ("F_z", F_z)):

@@ -226,6 +226,21 @@ def test_thermal_clearance_change_acts_like_the_clearance():
     assert np.max(np.abs(loads[0] - loads[1])) < 0.005 * np.max(loads[0])
 
 
+def test_clearance_limits_follow_the_groove_geometry():
+    """P_d and P_d + dPd_thermal are refused beyond the geometric limits |P_d| <= A = (f_i + f_o - 1) D
+    (params.clearance_limits, as the quasi-static fidelity); inside them, beyond the former 0.02 D, they run.
+    6208: D = 12.6 mm, f = 0.52 on both races, so A = 0.04 D = 504 um."""
+    A = 0.04 * 0.0126
+    with pytest.raises(InputError, match=r"Pd = .* \(set\) is outside the allowed range \[-0.000504, 0.000504\]"):
+        DemModel("6208", "guessasma_oil", Pd=1.01 * A)
+    model = DemModel("6208", "guessasma_oil", Pd=0.5 * A)  # 252 um: 0.02 D, the former limit, accepted
+    model.advance(1e-4, omega=10.0, F_x=1000.0, dPd_thermal=0.4 * A)  # P_d in effect 0.9 A
+    with pytest.raises(InputError, match=r"dPd_thermal = .* allowed range \[-0.000756, 0.000252\]"):
+        model.advance(2e-4, omega=10.0, F_x=1000.0, dPd_thermal=0.51 * A)
+    with pytest.raises(InputError, match="dPd_thermal = .* allowed range"):
+        model.advance(2e-4, omega=10.0, F_x=1000.0, dPd_thermal=-1.51 * A)
+
+
 @pytest.mark.parametrize("dt", [-1e-6, 0.0, math.nan])
 def test_bad_time_step_is_rejected(dt):
     with pytest.raises(InputError, match="dt = .* allowed range"):
