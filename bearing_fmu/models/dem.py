@@ -24,10 +24,9 @@ from bearing_fmu_common.variables import gather_plan, select
 
 from ..kernels.ball_dynamics import integrator as dyn
 from ..kernels.ball_dynamics import state as s
-from ..kernels.ball_dynamics.contacts import groove_approach
 from ..kernels.ball_dynamics.monitor import critical_time_step
 from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_angles, contact_loads
-from ..kernels.ball_dynamics.tribology import race_circle
+from ..kernels.ball_dynamics.stiffness import stiffness_matrix
 from ..kernels.geometry import ball_mass, curvature_radii, free_contact_angle, rolling_kinematics
 from ..kernels.hertz import (
     hertz_coefficients_approx,
@@ -556,54 +555,11 @@ class DemModel:
 
     def stiffness_matrix(self, K=None):
         """5x5 stiffness dF_i/dd_j of the inner ring in the current state, (F) = (F_x, F_y, F_z, M_x, M_y) in N and
-        N.m, (d) = (x, y, z, theta_x, theta_y) in m and rad, the quasi-static fidelity's convention (docs/dem.md,
-        Stiffness): each loaded contact is a spring of tangent stiffness 1.5 K_h delta^0.5 (N/m) along its normal
-        plus Q/(r_g + delta) across it in the ball's radial plane (the normal turns about the groove's curvature
-        centre); each ball's inner and outer contacts are condensed in series (the ball's two in-plane
-        coordinates eliminated), and the ball acts on the inner groove's curvature-centre point at its azimuth.
-        A ball open on either race adds nothing. Written into K (float64[5, 5]) if given; returned."""
+        N.m, (d) = (x, y, z, theta_x, theta_y) in m and rad, the quasi-static fidelity's convention: each ball's
+        inner and outer contact tangent stiffnesses condensed in series (kernels.ball_dynamics.stiffness,
+        docs/dem.md, Stiffness). Written into K (float64[5, 5]) if given; returned."""
         K = np.zeros((5, 5)) if K is None else K
-        p, balls, ring = self.par, self.balls, self.ring
-        circles = (race_circle(0, ring, p), race_circle(1, ring, p))
-        rho_i, z_i = p[s.P_RHO_I], p[s.P_Z_I]
-        reduced, maps = [], []
-        for j in range(balls.shape[1]):
-            x, y, z = balls[s.B_X, j], balls[s.B_X + 1, j], balls[s.B_X + 2, j]
-            r = math.hypot(x, y)
-            c, sn = x / r, y / r  # the ball's radial direction e_r = (c, sn, 0)
-            springs = []  # (xx, xz, zz) of each contact's 2x2 stiffness in the radial plane (e_r, e_z)
-            for race in (0, 1):
-                cx, cy, cz, rho = circles[race]
-                delta, nx, ny, nz = groove_approach(x, y, z, cx, cy, cz, rho, p[s.P_RG_I + race])
-                if delta <= 0.0:
-                    break
-                k_n = 1.5 * p[s.P_KH_I + race] * math.sqrt(delta)
-                k_t = p[s.P_KH_I + race] * delta * math.sqrt(delta) / (p[s.P_RG_I + race] + delta)  # Q/(r_g + delta)
-                n_r, n_z = nx * c + ny * sn, nz
-                scale = 1.0 / (n_r * n_r + n_z * n_z)
-                d = k_n - k_t
-                springs.append((k_t + d * n_r * n_r * scale, d * n_r * n_z * scale, k_t + d * n_z * n_z * scale))
-            if len(springs) < 2:
-                continue
-            (a, b, e), (a_o, b_o, e_o) = springs
-            # the ball condensed: K_i - K_i (K_i + K_o)^-1 K_i, i.e. K_i and K_o in series
-            sa, sb, se = a + a_o, b + b_o, e + e_o
-            det = sa * se - sb * sb
-            ia, ib, ie = se / det, -sb / det, sa / det
-            # K_i (S^-1 K_i): m = S^-1 K_i
-            m11, m12 = ia * a + ib * b, ia * b + ib * e
-            m21, m22 = ib * a + ie * b, ib * b + ie * e
-            reduced.append(
-                ((a - (a * m11 + b * m21), b - (a * m12 + b * m22)), (b - (b * m11 + e * m21), e - (b * m12 + e * m22)))
-            )
-            # displacement of the inner curvature-centre point at the azimuth (rho_i e_r + z_i e_z from the ring's
-            # origin) along e_r and e_z for the ring DOFs (x, y, z, theta_x, theta_y)
-            maps.append(((c, sn, 0.0, -z_i * sn, z_i * c), (0.0, 0.0, 1.0, rho_i * sn, -rho_i * c)))
-        if reduced:
-            G = np.array(maps)
-            np.einsum("jai,jab,jbk->ik", G, np.array(reduced), G, out=K)
-        else:
-            K[...] = 0.0
+        stiffness_matrix(self.balls, self.ring, self.par, K)
         return K
 
     def _copy_state(self, target, source):

@@ -86,6 +86,7 @@ COVERED_THROUGH = {
     BD + "contacts.groove_approach": (BD + "contacts.ball_race_contact", "approach and normal of the torus"),
     BD + "contacts.contact_damping": (BD + "contacts.ball_race_contact", "C_n by regime (boundary and mixed)"),
     BD + "contacts.tangential_spring": (BD + "contacts.ball_race_contact", "sticking and slipping springs"),
+    BD + "stiffness._contact_spring": (BD + "stiffness.stiffness_matrix", "the in-plane spring of each loaded contact"),
     BD + "cage.ball_cage_contact": (BD + "integrator.compute_forces", "ball - cage-ball contacts of a step"),
     BD + "cage.cage_guide_contact": (BD + "integrator.compute_forces", "cage ball - channel contacts of a step"),
     BD + "cage.damped_hertz": (BD + "cage.ball_cage_contact", "the damped Hertz law of both cage contacts"),
