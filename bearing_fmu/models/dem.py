@@ -109,7 +109,9 @@ class DemModel:
     refresh interval in steps (>= 1); None = every refresh_interval (s) of simulated time. The defaults
     SAFETY and REFRESH_INTERVAL are chosen from the error-vs-run-time front (docs/reports/dem_error.md). Pd: diametral
     clearance (m) overriding the file. ring_mass: inner-ring mass (kg); None = estimated from the bore.
-    kt_ratio: tangential/normal stiffness (-).
+    kt_ratio: tangential/normal stiffness (-). averaged: True (default) reports torque, P_loss, Q_inner_ring,
+    Q_outer_ring and C_bearing as means over each advance() interval (what a co-simulation partner integrates:
+    the energy of the step), False their values at the interval's last step (docs/dem.md, Outputs).
     """
 
     def __init__(
@@ -124,6 +126,7 @@ class DemModel:
         kt_ratio=KT_RATIO,
         safety=SAFETY,
         refresh_interval=REFRESH_INTERVAL,
+        averaged=True,
     ):
         self.scene = (scene or Scene(name="dem", fidelity="dem")).validate()
         if self.scene.fidelity != "dem":
@@ -141,6 +144,7 @@ class DemModel:
             raise InputError(f"safety = {safety} is outside the allowed range ]0, 1]")
         if not (math.isfinite(refresh_interval) and 0.0 < refresh_interval <= 1e-3):
             raise InputError(f"refresh_interval = {refresh_interval} s is outside the allowed range ]0, 1e-3] s")
+        self.averaged = bool(averaged)
         self.safety = float(safety)
         self.refresh_interval = float(refresh_interval)
         if not (math.isfinite(kt_ratio) and 0.1 <= kt_ratio <= 1.5):
@@ -450,6 +454,7 @@ class DemModel:
             interval,
             orbit0,
             self.scene.background_capacitance,
+            self.averaged,
             self._Q,
             self._alpha,
             self.out,

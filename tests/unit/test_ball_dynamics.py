@@ -86,7 +86,7 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps):
         status,
     )
     assert status[s.ST_CODE] == s.STATUS_OK
-    energy = ref.advance(twin_state, par, lub, steps, DT, omega0, omega1, np.array(F), T_oil)
+    energy, last_power, capacitance = ref.advance(twin_state, par, lub, steps, DT, omega0, omega1, np.array(F), T_oil)
     report = {}
     for name in ("balls", "cage", "ring", "spring", "trib"):
         a, b = kernel_state[name], twin_state[name]
@@ -106,6 +106,8 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps):
             errs = [_scale_err(a, b)]
         report[name] = max(errs)
     report["dissipated"] = _scale_err(acc[s.A_DISS_I : s.A_DISS_O + 1], energy)
+    report["last step's power"] = _scale_err(acc[s.A_POWER_I : s.A_POWER_O + 1], last_power)
+    report["capacitance x time"] = _scale_err(acc[s.A_CAP : s.A_CAP + 1], np.array([capacitance]))
     print("kernel vs twin, largest scaled difference:", {k: f"{v:.2e}" for k, v in report.items()})
     assert np.array_equal(kernel_state["counters"], twin_state["counters"])
     for name, err in report.items():
@@ -113,6 +115,7 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps):
     # the state really is in motion and loaded: the comparison is not trivial
     assert np.max(twin_state["trib"][s.T_Q]) > 1000.0
     assert np.max(np.abs(twin_state["spring"])) > 0.0
+    assert capacitance > 0.0 and last_power.min() > 0.0
 
 
 def test_groove_approach_radial_ball_gives_hertz_load():

@@ -108,13 +108,16 @@ def test_contact_loads_angles_and_outputs_match_twin(models, name):
     assert (Q_twin == 0.0).any() or name == "B7214C"  # the 6208 under radial load has open contacts
     acc = np.zeros(s.A_SIZE)
     acc[s.A_DISS_I], acc[s.A_DISS_O] = 2.0e-3, 3.0e-3
+    acc[s.A_POWER_I], acc[s.A_POWER_O], acc[s.A_CAP] = 1.5, 2.5, 4e-14
     orbit0 = float(model.balls[s.B_ORBIT].sum()) - 0.1 * Z
-    args = (model.balls, model.cage, model.ring, model.trib, model.par, acc, model.omega, 1e-3, orbit0, 1e-11)
-    out = np.zeros(s.O_SIZE)
-    outputs.bearing_outputs(*args, Q, alpha, out)
-    twin = ref_outputs.bearing_outputs(*args)
-    np.testing.assert_allclose(out, twin, rtol=1e-9, atol=1e-25)
-    assert out[s.O_C_BEARING] > 1e-11 and out[s.O_TORQUE] > 0.0 and out[s.O_QMAX_I] > 0.0
+    for averaged in (True, False):
+        args = (model.balls, model.cage, model.ring, model.trib, model.par, acc, model.omega, 1e-3, orbit0, 1e-11)
+        out = np.zeros(s.O_SIZE)
+        outputs.bearing_outputs(*args, averaged, Q, alpha, out)
+        twin = ref_outputs.bearing_outputs(*args, averaged)
+        np.testing.assert_allclose(out, twin, rtol=1e-9, atol=1e-25)
+        assert out[s.O_C_BEARING] > 1e-11 and out[s.O_TORQUE] > 0.0 and out[s.O_QMAX_I] > 0.0
+        assert out[s.O_P_LOSS] == (5.0 if averaged else 4.0)  # energy / interval, or the last step's power
 
 
 @pytest.mark.parametrize("name", ["6208", "B7214C"])
