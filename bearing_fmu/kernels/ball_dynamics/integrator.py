@@ -250,7 +250,9 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
         vy = work[W_VC + 1, k]
         vz = work[W_VC + 2, k]
         for side in range(2):  # cage ball k sits between steel balls k and k + 1
-            j = (k + side) % Z
+            j = k + side
+            if j == Z:  # (not j % Z: an integer division costs tens of cycles)
+                j = 0
             fx, fy, fz = ball_cage_contact(
                 ckx - balls[B_X, j],
                 cky - balls[B_X + 1, j],
