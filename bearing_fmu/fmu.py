@@ -188,6 +188,7 @@ class BearingDEM(_BearingSlave):
             float(self.Pd),
             float(self.dt),
             float(self.refresh_interval),
+            bool(self.average_outputs),
         )
 
     def _make_model(self):
@@ -198,6 +199,7 @@ class BearingDEM(_BearingSlave):
             dt=None if self.dt == 0.0 else self.dt,  # 0 = automatic
             Pd=None if self.Pd_from_file else self.Pd,
             refresh_interval=self.refresh_interval,
+            averaged=bool(self.average_outputs),
         )
 
     def _advance(self, step_size):

@@ -110,7 +110,8 @@ Protocol in the docstring of `benchmarks/dem_fmu.py`: 6208, F_r = 3 kN, 500 rad/
 Target: doStep of 1 ms simulated <= {TARGET_MS} ms wall including the FMI transfers:
 {"met" if fmu_ms <= TARGET_MS else "not met"}. FMU minus model: {fmu_ms - model_ms:+.3f} ms (FMI transfers of
 the 6 inputs and 49 outputs, pythonfmu's call path); the stiffness outputs cost the difference of the last
-two rows (a Python loop over the balls once per step); the rest is the integration itself
+two rows (kernels/ball_dynamics/stiffness.py, once per step: about a microsecond, within the noise); the rest
+is the integration itself
 (docs/reports/dem_timing.md: the cost per DEM step and the number of steps per simulated ms). Timings
 depend on the load of the machine (2 cores shared by several users).
 """

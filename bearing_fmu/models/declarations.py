@@ -455,13 +455,18 @@ QUASI_STATIC_PARAMETERS = (
 # integrates the communication step H: the speed goes linearly from its value at the previous
 # communication point to the input (a first-order hold: no speed jump at a point), loads, oil
 # temperature and clearance change are held. Loads, film, angles and positions are end-of-step values;
-# the power outputs are the energy dissipated in the contacts over the step divided by H.
+# the power outputs and the capacitance are means over the step (the energy dissipated in the contacts
+# divided by H; the capacitance integrated over the DEM steps divided by H) or, with the parameter
+# average_outputs false, their values at the step's last DEM step.
 DEM_REFRESH_INTERVAL = 20e-6  # s, default simulated time between two tribology refreshes (docs/reports/dem_error.md)
 DEM_REFRESH_MAX = 1e-3  # s, longest refresh interval (models.dem.DemModel checks it)
 DEM_DT_MAX = 1e-4  # s, longest fixed DEM time step (models.dem.DemModel checks it)
 _BY_NAME = {v.name: v for v in QUASI_STATIC_INPUTS + QUASI_STATIC_OUTPUTS if not v.drives or "load" in v.drives}
 _BY_NAME_PARAMETERS = {v.name: v for v in QUASI_STATIC_PARAMETERS}
-DEM_OUTPUT_WORDS = "mean over the communication step (energy dissipated in the contacts / H)"
+DEM_OUTPUT_WORDS = (
+    "mean over the communication step (energy dissipated in the contacts / H; at the step's end when "
+    "average_outputs is false)"
+)
 
 
 def _dem_output(name, source, description=None, option=""):
@@ -512,7 +517,8 @@ DEM_OUTPUTS = (
     _dem_output(
         "C_bearing",
         ("out", ds.O_C_BEARING),
-        f"{CAPACITANCE}, at the last tribology refresh of the step",
+        f"{CAPACITANCE}, mean over the communication step (at its end when average_outputs is false; "
+        "contact capacitances of the tribology refreshes)",
         option="capacitance",
     ),
     _dem_output("Q_max_inner", ("out", ds.O_QMAX_I), "largest inner contact load at the end of the step"),
@@ -586,5 +592,13 @@ DEM_PARAMETERS = (
         min=0.0,
         max=DEM_REFRESH_MAX,
         limits="> 0; beyond 1 ms the film and friction lag the ball motion (docs/reports/dem_error.md)",
+    ),
+    Variable(
+        "average_outputs",
+        "",
+        "true: torque, P_loss, Q_inner_ring, Q_outer_ring and C_bearing are means over the communication step; "
+        "false: their values at the step's last DEM step",
+        "boolean",
+        start=True,
     ),
 )

@@ -5,7 +5,8 @@
 - the 6208 at 500 rad/s, 3 kN through the FMU: cage speed, film parameter and the stiffness against the
   quasi-static fidelity;
 - a hand-written FMU2Slave loop over a speed ramp and a load step equals the Python DemModel bit for
-  bit: one doStep is one DemModel.update (one advance over the communication step);
+  bit: one doStep is one DemModel.update (one advance over the communication step), with the power outputs
+  and the capacitance averaged over the step or taken at its end (parameter average_outputs);
 - FMU state: get -> step -> set -> step is bit-identical, and a serialised state restored into a new
   instance steps bit-identically (every DEM array travels in the state);
 - bad inputs (NaN load, speed beyond the d_m n limit), a bad parameter and a time step the monitor
@@ -81,18 +82,20 @@ def test_validate_and_variables(dem_fmu):
     shared |= {"omega_ball_cage", "FTF", "BPFO", "BPFI", "BSF", "h_c_inner", "h_c_outer"}
     shared |= {f"K[{i},{j}]" for i in range(1, 6) for j in range(1, 6)}
     assert outputs == shared | {"cage_slip", "SRR_max", "monitor_status"}
-    assert parameters == {"bearing", "lubricant", "Pd_from_file", "Pd", "dt", "refresh_interval"}
+    assert parameters == {"bearing", "lubricant", "Pd_from_file", "Pd", "dt", "refresh_interval", "average_outputs"}
     quasi_static = {v.name: v for v in read_model_description(str(_fmu("Bearing", "quasi_static.toml"))).modelVariables}
     for name in shared | inputs:
         assert (by_name[name].unit, by_name[name].type) == (quasi_static[name].unit, quasi_static[name].type), name
     assert by_name["dt"].unit == "s" and by_name["refresh_interval"].unit == "s"
 
 
-def test_fmu_equals_python_model_over_ramp_and_load_step(dem_fmu):
-    """Every output after every step equals DemModel.evaluate at the same inputs, to the bit."""
-    model = DemModel(scene=dem_scene())
+@pytest.mark.parametrize("averaged", [True, False])
+def test_fmu_equals_python_model_over_ramp_and_load_step(dem_fmu, averaged):
+    """Every output after every step equals DemModel.evaluate at the same inputs, to the bit, with the power
+    outputs and the capacitance averaged over the step (default) or taken at its end (average_outputs false)."""
+    model = DemModel(scene=dem_scene(), averaged=averaged)
     names = output_names(dem_fmu)
-    with opened(dem_fmu, "loop") as (fmu, vr):
+    with opened(dem_fmu, "loop", {"average_outputs": averaged}) as (fmu, vr):
         for n, (omega, F_x, F_y) in enumerate(SCRIPT):
             set_inputs(fmu, vr, omega, F_x, F_y)
             fmu.doStep(n * H, H)

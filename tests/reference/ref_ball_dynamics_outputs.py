@@ -9,8 +9,9 @@ Q = K_h delta^1.5), sharing only the array layout (the kernel's slot constants):
 - films over loaded contacts: smallest Lambda and h_min per race, h_c of the most loaded contact; the
   regime of the smaller Lambda; largest SRR and Hertz pressure of a loaded contact;
 - capacitance: balls loaded on both races in parallel, each the series of its two contacts, plus background;
-- power = energy dissipated over the interval / interval; torque = power / |omega|; cage slip against the
-  kinematic cage speed (Harris).
+- averaged: power = energy dissipated over the interval / interval, capacitance = its integral over the
+  steps / interval; else the power of the last step and the capacitance now; torque = power / |omega|;
+  cage slip against the kinematic cage speed (Harris).
 """
 
 import math
@@ -55,7 +56,7 @@ def contact_angles(balls, ring, par):
     )
 
 
-def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, c_background):
+def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, c_background, averaged):
     """Bearing-level outputs out[O_*] at inner-ring speed omega (rad/s) after an interval (s)."""
     Z = balls.shape[1]
     Q = contact_loads(balls, ring, par)
@@ -76,9 +77,12 @@ def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, 
     j = int(np.argmax(Q[0])) if loaded[0].any() else int(np.argmax(Q[1]))
     both = loaded[0] & loaded[1]
     out[s.O_N_LOADED] = both.sum()
-    out[s.O_C_BEARING] = c_background + sum(
-        ref_capacitance.ball_capacitance(trib[s.T_CAP, 0, k], trib[s.T_CAP, 1, k]) for k in range(Z) if both[k]
-    )
+    if averaged and interval > 0.0:  # the capacitance integrated over the steps, per unit time
+        out[s.O_C_BEARING] = c_background + acc[s.A_CAP] / interval
+    else:  # balls loaded on both races now, with the capacitances of the last refresh
+        out[s.O_C_BEARING] = c_background + sum(
+            ref_capacitance.ball_capacitance(trib[s.T_CAP, 0, k], trib[s.T_CAP, 1, k]) for k in range(Z) if both[k]
+        )
     omega_cage = (balls[s.B_ORBIT].sum() - orbit0) / (Z * interval) if interval > 0.0 else 0.0
     out[s.O_OMEGA_CAGE] = omega_cage
     w = balls[s.B_WX : s.B_WX + 3, j]
@@ -86,7 +90,10 @@ def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, 
     out[s.O_OMEGA_BALL_REL] = np.linalg.norm(w - np.array([0.0, 0.0, omega_cage]))
     out[s.O_ALPHA_I] = alpha[0, j]
     out[s.O_ALPHA_O] = alpha[1, j]
-    if interval > 0.0:
+    if not averaged:  # the power of the last step
+        out[s.O_Q_INNER_RING] = acc[s.A_POWER_I]
+        out[s.O_Q_OUTER_RING] = acc[s.A_POWER_O]
+    elif interval > 0.0:  # energy over the interval / interval
         out[s.O_Q_INNER_RING] = acc[s.A_DISS_I] / interval
         out[s.O_Q_OUTER_RING] = acc[s.A_DISS_O] / interval
     out[s.O_P_LOSS] = out[s.O_Q_INNER_RING] + out[s.O_Q_OUTER_RING]

@@ -86,7 +86,7 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps):
         status,
     )
     assert status[s.ST_CODE] == s.STATUS_OK
-    energy = ref.advance(twin_state, par, lub, steps, DT, omega0, omega1, np.array(F), T_oil)
+    energy, last_power, capacitance = ref.advance(twin_state, par, lub, steps, DT, omega0, omega1, np.array(F), T_oil)
     report = {}
     for name in ("balls", "cage", "ring", "spring", "trib"):
         a, b = kernel_state[name], twin_state[name]
@@ -106,6 +106,8 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps):
             errs = [_scale_err(a, b)]
         report[name] = max(errs)
     report["dissipated"] = _scale_err(acc[s.A_DISS_I : s.A_DISS_O + 1], energy)
+    report["last step's power"] = _scale_err(acc[s.A_POWER_I : s.A_POWER_O + 1], last_power)
+    report["capacitance x time"] = _scale_err(acc[s.A_CAP : s.A_CAP + 1], np.array([capacitance]))
     print("kernel vs twin, largest scaled difference:", {k: f"{v:.2e}" for k, v in report.items()})
     assert np.array_equal(kernel_state["counters"], twin_state["counters"])
     for name, err in report.items():
@@ -113,6 +115,7 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps):
     # the state really is in motion and loaded: the comparison is not trivial
     assert np.max(twin_state["trib"][s.T_Q]) > 1000.0
     assert np.max(np.abs(twin_state["spring"])) > 0.0
+    assert capacitance > 0.0 and last_power.min() > 0.0
 
 
 def test_groove_approach_radial_ball_gives_hertz_load():
@@ -225,6 +228,52 @@ def test_thermal_clearance_change_acts_like_the_clearance():
         model.advance(15e-3, omega=100.0, F_y=3000.0, dPd_thermal=dPd)
         loads.append(model.contacts()["Q_inner"])
     assert np.max(np.abs(loads[0] - loads[1])) < 0.005 * np.max(loads[0])
+
+
+def test_averaged_outputs_are_the_mean_of_the_per_step_values():
+    """An interval of N steps with averaged outputs against the same N steps taken one call each with end-of-step
+    outputs: the power outputs and the capacitance of the first equal the mean of the N end values of the second.
+
+    dt = 2^-19 s and times that are multiples of it are exact in binary, so both runs take the same steps bit for
+    bit (the state is restored between them); the averages differ from the means only by the order of the
+    additions (sum of p dt / (N dt) against sum of p / N): rtol 1e-12 for N = 40 terms. The 6208 at 300 rad/s,
+    3 kN, in the ramp's aftermath (springs slipping, powers varying from step to step), tribology refreshed every
+    7 steps so that the capacitance changes within the interval."""
+    dt = 2.0**-19
+    model = DemModel("6208", "guessasma_oil", dt=dt, refresh=7)
+    for k in range(1, 11):
+        model.advance(400 * k * dt, omega=30.0 * k, F_x=3000.0)
+    start = model.get_state()
+    N = 40
+    model.averaged = True
+    averaged = model.advance(model.time + N * dt, F_x=3000.0)
+    end_state = model.get_state()
+    model.set_state(start)
+    model.averaged = False
+    steps = [model.advance(model.time + dt, F_x=3000.0) for _ in range(N)]
+    for name in ("balls", "cage", "ring", "spring", "trib", "counters"):
+        np.testing.assert_array_equal(model.get_state()[name], end_state[name])  # the same steps
+    for name in ("P_loss", "Q_inner_ring", "Q_outer_ring", "torque", "C_bearing"):
+        values = np.array([out[name] for out in steps])
+        assert averaged[name] == pytest.approx(values.mean(), rel=1e-12), name
+        assert np.ptp(values) > 1e-6 * abs(values.mean()), name  # the values do vary over the interval
+    assert steps[-1]["P_loss"] == steps[-1]["Q_inner_ring"] + steps[-1]["Q_outer_ring"]
+    assert averaged["Q_max_outer"] == steps[-1]["Q_max_outer"]  # loads are end values in both modes
+
+
+def test_clearance_limits_follow_the_groove_geometry():
+    """P_d and P_d + dPd_thermal are refused beyond the geometric limits |P_d| <= A = (f_i + f_o - 1) D
+    (params.clearance_limits, as the quasi-static fidelity); inside them, beyond the former 0.02 D, they run.
+    6208: D = 12.6 mm, f = 0.52 on both races, so A = 0.04 D = 504 um."""
+    A = 0.04 * 0.0126
+    with pytest.raises(InputError, match=r"Pd = .* \(set\) is outside the allowed range \[-0.000504, 0.000504\]"):
+        DemModel("6208", "guessasma_oil", Pd=1.01 * A)
+    model = DemModel("6208", "guessasma_oil", Pd=0.5 * A)  # 252 um: 0.02 D, the former limit, accepted
+    model.advance(1e-4, omega=10.0, F_x=1000.0, dPd_thermal=0.4 * A)  # P_d in effect 0.9 A
+    with pytest.raises(InputError, match=r"dPd_thermal = .* allowed range \[-0.000756, 0.000252\]"):
+        model.advance(2e-4, omega=10.0, F_x=1000.0, dPd_thermal=0.51 * A)
+    with pytest.raises(InputError, match="dPd_thermal = .* allowed range"):
+        model.advance(2e-4, omega=10.0, F_x=1000.0, dPd_thermal=-1.51 * A)
 
 
 @pytest.mark.parametrize("dt", [-1e-6, 0.0, math.nan])

@@ -1,18 +1,19 @@
 """The DEM kernels that the facade calls directly (besides advance) against their plain-Python twins:
-the accelerations of a new state, the time-step limit, the kinetic energy, contact loads and angles and the
-bearing-level outputs. States: a 6208 under 3 kN in a speed ramp, and a B7214C under axial load (non-zero
-contact angles)."""
+the accelerations of a new state, the time-step limit, the kinetic energy, contact loads and angles, the
+bearing-level outputs and the 5x5 stiffness. States: a 6208 under 3 kN in a speed ramp, and a B7214C under
+axial load (non-zero contact angles)."""
 
 import numpy as np
 import pytest
 
 from bearing_fmu.kernels.ball_dynamics import integrator as dyn
-from bearing_fmu.kernels.ball_dynamics import monitor, outputs
+from bearing_fmu.kernels.ball_dynamics import monitor, outputs, stiffness
 from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.models.dem import DemModel
 from tests.reference import ref_ball_dynamics as ref
 from tests.reference import ref_ball_dynamics_monitor as ref_monitor
 from tests.reference import ref_ball_dynamics_outputs as ref_outputs
+from tests.reference import ref_ball_dynamics_stiffness as ref_stiffness
 
 RTOL = 1e-10  # same operations in another order (vector algebra against scalar loops)
 # cage-ball accelerations: their contacts are damped, c0 delta^(1/4) v, whose rounding near contact onset is not
@@ -112,10 +113,27 @@ def test_contact_loads_angles_and_outputs_match_twin(models, name):
     assert (Q_twin == 0.0).any() or name == "B7214C"  # the 6208 under radial load has open contacts
     acc = np.zeros(s.A_SIZE)
     acc[s.A_DISS_I], acc[s.A_DISS_O] = 2.0e-3, 3.0e-3
+    acc[s.A_POWER_I], acc[s.A_POWER_O], acc[s.A_CAP] = 1.5, 2.5, 4e-14
     orbit0 = float(model.balls[s.B_ORBIT].sum()) - 0.1 * Z
-    args = (model.balls, model.cage, model.ring, model.trib, model.par, acc, model.omega, 1e-3, orbit0, 1e-11)
-    out = np.zeros(s.O_SIZE)
-    outputs.bearing_outputs(*args, Q, alpha, out)
-    twin = ref_outputs.bearing_outputs(*args)
-    np.testing.assert_allclose(out, twin, rtol=1e-9, atol=1e-25)
-    assert out[s.O_C_BEARING] > 1e-11 and out[s.O_TORQUE] > 0.0 and out[s.O_QMAX_I] > 0.0
+    for averaged in (True, False):
+        args = (model.balls, model.cage, model.ring, model.trib, model.par, acc, model.omega, 1e-3, orbit0, 1e-11)
+        out = np.zeros(s.O_SIZE)
+        outputs.bearing_outputs(*args, averaged, Q, alpha, out)
+        twin = ref_outputs.bearing_outputs(*args, averaged)
+        np.testing.assert_allclose(out, twin, rtol=1e-9, atol=1e-25)
+        assert out[s.O_C_BEARING] > 1e-11 and out[s.O_TORQUE] > 0.0 and out[s.O_QMAX_I] > 0.0
+        assert out[s.O_P_LOSS] == (5.0 if averaged else 4.0)  # energy / interval, or the last step's power
+
+
+@pytest.mark.parametrize("name", ["6208", "B7214C"])
+def test_stiffness_matrix_matches_twin(models, name):
+    """The jitted 5x5 stiffness against the twin's matrix algebra (linear solve, G^T K G): RTOL relative to the
+    largest entry (the small off-diagonal terms are differences of large products)."""
+    model = models[name]
+    K, K_twin = np.zeros((5, 5)), np.zeros((5, 5))
+    stiffness.stiffness_matrix(model.balls, model.ring, model.par, K)
+    ref_stiffness.stiffness_matrix(model.balls, model.ring, model.par, K_twin)
+    scale = np.abs(K_twin).max()
+    np.testing.assert_allclose(K, K_twin, rtol=0.0, atol=RTOL * scale)
+    assert K_twin[0, 0] > 1e7 and K_twin[2, 2] > 1e5  # loaded balls: radial and axial stiffness present
+    np.testing.assert_array_equal(model.stiffness_matrix(), K)  # the facade calls the kernel

@@ -16,8 +16,11 @@ from ..geometry import rolling_kinematics
 from .contacts import groove_approach
 from .monitor import kinetic_energy
 from .state import (
+    A_CAP,
     A_DISS_I,
     A_DISS_O,
+    A_POWER_I,
+    A_POWER_O,
     B_ORBIT,
     B_WX,
     B_X,
@@ -84,8 +87,14 @@ def contact_angles(balls, ring, par, alpha):
 
 
 @kernel
-def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, c_background, Q, alpha, out):
+def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, c_background, averaged, Q, alpha, out):
     """Fill out[O_*] for inner-ring speed omega (rad/s) after an interval (s) of advance().
+
+    averaged: True gives the power outputs (P_loss, Q_inner_ring, Q_outer_ring, torque) and the capacitance as
+    means over the interval's steps (the energy dissipated, the capacitance integrated over time, divided by
+    the interval); False gives their values at its last step (the power of the last step, the capacitance of
+    the balls loaded at the end). The other outputs are end values in both cases (omega_cage: the mean orbital
+    speed over the interval).
 
     orbit0: sum of the balls' orbital angles (rad) at the start of the interval: the cage speed is their mean
     change over the interval (the instantaneous orbital speeds fluctuate with the cage-ball contacts).
@@ -143,10 +152,13 @@ def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, 
     w = math.sqrt(wx * wx + wy * wy + wz * wz)
     out[O_OMEGA_BALL] = math.copysign(w, omega) if omega != 0.0 else w
     out[O_OMEGA_BALL_REL] = math.sqrt(wx * wx + wy * wy + (wz - omega_cage) ** 2)
-    out[O_C_BEARING] = c_total
+    out[O_C_BEARING] = c_background + acc[A_CAP] / interval if averaged and interval > 0.0 else c_total
     out[O_ALPHA_I] = alpha[0, j_max]
     out[O_ALPHA_O] = alpha[1, j_max]
-    if interval > 0.0:
+    if not averaged:
+        out[O_Q_INNER_RING] = acc[A_POWER_I]
+        out[O_Q_OUTER_RING] = acc[A_POWER_O]
+    elif interval > 0.0:
         out[O_Q_INNER_RING] = acc[A_DISS_I] / interval
         out[O_Q_OUTER_RING] = acc[A_DISS_O] / interval
     out[O_P_LOSS] = out[O_Q_INNER_RING] + out[O_Q_OUTER_RING]
