@@ -313,6 +313,43 @@ def test_too_large_time_step_is_reported():
         model.advance(5e-3, omega=0.0, F_x=3000.0)
 
 
+def test_load_release_at_rest_is_not_flagged_as_energy_growth():
+    """6208 at rest, 300 N held for one 1 ms step, then 0 N: the elastic energy of the loaded contacts turns into
+    motion of the released ring and balls (physical), which the energy bound must allow: before, the bound at
+    zero speed and zero load was 1 uJ and the first released step stopped with "energy growth" quoting a
+    stability limit of "inf s". The ring then rings down inside the groove clearance (|x| < A = 60 um)."""
+    model = DemModel("6208", "guessasma_oil")
+    model.evaluate(1e-3, F_x=300.0)
+    for k in range(2, 12):
+        out = model.evaluate(k * 1e-3, F_x=0.0)
+        assert out["monitor_status"] == 0
+    A = (model.bearing.f_i + model.bearing.f_o - 1.0) * model.bearing.D
+    assert abs(out["x"]) < A and math.isfinite(out["x"])
+
+
+def test_unstable_message_without_loaded_contact_names_no_infinite_limit():
+    """A monitor stop where neither the inputs nor the state load any contact (rest, no load, balls clear of
+    both races): the message suggests half the step and says why, never a limit of "inf s"."""
+    model = DemModel("6208", "guessasma_oil", dt=8e-6, Pd=25e-6)
+    model.balls[s.B_X : s.B_X + 2] *= 1.0 - 1e-6 / model._rest[0]  # 1 um off the outer race: every contact open
+    model.status[:] = (s.STATUS_ENERGY, 3, -1)
+    with pytest.raises(DemUnstableError, match=r"use dt <= 4e-06 s \(no contact is loaded") as info:
+        model._raise_unstable(8e-6, 0.0, 0.0, 0.0)
+    assert "inf" not in str(info.value)
+
+
+def test_pressure_above_the_iso_76_limit_gives_a_warning():
+    """6208 at rest under 30 kN: p_max = 4.66 GPa at the most loaded contact, above the ISO 76 static limit
+    4.2 GPa: warned as by the other fidelities (models.variables.pressure_warnings); 3 kN gives no warning."""
+    model = DemModel("6208", "guessasma_oil")
+    out = model.evaluate(3e-3, F_x=30000.0)
+    assert 4.2e9 < out["p_max"] < 6e9
+    assert any("ISO 76" in w and f"{out['p_max'] / 1e9:.3g} GPa" in w for w in model.warnings)
+    model = DemModel("6208", "guessasma_oil")
+    model.evaluate(3e-3, F_x=3000.0)
+    assert model.warnings == []
+
+
 @pytest.mark.parametrize("lubricant, T_oil", [("guessasma_oil", 313.15), ("iso_vg68_mineral", 343.15)])
 def test_fused_power_laws_equal_the_film_and_houpert_kernels(lubricant, T_oil):
     """The refresh writes the Hamrock-Dowson films and Houpert's rolling force as exp(c + p ln u + q ln delta);
