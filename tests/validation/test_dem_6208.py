@@ -270,6 +270,22 @@ def test_default_time_step_is_stable_for_0_2_s(omega, F):
     assert out["omega_cage"] == pytest.approx(cage, rel=0.01)
 
 
+def test_default_time_step_starts_up_with_a_thin_hot_film():
+    """iso_vg68_mineral at 343.15 K (mixed regime: the tangential springs reach their Coulomb cap), 750 N,
+    start-up to 500 rad/s, run to 60 ms at the default time step: no monitor stop and the cage at its kinematic
+    speed within 1 %. The default step is half the limit of the stiffest pair, for the tangential spring
+    sqrt(2)/omega_t (kernels.ball_dynamics.monitor): with 2/omega_t it was 3.75 us and chattered at 12 ms."""
+    omega, F, T_oil = 500.0, 750.0, 343.15
+    model = DemModel("6208", "iso_vg68_mineral")
+    model.advance(2e-3, omega=0.0, F_x=F, T_oil=T_oil)
+    for k in range(1, 21):
+        model.advance(2e-3 + 5e-3 * k / 20, omega=omega * k / 20, F_x=F, T_oil=T_oil)
+    model.advance(0.05, omega=omega, F_x=F, T_oil=T_oil)
+    out = model.advance(0.06, omega=omega, F_x=F, T_oil=T_oil)
+    assert model.dt < 3.75e-6
+    assert out["omega_cage"] == pytest.approx(rolling_kinematics(omega, D, DM, 0.0)[0], rel=0.01)
+
+
 def test_too_large_time_step_is_detected():
     """dt = 12 us is beyond the stability limit of the squeezed ball at 3 kN (about 6 us with the
     tangential springs): the monitor stops the start-up and names a time step that works, which then
