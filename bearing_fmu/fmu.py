@@ -61,9 +61,12 @@ class _BearingSlave(DeclaredSlave):
 
     def _update(self):
         values = self._model.update(self._u)
+        self._log_warnings()
+        self._y = values.tolist()
+
+    def _log_warnings(self):
         for warning in self._model.warnings:
             self.log(warning, Fmi2Status.warning)
-        self._y = values.tolist()
 
     def _guarded(self, action):
         """Run action(); log a clear message and return False on bad input or parameters."""
@@ -204,6 +207,7 @@ class BearingDEM(_BearingSlave):
 
     def _advance(self, step_size):
         self._y = self._model.update(self._u, step_size).tolist()
+        self._log_warnings()  # p_max above the ISO 76 limit, as Bearing.fmu
 
     def do_step(self, current_time, step_size):
         if not self._ready:

@@ -24,7 +24,7 @@ from bearing_fmu_common.variables import InputLimits, gather_plan, select
 
 from ..kernels.ball_dynamics import integrator as dyn
 from ..kernels.ball_dynamics import state as s
-from ..kernels.ball_dynamics.monitor import critical_time_step
+from ..kernels.ball_dynamics.monitor import critical_time_step, kinetic_energy
 from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_angles, contact_loads
 from ..kernels.ball_dynamics.stiffness import stiffness_matrix
 from ..kernels.geometry import (
@@ -47,7 +47,7 @@ from ..params import clearance_limits, load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
 from .declarations import DEM_DT_MAX, DEM_INPUTS, DEM_OUTPUTS, DEM_REFRESH_MAX
 from .declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
-from .variables import DM_N_LIMIT, MATERIAL_LIMIT, P_MAX_ERROR, InputError, check_clearance
+from .variables import DM_N_LIMIT, MATERIAL_LIMIT, P_MAX_ERROR, InputError, check_clearance, pressure_warnings
 
 # PA66 cage balls when the bearing file has no [material.cage] (Farah 2020: E_c = 3.3 GPa, nu_c = 0.41)
 CAGE_E = 3.3e9
@@ -195,7 +195,7 @@ class DemModel:
         self.outputs = select(DEM_OUTPUTS, self.scene)
         self.output_names = tuple(v.name for v in self.outputs)
         self.values = np.zeros(len(self.outputs))
-        self.warnings = []  # update() logs none: the monitor stops a step instead
+        self.warnings = []  # of the last advance(): p_max above the ISO 76 limit (pressure_warnings)
         self.K = np.zeros((5, 5))  # condensed stiffness of the last update (scene option stiffness)
         self.frequencies = np.zeros(4)  # FTF, BPFO, BPFI, BSF (Hz) of the last update
         arrays = {
@@ -464,16 +464,31 @@ class DemModel:
             self._alpha,
             self.out,
         )
+        # as the other fidelities: a warning above the ISO 76 limit; beyond the material limit (6 GPa) the
+        # monitor has already stopped the step (penetration), so only the warning can apply here
+        self.warnings = pressure_warnings(min(self.out[s.O_PMAX], P_MAX_ERROR), "the loads")
 
     def _energy_limit(self, omega, force):
-        """Bound (J) of the kinetic energy: ENERGY_FACTOR x (pure-rolling kinetic energy at omega + load x groove
-        clearance A); an unstable integration passes it within a few steps, a physical run never does."""
+        """Bound (J) of the kinetic energy over a call: ENERGY_FACTOR x (pure-rolling kinetic energy at omega +
+        load x groove clearance A + the mechanical energy the state already holds: its kinetic energy and the
+        elastic energy of its ball-race contacts, 0.4 Q delta each for Q = K_h delta^1.5). Without input the
+        kinetic energy cannot exceed the energy held plus the work of the drive and the loads, so an unstable
+        integration passes the bound within a few steps and a physical run never does, also when a load is
+        released (its elastic energy turns into motion) or the ring stops while the balls still roll."""
         b, p = self.bearing, self.par
         cage_speed, ball_rel, _, _ = rolling_kinematics(omega, b.D, b.dm, p[s.P_ALPHA0])
         v = 0.5 * b.dm * cage_speed
         rolling = b.Z * (0.5 * (p[s.P_M_BALL] + p[s.P_M_CAGE]) * v * v + 0.5 * p[s.P_I_BALL] * ball_rel**2)
         A = (b.f_i + b.f_o - 1.0) * b.D
-        return ENERGY_FACTOR * (rolling + force * A) + 1e-6
+        held = kinetic_energy(self.balls, self.cage, self.ring, p) + self._elastic_energy()
+        return ENERGY_FACTOR * (rolling + force * A + held) + 1e-6
+
+    def _elastic_energy(self):
+        """Elastic energy (J) of the current ball-race contacts: sum of the integral of K_h delta^1.5 d delta,
+        0.4 Q delta with delta = (Q / K_h)^(2/3)."""
+        contact_loads(self.balls, self.ring, self.par, self._Q)
+        K_h = self.par[[s.P_KH_I, s.P_KH_O]][:, None]
+        return float(0.4 * (self._Q * (self._Q / K_h) ** (2.0 / 3.0)).sum())
 
     def _raise_unstable(self, dt, F_x, F_y, F_z):
         code, step, index = (int(v) for v in self.status)
@@ -482,13 +497,22 @@ class DemModel:
         if index >= 0:
             race = "inner" if index < Z else "outer"
             where = f" at the {race} contact of ball {index % Z}"
-        # the state at the stop is already disturbed: judge from the inputs alone
+        # the state at the stop is already disturbed: judge from the inputs alone, or, when they load no
+        # contact (no load, no speed), from the contact loads of the stopped state (larger: a safe side)
         limit = self.stable_time_step(F_x, F_y, F_z, self.omega, include_state=False)
-        suggestion = min(0.5 * dt, self.safety * limit) if math.isfinite(limit) else 0.5 * dt
+        basis = "at these inputs"
+        if not math.isfinite(limit):
+            limit = self.stable_time_step(F_x, F_y, F_z, self.omega)
+            basis = "at the contact loads where the run stopped"
+        if math.isfinite(limit):
+            suggestion = min(0.5 * dt, self.safety * limit)
+            reason = f"stability limit of the stiffest contact pair {basis} {limit:.3g} s"
+        else:
+            suggestion = 0.5 * dt
+            reason = "no contact is loaded, so no contact sets a stability limit"
         raise DemUnstableError(
             f"DEM stopped at t = {self.time:.9g} s (step {step} of the interval){where}: "
-            f"{STATUS_WORDS[code]}. dt = {dt:.3g} s is too large here; use dt <= {suggestion:.3g} s "
-            f"(stability limit of the stiffest contact pair at these inputs {limit:.3g} s)"
+            f"{STATUS_WORDS[code]}. dt = {dt:.3g} s is too large here; use dt <= {suggestion:.3g} s ({reason})"
         )
 
     # -- outputs -------------------------------------------------------------------------------
@@ -547,6 +571,7 @@ class DemModel:
         """update()'s step to t_end (s): advance, or on a monitor stop restore the state and raise."""
         omega, F_x, F_y, F_z, T_oil, dPd_thermal = (float(v) for v in u)
         self.status[s.ST_CODE] = s.STATUS_OK  # a refused input leaves no stale monitor code
+        self.warnings = []  # nor stale warnings
         self._check(t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
         self._copy_state(self._before, self.__dict__)
         self._before["omega"] = self.omega

@@ -217,6 +217,29 @@ def test_time_step_the_monitor_flags_is_discarded_and_rolled_back(dem_fmu):
     fmu.freeInstance()
 
 
+def test_iso_76_warning_is_logged_and_a_load_release_steps_on(dem_fmu):
+    """6208 at rest: 30 kN gives p_max = 4.66 GPa, above the ISO 76 static limit 4.2 GPa: the step succeeds and
+    the FMU logs the model's warning as fmi2Warning (as Bearing.fmu). Then 300 N held for one step and released
+    to 0 N: the released elastic energy is physical motion, every step succeeds (it used to stop with "energy
+    growth" and a limit of "inf s")."""
+    probe.messages.clear()
+    fmu, vr, _ = probe.open_fmu(str(dem_fmu))
+    set_inputs(fmu, vr, 0.0, 30000.0)
+    for k in range(6):
+        assert step_status(fmu, k * H, H) == 0
+    assert 4.2e9 < fmu.getReal([vr["p_max"]])[0] < 6e9
+    assert any(m["status"] == 1 and "ISO 76" in m["message"] for m in probe.messages)
+    fmu.freeInstance()
+    probe.messages.clear()
+    fmu, vr, _ = probe.open_fmu(str(dem_fmu))
+    for k in range(12):
+        set_inputs(fmu, vr, 0.0, 300.0 if k < 2 else 0.0)
+        assert step_status(fmu, k * H, H) == 0, k
+        assert fmu.getInteger([vr["monitor_status"]])[0] == STATUS_OK
+    assert not any("inf s" in m["message"] for m in probe.messages)
+    fmu.freeInstance()
+
+
 def test_monitor_stop_restores_the_state_at_the_start_of_the_step():
     """DemModel.update (the FMU's step) puts every array back when the monitor stops the step, so the
     instance stays at the last communication point (as after a refused input)."""

@@ -6,8 +6,9 @@ Q = K_h delta^1.5), sharing only the array layout (the kernel's slot constants):
 - cage speed: mean change of the balls' orbital angles over the interval; ball speeds of the most loaded
   ball (inner race, or the outer one when no inner contact is loaded), in the fixed frame and relative to
   the cage;
-- films over loaded contacts: smallest Lambda and h_min per race, h_c of the most loaded contact; the
-  regime of the smaller Lambda; largest SRR and Hertz pressure of a loaded contact;
+- films over the contacts loaded now and at the last refresh (the only ones with a film): smallest Lambda
+  and h_min per race, h_c of the most loaded of them, zero film without any; the regime of the smaller
+  Lambda; largest SRR and Hertz pressure of a loaded contact;
 - capacitance: balls loaded on both races in parallel, each the series of its two contacts, plus background;
 - averaged: power = energy dissipated over the interval / interval, capacitance = its integral over the
   steps / interval; else the power of the last step and the capacitance now; torque = power / |omega|;
@@ -63,13 +64,13 @@ def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, 
     alpha = contact_angles(balls, ring, par)
     out = np.zeros(s.O_SIZE)
     loaded = Q > 0.0
+    with_film = loaded & (trib[s.T_Q] > 0.0)
     for race in range(2):
-        if loaded[race].any():
-            most = int(np.argmax(Q[race]))
-            out[s.O_QMAX_I + race] = Q[race, most]
-            out[s.O_LAMBDA_I + race] = trib[s.T_LAMBDA, race][loaded[race]].min()
-            out[s.O_HMIN_I + race] = trib[s.T_H_MIN, race][loaded[race]].min()
-            out[s.O_HC_I + race] = trib[s.T_H_C, race, most]
+        out[s.O_QMAX_I + race] = Q[race].max()
+        if with_film[race].any():
+            out[s.O_LAMBDA_I + race] = trib[s.T_LAMBDA, race][with_film[race]].min()
+            out[s.O_HMIN_I + race] = trib[s.T_H_MIN, race][with_film[race]].min()
+            out[s.O_HC_I + race] = trib[s.T_H_C, race, int(np.argmax(np.where(with_film[race], Q[race], -1.0)))]
     if loaded.any():
         out[s.O_SRR_MAX] = max(trib[s.T_SRR][loaded].max(), 0.0)
         out[s.O_PMAX] = max(trib[s.T_P_MAX][loaded].max(), 0.0)

@@ -125,6 +125,29 @@ def test_contact_loads_angles_and_outputs_match_twin(models, name):
         assert out[s.O_P_LOSS] == (5.0 if averaged else 4.0)  # energy / interval, or the last step's power
 
 
+def test_film_outputs_skip_a_contact_closed_since_the_last_refresh(models):
+    """A contact loaded now but open at the last refresh carries what the refresh writes for an open contact
+    (Lambda = 0, h_min = h_c = inf): the film outputs come from the other contacts (kernel = twin), not Lambda = 0
+    with a finite h_min (the inconsistency of a 6208 with clearance, tests/validation/test_dem_6208.py)."""
+    model = models["6208"]
+    Z = model.bearing.Z
+    Q, alpha = np.zeros((2, Z)), np.zeros((2, Z))
+    outputs.contact_loads(model.balls, model.ring, model.par, Q)
+    trib = model.trib.copy()
+    loaded = np.flatnonzero(Q[1] > 0.0)
+    stale = loaded[np.argmin(Q[1, loaded])]  # the least loaded outer contact, as a ball entering the load zone
+    trib[:, 1, stale] = 0.0
+    trib[s.T_H_MIN, 1, stale] = trib[s.T_H_C, 1, stale] = np.inf
+    acc = np.zeros(s.A_SIZE)
+    args = (model.balls, model.cage, model.ring, trib, model.par, acc, model.omega, 1e-3, 0.0, 0.0, True)
+    out = np.zeros(s.O_SIZE)
+    outputs.bearing_outputs(*args, Q, alpha, out)
+    np.testing.assert_allclose(out, ref_outputs.bearing_outputs(*args), rtol=1e-9, atol=1e-25)
+    others = np.setdiff1d(loaded, [stale])
+    assert out[s.O_LAMBDA_O] == trib[s.T_LAMBDA, 1, others].min() > 0.0
+    assert out[s.O_HMIN_O] == trib[s.T_H_MIN, 1, others].min()
+
+
 @pytest.mark.parametrize("name", ["6208", "B7214C"])
 def test_stiffness_matrix_matches_twin(models, name):
     """The jitted 5x5 stiffness against the twin's matrix algebra (linear solve, G^T K G): RTOL relative to the
