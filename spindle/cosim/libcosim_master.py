@@ -312,8 +312,8 @@ def run_libcosim(system, step, stop, record):
         columns = run.observe(record)
         if schedules:
             run.schedule(schedules)
-            for n in range(n_steps):  # t_n counted in integer nanoseconds, as libcosim does
-                run.apply_schedules(n * _ticks(step, "step") / NANOSECONDS)
+            for n in range(n_steps):  # u at t_n = n H, as spindle.cosim.master computes it
+                run.apply_schedules(n * step)
                 run.step(1)
         else:
             run.step(n_steps)
