@@ -39,9 +39,9 @@ Input schedules (the run files' `schedules`, u(t) given as a function): libcosim
 piecewise-linear input of its own; its scenario files override or bias a variable with a constant at
 listed times, so a ramp would need one scenario event per step. The same is done directly with
 libcosim's override manipulator (what its scenario manager uses): a scheduled input is given u(0) as
-its initial value; before each step n the manipulator overrides it with u(t_n) and the execution
-advances one step (the override reaches the FMU with the step's other pending inputs, before
-fmi2DoStep). This is the sample-and-hold at the start of the step that spindle.cosim.master applies.
+its initial value; before each step n the manipulator overrides it with u(t_n) (u(t_n + H) for a
+schedule with at = "end") and the execution advances one step (the override reaches the FMU with the
+step's other pending inputs, before fmi2DoStep): the values spindle.cosim.master sets.
 
 To run the fmpy master with the same algorithm: enterInitializationMode; set parameters and inputs;
 N times {read every connected output, then set every connected input}; exitInitializationMode (all);
@@ -229,10 +229,10 @@ class _Run:
             self.set_initial(instance, variable, u(0.0))
             self.scheduled.append((name, self.index[instance], var.reference, u))
 
-    def apply_schedules(self, t):
-        """Override every scheduled input with its value at t (s) for the next step."""
+    def apply_schedules(self, t, h):
+        """Override every scheduled input with its value for the next step, from t to t + h (s)."""
         for name, index, reference, u in self.scheduled:
-            if not self.manipulator.slave_real_values(index, [reference], [u(t)]):
+            if not self.manipulator.slave_real_values(index, [reference], [u.for_step(t, h)]):
                 raise LibcosimError(f"{name}: cannot override with u({t}): {self._last_error()}")
 
     def step(self, n_steps):
@@ -283,8 +283,8 @@ def run_libcosim(system, step, stop, record):
     system = {"instances": {name: {"fmu": path, "parameters": {...}, "inputs": {...},
                                    "schedules": {input: u}}},
               "connections": [("src.output", "dst.input"), ...]}
-    A schedule u is a function of the time t (s) returning the input's value (e.g. a
-    spindle.cosim.runfile.Schedule): set to u(t_n) before each step n (see the module docstring).
+    A schedule u is a spindle.cosim.runfile.Schedule (u(t), u.for_step(t, h)): set to u.for_step(t_n, H)
+    before each step n (see the module docstring).
     Parameters and inputs are given to libcosim as initial values; Real (float), Integer (int),
     Boolean (bool) and String (str) variables are accepted. An initial value on a connected input
     is overwritten during initialisation (see the module docstring). `record` lists
@@ -313,7 +313,7 @@ def run_libcosim(system, step, stop, record):
         if schedules:
             run.schedule(schedules)
             for n in range(n_steps):  # u at t_n = n H, as spindle.cosim.master computes it
-                run.apply_schedules(n * step)
+                run.apply_schedules(n * step, step)
                 run.step(1)
         else:
             run.step(n_steps)

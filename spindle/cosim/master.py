@@ -8,7 +8,8 @@ with a fixed communication step H:
   outputs of those before it; Jacobi: every instance steps with the outputs of t_n, then all
   connections are transferred;
 - input schedules (runfile.Schedule): a scheduled input gets u(start) in initialisation mode and u(t)
-  before every step [t, t + h] (also the halves of a rejected step), one setReal per instance;
+  (or u(t + h) if its schedule says at = "end") before every step [t, t + h] (also the halves of a
+  rejected step), one setReal per instance;
 - initialisation: parameters and constant inputs are set in initialisation mode. Connected inputs
   start from the FMUs' own start values (never 0.0): Gauss-Seidel exits initialisation instance by
   instance in `order`, each after taking the outputs of those before it (computed at their exit)
@@ -345,7 +346,8 @@ class Master:
             inst.call("enterInitializationMode", inst.slave.enterInitializationMode)
             inst.set(spec.instances[name].parameters)
             inst.set(spec.instances[name].inputs)
-        self._apply_schedules(spec.start)
+        for inst, writer, convert, schedules in self._scheduled:
+            inst.call("set scheduled inputs at the start", writer, [convert(u(spec.start)) for u in schedules])
         if spec.algorithm == "jacobi":  # every connected input from its source's start value
             starts = {
                 name: {t_var: self.instances[s].start_value(s_var) for s, s_var, t_var in self.links[name]}
@@ -387,17 +389,18 @@ class Master:
         for writer, convert, sources in self._transfers[name]:
             inst.call("set connected inputs", writer, [convert(src.cache[var]) for src, var in sources])
 
-    def _apply_schedules(self, t):
-        """Set every scheduled input to its value at t (s)."""
+    def _apply_schedules(self, t, h):
+        """Set every scheduled input to its value for the step from t to t + h (s)."""
         for inst, writer, convert, schedules in self._scheduled:
-            inst.call(lambda: f"set scheduled inputs at t = {t:.9g} s", writer, [convert(u(t)) for u in schedules])
+            values = [convert(u.for_step(t, h)) for u in schedules]
+            inst.call(lambda: f"set scheduled inputs at t = {t:.9g} s", writer, values)
 
     def _do_step(self, inst, t, h):
         inst.call(lambda: f"doStep at t = {t:.9g} s, h = {h:.9g} s", inst.do_step, t, h)
 
     def _macro_step(self, t, h):
         """One communication step of the coupled system from t to t + h."""
-        self._apply_schedules(t)
+        self._apply_schedules(t, h)
         if self.spec.algorithm == "jacobi":
             for name in self.spec.order:
                 self._transfer(name)

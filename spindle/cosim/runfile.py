@@ -37,8 +37,11 @@ Input schedules: `schedules = { name = [[t_0, u_0], [t_1, u_1], ...] }` gives an
 as a piecewise-linear table (t in s, strictly increasing; u in the input's unit), held at u_0 before t_0
 and at the last value after the last point: `[[0.0, 0.0], [2.0, 1047.2]]` is a ramp from rest to
 1047.2 rad/s (10 000 rpm) over 2 s, held afterwards. The master sets u(start) in initialisation mode and,
-before every communication step [t, t + h] (also the halves of a rejected step), u(t) through FMI: the
-FMU holds u(t) over the step (sample and hold at the start of the step, as for every other input).
+before every communication step [t, t + h] (also the halves of a rejected step), a value through FMI:
+u(t) by default (sample and hold at the start of the step, for an FMU that holds its inputs over the
+step), or u(t + h) with `name = { table = [[t, u], ...], at = "end" }` (for an FMU that moves an input
+linearly from its previous value to the new one over the step, as BearingDEM.fmu does with its speed:
+it then follows the table exactly where the table is linear over the step).
 
 `overrides` (sweeps, command line) replace values by dotted keys: "run.step", "bearing_1.F_z"
 (an input or parameter of an instance, whichever it already is; a new key becomes an input). A table
@@ -54,6 +57,7 @@ from pathlib import Path
 import numpy as np
 
 ALGORITHMS = ("gauss_seidel", "jacobi")
+SCHEDULE_AT = ("start", "end")
 
 
 class RunFileError(ValueError):
@@ -76,13 +80,29 @@ class Schedule:
 
     times: tuple
     values: tuple
+    at: str = "start"  # value set for the step [t, t + h]: u(t) ("start") or u(t + h) ("end")
 
     def __call__(self, t):
         """u(t) (t in s)."""
         return float(np.interp(t, self.times, self.values))
 
+    def for_step(self, t, h):
+        """The value to set before the step from t to t + h (s)."""
+        return self(t + h) if self.at == "end" else self(t)
+
     @classmethod
-    def from_table(cls, table, key):
+    def from_entry(cls, entry, key):
+        """From a run file's entry: a table [[t, u], ...] or { table = [[t, u], ...], at = "start"|"end" }."""
+        if not isinstance(entry, dict):
+            return cls.from_table(entry, key)
+        _no_unknown_keys(key, entry, {"table", "at"})
+        at = entry.get("at", "start")
+        if at not in SCHEDULE_AT:
+            raise RunFileError(f"{key}.at = {at!r}: allowed {list(SCHEDULE_AT)}")
+        return cls.from_table(entry.get("table"), f"{key}.table", at)
+
+    @classmethod
+    def from_table(cls, table, key, at="start"):
         """From [[t, u], ...] as written in a run file; RunFileError naming `key` if it is not one."""
         form = f"{key}: write a table [[t, value], ...] (t in s, strictly increasing, finite numbers)"
         if not isinstance(table, (list, tuple)) or not table:
@@ -98,7 +118,7 @@ class Schedule:
         for k in range(1, len(times)):
             if not times[k] > times[k - 1]:
                 raise RunFileError(f"{form}; t = {times[k]} s at point {k} does not follow t = {times[k - 1]} s")
-        return cls(times, tuple(float(u) for _, u in table))
+        return cls(times, tuple(float(u) for _, u in table), at)
 
 
 @dataclass
@@ -191,7 +211,7 @@ def parse_run(doc, path, overrides=None, fmu_dir=None):
             fmus[inst["fmu"]],
             dict(inst.get("parameters", {})),
             dict(inst.get("inputs", {})),
-            {k: Schedule.from_table(v, f"instances.{name}.schedules.{k}") for k, v in schedules.items()},
+            {k: Schedule.from_entry(v, f"instances.{name}.schedules.{k}") for k, v in schedules.items()},
         )
     for key, value in (overrides or {}).items():
         _apply_override(run, instances, key, value)
@@ -235,9 +255,9 @@ def _apply_override(run, instances, key, value):
         run[tail] = value
     elif head in instances and tail:
         inst = instances[head]
-        if isinstance(value, (list, tuple)):  # a table: the input becomes scheduled
+        if isinstance(value, (list, tuple, dict)):  # a table: the input becomes scheduled
             inst.inputs.pop(tail, None)
-            inst.schedules[tail] = Schedule.from_table(value, f"override {key!r}")
+            inst.schedules[tail] = Schedule.from_entry(value, f"override {key!r}")
         elif tail in inst.parameters:
             inst.parameters[tail] = value
         else:

@@ -48,6 +48,19 @@ def test_bad_table_is_refused_naming_the_key(table, message, tmp_path):
     assert "instances.c.schedules.u" in str(err.value) and message in str(err.value)
 
 
+def test_schedule_at_the_end_of_the_step_and_its_bad_values(tmp_path):
+    u = Schedule.from_entry({"table": RAMP, "at": "end"}, "k")
+    assert u.for_step(0.25, 0.25) == 5.0 and Schedule.from_entry(RAMP, "k").for_step(0.25, 0.25) == 2.5
+    for entry, message in (
+        ({"table": RAMP, "at": "middle"}, "instances.c.schedules.u.at = 'middle': allowed ['start', 'end']"),
+        ({"table": [[1, 0], [0, 1]], "at": "end"}, "instances.c.schedules.u.table: write a table"),
+        ({"points": RAMP}, "instances.c.schedules.u: unknown key(s) ['points']"),
+    ):
+        with pytest.raises(RunFileError) as err:
+            parse_run(clock_doc("clock.fmu", {"u": entry}), tmp_path / "r.toml")
+        assert message in str(err.value)
+
+
 def test_scheduled_input_that_is_also_constant_or_connected_is_refused(tmp_path):
     doc = clock_doc("clock.fmu", {"u": RAMP})
     doc["instances"]["c"]["inputs"] = {"u": 1.0}
@@ -91,6 +104,14 @@ def test_master_sets_the_scheduled_value_at_the_start_of_each_step(clock_fmu, tm
     assert result.columns["c.x"][-1] == 13.75
 
 
+def test_master_sets_the_value_at_the_end_of_each_step_when_asked(clock_fmu, tmp_path):
+    """at = "end": the FMU gets u(t + h) for the step [t, t + h]: x(2 s) = 0.25 (2.5 + 5 + 7.5 + 5 x 10) = 16.25;
+    initialisation still sets u(start) = 0."""
+    result = run(parse_run(clock_doc(clock_fmu, {"u": {"table": RAMP, "at": "end"}}), tmp_path / "r.toml"))
+    assert list(result.columns["c.u"]) == [0.0, 2.5, 5.0, 7.5, 10.0, 10.0, 10.0, 10.0, 10.0]
+    assert result.columns["c.x"][-1] == 16.25
+
+
 def test_halves_of_a_rejected_step_get_their_own_scheduled_values(clock_fmu, tmp_path):
     """h_max = 0.125 s refuses every 0.25 s step, so each is redone as two halves, each starting with
     u at its own start: x(2 s) = 0.125 (0 + 1.25 + ... + 8.75 + 8 x 10) = 0.125 (35 + 80) = 14.375."""
@@ -103,11 +124,15 @@ def test_halves_of_a_rejected_step_get_their_own_scheduled_values(clock_fmu, tmp
 
 
 def test_startup_run_files_ramp_every_speed_input():
-    """Both start-up runs give the same ramp 0 -> 10 000 rpm (1047.2 rad/s) over 2 s to the bearings and
-    to the spindle (its convection and centrifugal growth follow the speed)."""
-    for name in ("startup_dem.toml", "startup_qs.toml"):
+    """Both start-up runs and the demo give the same ramp 0 -> 10 000 rpm (1047.2 rad/s) over 2 s to the
+    bearings and to the spindle (its convection and centrifugal growth follow the speed). In the start-up
+    runs the bearings get the value at the end of each step (BearingDEM.fmu moves its speed linearly over
+    the step to it; the quasi-static run does the same for a like-for-like comparison)."""
+    for name in ("startup_dem.toml", "startup_qs.toml", "closed_loop_spring.toml"):
         spec = load_run(cli.RUNS / name)
-        for inst in spec.instances.values():
+        for inst_name, inst in spec.instances.items():
             omega = inst.schedules["omega"]
             assert omega(0.0) == 0.0 and omega(1.0) == pytest.approx(523.5987755982989, rel=1e-15)
             assert omega(2.0) == omega(10.0) == 1047.1975511965977
+            expected = "end" if name.startswith("startup") and inst_name.startswith("bearing") else "start"
+            assert omega.at == expected, (name, inst_name)
