@@ -19,6 +19,7 @@ import statistics
 
 import numpy as np
 
+from spindle.cli import exit_after
 from spindle.cosim.master import run
 from spindle.cosim.runfile import load_run
 
@@ -172,4 +173,4 @@ def plot(d, q):
 
 
 if __name__ == "__main__":
-    main()
+    exit_after(main)  # skips the interpreter teardown (known pythonfmu abort, spindle.cli.exit_after)
