@@ -3,6 +3,8 @@
 from . import (
     closed_loop,
     cosim_error,
+    dem_closed_loop,
+    dem_closed_loop_steps,
     dem_error,
     dem_figures,
     dem_fmu,
@@ -44,6 +46,8 @@ def main():
         dem_error,
         dem_figures,
         dem_fmu,
+        dem_closed_loop,
+        dem_closed_loop_steps,
     ):
         module.main()
 
