@@ -358,6 +358,8 @@ class QuasiStaticModel:
         radial load or moment with too little thrust) must be carried by another bearing or a preload
         (models.pair, or a second bearing FMU)."""
         balls = self.balls
+        if balls[qk.BQ_A_I].min() >= 0.0:  # the usual case, one reduction: no inner contact at a negative angle
+            return
         wrong = (balls[qk.BQ_Q_I] > 0.0) & (balls[qk.BQ_A_I] < 0.0)
         if not wrong.any():
             return
