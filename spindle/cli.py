@@ -13,7 +13,6 @@ Exit codes: 0 done; 1 error (message on stderr); 2 usage error or an FMU with va
 """
 
 import argparse
-import os
 import sys
 from pathlib import Path
 
@@ -73,12 +72,12 @@ def cmd_run(args):
             file=sys.stderr,
         )
         return EXIT_ERROR
-    result = run(spec, progress=args.progress)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     stem = Path(args.runfile).stem
     csv_path = out / f"{stem}.csv"
-    result.write_csv(csv_path)
+    # rows go to the CSV as the run goes (memory flat in run length); the plot reads the file
+    result = run(spec, progress=args.progress, record_interval=args.record_interval, csv_path=csv_path)
     written = [csv_path]
     if not args.no_plot:
         try:
@@ -87,9 +86,8 @@ def cmd_run(args):
             written.append(plot_run(result, out / f"{stem}.png", title=f"{stem}: {spec.description}"))
         except ImportError as exc:  # matplotlib is the optional extra `plot`
             print(f"plot skipped ({exc}): pip install 'bearing-fmu[plot]' for the PNG", file=sys.stderr)
-    steps = len(result.columns["time"]) - 1
     print(
-        f"{stem}: {steps} steps of {spec.step} s ({spec.algorithm}) in {result.wall_time:.2f} s wall "
+        f"{stem}: {result.n_steps} steps of {spec.step} s ({spec.algorithm}) in {result.wall_time:.2f} s wall "
         f"(+ {result.setup_time:.2f} s set-up); rejected steps: {result.rejected_steps}"
     )
     print("wrote " + ", ".join(str(p) for p in written))
@@ -149,7 +147,7 @@ def cmd_demo(args):
         )
         return EXIT_ERROR
     args.runfile = str(DEMO_RUN)
-    args.set, args.no_plot, args.progress, args.fmus = [], False, False, None
+    args.set, args.no_plot, args.progress, args.fmus, args.record_interval = [], False, False, None, None
     return cmd_run(args)
 
 
@@ -194,6 +192,13 @@ def main(argv=None):
     p.add_argument("--no-plot", action="store_true")
     p.add_argument("--progress", action="store_true", help="progress bar on stderr")
     p.add_argument("--fmus", default=None, metavar="DIR", help="folder of the FMUs the run file names")
+    p.add_argument(
+        "--record-interval",
+        type=float,
+        default=None,
+        metavar="SECONDS",
+        help="record every this many seconds (a multiple of the step; default every step)",
+    )
     p = sub.add_parser("sweep", help="many runs of a run file on Dask; one table")
     p.add_argument("runfile")
     p.add_argument("--param", required=True, help="dotted key, e.g. bearing_1.F_z or run.step")
@@ -229,32 +234,9 @@ def main(argv=None):
         raise
 
 
-def exit_after(entry):
-    """Run entry() (its int return value is the exit code; None = 0), then flush and os._exit.
-
-    Known defect (docs/decisions.md): after a run that loaded a pythonfmu FMU, the interpreter's
-    teardown aborts now and then with "corrupted double-linked list" (exit 134), after every result
-    is written. Until the cause (in the pythonfmu/numba teardown) is found, commands and benchmark
-    scripts leave with os._exit, which skips the teardown but not any of the work."""
-    try:
-        code = entry() or 0
-    except SystemExit as exc:
-        code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
-        if not isinstance(exc.code, int) and exc.code is not None:
-            print(exc.code, file=sys.stderr)
-    except BaseException:
-        import traceback
-
-        traceback.print_exc()
-        code = 1
-    sys.stdout.flush()
-    sys.stderr.flush()
-    os._exit(code)
-
-
 def run():
-    """Console-script entry `spindle`: main() without interpreter teardown (see exit_after)."""
-    exit_after(main)
+    """Console-script entry `spindle`: main()'s return value is the exit code."""
+    sys.exit(main())
 
 
 if __name__ == "__main__":
