@@ -6,10 +6,13 @@
     spindle info [FMU ...]                        what is built: variables, units, parameters
     spindle demo [--out results]                  the closed-loop demo run (runs/closed_loop_spring.toml)
     spindle validate [FMU ...]                    fmpy's validator on the FMUs
+    spindle check [FMU ...] [--ref CSV]           simulate each FMU's reference experiment, compare with <Name>_ref.csv
+    spindle export-ssp RUNFILE [--out FILE.ssp]   the run's FMUs, connections and parameters as an SSP 1.0 package
     spindle --version
 
 Exit codes: 0 done; 1 error (message on stderr); 2 usage error or an FMU with validation problems;
-3 the run stopped at a limit (e.g. thermal runaway; results up to there are written).
+3 the run stopped at a limit (e.g. thermal runaway; results up to there are written); 4 `check` found an
+output differing from the reference.
 """
 
 import argparse
@@ -22,12 +25,13 @@ RUNS = ROOT / "runs"
 # FMUs go to the checkout's fmus/ in a source tree, else to ./fmus of the working directory
 FMUS = ROOT / "fmus" if IN_CHECKOUT else Path.cwd() / "fmus"
 DEMO_RUN = RUNS / "closed_loop_spring.toml"
-EXIT_OK, EXIT_ERROR, EXIT_INVALID, EXIT_LIMIT = 0, 1, 2, 3
+EXIT_OK, EXIT_ERROR, EXIT_INVALID, EXIT_LIMIT, EXIT_DIFFERS = 0, 1, 2, 3, 4
 EXIT_CODES = f"""exit codes:
   {EXIT_OK}  done
   {EXIT_ERROR}  error (message on stderr)
   {EXIT_INVALID}  usage error, or `validate` found problems in an FMU
-  {EXIT_LIMIT}  a run stopped at a limit (e.g. thermal runaway); results up to there are written"""
+  {EXIT_LIMIT}  a run stopped at a limit (e.g. thermal runaway); results up to there are written
+  {EXIT_DIFFERS}  `check`: an FMU's output differs from its reference (the variable is named)"""
 
 
 def _value(text):
@@ -172,6 +176,48 @@ def cmd_validate(args):
     return EXIT_INVALID if bad else EXIT_OK
 
 
+def cmd_check(args):
+    """Each FMU (default: every FMU in the FMU folder) against its reference result."""
+    from .check import ATOL_SCALE, RTOL, check_fmu
+
+    paths = [Path(p) for p in args.fmus] or sorted(FMUS.glob("*.fmu"))
+    if not paths:
+        print(f"spindle check: no FMUs in {FMUS}: run `spindle build` or name the FMUs", file=sys.stderr)
+        return EXIT_ERROR
+    if args.ref and len(paths) != 1:
+        print("spindle check: --ref needs exactly one FMU", file=sys.stderr)
+        return EXIT_INVALID
+    failed = 0
+    for path in paths:
+        result = check_fmu(path, args.ref)
+        failed += not result.passed
+        verdict = "ok" if result.passed else f"DIFFERS in {len(result.differences)} output(s)"
+        print(
+            f"{path.name}: {verdict} ({result.rows} points, {result.outputs} outputs; "
+            f"largest difference {result.worst:.3g} x tolerance)"
+        )
+        for line in result.differences:
+            print(f"  {line}")
+    print(f"tolerance: {RTOL:g} relative, floor {ATOL_SCALE * RTOL:g} x the column's largest magnitude")
+    return EXIT_DIFFERS if failed else EXIT_OK
+
+
+def cmd_export_ssp(args):
+    from .cosim.runfile import load_run
+    from .cosim.ssp import export_ssp
+
+    spec = load_run(args.runfile, _overrides(args.set), fmu_dir=args.fmus)
+    out = Path(args.out) if args.out else Path(args.runfile).with_suffix(".ssp").name
+    print(f"wrote {export_ssp(spec, out)}")
+    if spec.algorithm != "jacobi":
+        print(
+            f"note: the run file steps {spec.algorithm}; libcosim and most SSP masters exchange Jacobi-style, "
+            "which `spindle run --set run.algorithm=jacobi` reproduces to the bit",
+            file=sys.stderr,
+        )
+    return EXIT_OK
+
+
 def main(argv=None):
     from bearing_fmu import __version__
 
@@ -213,6 +259,17 @@ def main(argv=None):
     p.add_argument("--out", default="results")
     p = sub.add_parser("validate", help="check FMUs with fmpy's validator (exit 2 on any problem)")
     p.add_argument("fmus", nargs="*")
+    p = sub.add_parser(
+        "check",
+        help="simulate each FMU's reference experiment and compare with <Name>_ref.csv (exit 4 on a difference)",
+    )
+    p.add_argument("fmus", nargs="*")
+    p.add_argument("--ref", default=None, metavar="CSV", help="reference CSV (default: <Name>_ref.csv beside the FMU)")
+    p = sub.add_parser("export-ssp", help="write a run file's system as an SSP 1.0 package (.ssp) for other masters")
+    p.add_argument("runfile")
+    p.add_argument("--out", default=None, metavar="FILE", help="the .ssp file (default: <runfile stem>.ssp here)")
+    p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override, e.g. bearing_1.F_z=1000")
+    p.add_argument("--fmus", default=None, metavar="DIR", help="folder of the FMUs the run file names")
     args = parser.parse_args(argv)
     handler = {
         "build": cmd_build,
@@ -221,6 +278,8 @@ def main(argv=None):
         "info": cmd_info,
         "demo": cmd_demo,
         "validate": cmd_validate,
+        "check": cmd_check,
+        "export-ssp": cmd_export_ssp,
     }
     try:
         return handler[args.command](args)
