@@ -38,7 +38,7 @@ from pathlib import Path
 
 # pythonfmu FMUs run inside this interpreter. Loading scipy's compiled libraries (numba imports scipy)
 # for the first time from inside an FMU can make the process abort at exit, so load both here, before
-# any FMU. (Not sufficient on its own: see spindle.cli.run.)
+# any FMU (docs/decisions.md, "Abort at interpreter exit after a long FMU run").
 import numba  # noqa: F401, E402
 import numpy as np
 import scipy.special  # noqa: F401, E402
