@@ -27,14 +27,18 @@ DEMO = ROOT / "runs" / "closed_loop_spring.toml"
 
 TWO_THREAD_HOST = """
 import sys, threading
-from fmpy import simulate_fmu
+from fmpy import read_model_description, simulate_fmu
 
 fmus = sys.argv[1:]
 results, errors = {}, []
+# validated here, one after the other: fmpy's schema validation (lxml) fails now and then when two
+# threads parse the schema at once ("Document is not valid XML Schema"), a host problem
+for path in fmus:
+    read_model_description(path, validate=True)
 
 def simulate(path):
     try:
-        results[path] = simulate_fmu(path, stop_time=2.0, step_size=0.01, output_interval=0.01)
+        results[path] = simulate_fmu(path, validate=False, stop_time=2.0, step_size=0.01, output_interval=0.01)
     except BaseException as exc:  # reported below: the process must exit non-zero
         errors.append(f"{path}: {exc!r}")
 
@@ -115,7 +119,11 @@ def main(argv=None):
         "",
         "Each process loads the FMUs from the warm numba cache, steps them and leaves through the",
         "normal interpreter teardown: the command line returns through `sys.exit`, the host script",
-        "by returning (no `os._exit` anywhere).",
+        "by returning (no `os._exit` anywhere). The host validates both model descriptions before it",
+        "starts its threads: in an earlier run of this loop 1 of 100 processes exited 1 because fmpy's",
+        "schema validation (lxml) failed when both threads parsed the XML schema at once",
+        '("Document is not valid XML Schema", raised in the thread and reported by the script), a host',
+        "problem and not a teardown abort.",
         "",
         "| processes of | runs | non-zero exits | exit codes (code: count) | s per process |",
         "|---|---|---|---|---|",
