@@ -45,12 +45,6 @@ import sys
 import uuid
 from pathlib import Path
 
-# pythonfmu 0.7 re-executes this file at every fmi2Instantiate with the module's globals and then
-# releases a reference to that dict that it never took (Py_DECREF on PyModule_GetDict's borrowed
-# reference in findClass). Keep one extra reference per execution, or the third instance of this
-# FMU in a process finds a freed namespace ("module has no attribute ''") or crashes the host.
-sys.__dict__.setdefault("_pythonfmu_namespace_refs", []).append(globals())
-
 _HERE = Path(__file__).resolve().parent
 _BUNDLE = "{bundle}"
 _PACKAGES = {packages!r}

@@ -26,7 +26,6 @@ from pathlib import Path
 
 import numpy as np
 
-from spindle.cli import exit_after
 from spindle.cosim.master import run
 from spindle.cosim.runfile import load_run
 from spindle.thermal.model import SpindleThermalModel
@@ -284,4 +283,4 @@ def plot(c):
 
 
 if __name__ == "__main__":
-    exit_after(main)  # skips the interpreter teardown (known pythonfmu abort, spindle.cli.exit_after)
+    sys.exit(main())

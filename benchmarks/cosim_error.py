@@ -19,12 +19,12 @@ Run: python -m benchmarks.cosim_error -> docs/reports/cosim_error.md and .png
 
 import os
 import statistics
+import sys
 import time
 from pathlib import Path
 
 import numpy as np
 
-from spindle.cli import exit_after
 from spindle.cosim.master import run
 from spindle.cosim.runfile import load_run
 
@@ -436,4 +436,4 @@ def plot(rows, by, ref):
 
 
 if __name__ == "__main__":
-    exit_after(main)  # skips the interpreter teardown (known pythonfmu abort, spindle.cli.exit_after)
+    sys.exit(main())

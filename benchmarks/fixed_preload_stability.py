@@ -22,13 +22,13 @@ Run: python -m benchmarks.fixed_preload_stability -> docs/reports/fixed_preload_
 """
 
 import os
+import sys
 import tempfile
 import time
 from pathlib import Path
 
 import numpy as np
 
-from spindle.cli import exit_after
 from spindle.cosim.master import run
 from spindle.cosim.runfile import load_run
 from spindle.thermal import network as nk
@@ -455,4 +455,4 @@ def plot(fixed, ss_rows, default):
 
 
 if __name__ == "__main__":
-    exit_after(main)  # skips the interpreter teardown (known pythonfmu abort, spindle.cli.exit_after)
+    sys.exit(main())

@@ -6,15 +6,17 @@
     spindle info [FMU ...]                        what is built: variables, units, parameters
     spindle demo [--out results]                  the closed-loop demo run (runs/closed_loop_spring.toml)
     spindle validate [FMU|RUNFILE ...]            fmpy's validator on the FMUs; run files (.toml) checked
+    spindle check [FMU ...] [--ref CSV]           simulate each FMU's reference experiment, compare with <Name>_ref.csv
+    spindle export-ssp RUNFILE [--out FILE.ssp]   the run's FMUs, connections and parameters as an SSP 1.0 package
     spindle --version
 
 Exit codes: 0 done; 1 error (message on stderr); 2 usage error or an FMU with validation problems;
-3 the run stopped at a limit (e.g. thermal runaway; results up to there are written).
+3 the run stopped at a limit (e.g. thermal runaway; results up to there are written); 4 `check` found an
+output differing from the reference.
 """
 
 import argparse
 import json
-import os
 import sys
 from pathlib import Path
 
@@ -24,12 +26,13 @@ RUNS = ROOT / "runs"
 # FMUs go to the checkout's fmus/ in a source tree, else to ./fmus of the working directory
 FMUS = ROOT / "fmus" if IN_CHECKOUT else Path.cwd() / "fmus"
 DEMO_RUN = RUNS / "closed_loop_spring.toml"
-EXIT_OK, EXIT_ERROR, EXIT_INVALID, EXIT_LIMIT = 0, 1, 2, 3
+EXIT_OK, EXIT_ERROR, EXIT_INVALID, EXIT_LIMIT, EXIT_DIFFERS = 0, 1, 2, 3, 4
 EXIT_CODES = f"""exit codes:
   {EXIT_OK}  done
   {EXIT_ERROR}  error (message on stderr)
   {EXIT_INVALID}  usage error, or `validate` found problems in an FMU or a run file
-  {EXIT_LIMIT}  a run stopped at a limit (e.g. thermal runaway); results up to there are written"""
+  {EXIT_LIMIT}  a run stopped at a limit (e.g. thermal runaway); results up to there are written
+  {EXIT_DIFFERS}  `check`: an FMU's output differs from its reference (the variable is named)"""
 
 
 def _value(text):
@@ -80,12 +83,12 @@ def cmd_run(args):
             file=sys.stderr,
         )
         return EXIT_ERROR
-    result = run(spec, progress=args.progress)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     stem = Path(args.runfile).stem
     csv_path = out / f"{stem}.csv"
-    result.write_csv(csv_path)
+    # rows go to the CSV as the run goes (memory flat in run length); the plot reads the file
+    result = run(spec, progress=args.progress, record_interval=args.record_interval, csv_path=csv_path)
     written = [csv_path]
     if not args.no_plot:
         try:
@@ -94,9 +97,8 @@ def cmd_run(args):
             written.append(plot_run(result, out / f"{stem}.png", title=f"{stem}: {spec.description}"))
         except ImportError as exc:  # matplotlib is the optional extra `plot`
             print(f"plot skipped ({exc}): pip install 'bearing-fmu[plot]' for the PNG", file=sys.stderr)
-    steps = len(result.columns["time"]) - 1
     print(
-        f"{stem}: {steps} steps of {spec.step} s ({spec.algorithm}) in {result.wall_time:.2f} s wall "
+        f"{stem}: {result.n_steps} steps of {spec.step} s ({spec.algorithm}) in {result.wall_time:.2f} s wall "
         f"(+ {result.setup_time:.2f} s set-up); rejected steps: {result.rejected_steps}"
     )
     print("wrote " + ", ".join(str(p) for p in written))
@@ -159,7 +161,7 @@ def cmd_demo(args):
         )
         return EXIT_ERROR
     args.runfile = str(DEMO_RUN)
-    args.set, args.no_plot, args.progress, args.fmus = [], False, False, None
+    args.set, args.no_plot, args.progress, args.fmus, args.record_interval = [], False, False, None, None
     return cmd_run(args)
 
 
@@ -194,6 +196,48 @@ def cmd_validate(args):
     return EXIT_INVALID if bad else EXIT_OK
 
 
+def cmd_check(args):
+    """Each FMU (default: every FMU in the FMU folder) against its reference result."""
+    from .check import ATOL_SCALE, RTOL, check_fmu
+
+    paths = [Path(p) for p in args.fmus] or sorted(FMUS.glob("*.fmu"))
+    if not paths:
+        print(f"spindle check: no FMUs in {FMUS}: run `spindle build` or name the FMUs", file=sys.stderr)
+        return EXIT_ERROR
+    if args.ref and len(paths) != 1:
+        print("spindle check: --ref needs exactly one FMU", file=sys.stderr)
+        return EXIT_INVALID
+    failed = 0
+    for path in paths:
+        result = check_fmu(path, args.ref)
+        failed += not result.passed
+        verdict = "ok" if result.passed else f"DIFFERS in {len(result.differences)} output(s)"
+        print(
+            f"{path.name}: {verdict} ({result.rows} points, {result.outputs} outputs; "
+            f"largest difference {result.worst:.3g} x tolerance)"
+        )
+        for line in result.differences:
+            print(f"  {line}")
+    print(f"tolerance: {RTOL:g} relative, floor {ATOL_SCALE * RTOL:g} x the column's largest magnitude")
+    return EXIT_DIFFERS if failed else EXIT_OK
+
+
+def cmd_export_ssp(args):
+    from .cosim.runfile import load_run
+    from .cosim.ssp import export_ssp
+
+    spec = load_run(args.runfile, _overrides(args.set), fmu_dir=args.fmus)
+    out = Path(args.out) if args.out else Path(args.runfile).with_suffix(".ssp").name
+    print(f"wrote {export_ssp(spec, out)}")
+    if spec.algorithm != "jacobi":
+        print(
+            f"note: the run file steps {spec.algorithm}; libcosim and most SSP masters exchange Jacobi-style, "
+            "which `spindle run --set run.algorithm=jacobi` reproduces to the bit",
+            file=sys.stderr,
+        )
+    return EXIT_OK
+
+
 def main(argv=None):
     from bearing_fmu import __version__
 
@@ -221,6 +265,13 @@ def main(argv=None):
     p.add_argument("--no-plot", action="store_true")
     p.add_argument("--progress", action="store_true", help="progress bar on stderr")
     p.add_argument("--fmus", default=None, metavar="DIR", help="folder of the FMUs the run file names")
+    p.add_argument(
+        "--record-interval",
+        type=float,
+        default=None,
+        metavar="SECONDS",
+        help="record every this many seconds (a multiple of the step; default every step)",
+    )
     p = sub.add_parser(
         "sweep", help="many runs of a run file on Dask; one table", epilog=EXIT_CODES, formatter_class=raw
     )
@@ -239,6 +290,17 @@ def main(argv=None):
         "validate", help="check FMUs with fmpy's validator, or run files (.toml) (exit 2 on any problem)"
     )
     p.add_argument("fmus", nargs="*")
+    p = sub.add_parser(
+        "check",
+        help="simulate each FMU's reference experiment and compare with <Name>_ref.csv (exit 4 on a difference)",
+    )
+    p.add_argument("fmus", nargs="*")
+    p.add_argument("--ref", default=None, metavar="CSV", help="reference CSV (default: <Name>_ref.csv beside the FMU)")
+    p = sub.add_parser("export-ssp", help="write a run file's system as an SSP 1.0 package (.ssp) for other masters")
+    p.add_argument("runfile")
+    p.add_argument("--out", default=None, metavar="FILE", help="the .ssp file (default: <runfile stem>.ssp here)")
+    p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override, e.g. bearing_1.F_z=1000")
+    p.add_argument("--fmus", default=None, metavar="DIR", help="folder of the FMUs the run file names")
     args = parser.parse_args(argv)
     handler = {
         "build": cmd_build,
@@ -247,6 +309,8 @@ def main(argv=None):
         "info": cmd_info,
         "demo": cmd_demo,
         "validate": cmd_validate,
+        "check": cmd_check,
+        "export-ssp": cmd_export_ssp,
     }
     try:
         return handler[args.command](args)
@@ -260,32 +324,9 @@ def main(argv=None):
         raise
 
 
-def exit_after(entry):
-    """Run entry() (its int return value is the exit code; None = 0), then flush and os._exit.
-
-    Known defect (docs/decisions.md): after a run that loaded a pythonfmu FMU, the interpreter's
-    teardown aborts now and then with "corrupted double-linked list" (exit 134), after every result
-    is written. Until the cause (in the pythonfmu/numba teardown) is found, commands and benchmark
-    scripts leave with os._exit, which skips the teardown but not any of the work."""
-    try:
-        code = entry() or 0
-    except SystemExit as exc:
-        code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
-        if not isinstance(exc.code, int) and exc.code is not None:
-            print(exc.code, file=sys.stderr)
-    except BaseException:
-        import traceback
-
-        traceback.print_exc()
-        code = 1
-    sys.stdout.flush()
-    sys.stderr.flush()
-    os._exit(code)
-
-
 def run():
-    """Console-script entry `spindle`: main() without interpreter teardown (see exit_after)."""
-    exit_after(main)
+    """Console-script entry `spindle`: main()'s return value is the exit code."""
+    sys.exit(main())
 
 
 if __name__ == "__main__":

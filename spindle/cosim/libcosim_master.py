@@ -128,9 +128,11 @@ def _convert(kind, value, where):
 
 
 class _Run:
-    """One libcosim execution (fixed step) with a time-series observer; `close()` destroys it."""
+    """One libcosim execution (fixed step) with a time-series observer; `close()` destroys it. With
+    `ssp` (the path of an SSP package) the execution, its instances, connections and initial values
+    come from the package; `step` is then its fixed step."""
 
-    def __init__(self, step, samples):
+    def __init__(self, step, samples, ssp=None):
         from libcosimpy._internal import get_last_error_message, libcosimc
         from libcosimpy.CosimExecution import CosimExecution
         from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
@@ -140,9 +142,20 @@ class _Run:
         self._lib = libcosimc()
         self.slaves, self.index, self.variables = {}, {}, {}  # per instance: CosimLocalSlave, index, variables
         log_output_level(CosimLogLevel.WARNING)  # libcosim logs every FMU load at INFO; FMU errors still show
-        self.execution = CosimExecution.from_step_size(_ticks(step, "step"))
+        if ssp is None:
+            self.execution = CosimExecution.from_step_size(_ticks(step, "step"))
+        else:
+            try:
+                self.execution = CosimExecution.from_ssp_file(str(ssp), _ticks(step, "step"))  # step in ns
+            except AssertionError:  # libcosimpy asserts on a null execution
+                raise LibcosimError(f"cannot load the SSP package {ssp}: {self._last_error()}") from None
         if not self.execution._CosimExecution__ptr:  # libcosimpy does not check this pointer
             raise LibcosimError(f"cannot create the execution: {self._last_error()}")
+        if ssp is not None:  # the package's instances, by name
+            for info in self.execution.slave_infos():
+                name, index = info.name.decode(), info.index
+                self.index[name] = index
+                self.variables[name] = {v.name.decode(): v for v in self.execution.slave_variables(index)}
         # a sized buffer: the default one keeps only the last 10 000 samples
         self.observer = CosimObserver.create_time_series(buffer_size=samples)
         if not self.execution.add_observer(self.observer):

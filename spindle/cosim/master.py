@@ -20,7 +20,10 @@ with a fixed communication step H:
 - optional step rejection (`rollback`): before a step every FMU's state is saved; if an FMU refuses
   the step, or a variable in `max_change` changes by more than allowed, all states are restored and
   the step is redone as two halves (up to `max_halvings` times);
-- `limits` stop the run with the limit's message (e.g. thermal runaway) and keep the results so far.
+- `limits` stop the run with the limit's message (e.g. thermal runaway) and keep the results so far;
+- results are recorded every `record_interval` seconds (default: every communication point; the last
+  point is always recorded) into arrays preallocated for the whole run, or streamed row by row to a
+  CSV file (`csv_path`) and not kept in memory: the master's memory does not grow with run length.
 Each FMU file is extracted once per master into a private temporary directory, removed at close().
 Names are resolved once, when the run is wired: every step reads each instance's watched outputs with
 one getReal (and one getInteger) call on precomputed value references and sets each instance's
@@ -34,10 +37,11 @@ import sys
 import tempfile
 import time as wallclock
 from dataclasses import dataclass, field
+from pathlib import Path
 
 # pythonfmu FMUs run inside this interpreter. Loading scipy's compiled libraries (numba imports scipy)
 # for the first time from inside an FMU can make the process abort at exit, so load both here, before
-# any FMU. (Not sufficient on its own: see spindle.cli.run.)
+# any FMU (docs/decisions.md, "Abort at interpreter exit after a long FMU run").
 import numba  # noqa: F401, E402
 import numpy as np
 import scipy.special  # noqa: F401, E402
@@ -79,10 +83,35 @@ class MasterError(RuntimeError):
     """An FMI call failed or a step could not be completed; the message carries the FMU's log."""
 
 
+def csv_header(names, units):
+    """Header cells 'name [unit]' of a result CSV (the unit '1' when dimensionless)."""
+    return [f"{n} [{units.get(n, '1')}]" for n in names]
+
+
+def csv_row(values):
+    """Cells of one result row: repr of each float, which round-trips exactly."""
+    return [repr(float(v)) for v in values]
+
+
+def read_csv(path):
+    """Columns and units of a result CSV written by the master: ({name: numpy array}, {name: unit})."""
+    with open(path, newline="") as fh:
+        reader = csv.reader(fh)
+        header = next(reader)
+        values = np.array([[float(v) for v in row] for row in reader], dtype=float).reshape(-1, len(header))
+    names, units = [], {}
+    for cell in header:
+        name, _, unit = cell.rpartition(" [")
+        names.append(name)
+        units[name] = unit.rstrip("]")
+    return {n: values[:, k].copy() for k, n in enumerate(names)}, units
+
+
 @dataclass
 class RunResult:
-    """Recorded trajectories: columns[name] (numpy array, SI unit units[name]), one row per
-    communication point from the start (after initialisation) to the end or the stop."""
+    """Recorded trajectories: columns[name] (numpy array, SI unit units[name]), one row per recorded
+    communication point from the start (after initialisation) to the end or the stop. A run streamed
+    to a CSV file keeps no columns in memory (columns is empty, csv_path names the file: read_csv)."""
 
     columns: dict
     units: dict
@@ -93,15 +122,23 @@ class RunResult:
     rejected_steps: int = 0
     log: list = field(default_factory=list)
     cpu_time: float = 0.0  # s, this process's CPU time for the stepping (not lengthened by other processes)
+    csv_path: str = None  # the CSV the rows were streamed to, or None (rows in columns)
+    n_rows: int = 0  # recorded rows (communication points)
+    n_steps: int = 0  # communication steps done (the run reached start + n_steps * step)
 
     def write_csv(self, path):
-        """CSV with a header 'name [unit]' and one row per communication point (repr floats)."""
+        """CSV with a header 'name [unit]' and one row per recorded communication point (repr floats);
+        a streamed result copies its file."""
+        if self.csv_path is not None:
+            if Path(path).resolve() != Path(self.csv_path).resolve():
+                shutil.copyfile(self.csv_path, path)
+            return
         names = list(self.columns)
         with open(path, "w", newline="") as fh:
             writer = csv.writer(fh)  # quotes names like K[3,3]
-            writer.writerow([f"{n} [{self.units.get(n, '1')}]" for n in names])
+            writer.writerow(csv_header(names, self.units))
             for row in zip(*(self.columns[n] for n in names)):
-                writer.writerow([repr(float(v)) for v in row])
+                writer.writerow(csv_row(row))
 
 
 class Instance:
@@ -458,45 +495,65 @@ class Master:
                 )
         return None
 
-    def run(self, progress=False):
-        """Initialise, step to the stop time (or a limit) and return the RunResult."""
+    def run(self, progress=False, record_interval=None, csv_path=None):
+        """Initialise, step to the stop time (or a limit) and return the RunResult.
+
+        record_interval (s): record every this many seconds, a whole multiple of the step (default:
+        every communication point); the last point reached is always recorded. csv_path: stream the
+        rows to this CSV file as the run goes instead of keeping them in memory."""
         spec = self.spec
+        every = self._record_every(record_interval)
         t_setup = wallclock.perf_counter()
         self._initialise()
         setup = self.setup_time + wallclock.perf_counter() - t_setup
         n_steps = spec.n_steps
-        rows = [self._values()]
-        times = [spec.start]
-        status, message, rejected = "ok", self._check_limits(spec.start) or "", 0
-        if message:
-            status = "limit"
-        bar = _Progress(n_steps, progress)
-        t_wall, t_cpu = wallclock.perf_counter(), wallclock.process_time()
-        for n in range(n_steps if status == "ok" else 0):
-            t = spec.start + n * spec.step
-            if spec.rollback:
-                rejected += self._guarded_step(t, spec.step)
-            else:
-                self._macro_step(t, spec.step)
-            t_next = spec.start + (n + 1) * spec.step
-            rows.append(self._values())
-            times.append(t_next)
-            bar.update(n + 1)
-            message = self._check_limits(t_next) or ""
-            if message:
-                status = "limit"
-                break
-        wall, cpu = wallclock.perf_counter() - t_wall, wallclock.process_time() - t_cpu
-        bar.close()
-        columns = {"time": np.array(times)}
-        for q in self.recorded:
-            columns[q] = np.array([r[q] for r in rows], dtype=float)
         units = {"time": "s"}
         for q in self.recorded:
             inst, var = split_name(q)
             units[q] = getattr(self.instances[inst].variables[var], "unit", None) or "1"
+        rows = n_steps // every + 2  # every `every`-th point from 0, plus the last one
+        recorder = _CsvRecorder(csv_path, units) if csv_path is not None else _ArrayRecorder(rows, units)
+        with recorder:
+            recorder.add(spec.start, self._record)
+            status, message, rejected = "ok", self._check_limits(spec.start) or "", 0
+            if message:
+                status = "limit"
+            bar = _Progress(n_steps, progress)
+            t_wall, t_cpu = wallclock.perf_counter(), wallclock.process_time()
+            done = 0
+            for n in range(n_steps if status == "ok" else 0):
+                t = spec.start + n * spec.step
+                if spec.rollback:
+                    rejected += self._guarded_step(t, spec.step)
+                else:
+                    self._macro_step(t, spec.step)
+                t_next = spec.start + (n + 1) * spec.step
+                done = n + 1
+                bar.update(done)
+                message = self._check_limits(t_next) or ""
+                if message:
+                    status = "limit"
+                if (n + 1) % every == 0 or n + 1 == n_steps or message:
+                    recorder.add(t_next, self._record)
+                if message:
+                    break
+            wall, cpu = wallclock.perf_counter() - t_wall, wallclock.process_time() - t_cpu
+            bar.close()
         log = [f"{n}: {line}" for n, i in self.instances.items() for line in i.log]
-        return RunResult(columns, units, status, message, wall, setup, rejected, log, cpu)
+        return RunResult(
+            recorder.columns(), units, status, message, wall, setup, rejected, log, cpu, csv_path, recorder.n_rows, done
+        )
+
+    def _record_every(self, record_interval):
+        """Steps between recorded points for a record interval in seconds (None: 1)."""
+        if record_interval is None:
+            return 1
+        every = round(record_interval / self.spec.step)
+        if every < 1 or not math.isclose(every * self.spec.step, record_interval, rel_tol=1e-9):
+            raise MasterError(
+                f"record interval {record_interval!r} s is not a whole multiple of the step {self.spec.step!r} s"
+            )
+        return every
 
     def close(self):
         for inst in self.instances.values():
@@ -510,10 +567,11 @@ class Master:
         self._dirs = []
 
 
-def run(spec, progress=False):
-    """Run a RunSpec from start to end; always frees the FMUs and removes their extraction."""
+def run(spec, progress=False, record_interval=None, csv_path=None):
+    """Run a RunSpec from start to end (Master.run for the arguments); always frees the FMUs and
+    removes their extraction."""
     with Master(spec) as master:
-        return master.run(progress=progress)
+        return master.run(progress=progress, record_interval=record_interval, csv_path=csv_path)
 
 
 class _Progress:
@@ -546,3 +604,51 @@ class _Progress:
             self._bar.close()
         elif self.enabled:
             sys.stderr.write("\n")
+
+
+class _ArrayRecorder:
+    """Rows into numpy arrays preallocated for the whole run (`capacity` rows); columns() trims them."""
+
+    def __init__(self, capacity, units):
+        self.names = list(units)
+        self.values = np.empty((capacity, len(self.names)))
+        self.n_rows = 0
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        pass
+
+    def add(self, t, record):
+        row = self.values[self.n_rows]
+        row[0] = t
+        for k, (_, inst, var) in enumerate(record, start=1):
+            row[k] = inst.cache[var]
+        self.n_rows += 1
+
+    def columns(self):
+        return {n: self.values[: self.n_rows, k].copy() for k, n in enumerate(self.names)}
+
+
+class _CsvRecorder:
+    """Rows streamed to a CSV file (header 'name [unit]', repr floats) as the run goes; nothing kept."""
+
+    def __init__(self, path, units):
+        self.path, self.units, self.n_rows = path, units, 0
+
+    def __enter__(self):
+        self._fh = open(self.path, "w", newline="")
+        self._writer = csv.writer(self._fh)  # quotes names like K[3,3]
+        self._writer.writerow(csv_header(list(self.units), self.units))
+        return self
+
+    def __exit__(self, *exc):
+        self._fh.close()
+
+    def add(self, t, record):
+        self._writer.writerow(csv_row([t] + [inst.cache[var] for _, inst, var in record]))
+        self.n_rows += 1
+
+    def columns(self):
+        return {}

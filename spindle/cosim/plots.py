@@ -5,6 +5,8 @@ temperatures = variables starting with T_ (shown in C), torque, axial load (F_z)
 Lambda_*, C_bearing. Panels without data are left out.
 """
 
+from pathlib import Path
+
 import numpy as np
 
 PANELS = (
@@ -18,13 +20,19 @@ PANELS = (
 
 
 def plot_run(result, path, title=""):
-    """Write a PNG of the recorded trajectories of a RunResult (or any object with .columns)."""
+    """Write a PNG of the recorded trajectories of a RunResult (or any object with .columns), of a run
+    streamed to a CSV file (its RunResult, or the file's path: the plot reads the file)."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    cols = result.columns
+    from .master import read_csv
+
+    if isinstance(result, (str, Path)):
+        cols = read_csv(result)[0]
+    else:
+        cols = result.columns or read_csv(result.csv_path)[0]
     t = cols["time"]
     scale_t, t_label = (1.0 / 60.0, "time (min)") if t[-1] > 600 else (1.0, "time (s)")
     panels = []

@@ -22,7 +22,7 @@ import pytest
 from bearing_fmu.build import SCENES_DIR
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
-from spindle.cosim.master import Master, MasterError, run
+from spindle.cosim.master import Master, MasterError, read_csv, run
 from spindle.cosim.runfile import RunFileError, parse_run
 from spindle.thermal.model import SpindleThermalModel
 
@@ -517,3 +517,37 @@ def test_csv_header_units_quoting_and_round_trip(tmp_path, bearing_fmu, spindle_
         values = np.array([float(r[k]) for r in rows[1:]])
         np.testing.assert_array_equal(values, result.columns[name], err_msg=name)  # repr round-trips
     assert math.isfinite(result.columns["bearing_1.K[3,3]"][-1]) and result.columns["bearing_1.K[3,3]"][-1] > 0
+
+
+# -- recording: interval, arrays or a streamed CSV --------------------------------------------------
+def test_record_interval_keeps_every_kth_point_and_the_last(clock_fmu):
+    """record_interval = 4 H over 30 steps records t = 0, 4H, ..., 28H and the last point 30H; the values
+    are those of the run recorded at every step, at the same points (recording does not change the run)."""
+    spec = spec_of(clock_doc(clock_fmu))  # 30 steps of 0.1 s
+    every = run(spec).columns
+    sparse = run(spec, record_interval=0.4)
+    rows = [*range(0, 30, 4), 30]
+    assert sparse.n_rows == len(rows) and sparse.n_steps == 30
+    for name, values in every.items():
+        np.testing.assert_array_equal(sparse.columns[name], values[rows], err_msg=name)
+
+
+def test_record_interval_must_be_a_multiple_of_the_step(clock_fmu):
+    with pytest.raises(MasterError, match="record interval 0.25 s is not a whole multiple of the step 0.1 s"):
+        run(spec_of(clock_doc(clock_fmu)), record_interval=0.25)
+
+
+def test_streamed_csv_equals_the_recorded_columns_and_keeps_none_in_memory(tmp_path, clock_fmu):
+    """csv_path streams the rows as the run goes: the file holds exactly the rows (repr floats round-trip)
+    and units of the in-memory recording, the result keeps no columns, and write_csv copies the file."""
+    spec = spec_of(clock_doc(clock_fmu))
+    in_memory = run(spec, record_interval=0.2)
+    streamed = run(spec, record_interval=0.2, csv_path=tmp_path / "run.csv")
+    assert streamed.columns == {} and streamed.n_rows == in_memory.n_rows == 16
+    columns, units = read_csv(tmp_path / "run.csv")
+    assert list(columns) == list(in_memory.columns) and units == in_memory.units
+    for name, values in in_memory.columns.items():
+        np.testing.assert_array_equal(columns[name], values, err_msg=name)
+    in_memory.write_csv(tmp_path / "memory.csv")
+    streamed.write_csv(tmp_path / "copy.csv")
+    assert (tmp_path / "copy.csv").read_bytes() == (tmp_path / "memory.csv").read_bytes()

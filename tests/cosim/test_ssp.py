@@ -1,0 +1,105 @@
+"""spindle.cosim.ssp: the run file's system as an SSP 1.0 package that libcosim loads and runs.
+
+Expectation: the same result as the project's master with the same algorithm and step, to the bit. Both
+masters run the same FMU code in this interpreter, libcosim's fixed-step algorithm is a Jacobi exchange
+whose initialisation hands every connected input its source's initialisation-mode output, which is what
+spindle.cosim.master's Jacobi initialisation does (tests/cosim/test_libcosim_vs_fmpy.py, which builds the
+same system through libcosim's API instead of a package). So any difference would be a value the package
+carries wrongly (a parameter, an input, a connection, the step); the acceptance is 1e-9 relative and the
+test also asserts exact equality.
+"""
+
+import zipfile
+from xml.etree import ElementTree as ET
+
+import numpy as np
+import pytest
+
+pytest.importorskip("libcosimpy", reason="libcosimpy not installed (optional extra 'cosim')")
+
+from spindle.cli import main  # noqa: E402
+from spindle.cosim.master import MasterError, run  # noqa: E402
+from spindle.cosim.runfile import load_run  # noqa: E402
+from spindle.cosim.ssp import SSD, SSV, export_ssp, run_ssp_in_libcosim  # noqa: E402
+from tests.conftest import ROOT  # noqa: E402
+
+SPRING = ROOT / "runs" / "closed_loop_spring.toml"
+# the demo runs up from rest by an input schedule, which SSP 1.0 cannot carry: exported at constant speed
+AT_SPEED = {f"{name}.omega": 1047.1975511965977 for name in ("bearing_1", "bearing_2", "spindle")}
+
+
+def test_package_runs_in_libcosim_equal_to_the_jacobi_master(closed_loop_fmus, tmp_path):
+    spec = load_run(SPRING, {**AT_SPEED, "run.algorithm": "jacobi", "run.stop": 30.0})
+    package = export_ssp(spec, tmp_path / "loop.ssp")
+    master = run(spec)
+    record = [name for name in master.columns if name != "time"]
+    libcosim = run_ssp_in_libcosim(package, spec.step, spec.stop, record)
+    np.testing.assert_array_equal(libcosim["time"], master.columns["time"])
+    for name in record:
+        a, b = libcosim[name], master.columns[name]
+        scale = np.maximum(np.abs(a), np.abs(b))
+        assert np.all(np.abs(a - b) <= 1e-9 * scale), name  # the acceptance
+        np.testing.assert_array_equal(a, b, err_msg=name)
+    # the loop did something: the inner rings warmed by more than 5 K in 30 s
+    assert master.columns["spindle.T_inner_ring_1"][-1] > master.columns["spindle.T_inner_ring_1"][0] + 5.0
+
+
+def test_input_schedules_are_refused_with_the_way_to_hold_them(closed_loop_fmus, tmp_path):
+    """SSP 1.0 has no time tables: a run file with a schedule is refused, naming the scheduled inputs and the
+    override that holds them constant; nothing is written."""
+    with pytest.raises(MasterError) as info:
+        export_ssp(load_run(SPRING), tmp_path / "loop.ssp")
+    assert "bearing_1.omega" in str(info.value) and "--set" in str(info.value)
+    assert not (tmp_path / "loop.ssp").exists()
+
+
+def test_package_holds_each_fmu_once_the_components_values_and_connections(closed_loop_fmus, tmp_path):
+    spec = load_run(SPRING, AT_SPEED)
+    package = export_ssp(spec, tmp_path / "loop.ssp")
+    with zipfile.ZipFile(package) as archive:
+        assert sorted(archive.namelist()) == [
+            "SystemStructure.ssd",
+            "resources/Bearing.fmu",
+            "resources/SpindleThermal.fmu",
+        ]
+        assert archive.read("resources/Bearing.fmu") == (ROOT / "fmus" / "Bearing.fmu").read_bytes()
+        root = ET.fromstring(archive.read("SystemStructure.ssd"))
+    assert root.get("version") == "1.0"
+    components = {c.get("name"): c for c in root.iter(f"{{{SSD}}}Component")}
+    assert list(components) == ["bearing_1", "bearing_2", "spindle"]
+    assert components["bearing_2"].get("source") == "resources/Bearing.fmu"
+    values = {
+        p.get("name"): p[0].get("value") for p in components["spindle"].iter(f"{{{SSV}}}Parameter")
+    }  # the run file's parameters and constant inputs, as written there
+    assert values == {
+        "spindle": "b7214c_x_pair",
+        "omega": "1047.1975511965977",
+        "T_ambient": "293.15",
+        "T_coolant": "293.15",
+        "P_motor": "0.0",
+    }
+    connections = [
+        (f"{c.get('startElement')}.{c.get('startConnector')}", f"{c.get('endElement')}.{c.get('endConnector')}")
+        for c in root.iter(f"{{{SSD}}}Connection")
+    ]
+    assert connections == list(spec.connections) and len(connections) == 8
+    experiment = root.find(f"{{{SSD}}}DefaultExperiment")
+    assert (experiment.get("startTime"), experiment.get("stopTime")) == ("0.0", "3600.0")
+    assert (
+        next(experiment.iter("{http://opensimulationplatform.com/SSP/OSPAnnotations}FixedStepAlgorithm")).get(
+            "baseStepSize"
+        )
+        == "1.0"
+    )
+
+
+def test_refused_parameter_is_reported_before_anything_is_written(closed_loop_fmus, tmp_path, capsys):
+    """A misspelled bearing name would end a libcosim process at initialisation; the export finds it first
+    with the FMU's own message and writes no package (exit code 1 from the command line)."""
+    out = tmp_path / "bad.ssp"
+    spec = load_run(SPRING, {"bearing_2.bearing": "B7214X"})
+    with pytest.raises(MasterError, match="bearing_2: initialisation failed: .*B7214X"):
+        export_ssp(spec, out)
+    assert not out.exists()
+    assert main(["export-ssp", str(SPRING), "--set", "bearing_2.bearing=B7214X", "--out", str(out)]) == 1
+    assert "B7214X" in capsys.readouterr().err and not out.exists()
