@@ -37,7 +37,7 @@ from bearing_fmu import AnalyticModel, QuasiStaticModel, Scene
 from bearing_fmu.build import SCENES_DIR
 from bearing_fmu.models.dem import DemModel, DemUnstableError
 
-from .common import REPORTS, machine, write_report
+from .common import REPORTS, machine, record, write_report
 
 LUBRICANT = "iso_vg68_mineral"
 QS_SCENE = Scene.from_toml(SCENES_DIR / "quasi_static.toml")  # the scene of Bearing.fmu
@@ -358,6 +358,10 @@ def main():
     table = errors(rows)
     (REPORTS / "fidelity_ladder.json").write_text(json.dumps(rows, indent=1, default=float))
     entries = ladder(rows)
+    for (fidelity, quantity), values in table.items():
+        record("fidelity_ladder", f"{fidelity}: max relative error of {quantity}", max(values), "1", kind="error")
+    for name, (cost, _) in entries.items():
+        record("fidelity_ladder", f"{name}: wall time per operating point", cost, "s", kind="timing")
     fronts = plot(entries, REPORTS / "fidelity_ladder.png")
     write_report("fidelity_ladder.md", report(rows, table, entries, fronts, time.perf_counter() - t0))
     return rows, table
