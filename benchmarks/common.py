@@ -36,6 +36,14 @@ def write_report(name, text):
 METRICS = REPORTS / "metrics.json"
 
 
+def forget(benchmark):
+    """Drop a benchmark's recorded metrics (before it runs again, so no stale entry survives)."""
+    if METRICS.exists():
+        metrics = json.loads(METRICS.read_text())
+        metrics.pop(benchmark, None)
+        METRICS.write_text(json.dumps(metrics, indent=1) + "\n")
+
+
 def record(benchmark, key, value, unit, *, kind, target=None, note=""):
     """Keep a headline number of a benchmark for docs/report.md (benchmarks/report.py) in docs/reports/metrics.json.
 
@@ -47,4 +55,4 @@ def record(benchmark, key, value, unit, *, kind, target=None, note=""):
         value=float(value), unit=unit, kind=kind, target=None if target is None else float(target), note=note
     )
     REPORTS.mkdir(parents=True, exist_ok=True)
-    METRICS.write_text(json.dumps(metrics, indent=1, sort_keys=True) + "\n")
+    METRICS.write_text(json.dumps(metrics, indent=1) + "\n")

@@ -6,6 +6,7 @@
     spindle info [FMU ...]                        what is built: variables, units, parameters
     spindle demo [--out results]                  the closed-loop demo run (runs/closed_loop_spring.toml)
     spindle validate [FMU ...]                    fmpy's validator on the FMUs
+    spindle report [--reuse] [--only NAME ...]    error against run time, timing, stability: docs/report.md
     spindle --version
 
 Exit codes: 0 done; 1 error (message on stderr); 2 usage error or an FMU with validation problems;
@@ -153,6 +154,22 @@ def cmd_demo(args):
     return cmd_run(args)
 
 
+def cmd_report(args):
+    """Run the accuracy, timing and stability suites and write docs/report.md (benchmarks/report.py)."""
+    if not IN_CHECKOUT or not (ROOT / "benchmarks" / "report.py").is_file():
+        print(
+            "spindle report: the benchmarks and tests it runs are part of the source tree; run it from a clone "
+            "(`make report`)",
+            file=sys.stderr,
+        )
+        return EXIT_ERROR
+    sys.path.insert(0, str(ROOT))
+    from benchmarks.report import main as report
+
+    report((["--reuse"] if args.reuse else []) + (["--only", *args.only] if args.only else []))
+    return EXIT_OK
+
+
 def cmd_validate(args):
     """fmpy's validator on each FMU (default: every FMU in the FMU folder); problems are printed."""
     from fmpy.validation import validate_fmu
@@ -208,11 +225,15 @@ def main(argv=None):
     p.add_argument("--out", default="results")
     p = sub.add_parser("validate", help="check FMUs with fmpy's validator (exit 2 on any problem)")
     p.add_argument("fmus", nargs="*")
+    p = sub.add_parser("report", help="error against run time, timing and stability report: docs/report.md")
+    p.add_argument("--reuse", action="store_true", help="assemble from the reports already written")
+    p.add_argument("--only", nargs="+", metavar="BENCHMARK", help="run only these benchmarks, then assemble")
     args = parser.parse_args(argv)
     handler = {
         "build": cmd_build,
         "run": cmd_run,
         "sweep": cmd_sweep,
+        "report": cmd_report,
         "info": cmd_info,
         "demo": cmd_demo,
         "validate": cmd_validate,
