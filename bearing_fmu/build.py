@@ -182,6 +182,14 @@ def _toml_value(value):
     return f'"{value}"' if isinstance(value, str) else repr(value)
 
 
+def _range(var):
+    """The allowed range of an input or parameter as shown in fmus/<Name>.md: [min, max] (the FMI min/max)
+    or the allowed String values."""
+    if var.min is not None:
+        return f"[{var.min:g}, {var.max:g}]"
+    return ", ".join(f"`{c}`" for c in var.choices)
+
+
 def _start(value):
     if value is None:
         return ""
@@ -192,7 +200,8 @@ def _start(value):
 
 def variables_markdown(fmu_name, description, about, parameters, inputs, outputs, scene=None):
     """The variable list of an FMU in the manner of the Modelica Reference-FMUs' per-FMU readme: its
-    description, then one table row per variable (causality, type, unit, start, description).
+    description, then one table row per variable (causality, type, unit, start, allowed range, description;
+    the reason of a range follows the description).
     parameters/inputs/outputs: declarations (bearing_fmu_common.variables.Variable) as the FMU
     registers them; scene: the scene the starts of scene-dependent parameters come from."""
     lines = [
@@ -204,15 +213,17 @@ def variables_markdown(fmu_name, description, about, parameters, inputs, outputs
         "",
         "Generated from the variable declarations by `spindle build`; do not edit.",
         "",
-        "| Variable | Causality | Type | Unit | Start | Description |",
-        "|---|---|---|---|---|---|",
+        "| Variable | Causality | Type | Unit | Start | Range | Description |",
+        "|---|---|---|---|---|---|---|",
     ]
     for causality, variables in (("parameter", parameters), ("input", inputs), ("output", outputs)):
         for v in variables:
             start = _start(v.start_in(scene)) if causality != "output" else ""
-            text = v.description.replace("|", "\\|")  # a '|' would end the table cell
+            text = v.description + (f" (range: {v.limits})" if v.limits else "")
+            text = text.replace("|", "\\|")  # a '|' would end the table cell
             unit = v.unit if v.kind == "real" else ""  # FMI 2.0 gives units to Real variables only
-            lines.append(f"| `{v.name}` | {causality} | {FMI_TYPES[v.kind]} | {unit} | {start} | {text} |")
+            allowed = _range(v) if causality != "output" else ""
+            lines.append(f"| `{v.name}` | {causality} | {FMI_TYPES[v.kind]} | {unit} | {start} | {allowed} | {text} |")
     return "\n".join(lines) + "\n"
 
 

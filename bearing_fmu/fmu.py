@@ -12,7 +12,7 @@ outputs keep their last valid values. A refused parameter makes exit_initializat
 
 from pythonfmu.enums import Fmi2Status
 
-from bearing_fmu_common.fmi import DeclaredSlave, add_unit_definitions, declared_parameter
+from bearing_fmu_common.fmi import DeclaredSlave, add_unit_definitions, check_parameters, declared_parameter
 from bearing_fmu_common.variables import select
 
 from .kernels.ball_dynamics.state import ST_CODE
@@ -37,7 +37,8 @@ class _BearingSlave(DeclaredSlave):
         self._model = None
         self._built_for = None
         self._ready = False
-        for var in select(self.parameters, self.scene):
+        self._parameters = select(self.parameters, self.scene)
+        for var in self._parameters:
             setattr(self, var.name, var.start_in(self.scene))
             self.register_variable(declared_parameter(var, self.scene))
         self._build_model()
@@ -52,6 +53,7 @@ class _BearingSlave(DeclaredSlave):
         raise NotImplementedError
 
     def _build_model(self):
+        check_parameters(self, self._parameters)
         key = self._model_key()
         if self._built_for != key:
             self._model = self._make_model()

@@ -31,15 +31,21 @@ BASE_UNITS = {
 
 
 class UnitReal(Real):
-    """pythonfmu Real with an FMI `unit` attribute."""
+    """pythonfmu Real with an FMI `unit` attribute and, for inputs and parameters, the declared allowed
+    range as `min`/`max` (bearing_fmu_common.variables.Variable)."""
 
-    def __init__(self, name, unit, **kwargs):
+    def __init__(self, name, unit, minimum=None, maximum=None, **kwargs):
         super().__init__(name, **kwargs)
         self.unit = unit
+        self.minimum, self.maximum = minimum, maximum
 
     def to_xml(self):
         node = super().to_xml()
-        node.find("Real").set("unit", self.unit)
+        real = node.find("Real")
+        real.set("unit", self.unit)
+        for key, value in (("min", self.minimum), ("max", self.maximum)):
+            if value is not None:
+                real.set(key, f"{value:.16g}")  # as pythonfmu writes start: enough digits to read back exactly
         return node
 
 
@@ -57,8 +63,9 @@ def add_unit_definitions(root: Element, variables):
     return root
 
 
-def parameter(name, start, description, unit=None):
-    """A fixed parameter variable (Real with unit, Boolean for a bool start, or String when unit is None)."""
+def parameter(name, start, description, unit=None, minimum=None, maximum=None):
+    """A fixed parameter variable (Real with unit and allowed range, Boolean for a bool start, or String
+    when unit is None)."""
     kwargs = dict(
         causality=Fmi2Causality.parameter,
         variability=Fmi2Variability.fixed,
@@ -70,14 +77,16 @@ def parameter(name, start, description, unit=None):
         return Boolean(name, **kwargs)
     if unit is None:
         return String(name, **kwargs)
-    return UnitReal(name, unit, **kwargs)
+    return UnitReal(name, unit, minimum, maximum, **kwargs)
 
 
-def input_variable(name, unit, start, description, getter=None, setter=None):
-    """A continuous Real input with its unit."""
+def input_variable(name, unit, start, description, getter=None, setter=None, minimum=None, maximum=None):
+    """A continuous Real input with its unit and allowed range."""
     return UnitReal(
         name,
         unit,
+        minimum,
+        maximum,
         causality=Fmi2Causality.input,
         variability=Fmi2Variability.continuous,
         start=start,
@@ -101,7 +110,20 @@ def output_variable(name, unit, description, integer=False, getter=None, setter=
 
 def declared_parameter(var, scene=None):
     """The FMI parameter of a declaration (bearing_fmu_common.variables.Variable) with its start in `scene`."""
-    return parameter(var.name, var.start_in(scene), var.description, unit=var.unit or None)
+    return parameter(var.name, var.start_in(scene), var.description, var.unit or None, var.min, var.max)
+
+
+def check_parameters(slave, declarations):
+    """Raise InputError (bearing_fmu_common.variables) naming the first parameter of `declarations` whose
+    value on `slave` is outside its declared range (Real) or not one of its allowed values (String), also
+    when the model would not use it (Pd with Pd_from_file = true): a value outside the declared range is
+    never accepted."""
+    for var in declarations:
+        value = getattr(slave, var.name)
+        if var.kind == "real":
+            var.check(value)
+        elif var.kind == "string":
+            var.check_choice(value)
 
 
 class DeclaredSlave(Fmi2Slave):
@@ -124,6 +146,8 @@ class DeclaredSlave(Fmi2Slave):
                 var.description,
                 getter=lambda k=k: self._u[k],
                 setter=lambda value, k=k: self._u.__setitem__(k, value),
+                minimum=var.min,
+                maximum=var.max,
             )
             self.register_variable(fmi_var)
             self._input_slot[fmi_var.value_reference] = k

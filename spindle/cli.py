@@ -134,10 +134,13 @@ def cmd_info(args):
         print(f"  {md.description}")
         for causality in ("parameter", "input", "output"):
             for v in groups.get(causality, []) if args.fmus else []:
-                print(f"  {causality:9s} {v.name:20s} [{v.unit or '-'}] {v.description or ''}")
-            if not args.fmus:
+                allowed = (
+                    f" range [{float(v.min):g}, {float(v.max):g}]" if v.min is not None and v.max is not None else ""
+                )
+                print(f"  {causality:9s} {v.name:20s} [{v.unit or '-'}]{allowed} {v.description or ''}")
+            if not args.fmus:  # every name: a list cut short hides the variable a user looks for
                 names = [v.name for v in groups.get(causality, [])]
-                print(f"  {causality}s ({len(names)}): {', '.join(names[:14])}{' ...' if len(names) > 14 else ''}")
+                print(f"  {causality}s ({len(names)}): {', '.join(names)}")
     return 0
 
 
@@ -202,16 +205,25 @@ def main(argv=None):
     )
     parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
     sub = parser.add_subparsers(dest="command", required=True)
+    raw = argparse.RawDescriptionHelpFormatter
     p = sub.add_parser("build", help=f"build every FMU into {FMUS}")
     p.add_argument("--out", default=str(FMUS))
-    p = sub.add_parser("run", help="run a run file; write CSV and PNG")
+    p = sub.add_parser("run", help="run a run file; write CSV and PNG", epilog=EXIT_CODES, formatter_class=raw)
     p.add_argument("runfile")
     p.add_argument("--out", default="results")
-    p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override, e.g. run.step=0.5")
+    p.add_argument(
+        "--set",
+        action="append",
+        metavar="KEY=VALUE",
+        help="override a [run] key or an instance's parameter or unconnected input, e.g. run.step=0.5 "
+        "(an unknown key or a connected input is refused)",
+    )
     p.add_argument("--no-plot", action="store_true")
     p.add_argument("--progress", action="store_true", help="progress bar on stderr")
     p.add_argument("--fmus", default=None, metavar="DIR", help="folder of the FMUs the run file names")
-    p = sub.add_parser("sweep", help="many runs of a run file on Dask; one table")
+    p = sub.add_parser(
+        "sweep", help="many runs of a run file on Dask; one table", epilog=EXIT_CODES, formatter_class=raw
+    )
     p.add_argument("runfile")
     p.add_argument("--param", required=True, help="dotted key, e.g. bearing_1.F_z or run.step")
     p.add_argument("--values", required=True, help="comma-separated values")

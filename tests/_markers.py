@@ -16,6 +16,7 @@ from pathlib import Path
 FOLDER_MARKERS = {"fmu": "fmu", "cosim": "cosim", "validation": "validation", "stability": "stability"}
 SLOW = {  # test file -> test function names (every parametrisation of them)
     "tests/fmu/test_bearing_analytic_fmu.py": {"test_thirty_fresh_processes_exit_cleanly"},
+    "tests/fmu/test_fuzz.py": {"test_fuzz_full"},
     "tests/cosim/test_closed_loop.py": {
         "test_fixed_6000_preload_rises_with_temperature_and_settles",
         "test_fixed_10000_runs_away_and_stops_with_a_message",

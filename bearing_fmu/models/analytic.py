@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 
-from bearing_fmu_common.variables import gather_plan, select
+from bearing_fmu_common.variables import InputLimits, gather_plan, select
 
 from ..kernels import radial_bearing as ak
 from ..kernels.geometry import ball_mass, curvature_radii
@@ -18,7 +18,14 @@ from ..kernels.loaddist import gauss_legendre
 from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
 from .declarations import ANALYTIC_INPUTS, ANALYTIC_OUTPUTS
-from .variables import DM_N_LIMIT, InputError, check_clearance, check_oil_temperature, check_speed, pressure_warnings
+from .variables import (
+    DM_N_LIMIT,
+    MATERIAL_LIMIT,
+    InputError,
+    check_clearance,
+    material_load_limit,
+    pressure_warnings,
+)
 
 GAUSS_NODES = 48  # quadrature points on the loaded arc (J_r(0.5) exact to < 1e-8)
 EPSILON_CAP = 1e6  # |epsilon| shown at most (a centred preloaded ring has delta_r = 0: eps is infinite)
@@ -54,6 +61,21 @@ class AnalyticModel:
                 f"bearing '{b.name}': composite roughness sigma must be > 0 (Lambda = h_min/sigma); "
                 f"give surface.inner_race_Ra / outer_race_Ra / ball_Ra > 0 m"
             )
+        contacts = [
+            [self.brg[k] for k in keys]
+            for keys in (
+                (ak.B_RX_I, ak.B_RY_I, ak.B_K_I, ak.B_EE_I, ak.B_KK_I),
+                (ak.B_RX_O, ak.B_RY_O, ak.B_K_O, ak.B_EE_O, ak.B_KK_O),
+            )
+        ]
+        self.load_limit = material_load_limit(b.Z, self.brg[ak.B_E_RED], contacts)
+        self._limits = InputLimits(
+            self.inputs,
+            {
+                "omega": (-self.omega_max, self.omega_max, f"d_m n <= {DM_N_LIMIT:.0e} mm.rpm"),
+                "F_y": (-self.load_limit, self.load_limit, MATERIAL_LIMIT),
+            },
+        )
         self.nodes, self.weights = gauss_legendre(GAUSS_NODES)
         self._out = np.zeros(ak.O_SIZE)
         self.ball = np.zeros((8, b.Z))
@@ -101,10 +123,7 @@ class AnalyticModel:
 
     def check_inputs(self, omega, F_y, T_oil):
         """Raise InputError naming the first input outside its allowed range."""
-        check_speed(omega, self.omega_max)
-        if not math.isfinite(F_y):
-            raise InputError(f"F_y = {F_y} N is not a finite number")
-        check_oil_temperature(T_oil)
+        self._limits.check((omega, F_y, T_oil))
 
     def evaluate(self, omega, F_y, T_oil):
         """Outputs (dict name -> SI value) for inner-ring speed omega (rad/s), radial load F_y (N)

@@ -23,12 +23,52 @@ from ..kernels import bearing_outputs as bo
 from ..kernels import contacts as ck
 from ..kernels import radial_bearing as ak
 from ..kernels.ball_dynamics import state as ds
+from .variables import (
+    GROOVE_MAX,
+    LOAD_LIMITS,
+    LOAD_MAX,
+    MOMENT_MAX,
+    OMEGA_LIMITS,
+    OMEGA_MAX,
+    T_OIL_LIMITS,
+    T_OIL_RANGE,
+    THERMAL_SHIFT_MAX,
+    TILT_LIMIT,
+)
 
 T_OIL_START = 313.15  # K (40 C): every other input starts at 0 (at rest, unloaded, centred)
 DEFAULT_FIXED_PRELOAD = 800.0  # N, Rabreau et al. 2018 rig (fixed_axial scenes only)
 
-OMEGA = Variable("omega", "rad/s", "inner-ring angular speed (outer ring fixed); |omega| <= d_m n limit")
-T_OIL = Variable("T_oil", "K", "oil temperature (viscosity, pressure-viscosity, density)", start=T_OIL_START)
+# Allowed ranges (min, max) of inputs and parameters: the static bounds of models.variables, each with its reason;
+# the models narrow them at run time where the limit depends on the bearing (the message states the narrower range).
+OMEGA = Variable(
+    "omega",
+    "rad/s",
+    "inner-ring angular speed (outer ring fixed); |omega| <= d_m n limit",
+    min=-OMEGA_MAX,
+    max=OMEGA_MAX,
+    limits=OMEGA_LIMITS,
+)
+T_OIL = Variable(
+    "T_oil",
+    "K",
+    "oil temperature (viscosity, pressure-viscosity, density)",
+    start=T_OIL_START,
+    min=T_OIL_RANGE[0],
+    max=T_OIL_RANGE[1],
+    limits=T_OIL_LIMITS,
+)
+PD = Variable(
+    "Pd",
+    "m",
+    "diametral clearance used when Pd_from_file is false (negative = preload), |Pd| <= (f_i + f_o - 1) D",
+    start=0.0,
+    min=-GROOVE_MAX,
+    max=GROOVE_MAX,
+    limits="static bound: the groove clearance of a 0.25 m ball; |Pd| <= (f_i + f_o - 1) D of the bearing applies",
+)
+BEARING_NAME = "bearing catalogue name ({}) or path of a bearing TOML file"
+LUBRICANT_NAME = "lubricant catalogue name or path of a lubricant TOML file"
 LAMBDA = "film parameter h_min/sigma, minimum over loaded {} contacts (0 if none)"
 H_MIN = "minimum film thickness, minimum over loaded {} contacts"
 REGIME = "lubrication regime of the worst contact: 0 boundary, 1 mixed, 2 full film"
@@ -37,7 +77,14 @@ CAPACITANCE = "electrical capacitance of the bearing (balls in parallel)"
 # -- analytic fidelity ------------------------------------------------------------------------------
 ANALYTIC_INPUTS = (
     OMEGA,
-    Variable("F_y", "N", "radial load on the inner ring along the psi = 0 line"),
+    Variable(
+        "F_y",
+        "N",
+        "radial load on the inner ring along the psi = 0 line",
+        min=-LOAD_MAX,
+        max=LOAD_MAX,
+        limits=LOAD_LIMITS,
+    ),
     T_OIL,
 )
 
@@ -66,16 +113,8 @@ ANALYTIC_OUTPUTS = (
 )
 
 ANALYTIC_PARAMETERS = (
-    Variable(
-        "bearing", "", "bearing catalogue name (6208, 6306) or path of a bearing TOML file", "string", start="6208"
-    ),
-    Variable(
-        "lubricant",
-        "",
-        "lubricant catalogue name or path of a lubricant TOML file",
-        "string",
-        start="guessasma_oil",
-    ),
+    Variable("bearing", "", BEARING_NAME.format("6208, 6306"), "string", start="6208"),
+    Variable("lubricant", "", LUBRICANT_NAME, "string", start="guessasma_oil"),
     Variable(
         "Pd_from_file",
         "",
@@ -83,12 +122,7 @@ ANALYTIC_PARAMETERS = (
         "boolean",
         start=True,
     ),
-    Variable(
-        "Pd",
-        "m",
-        "diametral clearance used when Pd_from_file is false (negative = preload), |Pd| <= (f_i + f_o - 1) D",
-        start=0.0,
-    ),
+    PD,
 )
 
 # -- quasi-static fidelity --------------------------------------------------------------------------
@@ -113,26 +147,63 @@ def _drives(dof, controlled):
     return tuple(drive for drive, control in DRIVE_CONTROL.items() if control[dof] == controlled)
 
 
+DISPLACEMENT_LIMIT = 0.5  # x the groove clearance A (m): beyond it the Hertz loads pass any material limit
+DISPLACEMENT_LIMITS = (
+    "static bound; |d| <= 0.5 (f_i + f_o - 1) D of the bearing applies (beyond: past any material limit)"
+)
+TILT_LIMITS = "over 3 x the largest misalignment ball-bearing catalogues permit (10 arcmin = 2.9 mrad)"
+
+
+def _load_range(i):
+    """min, max and reason of the applied load of DOF i (forces, then moments)."""
+    bound = LOAD_MAX if i < 3 else MOMENT_MAX
+    return dict(min=-bound, max=bound, limits=LOAD_LIMITS)
+
+
+def _displacement_range(i):
+    """min, max and reason of the imposed displacement of DOF i (translations, then tilts)."""
+    if i >= 3:
+        return dict(min=-TILT_LIMIT, max=TILT_LIMIT, limits=TILT_LIMITS)
+    bound = DISPLACEMENT_LIMIT * GROOVE_MAX
+    return dict(min=-bound, max=bound, limits=DISPLACEMENT_LIMITS)
+
+
 def _dof_inputs():
     out = []
     for i in range(5):
         out.append(
-            Variable(LOAD_NAMES[i], LOAD_UNITS[i], f"applied {LOAD_WORDS[i]} on the inner ring", drives=_drives(i, 1))
+            Variable(
+                LOAD_NAMES[i],
+                LOAD_UNITS[i],
+                f"applied {LOAD_WORDS[i]} on the inner ring",
+                drives=_drives(i, 1),
+                **_load_range(i),
+            )
         )
         imposed = f"imposed {DOF_WORDS[i]} of the inner ring relative to the outer ring"
         if i == 2:  # a fixed preload adds the assembly offset to the imposed axial position
-            out.append(Variable(DOF_NAMES[i], DOF_UNITS[i], imposed, drives=("displacement",)))
+            out.append(
+                Variable(DOF_NAMES[i], DOF_UNITS[i], imposed, drives=("displacement",), **_displacement_range(i))
+            )
             out.append(
                 Variable(
                     DOF_NAMES[i],
                     DOF_UNITS[i],
                     f"{imposed} (added to the assembly offset z0 of the parameter F_preload)",
                     drives=("fixed_axial",),
+                    **_displacement_range(i),
                 )
             )
         else:
-            out.append(Variable(DOF_NAMES[i], DOF_UNITS[i], imposed, drives=_drives(i, 0)))
+            out.append(Variable(DOF_NAMES[i], DOF_UNITS[i], imposed, drives=_drives(i, 0), **_displacement_range(i)))
     return out
+
+
+THERMAL_SHIFT = dict(
+    min=-THERMAL_SHIFT_MAX,
+    max=THERMAL_SHIFT_MAX,
+    limits="static bound (thermal growth of spindle bearings: micrometres); |value| <= 0.02 D of the bearing applies",
+)
 
 
 QUASI_STATIC_INPUTS = (
@@ -144,6 +215,7 @@ QUASI_STATIC_INPUTS = (
         "m",
         "change of diametral clearance from thermal and centrifugal growth (added to Pd, negative = tighter)",
         option="thermal_inputs",
+        **THERMAL_SHIFT,
     ),
     Variable(
         "dz_thermal",
@@ -151,6 +223,7 @@ QUASI_STATIC_INPUTS = (
         "imposed axial shift of the inner ring from thermal growth, added to z (fixed preload)",
         option="thermal_inputs",
         drives=_drives(2, 0),
+        **THERMAL_SHIFT,
     ),
 )
 
@@ -267,20 +340,8 @@ QUASI_STATIC_OUTPUTS = (
 )
 
 QUASI_STATIC_PARAMETERS = (
-    Variable(
-        "bearing",
-        "",
-        "bearing catalogue name (6208, 6306, B7214C) or path of a bearing TOML file",
-        "string",
-        start="B7214C",
-    ),
-    Variable(
-        "lubricant",
-        "",
-        "lubricant catalogue name or path of a lubricant TOML file",
-        "string",
-        start="iso_vg68_mineral",
-    ),
+    Variable("bearing", "", BEARING_NAME.format("6208, 6306, B7214C"), "string", start="B7214C"),
+    Variable("lubricant", "", LUBRICANT_NAME, "string", start="iso_vg68_mineral"),
     Variable(
         "Pd_from_file",
         "",
@@ -288,18 +349,14 @@ QUASI_STATIC_PARAMETERS = (
         "boolean",
         start=True,
     ),
-    Variable(
-        "Pd",
-        "m",
-        "diametral clearance used when Pd_from_file is false (negative = preload), |Pd| <= (f_i + f_o - 1) D",
-        start=0.0,
-    ),
+    PD,
     Variable(
         "race_control",
         "",
         "ball race-control hypothesis: outer | inner | hybrid (Rabreau 2018)",
         "string",
         start=None,  # the scene's race_control
+        choices=("outer", "inner", "hybrid"),
     ),
     Variable(
         "F_preload",
@@ -308,6 +365,9 @@ QUASI_STATIC_PARAMETERS = (
         "input z is added to the axial approach that carries it. 0 = z is the axial approach itself",
         drives=("fixed_axial",),  # only a fixed-preload bearing has an assembly offset
         start=DEFAULT_FIXED_PRELOAD,
+        min=0.0,
+        max=LOAD_MAX,
+        limits="below the bearing's material limit (p_max = 6 GPa with the load on all balls)",
     ),
 )
 
@@ -318,6 +378,8 @@ QUASI_STATIC_PARAMETERS = (
 # temperature and clearance change are held. Loads, film, angles and positions are end-of-step values;
 # the power outputs are the energy dissipated in the contacts over the step divided by H.
 DEM_REFRESH_INTERVAL = 20e-6  # s, default simulated time between two tribology refreshes (docs/reports/dem_error.md)
+DEM_REFRESH_MAX = 1e-3  # s, longest refresh interval (models.dem.DemModel checks it)
+DEM_DT_MAX = 1e-4  # s, longest fixed DEM time step (models.dem.DemModel checks it)
 _BY_NAME = {v.name: v for v in QUASI_STATIC_INPUTS + QUASI_STATIC_OUTPUTS if not v.drives or "load" in v.drives}
 _BY_NAME_PARAMETERS = {v.name: v for v in QUASI_STATIC_PARAMETERS}
 DEM_OUTPUT_WORDS = "mean over the communication step (energy dissipated in the contacts / H)"
@@ -413,11 +475,21 @@ DEM_PARAMETERS = (
     replace(_BY_NAME_PARAMETERS["lubricant"], start="guessasma_oil"),
     _BY_NAME_PARAMETERS["Pd_from_file"],
     _BY_NAME_PARAMETERS["Pd"],
-    Variable("dt", "s", "DEM time step, 0 = automatic (half the stability limit of the stiffest pair); <= 1e-4 s"),
+    Variable(
+        "dt",
+        "s",
+        "DEM time step, 0 = automatic (half the stability limit of the stiffest pair); <= 1e-4 s",
+        min=0.0,
+        max=DEM_DT_MAX,
+        limits="0 = automatic; a fixed step above 1e-4 s exceeds the contact stability limit of any steel ball bearing",
+    ),
     Variable(
         "refresh_interval",
         "s",
         "simulated time between two tribology refreshes (film, friction, damping, capacitance), ]0, 1e-3] s",
         start=DEM_REFRESH_INTERVAL,
+        min=0.0,
+        max=DEM_REFRESH_MAX,
+        limits="> 0; beyond 1 ms the film and friction lag the ball motion (docs/reports/dem_error.md)",
     ),
 )

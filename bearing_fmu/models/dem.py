@@ -20,7 +20,7 @@ import tomllib
 
 import numpy as np
 
-from bearing_fmu_common.variables import gather_plan, select
+from bearing_fmu_common.variables import InputLimits, gather_plan, select
 
 from ..kernels.ball_dynamics import integrator as dyn
 from ..kernels.ball_dynamics import state as s
@@ -39,9 +39,9 @@ from ..kernels.hertz import (
 from ..kernels.torque import ALPHA_HYSTERESIS_STEEL
 from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
-from .declarations import DEM_INPUTS, DEM_OUTPUTS
+from .declarations import DEM_DT_MAX, DEM_INPUTS, DEM_OUTPUTS, DEM_REFRESH_MAX, PD
 from .declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
-from .variables import DM_N_LIMIT, P_MAX_ERROR, InputError, check_oil_temperature, check_speed
+from .variables import DM_N_LIMIT, MATERIAL_LIMIT, P_MAX_ERROR, InputError
 
 # PA66 cage balls when the bearing file has no [material.cage] (Farah 2020: E_c = 3.3 GPa, nu_c = 0.41)
 CAGE_E = 3.3e9
@@ -125,17 +125,19 @@ class DemModel:
         self.bearing = b = load_bearing(bearing)
         self.lubricant = load_lubricant(lubricant)
         self.Pd = b.Pd if Pd is None else float(Pd)
-        limit = 0.02 * b.D
+        limit = min(0.02 * b.D, PD.max) if Pd is not None else 0.02 * b.D  # the parameter: also its declared range
         if not (math.isfinite(self.Pd) and abs(self.Pd) <= limit):
             raise InputError(f"Pd = {Pd} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m (|Pd| <= 0.02 D)")
-        if dt is not None and not (math.isfinite(dt) and 0.0 < dt <= 1e-4):
-            raise InputError(f"dt = {dt} s is outside the allowed range ]0, 1e-4] s")
+        if dt is not None and not (math.isfinite(dt) and 0.0 < dt <= DEM_DT_MAX):
+            raise InputError(f"dt = {dt} s is outside the allowed range ]0, {DEM_DT_MAX:g}] s")
         if refresh is not None and not (float(refresh) == int(refresh) and 1 <= int(refresh) <= 100000):
             raise InputError(f"refresh = {refresh} steps is outside the allowed range [1, 100000] (a whole number)")
         if not (math.isfinite(safety) and 0.0 < safety <= 1.0):
             raise InputError(f"safety = {safety} is outside the allowed range ]0, 1]")
-        if not (math.isfinite(refresh_interval) and 0.0 < refresh_interval <= 1e-3):
-            raise InputError(f"refresh_interval = {refresh_interval} s is outside the allowed range ]0, 1e-3] s")
+        if not (math.isfinite(refresh_interval) and 0.0 < refresh_interval <= DEM_REFRESH_MAX):
+            raise InputError(
+                f"refresh_interval = {refresh_interval} s is outside the allowed range ]0, {DEM_REFRESH_MAX:g}] s"
+            )
         self.safety = float(safety)
         self.refresh_interval = float(refresh_interval)
         if not (math.isfinite(kt_ratio) and 0.1 <= kt_ratio <= 1.5):
@@ -148,6 +150,11 @@ class DemModel:
         self.omega_max = DM_N_LIMIT / (b.dm * 1e3) * 2.0 * math.pi / 60.0
         self.par = self._pack(ring_mass, kt_ratio)
         self.load_limit = self._load_limit()
+        limit, load = 0.02 * b.D, self.load_limit
+        narrowed = {name: (-load, load, MATERIAL_LIMIT) for name in ("F_x", "F_y", "F_z")}
+        narrowed["omega"] = (-self.omega_max, self.omega_max, f"d_m n <= {DM_N_LIMIT:.0e} mm.rpm")
+        narrowed["dPd_thermal"] = (-limit, limit, "|dPd_thermal| <= 0.02 D")
+        self._limits = InputLimits(DEM_INPUTS, narrowed)
         self._rho_outer = float(self.par[s.P_RHO_O])  # at the nominal clearance
         Z = b.Z
         self.balls = np.zeros((s.B_SIZE, Z))
@@ -348,20 +355,7 @@ class DemModel:
             raise InputError(
                 f"t_end = {t_end} s is outside the allowed range ]{t:.9g}, inf[ s (after the current time)"
             )
-        check_speed(omega, self.omega_max)
-        check_oil_temperature(T_oil)
-        limit = 0.02 * self.bearing.D
-        if not (math.isfinite(dPd_thermal) and abs(dPd_thermal) <= limit):
-            raise InputError(
-                f"dPd_thermal = {dPd_thermal} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m"
-            )
-        load_limit = self.load_limit
-        for name, value in (("F_x", F_x), ("F_y", F_y), ("F_z", F_z)):
-            if not (math.isfinite(value) and abs(value) <= load_limit):
-                raise InputError(
-                    f"{name} = {value} N is outside the allowed range [{-load_limit:.4g}, {load_limit:.4g}] N "
-                    f"(beyond it even Z equally loaded balls pass p_max = {P_MAX_ERROR / 1e9:.1f} GPa)"
-                )
+        self._limits.check((omega, F_x, F_y, F_z, T_oil, dPd_thermal))
 
     def _load_limit(self):
         """Largest admissible load (N): Z balls at the contact load of the penetration limit (p_max = 6 GPa);

@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from bearing_fmu_common.variables import select
+from bearing_fmu_common.variables import InputLimits, select
 
 from ..kernels import bearing_outputs as bo
 from ..kernels import contacts as ck
@@ -27,21 +27,21 @@ from ..kernels.torque import ALPHA_HYSTERESIS_STEEL, TL_SIZE
 from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, RACE_CONTROLS, Scene
 from .declarations import (
+    DISPLACEMENT_LIMIT,
     DOF_NAMES,
-    DOF_UNITS,
     DRIVE_CONTROL,
     LOAD_NAMES,
-    LOAD_UNITS,
     QUASI_STATIC_INPUTS,
     QUASI_STATIC_OUTPUTS,
+    QUASI_STATIC_PARAMETERS,
 )
 from .variables import (
     DM_N_LIMIT,
-    P_MAX_ERROR,
+    MATERIAL_LIMIT,
+    TILT_LIMIT,
     InputError,
     check_clearance,
-    check_oil_temperature,
-    check_speed,
+    material_load_limit,
     pressure_warnings,
 )
 
@@ -55,9 +55,7 @@ HYBRID_SPLITS = {
     "equal": qk.RACE_HYBRID_EQUAL_SPLIT,
     "controlling_race": qk.RACE_HYBRID_CONTROLLING,
 }
-# admissible imposed displacements: a fraction of the groove clearance A = (f_i + f_o - 1) D
-DISPLACEMENT_LIMIT = 0.5  # x A (m); beyond this the Hertz loads pass any material limit
-TILT_LIMIT = 0.01  # rad
+_PARAMETERS = {v.name: v for v in QUASI_STATIC_PARAMETERS}
 
 
 class SolverError(InputError):
@@ -99,9 +97,9 @@ class QuasiStaticModel:
         b = self.bearing
         self.Pd = b.Pd if Pd is None else float(Pd)
         check_clearance(self.Pd, b, Pd is not None)
-        self.race_control = race_control or self.scene.race_control
+        self.race_control = self.scene.race_control if race_control is None else race_control
         if self.race_control not in RACE_CONTROLS:
-            raise InputError(f"race_control = {self.race_control!r}: allowed {list(RACE_CONTROLS)}")
+            raise InputError(f"race_control = {self.race_control!r} is not allowed: allowed {list(RACE_CONTROLS)}")
         if hybrid_split not in HYBRID_SPLITS:
             raise InputError(f"hybrid_split = {hybrid_split!r}: allowed {list(HYBRID_SPLITS)}")
         self.hybrid_split = hybrid_split
@@ -129,11 +127,7 @@ class QuasiStaticModel:
                 f"F_preload = {F_preload} N needs drive = 'fixed_axial' (scene '{self.scene.name}' "
                 f"has drive {self.scene.drive!r})"
             )
-        if not (math.isfinite(self.F_preload) and 0.0 <= self.F_preload < self.load_limit):
-            raise InputError(
-                f"F_preload = {F_preload} N is outside the allowed range [0, {self.load_limit:.4g}) N "
-                f"(the upper bound is the material limit)"
-            )
+        _PARAMETERS["F_preload"].check(self.F_preload, 0.0, self.load_limit, "the upper bound is the material limit")
         self.z0 = self.axial_approach(self.F_preload) if self.F_preload else 0.0
         self.inputs = select(QUASI_STATIC_INPUTS, self.scene)
         self.input_names = tuple(v.name for v in self.inputs)
@@ -149,6 +143,25 @@ class QuasiStaticModel:
         self._summary = np.zeros(bo.BS_SIZE)
         self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
         self._load_controlled = tuple(bool(c) for c in self.control)  # per DOF, as plain booleans
+        self._limits = self._input_limits()
+
+    def _input_limits(self):
+        """The allowed range of each input: the declared one narrowed by this bearing's limits (d_m n, material
+        load limit, groove clearance A for imposed displacements, 0.02 D for thermal changes)."""
+        narrowed = {"omega": (-self.omega_max, self.omega_max, f"d_m n <= {DM_N_LIMIT:.0e} mm.rpm")}
+        for i, name in enumerate(LOAD_NAMES):
+            limit = self.load_limit * (1.0 if i < 3 else 0.5 * self.bearing.dm)
+            narrowed[name] = (-limit, limit, MATERIAL_LIMIT)
+        for i, name in enumerate(DOF_NAMES):
+            if i >= 3:
+                narrowed[name] = (-TILT_LIMIT, TILT_LIMIT, "")
+            else:
+                limit = DISPLACEMENT_LIMIT * self.groove
+                narrowed[name] = (-limit, limit, "|d| <= 0.5 (f_i + f_o - 1) D: beyond it past any material limit")
+        limit = 0.02 * self.bearing.D
+        for name in ("dPd_thermal", "dz_thermal"):
+            narrowed[name] = (-limit, limit, "|value| <= 0.02 D")
+        return InputLimits(self.inputs, narrowed)
 
     # -- set-up --------------------------------------------------------------------------------
     def _pack(self):
@@ -203,24 +216,12 @@ class QuasiStaticModel:
         return qs, cp
 
     def _load_limit(self):
-        """Largest admissible load (N): all Z balls at the contact load giving p_max = P_MAX_ERROR.
-
-        p_max ~ Q^(1/3), so Q_lim = Q (P_MAX_ERROR / p(Q))^3; no real load distribution shares a load
-        better than equally over all balls, so a larger load certainly passes the material limit."""
+        """Largest admissible load (N): all Z balls at the contact load giving p_max = P_MAX_ERROR."""
         cp = self.cp
-        q_lim = math.inf
-        for o in (0, 5):
-            p_unit = hertz_contact(
-                1.0,
-                cp[ck.CP_RX_I + o],
-                cp[ck.CP_RY_I + o],
-                cp[ck.CP_E_RED],
-                cp[ck.CP_K_I + o],
-                cp[ck.CP_EE_I + o],
-                cp[ck.CP_KK_I + o],
-            )[3]
-            q_lim = min(q_lim, (P_MAX_ERROR / p_unit) ** 3)
-        return self.bearing.Z * q_lim
+        contacts = [
+            [cp[key + o] for key in (ck.CP_RX_I, ck.CP_RY_I, ck.CP_K_I, ck.CP_EE_I, ck.CP_KK_I)] for o in (0, 5)
+        ]
+        return material_load_limit(self.bearing.Z, cp[ck.CP_E_RED], contacts)
 
     def axial_approach(self, F_axial):
         """Axial approach z (m) at which this bearing alone carries the axial load F_axial (N) at rest,
@@ -249,34 +250,8 @@ class QuasiStaticModel:
 
     # -- evaluation ----------------------------------------------------------------------------
     def check_inputs(self, values):
-        """Raise InputError naming the first input outside its allowed range."""
-        check_speed(values["omega"], self.omega_max)
-        check_oil_temperature(values["T_oil"])
-        for i in range(5):
-            if self._load_controlled[i]:
-                name = LOAD_NAMES[i]
-                if not math.isfinite(values[name]):
-                    raise InputError(f"{name} = {values[name]} {LOAD_UNITS[i]} is not a finite number")
-                limit = self.load_limit * (1.0 if i < 3 else 0.5 * self.bearing.dm)
-                if abs(values[name]) > limit:
-                    raise InputError(
-                        f"{name} = {values[name]} {LOAD_UNITS[i]} is beyond the material limit: even "
-                        f"shared equally by all balls it gives p_max > {P_MAX_ERROR / 1e9:.1f} GPa "
-                        f"(allowed |{name}| <= {limit:.4g} {LOAD_UNITS[i]})"
-                    )
-            else:
-                name = DOF_NAMES[i]
-                limit = TILT_LIMIT if i >= 3 else DISPLACEMENT_LIMIT * self.groove
-                if not (math.isfinite(values[name]) and abs(values[name]) <= limit):
-                    raise InputError(
-                        f"{name} = {values[name]} {DOF_UNITS[i]} is outside the allowed range "
-                        f"[{-limit:.4g}, {limit:.4g}] {DOF_UNITS[i]}"
-                    )
-        limit = 0.02 * self.bearing.D
-        for name in ("dPd_thermal", "dz_thermal"):
-            v = values.get(name, 0.0)
-            if not (math.isfinite(v) and abs(v) <= limit):
-                raise InputError(f"{name} = {v} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m")
+        """Raise InputError naming the first input (values: name -> SI value) outside its allowed range."""
+        self._limits.check([values[name] for name in self.input_names])
 
     def evaluate(self, **values):
         """Outputs (dict name -> SI value) for the inputs of self.inputs (missing ones take their start
@@ -298,8 +273,8 @@ class QuasiStaticModel:
     def update(self, u):
         """Evaluate for the input values u in self.inputs order (SI) and fill self.values (self.outputs
         order); returns self.values. Raises as evaluate()."""
+        self._limits.check(u)
         values = dict(zip(self.input_names, u))
-        self.check_inputs(values)
         omega = float(values["omega"])
         controlled = self._load_controlled
         applied = np.array([float(values[n]) if controlled[i] else 0.0 for i, n in enumerate(LOAD_NAMES)])
@@ -369,7 +344,8 @@ class QuasiStaticModel:
             f"bearing '{self.bearing.name}' is a single-row angular-contact bearing: it carries thrust in +z only, "
             f"and these loads need its missing shoulder (ball {j} would carry {balls[qk.BQ_Q_I, j]:.4g} N at a "
             f"contact angle of {math.degrees(balls[qk.BQ_A_I, j]):.3g} deg). Carry the reverse thrust with a "
-            f"second bearing or a preload (bearing_fmu.models.pair). Inputs: {shown}"
+            f"second bearing or a preload (bearing_fmu.models.pair). Allowed: loads with which every loaded ball "
+            f"touches the inner ring at a contact angle >= 0. Inputs: {shown}"
         )
 
     def _collect(self, omega, values):

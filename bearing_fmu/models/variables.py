@@ -1,9 +1,10 @@
 """Input checks shared by the bearing fidelities: clearance, speed, oil temperature and contact-pressure limits.
 
-Every check raises InputError with a message naming the input, its value and the allowed range.
+Every check raises InputError with a message naming the input, its value and the allowed range. The
+static bounds below are the declared ranges (FMI min/max) of the inputs and parameters
+(models.declarations); the checks narrow them where the limit depends on the bearing (d_m n, the
+material load limit, the groove clearance).
 """
-
-import math
 
 from bearing_fmu_common.variables import InputError, Variable  # noqa: F401  (re-exported for the models)
 
@@ -12,22 +13,45 @@ P_MAX_WARNING = 4.2e9  # Pa, ISO 76 static load rating criterion for ball bearin
 P_MAX_ERROR = 6.0e9  # Pa, estimated: far beyond first yield of bearing steel; Hertz is meaningless
 DM_N_LIMIT = 4.0e6  # mm.rpm, d_m n beyond any oil-lubricated steel ball bearing (estimated)
 T_OIL_RANGE = (233.15, 473.15)  # K, -40..200 C: range of the viscosity laws of mineral and PAO oils
+# Static bounds (declared ranges; the bearing-dependent limit applies within them):
+OMEGA_MAX = 1e5  # rad/s (~955 000 rpm): d_m n = 4e6 mm.rpm is reached below it by any bearing with d_m >= 5 mm
+LOAD_MAX = 1e8  # N: far beyond any ball bearing (the largest slewing ball bearings: C0 of order 1e7 N)
+MOMENT_MAX = 1e8  # N.m: LOAD_MAX at 1 m
+GROOVE_MAX = 1e-2  # m: groove clearance (f_i + f_o - 1) D of a 0.25 m ball (beyond any catalogue ball), 0.52 + 0.52
+TILT_LIMIT = 0.01  # rad: imposed tilt, over 3 x the largest misalignment ball-bearing catalogues permit
+THERMAL_SHIFT_MAX = 1e-3  # m: thermal/centrifugal clearance or axial change (spindle bearings: micrometres)
+OMEGA_LIMITS = f"|omega| <= {OMEGA_MAX:g} rad/s and d_m n <= {DM_N_LIMIT:.0e} mm.rpm of the bearing"
+LOAD_LIMITS = "static bound; the bearing's material limit (p_max = 6 GPa with the load on all balls) applies within"
+MATERIAL_LIMIT = (
+    f"the material limit: beyond it even shared equally by all balls the load gives p_max > {P_MAX_ERROR / 1e9:.1f} GPa"
+)
+T_OIL_LIMITS = "-40..200 C: range of the viscosity laws of mineral and PAO oils"
 
 
 def check_speed(omega, omega_max):
-    """Raise InputError unless omega (rad/s) is finite and |omega| <= omega_max (the d_m n limit)."""
-    if not (math.isfinite(omega) and abs(omega) <= omega_max):
-        raise InputError(
-            f"omega = {omega} rad/s is outside the allowed range [{-omega_max:.6g}, {omega_max:.6g}] "
-            f"rad/s (d_m n <= {DM_N_LIMIT:.0e} mm.rpm)"
-        )
+    """Raise InputError unless |omega| (rad/s) <= omega_max (the bearing's d_m n limit) and OMEGA_MAX."""
+    from .declarations import OMEGA
+
+    OMEGA.check(omega, -omega_max, omega_max, f"d_m n <= {DM_N_LIMIT:.0e} mm.rpm")
 
 
 def check_oil_temperature(T_oil):
     """Raise InputError unless T_oil (K) is within T_OIL_RANGE."""
-    lo, hi = T_OIL_RANGE
-    if not (math.isfinite(T_oil) and lo <= T_oil <= hi):
-        raise InputError(f"T_oil = {T_oil} K is outside the allowed range [{lo}, {hi}] K")
+    from .declarations import T_OIL
+
+    T_OIL.check(T_oil)
+
+
+def material_load_limit(Z, E_red, contacts):
+    """Largest admissible load (N): all Z balls at the contact load giving p_max = P_MAX_ERROR on the worse
+    of the contacts ((Rx, Ry, k, E, K) per race: curvature radii in m and Hertz coefficients), reduced
+    modulus E_red (Pa). p_max ~ Q^(1/3), so Q_lim = (P_MAX_ERROR / p(1 N))^3; no load distribution shares a
+    load better than equally over all balls, so a larger load certainly passes the material limit."""
+    from ..kernels.hertz import hertz_contact
+
+    return Z * min(
+        (P_MAX_ERROR / hertz_contact(1.0, Rx, Ry, E_red, k, ee, kk)[3]) ** 3 for Rx, Ry, k, ee, kk in contacts
+    )
 
 
 def pressure_warnings(p_max, loads):
@@ -49,11 +73,15 @@ def pressure_warnings(p_max, loads):
 def check_clearance(Pd, bearing, given):
     """Raise InputError unless the diametral clearance Pd (m) lies within the geometric limits of the
     bearing (params.clearance_limits: -A <= P_d <= A, A = (f_i + f_o - 1) D, i.e. free contact angle up to
-    60 deg). given: True when Pd was set by the user, False when it was read from the bearing file."""
+    60 deg) and, when set (given=True: the parameter Pd), within its declared range +-GROOVE_MAX; given
+    False: read from the bearing file."""
     from ..params import clearance_limits
+    from .declarations import PD
 
     low, high = clearance_limits(bearing.D, bearing.f_i, bearing.f_o)
-    if not (math.isfinite(Pd) and low <= Pd <= high):
+    if given:  # the parameter: also within its declared range
+        low, high = max(low, PD.min), min(high, PD.max)
+    if not (low <= Pd <= high):  # False for NaN
         origin = "set" if given else f"read from {bearing.path}"
         raise InputError(
             f"Pd = {Pd} m ({origin}) is outside the allowed range [{low:.4g}, {high:.4g}] m "

@@ -30,15 +30,23 @@ class Spec:
     low_open: bool = False  # True: value must be > low (not >=)
 
 
+def _is_file(path):
+    """Path.is_file(), False for a name the system cannot even look up (too long, a NUL byte)."""
+    try:
+        return path.is_file()
+    except (OSError, ValueError):
+        return False
+
+
 def resolve_toml(name_or_path, folder, what):
     """Path of a catalogue entry `folder/<name>.toml` (by name) or of a user TOML file (by path);
     `what` names the kind of entry in the error message."""
     text = str(name_or_path)
     candidate = Path(folder) / f"{text}.toml"
-    if candidate.is_file():
+    if _is_file(candidate):
         return candidate
     path = Path(text).expanduser()
-    if path.suffix == ".toml" and path.is_file():
+    if path.suffix == ".toml" and _is_file(path):
         return path
     names = ", ".join(sorted(p.stem for p in Path(folder).glob("*.toml")))
     raise ParameterError(f"unknown {what} '{text}': give a catalogue name ({names}) or the path of a .toml file")

@@ -132,7 +132,7 @@ class Instance:
     def var(self, name):
         if name not in self.variables:
             raise MasterError(
-                f"{self.name}: no variable {name!r} (the FMU has {sorted(v for v in self.variables)[:40]} ...)"
+                f"{self.name}: no variable {name!r}; the FMU's variables: {', '.join(sorted(self.variables))}"
             )
         return self.variables[name]
 

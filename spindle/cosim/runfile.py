@@ -109,6 +109,20 @@ def load_run(path, overrides=None, fmu_dir=None):
     return parse_run(doc, path, overrides, fmu_dir)
 
 
+RUN_KEYS = {
+    "description",
+    "start",
+    "stop",
+    "step",
+    "algorithm",
+    "order",
+    "record",
+    "rollback",
+    "max_halvings",
+    "max_change",
+}
+
+
 def parse_run(doc, path, overrides=None, fmu_dir=None):
     base = Path(path).parent
     run = dict(doc.get("run", {}))
@@ -117,22 +131,7 @@ def parse_run(doc, path, overrides=None, fmu_dir=None):
     else:
         fmus = {k: str((Path(fmu_dir) / Path(v).name).resolve()) for k, v in doc.get("fmus", {}).items()}
     _no_unknown_keys("the run file", doc, {"run", "fmus", "instances", "connections", "limits"})
-    _no_unknown_keys(
-        "[run]",
-        run,
-        {
-            "description",
-            "start",
-            "stop",
-            "step",
-            "algorithm",
-            "order",
-            "record",
-            "rollback",
-            "max_halvings",
-            "max_change",
-        },
-    )
+    _no_unknown_keys("[run]", run, RUN_KEYS)
     instances = {}
     for name, inst in doc.get("instances", {}).items():
         _no_unknown_keys(f"[instances.{name}]", inst, {"fmu", "parameters", "inputs"})
@@ -150,6 +149,13 @@ def parse_run(doc, path, overrides=None, fmu_dir=None):
                 f'connection {c}: write [[connections]] with from = "source.output" and to = "target.input"'
             )
         connections.append((c["from"], c["to"]))
+    sources = {target: source for source, target in connections}
+    for key in overrides or {}:
+        if key in sources:  # the connection sets this input at every step: the override would be dropped
+            raise RunFileError(
+                f"override {key!r}: {key} is a connected input (from {sources[key]}), set at every step by the "
+                f"connection; override an unconnected input, a parameter or the source's inputs instead"
+            )
     limits = [Limit(**lim) for lim in doc.get("limits", [])]
     spec = RunSpec(
         path=str(path),
@@ -180,6 +186,8 @@ def _no_unknown_keys(where, table, allowed):
 def _apply_override(run, instances, key, value):
     head, _, tail = key.partition(".")
     if head == "run" and tail:
+        if tail not in RUN_KEYS:
+            raise RunFileError(f"override {key!r}: unknown run key {tail!r}; allowed {sorted(RUN_KEYS)}")
         run[tail] = value
     elif head in instances and tail:
         inst = instances[head]

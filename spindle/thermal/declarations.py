@@ -6,11 +6,23 @@ array in the order of output_declarations(), the FMU class (spindle.thermal.fmu)
 variables from the same declarations, and fmus/<Name>.md is generated from them (spindle.build).
 """
 
+from bearing_fmu.models.variables import LOAD_MAX, OMEGA_MAX
 from bearing_fmu.params import ParameterError
 from bearing_fmu_common.variables import Variable
 
 T_START = 293.15  # K, start value of the temperature inputs of the FMU (20 C, the default assembly temperature)
 DEFAULT_SPINDLE = "b7214c_x_pair"
+INTEGRATORS = ("exponential", "implicit_euler")
+
+# Allowed ranges of the inputs and parameters (FMI min/max; spindle.thermal.model refuses anything outside):
+HEAT_MAX = 1e7  # W: |heat input|, far beyond any spindle bearing or motor loss (kW)
+T_MIN, T_MAX = 150.0, 1000.0  # K: temperatures (boundaries, T_initial)
+T_LIMITS = (
+    "the network's properties (conductivities, expansion coefficient) are room-temperature constants: "
+    "meaningless below 150 K, and 1000 K is past the austenite transformation of bearing steel"
+)
+K_AXIAL_MAX = 1e11  # N/m: 100 x the axial stiffness of the stiffest spindle bearing sets (~1e9 N/m)
+AXIAL_FLOAT_MAX = 1e-3  # m: |axial float| of the shaft; a bearing FMU refuses |dz_thermal| beyond it
 
 
 def parameter_declarations(network=DEFAULT_SPINDLE):
@@ -25,25 +37,62 @@ def parameter_declarations(network=DEFAULT_SPINDLE):
             "exponential (exact for inputs held over the step) | implicit_euler",
             "string",
             start="exponential",
+            choices=INTEGRATORS,
         ),
-        Variable("T_initial", "K", "initial temperature of every node; 0 = the ambient temperature input", start=0.0),
+        Variable(
+            "T_initial",
+            "K",
+            f"initial temperature of every node; 0 = the ambient temperature input, else in [{T_MIN:g}, {T_MAX:g}] K",
+            start=0.0,
+            min=0.0,
+            max=T_MAX,
+            limits=f"0 (= the ambient input) or [{T_MIN:g}, {T_MAX:g}] K: {T_LIMITS}",
+        ),
     )
 
 
 def input_declarations(net, axial_float):
     """Inputs of a network (spindle.thermal.model.Network): heat inputs (W), shaft speed, boundary
     temperatures and, with axial_float, the axial reaction and stiffness of each bearing of the pair."""
-    out = [Variable(name, "W", text) for name, text in zip(net.heat_names, net.heat_text)]
-    out.append(Variable("omega", "rad/s", "shaft angular speed (rotating-shaft convection, centrifugal growth)"))
+    heat = dict(min=-HEAT_MAX, max=HEAT_MAX, limits="far beyond any spindle bearing or motor loss")
+    out = [Variable(name, "W", text, **heat) for name, text in zip(net.heat_names, net.heat_text)]
+    out.append(
+        Variable(
+            "omega",
+            "rad/s",
+            "shaft angular speed (rotating-shaft convection, centrifugal growth)",
+            min=-OMEGA_MAX,
+            max=OMEGA_MAX,
+            limits="beyond any spindle; the bearing FMUs' static bound",
+        )
+    )
     out += [
-        Variable(name, "K", f"temperature of the boundary '{b}'", start=T_START)
+        Variable(name, "K", f"temperature of the boundary '{b}'", start=T_START, min=T_MIN, max=T_MAX, limits=T_LIMITS)
         for name, b in zip(net.boundary_inputs, net.boundaries)
     ]
     if axial_float:
         for k in (1, 2):
-            out.append(Variable(f"F_axial_{k}", "N", f"axial reaction of bearing {k} (axial float)"))
+            out.append(
+                Variable(
+                    f"F_axial_{k}",
+                    "N",
+                    f"axial reaction of bearing {k} (axial float)",
+                    min=-LOAD_MAX,
+                    max=LOAD_MAX,
+                    limits="the bearing FMUs' static load bound",
+                )
+            )
         for k in (1, 2):
-            out.append(Variable(f"K_axial_{k}", "N/m", f"axial stiffness of bearing {k} (axial float), >= 0"))
+            out.append(
+                Variable(
+                    f"K_axial_{k}",
+                    "N/m",
+                    f"axial stiffness of bearing {k} (axial float), >= 0",
+                    min=0.0,
+                    max=K_AXIAL_MAX,
+                    limits="100 x the axial stiffness of the stiffest spindle bearing sets",
+                )
+            )
     return tuple(out)
 
 

@@ -7,12 +7,15 @@ declarations, keeps their values in lists read and written by precomputed index
 (bearing_fmu_common.fmi.DeclaredSlave) and calls model.advance(h) in do_step. The network is read from
 a TOML file (parameter `spindle`: catalogue name or path), so a user can describe their own spindle
 without rebuilding the FMU. Bad input or parameters are logged with their allowed range and the call
-returns Discard/Error; the host never sees an exception.
+returns Discard/Error; the host never sees an exception. As in the bearing FMUs (docs/fmu_runtime.md), a
+refused parameter fails fmi2ExitInitializationMode (fmi2Error), while a bad input at initialisation is
+logged there and refused again by the first doStep (fmi2Discard): the network starts from the inputs of
+the first doStep that accepts them, so the host can correct an input and continue.
 """
 
 from pythonfmu.enums import Fmi2Status
 
-from bearing_fmu_common.fmi import DeclaredSlave, add_unit_definitions, declared_parameter
+from bearing_fmu_common.fmi import DeclaredSlave, add_unit_definitions, check_parameters, declared_parameter
 
 from .declarations import parameter_declarations
 from .model import DEFAULT_SPINDLE, SpindleThermalModel
@@ -33,11 +36,13 @@ class SpindleThermal(DeclaredSlave):
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
-        for var in parameter_declarations(self.default_network):
+        self._parameters = parameter_declarations(self.default_network)
+        for var in self._parameters:
             setattr(self, var.name, var.start)
             self.register_variable(declared_parameter(var))
         self._model = SpindleThermalModel(self.spindle, axial_float=self.axial_float)
-        self._ready = False
+        self._ready = False  # parameters accepted (exit_initialization_mode)
+        self._started = False  # network initialised from accepted inputs
         self.register_declared(self._model.inputs, self._model.outputs)
         self._input_names = tuple(v.name for v in self._model.inputs)
         self._model.initialize(**self._inputs())
@@ -54,8 +59,10 @@ class SpindleThermal(DeclaredSlave):
             self.log(f"{self.instance_name}: {exc}", Fmi2Status.error)
             return False
 
-    def _initialise(self):
-        T0 = self.T_initial if self.T_initial > 0.0 else None
+    def _build(self):
+        """The model for the parameters (raises on a refused one)."""
+        check_parameters(self, self._parameters)
+        T0 = None if self.T_initial == 0.0 else self.T_initial  # 0 = the ambient input; the model checks the rest
         model = SpindleThermalModel(
             self.spindle, integrator=self.integrator, T_initial=T0, axial_float=self.axial_float
         )
@@ -68,11 +75,18 @@ class SpindleThermal(DeclaredSlave):
                 f"time: add an FMU for it in spindle.build.THERMAL_FMUS"
             )
         self._model = model
+        self._started = False
+
+    def _start(self):
+        """Initialise the network from the current inputs (raises on a bad input, nothing changed)."""
         self._model.initialize(**self._inputs())
         self._y = self._model.values.tolist()
+        self._started = True
 
     def exit_initialization_mode(self):
-        self._ready = self._guarded(self._initialise)
+        self._ready = self._guarded(self._build)
+        if self._ready:
+            self._guarded(self._start)  # a bad input is logged now and refused again by the first doStep
         return self._ready  # False: fmi2Error from fmi2ExitInitializationMode
 
     def do_step(self, current_time, step_size):
@@ -81,6 +95,8 @@ class SpindleThermal(DeclaredSlave):
             return False
 
         def step():
+            if not self._started:  # the inputs at initialisation were refused: start from the current ones
+                self._start()
             self._model.advance(step_size, **self._inputs())
             self._y = self._model.values.tolist()
 
@@ -88,7 +104,7 @@ class SpindleThermal(DeclaredSlave):
 
     def _get_fmu_state(self):
         state = super()._get_fmu_state()
-        state["_network_state"] = self._model.get_state()
+        state["_network_state"] = self._model.get_state() if self._started else None
         return state
 
     def _set_fmu_state(self, state):
@@ -97,6 +113,7 @@ class SpindleThermal(DeclaredSlave):
         super()._set_fmu_state(state)
         if network is not None:
             self._model.set_state(network)
+        self._started = network is not None
 
     def to_xml(self, model_options=None):
         return add_unit_definitions(super().to_xml(model_options or {}), self.vars.values())

@@ -20,15 +20,20 @@ from bearing_fmu.params import ParameterError, load_bearing, resolve_toml
 from bearing_fmu_common.variables import InputError
 
 from . import network as nk
-from .declarations import DEFAULT_SPINDLE, input_declarations, output_declarations
+from .declarations import (
+    AXIAL_FLOAT_MAX,
+    DEFAULT_SPINDLE,
+    INTEGRATORS,
+    T_MAX,
+    T_MIN,
+    input_declarations,
+    output_declarations,
+)
 
 CATALOGUE = Path(__file__).resolve().parent / "params"
-INTEGRATORS = ("exponential", "implicit_euler")
 ARRANGEMENT_SIGN = {"X": 1.0, "O": -1.0}
-# Admissible inputs (anything outside is reported, never integrated into NaN):
-OMEGA_MAX = 1e5  # rad/s (~955 000 rpm): beyond any spindle; the correlation would be meaningless
-HEAT_MAX = 1e7  # W: |heat input|, far beyond any spindle bearing or motor loss
-T_MAX = 1000.0  # K: boundary temperatures in ]0, T_MAX]
+# Admissible inputs: the declared ranges (spindle.thermal.declarations); anything outside is reported,
+# never integrated into NaN
 SUBSTEPS_MAX = 100000
 
 
@@ -298,17 +303,10 @@ def _axial(section, node_index, n_bearings, where):
     return out
 
 
-def _admissible(unit):
-    """(test, allowed range as text) of an input of this unit (the range is written only for a message)."""
-    if unit == "W":
-        return (lambda x: math.isfinite(x) and abs(x) <= HEAT_MAX), f"[{-HEAT_MAX:g}, {HEAT_MAX:g}] W"
-    if unit == "K":
-        return (lambda x: math.isfinite(x) and 0.0 < x <= T_MAX), f"]0, {T_MAX:g}] K"
-    if unit == "rad/s":
-        return (lambda x: math.isfinite(x) and abs(x) <= OMEGA_MAX), f"[{-OMEGA_MAX:g}, {OMEGA_MAX:g}] rad/s"
-    if unit == "N/m":
-        return (lambda x: math.isfinite(x) and x >= 0.0), "[0, inf[ N/m (finite)"
-    return math.isfinite, f"finite {unit}"
+def _admissible(var):
+    """(test, allowed range as text) of an input: its declared range (the text is written only for a message)."""
+    low, high = var.min, var.max
+    return (lambda x: low <= x <= high), f"{var.range_text()} ({var.limits})"  # a NaN fails the test
 
 
 # --------------------------------------------------------------------------------------------- model
@@ -333,8 +331,11 @@ class SpindleThermalModel:
             or not 1 <= substeps <= SUBSTEPS_MAX
         ):
             raise SpindleInputError(f"substeps = {substeps!r} must be a whole number in [1, {SUBSTEPS_MAX}]")
-        if T_initial is not None and not (math.isfinite(T_initial) and 0.0 < T_initial <= T_MAX):
-            raise SpindleInputError(f"T_initial = {T_initial} K is outside the allowed range ]0, {T_MAX}] K")
+        if T_initial is not None and not (T_MIN <= T_initial <= T_MAX):  # a NaN fails the test
+            raise SpindleInputError(
+                f"T_initial = {T_initial} K is outside the allowed range [{T_MIN:g}, {T_MAX:g}] K (None or, in the "
+                f"FMU, 0 = the ambient input)"
+            )
         self.net = net = load_spindle(spindle)
         self.integrator = integrator
         self.substeps = int(substeps)
@@ -347,7 +348,7 @@ class SpindleThermalModel:
         self.output_names = tuple(v.name for v in self.outputs)
         self.values = np.zeros(len(self.outputs))  # outputs at the current state, in self.outputs order
         self._slot = {name: k for k, name in enumerate(self.output_names)}
-        self._checks = [(v.name, v.unit, *_admissible(v.unit)) for v in self.inputs]
+        self._checks = [(v.name, v.unit, *_admissible(v)) for v in self.inputs]
         self._bearing_slots = [
             tuple(self._slot[f"{kind}_{k}"] for kind in ("T_inner_ring", "T_outer_ring", "T_oil", "dPd_thermal"))
             for k in range(1, len(net.bearings) + 1)
@@ -480,7 +481,14 @@ class SpindleThermalModel:
             )
         if self.axial_float and u["K_axial_1"] > 0.0 and u["K_axial_2"] > 0.0:
             # rigid shaft floats until both bearings carry the same axial force (one Newton step on F_1 - F_2)
-            self.s += (u["F_axial_2"] - u["F_axial_1"]) / (u["K_axial_1"] + u["K_axial_2"])
+            s = self.s + (u["F_axial_2"] - u["F_axial_1"]) / (u["K_axial_1"] + u["K_axial_2"])
+            if not abs(s) <= AXIAL_FLOAT_MAX:
+                shown = ", ".join(f"{n} = {u[n]}" for n in ("F_axial_1", "F_axial_2", "K_axial_1", "K_axial_2"))
+                raise SpindleInputError(
+                    f"{shown} give an axial float s = {s} m, outside the allowed range [{-AXIAL_FLOAT_MAX:g}, "
+                    f"{AXIAL_FLOAT_MAX:g}] m (a bearing FMU refuses dz_thermal beyond it); state left unchanged"
+                )
+            self.s = s
         self._u, self.T = u, T
         self.time += float(h)
         self._outputs(T, u, self.values)

@@ -53,3 +53,57 @@ def test_run_names_a_missing_fmu(tmp_path, capsys):
     assert cli.main(args) == cli.EXIT_ERROR
     err = capsys.readouterr().err
     assert "FMU not found" in err and str(tmp_path / "Bearing.fmu") in err and "spindle build" in err
+
+
+def test_run_help_lists_the_exit_codes(capsys):
+    with pytest.raises(SystemExit):
+        cli.main(["run", "--help"])
+    out = capsys.readouterr().out
+    for code in (cli.EXIT_OK, cli.EXIT_ERROR, cli.EXIT_INVALID, cli.EXIT_LIMIT):
+        assert f"  {code}  " in out
+    assert "connected input is refused" in out
+
+
+@pytest.mark.parametrize(
+    "override,message",
+    [
+        ("run.stpo=5", "override 'run.stpo': unknown run key 'stpo'; allowed ['algorithm', "),
+        (
+            "bearing_1.T_oil=1000",
+            "override 'bearing_1.T_oil': bearing_1.T_oil is a connected input (from spindle.T_oil_1)",
+        ),
+    ],
+)
+def test_set_refuses_an_unknown_run_key_and_a_connected_input(override, message, tmp_path, capsys):
+    """Refused before any FMU is loaded, with exit code 1 and the reason on stderr (an unknown key used
+    to be ignored, a connected input silently overwritten by its connection)."""
+    args = ["run", str(DEMO), "--set", override, "--no-plot", "--out", str(tmp_path)]
+    assert cli.main(args) == cli.EXIT_ERROR
+    assert message in capsys.readouterr().err
+    assert not any(tmp_path.iterdir())  # nothing run, nothing written
+
+
+def test_set_on_an_unknown_variable_lists_every_variable(closed_loop_fmus, tmp_path, capsys):
+    from fmpy import read_model_description
+
+    folder = closed_loop_fmus["Bearing"].parent
+    args = ["run", str(DEMO), "--fmus", str(folder), "--set", "bearing_1.stpo=5", "--no-plot", "--out", str(tmp_path)]
+    assert cli.main(args) == cli.EXIT_ERROR
+    err = capsys.readouterr().err
+    assert "bearing_1: no variable 'stpo'; the FMU's variables: " in err
+    names = [v.name for v in read_model_description(str(closed_loop_fmus["Bearing"])).modelVariables]
+    assert len(names) > 40 and all(name in err for name in names)
+
+
+def test_info_prints_every_variable_and_the_ranges(closed_loop_fmus, capsys):
+    from fmpy import read_model_description
+
+    path = closed_loop_fmus["Bearing"]
+    md = read_model_description(str(path))
+    assert cli.main(["info"]) == cli.EXIT_OK
+    summary = capsys.readouterr().out
+    outputs = [v.name for v in md.modelVariables if v.causality == "output"]
+    assert f"outputs ({len(outputs)}): {', '.join(outputs)}\n" in summary
+    assert cli.main(["info", str(path)]) == cli.EXIT_OK
+    detail = capsys.readouterr().out
+    assert "input     omega                [rad/s] range [-100000, 100000]" in detail
