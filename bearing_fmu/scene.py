@@ -19,6 +19,7 @@ FILM_FORMULAS = {
     "chittenden": FILM_CHITTENDEN,
 }
 HERTZ_SOLUTIONS = ("exact", "approximate")
+SPRING_CONSTANTS = ("hertz", "iso_ts_16281")  # contact load-deflection law of the quasi-static load distribution
 PERMITTIVITY_PRESSURES = {"max": PRESSURE_MAX, "mean": PRESSURE_MEAN}
 
 
@@ -53,6 +54,11 @@ class Scene:
         surface, Guessasma 2018 eq. 7).
     film_floor: film thickness (m) below which the capacitance is bounded (estimated, docs/decisions.md).
     background_capacitance: ring/background capacitance (F) added to the balls (Farah adds ~30 pF; off = 0).
+    life (analytic, quasi_static): rating-life outputs L10, L10_h (ISO 281 basic rating life) and L10r, L10r_h
+        (reference rating life from the contact loads, ISO/TS 16281 manner), docs/rating_life.md.
+    spring_constant (quasi_static): contact load-deflection constants of the load distribution, 'hertz' (exact
+        Hertz with the bearing file's materials, default) | 'iso_ts_16281' (the standard's point-contact form,
+        for comparison with tools that use it; kernels.rating_life.iso16281_spring_constant).
     tolerance: relative tolerance of the load equilibrium (-).
     max_iterations: iteration cap of the quasi-static Newton solver (never a hang).
     """
@@ -75,6 +81,8 @@ class Scene:
     stiffness: bool = False
     thermal_inputs: bool = False
     max_iterations: int = 100
+    life: bool = False
+    spring_constant: str = "hertz"
 
     def problems(self):
         """List of human-readable problems (empty when the scene is valid)."""
@@ -101,6 +109,12 @@ class Scene:
             out.append(f"drive = {self.drive!r}: allowed {list(DRIVES)}")
         if self.race_control not in RACE_CONTROLS:
             out.append(f"race_control = {self.race_control!r}: allowed {list(RACE_CONTROLS)}")
+        if self.spring_constant not in SPRING_CONSTANTS:
+            out.append(f"spring_constant = {self.spring_constant!r}: allowed {list(SPRING_CONSTANTS)}")
+        elif self.spring_constant != "hertz" and self.fidelity != "quasi_static":
+            out.append(f"spring_constant = {self.spring_constant!r} needs fidelity = 'quasi_static'")
+        if self.life and self.fidelity == "dem":
+            out.append("life = true needs fidelity = 'analytic' or 'quasi_static'")
         if not 5 <= self.max_iterations <= 1000:
             out.append(f"max_iterations = {self.max_iterations}: allowed [5, 1000]")
         if self.fidelity == "analytic":

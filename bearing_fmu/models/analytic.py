@@ -12,6 +12,7 @@ import numpy as np
 from bearing_fmu_common.variables import InputLimits, gather_plan, select
 
 from ..kernels import radial_bearing as ak
+from ..kernels import rating_life as rl
 from ..kernels.geometry import ball_mass, curvature_radii
 from ..kernels.hertz import hertz_coefficients_approx, hertz_coefficients_exact, reduced_modulus
 from ..kernels.loaddist import gauss_legendre
@@ -83,7 +84,11 @@ class AnalyticModel:
         self.outputs = select(ANALYTIC_OUTPUTS, self.scene)
         self.output_names = tuple(v.name for v in self.outputs)
         self.values = np.zeros(len(self.outputs))  # outputs of the last evaluation, in self.outputs order
-        self._gather = gather_plan(self.outputs, {"out": self._out})
+        self._life = np.zeros(rl.LO_SIZE)
+        self._life_parameters = np.zeros(rl.LP_SIZE)
+        if self.scene.life:  # a radial-contact groove bearing (docs/rating_life.md)
+            rl.rating_parameters(0.0, b.Z, b.D, b.dm, b.f_i, b.f_o, 0.0, self._life_parameters)
+        self._gather = gather_plan(self.outputs, {"out": self._out, "life": self._life})
         self._slot = {name: k for k, name in enumerate(self.output_names)}
         self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
 
@@ -156,6 +161,10 @@ class AnalyticModel:
             out,
             self.ball,
         )
+        if self.scene.life:  # ball rows 0 and 1: inner and outer contact loads
+            rl.rating_life(
+                self.ball[0], self.ball[1], abs(float(F_y)), 0.0, float(omega), self._life_parameters, self._life
+            )
         self.warnings = pressure_warnings(out[ak.O_PMAX], f"F_y = {F_y} N")
         sign = -1.0 if F_y < 0.0 else 1.0
         values, slot = self.values, self._slot

@@ -13,6 +13,7 @@ displacements, reactions and stiffness matrix (K flattened row by row); "ball_se
 the ball set (bearing_outputs.BS_*: most loaded ball, cage speed, iterations). DEM fidelity: "out",
 "ring" and "status" are the ball-dynamics output, inner-ring and monitor-status arrays
 (kernels.ball_dynamics.state O_*, R_*, ST_*), "K" the facade's condensed stiffness (row by row).
+"life" (analytic and quasi-static fidelities) is the rating-life array (kernels.rating_life LO_*).
 """
 
 from dataclasses import replace
@@ -22,6 +23,7 @@ from bearing_fmu_common.variables import Variable
 from ..kernels import bearing_outputs as bo
 from ..kernels import contacts as ck
 from ..kernels import radial_bearing as ak
+from ..kernels import rating_life as rl
 from ..kernels.ball_dynamics import state as ds
 from .variables import (
     GROOVE_MAX,
@@ -72,6 +74,35 @@ LUBRICANT_NAME = "lubricant catalogue name or path of a lubricant TOML file"
 LAMBDA = "film parameter h_min/sigma, minimum over loaded {} contacts (0 if none)"
 H_MIN = "minimum film thickness, minimum over loaded {} contacts"
 REGIME = "lubrication regime of the worst contact: 0 boundary, 1 mixed, 2 full film"
+# rating life (scene option `life`, docs/rating_life.md); 1e30 = no fatigue (unloaded, or at rest for hours)
+LIFE_OUTPUTS = (
+    Variable(
+        "L10",
+        "1",
+        "basic rating life L10 (90 % reliability), revolutions: ISO 281, C_r from the geometry, P = X F_r + Y F_a "
+        "(tilting moments not included); 1e30 = unloaded",
+        option="life",
+        source=("life", rl.LO_L10),
+    ),
+    Variable(
+        "L10_h", "h", "L10 in hours at the current speed (1e30 at rest)", option="life", source=("life", rl.LO_L10_H)
+    ),
+    Variable(
+        "L10r",
+        "1",
+        "reference rating life L10r (90 % reliability), revolutions, from the computed contact loads of every "
+        "ball (ISO/TS 16281 manner: moments and clearance included); 1e30 = unloaded",
+        option="life",
+        source=("life", rl.LO_L10R),
+    ),
+    Variable(
+        "L10r_h",
+        "h",
+        "L10r in hours at the current speed (1e30 at rest)",
+        option="life",
+        source=("life", rl.LO_L10R_H),
+    ),
+)
 CAPACITANCE = "electrical capacitance of the bearing (balls in parallel)"
 
 # -- analytic fidelity ------------------------------------------------------------------------------
@@ -110,6 +141,7 @@ ANALYTIC_OUTPUTS = (
     Variable("n_loaded", "1", "number of balls loaded on both races", "integer", source=("out", ak.O_N_LOADED)),
     Variable("y", "m", "radial displacement of the inner ring along F_y"),  # signed radial approach
     Variable("epsilon", "1", "load parameter eps = (1 - P_d/(2 delta_r))/2, capped at 1e6 (centred preloaded ring)"),
+    *LIFE_OUTPUTS,
 )
 
 ANALYTIC_PARAMETERS = (
@@ -337,6 +369,7 @@ QUASI_STATIC_OUTPUTS = (
         "integer",
         source=("ball_set", bo.BS_ITERATIONS),
     ),
+    *LIFE_OUTPUTS,
 )
 
 QUASI_STATIC_PARAMETERS = (

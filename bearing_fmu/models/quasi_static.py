@@ -15,6 +15,7 @@ from bearing_fmu_common.variables import InputLimits, select
 from ..kernels import bearing_outputs as bo
 from ..kernels import contacts as ck
 from ..kernels import jones_harris as qk
+from ..kernels import rating_life as rl
 from ..kernels.geometry import ball_mass, curvature_radii, free_contact_angle
 from ..kernels.hertz import (
     hertz_coefficients_approx,
@@ -137,8 +138,14 @@ class QuasiStaticModel:
         self.values = np.zeros(len(self.outputs))  # outputs of the last evaluation, in self.outputs order
         # where each output slot comes from, as the codes of kernels.bearing_outputs
         codes = {"out": bo.SRC_OUT, "d": bo.SRC_D, "F": bo.SRC_F, "K": bo.SRC_K, "ball_set": bo.SRC_BALL_SET}
-        self._source = np.array([codes[v.source[0]] for v in self.outputs], dtype=np.int64)
-        self._index = np.array([v.source[1] for v in self.outputs], dtype=np.int64)
+        # the rating-life slots are filled after the output kernel (_collect): it copies a placeholder there
+        sourced = [(codes[v.source[0]], v.source[1]) if v.source[0] in codes else (bo.SRC_OUT, 0) for v in self.outputs]
+        self._source = np.array([code for code, _ in sourced], dtype=np.int64)
+        self._index = np.array([index for _, index in sourced], dtype=np.int64)
+        self._life_slots = np.array([k for k, v in enumerate(self.outputs) if v.source[0] == "life"], dtype=np.int64)
+        self._life_index = np.array([v.source[1] for v in self.outputs if v.source[0] == "life"], dtype=np.int64)
+        self._life = np.zeros(rl.LO_SIZE)
+        self._life_parameters = self._rating_parameters() if self.scene.life else np.zeros(rl.LP_SIZE)
         self._K_flat = self.K.reshape(-1)  # a view: the solver writes K in place
         self._summary = np.zeros(bo.BS_SIZE)
         self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
@@ -180,8 +187,9 @@ class QuasiStaticModel:
         qs[qk.QS_FO] = b.f_o
         qs[qk.QS_PD] = self.Pd
         qs[qk.QS_ANGULAR] = 1.0 if b.kind == "angular_contact" else 0.0
-        qs[qk.QS_K_I] = hertz_stiffness(Rx_i, Ry_i, E_red, *ci)
-        qs[qk.QS_K_O] = hertz_stiffness(Rx_o, Ry_o, E_red, *co)
+        spring = rl.iso16281_spring_constant if s.spring_constant == "iso_ts_16281" else hertz_stiffness
+        qs[qk.QS_K_I] = spring(Rx_i, Ry_i, E_red, *ci)
+        qs[qk.QS_K_O] = spring(Rx_o, Ry_o, E_red, *co)
         qs[qk.QS_M_BALL] = ball_mass(b.D, b.ball.rho)
         qs[qk.QS_RACE] = (
             HYBRID_SPLITS[self.hybrid_split] if self.race_control == "hybrid" else RACE_CODES[self.race_control]
@@ -214,6 +222,19 @@ class QuasiStaticModel:
         cp[ck.CP_CAPACITANCE] = 1.0 if s.capacitance else 0.0
         cp[ck.CP_TORQUE] = 1.0 if s.torque else 0.0
         return qs, cp
+
+    def _rating_parameters(self):
+        """kernels.rating_life LP_* array. The ratings are those of the bearing's design: a deep-groove bearing at
+        the nominal angle 0 (radial contact), an angular-contact bearing at the nominal angle of its file (the
+        free contact angle of the file's clearance, which the file's angle gives; a Pd override, e.g. a
+        preload, changes the load distribution, not the rating). Taken from the clearance, the angle is the
+        same bit for bit whether the file gives the angle or the equivalent clearance."""
+        b = self.bearing
+        angular = b.kind == "angular_contact"
+        alpha = free_contact_angle(b.D, b.f_i, b.f_o, b.Pd) if angular else 0.0
+        lp = np.zeros(rl.LP_SIZE)
+        rl.rating_parameters(1.0 if angular else 0.0, b.Z, b.D, b.dm, b.f_i, b.f_o, alpha, lp)
+        return lp
 
     def _load_limit(self):
         """Largest admissible load (N): all Z balls at the contact load giving p_max = P_MAX_ERROR."""
@@ -365,6 +386,18 @@ class QuasiStaticModel:
             self._summary,
             self.values,
         )
+        if self.scene.life:
+            F, balls = self.F, self.balls
+            rl.rating_life(
+                balls[qk.BQ_Q_I],
+                balls[qk.BQ_Q_O],
+                math.hypot(F[0], F[1]),
+                abs(F[2]),
+                omega,
+                self._life_parameters,
+                self._life,
+            )
+            self.values[self._life_slots] = self._life[self._life_index]
         if bad >= 0:
             shown = ", ".join(f"{v.name} = {values[v.name]:.6g}" for v in self.inputs)
             raise SolverError(

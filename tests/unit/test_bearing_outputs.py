@@ -91,6 +91,8 @@ def test_facade_outputs_equal_the_twin_fill(scene_file):
     )
     assert bad == -1
     for k, name in enumerate(model.output_names):
+        if model.outputs[k].source[0] == "life":  # filled after this kernel (tests/unit/test_rating_life_option.py)
+            continue
         rtol = 1e-13 if name == "omega_cage" else 0.0
         assert got[name] == pytest.approx(ref[k], rel=rtol, abs=0.0), name
     out = model.out.copy()
