@@ -61,9 +61,12 @@ class _BearingSlave(DeclaredSlave):
 
     def _update(self):
         values = self._model.update(self._u)
+        self._log_warnings()
+        self._y = values.tolist()
+
+    def _log_warnings(self):
         for warning in self._model.warnings:
             self.log(warning, Fmi2Status.warning)
-        self._y = values.tolist()
 
     def _guarded(self, action):
         """Run action(); log a clear message and return False on bad input or parameters."""
@@ -188,6 +191,7 @@ class BearingDEM(_BearingSlave):
             float(self.Pd),
             float(self.dt),
             float(self.refresh_interval),
+            bool(self.average_outputs),
         )
 
     def _make_model(self):
@@ -198,10 +202,12 @@ class BearingDEM(_BearingSlave):
             dt=None if self.dt == 0.0 else self.dt,  # 0 = automatic
             Pd=None if self.Pd_from_file else self.Pd,
             refresh_interval=self.refresh_interval,
+            averaged=bool(self.average_outputs),
         )
 
     def _advance(self, step_size):
         self._y = self._model.update(self._u, step_size).tolist()
+        self._log_warnings()  # p_max above the ISO 76 limit, as Bearing.fmu
 
     def do_step(self, current_time, step_size):
         if not self._ready:

@@ -26,6 +26,7 @@ BASE_UNITS = {
     "J/K": {"kg": 1, "m": 2, "s": -2, "K": -1},
     "F": {"kg": -1, "m": -2, "s": 4, "A": 2},
     "s": {"s": 1},
+    "Hz": {"s": -1},
     "N/m": {"kg": 1, "s": -2},
     "h": {"s": 1, "factor": 3600},  # hour: rating lives in hours, as catalogues give them
 }

@@ -4,7 +4,7 @@ the 6208, P_d = 0, F_r = 3 kN, guessasma_oil.
 (a) ball spin and cage speed against time through the start-up (5 ms ramp to 500 rad/s);
 (b) slide-to-roll ratio of the outer contacts against time (balls accelerated in the ramp, rolling after);
 (c) film parameter Lambda and minimum film h_min of a tracked ball against its azimuth over one cage
-    revolution in steady rolling (loaded zone around psi = 0);
+    revolution in steady rolling (azimuth from the load line: loaded zone around 0);
 (d) that ball's capacitance (inner and outer contacts in series) against its azimuth.
 Run: python -m benchmarks.dem_figures -> docs/reports/dem_6208.png
 """
@@ -13,6 +13,7 @@ import math
 
 import numpy as np
 
+from bearing_fmu.kernels.geometry import BALL_1_AZIMUTH
 from bearing_fmu.models.dem import DemModel
 
 from .common import REPORTS
@@ -23,13 +24,13 @@ OMEGA = 500.0
 
 def main():
     model = DemModel("6208", "guessasma_oil")
-    model.advance(2e-3, omega=0.0, F_x=F_R)
-    ramp = model.record(7e-3, 50e-6, omega=OMEGA, F_x=F_R)
-    run = model.record(30e-3, 50e-6, F_x=F_R)
+    model.advance(2e-3, omega=0.0, F_y=F_R)
+    ramp = model.record(7e-3, 50e-6, omega=OMEGA, F_y=F_R)
+    run = model.record(30e-3, 50e-6, F_y=F_R)
     start = {k: np.concatenate([ramp[k], run[k]]) for k in ramp if k != "contacts"}
     start.update({k: np.concatenate([ramp["contacts"][k], run["contacts"][k]]) for k in ramp["contacts"]})
     revolution = 2.0 * math.pi / 198.0
-    record = model.record(model.time + revolution, 10e-6, F_x=F_R)
+    record = model.record(model.time + revolution, 10e-6, F_y=F_R)
     steady = record["contacts"]
 
     import matplotlib
@@ -49,7 +50,7 @@ def main():
     ax[0, 1].semilogy(t_ms, np.nanmax(srr, axis=1), label="largest, loaded outer contacts")
     ax[0, 1].set(xlabel="t (ms)", ylabel="SRR (-)", title="(b) slide-to-roll ratio")
     ax[0, 1].legend(fontsize=8)
-    psi = np.degrees(np.angle(np.exp(1j * steady["psi"][:, 0])))
+    psi = np.degrees(np.angle(np.exp(1j * (steady["psi"][:, 0] - BALL_1_AZIMUTH))))  # from the load line (+y)
     order = np.argsort(psi)
     for race, style in (("inner", "-"), ("outer", "--")):
         lam = np.where(steady["Q_" + race][:, 0] > 0.0, steady["Lambda_" + race][:, 0], np.nan)

@@ -8,7 +8,8 @@ steps much larger than the fastest coupled time constant, tiny capacities and hu
    - 6000 rpm (omega = 628.3185307179587 rad/s for bearing_1, bearing_2 and spindle by overrides): stable,
      the preload rises and settles.
    The outcome (runaway or not, time of the stop, final preload and temperature) must not depend on H.
-2. Stiff network, spring preload (runs/closed_loop_spring.toml): a copy of spindle/thermal/params/b7214c_x_pair.toml
+2. Stiff network, spring preload (runs/closed_loop_spring.toml with its speeds overridden to 10 000 rpm from
+   t = 0, SPRING_10K, instead of its start-up ramp): a copy of spindle/thermal/params/b7214c_x_pair.toml
    in a temporary directory with outer_ring_1's capacity x 1e-3 (224.9 -> 0.2249 J/K: a thin sensor ring)
    and the outer_ring_1--housing contact conductance x 1e4 (h_c 2000 -> 2e7 W/m^2/K: G 18.85 -> 1.885e5 W/K),
    fastest time constant ~1.2 us. The FMU's variables are fixed at build time, so the network keeps the
@@ -41,6 +42,8 @@ SPRING = ROOT / "runs" / "closed_loop_spring.toml"
 STEPS = (0.1, 1.0, 5.0)
 OMEGA_10K = 1047.1975511965977
 OMEGA_6K = 628.3185307179587
+# the spring runs at 10 000 rpm from t = 0 (the run file's start-up ramp replaced by the constant speed)
+SPRING_10K = {"bearing_1.omega": OMEGA_10K, "bearing_2.omega": OMEGA_10K, "spindle.omega": OMEGA_10K}
 SPEEDS = {10000: {}, 6000: {"bearing_1.omega": OMEGA_6K, "bearing_2.omega": OMEGA_6K, "spindle.omega": OMEGA_6K}}
 T_AMBIENT = 293.15
 STIFF_STEPS = (1.0, 10.0)
@@ -133,7 +136,7 @@ def forward_euler(C, L, f, T0, h, exact):
 def stiff_runs(path):
     out = []
     for H in STIFF_STEPS:
-        r = run(load_run(SPRING, {"spindle.spindle": str(path), "run.step": H, "run.stop": STIFF_STOP}))
+        r = run(load_run(SPRING, {**SPRING_10K, "spindle.spindle": str(path), "run.step": H, "run.stop": STIFF_STOP}))
         out.append((H, r))
     return out
 
@@ -155,8 +158,8 @@ def main():
         tau_default = default_model.time_constants(OMEGA_10K)
         stiff = stiff_runs(path)
         # the default network through the same runs, for comparison of the steady state
-        default = run(load_run(SPRING, {"run.step": 1.0, "run.stop": STIFF_STOP}))
-        default_10 = run(load_run(SPRING, {"run.step": 10.0, "run.stop": STIFF_STOP}))
+        default = run(load_run(SPRING, {**SPRING_10K, "run.step": 1.0, "run.stop": STIFF_STOP}))
+        default_10 = run(load_run(SPRING, {**SPRING_10K, "run.step": 10.0, "run.stop": STIFF_STOP}))
         default_changes = {
             H: {
                 k: sign_changes(r.columns["time"], r.columns[k], after=a)
@@ -306,7 +309,7 @@ def main():
     # stiff network
     ((n_c, (c_old, c_new)),) = changed.items()
     lines += [
-        "## 2. Stiff network, spring preload (runs/closed_loop_spring.toml)",
+        "## 2. Stiff network, spring preload (runs/closed_loop_spring.toml at 10 000 rpm from t = 0)",
         "",
         f"Modified copy of `spindle/thermal/params/b7214c_x_pair.toml` (written to a temporary directory): "
         f"{n_c} capacity x {CAP_FACTOR:g} ({c_old:g} -> {c_new:g} J/K: a thin sensor ring) and the "

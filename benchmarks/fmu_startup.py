@@ -26,7 +26,7 @@ ROOT = Path(__file__).resolve().parent.parent
 # step changes the inputs slightly, so the quasi-static solver warm-starts from the previous step
 CASES = {
     "BearingAnalytic": ("omega", 500.0, {"F_y": 3000.0}),
-    "Bearing": ("F_z", 800.0, {"omega": 1047.2, "F_x": 200.0}),
+    "Bearing": ("F_z", 800.0, {"omega": 1047.2, "F_y": 200.0}),
     "BearingDisp": ("z", 20e-6, {"omega": 1047.2, "x": 2e-6}),
 }
 STEP_TARGET_US = {"Bearing": 1000.0, "BearingDisp": 1000.0}  # quasi-static doStep <= 1 ms

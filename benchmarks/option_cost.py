@@ -116,13 +116,13 @@ class QuasiStaticCase:
 
 def quasi_static_cases():
     return [
-        QuasiStaticCase("B7214C, load drive, rest, F_z = 800 N + F_x = 1 kN", "B7214C", "load", 0.0,
-                        {"F_z": 800.0, "F_x": 1000.0}, gyroscopic=False),
-        QuasiStaticCase("B7214C, load drive, 10 000 rpm ORCG, F_z = 800 N + F_x = 1 kN", "B7214C", "load",
-                        10000.0, {"F_z": 800.0, "F_x": 1000.0}),
+        QuasiStaticCase("B7214C, load drive, rest, F_z = 800 N + F_y = 1 kN", "B7214C", "load", 0.0,
+                        {"F_z": 800.0, "F_y": 1000.0}, gyroscopic=False),
+        QuasiStaticCase("B7214C, load drive, 10 000 rpm ORCG, F_z = 800 N + F_y = 1 kN", "B7214C", "load",
+                        10000.0, {"F_z": 800.0, "F_y": 1000.0}),
         QuasiStaticCase("B7214C, displacement drive, 10 000 rpm ORCG, z = 20 um, x = 2 um", "B7214C",
                         "displacement", 10000.0, {"z": 20e-6, "x": 2e-6}),
-        QuasiStaticCase("6208, load drive, 3 000 rpm ORCG, F_x = 3 kN", "6208", "load", 3000.0, {"F_x": 3000.0}),
+        QuasiStaticCase("6208, load drive, 3 000 rpm ORCG, F_y = 3 kN", "6208", "load", 3000.0, {"F_y": 3000.0}),
     ]  # fmt: skip
 
 

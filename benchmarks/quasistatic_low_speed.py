@@ -26,11 +26,11 @@ RPM = 2.0 * math.pi / 60.0
 SCENE = Scene.from_toml(SCENES_DIR / "quasi_static.toml")
 TARGET = 5e-3
 RUN_UP_LOADS = {
-    "B7214C": (dict(F_x=5000.0, F_z=500.0), dict(F_x=5000.0, F_y=2000.0, F_z=2000.0, M_x=60.0), dict(F_z=2000.0)),
-    "6208": (dict(F_x=5000.0, F_y=2000.0, M_x=60.0), dict(F_x=5000.0, F_z=500.0), dict(F_x=3000.0, M_y=-40.0)),
+    "B7214C": (dict(F_y=5000.0, F_z=500.0), dict(F_x=-2000.0, F_y=5000.0, F_z=2000.0, M_y=60.0), dict(F_z=2000.0)),
+    "6208": (dict(F_x=-2000.0, F_y=5000.0, M_y=60.0), dict(F_y=5000.0, F_z=500.0), dict(F_y=3000.0, M_x=40.0)),
 }
 # with thrust enough to keep the angular-contact B7214C on its shoulder (a single-row bearing refuses the rest)
-GRID_LOADS = ({}, dict(F_x=5000.0, F_z=500.0), dict(F_x=5000.0, F_y=2000.0, F_z=2000.0, M_x=60.0), dict(F_z=2000.0))
+GRID_LOADS = ({}, dict(F_y=5000.0, F_z=500.0), dict(F_x=-2000.0, F_y=5000.0, F_z=2000.0, M_y=60.0), dict(F_z=2000.0))
 GRID_RPM = (0.1, 0.3, 1.0, 3.0, 10.0, 25.0, 79.0, 116.0, 200.0, 300.0, 537.0, 600.0)
 
 

@@ -163,24 +163,24 @@ def paired_times(fns, repeats=31):
 
 def cases():
     return [
-        Case("6208 (Z = 9), rest, F_x = 3 kN", "6208", {"F_x": 3000.0}, 0.0),
-        Case("6208 (Z = 9), rest, F_x = 3 kN + F_z = 1 kN", "6208", {"F_x": 3000.0, "F_z": 1000.0}, 0.0),
+        Case("6208 (Z = 9), rest, F_y = 3 kN", "6208", {"F_y": 3000.0}, 0.0),
+        Case("6208 (Z = 9), rest, F_y = 3 kN + F_z = 1 kN", "6208", {"F_y": 3000.0, "F_z": 1000.0}, 0.0),
         Case("B7214C (Z = 17), rest, F_z = 800 N", "B7214C", {"F_z": 800.0}, 0.0),
-        Case("B7214C (Z = 17), rest, F_z = 800 N + F_x = 1 kN", "B7214C", {"F_z": 800.0, "F_x": 1000.0}, 0.0),
+        Case("B7214C (Z = 17), rest, F_z = 800 N + F_y = 1 kN", "B7214C", {"F_z": 800.0, "F_y": 1000.0}, 0.0),
         Case("B7214C, 10 000 rpm, ORCG (outer + gyro), F_z = 800 N", "B7214C", {"F_z": 800.0}, 10000.0, "outer", True),
         Case(
-            "B7214C, 10 000 rpm, ORCG, F_z = 800 N + F_x = 1 kN",
+            "B7214C, 10 000 rpm, ORCG, F_z = 800 N + F_y = 1 kN",
             "B7214C",
-            {"F_z": 800.0, "F_x": 1000.0},
+            {"F_z": 800.0, "F_y": 1000.0},
             10000.0,
             "outer",
             True,
         ),
         Case("B7214C, 10 000 rpm, hybrid + gyro, F_z = 800 N", "B7214C", {"F_z": 800.0}, 10000.0, "hybrid", True),
         Case(
-            "B7214C, 10 000 rpm, hybrid + gyro, F_z = 800 N + F_x = 1 kN",
+            "B7214C, 10 000 rpm, hybrid + gyro, F_z = 800 N + F_y = 1 kN",
             "B7214C",
-            {"F_z": 800.0, "F_x": 1000.0},
+            {"F_z": 800.0, "F_y": 1000.0},
             10000.0,
             "hybrid",
             True,

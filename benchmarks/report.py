@@ -210,7 +210,8 @@ def stability_section(results):
     for case, fidelities, path, function in CASES:
         outcome, seconds = results.get((path, function), ("not run", 0.0))
         lines.append(
-            f"| {case} | {fidelities} | {outcome_of(path, function)} | `{path}::{function}` | {outcome} "
+            f"| {case} | {fidelities} | {outcome_of(path, function).replace('|', '&#124;')} | `{path}::{function}` | "
+            f"{outcome} "
             f"({seconds:.1f} s) |"
         )
     passed = sum(1 for o, _ in results.values() if o == "passed")

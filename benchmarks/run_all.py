@@ -3,16 +3,20 @@
 from . import (
     closed_loop,
     cosim_error,
+    dem_closed_loop,
+    dem_closed_loop_steps,
     dem_error,
     dem_figures,
     dem_fmu,
     dem_timing,
     ehl_film_table,
+    first_start,
     fixed_preload_stability,
     fmu_startup,
     hertz_approximation,
     kernel_timing,
     option_cost,
+    portable_cost,
     quasistatic_low_speed,
     quasistatic_timing,
     rabreau_preload,
@@ -27,6 +31,8 @@ def main():
         hertz_approximation,
         ehl_film_table,
         fmu_startup,
+        first_start,
+        portable_cost,
         torque_palmgren,
         quasistatic_timing,
         quasistatic_low_speed,
@@ -40,6 +46,8 @@ def main():
         dem_error,
         dem_figures,
         dem_fmu,
+        dem_closed_loop,
+        dem_closed_loop_steps,
     ):
         module.main()
 

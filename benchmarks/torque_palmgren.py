@@ -6,7 +6,7 @@ torque = total contact power / omega, split into EHL rolling, hysteresis, Heathc
 f0 by bearing kind and lubrication) + M1 = f1 P1 dm, f1 = z (P0/C0)^y, C0 from ISO 76
 (iso76_static_rating at the nominal contact angle). No model constant is tuned here.
 
-Grid: (a) 6208 deep groove, radial F_x = 500..6000 N, 500..10000 rpm, Palmgren with oil bath
+Grid: (a) 6208 deep groove, radial F_y = 500..6000 N, 500..10000 rpm, Palmgren with oil bath
 (f0 = 2) and oil mist (f0 = 1); (b) B7214C angular contact, axial F_z = 200..3000 N,
 1000..15000 rpm, Palmgren with oil mist / oil-air (f0 = 1.7); lubricant iso_vg68_mineral at
 T_oil = 313.15 and 333.15 K (kinematic viscosity eta/rho0 in cSt for Palmgren).
@@ -42,7 +42,7 @@ DM_N_HIGH_SPEED = 1e6  # mm.rpm: usual threshold of "high-speed" ball bearings (
 CASES = (
     {
         "bearing": "6208",
-        "load": "F_x",
+        "load": "F_y",
         "loads": (500.0, 1500.0, 3000.0, 6000.0),
         "speeds": (500.0, 1000.0, 3000.0, 6000.0, 10000.0),
         "kind": tk.PALMGREN_DEEP_GROOVE,
@@ -206,7 +206,7 @@ def main():
         "`lubricant_state`: "
         + ", ".join(f"{nu:.1f} cSt at {T - 273.15:.0f} C" for nu, T in zip(sorted(nus, reverse=True), TEMPERATURES))
         + ".",
-        "- Grid: 6208 radial F_x = 500, 1500, 3000, 6000 N x 500, 1000, 3000, 6000, 10000 rpm; B7214C axial "
+        "- Grid: 6208 radial F_y = 500, 1500, 3000, 6000 N x 500, 1000, 3000, 6000, 10000 rpm; B7214C axial "
         "F_z = 200, 800, 1500, 3000 N x 1000, 3000, 6000, 10000, 15000 rpm; both at T_oil = 313.15 and "
         "333.15 K. That makes 40 points per bearing.",
         "",

@@ -53,6 +53,17 @@ def write_reference(path, spindle=DEFAULT_SPINDLE, axial_float=None, step=60.0, 
     bearing_build.write_if_changed(path, bearing_build.csv_text(rows, lambda v: repr(float(v))))
 
 
+def compile_runs(network, axial_float, step=60.0):
+    """The simulate_fmu runs that compile the thermal FMU's kernels at build (bearing_fmu.compiled_code):
+    ten steps with the start values, then ten with the reference inputs."""
+    inputs = reference_inputs(SpindleThermalModel(network, axial_float=axial_float))
+    options = {"stop_time": 10 * step, "output_interval": step}
+    return [
+        {"options": options},
+        {"options": options, "inputs": [{"time": 0.0, **inputs}, {"time": 10 * step, **inputs}]},
+    ]
+
+
 # thermal FMUs: name -> the network whose inputs/outputs it exposes. The fixed-preload network adds
 # the axial-float inputs (axial reaction and stiffness of each bearing), which a spring-preloaded
 # spindle does not need (what a scene does not need is not exposed: docs/architecture.md, scenes).
@@ -67,6 +78,7 @@ def build_thermal_fmu(name, network, axial_float, out_dir=DEFAULT_OUT):
         out_dir,
         package_dirs=(bearing_build.PACKAGE_DIR, bearing_build.COMMON_DIR, SPINDLE_DIR),
         body=f"default_network = {network!r}\n    axial_float = {axial_float!r}",
+        runs=compile_runs(network, axial_float),
     )
     bearing_build.write_if_changed(Path(out_dir) / f"{name}_network.toml", network_path(network).read_text())
     write_reference(Path(out_dir) / f"{name}_ref.csv", network, axial_float)

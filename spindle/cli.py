@@ -5,7 +5,7 @@
     spindle sweep RUNFILE --param KEY --values V1,V2,... [--scheduler ADDRESS] [--workers N] [--out results]
     spindle info [FMU ...]                        what is built: variables, units, parameters
     spindle demo [--out results]                  the closed-loop demo run (runs/closed_loop_spring.toml)
-    spindle validate [FMU ...]                    fmpy's validator on the FMUs
+    spindle validate [FMU|RUNFILE ...]            fmpy's validator on the FMUs; run files (.toml) checked
     spindle report [--reuse] [--only NAME ...]    error against run time, timing, stability: docs/report.md
     spindle --version
 
@@ -14,6 +14,7 @@ Exit codes: 0 done; 1 error (message on stderr); 2 usage error or an FMU with va
 """
 
 import argparse
+import json
 import os
 import sys
 from pathlib import Path
@@ -28,12 +29,18 @@ EXIT_OK, EXIT_ERROR, EXIT_INVALID, EXIT_LIMIT = 0, 1, 2, 3
 EXIT_CODES = f"""exit codes:
   {EXIT_OK}  done
   {EXIT_ERROR}  error (message on stderr)
-  {EXIT_INVALID}  usage error, or `validate` found problems in an FMU
+  {EXIT_INVALID}  usage error, or `validate` found problems in an FMU or a run file
   {EXIT_LIMIT}  a run stopped at a limit (e.g. thermal runaway); results up to there are written"""
 
 
 def _value(text):
-    """Command-line value: number when it parses as one, else the string."""
+    """Command-line value: number when it parses as one, a table [[t, value], ...] (JSON) when it
+    starts with '[', else the string."""
+    if text.startswith("["):
+        try:
+            return json.loads(text)
+        except json.JSONDecodeError:
+            raise SystemExit(f"{text!r}: a table is written [[t, value], ...], e.g. [[0,0],[2,1047.2]]") from None
     try:
         return int(text)
     except ValueError:
@@ -174,8 +181,11 @@ def cmd_report(args):
 
 
 def cmd_validate(args):
-    """fmpy's validator on each FMU (default: every FMU in the FMU folder); problems are printed."""
+    """fmpy's validator on each FMU (default: every FMU in the FMU folder); a run file (.toml) is read
+    and checked (keys, step, connections, input schedules) instead; problems are printed."""
     from fmpy.validation import validate_fmu
+
+    from .cosim.runfile import RunFileError, load_run
 
     paths = [Path(p) for p in args.fmus] or sorted(FMUS.glob("*.fmu"))
     if not paths:
@@ -184,7 +194,14 @@ def cmd_validate(args):
     bad = 0
     for path in paths:
         try:
-            problems = validate_fmu(str(path))
+            if path.suffix == ".toml":
+                try:
+                    load_run(path)
+                    problems = []
+                except RunFileError as exc:
+                    problems = [str(exc)]
+            else:
+                problems = validate_fmu(str(path))
         except Exception as exc:  # not an FMU at all (missing, not a zip archive, no modelDescription.xml)
             problems = [f"cannot be read as an FMU: {type(exc).__name__}: {exc}"]
         bad += bool(problems)
@@ -235,7 +252,9 @@ def main(argv=None):
     p.add_argument("fmus", nargs="*")
     p = sub.add_parser("demo", help="closed-loop demo (runs/closed_loop_spring.toml): CSV + PNG")
     p.add_argument("--out", default="results")
-    p = sub.add_parser("validate", help="check FMUs with fmpy's validator (exit 2 on any problem)")
+    p = sub.add_parser(
+        "validate", help="check FMUs with fmpy's validator, or run files (.toml) (exit 2 on any problem)"
+    )
     p.add_argument("fmus", nargs="*")
     p = sub.add_parser("report", help="error against run time, timing and stability report: docs/report.md")
     p.add_argument("--reuse", action="store_true", help="assemble from the reports already written")

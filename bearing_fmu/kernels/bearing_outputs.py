@@ -10,13 +10,17 @@ ball set:
   when no ball is loaded on the inner race);
 - the ball's angular speed in the fixed frame (rad/s): the magnitude of the spin w_R about the axis
   pitched by beta plus the orbital speed w_m about the bearing axis, |(w_R cos beta + w_m, w_R sin beta)|
-  (Harris and Kotzalas 2007, ball kinematics), of the most loaded ball, with the sign of omega; 0 at rest.
+  (Harris and Kotzalas 2007, ball kinematics), of the most loaded ball, with the sign of omega; 0 at rest;
+- the ball's angular speed relative to the cage: |w_R| of the most loaded ball (rad/s);
+- the defect frequencies FTF, BPFO, BPFI, BSF (Hz, kernels.geometry.pass_frequencies) from the cage speed
+  and that relative ball speed: the operating contact angles and the race-control hypothesis are in them.
 """
 
 import math
 
 from bearing_fmu_common.jit import kernel
 
+from .geometry import pass_frequencies
 from .jones_harris import BQ_A_I, BQ_A_O, BQ_BETA, BQ_Q_I, BQ_Q_O, BQ_W_M, BQ_W_R
 
 # source codes of an output slot (models.declarations `source` arrays)
@@ -31,7 +35,12 @@ BS_ALPHA_O = 1  # outer contact angle of the most loaded ball (rad)
 BS_CAGE = 2  # cage speed (rad/s)
 BS_BALL = 3  # ball angular speed in the fixed frame (rad/s)
 BS_ITERATIONS = 4  # Newton iterations of the solve (-)
-BS_SIZE = 5
+BS_BALL_CAGE = 5  # ball angular speed relative to the cage (rad/s, magnitude)
+BS_FTF = 6  # defect frequencies (Hz) from the cage speed and BS_BALL_CAGE: fundamental train (cage) ...
+BS_BPFO = 7  # ... ball pass outer race
+BS_BPFI = 8  # ... ball pass inner race
+BS_BSF = 9  # ... ball spin
+BS_SIZE = 10
 
 
 @kernel
@@ -64,6 +73,8 @@ def ball_set_summary(balls, omega, iterations, summary):
     summary[BS_CAGE] = cage
     summary[BS_BALL] = math.copysign(spin, omega) if omega != 0.0 else 0.0
     summary[BS_ITERATIONS] = iterations
+    summary[BS_BALL_CAGE] = abs(w_r)
+    summary[BS_FTF], summary[BS_BPFO], summary[BS_BPFI], summary[BS_BSF] = pass_frequencies(omega, cage, w_r, Z)
 
 
 @kernel

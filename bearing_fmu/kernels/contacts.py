@@ -66,9 +66,11 @@ CO_TORQUE = 13
 CO_P_EHL = 14  # 4 components follow in kernels.torque TL_* order
 CO_ETA = 18
 CO_XI = 19
-CO_SIZE = 20
+CO_HC_I = 20  # central film thickness of the most loaded inner contact (m; 0 if none)
+CO_HC_O = 21  # ... outer contact
+CO_SIZE = 22
 # sums started at 0 whatever the options, and those of the loss submodel (with its TL_SIZE components at CO_P_EHL)
-_SUMS = (CO_QMAX_I, CO_QMAX_O, CO_PMAX, CO_N_LOADED)
+_SUMS = (CO_QMAX_I, CO_QMAX_O, CO_PMAX, CO_N_LOADED, CO_HC_I, CO_HC_O)
 _LOSS_SUMS = (CO_Q_INNER_RING, CO_Q_OUTER_RING)
 
 # rows of the per-contact array
@@ -159,16 +161,17 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
                         out[CO_P_EHL + t] += losses[t]
                     out[CO_Q_INNER_RING + race] += P
                 out[CO_PMAX] = max(out[CO_PMAX], p)
+                if Q > out[CO_QMAX_I + race]:  # the central film of the most loaded contact (first of equals)
+                    out[CO_QMAX_I + race] = Q
+                    out[CO_HC_I + race] = hc
                 if race == 0:
                     loaded_i = True
                     lam_i = min(lam_i, lam)
                     hmin_i = min(hmin_i, hm)
-                    out[CO_QMAX_I] = max(out[CO_QMAX_I], Q)
                 else:
                     loaded_o = True
                     lam_o = min(lam_o, lam)
                     hmin_o = min(hmin_o, hm)
-                    out[CO_QMAX_O] = max(out[CO_QMAX_O], Q)
             per_contact[PC_HMIN_I + race, j] = hm
             per_contact[PC_LAMBDA_I + race, j] = lam
             if torque:

@@ -8,6 +8,22 @@ import math
 
 from bearing_fmu_common.jit import kernel
 
+# Frame of every fidelity (docs/conventions.md): z on the bearing axis, azimuth psi from +x toward +y;
+# ball 1 (index 0) sits on +y, the line of a radial load F_y (the analytic fidelity's only radial input)
+BALL_1_AZIMUTH = 0.5 * math.pi  # rad
+
+
+@kernel
+def ball_direction(j, Z):
+    """Radial unit vector (cos psi_j, sin psi_j) of ball j (0-based) of Z, psi_j = BALL_1_AZIMUTH + 2 pi j / Z (rad);
+    a half-integer j gives the direction midway between two balls (the DEM's cage balls).
+
+    Written as (-sin t, cos t), t = 2 pi j / Z, so that ball 0 lies exactly on +y (cos(pi/2) would be 6e-17) and
+    the ball set is the exact quarter turn of the set that starts on +x.
+    """
+    t = 2.0 * math.pi * j / Z
+    return -math.sin(t), math.cos(t)
+
 
 @kernel
 def gamma_ratio(D, dm, alpha):
@@ -85,6 +101,21 @@ def defect_frequencies(omega, D, dm, alpha, Z):
     bpfi = 0.5 * Z * fr * (1.0 + g)
     bsf = dm / (2.0 * D) * fr * (1.0 - g * g)
     return ftf, bpfo, bpfi, bsf
+
+
+@kernel
+def pass_frequencies(omega, omega_cage, omega_ball_cage, Z):
+    """Bearing defect frequencies in Hz from solved speeds (slip included where the fidelity has it).
+
+    omega: inner-ring speed (rad/s), outer ring fixed; omega_cage: cage speed in the fixed frame (rad/s);
+    omega_ball_cage: ball angular speed relative to the cage (rad/s); Z: number of balls.
+    Returns (FTF, BPFO, BPFI, BSF) as magnitudes: FTF = |omega_c| / 2 pi (cage turns), BPFO = Z FTF (balls
+    passing a point of the outer ring), BPFI = Z |omega - omega_c| / 2 pi (balls passing a point of the
+    inner ring), BSF = |omega_ball_cage| / 2 pi (ball turns relative to the cage; a ball defect strikes the
+    races at 2 BSF). In pure rolling these are defect_frequencies().
+    """
+    ftf = abs(omega_cage) / (2.0 * math.pi)
+    return ftf, Z * ftf, Z * abs(omega - omega_cage) / (2.0 * math.pi), abs(omega_ball_cage) / (2.0 * math.pi)
 
 
 @kernel

@@ -1,7 +1,8 @@
 """Quasi-static 5-DOF ball-bearing model (Jones 1960 / Harris & Kotzalas 2006; docs/quasistatic.md).
 
 Outer ring fixed, inner ring displaced by d = (x, y, z, theta_x, theta_y) (m, m, m, rad, rad) and
-rotating at omega (rad/s). Ball j sits at azimuth psi_j = 2 pi j / Z from the x axis.
+rotating at omega (rad/s). Ball j sits at azimuth psi_j = pi/2 + 2 pi j / Z from the x axis toward y
+(geometry.ball_direction: ball 1 on +y, the line of F_y; docs/conventions.md).
 
 Per ball, in its (axial, radial) plane, A = (A1, A2) is the inner groove-curvature centre seen
 from the outer one and X = (X1, X2) the ball centre seen from the outer one (the ball unknowns):
@@ -34,6 +35,8 @@ import math
 import numpy as np
 
 from bearing_fmu_common.jit import kernel
+
+from .geometry import ball_direction
 
 # layout of the quasi-static bearing array (built by bearing_fmu.models.analytic)
 QS_Z = 0  # number of balls (-)
@@ -641,9 +644,7 @@ def ring_loads(d, qs, dPd, omega, X, F, K, contact, jacobian, f_load=0.0):
                 K[i, k] = 0.0
     worst = 0
     for j in range(Z):
-        psi = 2.0 * math.pi * j / Z
-        cp = math.cos(psi)
-        sp = math.sin(psi)
+        cp, sp = ball_direction(j, Z)
         A1 = A1_0 + d[2] + Rr * (d[3] * sp - d[4] * cp)
         A2 = A2_0 + d[0] * cp + d[1] * sp
         status = ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond)

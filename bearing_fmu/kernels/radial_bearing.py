@@ -1,13 +1,15 @@
 """The `analytic` bearing fidelity: one pure function from (speed, radial load, oil state) to outputs.
 
-Deep-groove bearing (contact angle 0), outer ring fixed, radial load F_r along psi = 0:
+Deep-groove bearing (contact angle 0), outer ring fixed, radial load F_r on the +y axis (the input F_y):
 1. Sjovall distribution with clearance (loaddist): inner-ring shift delta_r from F_r, ball loads
    Q_i(psi_j) = K (delta_r cos psi_j - P_d/2)_+^1.5 with K the inner and outer Hertz contacts in
-   series, balls at psi_j = 2 pi j / Z (ball 0 on the load line, the most loaded configuration);
+   series, psi_j = 2 pi j / Z measured here from the load line: ball 0 (ball 1) on +y, the frame of every
+   fidelity (geometry.BALL_1_AZIMUTH, docs/conventions.md), the most loaded configuration;
 2. centrifugal load superposed on the outer contacts, Q_o = Q_i + F_c (first-order: the extra
    outer deflection is not fed back into delta_r; the quasi-static fidelity resolves it);
 3. Hertz per contact, EHL film (formula code), film parameter, regime, capacitance.
-All contacts roll purely at the entrainment speed u = omega d_m (1 - gamma^2)/4.
+All contacts roll purely at the entrainment speed u = omega d_m (1 - gamma^2)/4; the cage and ball speeds
+and the defect frequencies (FTF, BPFO, BPFI, BSF) are those of pure rolling.
 """
 
 import math
@@ -16,7 +18,7 @@ from bearing_fmu_common.jit import kernel
 
 from .capacitance import ball_capacitance, contact_capacitance, contact_permittivity
 from .ehl import film_parameter, film_thickness, lubrication_regime
-from .geometry import centrifugal_force, rolling_kinematics
+from .geometry import centrifugal_force, pass_frequencies, rolling_kinematics
 from .hertz import hertz_contact, hertz_stiffness, series_stiffness
 from .loaddist import load_parameter, solve_radial_shift
 from .lubricant import LUB_EPS_R0, clausius_mossotti_constant, lubricant_state
@@ -69,7 +71,12 @@ O_HC_O = 15
 O_ETA = 16
 O_XI = 17
 O_ITER = 18
-O_SIZE = 19
+O_OMEGA_BALL_CAGE = 19  # ball angular speed relative to the cage (rad/s, magnitude)
+O_FTF = 20  # defect frequencies (Hz): fundamental train (cage)
+O_BPFO = 21  # ball pass, outer race
+O_BPFI = 22  # ball pass, inner race
+O_BSF = 23  # ball spin
+O_SIZE = 24
 
 
 @kernel
@@ -195,3 +202,5 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     out[O_ETA] = eta
     out[O_XI] = xi
     out[O_ITER] = iters
+    out[O_OMEGA_BALL_CAGE] = abs(w_ball_rel)
+    out[O_FTF], out[O_BPFO], out[O_BPFI], out[O_BSF] = pass_frequencies(omega, w_cage, w_ball_rel, Z)

@@ -12,7 +12,8 @@ contacts.CO_* for the quasi-static one); "d", "F" and "K" are the quasi-static s
 displacements, reactions and stiffness matrix (K flattened row by row); "ball_set" is the summary of
 the ball set (bearing_outputs.BS_*: most loaded ball, cage speed, iterations). DEM fidelity: "out",
 "ring" and "status" are the ball-dynamics output, inner-ring and monitor-status arrays
-(kernels.ball_dynamics.state O_*, R_*, ST_*), "K" the facade's condensed stiffness (row by row).
+(kernels.ball_dynamics.state O_*, R_*, ST_*), "K" the facade's condensed stiffness (row by row), "freq" the
+facade's defect frequencies (FTF, BPFO, BPFI, BSF, kernels.geometry.pass_frequencies).
 "life" (analytic and quasi-static fidelities) is the rating-life array (kernels.rating_life LO_*).
 """
 
@@ -46,7 +47,7 @@ DEFAULT_FIXED_PRELOAD = 800.0  # N, Rabreau et al. 2018 rig (fixed_axial scenes 
 OMEGA = Variable(
     "omega",
     "rad/s",
-    "inner-ring angular speed (outer ring fixed); |omega| <= d_m n limit",
+    "inner-ring angular speed about the bearing axis (outer ring fixed); |omega| <= d_m n limit",
     min=-OMEGA_MAX,
     max=OMEGA_MAX,
     limits=OMEGA_LIMITS,
@@ -104,6 +105,25 @@ LIFE_OUTPUTS = (
     ),
 )
 CAPACITANCE = "electrical capacitance of the bearing (balls in parallel)"
+H_C = "central film thickness of the most loaded {} contact (0 if none; what capacitance film measurements report)"
+# speeds: every angular speed is about the bearing axis in the fixed frame (outer ring) unless it says otherwise
+BALL_CAGE = (
+    "ball angular speed relative to the cage (the frame turning at omega_cage), magnitude, {}; BSF = this / 2 pi"
+)
+FREQUENCIES = (
+    ("FTF", "fundamental train frequency: cage turns per second, |omega_cage| / 2 pi"),
+    ("BPFO", "ball pass frequency, outer race: balls passing a point of the outer ring per second, Z FTF"),
+    ("BPFI", "ball pass frequency, inner race: balls passing a point of the inner ring per second, "
+     "Z |omega - omega_cage| / 2 pi"),
+    ("BSF", "ball spin frequency: ball turns relative to the cage per second, omega_ball_cage / 2 pi (a ball "
+     "defect strikes the races at 2 BSF)"),
+)  # fmt: skip
+
+
+def frequency_outputs(sources, words):
+    """The defect-frequency outputs (Hz), each from sources[name], their basis said by `words`."""
+    return tuple(Variable(name, "Hz", f"{text} ({words})", source=sources[name]) for name, text in FREQUENCIES)
+
 
 # -- analytic fidelity ------------------------------------------------------------------------------
 ANALYTIC_INPUTS = (
@@ -111,7 +131,7 @@ ANALYTIC_INPUTS = (
     Variable(
         "F_y",
         "N",
-        "radial load on the inner ring along the psi = 0 line",
+        "radial load on the inner ring along +y, the line of ball 1 (docs/conventions.md)",
         min=-LOAD_MAX,
         max=LOAD_MAX,
         limits=LOAD_LIMITS,
@@ -131,13 +151,26 @@ ANALYTIC_OUTPUTS = (
         "Q_max_outer", "N", "largest outer contact load (includes centrifugal force)", source=("out", ak.O_QMAX_O)
     ),
     Variable("p_max", "Pa", "largest Hertz contact pressure", source=("out", ak.O_PMAX)),
-    Variable("omega_cage", "rad/s", "cage angular speed (pure rolling)", source=("out", ak.O_OMEGA_CAGE)),
+    Variable(
+        "omega_cage",
+        "rad/s",
+        "cage angular speed in the fixed frame (pure rolling, sign of omega)",
+        source=("out", ak.O_OMEGA_CAGE),
+    ),
     Variable(
         "omega_ball",
         "rad/s",
-        "ball spin speed about its own axis in the fixed frame (pure rolling)",
+        "ball spin speed about its own axis in the fixed frame (pure rolling, sign of omega); the spin relative "
+        "to the cage is omega_ball_cage",
         source=("out", ak.O_OMEGA_BALL),
     ),
+    Variable("omega_ball_cage", "rad/s", BALL_CAGE.format("pure rolling"), source=("out", ak.O_OMEGA_BALL_CAGE)),
+    *frequency_outputs(
+        {"FTF": ("out", ak.O_FTF), "BPFO": ("out", ak.O_BPFO), "BPFI": ("out", ak.O_BPFI), "BSF": ("out", ak.O_BSF)},
+        "pure rolling",
+    ),
+    Variable("h_c_inner", "m", H_C.format("inner"), source=("out", ak.O_HC_I)),
+    Variable("h_c_outer", "m", H_C.format("outer"), source=("out", ak.O_HC_O)),
     Variable("n_loaded", "1", "number of balls loaded on both races", "integer", source=("out", ak.O_N_LOADED)),
     Variable("y", "m", "radial displacement of the inner ring along F_y"),  # signed radial approach
     Variable("epsilon", "1", "load parameter eps = (1 - P_d/(2 delta_r))/2, capped at 1e6 (centred preloaded ring)"),
@@ -352,15 +385,28 @@ QUASI_STATIC_OUTPUTS = (
     Variable(
         "omega_cage",
         "rad/s",
-        "cage speed: orbital speed of the balls, mean weighted by inner load",
+        "cage speed in the fixed frame: orbital speed of the balls, mean weighted by inner load",
         source=("ball_set", bo.BS_CAGE),
     ),
     Variable(
         "omega_ball",
         "rad/s",
-        "ball angular speed in the fixed frame (most loaded ball, sign of omega)",
+        "ball angular speed in the fixed frame (most loaded ball, spin and orbital motion, sign of omega); the spin "
+        "relative to the cage is omega_ball_cage",
         source=("ball_set", bo.BS_BALL),
     ),
+    Variable(
+        "omega_ball_cage",
+        "rad/s",
+        BALL_CAGE.format("most loaded ball, operating contact angles and race control"),
+        source=("ball_set", bo.BS_BALL_CAGE),
+    ),
+    *frequency_outputs(
+        {name: ("ball_set", getattr(bo, f"BS_{name}")) for name, _ in FREQUENCIES},
+        "solved cage speed and the most loaded ball's spin",
+    ),
+    Variable("h_c_inner", "m", H_C.format("inner"), source=("out", ck.CO_HC_I)),
+    Variable("h_c_outer", "m", H_C.format("outer"), source=("out", ck.CO_HC_O)),
     Variable("n_loaded", "1", "number of balls loaded on both races", "integer", source=("out", ck.CO_N_LOADED)),
     Variable(
         "iterations",
@@ -409,13 +455,18 @@ QUASI_STATIC_PARAMETERS = (
 # integrates the communication step H: the speed goes linearly from its value at the previous
 # communication point to the input (a first-order hold: no speed jump at a point), loads, oil
 # temperature and clearance change are held. Loads, film, angles and positions are end-of-step values;
-# the power outputs are the energy dissipated in the contacts over the step divided by H.
+# the power outputs and the capacitance are means over the step (the energy dissipated in the contacts
+# divided by H; the capacitance integrated over the DEM steps divided by H) or, with the parameter
+# average_outputs false, their values at the step's last DEM step.
 DEM_REFRESH_INTERVAL = 20e-6  # s, default simulated time between two tribology refreshes (docs/reports/dem_error.md)
 DEM_REFRESH_MAX = 1e-3  # s, longest refresh interval (models.dem.DemModel checks it)
 DEM_DT_MAX = 1e-4  # s, longest fixed DEM time step (models.dem.DemModel checks it)
 _BY_NAME = {v.name: v for v in QUASI_STATIC_INPUTS + QUASI_STATIC_OUTPUTS if not v.drives or "load" in v.drives}
 _BY_NAME_PARAMETERS = {v.name: v for v in QUASI_STATIC_PARAMETERS}
-DEM_OUTPUT_WORDS = "mean over the communication step (energy dissipated in the contacts / H)"
+DEM_OUTPUT_WORDS = (
+    "mean over the communication step (energy dissipated in the contacts / H; at the step's end when "
+    "average_outputs is false)"
+)
 
 
 def _dem_output(name, source, description=None, option=""):
@@ -466,7 +517,8 @@ DEM_OUTPUTS = (
     _dem_output(
         "C_bearing",
         ("out", ds.O_C_BEARING),
-        f"{CAPACITANCE}, at the last tribology refresh of the step",
+        f"{CAPACITANCE}, mean over the communication step (at its end when average_outputs is false; "
+        "contact capacitances of the tribology refreshes)",
         option="capacitance",
     ),
     _dem_output("Q_max_inner", ("out", ds.O_QMAX_I), "largest inner contact load at the end of the step"),
@@ -474,12 +526,28 @@ DEM_OUTPUTS = (
     _dem_output("p_max", ("out", ds.O_PMAX), "largest Hertz contact pressure of a loaded contact at the last refresh"),
     _dem_output("alpha_inner", ("out", ds.O_ALPHA_I), "inner contact angle of the most loaded ball (end of step)"),
     _dem_output("alpha_outer", ("out", ds.O_ALPHA_O), "outer contact angle of the most loaded ball (end of step)"),
-    _dem_output("omega_cage", ("out", ds.O_OMEGA_CAGE), "cage speed: mean orbital speed of the balls over the step"),
+    _dem_output(
+        "omega_cage",
+        ("out", ds.O_OMEGA_CAGE),
+        "cage speed in the fixed frame: mean orbital speed of the balls over the step (slip solved dynamically)",
+    ),
     _dem_output(
         "omega_ball",
         ("out", ds.O_OMEGA_BALL),
-        "angular speed of the most loaded ball in the fixed frame (end of step, sign of omega)",
+        "angular speed of the most loaded ball in the fixed frame (end of step, sign of omega); the spin relative "
+        "to the cage is omega_ball_cage",
     ),
+    _dem_output(
+        "omega_ball_cage",
+        ("out", ds.O_OMEGA_BALL_REL),
+        BALL_CAGE.format("most loaded ball at the end of the step, relative to the step's mean cage speed"),
+    ),
+    *frequency_outputs(
+        {name: ("freq", k) for k, (name, _) in enumerate(FREQUENCIES)},
+        "cage speed of the step and omega at its end: slip solved dynamically",
+    ),
+    _dem_output("h_c_inner", ("out", ds.O_HC_I), f"{H_C.format('inner')}, at the last refresh of the step"),
+    _dem_output("h_c_outer", ("out", ds.O_HC_O), f"{H_C.format('outer')}, at the last refresh of the step"),
     _dem_output("n_loaded", ("out", ds.O_N_LOADED), "number of balls loaded on both races (end of step)"),
     Variable(
         "cage_slip",
@@ -524,5 +592,13 @@ DEM_PARAMETERS = (
         min=0.0,
         max=DEM_REFRESH_MAX,
         limits="> 0; beyond 1 ms the film and friction lag the ball motion (docs/reports/dem_error.md)",
+    ),
+    Variable(
+        "average_outputs",
+        "",
+        "true: torque, P_loss, Q_inner_ring, Q_outer_ring and C_bearing are means over the communication step; "
+        "false: their values at the step's last DEM step",
+        "boolean",
+        start=True,
     ),
 )

@@ -24,11 +24,17 @@ from bearing_fmu_common.variables import InputLimits, gather_plan, select
 
 from ..kernels.ball_dynamics import integrator as dyn
 from ..kernels.ball_dynamics import state as s
-from ..kernels.ball_dynamics.contacts import groove_approach
-from ..kernels.ball_dynamics.monitor import critical_time_step
+from ..kernels.ball_dynamics.monitor import critical_time_step, kinetic_energy
 from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_angles, contact_loads
-from ..kernels.ball_dynamics.tribology import race_circle
-from ..kernels.geometry import ball_mass, curvature_radii, free_contact_angle, rolling_kinematics
+from ..kernels.ball_dynamics.stiffness import stiffness_matrix
+from ..kernels.geometry import (
+    ball_direction,
+    ball_mass,
+    curvature_radii,
+    free_contact_angle,
+    pass_frequencies,
+    rolling_kinematics,
+)
 from ..kernels.hertz import (
     hertz_coefficients_approx,
     hertz_coefficients_exact,
@@ -37,11 +43,11 @@ from ..kernels.hertz import (
     reduced_modulus,
 )
 from ..kernels.torque import ALPHA_HYSTERESIS_STEEL
-from ..params import load_bearing, load_lubricant
+from ..params import clearance_limits, load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
-from .declarations import DEM_DT_MAX, DEM_INPUTS, DEM_OUTPUTS, DEM_REFRESH_MAX, PD
+from .declarations import DEM_DT_MAX, DEM_INPUTS, DEM_OUTPUTS, DEM_REFRESH_MAX
 from .declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
-from .variables import DM_N_LIMIT, MATERIAL_LIMIT, P_MAX_ERROR, InputError
+from .variables import DM_N_LIMIT, MATERIAL_LIMIT, P_MAX_ERROR, InputError, check_clearance, pressure_warnings
 
 # PA66 cage balls when the bearing file has no [material.cage] (Farah 2020: E_c = 3.3 GPa, nu_c = 0.41)
 CAGE_E = 3.3e9
@@ -103,7 +109,9 @@ class DemModel:
     refresh interval in steps (>= 1); None = every refresh_interval (s) of simulated time. The defaults
     SAFETY and REFRESH_INTERVAL are chosen from the error-vs-run-time front (docs/reports/dem_error.md). Pd: diametral
     clearance (m) overriding the file. ring_mass: inner-ring mass (kg); None = estimated from the bore.
-    kt_ratio: tangential/normal stiffness (-).
+    kt_ratio: tangential/normal stiffness (-). averaged: True (default) reports torque, P_loss, Q_inner_ring,
+    Q_outer_ring and C_bearing as means over each advance() interval (what a co-simulation partner integrates:
+    the energy of the step), False their values at the interval's last step (docs/dem.md, Outputs).
     """
 
     def __init__(
@@ -118,6 +126,7 @@ class DemModel:
         kt_ratio=KT_RATIO,
         safety=SAFETY,
         refresh_interval=REFRESH_INTERVAL,
+        averaged=True,
     ):
         self.scene = (scene or Scene(name="dem", fidelity="dem")).validate()
         if self.scene.fidelity != "dem":
@@ -125,9 +134,8 @@ class DemModel:
         self.bearing = b = load_bearing(bearing)
         self.lubricant = load_lubricant(lubricant)
         self.Pd = b.Pd if Pd is None else float(Pd)
-        limit = min(0.02 * b.D, PD.max) if Pd is not None else 0.02 * b.D  # the parameter: also its declared range
-        if not (math.isfinite(self.Pd) and abs(self.Pd) <= limit):
-            raise InputError(f"Pd = {Pd} m is outside the allowed range [{-limit:.4g}, {limit:.4g}] m (|Pd| <= 0.02 D)")
+        check_clearance(self.Pd, b, Pd is not None)
+        self._clearance_limits = clearance_limits(b.D, b.f_i, b.f_o)
         if dt is not None and not (math.isfinite(dt) and 0.0 < dt <= DEM_DT_MAX):
             raise InputError(f"dt = {dt} s is outside the allowed range ]0, {DEM_DT_MAX:g}] s")
         if refresh is not None and not (float(refresh) == int(refresh) and 1 <= int(refresh) <= 100000):
@@ -138,6 +146,7 @@ class DemModel:
             raise InputError(
                 f"refresh_interval = {refresh_interval} s is outside the allowed range ]0, {DEM_REFRESH_MAX:g}] s"
             )
+        self.averaged = bool(averaged)
         self.safety = float(safety)
         self.refresh_interval = float(refresh_interval)
         if not (math.isfinite(kt_ratio) and 0.1 <= kt_ratio <= 1.5):
@@ -150,10 +159,17 @@ class DemModel:
         self.omega_max = DM_N_LIMIT / (b.dm * 1e3) * 2.0 * math.pi / 60.0
         self.par = self._pack(ring_mass, kt_ratio)
         self.load_limit = self._load_limit()
-        limit, load = 0.02 * b.D, self.load_limit
+        load = self.load_limit
         narrowed = {name: (-load, load, MATERIAL_LIMIT) for name in ("F_x", "F_y", "F_z")}
         narrowed["omega"] = (-self.omega_max, self.omega_max, f"d_m n <= {DM_N_LIMIT:.0e} mm.rpm")
-        narrowed["dPd_thermal"] = (-limit, limit, "|dPd_thermal| <= 0.02 D")
+        # the clearance in effect, P_d + dPd_thermal, keeps the geometric limits of P_d itself (|P_d| <= A:
+        # neither an interference beyond the groove clearance nor a free contact angle beyond 60 deg)
+        low, high = self._clearance_limits
+        narrowed["dPd_thermal"] = (
+            low - self.Pd,
+            high - self.Pd,
+            f"Pd + dPd_thermal within [{low:.4g}, {high:.4g}] m (|Pd| <= (f_i + f_o - 1) D)",
+        )
         self._limits = InputLimits(DEM_INPUTS, narrowed)
         self._rho_outer = float(self.par[s.P_RHO_O])  # at the nominal clearance
         Z = b.Z
@@ -179,9 +195,16 @@ class DemModel:
         self.outputs = select(DEM_OUTPUTS, self.scene)
         self.output_names = tuple(v.name for v in self.outputs)
         self.values = np.zeros(len(self.outputs))
-        self.warnings = []  # update() logs none: the monitor stops a step instead
+        self.warnings = []  # of the last advance(): p_max above the ISO 76 limit (pressure_warnings)
         self.K = np.zeros((5, 5))  # condensed stiffness of the last update (scene option stiffness)
-        arrays = {"out": self.out, "ring": self.ring, "status": self.status, "K": self.K.reshape(-1)}
+        self.frequencies = np.zeros(4)  # FTF, BPFO, BPFI, BSF (Hz) of the last update
+        arrays = {
+            "out": self.out,
+            "ring": self.ring,
+            "status": self.status,
+            "K": self.K.reshape(-1),
+            "freq": self.frequencies,
+        }
         self._plan = gather_plan(self.outputs, arrays)
         self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
         self._before = self.get_state()  # state at the start of the last update(), restored when it fails
@@ -302,11 +325,11 @@ class DemModel:
         self.counters[:] = 0
         for j in range(Z):
             r, z = self._rest
-            psi = 2.0 * math.pi * j / Z
-            self.balls[s.B_X : s.B_X + 3, j] = (r * math.cos(psi), r * math.sin(psi), z)
-            psi_c = psi + math.pi / Z
+            c, sn = ball_direction(j, Z)  # ball 1 on +y (docs/conventions.md)
+            self.balls[s.B_X : s.B_X + 3, j] = (r * c, r * sn, z)
+            c, sn = ball_direction(j + 0.5, Z)  # the cage ball half a pitch ahead
             R = self.par[s.P_R_GUIDE]
-            self.cage[s.C_X : s.C_X + 3, j] = (R * math.cos(psi_c), R * math.sin(psi_c), self.par[s.P_Z_GUIDE])
+            self.cage[s.C_X : s.C_X + 3, j] = (R * c, R * sn, self.par[s.P_Z_GUIDE])
         self.omega = 0.0
 
     def _initialise(self, omega, F_x, F_y, F_z, T_oil):
@@ -436,20 +459,36 @@ class DemModel:
             interval,
             orbit0,
             self.scene.background_capacitance,
+            self.averaged,
             self._Q,
             self._alpha,
             self.out,
         )
+        # as the other fidelities: a warning above the ISO 76 limit; beyond the material limit (6 GPa) the
+        # monitor has already stopped the step (penetration), so only the warning can apply here
+        self.warnings = pressure_warnings(min(self.out[s.O_PMAX], P_MAX_ERROR), "the loads")
 
     def _energy_limit(self, omega, force):
-        """Bound (J) of the kinetic energy: ENERGY_FACTOR x (pure-rolling kinetic energy at omega + load x groove
-        clearance A); an unstable integration passes it within a few steps, a physical run never does."""
+        """Bound (J) of the kinetic energy over a call: ENERGY_FACTOR x (pure-rolling kinetic energy at omega +
+        load x groove clearance A + the mechanical energy the state already holds: its kinetic energy and the
+        elastic energy of its ball-race contacts, 0.4 Q delta each for Q = K_h delta^1.5). Without input the
+        kinetic energy cannot exceed the energy held plus the work of the drive and the loads, so an unstable
+        integration passes the bound within a few steps and a physical run never does, also when a load is
+        released (its elastic energy turns into motion) or the ring stops while the balls still roll."""
         b, p = self.bearing, self.par
         cage_speed, ball_rel, _, _ = rolling_kinematics(omega, b.D, b.dm, p[s.P_ALPHA0])
         v = 0.5 * b.dm * cage_speed
         rolling = b.Z * (0.5 * (p[s.P_M_BALL] + p[s.P_M_CAGE]) * v * v + 0.5 * p[s.P_I_BALL] * ball_rel**2)
         A = (b.f_i + b.f_o - 1.0) * b.D
-        return ENERGY_FACTOR * (rolling + force * A) + 1e-6
+        held = kinetic_energy(self.balls, self.cage, self.ring, p) + self._elastic_energy()
+        return ENERGY_FACTOR * (rolling + force * A + held) + 1e-6
+
+    def _elastic_energy(self):
+        """Elastic energy (J) of the current ball-race contacts: sum of the integral of K_h delta^1.5 d delta,
+        0.4 Q delta with delta = (Q / K_h)^(2/3)."""
+        contact_loads(self.balls, self.ring, self.par, self._Q)
+        K_h = self.par[[s.P_KH_I, s.P_KH_O]][:, None]
+        return float(0.4 * (self._Q * (self._Q / K_h) ** (2.0 / 3.0)).sum())
 
     def _raise_unstable(self, dt, F_x, F_y, F_z):
         code, step, index = (int(v) for v in self.status)
@@ -458,13 +497,22 @@ class DemModel:
         if index >= 0:
             race = "inner" if index < Z else "outer"
             where = f" at the {race} contact of ball {index % Z}"
-        # the state at the stop is already disturbed: judge from the inputs alone
+        # the state at the stop is already disturbed: judge from the inputs alone, or, when they load no
+        # contact (no load, no speed), from the contact loads of the stopped state (larger: a safe side)
         limit = self.stable_time_step(F_x, F_y, F_z, self.omega, include_state=False)
-        suggestion = min(0.5 * dt, self.safety * limit) if math.isfinite(limit) else 0.5 * dt
+        basis = "at these inputs"
+        if not math.isfinite(limit):
+            limit = self.stable_time_step(F_x, F_y, F_z, self.omega)
+            basis = "at the contact loads where the run stopped"
+        if math.isfinite(limit):
+            suggestion = min(0.5 * dt, self.safety * limit)
+            reason = f"stability limit of the stiffest contact pair {basis} {limit:.3g} s"
+        else:
+            suggestion = 0.5 * dt
+            reason = "no contact is loaded, so no contact sets a stability limit"
         raise DemUnstableError(
             f"DEM stopped at t = {self.time:.9g} s (step {step} of the interval){where}: "
-            f"{STATUS_WORDS[code]}. dt = {dt:.3g} s is too large here; use dt <= {suggestion:.3g} s "
-            f"(stability limit of the stiffest contact pair at these inputs {limit:.3g} s)"
+            f"{STATUS_WORDS[code]}. dt = {dt:.3g} s is too large here; use dt <= {suggestion:.3g} s ({reason})"
         )
 
     # -- outputs -------------------------------------------------------------------------------
@@ -523,6 +571,7 @@ class DemModel:
         """update()'s step to t_end (s): advance, or on a monitor stop restore the state and raise."""
         omega, F_x, F_y, F_z, T_oil, dPd_thermal = (float(v) for v in u)
         self.status[s.ST_CODE] = s.STATUS_OK  # a refused input leaves no stale monitor code
+        self.warnings = []  # nor stale warnings
         self._check(t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
         self._copy_state(self._before, self.__dict__)
         self._before["omega"] = self.omega
@@ -536,59 +585,18 @@ class DemModel:
     def _gather(self):
         if self.scene.stiffness:
             self.stiffness_matrix(self.K)
+        o = self.out
+        self.frequencies[:] = pass_frequencies(self.omega, o[s.O_OMEGA_CAGE], o[s.O_OMEGA_BALL_REL], self.bearing.Z)
         for src, idx, dst in self._plan:
             self.values[dst] = src[idx]
 
     def stiffness_matrix(self, K=None):
         """5x5 stiffness dF_i/dd_j of the inner ring in the current state, (F) = (F_x, F_y, F_z, M_x, M_y) in N and
-        N.m, (d) = (x, y, z, theta_x, theta_y) in m and rad, the quasi-static fidelity's convention (docs/dem.md,
-        Stiffness): each loaded contact is a spring of tangent stiffness 1.5 K_h delta^0.5 (N/m) along its normal
-        plus Q/(r_g + delta) across it in the ball's radial plane (the normal turns about the groove's curvature
-        centre); each ball's inner and outer contacts are condensed in series (the ball's two in-plane
-        coordinates eliminated), and the ball acts on the inner groove's curvature-centre point at its azimuth.
-        A ball open on either race adds nothing. Written into K (float64[5, 5]) if given; returned."""
+        N.m, (d) = (x, y, z, theta_x, theta_y) in m and rad, the quasi-static fidelity's convention: each ball's
+        inner and outer contact tangent stiffnesses condensed in series (kernels.ball_dynamics.stiffness,
+        docs/dem.md, Stiffness). Written into K (float64[5, 5]) if given; returned."""
         K = np.zeros((5, 5)) if K is None else K
-        p, balls, ring = self.par, self.balls, self.ring
-        circles = (race_circle(0, ring, p), race_circle(1, ring, p))
-        rho_i, z_i = p[s.P_RHO_I], p[s.P_Z_I]
-        reduced, maps = [], []
-        for j in range(balls.shape[1]):
-            x, y, z = balls[s.B_X, j], balls[s.B_X + 1, j], balls[s.B_X + 2, j]
-            r = math.hypot(x, y)
-            c, sn = x / r, y / r  # the ball's radial direction e_r = (c, sn, 0)
-            springs = []  # (xx, xz, zz) of each contact's 2x2 stiffness in the radial plane (e_r, e_z)
-            for race in (0, 1):
-                cx, cy, cz, rho = circles[race]
-                delta, nx, ny, nz = groove_approach(x, y, z, cx, cy, cz, rho, p[s.P_RG_I + race])
-                if delta <= 0.0:
-                    break
-                k_n = 1.5 * p[s.P_KH_I + race] * math.sqrt(delta)
-                k_t = p[s.P_KH_I + race] * delta * math.sqrt(delta) / (p[s.P_RG_I + race] + delta)  # Q/(r_g + delta)
-                n_r, n_z = nx * c + ny * sn, nz
-                scale = 1.0 / (n_r * n_r + n_z * n_z)
-                d = k_n - k_t
-                springs.append((k_t + d * n_r * n_r * scale, d * n_r * n_z * scale, k_t + d * n_z * n_z * scale))
-            if len(springs) < 2:
-                continue
-            (a, b, e), (a_o, b_o, e_o) = springs
-            # the ball condensed: K_i - K_i (K_i + K_o)^-1 K_i, i.e. K_i and K_o in series
-            sa, sb, se = a + a_o, b + b_o, e + e_o
-            det = sa * se - sb * sb
-            ia, ib, ie = se / det, -sb / det, sa / det
-            # K_i (S^-1 K_i): m = S^-1 K_i
-            m11, m12 = ia * a + ib * b, ia * b + ib * e
-            m21, m22 = ib * a + ie * b, ib * b + ie * e
-            reduced.append(
-                ((a - (a * m11 + b * m21), b - (a * m12 + b * m22)), (b - (b * m11 + e * m21), e - (b * m12 + e * m22)))
-            )
-            # displacement of the inner curvature-centre point at the azimuth (rho_i e_r + z_i e_z from the ring's
-            # origin) along e_r and e_z for the ring DOFs (x, y, z, theta_x, theta_y)
-            maps.append(((c, sn, 0.0, -z_i * sn, z_i * c), (0.0, 0.0, 1.0, rho_i * sn, -rho_i * c)))
-        if reduced:
-            G = np.array(maps)
-            np.einsum("jai,jab,jbk->ik", G, np.array(reduced), G, out=K)
-        else:
-            K[...] = 0.0
+        stiffness_matrix(self.balls, self.ring, self.par, K)
         return K
 
     def _copy_state(self, target, source):

@@ -35,6 +35,14 @@ then every connection is transferred. No iteration, no rollback; fmi2Discard or 
 the step (LibcosimError). t_n = n * H is counted in integer nanoseconds (converted to seconds for
 fmi2DoStep). A recorded *input* at t_{n+1} is the value the instance used during step n.
 
+Input schedules (the run files' `schedules`, u(t) given as a function): libcosim 0.11.2 has no
+piecewise-linear input of its own; its scenario files override or bias a variable with a constant at
+listed times, so a ramp would need one scenario event per step. The same is done directly with
+libcosim's override manipulator (what its scenario manager uses): a scheduled input is given u(0) as
+its initial value; before each step n the manipulator overrides it with u(t_n) (u(t_n + H) for a
+schedule with at = "end") and the execution advances one step (the override reaches the FMU with the
+step's other pending inputs, before fmi2DoStep): the values spindle.cosim.master sets.
+
 To run the fmpy master with the same algorithm: enterInitializationMode; set parameters and inputs;
 N times {read every connected output, then set every connected input}; exitInitializationMode (all);
 read every connected output and set every connected input; then per step: doStep all, read all
@@ -204,6 +212,29 @@ class _Run:
             columns.append((name, self.index[instance], var.reference, kind))
         return columns
 
+    def schedule(self, schedules):
+        """Drive inputs as functions of time: schedules = {'instance.variable': u(t)} (Real inputs, t in
+        s). Adds libcosim's override manipulator; apply() sets u(t) on all of them."""
+        from libcosimpy.CosimManipulator import CosimManipulator
+
+        self.manipulator = CosimManipulator.create_override()
+        if not self.execution.add_manipulator(self.manipulator):
+            raise LibcosimError(f"cannot add the override manipulator: {self._last_error()}")
+        self.scheduled = []
+        for name, u in schedules.items():
+            instance, variable = _split(name)
+            var, kind = self.variable(instance, variable)
+            if kind != "REAL":
+                raise LibcosimError(f"{name}: only Real inputs can be scheduled, this one is {kind}")
+            self.set_initial(instance, variable, u(0.0))
+            self.scheduled.append((name, self.index[instance], var.reference, u))
+
+    def apply_schedules(self, t, h):
+        """Override every scheduled input with its value for the next step, from t to t + h (s)."""
+        for name, index, reference, u in self.scheduled:
+            if not self.manipulator.slave_real_values(index, [reference], [u.for_step(t, h)]):
+                raise LibcosimError(f"{name}: cannot override with u({t}): {self._last_error()}")
+
     def step(self, n_steps):
         if not self.execution.step(n_steps):
             t = self.execution.status().current_time / NANOSECONDS
@@ -240,7 +271,7 @@ class _Run:
     def close(self):
         """Destroy the execution now (fmi2Terminate + fmi2FreeInstance of every FMU, removal of
         libcosim's /tmp/libcosim_* extraction), while Python still runs: never at interpreter exit."""
-        for attr in ("execution", "observer"):  # execution first: it owns the FMUs
+        for attr in ("execution", "observer", "manipulator"):  # execution first: it owns the FMUs
             if hasattr(self, attr):
                 delattr(self, attr)
         self.slaves.clear()
@@ -249,8 +280,11 @@ class _Run:
 def run_libcosim(system, step, stop, record):
     """Run `system` under libcosim's fixed-step (Jacobi) algorithm from t = 0 to `stop`.
 
-    system = {"instances": {name: {"fmu": path, "parameters": {...}, "inputs": {...}}},
+    system = {"instances": {name: {"fmu": path, "parameters": {...}, "inputs": {...},
+                                   "schedules": {input: u}}},
               "connections": [("src.output", "dst.input"), ...]}
+    A schedule u is a spindle.cosim.runfile.Schedule (u(t), u.for_step(t, h)): set to u.for_step(t_n, H)
+    before each step n (see the module docstring).
     Parameters and inputs are given to libcosim as initial values; Real (float), Integer (int),
     Boolean (bool) and String (str) variables are accepted. An initial value on a connected input
     is overwritten during initialisation (see the module docstring). `record` lists
@@ -270,8 +304,19 @@ def run_libcosim(system, step, stop, record):
             run.add_instance(instance, spec)
         for source, target in system.get("connections", []):
             run.connect(source, target)
+        schedules = {
+            f"{instance}.{name}": u
+            for instance, spec in system["instances"].items()
+            for name, u in spec.get("schedules", {}).items()
+        }
         columns = run.observe(record)
-        run.step(n_steps)
+        if schedules:
+            run.schedule(schedules)
+            for n in range(n_steps):  # u at t_n = n H, as spindle.cosim.master computes it
+                run.apply_schedules(n * step, step)
+                run.step(1)
+        else:
+            run.step(n_steps)
         out = np.zeros(
             count,
             dtype=[("time", float)] + [(name, float if kind == "REAL" else np.int64) for name, _, _, kind in columns],

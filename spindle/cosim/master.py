@@ -7,6 +7,9 @@ with a fixed communication step H:
 - Gauss-Seidel (default): instances step one after the other in `order`, each with the newest
   outputs of those before it; Jacobi: every instance steps with the outputs of t_n, then all
   connections are transferred;
+- input schedules (runfile.Schedule): a scheduled input gets u(start) in initialisation mode and u(t)
+  (or u(t + h) if its schedule says at = "end") before every step [t, t + h] (also the halves of a
+  rejected step), one setReal per instance;
 - initialisation: parameters and constant inputs are set in initialisation mode. Connected inputs
   start from the FMUs' own start values (never 0.0): Gauss-Seidel exits initialisation instance by
   instance in `order`, each after taking the outputs of those before it (computed at their exit)
@@ -319,6 +322,12 @@ class Master:
                 (writer, convert, [sources[k] for k in positions])
                 for writer, convert, positions in self.instances[name].setter_plan([t for _, _, t in links])
             ]
+        # per instance with schedules: its scheduled inputs in batches, with the schedule of each value
+        self._scheduled = []
+        for name in spec.order:
+            schedules = list(spec.instances[name].schedules.items())
+            for writer, convert, positions in self.instances[name].setter_plan([var for var, _ in schedules]):
+                self._scheduled.append((self.instances[name], writer, convert, [schedules[k][1] for k in positions]))
         self._record = [(q, self.instances[split_name(q)[0]], split_name(q)[1]) for q in self.recorded]
         self._limits = [
             (lim, self.instances[split_name(lim.variable)[0]], split_name(lim.variable)[1]) for lim in spec.limits
@@ -337,6 +346,8 @@ class Master:
             inst.call("enterInitializationMode", inst.slave.enterInitializationMode)
             inst.set(spec.instances[name].parameters)
             inst.set(spec.instances[name].inputs)
+        for inst, writer, convert, schedules in self._scheduled:
+            inst.call("set scheduled inputs at the start", writer, [convert(u(spec.start)) for u in schedules])
         if spec.algorithm == "jacobi":  # every connected input from its source's start value
             starts = {
                 name: {t_var: self.instances[s].start_value(s_var) for s, s_var, t_var in self.links[name]}
@@ -378,11 +389,18 @@ class Master:
         for writer, convert, sources in self._transfers[name]:
             inst.call("set connected inputs", writer, [convert(src.cache[var]) for src, var in sources])
 
+    def _apply_schedules(self, t, h):
+        """Set every scheduled input to its value for the step from t to t + h (s)."""
+        for inst, writer, convert, schedules in self._scheduled:
+            values = [convert(u.for_step(t, h)) for u in schedules]
+            inst.call(lambda: f"set scheduled inputs at t = {t:.9g} s", writer, values)
+
     def _do_step(self, inst, t, h):
         inst.call(lambda: f"doStep at t = {t:.9g} s, h = {h:.9g} s", inst.do_step, t, h)
 
     def _macro_step(self, t, h):
         """One communication step of the coupled system from t to t + h."""
+        self._apply_schedules(t, h)
         if self.spec.algorithm == "jacobi":
             for name in self.spec.order:
                 self._transfer(name)

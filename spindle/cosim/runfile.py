@@ -21,7 +21,8 @@ Format (every time in s; values SI in the units each FMU declares):
     [instances.bearing_1]
     fmu = "bearing"
     parameters = { race_control = "hybrid" }       # set in initialisation mode
-    inputs = { omega = 1047.2, F_z = 800.0 }       # constant inputs (held for the whole run)
+    inputs = { F_z = 800.0 }                       # constant inputs (held for the whole run)
+    schedules = { omega = [[0.0, 0.0], [2.0, 1047.2]] }   # inputs as functions of time, see below
 
     [[connections]]             # output -> input
     from = "spindle.T_oil_1"
@@ -32,8 +33,20 @@ Format (every time in s; values SI in the units each FMU declares):
     max = 4000.0
     message = "thermal runaway: the fixed preload keeps rising"
 
+Input schedules: `schedules = { name = [[t_0, u_0], [t_1, u_1], ...] }` gives an unconnected input u(t)
+as a piecewise-linear table (t in s, strictly increasing; u in the input's unit), held at u_0 before t_0
+and at the last value after the last point: `[[0.0, 0.0], [2.0, 1047.2]]` is a ramp from rest to
+1047.2 rad/s (10 000 rpm) over 2 s, held afterwards. The master sets u(start) in initialisation mode and,
+before every communication step [t, t + h] (also the halves of a rejected step), a value through FMI:
+u(t) by default (sample and hold at the start of the step, for an FMU that holds its inputs over the
+step), or u(t + h) with `name = { table = [[t, u], ...], at = "end" }` (for an FMU that moves an input
+linearly from its previous value to the new one over the step, as BearingDEM.fmu does with its speed:
+it then follows the table exactly where the table is linear over the step).
+
 `overrides` (sweeps, command line) replace values by dotted keys: "run.step", "bearing_1.F_z"
-(an input or parameter of an instance, whichever it already is; a new key becomes an input).
+(an input or parameter of an instance, whichever it already is; a new key becomes an input). A table
+[[t, u], ...] given for an input makes it scheduled; a number given for a scheduled input makes it
+constant.
 """
 
 import math
@@ -41,7 +54,10 @@ import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import numpy as np
+
 ALGORITHMS = ("gauss_seidel", "jacobi")
+SCHEDULE_AT = ("start", "end")
 
 
 class RunFileError(ValueError):
@@ -54,6 +70,55 @@ class InstanceSpec:
     fmu: str  # absolute path of the FMU file
     parameters: dict = field(default_factory=dict)
     inputs: dict = field(default_factory=dict)
+    schedules: dict = field(default_factory=dict)  # input name -> Schedule
+
+
+@dataclass(frozen=True)
+class Schedule:
+    """An input as a piecewise-linear function of time: points (t_k, u_k), t in s strictly increasing,
+    u in the input's unit; held at u_0 before t_0 and at the last value after the last point."""
+
+    times: tuple
+    values: tuple
+    at: str = "start"  # value set for the step [t, t + h]: u(t) ("start") or u(t + h) ("end")
+
+    def __call__(self, t):
+        """u(t) (t in s)."""
+        return float(np.interp(t, self.times, self.values))
+
+    def for_step(self, t, h):
+        """The value to set before the step from t to t + h (s)."""
+        return self(t + h) if self.at == "end" else self(t)
+
+    @classmethod
+    def from_entry(cls, entry, key):
+        """From a run file's entry: a table [[t, u], ...] or { table = [[t, u], ...], at = "start"|"end" }."""
+        if not isinstance(entry, dict):
+            return cls.from_table(entry, key)
+        _no_unknown_keys(key, entry, {"table", "at"})
+        at = entry.get("at", "start")
+        if at not in SCHEDULE_AT:
+            raise RunFileError(f"{key}.at = {at!r}: allowed {list(SCHEDULE_AT)}")
+        return cls.from_table(entry.get("table"), f"{key}.table", at)
+
+    @classmethod
+    def from_table(cls, table, key, at="start"):
+        """From [[t, u], ...] as written in a run file; RunFileError naming `key` if it is not one."""
+        form = f"{key}: write a table [[t, value], ...] (t in s, strictly increasing, finite numbers)"
+        if not isinstance(table, (list, tuple)) or not table:
+            raise RunFileError(f"{form}; got {table!r}")
+        for k, point in enumerate(table):
+            if not (
+                isinstance(point, (list, tuple))
+                and len(point) == 2
+                and all(isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x) for x in point)
+            ):
+                raise RunFileError(f"{form}; point {k} is {point!r}")
+        times = tuple(float(t) for t, _ in table)
+        for k in range(1, len(times)):
+            if not times[k] > times[k - 1]:
+                raise RunFileError(f"{form}; t = {times[k]} s at point {k} does not follow t = {times[k - 1]} s")
+        return cls(times, tuple(float(u) for _, u in table), at)
 
 
 @dataclass
@@ -134,11 +199,18 @@ def parse_run(doc, path, overrides=None, fmu_dir=None):
     _no_unknown_keys("[run]", run, RUN_KEYS)
     instances = {}
     for name, inst in doc.get("instances", {}).items():
-        _no_unknown_keys(f"[instances.{name}]", inst, {"fmu", "parameters", "inputs"})
+        _no_unknown_keys(f"[instances.{name}]", inst, {"fmu", "parameters", "inputs", "schedules"})
         if inst.get("fmu") not in fmus:
             raise RunFileError(f"instance {name}: fmu = {inst.get('fmu')!r} is not in [fmus] ({sorted(fmus)})")
+        schedules = inst.get("schedules", {})
+        if not isinstance(schedules, dict):
+            raise RunFileError(f"instances.{name}.schedules: write schedules = {{ input = [[t, value], ...] }}")
         instances[name] = InstanceSpec(
-            name, fmus[inst["fmu"]], dict(inst.get("parameters", {})), dict(inst.get("inputs", {}))
+            name,
+            fmus[inst["fmu"]],
+            dict(inst.get("parameters", {})),
+            dict(inst.get("inputs", {})),
+            {k: Schedule.from_entry(v, f"instances.{name}.schedules.{k}") for k, v in schedules.items()},
         )
     for key, value in (overrides or {}).items():
         _apply_override(run, instances, key, value)
@@ -191,7 +263,14 @@ def _apply_override(run, instances, key, value):
         run[tail] = value
     elif head in instances and tail:
         inst = instances[head]
-        (inst.parameters if tail in inst.parameters else inst.inputs)[tail] = value
+        if isinstance(value, (list, tuple, dict)):  # a table: the input becomes scheduled
+            inst.inputs.pop(tail, None)
+            inst.schedules[tail] = Schedule.from_entry(value, f"override {key!r}")
+        elif tail in inst.parameters:
+            inst.parameters[tail] = value
+        else:
+            inst.schedules.pop(tail, None)
+            inst.inputs[tail] = value
     else:
         raise RunFileError(
             f"override {key!r}: use 'run.<key>' or '<instance>.<variable>' (instances: {sorted(instances)})"
@@ -227,6 +306,14 @@ def check(spec):
         if pair[1] in targets:
             problems.append(f"input {pair[1]} is connected twice")
         targets.add(pair[1])
+    for name, inst in spec.instances.items():
+        for var in sorted(set(inst.schedules) & (set(inst.inputs) | set(inst.parameters))):
+            problems.append(f"instances.{name}: {var} is both scheduled and in inputs/parameters (give it once)")
+        for var in sorted(inst.schedules):
+            if f"{name}.{var}" in targets:
+                problems.append(
+                    f"instances.{name}.schedules.{var}: the input is connected (schedules are for free inputs)"
+                )
     for name in spec.record + list(spec.max_change) + [lim.variable for lim in spec.limits]:
         try:
             if split_name(name)[0] not in spec.instances:

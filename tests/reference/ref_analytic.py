@@ -58,7 +58,7 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
 
     eta, xi, rho0 = ref_lubricant.lubricant_state(T_oil, lub)
     K_cm = ref_lubricant.clausius_mossotti_constant(lub[lk.LUB_EPS_R0], rho0)
-    omega_cage, _, omega_ball, u = ref_geometry.rolling_kinematics(omega, D, dm, 0.0)
+    omega_cage, omega_ball_cage, omega_ball, u = ref_geometry.rolling_kinematics(omega, D, dm, 0.0)
     F_c = ref_geometry.centrifugal_force(brg[ak.B_M_BALL], dm, omega_cage) if brg[ak.B_CENTRIFUGAL] > 0.5 else 0.0
 
     stiff = {s: ref_hertz.hertz_stiffness(c["Rx"], c["Ry"], E_red, c["k"], c["E"], c["K"]) for s, c in race.items()}
@@ -126,7 +126,10 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
         "eta": eta,
         "xi": xi,
         "iter": None,
+        "omega_ball_cage": abs(omega_ball_cage),
     }
+    frequencies = ref_geometry.pass_frequencies(omega, omega_cage, omega_ball_cage, Z)
+    out["ftf"], out["bpfo"], out["bpfi"], out["bsf"] = frequencies
     return out, balls
 
 

@@ -278,16 +278,36 @@ def initialise_accelerations(st, par, lub, omega, F_ring, T_oil):
     ring[s.R_AX : s.R_AX + 3] = f_r / par[s.P_M_RING]
 
 
+def step_capacitance(st, par):
+    """Bearing capacitance (F, no background) in the current state: the balls loaded on both races now, each with
+    its two contacts' capacitances of the last refresh in series."""
+    total = 0.0
+    for j in range(st["balls"].shape[1]):
+        p = st["balls"][s.B_X : s.B_X + 3, j]
+        loaded = [
+            groove_contact(p, *race_centre(race, st["ring"], par), par[s.P_RG_I + race])[0] > 0.0 for race in (0, 1)
+        ]
+        if all(loaded):
+            total += ref_capacitance.ball_capacitance(st["trib"][s.T_CAP, 0, j], st["trib"][s.T_CAP, 1, j])
+    return total
+
+
 def advance(st, par, lub, n_steps, dt, omega0, omega1, F_ring, T_oil):
-    """n_steps steps (omega linear from omega0 to omega1); returns the energy dissipated per race (J)."""
+    """n_steps steps (omega linear from omega0 to omega1); returns (energy dissipated per race (J), power
+    dissipated per race in the last step (W), capacitance of every step integrated over time (F.s))."""
     refresh_every = int(par[s.P_REFRESH])
     energy = np.zeros(2)
+    last = np.zeros(2)
+    capacitance = 0.0
     for n in range(n_steps):
         if st["counters"][s.K_STEP] % refresh_every == 0:
             refresh(st, par, lub, omega0 + (omega1 - omega0) * n / n_steps, T_oil)
-        power = step(st, par, omega0 + (omega1 - omega0) * (n + 1) / n_steps, F_ring, dt)
-        energy += power * dt + st["trib"][s.T_P_FILM].sum(axis=1) * dt
-    return energy
+        last = step(st, par, omega0 + (omega1 - omega0) * (n + 1) / n_steps, F_ring, dt) + st["trib"][s.T_P_FILM].sum(
+            axis=1
+        )
+        energy += last * dt
+        capacitance += step_capacitance(st, par) * dt
+    return energy, last, capacitance
 
 
 KERNEL_MODULE = "bearing_fmu.kernels.ball_dynamics.integrator"

@@ -19,16 +19,20 @@ KERNEL_MODULE = "bearing_fmu.kernels.ball_dynamics.monitor"
 
 def critical_time_step(par, Q_inner, Q_outer, Q_cage):
     """Stability limit (s) of the stiffest oscillator at the ball-race loads Q_inner, Q_outer (N, per ball) and
-    the largest ball - cage-ball load Q_cage (N); inf when nothing is loaded."""
+    the largest ball - cage-ball load Q_cage (N); inf when nothing is loaded. Velocity Verlet of a position
+    spring: 2/omega; the tangential spring, lengthened by the predicted velocity v + a dt each step: the
+    amplification matrix of (xi, v/omega) is [[1 - h^2, h], [-h (2 - h^2)/2, 1 - h^2/2]], h = omega dt,
+    which keeps both eigenvalues inside the unit circle while 1 + trace + det = 4 - 2 h^2 > 0: sqrt(2)/omega."""
     m = par[s.P_M_BALL]
-    omegas = [0.0]
+    limits = [math.inf]
     for q_i, q_o in zip(Q_inner, Q_outer):
         k_squeeze = sum(
             1.5 * K ** (2 / 3) * max(q, 0.0) ** (1 / 3) for K, q in ((par[s.P_KH_I], q_i), (par[s.P_KH_O], q_o))
         )
-        k_tangential = k_squeeze / 1.5 * par[s.P_KT_RATIO]
-        omegas += [math.sqrt(k_squeeze / m), math.sqrt(k_tangential * 3.5 / m)]
-    dt = 2.0 / max(omegas) if max(omegas) > 0.0 else math.inf
+        if k_squeeze > 0.0:
+            k_tangential = k_squeeze / 1.5 * par[s.P_KT_RATIO]
+            limits += [2.0 / math.sqrt(k_squeeze / m), math.sqrt(2.0) / math.sqrt(k_tangential * 3.5 / m)]
+    dt = min(limits)
     if Q_cage > 0.0:
         k_cage = 1.5 * par[s.P_K_CB] ** (2 / 3) * Q_cage ** (1 / 3)
         zeta = par[s.P_ZETA_CAGE]

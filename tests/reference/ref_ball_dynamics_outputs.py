@@ -6,11 +6,13 @@ Q = K_h delta^1.5), sharing only the array layout (the kernel's slot constants):
 - cage speed: mean change of the balls' orbital angles over the interval; ball speeds of the most loaded
   ball (inner race, or the outer one when no inner contact is loaded), in the fixed frame and relative to
   the cage;
-- films over loaded contacts: smallest Lambda and h_min per race, h_c of the most loaded contact; the
-  regime of the smaller Lambda; largest SRR and Hertz pressure of a loaded contact;
+- films over the contacts loaded now and at the last refresh (the only ones with a film): smallest Lambda
+  and h_min per race, h_c of the most loaded of them, zero film without any; the regime of the smaller
+  Lambda; largest SRR and Hertz pressure of a loaded contact;
 - capacitance: balls loaded on both races in parallel, each the series of its two contacts, plus background;
-- power = energy dissipated over the interval / interval; torque = power / |omega|; cage slip against the
-  kinematic cage speed (Harris).
+- averaged: power = energy dissipated over the interval / interval, capacitance = its integral over the
+  steps / interval; else the power of the last step and the capacitance now; torque = power / |omega|;
+  cage slip against the kinematic cage speed (Harris).
 """
 
 import math
@@ -55,20 +57,20 @@ def contact_angles(balls, ring, par):
     )
 
 
-def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, c_background):
+def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, c_background, averaged):
     """Bearing-level outputs out[O_*] at inner-ring speed omega (rad/s) after an interval (s)."""
     Z = balls.shape[1]
     Q = contact_loads(balls, ring, par)
     alpha = contact_angles(balls, ring, par)
     out = np.zeros(s.O_SIZE)
     loaded = Q > 0.0
+    with_film = loaded & (trib[s.T_Q] > 0.0)
     for race in range(2):
-        if loaded[race].any():
-            most = int(np.argmax(Q[race]))
-            out[s.O_QMAX_I + race] = Q[race, most]
-            out[s.O_LAMBDA_I + race] = trib[s.T_LAMBDA, race][loaded[race]].min()
-            out[s.O_HMIN_I + race] = trib[s.T_H_MIN, race][loaded[race]].min()
-            out[s.O_HC_I + race] = trib[s.T_H_C, race, most]
+        out[s.O_QMAX_I + race] = Q[race].max()
+        if with_film[race].any():
+            out[s.O_LAMBDA_I + race] = trib[s.T_LAMBDA, race][with_film[race]].min()
+            out[s.O_HMIN_I + race] = trib[s.T_H_MIN, race][with_film[race]].min()
+            out[s.O_HC_I + race] = trib[s.T_H_C, race, int(np.argmax(np.where(with_film[race], Q[race], -1.0)))]
     if loaded.any():
         out[s.O_SRR_MAX] = max(trib[s.T_SRR][loaded].max(), 0.0)
         out[s.O_PMAX] = max(trib[s.T_P_MAX][loaded].max(), 0.0)
@@ -76,9 +78,12 @@ def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, 
     j = int(np.argmax(Q[0])) if loaded[0].any() else int(np.argmax(Q[1]))
     both = loaded[0] & loaded[1]
     out[s.O_N_LOADED] = both.sum()
-    out[s.O_C_BEARING] = c_background + sum(
-        ref_capacitance.ball_capacitance(trib[s.T_CAP, 0, k], trib[s.T_CAP, 1, k]) for k in range(Z) if both[k]
-    )
+    if averaged and interval > 0.0:  # the capacitance integrated over the steps, per unit time
+        out[s.O_C_BEARING] = c_background + acc[s.A_CAP] / interval
+    else:  # balls loaded on both races now, with the capacitances of the last refresh
+        out[s.O_C_BEARING] = c_background + sum(
+            ref_capacitance.ball_capacitance(trib[s.T_CAP, 0, k], trib[s.T_CAP, 1, k]) for k in range(Z) if both[k]
+        )
     omega_cage = (balls[s.B_ORBIT].sum() - orbit0) / (Z * interval) if interval > 0.0 else 0.0
     out[s.O_OMEGA_CAGE] = omega_cage
     w = balls[s.B_WX : s.B_WX + 3, j]
@@ -86,7 +91,10 @@ def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, 
     out[s.O_OMEGA_BALL_REL] = np.linalg.norm(w - np.array([0.0, 0.0, omega_cage]))
     out[s.O_ALPHA_I] = alpha[0, j]
     out[s.O_ALPHA_O] = alpha[1, j]
-    if interval > 0.0:
+    if not averaged:  # the power of the last step
+        out[s.O_Q_INNER_RING] = acc[s.A_POWER_I]
+        out[s.O_Q_OUTER_RING] = acc[s.A_POWER_O]
+    elif interval > 0.0:  # energy over the interval / interval
         out[s.O_Q_INNER_RING] = acc[s.A_DISS_I] / interval
         out[s.O_Q_OUTER_RING] = acc[s.A_DISS_O] / interval
     out[s.O_P_LOSS] = out[s.O_Q_INNER_RING] + out[s.O_Q_OUTER_RING]

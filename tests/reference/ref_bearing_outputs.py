@@ -9,8 +9,11 @@ ball's speed in the fixed frame is the norm of its angular-velocity vector writt
 
 import math
 
+from . import ref_geometry
+
 SRC_OUT, SRC_D, SRC_F, SRC_K, SRC_BALL_SET = 0, 1, 2, 3, 4
-BS_ALPHA_I, BS_ALPHA_O, BS_CAGE, BS_BALL, BS_ITERATIONS, BS_SIZE = 0, 1, 2, 3, 4, 5
+BS_ALPHA_I, BS_ALPHA_O, BS_CAGE, BS_BALL, BS_ITERATIONS = 0, 1, 2, 3, 4
+BS_BALL_CAGE, BS_FTF, BS_BPFO, BS_BPFI, BS_BSF, BS_SIZE = 5, 6, 7, 8, 9, 10
 # rows of the per-ball array (kernels.jones_harris BQ_*)
 BQ_Q_I, BQ_Q_O, BQ_A_I, BQ_A_O, BQ_BETA, BQ_W_M, BQ_W_R = 0, 1, 2, 3, 4, 5, 6
 
@@ -40,6 +43,10 @@ def ball_set_summary(balls, omega, iterations, summary):
     summary[BS_CAGE] = cage
     summary[BS_BALL] = 0.0 if omega == 0.0 else (speed if omega > 0.0 else -speed)
     summary[BS_ITERATIONS] = iterations
+    # relative to the cage the ball turns at w_R alone (the orbital speed is the cage's own)
+    summary[BS_BALL_CAGE] = abs(w_r)
+    frequencies = ref_geometry.pass_frequencies(omega, cage, w_r, len(q_i))
+    summary[BS_FTF], summary[BS_BPFO], summary[BS_BPFI], summary[BS_BSF] = frequencies
 
 
 def quasi_static_outputs(balls, omega, iterations, out, d, F, K_flat, source, index, summary, values):

@@ -8,10 +8,10 @@ load Q, rolling speed u and spin speed of the per-ball rows (kernels.jones_harri
    at the Dowson-Higginson density) and the contact capacitance (ref_capacitance);
 4. if loaded and the loss submodel is on: the four Houpert loss components (ref_torque) with the
    friction coefficient of Lambda; the heat goes to the ring of the contact.
-Summaries (docs/quasistatic.md): minimum Lambda and h_min over the loaded contacts of each race (0 when a
-race has none), regime of the worse race, largest loads and pressure, balls loaded on both races,
-bearing capacitance = background + balls (inner and outer contacts in series) in parallel, power loss
-= both rings' heats, torque = power / |omega| (0 at rest).
+Summaries (docs/quasistatic.md): minimum Lambda and h_min over the loaded contacts of each race and the
+central film h_c of its most loaded contact (0 when a race has none), regime of the worse race, largest
+loads and pressure, balls loaded on both races, bearing capacitance = background + balls (inner and outer
+contacts in series) in parallel, power loss = both rings' heats, torque = power / |omega| (0 at rest).
 The cp, lub and balls arrays are read through the kernels' layout constants only. A submodel that is
 off is a null submodel: its outputs are NaN here (the kernel does not write them).
 """
@@ -48,7 +48,7 @@ def contact(Q, u, spin, Rx, Ry, k, ell_E, ell_K, sigma, f, cp, eta, xi, rho0, lu
         mu = ref_ehl.friction_coefficient(lam)
         args = (Q, u, spin, Rx, Ry, a, b, ell_E, f, cp[ck.CP_D], E_red, eta, xi, mu, cp[ck.CP_ALPHA_H])
         ref_torque.contact_losses(*args, losses)
-    return {"p_max": p_max, "h_min": h_min, "Lambda": lam, "C": C, "losses": losses}
+    return {"p_max": p_max, "h_c": h_c, "h_min": h_min, "Lambda": lam, "C": C, "losses": losses}
 
 
 def contact_outputs(omega, T_oil, cp, lub, balls):
@@ -72,6 +72,8 @@ def contact_outputs(omega, T_oil, cp, lub, balls):
         out[ck.CO_LAMBDA_I + race] = min((c["Lambda"] for c in loaded), default=0.0)
         out[ck.CO_HMIN_I + race] = min((c["h_min"] for c in loaded), default=0.0)
         out[ck.CO_QMAX_I + race] = max((c["Q"] for c in loaded), default=0.0)
+        # central film of the most loaded contact: the first ball of the largest load
+        out[ck.CO_HC_I + race] = max(loaded, key=lambda c: c["Q"])["h_c"] if loaded else 0.0
         for j in range(Z):
             per_contact[ck.PC_HMIN_I + race, j] = res[name, j]["h_min"]
             per_contact[ck.PC_LAMBDA_I + race, j] = res[name, j]["Lambda"]

@@ -81,6 +81,21 @@ def defect_frequencies(omega, D, dm, alpha, Z):
     return ftf, Z * ftf, Z * (fr - ftf), (dm / (2.0 * D)) * (1.0 - g * g) * fr
 
 
+def pass_frequencies(omega, omega_cage, omega_ball_cage, Z):
+    """(FTF, BPFO, BPFI, BSF) in Hz from the speeds, outer ring fixed: in the cage's frame the outer ring turns
+    at -omega_c and the inner ring at omega - omega_c, and Z balls pass a point of each ring per relative turn;
+    the ball turns at omega_ball_cage relative to the cage. Frequencies are counts per second (magnitudes)."""
+    turns = [abs(w) / (2.0 * math.pi) for w in (0.0 - omega_cage, omega - omega_cage, omega_ball_cage)]
+    outer, inner, ball = turns
+    return outer, Z * outer, Z * inner, ball
+
+
+def ball_direction(j, Z):
+    """Unit vector toward ball j: azimuth pi/2 + 2 pi j / Z from +x toward +y (ball 0 on +y)."""
+    psi = math.pi / 2.0 + 2.0 * math.pi * j / Z
+    return math.cos(psi), math.sin(psi)
+
+
 def ball_mass(D, rho):
     """m = rho (4/3) pi (D/2)^3."""
     return rho * 4.0 / 3.0 * math.pi * (D / 2.0) ** 3
@@ -100,6 +115,8 @@ TWINS = {
     "free_endplay": free_endplay,
     "rolling_kinematics": rolling_kinematics,
     "defect_frequencies": defect_frequencies,
+    "pass_frequencies": pass_frequencies,
+    "ball_direction": ball_direction,
     "ball_mass": ball_mass,
     "centrifugal_force": centrifugal_force,
 }

@@ -3,7 +3,7 @@ Concepts ch. 3): plain Python + scipy, one function per equation group, written 
 definition and nothing else.
 
 Conventions (SI; outer ring fixed; inner-ring displacements d = (x, y, z, theta_x, theta_y)). In the
-plane of ball j (azimuth psi_j = 2 pi j / Z from the x axis toward y) the "1" direction is axial
+plane of ball j (azimuth psi_j = pi/2 + 2 pi j / Z from the x axis toward y: ball 0 on +y) the "1" direction is axial
 (along z), the "2" direction radial (outward). All positions are taken from the outer groove-curvature
 centre:
   A = (A1, A2): the inner groove-curvature centre,
@@ -64,7 +64,7 @@ def geometry(p):
     A = (f_i + f_o - 1) D, r_i = (f_i - 0.5) D, r_o = (f_o - 0.5) D;
     alpha0 = arccos(1 - Pd / (2 A)) for Pd >= 0, else 0;
     A1_0 = A sin(alpha0) if angular else 0;  A2_0 = A - (Pd + dPd) / 2;
-    Rr_i = dm/2 + (f_i - 0.5) D cos(alpha0);  psi_j = 2 pi j / Z;  gp = D / dm.
+    Rr_i = dm/2 + (f_i - 0.5) D cos(alpha0);  psi_j = pi/2 + 2 pi j / Z;  gp = D / dm.
     """
     D, dm = p["D"], p["dm"]
     A = (p["f_i"] + p["f_o"] - 1.0) * D
@@ -76,7 +76,7 @@ def geometry(p):
     A2_0 = A - (Pd + p.get("dPd", 0.0)) / 2.0
     Rr_i = dm / 2.0 + (p["f_i"] - 0.5) * D * math.cos(alpha0)
     Z = int(p["Z"])
-    psi = [2.0 * math.pi * j / Z for j in range(Z)]
+    psi = [math.pi / 2.0 + 2.0 * math.pi * j / Z for j in range(Z)]
     return dict(A=A, r_i=r_i, r_o=r_o, alpha0=alpha0, A1_0=A1_0, A2_0=A2_0, Rr_i=Rr_i, psi=psi, gp=D / dm, Z=Z)
 
 

@@ -48,10 +48,10 @@ def ball_forces_on_outer_ring(balls, D):
 def test_6208_radial_load_is_discrete_stribeck():
     p = rq.params_6208()
     F_r = 3000.0
-    d = rq.solve_loads([F_r, 0.0, 0.0, 0.0, 0.0], p)
+    d = rq.solve_loads([0.0, F_r, 0.0, 0.0, 0.0], p)  # F_y: on the line of ball 1 (docs/conventions.md)
     _, balls = rq.bearing_loads(d, p)
     Q_max = max(b["Q_i"] for b in balls)
-    psi = [2.0 * math.pi * j / 9 for j in range(9)]
+    psi = [2.0 * math.pi * j / 9 for j in range(9)]  # from the load line
     discrete = F_r / sum(max(math.cos(s), 0.0) ** 2.5 for s in psi)
     continuous = F_r / (9 * 0.2288)
     assert Q_max == pytest.approx(discrete, rel=1e-9)
@@ -60,9 +60,9 @@ def test_6208_radial_load_is_discrete_stribeck():
     for b, s in zip(balls, psi):
         assert b["Q_i"] == pytest.approx(discrete * max(math.cos(s), 0.0) ** 1.5, rel=1e-9, abs=1e-9)
         assert b["a_i"] == 0.0 and b["a_o"] == 0.0
-    assert np.all(np.abs(d[1:3]) < 1e-15) and np.all(np.abs(d[3:]) < 1e-12)
-    # radial shift: Q_max = K delta^1.5 with the contacts in series, delta = x at Pd = 0
-    assert d[0] == pytest.approx((Q_max / rq._series_stiffness(p)) ** (2.0 / 3.0), rel=1e-9)
+    assert abs(d[0]) < 1e-15 and abs(d[2]) < 1e-15 and np.all(np.abs(d[3:]) < 1e-12)
+    # radial shift: Q_max = K delta^1.5 with the contacts in series, delta = y at Pd = 0
+    assert d[1] == pytest.approx((Q_max / rq._series_stiffness(p)) ** (2.0 / 3.0), rel=1e-9)
 
 
 def test_angular_pure_axial_load_matches_scalar_equation():

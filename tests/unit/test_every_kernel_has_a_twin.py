@@ -73,21 +73,24 @@ COVERED_THROUGH = {
     # (test_ball_dynamics.py: loaded and open contacts, boundary and mixed regimes, slipping springs, cage
     # balls pressed by the balls and by their channel), three film formulas
     BD + "integrator.verlet_step": (BD + "integrator.advance", "the step that advance repeats"),
-    BD + "integrator.compute_forces": (BD + "integrator.verlet_step", "the forces of every step"),
-    BD + "integrator.refresh_tribology": (BD + "integrator.advance", "the refresh every 10 steps (trib compared)"),
-    BD + "tribology.refresh_contact": (BD + "integrator.refresh_tribology", "one contact of the refresh"),
+    BD + "tribology.refresh_tribology": (BD + "integrator.advance", "the refresh every 10 steps (trib compared)"),
+    BD + "integrator.ball_capacitances": (
+        BD + "integrator.advance",
+        "each ball's series capacitance after a refresh (the integrated capacitance is compared)",
+    ),
     BD + "tribology.tribology_constants": (
         BD + "integrator.advance",
         "the fused film and Houpert constants; their own equality with kernels.ehl and kernels.torque is tested "
         "to 1e-12 in test_ball_dynamics.py",
     ),
-    BD + "tribology.race_circle": (BD + "integrator.compute_forces", "the groove-centre circle of each race"),
-    BD + "contacts.ball_race_contact": (BD + "integrator.compute_forces", "every ball-race contact of a step"),
+    BD + "tribology.race_circle": (BD + "integrator.verlet_step", "the groove-centre circle of each race"),
+    BD + "contacts.ball_race_contact": (BD + "integrator.verlet_step", "every ball-race contact of a step"),
     BD + "contacts.groove_approach": (BD + "contacts.ball_race_contact", "approach and normal of the torus"),
     BD + "contacts.contact_damping": (BD + "contacts.ball_race_contact", "C_n by regime (boundary and mixed)"),
     BD + "contacts.tangential_spring": (BD + "contacts.ball_race_contact", "sticking and slipping springs"),
-    BD + "cage.ball_cage_contact": (BD + "integrator.compute_forces", "ball - cage-ball contacts of a step"),
-    BD + "cage.cage_guide_contact": (BD + "integrator.compute_forces", "cage ball - channel contacts of a step"),
+    BD + "stiffness._contact_spring": (BD + "stiffness.stiffness_matrix", "the in-plane spring of each loaded contact"),
+    BD + "cage.ball_cage_contact": (BD + "integrator.verlet_step", "ball - cage-ball contacts of a step"),
+    BD + "cage.cage_guide_contact": (BD + "integrator.verlet_step", "cage ball - channel contacts of a step"),
     BD + "cage.damped_hertz": (BD + "cage.ball_cage_contact", "the damped Hertz law of both cage contacts"),
 }
 

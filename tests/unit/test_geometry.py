@@ -178,3 +178,39 @@ def test_seed_6208_speeds():
     assert w_rel == pytest.approx(1150.4, abs=0.05)
     assert w_c == pytest.approx(198.0, abs=0.05)
     assert u == pytest.approx(500.0 * 60.6e-3 * (1.0 - (12.6 / 60.6) ** 2) / 4.0, rel=1e-14, abs=0)
+
+
+@FAST
+@given(
+    omega=floats(min_value=-5000.0, max_value=5000.0),
+    cage=floats(min_value=-3000.0, max_value=3000.0),
+    ball=floats(min_value=-20000.0, max_value=20000.0),
+    Z=st.integers(min_value=3, max_value=40),
+)
+def test_pass_frequencies_twin(omega, cage, ball, Z):
+    """Frequencies from solved speeds (any slip, either sense) against the twin; closed forms: RTOL."""
+    assert_close(gk.pass_frequencies(omega, cage, ball, Z), rg.pass_frequencies(omega, cage, ball, Z), RTOL, "freq")
+
+
+def test_pass_frequencies_in_pure_rolling_are_the_defect_frequencies():
+    """Fed the pure-rolling speeds, the frequencies from speeds are the catalogue closed forms (magnitudes:
+    a frequency has no sense), for both senses of rotation and every contact angle."""
+    D, dm, Z = 12.6e-3, 60.6e-3, 9
+    for omega in (500.0, -500.0):
+        for alpha in ANGLES:
+            cage, ball_rel, _, _ = gk.rolling_kinematics(omega, D, dm, alpha)
+            closed = [abs(f) for f in gk.defect_frequencies(omega, D, dm, alpha, Z)]
+            assert_close(gk.pass_frequencies(omega, cage, ball_rel, Z), closed, RTOL, "pure rolling")
+
+
+def test_ball_direction_twin_and_convention():
+    """Ball 0 exactly on +y, the others counter-clockwise (toward -x first) every 2 pi / Z; against the twin
+    to 2 ulp of a unit vector (the twin adds pi/2 in floating point: abs 1e-15)."""
+    for Z in (7, 8, 9, 16):
+        assert gk.ball_direction(0, Z) == (-0.0, 1.0)
+        for j in range(Z):
+            c, s = gk.ball_direction(j, Z)
+            assert_close((c, s), rg.ball_direction(j, Z), 0.0, f"ball {j} of {Z}", atol=1e-15)
+    # a quarter of the balls on: +y, -x, -y, +x in turn for Z = 8
+    quarter = [tuple(round(v) for v in gk.ball_direction(j, 8)) for j in (0, 2, 4, 6)]
+    assert quarter == [(0, 1), (-1, 0), (0, -1), (1, 0)]

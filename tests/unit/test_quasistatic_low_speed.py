@@ -24,13 +24,13 @@ SCENE = Scene.from_toml(SCENES_DIR / "quasi_static.toml")  # the scene of Bearin
 # loads (N, N.m) of the run-ups and of the grid: radial + axial, radial + moment, pure axial, none
 LOADS = {
     "B7214C": (  # a single-row angular-contact bearing: every load with the thrust that keeps it on its shoulder
-        dict(F_x=5000.0, F_z=500.0),
-        dict(F_x=5000.0, F_y=2000.0, F_z=2000.0, M_x=60.0),
+        dict(F_y=5000.0, F_z=500.0),
+        dict(F_x=-2000.0, F_y=5000.0, F_z=2000.0, M_y=60.0),
         dict(F_z=2000.0),
-        dict(F_x=3000.0, F_z=1000.0, M_y=-40.0),
+        dict(F_y=3000.0, F_z=1000.0, M_x=40.0),
         {},
     ),
-    "6208": (dict(F_x=5000.0, F_y=2000.0, M_x=60.0), dict(F_x=5000.0, F_z=500.0), dict(F_x=3000.0), {}),
+    "6208": (dict(F_x=-2000.0, F_y=5000.0, M_y=60.0), dict(F_y=5000.0, F_z=500.0), dict(F_y=3000.0), {}),
 }
 LOW_SPEEDS_RPM = (0.1, 0.3, 1.0, 3.0, 10.0, 25.0, 79.0, 116.0, 200.0, 537.0, 600.0)
 
@@ -98,7 +98,7 @@ def test_zero_load_in_clearance_gives_the_centre_whatever_the_history(label, p, 
     m = QuasiStaticModel("B7214C" if p["angular"] else "6208", scene=SCENE, Pd=p["Pd"])
     seen = []
     # (an angular-contact bearing takes thrust in +z only: its histories differ in size and direction)
-    histories = (dict(F_z=1000.0), dict(F_x=2000.0, F_z=3000.0)) if p["angular"] else (dict(F_z=1000.0), dict(F_z=-1e3))
+    histories = (dict(F_z=1000.0), dict(F_y=2000.0, F_z=3000.0)) if p["angular"] else (dict(F_z=1000.0), dict(F_z=-1e3))
     for history in (*histories, {}):
         m.evaluate(omega=rpm * RPM, **history)
         seen.append(m.evaluate(omega=rpm * RPM)["z"])
@@ -109,7 +109,8 @@ def test_low_speed_solution_matches_twin():
     """6208 at 1 rpm under 5 kN + 2 kN + 60 N.m (a case refused before for every ball's tiny centrifugal
     load): displacements equal the twin's (scipy root on the same equations) to 1e-6 relative."""
     p = ref.params_6208(centrifugal=True, gyroscopic=True, omega=1.0 * RPM)
-    F_applied = (5000.0, 2000.0, 0.0, 60.0, 0.0)
+    # 5 kN along the line of ball 1 (+y), 2 kN across it (-x), 60 N.m about the y axis (docs/conventions.md)
+    F_applied = (-2000.0, 5000.0, 0.0, 0.0, 60.0)
     status, d, *_ = kernel_solve(pack(p, tol=1e-10), F_applied, p["omega"])
     assert status == qk.QS_OK
     d_ref = ref.solve_loads(F_applied, p)
@@ -117,7 +118,7 @@ def test_low_speed_solution_matches_twin():
     assert np.max(np.abs((d - d_ref) * scale)) <= 1e-6 * np.max(np.abs(d_ref * scale))
 
 
-@pytest.mark.parametrize("load", [dict(F_z=-100.0), dict(F_x=5000.0, F_y=2000.0, M_x=60.0)])
+@pytest.mark.parametrize("load", [dict(F_z=-100.0), dict(F_x=-2000.0, F_y=5000.0, M_y=60.0)])
 def test_reverse_thrust_on_single_angular_contact_bearing_is_refused(load):
     """A single-row angular-contact bearing has its thrust shoulder on one side: a reverse thrust, or a
     radial load and moment without the thrust that keeps every loaded ball on that shoulder, is refused

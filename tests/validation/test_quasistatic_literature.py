@@ -47,15 +47,15 @@ def scene(**options):
     ],
 )
 def test_load_parameter_vs_clearance(F_r, Pd, eps_published):
-    """eps = (1 - P_d/(2 delta_r))/2 from the solver's radial displacement delta_r = x at omega ~ 0
+    """eps = (1 - P_d/(2 delta_r))/2 from the solver's radial displacement delta_r = y at omega ~ 0
     (1e-3 rad/s: speed effects ~1e-12 of the loads): Guessasma App. A (3 kN, P_d = -12.6/0/+12.6 um
     -> 0.685/0.5/0.40) and Farah App. A (5 kN, P_d/D = -0.0045/0/+0.0045 -> 1.70/0.5/0.29; -0.0035
     -> 1.32). Tolerance 1 %: the papers print 2-3 digits from a 9-ball DEM at
     1 rad/s; this is the same 9-ball discrete bearing, so the remaining difference is their
     rounding and their dynamic solution."""
     model = QuasiStaticModel("6208", "guessasma_oil", scene(), Pd=Pd)
-    out = model.evaluate(omega=1e-3, F_x=F_r, T_oil=T_OIL)
-    eps = 0.5 * (1.0 - Pd / (2.0 * out["x"]))
+    out = model.evaluate(omega=1e-3, F_y=F_r, T_oil=T_OIL)  # ball 1 on the load line, as in the papers
+    eps = 0.5 * (1.0 - Pd / (2.0 * out["y"]))
     assert eps == pytest.approx(eps_published, rel=0.01)
 
 
@@ -64,7 +64,7 @@ def test_pure_rolling_kinematics_6208():
     500 rad/s, P_d = 0, F_r = 3 kN, contact angle 0: cage 198.02 rad/s, ball 952.38 rad/s in the fixed
     frame (printed to 5 digits: 1e-4)."""
     model = QuasiStaticModel("6208", "guessasma_oil", scene(), Pd=0.0)
-    out = model.evaluate(omega=500.0, F_x=3000.0, T_oil=T_OIL)
+    out = model.evaluate(omega=500.0, F_y=3000.0, T_oil=T_OIL)
     assert out["omega_cage"] == pytest.approx(198.02, rel=1e-4)
     assert out["omega_ball"] == pytest.approx(952.38, rel=1e-4)
 

@@ -21,24 +21,8 @@ import math
 
 from bearing_fmu_common.jit import kernel
 
-from .state import (
-    B_X,
-    C_X,
-    P_C_CB,
-    P_C_GUIDE,
-    P_GUIDE_GAP,
-    P_K_CB,
-    P_K_GUIDE,
-    P_R_GUIDE,
-    P_Z_GUIDE,
-    W_FB,
-    W_FC,
-    W_VB,
-    W_VC,
-)
 
-
-@kernel
+@kernel(inline="always")
 def damped_hertz(K, c0, delta, v_approach):
     """Normal force (N, >= 0) of a damped Hertz contact: K delta^1.5 + c v_approach, K (N/m^1.5), delta (m),
     v_approach (m/s, > 0 closing). The damping c = 2 zeta sqrt(k m_eff) of the tangent stiffness
@@ -48,60 +32,43 @@ def damped_hertz(K, c0, delta, v_approach):
     return f if f > 0.0 else 0.0
 
 
-@kernel
-def ball_cage_contact(j, k, balls, cage, par, work, R_sum):
-    """Contact of steel ball j with cage ball k; forces added to work (N). R_sum = R_b + R_z (m).
-    Returns the contact load (N, 0 if open)."""
-    dx = cage[C_X, k] - balls[B_X, j]
-    dy = cage[C_X + 1, k] - balls[B_X + 1, j]
-    dz = cage[C_X + 2, k] - balls[B_X + 2, j]
+@kernel(inline="always")
+def ball_cage_contact(dx, dy, dz, dvx, dvy, dvz, R_sum, K, c0):
+    """Force (N) on the cage ball of its contact with a steel ball: (dx, dy, dz) = cage-ball centre - ball
+    centre (m), (dvx, dvy, dvz) = ball velocity - cage-ball velocity (m/s), R_sum = R_b + R_z (m), K and c0
+    as damped_hertz. The steel ball gets the opposite force. Returns (fx, fy, fz); zero when open (most of the
+    time: the pockets have play)."""
     d2 = dx * dx + dy * dy + dz * dz
-    if d2 >= R_sum * R_sum or d2 == 0.0:  # open (most of the time: the pockets have play)
-        return 0.0
+    if d2 >= R_sum * R_sum or d2 == 0.0:
+        return 0.0, 0.0, 0.0
     dist = math.sqrt(d2)
     delta = R_sum - dist
     inv = 1.0 / dist
     nx = dx * inv  # from the steel ball to the cage ball
     ny = dy * inv
     nz = dz * inv
-    v_app = (
-        (work[W_VB, j] - work[W_VC, k]) * nx
-        + (work[W_VB + 1, j] - work[W_VC + 1, k]) * ny
-        + (work[W_VB + 2, j] - work[W_VC + 2, k]) * nz
-    )
-    f = damped_hertz(par[P_K_CB], par[P_C_CB], delta, v_app)
-    work[W_FC, k] += f * nx
-    work[W_FC + 1, k] += f * ny
-    work[W_FC + 2, k] += f * nz
-    work[W_FB, j] -= f * nx
-    work[W_FB + 1, j] -= f * ny
-    work[W_FB + 2, j] -= f * nz
-    return f
+    f = damped_hertz(K, c0, delta, dvx * nx + dvy * ny + dvz * nz)
+    return f * nx, f * ny, f * nz
 
 
-@kernel
-def cage_guide_contact(k, cage, par, work):
-    """Contact of cage ball k with its guide channel; force added to work (N). Returns the load (N)."""
-    px = cage[C_X, k]
-    py = cage[C_X + 1, k]
+@kernel(inline="always")
+def cage_guide_contact(px, py, pz, vx, vy, vz, r_guide, z_guide, gap, K, c0):
+    """Force (N) on a cage ball at (px, py, pz) (m) moving at v (m/s) from its guide channel (centre circle of
+    radius r_guide at height z_guide, radial play gap, m; K and c0 as damped_hertz). Returns (fx, fy, fz)."""
     r = math.sqrt(px * px + py * py)
     if r == 0.0:
-        return 0.0
-    scale = 1.0 - par[P_R_GUIDE] / r
+        return 0.0, 0.0, 0.0
+    scale = 1.0 - r_guide / r
     sx = px * scale
     sy = py * scale
-    sz = cage[C_X + 2, k] - par[P_Z_GUIDE]
+    sz = pz - z_guide
     dist = math.sqrt(sx * sx + sy * sy + sz * sz)
-    delta = dist - par[P_GUIDE_GAP]
+    delta = dist - gap
     if delta <= 0.0:
-        return 0.0
+        return 0.0, 0.0, 0.0
     inv = 1.0 / dist
     nx = sx * inv
     ny = sy * inv
     nz = sz * inv
-    v_app = work[W_VC, k] * nx + work[W_VC + 1, k] * ny + work[W_VC + 2, k] * nz
-    f = damped_hertz(par[P_K_GUIDE], par[P_C_GUIDE], delta, v_app)
-    work[W_FC, k] -= f * nx
-    work[W_FC + 1, k] -= f * ny
-    work[W_FC + 2, k] -= f * nz
-    return f
+    f = damped_hertz(K, c0, delta, vx * nx + vy * ny + vz * nz)
+    return -f * nx, -f * ny, -f * nz

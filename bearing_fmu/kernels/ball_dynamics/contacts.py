@@ -30,32 +30,11 @@ from bearing_fmu_common.jit import kernel
 
 from ..ehl import REGIME_BOUNDARY
 
-# The contact functions are inlined into the force loop (numba IR inlining): called through numba's
-# ordinary calls, the arrays travel as exploded structs and the 18 contacts per step cost ~50 % more.
-from .state import (
-    A_DISS_I,
-    A_FR,
-    A_VR,
-    B_X,
-    K_SIZE,
-    P_ALPHA_E,
-    P_D,
-    P_KT_RATIO,
-    S_INNER,
-    S_STRIDE,
-    T_C_N,
-    T_F_ROLL,
-    T_M_SPIN,
-    T_MU,
-    T_REGIME,
-    W_FB,
-    W_MB,
-    W_ORBIT,
-    W_VB,
-    W_WB,
-)
 
-
+# Every function here takes and returns scalars only: the step (integrator.verlet_step) reads
+# the state arrays and writes the results. A numba function that receives arrays increments and decrements
+# their reference counts at each call (atomic operations, ~2.5 ns per array), which cost more than the
+# contact's arithmetic when paid 18 times per step.
 @kernel(inline="always")
 def groove_approach(px, py, pz, cx, cy, cz, rho, rg):
     """Approach and normal of a ball at (px, py, pz) (m) in a groove whose curvature-centre circle has
@@ -92,19 +71,16 @@ def contact_damping(regime, c_frozen, alpha_e, Q):
 
 
 @kernel(inline="always")
-def tangential_spring(spring, row, j, nx, ny, nz, vtx, vty, vtz, dt, kt, f_limit):
+def tangential_spring(ox, oy, oz, nx, ny, nz, vtx, vty, vtz, dt, kt, f_limit):
     """Advance the tangential spring of one contact and return its force on the ball.
 
-    spring[row:row + 3, j] (m) is projected on the current tangent plane (normal n), lengthened by
-    the tangential relative velocity v_t (m/s) times dt (s), and turned into F_t = -kt * spring
-    (kt in N/m). Beyond the Coulomb limit f_limit = mu F_n (N) the force is scaled back to the
-    limit and the spring shortened to match (Cundall & Strack 1979). Returns (ftx, fty, ftz,
-    slipping, reversed): reversed is True when a slipping spring points against its previous
-    direction (a sign of chatter).
+    The spring (ox, oy, oz) (m) is projected on the current tangent plane (normal n), lengthened by the
+    tangential relative velocity v_t (m/s) times dt (s), and turned into F_t = -kt * spring (kt in N/m).
+    Beyond the Coulomb limit f_limit = mu F_n (N) the force is scaled back to the limit and the spring
+    shortened to match (Cundall & Strack 1979). Returns (sx, sy, sz, ftx, fty, ftz, slipping, reversed):
+    the new spring (m), the force (N), and reversed = True when a slipping spring points against its
+    previous direction (a sign of chatter).
     """
-    ox = spring[row, j]
-    oy = spring[row + 1, j]
-    oz = spring[row + 2, j]
     on = ox * nx + oy * ny + oz * nz
     ox -= on * nx
     oy -= on * ny
@@ -127,80 +103,69 @@ def tangential_spring(spring, row, j, nx, ny, nz, vtx, vty, vtz, dt, kt, f_limit
         sy = -fy / kt
         sz = -fz / kt
         reversed_ = sx * ox + sy * oy + sz * oz < 0.0
-    spring[row, j] = sx
-    spring[row + 1, j] = sy
-    spring[row + 2, j] = sz
-    return fx, fy, fz, slipping, reversed_
+    return sx, sy, sz, fx, fy, fz, slipping, reversed_
 
 
 @kernel(inline="always")
 def ball_race_contact(
     race,
-    j,
-    omega,
-    rho,
-    cx,
-    cy,
-    cz,
-    rg,
-    K_h,
-    inv_delta_lim,
-    rate_inv,
-    w_reg,
-    balls,
-    ring,
-    spring,
-    trib,
-    counters,
-    par,
-    work,
-    acc,
-    dt,
+    px,
+    py,
+    pz,
+    vx,
+    vy,
+    vz,
+    wx,
+    wy,
+    wz,
+    w_orbit,
+    ox,
+    oy,
+    oz,
+    mu,
+    regime,
+    c_frozen,
+    f_roll_surface,
+    m_s,
+    frame,
+    steps,
 ):
-    """Forces of the contact of ball j with one race, added to the work arrays.
+    """Forces of the contact of a ball with one race.
 
-    race 0 inner (turning at omega rad/s about z through the ring centre (cx, cy), translating with the
-    predicted ring velocity acc[A_VR:]), 1 outer (fixed). (cx, cy, cz), rho, rg: the groove's
-    curvature-centre circle and (f - 1/2) D (m); K_h (N/m^1.5); inv_delta_lim: 1 / penetration limit (1/m);
-    rate_inv = 4 dt / I (1/(N.m.s)), the inverse of the largest viscous rate of a regularised moment;
-    w_reg = v_reg / (D/2) (rad/s). Uses the positions in balls/ring and the predicted velocities in work;
-    updates the spring, the chatter counter and the dissipated energy acc[A_DISS_I + race] (J); dt (s).
-    Returns (delta / delta_lim, chatter count): the monitor's two per-contact indicators.
+    race 0 inner (turning at omega about z through the ring centre (cx, cy), translating at (vrx0, vry0, vrz0)),
+    1 outer (fixed). Ball: centre (px, py, pz) (m), predicted velocity v (m/s) and angular velocity w (rad/s),
+    orbital speed w_orbit (rad/s); (ox, oy, oz): the contact's tangential spring (m). From the last tribology
+    refresh: mu (-), regime code, c_frozen (N.s/m), f_roll_surface = F_R + (F_h + F_H)/2 (N) and the pivoting
+    moment m_s (N.m). frame = (omega (rad/s), vrx0, vry0, vrz0 (m/s), cx, cy, cz, rho, rg (m), K_h (N/m^1.5)):
+    the race's motion, its groove's curvature-centre circle, (f - 1/2) D and Hertz constant. steps = (half_d
+    = D/2 (m), alpha_e (s/m), kt_ratio (-), rate_inv = 4 dt / I (1/(N.m.s)), the inverse of the largest viscous
+    rate of a regularised moment, w_reg = v_reg / (D/2) (rad/s), dt (s)). (Tuples keep the argument count
+    within what numba's IR inliner takes.)
+
+    Returns (delta, fx, fy, fz, mx, my, mz, sx, sy, sz, slipping, reversed, power): approach (m, <= 0 open:
+    everything else 0, spring reset), force (N) and moment (N.m) on the ball, the new spring (m), the
+    spring's slip and reversal flags and the power (W) dissipated in the contact itself (normal damping,
+    tangential slip; the Houpert part is booked per step by the integrator).
     """
-    Z = balls.shape[1]
-    px = balls[B_X, j]
-    py = balls[B_X + 1, j]
-    pz = balls[B_X + 2, j]
+    omega, vrx0, vry0, vrz0, cx, cy, cz, rho, rg, K_h = frame
+    half_d, alpha_e, kt_ratio, rate_inv, w_reg, dt = steps
     delta, nx, ny, nz = groove_approach(px, py, pz, cx, cy, cz, rho, rg)
-    row = S_INNER + S_STRIDE * race
-    kc = K_SIZE + race * Z + j
     if delta <= 0.0:  # open: the spring and the chatter count start again at the next touch
-        spring[row, j] = 0.0
-        spring[row + 1, j] = 0.0
-        spring[row + 2, j] = 0.0
-        counters[kc] = 0
-        return 0.0, 0
-    half_d = 0.5 * par[P_D]
+        return delta, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, False, False, 0.0
     root = math.sqrt(delta)
     Q = K_h * delta * root
     # contact point relative to the ball centre and surface velocities there
     rcx = half_d * nx
     rcy = half_d * ny
     rcz = half_d * nz
-    vx = work[W_VB, j]
-    vy = work[W_VB + 1, j]
-    vz = work[W_VB + 2, j]
-    wx = work[W_WB, j]
-    wy = work[W_WB + 1, j]
-    wz = work[W_WB + 2, j]
     vbx = vx + wy * rcz - wz * rcy
     vby = vy + wz * rcx - wx * rcz
     vbz = vz + wx * rcy - wy * rcx
     if race == 0:
         # inner-race surface: ring translation + rotation about the ring's axis
-        vrx = acc[A_VR] - omega * (py + rcy - cy)
-        vry = acc[A_VR + 1] + omega * (px + rcx - cx)
-        vrz = acc[A_VR + 2]
+        vrx = vrx0 - omega * (py + rcy - cy)
+        vry = vry0 + omega * (px + rcx - cx)
+        vrz = vrz0
         w_race = omega
     else:
         vrx = 0.0
@@ -214,31 +179,23 @@ def ball_race_contact(
     vtx = ux - vn * nx
     vty = uy - vn * ny
     vtz = uz - vn * nz
-    c_n = contact_damping(int(trib[T_REGIME, race, j]), trib[T_C_N, race, j], par[P_ALPHA_E], Q)
+    c_n = contact_damping(regime, c_frozen, alpha_e, Q)
     F_n = Q + c_n * vn
     if F_n < 0.0:  # a damper cannot pull the surfaces together
         F_n = 0.0
-    kt = par[P_KT_RATIO] * K_h * root
-    ftx, fty, ftz, slipping, reversed_ = tangential_spring(
-        spring, row, j, nx, ny, nz, vtx, vty, vtz, dt, kt, trib[T_MU, race, j] * F_n
+    kt = kt_ratio * K_h * root
+    sx, sy, sz, ftx, fty, ftz, slipping, reversed_ = tangential_spring(
+        ox, oy, oz, nx, ny, nz, vtx, vty, vtz, dt, kt, mu * F_n
     )
-    if reversed_:
-        counters[kc] += 1
-    else:
-        counters[kc] = 0
     # force on the ball: normal push back towards the curvature centre, tangential traction
     fx = -F_n * nx + ftx
     fy = -F_n * ny + fty
     fz = -F_n * nz + ftz
-    work[W_FB, j] += fx
-    work[W_FB + 1, j] += fy
-    work[W_FB + 2, j] += fz
     mx = rcy * ftz - rcz * fty
     my = rcz * ftx - rcx * ftz
     mz = rcx * fty - rcy * ftx
     # Houpert resistances: rolling relative to the contact frame (which turns with the ball's orbit)
     # and spin relative to the race
-    w_orbit = work[W_ORBIT, j]
     qx = wx
     qy = wy
     qz = wz - w_orbit
@@ -250,21 +207,14 @@ def ball_race_contact(
     # below the regularisation speed a resistance acts as a viscous damper M/w_reg; its rate is kept
     # within a quarter of I/dt so that the explicit step cannot overshoot (with four resistances on the
     # ball their sum stays below I/dt: no sign reversal, no chatter)
-    f_roll = trib[T_F_ROLL, race, j] * half_d
+    f_roll = f_roll_surface * half_d
     m_roll = f_roll / max(q, w_reg, f_roll * rate_inv)
     spin = wx * nx + wy * ny + (wz - w_race) * nz
-    m_s = trib[T_M_SPIN, race, j]
     m_spin = m_s / max(abs(spin), w_reg, m_s * rate_inv)
-    work[W_MB, j] += mx - m_roll * qx - m_spin * spin * nx
-    work[W_MB + 1, j] += my - m_roll * qy - m_spin * spin * ny
-    work[W_MB + 2, j] += mz - m_roll * qz - m_spin * spin * nz
-    if race == 0:
-        acc[A_FR] -= fx
-        acc[A_FR + 1] -= fy
-        acc[A_FR + 2] -= fz
-    # dissipation in the contact itself (the Houpert part is booked per step by the integrator)
+    mx = mx - m_roll * qx - m_spin * spin * nx
+    my = my - m_roll * qy - m_spin * spin * ny
+    mz = mz - m_roll * qz - m_spin * spin * nz
     power = c_n * vn * vn if F_n > 0.0 else 0.0
     if slipping:
         power -= ftx * vtx + fty * vty + ftz * vtz
-    acc[A_DISS_I + race] += power * dt
-    return delta * inv_delta_lim, counters[kc]
+    return delta, fx, fy, fz, mx, my, mz, sx, sy, sz, slipping, reversed_, power

@@ -16,14 +16,18 @@ import numpy as np
 
 from bearing_fmu_common.jit import kernel
 
+from ..capacitance import ball_capacitance
 from ..lubricant import LUB_EPS_R0, clausius_mossotti_constant, lubricant_state
 from .cage import ball_cage_contact, cage_guide_contact
 from .contacts import ball_race_contact
 from .monitor import kinetic_energy
 from .state import (
+    A_CAP,
     A_DISS_I,
     A_DISS_O,
     A_FR,
+    A_POWER_I,
+    A_POWER_O,
     A_VR,
     B_ALX,
     B_AX,
@@ -34,23 +38,36 @@ from .state import (
     C_AX,
     C_VX,
     C_X,
+    K_SIZE,
     K_STEP,
+    P_ALPHA_E,
+    P_C_CB,
+    P_C_GUIDE,
+    P_CAPACITANCE,
     P_CHATTER,
     P_D,
     P_DELTA_LIM_I,
+    P_GUIDE_GAP,
     P_I_BALL,
+    P_K_CB,
+    P_K_GUIDE,
     P_KH_I,
+    P_KT_RATIO,
     P_M_BALL,
     P_M_CAGE,
     P_M_RING,
     P_R_CAGE,
+    P_R_GUIDE,
     P_REFRESH,
     P_RG_I,
     P_V_REG,
+    P_Z_GUIDE,
     R_AX,
     R_TIME,
     R_VX,
     R_X,
+    S_INNER,
+    S_STRIDE,
     ST_CODE,
     ST_INDEX,
     ST_STEP,
@@ -59,99 +76,48 @@ from .state import (
     STATUS_NOT_FINITE,
     STATUS_OK,
     STATUS_PENETRATION,
+    T_C_N,
+    T_CAP,
+    T_F_ROLL,
+    T_M_SPIN,
+    T_MU,
     T_P_FILM,
+    T_REGIME,
+    W_CAP_BALL,
     W_FB,
     W_FC,
+    W_LOADED,
     W_MB,
     W_ORBIT,
     W_VB,
     W_VC,
     W_WB,
 )
-from .tribology import TC_SIZE, race_circle, refresh_contact, tribology_constants
+from .tribology import TC_SIZE, race_circle, refresh_tribology, tribology_constants
 
 
 @kernel
-def compute_forces(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, work, acc, dt):
-    """Forces and moments at the current positions with the predicted velocities in work/acc.
-
-    Fills work[W_FB..], work[W_MB..], work[W_FC..] (N, N.m) and acc[A_FR..] (N, applied loads F_x,
-    F_y, F_z included). Returns (worst penetration ratio, its contact, longest chatter, its contact,
-    sum of the force components): the last is non-finite as soon as any force is.
-    """
-    Z = balls.shape[1]
-    for r in range(W_FB, W_FC + 3):
-        for j in range(Z):
-            work[r, j] = 0.0
-    acc[A_FR] = F_x
-    acc[A_FR + 1] = F_y
-    acc[A_FR + 2] = F_z
-    worst_pen = 0.0
-    worst_pen_at = -1
-    worst_chat = 0
-    worst_chat_at = -1
-    R_sum = 0.5 * par[P_D] + par[P_R_CAGE]
-    rate_inv = 4.0 * dt / par[P_I_BALL]
-    w_reg = 2.0 * par[P_V_REG] / par[P_D]
-    for race in range(2):
-        cx, cy, cz, rho = race_circle(race, ring, par)
-        inv_lim = 1.0 / par[P_DELTA_LIM_I + race]
-        for j in range(Z):
-            pen, chat = ball_race_contact(
-                race,
-                j,
-                omega,
-                rho,
-                cx,
-                cy,
-                cz,
-                par[P_RG_I + race],
-                par[P_KH_I + race],
-                inv_lim,
-                rate_inv,
-                w_reg,
-                balls,
-                ring,
-                spring,
-                trib,
-                counters,
-                par,
-                work,
-                acc,
-                dt,
-            )
-            if pen > worst_pen:
-                worst_pen = pen
-                worst_pen_at = race * Z + j
-            if chat > worst_chat:
-                worst_chat = chat
-                worst_chat_at = race * Z + j
-    for k in range(Z):
-        # cage ball k sits between steel balls k and k + 1
-        ball_cage_contact(k, k, balls, cage, par, work, R_sum)
-        ball_cage_contact((k + 1) % Z, k, balls, cage, par, work, R_sum)
-        cage_guide_contact(k, cage, par, work)
-    # a NaN or inf anywhere (positions, velocities, springs) reaches the contact forces within a step;
-    # the moments follow from the same quantities
-    total = acc[A_FR] + acc[A_FR + 1] + acc[A_FR + 2]
-    for j in range(Z):
-        total += work[W_FB, j] + work[W_FB + 1, j] + work[W_FB + 2, j] + work[W_FC, j] + work[W_FC + 1, j]
-        total += work[W_FC + 2, j]
-    return worst_pen, worst_pen_at, worst_chat, worst_chat_at, total
-
-
-@kernel
-def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
-    """Refresh the tribology of every ball-race contact from the current state (tc: tribology_constants)."""
-    for race in range(2):
-        for j in range(balls.shape[1]):
-            refresh_contact(race, j, omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
+def ball_capacitances(trib, work):
+    """work[W_CAP_BALL, j] = capacitance (F) of ball j from the last refresh: its two contacts in series."""
+    for j in range(trib.shape[2]):
+        work[W_CAP_BALL, j] = ball_capacitance(trib[T_CAP, 0, j], trib[T_CAP, 1, j])
 
 
 @kernel
 def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, dt, work, acc):
-    """One velocity-Verlet step of every body (see the module docstring). Returns compute_forces' tuple."""
+    """One velocity-Verlet step of every body (see the module docstring) at inner-ring speed omega (rad/s) and
+    loads F_x, F_y, F_z (N) on the inner ring.
+
+    The forces at the new positions with the predicted velocities: the 2 Z ball-race contacts
+    (contacts.ball_race_contact; springs and chatter counters updated, work[W_LOADED] counts each ball's
+    loaded races, acc[A_POWER_I + race] receives the power (W) dissipated in the contacts themselves) and the
+    cage balls (cage.ball_cage_contact with the two steel balls around each, cage.cage_guide_contact with the
+    channel). One function body for the whole step: a numba call that passes arrays costs two atomic
+    reference-count updates per array. Returns (worst penetration ratio, its contact, longest chatter, its
+    contact, sum of the force components): the last is non-finite as soon as any force is.
+    """
     Z = balls.shape[1]
+    # ---- predictor: new positions, predicted velocities
     h = 0.5 * dt * dt
     for j in range(Z):
         x0 = balls[B_X, j]
@@ -166,6 +132,10 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
             v = cage[C_VX + i, j]
             cage[C_X + i, j] += v * dt + a * h
             work[W_VC + i, j] = v + a * dt
+            work[W_FB + i, j] = 0.0
+            work[W_MB + i, j] = 0.0
+            work[W_FC + i, j] = 0.0
+        work[W_LOADED, j] = 0.0
         # orbital angle: the step's rotation is tiny, so atan(cross/dot) = cross/dot to O(angle^3)
         x1 = balls[B_X, j]
         y1 = balls[B_X + 1, j]
@@ -175,7 +145,142 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
     for i in range(3):
         ring[R_X + i] += ring[R_VX + i] * dt + ring[R_AX + i] * h
         acc[A_VR + i] = ring[R_VX + i] + ring[R_AX + i] * dt
-    result = compute_forces(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, work, acc, dt)
+    acc[A_FR] = F_x
+    acc[A_FR + 1] = F_y
+    acc[A_FR + 2] = F_z
+    # ---- ball-race contacts
+    worst_pen = 0.0
+    worst_pen_at = -1
+    worst_chat = 0
+    worst_chat_at = -1
+    steps = (
+        0.5 * par[P_D],
+        par[P_ALPHA_E],
+        par[P_KT_RATIO],
+        4.0 * dt / par[P_I_BALL],
+        2.0 * par[P_V_REG] / par[P_D],
+        dt,
+    )
+    for race in range(2):
+        cx, cy, cz, rho = race_circle(race, ring, par)
+        frame = (
+            omega,
+            acc[A_VR],
+            acc[A_VR + 1],
+            acc[A_VR + 2],
+            cx,
+            cy,
+            cz,
+            rho,
+            par[P_RG_I + race],
+            par[P_KH_I + race],
+        )
+        inv_lim = 1.0 / par[P_DELTA_LIM_I + race]
+        row = S_INNER + S_STRIDE * race
+        power = 0.0
+        for j in range(Z):
+            delta, fx, fy, fz, mx, my, mz, sx, sy, sz, slipping, reversed_, p = ball_race_contact(
+                race,
+                balls[B_X, j],
+                balls[B_X + 1, j],
+                balls[B_X + 2, j],
+                work[W_VB, j],
+                work[W_VB + 1, j],
+                work[W_VB + 2, j],
+                work[W_WB, j],
+                work[W_WB + 1, j],
+                work[W_WB + 2, j],
+                work[W_ORBIT, j],
+                spring[row, j],
+                spring[row + 1, j],
+                spring[row + 2, j],
+                trib[T_MU, race, j],
+                int(trib[T_REGIME, race, j]),
+                trib[T_C_N, race, j],
+                trib[T_F_ROLL, race, j],
+                trib[T_M_SPIN, race, j],
+                frame,
+                steps,
+            )
+            spring[row, j] = sx
+            spring[row + 1, j] = sy
+            spring[row + 2, j] = sz
+            kc = K_SIZE + race * Z + j
+            if delta <= 0.0:  # open: the chatter count starts again at the next touch
+                counters[kc] = 0
+                continue
+            if reversed_:
+                counters[kc] += 1
+            else:
+                counters[kc] = 0
+            work[W_FB, j] += fx
+            work[W_FB + 1, j] += fy
+            work[W_FB + 2, j] += fz
+            work[W_MB, j] += mx
+            work[W_MB + 1, j] += my
+            work[W_MB + 2, j] += mz
+            if race == 0:
+                acc[A_FR] -= fx
+                acc[A_FR + 1] -= fy
+                acc[A_FR + 2] -= fz
+            power += p
+            work[W_LOADED, j] += 1.0
+            pen = delta * inv_lim
+            if pen > worst_pen:
+                worst_pen = pen
+                worst_pen_at = race * Z + j
+            if counters[kc] > worst_chat:
+                worst_chat = counters[kc]
+                worst_chat_at = race * Z + j
+        acc[A_POWER_I + race] = power
+    # ---- cage balls
+    R_sum = 0.5 * par[P_D] + par[P_R_CAGE]
+    K_cb = par[P_K_CB]
+    c_cb = par[P_C_CB]
+    r_guide = par[P_R_GUIDE]
+    z_guide = par[P_Z_GUIDE]
+    gap = par[P_GUIDE_GAP]
+    K_guide = par[P_K_GUIDE]
+    c_guide = par[P_C_GUIDE]
+    for k in range(Z):
+        ckx = cage[C_X, k]
+        cky = cage[C_X + 1, k]
+        ckz = cage[C_X + 2, k]
+        vx = work[W_VC, k]
+        vy = work[W_VC + 1, k]
+        vz = work[W_VC + 2, k]
+        for side in range(2):  # cage ball k sits between steel balls k and k + 1
+            j = k + side
+            if j == Z:  # (not j % Z: an integer division costs tens of cycles)
+                j = 0
+            fx, fy, fz = ball_cage_contact(
+                ckx - balls[B_X, j],
+                cky - balls[B_X + 1, j],
+                ckz - balls[B_X + 2, j],
+                work[W_VB, j] - vx,
+                work[W_VB + 1, j] - vy,
+                work[W_VB + 2, j] - vz,
+                R_sum,
+                K_cb,
+                c_cb,
+            )
+            work[W_FC, k] += fx
+            work[W_FC + 1, k] += fy
+            work[W_FC + 2, k] += fz
+            work[W_FB, j] -= fx
+            work[W_FB + 1, j] -= fy
+            work[W_FB + 2, j] -= fz
+        fx, fy, fz = cage_guide_contact(ckx, cky, ckz, vx, vy, vz, r_guide, z_guide, gap, K_guide, c_guide)
+        work[W_FC, k] += fx
+        work[W_FC + 1, k] += fy
+        work[W_FC + 2, k] += fz
+    # a NaN or inf anywhere (positions, velocities, springs) reaches the contact forces within a step;
+    # the moments follow from the same quantities
+    total = acc[A_FR] + acc[A_FR + 1] + acc[A_FR + 2]
+    for j in range(Z):
+        total += work[W_FB, j] + work[W_FB + 1, j] + work[W_FB + 2, j] + work[W_FC, j] + work[W_FC + 1, j]
+        total += work[W_FC + 2, j]
+    # ---- corrector: new accelerations and velocities
     half = 0.5 * dt
     inv_m = 1.0 / par[P_M_BALL]
     inv_i = 1.0 / par[P_I_BALL]
@@ -198,7 +303,7 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
         ring[R_AX + i] = a
     ring[R_TIME] += dt
     counters[K_STEP] += 1
-    return result
+    return worst_pen, worst_pen_at, worst_chat, worst_chat_at, total
 
 
 @kernel
@@ -212,27 +317,11 @@ def initialise_accelerations(
     tc = np.empty((TC_SIZE, 2))
     tribology_constants(par, eta, xi, tc)
     refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
-    Z = balls.shape[1]
+    # a step of zero length: positions and velocities stay, the accelerations become those of the forces
     saved = spring.copy()
-    for j in range(Z):
-        for i in range(3):
-            work[W_VB + i, j] = balls[B_VX + i, j]
-            work[W_WB + i, j] = balls[B_WX + i, j]
-            work[W_VC + i, j] = cage[C_VX + i, j]
-        x = balls[B_X, j]
-        y = balls[B_X + 1, j]
-        work[W_ORBIT, j] = (x * work[W_VB + 1, j] - y * work[W_VB, j]) / (x * x + y * y)
-    for i in range(3):
-        acc[A_VR + i] = ring[R_VX + i]
-    compute_forces(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, work, acc, 0.0)
-    spring[:, :] = saved  # a zero-length step leaves the springs as they were
-    for j in range(Z):
-        for i in range(3):
-            balls[B_AX + i, j] = work[W_FB + i, j] / par[P_M_BALL]
-            balls[B_ALX + i, j] = work[W_MB + i, j] / par[P_I_BALL]
-            cage[C_AX + i, j] = work[W_FC + i, j] / par[P_M_CAGE]
-    for i in range(3):
-        ring[R_AX + i] = acc[A_FR + i] / par[P_M_RING]
+    verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, 0.0, work, acc)
+    spring[:, :] = saved  # (the springs' projection on the tangent planes waits for the first real step)
+    counters[K_STEP] -= 1  # not a step: the refresh phase stays
 
 
 @kernel
@@ -264,7 +353,9 @@ def advance(
     Stops early with status[ST_CODE] != STATUS_OK (monitor) after the offending step; status[ST_STEP]
     holds the steps done, status[ST_INDEX] the ball or contact (race * Z + ball). energy_limit (J)
     bounds the kinetic energy (checked at each tribology refresh). acc[A_DISS_I], acc[A_DISS_O]
-    receive the energy (J) dissipated in the inner and outer contacts during the call.
+    receive the energy (J) dissipated in the inner and outer contacts during the call, acc[A_POWER_I],
+    acc[A_POWER_O] the power (W) of the last step, and acc[A_CAP] the bearing capacitance of every step (the
+    loaded balls' capacitances at the last refresh, without a background term) integrated over the call (F.s).
     """
     eta, xi, rho0 = lubricant_state(T_oil, lub)
     K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], rho0)
@@ -273,8 +364,10 @@ def advance(
     Z = balls.shape[1]
     refresh = max(int(par[P_REFRESH]), 1)
     chatter_limit = int(par[P_CHATTER])
+    capacitance = par[P_CAPACITANCE] > 0.5
     acc[A_DISS_I] = 0.0
     acc[A_DISS_O] = 0.0
+    acc[A_CAP] = 0.0
     status[ST_CODE] = STATUS_OK
     status[ST_STEP] = 0
     status[ST_INDEX] = -1
@@ -284,6 +377,7 @@ def advance(
     for j in range(Z):
         film_i += trib[T_P_FILM, 0, j]
         film_o += trib[T_P_FILM, 1, j]
+    ball_capacitances(trib, work)
     d_omega = (omega1 - omega0) / n_steps
     # steps until the next refresh (the phase carries over between calls through the step counter)
     countdown = (refresh - counters[K_STEP] % refresh) % refresh
@@ -296,6 +390,7 @@ def advance(
             for j in range(Z):
                 film_i += trib[T_P_FILM, 0, j]
                 film_o += trib[T_P_FILM, 1, j]
+            ball_capacitances(trib, work)
             if kinetic_energy(balls, cage, ring, par) > energy_limit:
                 status[ST_CODE] = STATUS_ENERGY
                 status[ST_STEP] = n
@@ -305,8 +400,18 @@ def advance(
         pen, pen_at, chat, chat_at, total = verlet_step(
             balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, dt, work, acc
         )
-        acc[A_DISS_I] += film_i * dt
-        acc[A_DISS_O] += film_o * dt
+        power_i = acc[A_POWER_I] + film_i
+        power_o = acc[A_POWER_O] + film_o
+        acc[A_POWER_I] = power_i
+        acc[A_POWER_O] = power_o
+        acc[A_DISS_I] += power_i * dt
+        acc[A_DISS_O] += power_o * dt
+        if capacitance:  # the balls loaded on both races in this step, in parallel
+            c = 0.0
+            for j in range(Z):
+                if work[W_LOADED, j] == 2.0:
+                    c += work[W_CAP_BALL, j]
+            acc[A_CAP] += c * dt
         status[ST_STEP] = n + 1
         if not math.isfinite(total):
             status[ST_CODE] = STATUS_NOT_FINITE

@@ -1,8 +1,8 @@
 """Stability monitor and time-step limit of the DEM.
 
 Explicit integration of stiff contacts is stable below 2/omega_n of the stiffest oscillator; the
-tangential spring chatters against its Coulomb limit below that (the 6208 at 3 kN, 500 rad/s goes
-unstable at about 9 us and chatters from about 7 us, docs/reports/dem_error.md). critical_time_step
+tangential spring, lengthened by the predicted velocity, only below sqrt(2)/omega_t (critical_time_step),
+beyond which it chatters against its Coulomb limit (docs/reports/dem_error.md). critical_time_step
 estimates the limit from the contact loads; the monitor stops a run on a non-finite force, a
 penetration beyond the physical limit, kinetic energy beyond the bound of the inputs, or chatter.
 """
@@ -36,20 +36,27 @@ def critical_time_step(par, Q_inner, Q_outer, Q_cage):
     - ball squeezed between its two races: omega^2 = (k_i + k_o)/m with the tangent stiffnesses
       k = 1.5 K_h^(2/3) Q^(1/3) (Hertz, Q = K_h delta^1.5);
     - tangential springs of the same ball: k_t = ratio K_h^(2/3) Q^(1/3) per contact; a force at
-      the surface moves it at 1/m + (D/2)^2/I = 3.5/m per newton (solid sphere);
+      the surface moves it at 1/m + (D/2)^2/I = 3.5/m per newton (solid sphere), omega_t^2 = 3.5 k_t/m.
+      The spring is lengthened by the predicted velocity v* = v_n + a_n dt (not integrated from positions),
+      xi' = xi + v* dt: for F = -k xi this step has trace 2 - 1.5 h^2 and determinant 1 - h^2/2
+      (h = omega_t dt), whose eigenvalue passes -1 at h = sqrt(2): the limit is sqrt(2)/omega_t, not
+      2/omega_t. Beyond it the slip velocity alternates sign every step (chatter against the Coulomb cap);
     - cage ball between two steel balls, critically damped (ratio zeta): the damped explicit limit
       (2/omega)(sqrt(1 + zeta^2) - zeta), omega^2 = 2 k/m_cage.
-    Returns 2/omega_max (with the damped cage factor); inf when nothing is loaded.
+    Returns the smallest of 2/omega (squeeze), sqrt(2)/omega_t (springs) and the damped cage limit; inf when
+    nothing is loaded.
     """
     m = par[P_M_BALL]
-    w2_max = 0.0
+    s_max = 0.0  # largest K_i^(2/3) Q_i^(1/3) + K_o^(2/3) Q_o^(1/3) of a ball
     ki_c = par[P_KH_I] ** (2.0 / 3.0)
     ko_c = par[P_KH_O] ** (2.0 / 3.0)
     for j in range(Q_inner.shape[0]):
         si = ki_c * max(Q_inner[j], 0.0) ** (1.0 / 3.0)
         so = ko_c * max(Q_outer[j], 0.0) ** (1.0 / 3.0)
-        w2_max = max(w2_max, 1.5 * (si + so) / m, 3.5 * par[P_KT_RATIO] * (si + so) / m)
-    dt = 2.0 / math.sqrt(w2_max) if w2_max > 0.0 else math.inf
+        s_max = max(s_max, si + so)
+    dt = math.inf
+    if s_max > 0.0:
+        dt = min(2.0 / math.sqrt(1.5 * s_max / m), math.sqrt(2.0) / math.sqrt(3.5 * par[P_KT_RATIO] * s_max / m))
     if Q_cage > 0.0:
         k_c = 1.5 * par[P_K_CB] ** (2.0 / 3.0) * Q_cage ** (1.0 / 3.0)
         zeta = par[P_ZETA_CAGE]

@@ -1,7 +1,10 @@
 """Bearing-level outputs of the DEM state, with the names and meanings of the quasi-static fidelity.
 
 Computed once per call of advance() (a recording interval), not every step. Loads come from the
-current approaches; film, regime and capacitance from the last tribology refresh; power from the
+current approaches; film, regime and capacitance from the last tribology refresh, over the contacts loaded
+both now and at that refresh (a contact that closed since has no film yet: the refresh wrote Lambda = 0 and
+h_min = inf for it while it was open, which would report a boundary regime the contact does not have); power
+from the
 energy dissipated in the contacts over the interval (Houpert film losses, normal damping and
 tangential slip), so the torque P_loss/|omega| emerges from the dynamics.
 """
@@ -16,8 +19,11 @@ from ..geometry import rolling_kinematics
 from .contacts import groove_approach
 from .monitor import kinetic_energy
 from .state import (
+    A_CAP,
     A_DISS_I,
     A_DISS_O,
+    A_POWER_I,
+    A_POWER_O,
     B_ORBIT,
     B_WX,
     B_X,
@@ -53,6 +59,7 @@ from .state import (
     T_H_MIN,
     T_LAMBDA,
     T_P_MAX,
+    T_Q,
     T_SRR,
 )
 from .tribology import race_circle
@@ -84,14 +91,21 @@ def contact_angles(balls, ring, par, alpha):
 
 
 @kernel
-def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, c_background, Q, alpha, out):
+def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, c_background, averaged, Q, alpha, out):
     """Fill out[O_*] for inner-ring speed omega (rad/s) after an interval (s) of advance().
+
+    averaged: True gives the power outputs (P_loss, Q_inner_ring, Q_outer_ring, torque) and the capacitance as
+    means over the interval's steps (the energy dissipated, the capacitance integrated over time, divided by
+    the interval); False gives their values at its last step (the power of the last step, the capacitance of
+    the balls loaded at the end). The other outputs are end values in both cases (omega_cage: the mean orbital
+    speed over the interval).
 
     orbit0: sum of the balls' orbital angles (rad) at the start of the interval: the cage speed is their mean
     change over the interval (the instantaneous orbital speeds fluctuate with the cage-ball contacts).
     Q, alpha: float64[2, Z] work arrays (receive the current contact loads and angles); c_background (F) is
-    added to the capacitance (0 by default). Races without a loaded contact report zero film (as the quasi-static
-    fidelity).
+    added to the capacitance (0 by default). Film outputs (Lambda, h_min: minima; h_c: of the most loaded contact)
+    come from the contacts loaded now and at the last refresh; races without such a contact report zero film
+    (as the quasi-static fidelity for an unloaded race).
     """
     Z = balls.shape[1]
     for k in range(O_SIZE):
@@ -104,26 +118,28 @@ def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, 
         lam_min = math.inf
         h_min = math.inf
         q_max = 0.0
+        q_film = 0.0  # largest load among the contacts with a film (loaded now and at the last refresh)
         h_c = 0.0
         for j in range(Z):
             q = Q[race, j]
             if q > 0.0:
-                if trib[T_LAMBDA, race, j] < lam_min:
-                    lam_min = trib[T_LAMBDA, race, j]
-                if trib[T_H_MIN, race, j] < h_min:
-                    h_min = trib[T_H_MIN, race, j]
                 out[O_SRR_MAX] = max(out[O_SRR_MAX], trib[T_SRR, race, j])
                 out[O_PMAX] = max(out[O_PMAX], trib[T_P_MAX, race, j])
+                if trib[T_Q, race, j] > 0.0:
+                    lam_min = min(lam_min, trib[T_LAMBDA, race, j])
+                    h_min = min(h_min, trib[T_H_MIN, race, j])
+                    if q > q_film:
+                        q_film = q
+                        h_c = trib[T_H_C, race, j]
             if q > q_max:
                 q_max = q
-                h_c = trib[T_H_C, race, j]
                 if race == 0:
                     j_max = j
-        loaded = q_max > 0.0
+        film = q_film > 0.0
         out[O_QMAX_I + race] = q_max
-        out[O_LAMBDA_I + race] = lam_min if loaded else 0.0
-        out[O_HMIN_I + race] = h_min if loaded else 0.0
-        out[O_HC_I + race] = h_c if loaded else 0.0
+        out[O_LAMBDA_I + race] = lam_min if film else 0.0
+        out[O_HMIN_I + race] = h_min if film else 0.0
+        out[O_HC_I + race] = h_c
     out[O_REGIME] = lubrication_regime(min(out[O_LAMBDA_I], out[O_LAMBDA_O]))
     if out[O_QMAX_I] == 0.0:  # no inner contact: report the most loaded outer one
         for j in range(Z):
@@ -143,10 +159,13 @@ def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, 
     w = math.sqrt(wx * wx + wy * wy + wz * wz)
     out[O_OMEGA_BALL] = math.copysign(w, omega) if omega != 0.0 else w
     out[O_OMEGA_BALL_REL] = math.sqrt(wx * wx + wy * wy + (wz - omega_cage) ** 2)
-    out[O_C_BEARING] = c_total
+    out[O_C_BEARING] = c_background + acc[A_CAP] / interval if averaged and interval > 0.0 else c_total
     out[O_ALPHA_I] = alpha[0, j_max]
     out[O_ALPHA_O] = alpha[1, j_max]
-    if interval > 0.0:
+    if not averaged:
+        out[O_Q_INNER_RING] = acc[A_POWER_I]
+        out[O_Q_OUTER_RING] = acc[A_POWER_O]
+    elif interval > 0.0:
         out[O_Q_INNER_RING] = acc[A_DISS_I] / interval
         out[O_Q_OUTER_RING] = acc[A_DISS_O] / interval
     out[O_P_LOSS] = out[O_Q_INNER_RING] + out[O_Q_OUTER_RING]

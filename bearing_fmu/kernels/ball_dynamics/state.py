@@ -5,8 +5,9 @@ restored as a whole (FMU state, rollback). Row-major ``[row, ball]`` layouts kee
 balls contiguous.
 
 Frames and signs: fixed frame with z along the bearing axis; the outer ring is fixed, the inner ring
-turns about z at omega (rad/s, prescribed) and translates (x, y, z). Azimuth psi is measured from x;
-a load F_x > 0 on the inner ring loads the ball at psi = 0.
+turns about z at omega (rad/s, prescribed) and translates (x, y, z). Azimuth psi is measured from x toward y;
+a load F_x > 0 on the inner ring loads the ball at psi = 0. Ball 1 (index 0) starts on +y, the line of F_y
+(docs/conventions.md).
 """
 
 # ---- steel balls: float64[B_SIZE, Z] ------------------------------------------------------------
@@ -170,11 +171,16 @@ W_VB = 9  # predicted ball velocity (m/s), 3 rows
 W_WB = 12  # predicted ball angular velocity (rad/s), 3 rows
 W_VC = 15  # predicted cage-ball velocity (m/s), 3 rows
 W_ORBIT = 18  # orbital angular speed of each ball about z from the predicted velocity (rad/s)
-W_SIZE = 19
+W_LOADED = 19  # races on which each ball is loaded in the current step (0, 1, 2)
+W_CAP_BALL = 20  # each ball's capacitance at the last refresh, inner and outer contact in series (F)
+W_SIZE = 21
 
 # ---- scalar work of one step: float64[A_SIZE] -----------------------------------------------------
 A_FR = 0  # force on the inner ring (N), 3 entries
 A_VR = 3  # predicted inner-ring velocity (m/s), 3 entries
 A_DISS_I = 6  # energy dissipated in the inner contacts during the call (J)
 A_DISS_O = 7  # in the outer contacts (J)
-A_SIZE = 8
+A_POWER_I = 8  # power dissipated in the inner contacts in the last step (W, Houpert film losses included)
+A_POWER_O = 9  # in the outer contacts (W)
+A_CAP = 10  # bearing capacitance (without the background) integrated over the call's steps (F.s)
+A_SIZE = 11
