@@ -354,6 +354,8 @@ class QuasiStaticModel:
         radial load or moment with too little thrust) must be carried by another bearing or a preload
         (models.pair, or a second bearing FMU)."""
         balls = self.balls
+        if min(balls[qk.BQ_A_I].tolist()) >= 0.0:  # the usual case: no inner contact at a negative angle
+            return  # (a list's min is a fraction of numpy's fixed cost for a few dozen balls; NaN never passes)
         wrong = (balls[qk.BQ_Q_I] > 0.0) & (balls[qk.BQ_A_I] < 0.0)
         if not wrong.any():
             return

@@ -44,6 +44,16 @@ static const char *HELPER_SOURCE =
     "    return pickle.dumps(state, protocol=pickle.HIGHEST_PROTOCOL)\n"
     "loads = pickle.loads\n";
 
+/* The value references of the last call of one kind, as a Python tuple: a host asks for the same
+ * variables every step, so the tuple is built once and handed over again while the references match. */
+typedef struct {
+    fmi2ValueReference *vr;
+    size_t n;
+    PyObject *refs;
+} References;
+
+enum { GET_REAL, GET_INTEGER, GET_BOOLEAN, GET_STRING, SET_REAL, SET_INTEGER, SET_BOOLEAN, SET_STRING, N_KINDS };
+
 typedef struct {
     PyObject *cls;     /* the slave class (kept for fmi2Reset) */
     PyObject *kwargs;  /* its constructor arguments */
@@ -56,10 +66,17 @@ typedef struct {
     fmi2Real time; /* end of the last accepted step: fmi2LastSuccessfulTime */
     int discarded; /* the last doStep returned fmi2Discard at (discard_t, discard_h) */
     fmi2Real discard_t, discard_h;
+    References refs[N_KINDS];
 } Instance;
 
 static pthread_mutex_t init_lock = PTHREAD_MUTEX_INITIALIZER;
 static PyObject *helper; /* namespace of HELPER_SOURCE; lives as long as the process */
+
+/* Names of the slave methods called every step and of its log queue, interned once (ensure_python):
+ * a call by an interned name skips building the name and parsing a format string per call. */
+static const char *KIND_METHODS[N_KINDS] = {"get_real",   "get_integer", "get_boolean", "get_string",
+                                            "set_real",   "set_integer", "set_boolean", "set_string"};
+static PyObject *kind_names[N_KINDS], *name_do_step, *name_log_queue;
 
 /* -- logging -------------------------------------------------------------------------------- */
 
@@ -101,8 +118,8 @@ static void flush_log(const Instance *c)
 {
     if (c->slave == NULL)
         return;
-    PyObject *queue = PyObject_GetAttrString(c->slave, "log_queue");
-    if (queue == NULL || !PyList_Check(queue)) {
+    PyObject *queue = PyObject_GetAttr(c->slave, name_log_queue);
+    if (queue == NULL || !PyList_Check(queue) || PyList_GET_SIZE(queue) == 0) {
         Py_XDECREF(queue);
         PyErr_Clear();
         return;
@@ -250,6 +267,10 @@ static int ensure_python(const char *resources, char *error, size_t size)
             helper = PyModule_New("bearing_fmu_runtime");
             PyDict_Update(PyModule_GetDict(helper), globals);
             Py_DECREF(globals);
+            for (int k = 0; k < N_KINDS; k++)
+                kind_names[k] = PyUnicode_InternFromString(KIND_METHODS[k]);
+            name_do_step = PyUnicode_InternFromString("do_step");
+            name_log_queue = PyUnicode_InternFromString("log_queue");
         }
         PyGILState_Release(gil);
     }
@@ -320,6 +341,10 @@ static int create_slave(Instance *c)
 
 static void release(Instance *c)
 {
+    for (int k = 0; k < N_KINDS; k++) {
+        Py_XDECREF(c->refs[k].refs);
+        free(c->refs[k].vr);
+    }
     Py_XDECREF(c->slave);
     Py_XDECREF(c->cls);
     Py_XDECREF(c->kwargs);
@@ -446,19 +471,40 @@ fmi2Status fmi2Reset(fmi2Component component)
 
 /* -- variables ------------------------------------------------------------------------------ */
 
-static PyObject *reference_list(const fmi2ValueReference vr[], size_t nvr)
+/* The value references vr as a tuple (a new reference), reused from the last call of this kind when the
+ * same references are asked for again. */
+static PyObject *references(Instance *c, int kind, const fmi2ValueReference vr[], size_t nvr)
 {
-    PyObject *list = PyList_New((Py_ssize_t)nvr);
-    for (size_t i = 0; list != NULL && i < nvr; i++)
-        PyList_SET_ITEM(list, (Py_ssize_t)i, PyLong_FromUnsignedLong(vr[i]));
-    return list;
+    References *last = &c->refs[kind];
+    if (last->refs != NULL && last->n == nvr && (nvr == 0 || memcmp(last->vr, vr, nvr * sizeof *vr) == 0))
+        return Py_NewRef(last->refs);
+    PyObject *refs = PyTuple_New((Py_ssize_t)nvr);
+    for (size_t i = 0; refs != NULL && i < nvr; i++) {
+        PyObject *ref = PyLong_FromUnsignedLong(vr[i]);
+        if (ref == NULL) {
+            Py_CLEAR(refs);
+            break;
+        }
+        PyTuple_SET_ITEM(refs, (Py_ssize_t)i, ref);
+    }
+    fmi2ValueReference *copy = refs != NULL && nvr > 0 ? malloc(nvr * sizeof *vr) : NULL;
+    if (refs != NULL && (nvr == 0 || copy != NULL)) { /* remembered only if the copy could be made */
+        if (nvr > 0)
+            memcpy(copy, vr, nvr * sizeof *vr);
+        free(last->vr);
+        Py_XSETREF(last->refs, Py_NewRef(refs));
+        last->vr = copy;
+        last->n = nvr;
+    }
+    return refs;
 }
 
-/* slave.<method>(vrs) -> a list of nvr values, or NULL with the problem logged. */
-static PyObject *get_values(Instance *c, const char *method, const fmi2ValueReference vr[], size_t nvr)
+/* slave.<method of kind>(vrs) -> a list of nvr values, or NULL with the problem logged. */
+static PyObject *get_values(Instance *c, int kind, const fmi2ValueReference vr[], size_t nvr)
 {
-    PyObject *vrs = reference_list(vr, nvr);
-    PyObject *values = vrs ? PyObject_CallMethod(c->slave, method, "(O)", vrs) : NULL;
+    const char *method = KIND_METHODS[kind];
+    PyObject *vrs = references(c, kind, vr, nvr);
+    PyObject *values = vrs ? PyObject_CallMethodOneArg(c->slave, kind_names[kind], vrs) : NULL;
     Py_XDECREF(vrs);
     if (values != NULL && (!PyList_Check(values) || (size_t)PyList_Size(values) != nvr)) {
         Py_DECREF(values);
@@ -470,39 +516,39 @@ static PyObject *get_values(Instance *c, const char *method, const fmi2ValueRefe
     return values;
 }
 
-/* slave.<method>(vrs, values) with values built by make(i). */
-#define SET_VALUES(method, make)                                                                   \
+/* slave.<method of kind>(vrs, values) with values built by make(i). */
+#define SET_VALUES(kind, make)                                                                     \
     Instance *c = component;                                                                       \
     WITH_GIL(c);                                                                                   \
-    PyObject *vrs = reference_list(vr, nvr), *values = PyList_New((Py_ssize_t)nvr);                \
+    PyObject *vrs = references(c, kind, vr, nvr), *values = PyList_New((Py_ssize_t)nvr);           \
     for (size_t i = 0; values != NULL && i < nvr; i++)                                             \
         PyList_SET_ITEM(values, (Py_ssize_t)i, make);                                              \
-    PyObject *r = vrs && values ? PyObject_CallMethod(c->slave, method, "(OO)", vrs, values) : NULL; \
+    PyObject *r = vrs && values ? PyObject_CallMethodObjArgs(c->slave, kind_names[kind], vrs, values, NULL) : NULL; \
     Py_XDECREF(vrs);                                                                               \
     Py_XDECREF(values);                                                                            \
-    RETURN(settle(c, method, r, fmi2Error))
+    RETURN(settle(c, KIND_METHODS[kind], r, fmi2Error))
 
 fmi2Status fmi2SetReal(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[])
 {
-    SET_VALUES("set_real", PyFloat_FromDouble(value[i]));
+    SET_VALUES(SET_REAL, PyFloat_FromDouble(value[i]));
 }
 
 fmi2Status fmi2SetInteger(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,
                           const fmi2Integer value[])
 {
-    SET_VALUES("set_integer", PyLong_FromLong(value[i]));
+    SET_VALUES(SET_INTEGER, PyLong_FromLong(value[i]));
 }
 
 fmi2Status fmi2SetBoolean(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,
                           const fmi2Boolean value[])
 {
-    SET_VALUES("set_boolean", PyBool_FromLong(value[i]));
+    SET_VALUES(SET_BOOLEAN, PyBool_FromLong(value[i]));
 }
 
 fmi2Status fmi2SetString(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,
                          const fmi2String value[])
 {
-    SET_VALUES("set_string", PyUnicode_DecodeUTF8(value[i] ? value[i] : "", (Py_ssize_t)strlen(value[i] ? value[i] : ""),
+    SET_VALUES(SET_STRING, PyUnicode_DecodeUTF8(value[i] ? value[i] : "", (Py_ssize_t)strlen(value[i] ? value[i] : ""),
                                                  "replace"));
 }
 
@@ -510,7 +556,7 @@ fmi2Status fmi2GetReal(fmi2Component component, const fmi2ValueReference vr[], s
 {
     Instance *c = component;
     WITH_GIL(c);
-    PyObject *values = get_values(c, "get_real", vr, nvr);
+    PyObject *values = get_values(c, GET_REAL, vr, nvr);
     if (values == NULL)
         RETURN(fmi2Error);
     for (size_t i = 0; i < nvr; i++)
@@ -528,7 +574,7 @@ fmi2Status fmi2GetInteger(fmi2Component component, const fmi2ValueReference vr[]
 {
     Instance *c = component;
     WITH_GIL(c);
-    PyObject *values = get_values(c, "get_integer", vr, nvr);
+    PyObject *values = get_values(c, GET_INTEGER, vr, nvr);
     if (values == NULL)
         RETURN(fmi2Error);
     for (size_t i = 0; i < nvr; i++)
@@ -546,7 +592,7 @@ fmi2Status fmi2GetBoolean(fmi2Component component, const fmi2ValueReference vr[]
 {
     Instance *c = component;
     WITH_GIL(c);
-    PyObject *values = get_values(c, "get_boolean", vr, nvr);
+    PyObject *values = get_values(c, GET_BOOLEAN, vr, nvr);
     if (values == NULL)
         RETURN(fmi2Error);
     int failed = 0;
@@ -568,7 +614,7 @@ fmi2Status fmi2GetString(fmi2Component component, const fmi2ValueReference vr[],
 {
     Instance *c = component;
     WITH_GIL(c);
-    PyObject *values = get_values(c, "get_string", vr, nvr);
+    PyObject *values = get_values(c, GET_STRING, vr, nvr);
     if (values == NULL)
         RETURN(fmi2Error);
     PyObject *strings = PyList_New((Py_ssize_t)nvr); /* the pointers stay valid until the next call */
@@ -701,7 +747,10 @@ fmi2Status fmi2DoStep(fmi2Component component, fmi2Real currentCommunicationPoin
     (void)noSetFMUStatePriorToCurrentPoint;
     WITH_GIL(c);
     fmi2Real t = currentCommunicationPoint, h = communicationStepSize;
-    PyObject *r = PyObject_CallMethod(c->slave, "do_step", "(dd)", t, h);
+    PyObject *args[3] = {c->slave, PyFloat_FromDouble(t), PyFloat_FromDouble(h)};
+    PyObject *r = args[1] && args[2] ? PyObject_VectorcallMethod(name_do_step, args, 3, NULL) : NULL;
+    Py_XDECREF(args[1]);
+    Py_XDECREF(args[2]);
     fmi2Status status = settle(c, "do_step", r, fmi2Discard);
     if (status == fmi2Discard && c->discarded && c->discard_t == t && c->discard_h == h) {
         /* the host retried the refused step unchanged (fmpy does so forever): stop it here */

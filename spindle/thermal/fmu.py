@@ -4,8 +4,8 @@ Thin (docs/architecture.md, FMUs): the network, its integrator and the thermo-me
 spindle.thermal.model / spindle.thermal.network, every variable is declared once in
 spindle.thermal.declarations. This class registers the model's inputs and outputs from those
 declarations, keeps their values in lists read and written by precomputed index
-(bearing_fmu_common.fmi.DeclaredSlave) and calls model.advance(h) in do_step. The network is read from
-a TOML file (parameter `spindle`: catalogue name or path), so a user can describe their own spindle
+(bearing_fmu_common.fmi.DeclaredSlave) and hands the input list to model.update(h, u) in do_step. The
+network is read from a TOML file (parameter `spindle`: catalogue name or path), so a user can describe their own spindle
 without rebuilding the FMU. Bad input or parameters are logged with their allowed range and the call
 returns Discard/Error; the host never sees an exception. As in the bearing FMUs (docs/fmu_runtime.md), a
 refused parameter fails fmi2ExitInitializationMode (fmi2Error), while a bad input at initialisation is
@@ -97,8 +97,7 @@ class SpindleThermal(DeclaredSlave):
         def step():
             if not self._started:  # the inputs at initialisation were refused: start from the current ones
                 self._start()
-            self._model.advance(step_size, **self._inputs())
-            self._y = self._model.values.tolist()
+            self._y = self._model.update(step_size, self._u).tolist()
 
         return self._guarded(step)
 

@@ -304,9 +304,9 @@ def _axial(section, node_index, n_bearings, where):
 
 
 def _admissible(var):
-    """(test, allowed range as text) of an input: its declared range (the text is written only for a message)."""
-    low, high = var.min, var.max
-    return (lambda x: low <= x <= high), f"{var.range_text()} ({var.limits})"  # a NaN fails the test
+    """(low, high, allowed range as text) of an input: its declared range (spindle.thermal.declarations);
+    admissible means low <= x <= high, which also refuses NaN; the text is for messages."""
+    return var.min, var.max, f"{var.range_text()} ({var.limits})"
 
 
 # --------------------------------------------------------------------------------------------- model
@@ -344,23 +344,54 @@ class SpindleThermalModel:
         if self.axial_float and not net.axial:
             raise SpindleInputError(f"axial_float = true needs an [axial] section in spindle '{spindle}'")
         self.inputs = input_declarations(net, self.axial_float)
+        self.input_names = tuple(v.name for v in self.inputs)
         self.outputs = output_declarations(net)
         self.output_names = tuple(v.name for v in self.outputs)
         self.values = np.zeros(len(self.outputs))  # outputs at the current state, in self.outputs order
-        self._slot = {name: k for k, name in enumerate(self.output_names)}
+        self._position = {name: k for k, name in enumerate(self.input_names)}
         self._checks = [(v.name, v.unit, *_admissible(v)) for v in self.inputs]
-        self._bearing_slots = [
-            tuple(self._slot[f"{kind}_{k}"] for kind in ("T_inner_ring", "T_outer_ring", "T_oil", "dPd_thermal"))
-            for k in range(1, len(net.bearings) + 1)
-        ]
-        self._defaults = {v.name: (net.T_ref if v.unit == "K" else 0.0) for v in self.inputs}
-        self._u = dict(self._defaults)
+        self._tables()
+        self._u = [net.T_ref if v.unit == "K" else 0.0 for v in self.inputs]  # held inputs, self.inputs order
         self._cache_omega = None
         self._op = None
         self.T = None  # node temperatures (K); None until initialize()
         self.T0 = None  # initial node temperatures (K) for E_stored
         self.s = 0.0  # axial float of the shaft (m)
         self.time = 0.0  # s
+
+    def _tables(self):
+        """Index and parameter tables of the step and output kernels (spindle.thermal.network)."""
+        net, position = self.net, self._position
+        slot = {name: k for k, name in enumerate(self.output_names)}
+        self._heat_at = np.array([position[name] for name in net.heat_names], dtype=np.int64)
+        self._boundary_at = np.array([position[name] for name in net.boundary_inputs], dtype=np.int64)
+        self._bearing_par = np.array(
+            [[b["rho"], b["E"], b["nu"], b["a"], b["d_i"], b["d_o"], b["D"]] for b in net.bearings], dtype=float
+        ).reshape(len(net.bearings), 7)
+        self._bearing_idx = np.array(
+            [
+                [b["inner_ring"], b["outer_ring"], b["ball_oil"]]
+                + [slot[f"{kind}_{k}"] for kind in ("T_inner_ring", "T_outer_ring", "T_oil", "dPd_thermal")]
+                for k, b in enumerate(net.bearings, start=1)
+            ],
+            dtype=np.int64,
+        ).reshape(len(net.bearings), 7)
+        ax = net.axial
+        self._par = np.array(
+            [net.alpha_bearing, net.T_ref]
+            + ([ax["s_arr"], ax["alpha_shaft"], ax["alpha_housing"], ax["spacing"]] if ax else [0.0] * 4)
+        )
+        self._idx = np.array(
+            (
+                [ax["shaft"], ax["housing"], slot["dz_thermal"], slot["dz_thermal_1"], slot["dz_thermal_2"]]
+                if ax
+                else [-1] * 5
+            )
+            + [slot["P_in"], slot["P_out"], slot["E_stored"], position["omega"]],
+            dtype=np.int64,
+        )
+        if self.axial_float:
+            self._axial_at = tuple(position[name] for name in ("F_axial_1", "F_axial_2", "K_axial_1", "K_axial_2"))
 
     @property
     def parameters(self):
@@ -396,26 +427,29 @@ class SpindleThermalModel:
 
     # ---------------------------------------------------------------- inputs
     def _merge(self, inputs):
-        """Current inputs updated with `inputs`, validated (SpindleInputError names the first bad one)."""
-        u = dict(self._u)
+        """Current inputs (a list in self.inputs order) updated with `inputs` (dict name -> value), validated
+        (SpindleInputError names the first bad one)."""
+        u = list(self._u)
         for name, value in inputs.items():
-            if name not in u:
-                raise SpindleInputError(f"unknown input '{name}'; inputs: {', '.join(v.name for v in self.inputs)}")
+            if name not in self._position:
+                raise SpindleInputError(f"unknown input '{name}'; inputs: {', '.join(self.input_names)}")
             try:
-                u[name] = float(value)
+                u[self._position[name]] = float(value)
             except (TypeError, ValueError):
                 raise SpindleInputError(f"{name} = {value!r} is not a number") from None
-        for name, unit, admissible, allowed in self._checks:
-            x = u[name]
-            if not admissible(x):
-                raise SpindleInputError(f"{name} = {x} {unit} is outside the allowed range {allowed}")
+        self._check(u)
         return u
 
+    def _check(self, u):
+        """Raise SpindleInputError naming the first input of u (self.inputs order) outside its range."""
+        for x, (name, unit, low, high, allowed) in zip(u, self._checks):
+            if not low <= x <= high:
+                raise SpindleInputError(f"{name} = {x} {unit} is outside the allowed range {allowed}")
+
     def _vectors(self, u):
-        net = self.net
-        q = np.array([u[name] for name in net.heat_names])
-        Tb = np.array([u[name] for name in net.boundary_inputs])
-        return net.dist @ q, Tb, float(q.sum())
+        """(node heats P (W), boundary temperatures T_b (K), sum of the heat inputs (W)) of the inputs u."""
+        u = np.asarray(u, dtype=float)
+        return nk.heat_vector(u, self._heat_at, self.net.dist), u[self._boundary_at], float(u[self._heat_at].sum())
 
     def _operator(self, omega):
         """Conductances, L, B, Cholesky factor of L and (exponential) eigen data at omega; cached per omega."""
@@ -451,7 +485,7 @@ class SpindleThermalModel:
     def _start_temperature(self, u):
         if self.T_initial is not None:
             return self.T_initial
-        return u["T_ambient"] if "T_ambient" in u else u[self.net.boundary_inputs[0]]
+        return u[self._position["T_ambient"] if "T_ambient" in self._position else self._boundary_at[0]]
 
     def step(self, h, **inputs):
         """Advance h seconds (> 0) with `inputs` held over the step; returns the outputs (dict name -> SI)."""
@@ -462,16 +496,36 @@ class SpindleThermalModel:
         """step() without building the output dict: the outputs are in self.values (self.outputs order)."""
         if self.T is None:
             self.initialize()
+        self.update(h, self._merge(inputs))
+
+    def update(self, h, u):
+        """Advance h seconds (> 0) with the input values u (SI, self.inputs order: all of them) held over the
+        step; fills self.values (self.outputs order) and returns it. The FMU's path: no dict, no copy of
+        the outputs."""
+        if self.T is None:
+            self.initialize()
         if isinstance(h, bool) or not isinstance(h, (int, float)) or not (math.isfinite(h) and h > 0.0):
             raise SpindleInputError(f"step size h = {h!r} s must be a finite number > 0")
-        u = self._merge(inputs)
-        op = self._operator(u["omega"])
-        P, Tb, _ = self._vectors(u)
-        f = nk.source_vector(op["B"], Tb, P)
+        self._check(u)
+        u_vec = np.array(u, dtype=float)
+        op = self._operator(u[self._idx[nk.LS_OMEGA]])
         if self.integrator == "exponential":
-            T_ss = nk.cholesky_solve(op["R"], f)
-            T = nk.exponential_step(self.T, T_ss, op["sqrt_c"], op["V"], op["lam"], float(h))
+            T = nk.exponential_update(
+                self.T,
+                u_vec,
+                self._heat_at,
+                self._boundary_at,
+                self.net.dist,
+                op["B"],
+                op["R"],
+                op["sqrt_c"],
+                op["V"],
+                op["lam"],
+                float(h),
+            )
         else:
+            P, Tb, _ = self._vectors(u_vec)
+            f = nk.source_vector(op["B"], Tb, P)
             T = nk.implicit_euler_step(self.net.C, op["L"], f, self.T, float(h), self.substeps)
         if not (T.min() > 0.0 and T.max() < math.inf):  # a NaN fails both comparisons
             bad = np.flatnonzero(~(np.isfinite(T) & (T > 0.0)))
@@ -479,19 +533,25 @@ class SpindleThermalModel:
                 f"node {self.net.nodes[bad[0]]} would reach T = {T[bad[0]]} K (non-physical) "
                 f"with these heat inputs; state left unchanged"
             )
-        if self.axial_float and u["K_axial_1"] > 0.0 and u["K_axial_2"] > 0.0:
-            # rigid shaft floats until both bearings carry the same axial force (one Newton step on F_1 - F_2)
-            s = self.s + (u["F_axial_2"] - u["F_axial_1"]) / (u["K_axial_1"] + u["K_axial_2"])
-            if not abs(s) <= AXIAL_FLOAT_MAX:
-                shown = ", ".join(f"{n} = {u[n]}" for n in ("F_axial_1", "F_axial_2", "K_axial_1", "K_axial_2"))
-                raise SpindleInputError(
-                    f"{shown} give an axial float s = {s} m, outside the allowed range [{-AXIAL_FLOAT_MAX:g}, "
-                    f"{AXIAL_FLOAT_MAX:g}] m (a bearing FMU refuses dz_thermal beyond it); state left unchanged"
-                )
-            self.s = s
-        self._u, self.T = u, T
+        if self.axial_float:
+            F_1, F_2, K_1, K_2 = (u[k] for k in self._axial_at)
+            if K_1 > 0.0 and K_2 > 0.0:
+                # rigid shaft floats until both bearings carry the same axial force (one Newton step on F_1 - F_2)
+                s = self.s + (F_2 - F_1) / (K_1 + K_2)
+                if not abs(s) <= AXIAL_FLOAT_MAX:
+                    shown = ", ".join(
+                        f"{n} = {v}"
+                        for n, v in zip(("F_axial_1", "F_axial_2", "K_axial_1", "K_axial_2"), (F_1, F_2, K_1, K_2))
+                    )
+                    raise SpindleInputError(
+                        f"{shown} give an axial float s = {s} m, outside the allowed range [{-AXIAL_FLOAT_MAX:g}, "
+                        f"{AXIAL_FLOAT_MAX:g}] m (a bearing FMU refuses dz_thermal beyond it); state left unchanged"
+                    )
+                self.s = s
+        self._u, self.T = [float(x) for x in u], T
         self.time += float(h)
-        self._outputs(T, u, self.values)
+        self._outputs(T, u_vec, self.values)
+        return self.values
 
     def outputs_values(self):
         """Outputs (dict name -> float, SI) at the current state."""
@@ -503,7 +563,7 @@ class SpindleThermalModel:
         """Outputs at the steady state for `inputs` (merged with the current ones), by a direct solve of
         L T = B T_b + P. The model state is not changed."""
         u = self._merge(inputs)
-        op = self._operator(u["omega"])
+        op = self._operator(u[self._idx[nk.LS_OMEGA]])
         P, Tb, _ = self._vectors(u)
         values = np.zeros(len(self.outputs))
         self._outputs(nk.cholesky_solve(op["R"], nk.source_vector(op["B"], Tb, P)), u, values)
@@ -527,7 +587,13 @@ class SpindleThermalModel:
         float s, time and the held inputs."""
         if self.T is None:
             self.initialize()
-        return {"T": self.T.tolist(), "T0": self.T0.tolist(), "s": self.s, "time": self.time, "inputs": dict(self._u)}
+        return {
+            "T": self.T.tolist(),
+            "T0": self.T0.tolist(),
+            "s": self.s,
+            "time": self.time,
+            "inputs": dict(zip(self.input_names, self._u)),
+        }
 
     def set_state(self, state):
         n = len(self.net.nodes)
@@ -542,43 +608,23 @@ class SpindleThermalModel:
     # ---------------------------------------------------------------- outputs
     def _outputs(self, T, u, values):
         """Fill `values` (self.outputs order) with the outputs for node temperatures T and inputs u."""
-        net, slot = self.net, self._slot
-        omega = u["omega"]
-        op = self._operator(omega)
-        Tb = np.array([u[name] for name in net.boundary_inputs])
-        values[: len(net.nodes)] = T  # the node temperatures come first (declarations)
-        for b, (inner, outer, oil, dPd) in zip(net.bearings, self._bearing_slots):
-            values[inner] = T[b["inner_ring"]]
-            values[outer] = T[b["outer_ring"]]
-            values[oil] = T[b["ball_oil"]]
-            r = 0.5 * b["d_i"]
-            u_c = nk.centrifugal_radial_growth(b["rho"], b["E"], b["nu"], omega, b["a"], r, r)
-            values[dPd] = nk.clearance_change(
-                net.alpha_bearing,
-                b["d_i"],
-                b["d_o"],
-                b["D"],
-                T[b["inner_ring"]],
-                T[b["outer_ring"]],
-                T[b["ball_oil"]],
-                net.T_ref,
-                u_c,
-            )
-        ax = net.axial
-        if ax:
-            dz = nk.axial_interference(
-                ax["s_arr"],
-                ax["alpha_shaft"],
-                ax["alpha_housing"],
-                ax["spacing"],
-                T[ax["shaft"]],
-                T[ax["housing"]],
-                net.T_ref,
-            )
-            values[slot["dz_thermal"]] = dz
-            values[slot["dz_thermal_1"]] = 0.5 * dz + self.s
-            values[slot["dz_thermal_2"]] = 0.5 * dz - self.s
-        values[slot["P_in"]] = float(sum(u[name] for name in net.heat_names))
-        values[slot["P_out"]] = nk.boundary_heat_flow(len(net.nodes), net.ends_i, net.ends_j, op["G"], T, Tb)
+        u = np.asarray(u, dtype=float)
         T0 = self.T0 if self.T0 is not None else np.full(len(T), self._start_temperature(u))
-        values[slot["E_stored"]] = float(np.dot(net.C, T - T0))
+        net = self.net
+        nk.network_outputs(
+            T,
+            T0,
+            u,
+            self.s,
+            self._heat_at,
+            self._boundary_at,
+            net.C,
+            net.ends_i,
+            net.ends_j,
+            self._operator(float(u[self._idx[nk.LS_OMEGA]]))["G"],
+            self._bearing_par,
+            self._bearing_idx,
+            self._par,
+            self._idx,
+            values,
+        )

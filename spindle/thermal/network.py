@@ -259,3 +259,89 @@ def axial_interference(s_arr, alpha_shaft, alpha_housing, spacing, T_shaft, T_ho
     s_arr (alpha_shaft spacing (T_shaft - T_ref) - alpha_housing spacing (T_housing - T_ref)),
     s_arr = +1 for X (face-to-face), -1 for O (back-to-back)."""
     return s_arr * spacing * (alpha_shaft * (T_shaft - T_ref) - alpha_housing * (T_housing - T_ref))
+
+
+# -- one model step in two calls: the inputs are a vector in the model's input order; index tables say
+# which entries are heats and which are boundary temperatures, and where each output goes
+# bearing table rows (float): density rho (kg/m^3), modulus E (Pa), Poisson ratio nu, bore radius a (m),
+# groove diameters d_i, d_o (m), ball diameter D (m)
+BP_RHO, BP_E, BP_NU, BP_A, BP_DI, BP_DO, BP_D = range(7)
+# bearing table rows (int): inner-ring, outer-ring, ball/oil node; output slots of their temperatures and
+# of the clearance change
+BI_INNER, BI_OUTER, BI_OIL, BI_SLOT_INNER, BI_SLOT_OUTER, BI_SLOT_OIL, BI_SLOT_DPD = range(7)
+# scalar parameters (float): expansion of the bearing steel alpha (1/K), assembly temperature T_ref (K);
+# with an axial section: arrangement sign, alpha of shaft and housing (1/K), bearing spacing (m)
+SP_ALPHA, SP_T_REF, SP_S_ARR, SP_ALPHA_SHAFT, SP_ALPHA_HOUSING, SP_SPACING = range(6)
+# output slots and node indices (int): shaft, housing node (-1: no axial section), slots of dz_thermal,
+# dz_thermal_1, dz_thermal_2, P_in, P_out, E_stored, and the position of omega in the input vector
+LS_SHAFT, LS_HOUSING, LS_DZ, LS_DZ_1, LS_DZ_2, LS_P_IN, LS_P_OUT, LS_E_STORED, LS_OMEGA = range(9)
+
+
+@kernel
+def heat_vector(u, heat_at, dist):
+    """Node heats P (W) = dist q from the input vector u (heats at the positions heat_at, W) and the
+    distribution dist (n_nodes, n_heat) of each heat input over the nodes."""
+    P = np.zeros(dist.shape[0])
+    for i in range(dist.shape[0]):
+        for q in range(heat_at.shape[0]):
+            P[i] += dist[i, q] * u[heat_at[q]]
+    return P
+
+
+@kernel
+def exponential_update(T, u, heat_at, boundary_at, dist, B, R, sqrt_c, V, lam, h):
+    """Temperatures (K) after h seconds (s) with the inputs u held: `exponential_step` towards the steady
+    state R R^T T_ss = B T_b + P, heats and boundary temperatures (W, K) read from u at heat_at and
+    boundary_at."""
+    T_ss = cholesky_solve(R, source_vector(B, u[boundary_at], heat_vector(u, heat_at, dist)))
+    return exponential_step(T, T_ss, sqrt_c, V, lam, h)
+
+
+@kernel
+def network_outputs(
+    T, T0, u, s, heat_at, boundary_at, C, ends_i, ends_j, G, bearing_par, bearing_idx, par, idx, values
+):
+    """Fill `values` (output slots in idx and bearing_idx) from node temperatures T (K), initial
+    temperatures T0 (K), the input vector u (SI) and the axial float s (m) of the shaft: node and bearing
+    temperatures, clearance change of each bearing (centrifugal growth of the inner raceway at the omega
+    of u), axial interference, heat in and out (W), heat stored sum C (T - T0) (J)."""
+    n = T.shape[0]
+    values[:n] = T  # the node temperatures come first (declarations)
+    omega = u[idx[LS_OMEGA]]
+    for k in range(bearing_idx.shape[0]):
+        b, p = bearing_idx[k], bearing_par[k]
+        values[b[BI_SLOT_INNER]] = T[b[BI_INNER]]
+        values[b[BI_SLOT_OUTER]] = T[b[BI_OUTER]]
+        values[b[BI_SLOT_OIL]] = T[b[BI_OIL]]
+        r = 0.5 * p[BP_DI]
+        u_c = centrifugal_radial_growth(p[BP_RHO], p[BP_E], p[BP_NU], omega, p[BP_A], r, r)
+        values[b[BI_SLOT_DPD]] = clearance_change(
+            par[SP_ALPHA],
+            p[BP_DI],
+            p[BP_DO],
+            p[BP_D],
+            T[b[BI_INNER]],
+            T[b[BI_OUTER]],
+            T[b[BI_OIL]],
+            par[SP_T_REF],
+            u_c,
+        )
+    if idx[LS_SHAFT] >= 0:
+        dz = axial_interference(
+            par[SP_S_ARR],
+            par[SP_ALPHA_SHAFT],
+            par[SP_ALPHA_HOUSING],
+            par[SP_SPACING],
+            T[idx[LS_SHAFT]],
+            T[idx[LS_HOUSING]],
+            par[SP_T_REF],
+        )
+        values[idx[LS_DZ]] = dz
+        values[idx[LS_DZ_1]] = 0.5 * dz + s
+        values[idx[LS_DZ_2]] = 0.5 * dz - s
+    P_in = 0.0
+    for q in range(heat_at.shape[0]):
+        P_in += u[heat_at[q]]
+    values[idx[LS_P_IN]] = P_in
+    values[idx[LS_P_OUT]] = boundary_heat_flow(n, ends_i, ends_j, G, T, u[boundary_at])
+    values[idx[LS_E_STORED]] = np.dot(C, T - T0)

@@ -187,6 +187,42 @@ def axial_interference(s_arr, alpha_shaft, alpha_housing, spacing, T_shaft, T_ho
     return (shaft - housing) if s_arr > 0 else (housing - shaft)
 
 
+def heat_vector(u, heat_at, dist):
+    """Node heats: each heat input of u spread over the nodes by its column of dist."""
+    return np.asarray(dist) @ np.asarray(u, dtype=float)[heat_at]
+
+
+def exponential_update(T, u, heat_at, boundary_at, dist, B, R, sqrt_c, V, lam, h):
+    """The exact step towards the steady state L T_ss = B T_b + P, L rebuilt from its Cholesky factor."""
+    u = np.asarray(u, dtype=float)
+    T_ss = steady_state(R @ R.T, B, u[boundary_at], heat_vector(u, heat_at, dist))
+    return exponential_step(T, T_ss, sqrt_c, V, lam, h)
+
+
+def network_outputs(
+    T, T0, u, s, heat_at, boundary_at, C, ends_i, ends_j, G, bearing_par, bearing_idx, par, idx, values
+):
+    """Every output from its own definition, through the twins above: node and bearing temperatures,
+    new minus old clearance of each bearing, shaft minus housing growth, heat balance, stored heat."""
+    u = np.asarray(u, dtype=float)
+    n = len(T)
+    values[:n] = T
+    omega = u[idx[8]]
+    for (rho, E, nu, a, d_i, d_o, D), (inner, outer, oil, s_inner, s_outer, s_oil, s_dpd) in zip(
+        bearing_par, bearing_idx
+    ):
+        values[s_inner], values[s_outer], values[s_oil] = T[inner], T[outer], T[oil]
+        u_c = centrifugal_radial_growth(rho, E, nu, omega, a, 0.5 * d_i, 0.5 * d_i)
+        values[s_dpd] = clearance_change(par[0], d_i, d_o, D, T[inner], T[outer], T[oil], par[1], u_c)
+    shaft, housing, s_dz, s_dz1, s_dz2, s_in, s_out, s_e = idx[:8]
+    if shaft >= 0:
+        dz = axial_interference(par[2], par[3], par[4], par[5], T[shaft], T[housing], par[1])
+        values[s_dz], values[s_dz1], values[s_dz2] = dz, dz / 2 + s, dz / 2 - s
+    values[s_in] = sum(u[k] for k in heat_at)
+    values[s_out] = boundary_heat_flow(n, ends_i, ends_j, G, T, u[boundary_at])
+    values[s_e] = sum(c * (t - t0) for c, t, t0 in zip(C, T, T0))
+
+
 # the kernels this module twins, by name (tests/unit/test_every_kernel_has_a_twin.py)
 KERNEL_MODULE = "spindle.thermal.network"
 TWINS = {
@@ -206,4 +242,7 @@ TWINS = {
     "centrifugal_radial_growth": centrifugal_radial_growth,
     "clearance_change": clearance_change,
     "axial_interference": axial_interference,
+    "heat_vector": heat_vector,
+    "exponential_update": exponential_update,
+    "network_outputs": network_outputs,
 }

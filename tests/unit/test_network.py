@@ -173,6 +173,36 @@ def test_thermomechanics_vs_twin():
             assert_close(nk.axial_interference(*args), rn.axial_interference(*args), 0.0, "dz", atol=1e-15)
 
 
+@pytest.mark.parametrize("axial_float", [False, True])
+def test_model_step_kernels_vs_twins(axial_float):
+    """The two kernels of a model step (exponential_update, network_outputs) and heat_vector on the default
+    spindle's own tables, from a random state with random inputs, against their twins: heats and outputs
+    to 1e-12 (closed forms; the clearance change with the absolute allowance of
+    test_thermomechanics_vs_twin), the step to 1e-9 of the rise (a linear solve and an exponential)."""
+    m = SpindleThermalModel(axial_float=axial_float)
+    rng = np.random.default_rng(3)
+    for _ in range(5):
+        u = np.array([rng.uniform(0.0, 500.0) if v.unit == "W" else rng.uniform(280.0, 320.0) for v in m.inputs])
+        u[m.input_names.index("omega")] = rng.uniform(0.0, 1500.0)
+        op = m._operator(float(u[m.input_names.index("omega")]))
+        T, T0 = rng.uniform(290.0, 360.0, len(m.net.nodes)), rng.uniform(290.0, 300.0, len(m.net.nodes))
+        P = nk.heat_vector(u, m._heat_at, m.net.dist)
+        assert_close(P, rn.heat_vector(u, m._heat_at, m.net.dist), RTOL, "P", atol=1e-12)
+        args = (T, u, m._heat_at, m._boundary_at, m.net.dist, op["B"], op["R"], op["sqrt_c"], op["V"], op["lam"], 7.0)
+        assert rise_err(nk.exponential_update(*args), rn.exponential_update(*args), T) < RTOL_LINALG
+        s = rng.uniform(-1e-6, 1e-6)
+        net = m.net
+        common = (T, T0, u, s, m._heat_at, m._boundary_at, net.C, net.ends_i, net.ends_j, op["G"])
+        tables = (m._bearing_par, m._bearing_idx, m._par, m._idx)
+        got, want = np.full(len(m.outputs), np.nan), np.full(len(m.outputs), np.nan)
+        nk.network_outputs(*common, *tables, got)
+        rn.network_outputs(*common, *tables, want)
+        assert not np.isnan(got).any() and not np.isnan(want).any()  # every output slot is written
+        for k, v in enumerate(m.outputs):
+            atol = 1e-12 * net.bearings[0]["d_o"] if v.unit == "m" else 0.0
+            assert_close(got[k], want[k], RTOL, v.name, atol=atol)
+
+
 def test_centrifugal_growth_b7214c_by_hand():
     """Inner raceway of the B7214C at 10 000 rpm (omega = 1047.2 rad/s), a = 35 mm (bore radius),
     b = r = d_i/2 = (97.5 - 15.875 - 0.054/2)/2 mm = 40.7990 mm; steel rho 7850, E 210 GPa, nu 0.3.
