@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test lint fmus bench clean
+.PHONY: demo test lint fmus bench report clean
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -35,6 +35,9 @@ test: lint fmus
 
 bench: fmus
 	$(BIN)/python -m benchmarks.run_all
+
+report: fmus
+	$(BIN)/python -m spindle.cli report
 
 clean:
 	rm -rf $(VENV) fmus/*.fmu results .pytest_cache

@@ -1,5 +1,6 @@
 """Timing helpers for the benchmarks: medians over repeats, never asserted in tests (targets: docs/architecture.md, performance budget)."""
 
+import json
 import platform
 import statistics
 import time
@@ -30,3 +31,28 @@ def write_report(name, text):
     path.write_text(text)
     print(f"wrote {path}")
     return path
+
+
+METRICS = REPORTS / "metrics.json"
+
+
+def forget(benchmark):
+    """Drop a benchmark's recorded metrics (before it runs again, so no stale entry survives)."""
+    if METRICS.exists():
+        metrics = json.loads(METRICS.read_text())
+        metrics.pop(benchmark, None)
+        METRICS.write_text(json.dumps(metrics, indent=1) + "\n")
+
+
+def record(benchmark, key, value, unit, *, kind, target=None, note=""):
+    """Keep a headline number of a benchmark for docs/report.md (benchmarks/report.py) in docs/reports/metrics.json.
+
+    kind: "error" (deterministic: a second run must reproduce it exactly), "timing" (a median, reproduced
+    within the noise band the report states) or "count". target: the budget (value <= target is met), from
+    docs/architecture.md's performance budget or the issue's acceptance; None when the number has none."""
+    metrics = json.loads(METRICS.read_text()) if METRICS.exists() else {}
+    metrics.setdefault(benchmark, {})[key] = dict(
+        value=float(value), unit=unit, kind=kind, target=None if target is None else float(target), note=note
+    )
+    REPORTS.mkdir(parents=True, exist_ok=True)
+    METRICS.write_text(json.dumps(metrics, indent=1) + "\n")

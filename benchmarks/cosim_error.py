@@ -28,7 +28,7 @@ import numpy as np
 from spindle.cosim.master import run
 from spindle.cosim.runfile import load_run
 
-from .common import REPORTS, machine, write_report
+from .common import REPORTS, machine, record, write_report
 from .monolithic import reference
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -165,6 +165,11 @@ def main():
     for row in rows + variant:
         row["err"] = errors(row["result"], ref)
     by = {(r["H"], r["alg"]): r for r in rows + variant}
+    for r in rows:
+        key = f"H = {r['H']:g} s, {r['alg']}"
+        record("cosim_error", f"{key}: max temperature error", r["err"]["T"], "K", kind="error")
+        record("cosim_error", f"{key}: max torque error, t >= 10 s", r["err"]["M"], "1", kind="error")
+        record("cosim_error", f"{key}: wall time", r["wall"], "s", kind="timing")
 
     # -- report
     h_ref, h_chk = ref["h"], refs[-2]["h"]

@@ -28,7 +28,7 @@ from spindle.cli import exit_after
 from spindle.cosim.master import run
 from spindle.cosim.runfile import load_run
 
-from .common import REPORTS, machine, write_report
+from .common import REPORTS, machine, record, write_report
 
 RUN = REPORTS.parent.parent / "runs" / "startup_dem.toml"
 WINDOW = 0.4  # s
@@ -82,6 +82,11 @@ def main():
                     **{name: float(np.max(np.abs(T[name] - T_ref[name]))) for name in TEMPERATURES},
                 }
             )
+    for r in rows:
+        key = f"H = {1e3 * r['H']:g} ms, {r['algorithm']}"
+        record("dem_closed_loop_steps", f"{key}: heat error", r["heat"], "1", kind="error")
+        record("dem_closed_loop_steps", f"{key}: torque error", r["torque"], "1", kind="error")
+        record("dem_closed_loop_steps", f"{key}: wall time", r["wall"], "s", kind="timing")
     lines = [
         "# Coupled DEM start-up: error against run time, communication step x algorithm",
         "",

@@ -17,7 +17,7 @@ from bearing_fmu.kernels.ehl import FILM_CHITTENDEN, FILM_HAMROCK_DOWSON, FILM_M
 from bearing_fmu.kernels.hertz import reduced_modulus
 from bearing_fmu_common.jit import kernel
 
-from .common import REPORTS, machine, median_time, write_report
+from .common import REPORTS, machine, median_time, record, write_report
 
 ANNEXE_D = Path(__file__).resolve().parents[1] / "tests" / "validation" / "data" / "thesis_annexe_d_ehl.csv"
 FORMULAS = {
@@ -88,6 +88,11 @@ def main():
         "",
     ]
     timings = {name: time_per_call(code) for name, code in FORMULAS.items()}
+    for name in FORMULAS:
+        e_c, e_m = errs[name]
+        record("ehl_film_table", f"{name}: max |error| h_c, 55 cases", np.max(np.abs(e_c)), "1", kind="error")
+        record("ehl_film_table", f"{name}: max |error| h_min, 55 cases", np.max(np.abs(e_m)), "1", kind="error")
+        record("ehl_film_table", f"{name}: time per call", timings[name], "s", kind="timing")
     lines += [
         "## Summary (mean |error| % | max |error| % | mean signed error %) and time per call",
         "",

@@ -13,7 +13,7 @@ from bearing_fmu.kernels.hertz import (
     reduced_modulus,
 )
 
-from .common import machine, median_time, write_report
+from .common import machine, median_time, record, write_report
 
 RATIOS = [0.2, 0.5, 1.0, 1.5, 2.0, 3.0, 5.0, 8.0, 12.0, 20.0, 30.0, 50.0, 75.0, 100.0]
 
@@ -40,6 +40,9 @@ def main():
     t_exact = median_time(hertz_coefficients_exact, 5e-3, 0.05)
     t_approx = median_time(hertz_coefficients_approx, 5e-3, 0.05)
     t_contact = median_time(hertz_contact, 1000.0, 5e-3, 0.05, E, *hertz_coefficients_exact(5e-3, 0.05))
+    record("hertz_approximation", "largest relative error of the approximation", worst, "1", kind="error")
+    record("hertz_approximation", "exact coefficients per call", t_exact, "s", kind="timing")
+    record("hertz_approximation", "approximate coefficients per call", t_approx, "s", kind="timing")
     lines += [
         "",
         f"Largest error: {100 * worst:.1f} % (over 0.2 <= Ry/Rx <= 100).",

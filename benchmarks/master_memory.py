@@ -27,7 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .common import machine, write_report
+from .common import machine, record, write_report
 
 ROOT = Path(__file__).resolve().parent.parent
 DEMO = ROOT / "runs" / "closed_loop_spring.toml"
@@ -164,6 +164,23 @@ def main(argv=None):
     cycles = in_child("cycles", args.cycles)
     rss = cycles["rss"]
     growth = [b - a for a, b in zip(rss, rss[1:])]
+    for label, *_, projected, _ in rows:
+        record(
+            "master_memory",
+            f"{label}: RSS growth projected to 24 h at 10 ms",
+            projected,
+            "MB",
+            kind="resource",
+            target=200.0,
+        )
+    record(
+        "master_memory",
+        f"first {args.cycles} create/free cycles: RSS growth",
+        growth[0],
+        "MB",
+        kind="resource",
+        target=5.0,
+    )
     print(f"blocks of {args.cycles} create/free cycles: RSS {rss} MB", flush=True)
     lines = [
         "# Master memory: flat in run length and in instance count",

@@ -1,0 +1,157 @@
+"""The stability cases: every stiff or extreme case, the fidelities it covers and the tests that state and
+check its outcome (each test's docstring says the case and the expected outcome). The report lists this
+table; tests/stability/test_cases.py checks that every test named here exists.
+
+Most cases live in this folder; a few are checked where their machinery is: the low-speed run-ups of the
+quasi-static solver (tests/unit), the fixed-preload runaway of the closed loop (tests/cosim) and the DEM
+time-step monitor (tests/validation).
+"""
+
+S = "tests/stability/"
+CASES = (
+    # (case, fidelities, test file, test function)
+    (
+        "zero speed",
+        "analytic",
+        S + "test_speed_extremes.py",
+        "test_analytic_at_rest_gives_the_static_load_distribution",
+    ),
+    (
+        "zero speed",
+        "quasi-static",
+        S + "test_speed_extremes.py",
+        "test_quasi_static_at_rest_is_converged_without_torque",
+    ),
+    (
+        "zero speed",
+        "DEM",
+        S + "test_speed_extremes.py",
+        "test_dem_at_rest_carries_the_load_of_the_quasi_static_fidelity",
+    ),
+    (
+        "very low speed, run-up from rest",
+        "quasi-static",
+        "tests/unit/test_quasistatic_low_speed.py",
+        "test_run_up_from_rest_under_load_refuses_no_step",
+    ),
+    (
+        "very low speed",
+        "quasi-static",
+        "tests/unit/test_quasistatic_low_speed.py",
+        "test_low_speed_grid_refuses_no_step",
+    ),
+    (
+        "speed reversal",
+        "analytic, quasi-static",
+        S + "test_speed_extremes.py",
+        "test_speed_reversal_mirrors_the_solution",
+    ),
+    ("speed reversal", "DEM", S + "test_speed_extremes.py", "test_dem_speed_reversal_runs_through_zero"),
+    (
+        "very high speed (d_m n >= 2e6 mm.rpm)",
+        "quasi-static",
+        S + "test_speed_extremes.py",
+        "test_quasi_static_at_very_high_speed_is_centrifugal_dominated",
+    ),
+    (
+        "very high speed (d_m n >= 2e6 mm.rpm)",
+        "DEM",
+        S + "test_speed_extremes.py",
+        "test_dem_at_very_high_speed_is_stable_and_slips",
+    ),
+    ("speed beyond d_m n = 4e6 mm.rpm", "all", S + "test_speed_extremes.py", "test_speed_beyond_the_limit_is_refused"),
+    (
+        "zero load (balls lose contact, singular stiffness)",
+        "quasi-static",
+        S + "test_load_and_clearance_extremes.py",
+        "test_zero_load_gives_a_finite_centred_unloaded_bearing",
+    ),
+    (
+        "zero load, history",
+        "quasi-static",
+        "tests/unit/test_quasistatic_low_speed.py",
+        "test_zero_load_in_clearance_gives_the_centre_whatever_the_history",
+    ),
+    ("zero load", "analytic", S + "test_load_and_clearance_extremes.py", "test_analytic_zero_load_has_no_loaded_ball"),
+    ("load removed", "DEM", S + "test_dem_steps.py", "test_load_removed_leaves_a_bounded_rattle"),
+    (
+        "p_max > 4.2 GPa",
+        "analytic, quasi-static",
+        S + "test_load_and_clearance_extremes.py",
+        "test_pressure_beyond_iso_76_is_computed_with_a_warning",
+    ),
+    (
+        "p_max > 6 GPa",
+        "analytic, quasi-static",
+        S + "test_load_and_clearance_extremes.py",
+        "test_load_beyond_the_material_limit_is_refused",
+    ),
+    (
+        "large negative and positive clearance",
+        "quasi-static",
+        S + "test_load_and_clearance_extremes.py",
+        "test_large_clearance_or_interference_converges",
+    ),
+    (
+        "clearance beyond the geometric limits",
+        "quasi-static",
+        S + "test_load_and_clearance_extremes.py",
+        "test_clearance_outside_the_geometric_limits_is_refused",
+    ),
+    (
+        "interference of the whole groove clearance",
+        "quasi-static",
+        S + "test_load_and_clearance_extremes.py",
+        "test_interference_at_the_geometric_limit_is_refused_by_pressure",
+    ),
+    (
+        "clearance at the geometric limit (free angle 58-60 deg)",
+        "quasi-static",
+        S + "test_load_and_clearance_extremes.py",
+        "test_clearance_near_the_geometric_limit_converges_or_says_so",
+    ),
+    ("step loads", "DEM", S + "test_dem_steps.py", "test_load_step_settles_on_the_quasi_static_displacement"),
+    ("speed steps", "DEM", S + "test_dem_steps.py", "test_speed_step_accelerates_the_cage_without_overshoot"),
+    (
+        "time step beyond the stability limit",
+        "DEM",
+        "tests/validation/test_dem_6208.py",
+        "test_too_large_time_step_is_detected",
+    ),
+    (
+        "default time step, 0.1-1.7 krad/s, 0.75-7.5 kN",
+        "DEM",
+        "tests/validation/test_dem_6208.py",
+        "test_default_time_step_is_stable_for_0_2_s",
+    ),
+    (
+        "tiny thermal capacities, huge conductances, large steps",
+        "thermal",
+        S + "test_stiff_network.py",
+        "test_step_heat_monotone_no_overshoot",
+    ),
+    (
+        "stiff network: explicit integration fails",
+        "thermal",
+        S + "test_stiff_network.py",
+        "test_forward_euler_blows_up_at_these_steps",
+    ),
+    (
+        "co-simulation step >> fastest time constant",
+        "closed loop",
+        S + "test_large_communication_steps.py",
+        "test_step_of_sixty_seconds_settles_on_the_fine_run",
+    ),
+    (
+        "co-simulation step >> fastest time constant",
+        "closed loop",
+        S + "test_large_communication_steps.py",
+        "test_step_of_five_minutes_stops_with_the_limit_message",
+    ),
+    (
+        "fixed-preload thermal runaway",
+        "closed loop",
+        "tests/cosim/test_closed_loop.py",
+        "test_fixed_10000_runs_away_and_stops_with_a_message",
+    ),
+)
