@@ -16,10 +16,10 @@ dissipated, largest temperature difference).
 import argparse
 import os
 import statistics
+import sys
 
 import numpy as np
 
-from spindle.cli import exit_after
 from spindle.cosim.master import run
 from spindle.cosim.runfile import load_run
 
@@ -195,4 +195,4 @@ def plot(d, q):
 
 
 if __name__ == "__main__":
-    exit_after(main)  # skips the interpreter teardown (known pythonfmu abort, spindle.cli.exit_after)
+    sys.exit(main())

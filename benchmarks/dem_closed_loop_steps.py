@@ -21,10 +21,10 @@ time (one run each; the machine is shared, so the CPU time is the comparable num
 """
 
 import os
+import sys
 
 import numpy as np
 
-from spindle.cli import exit_after
 from spindle.cosim.master import run
 from spindle.cosim.runfile import load_run
 
@@ -170,4 +170,4 @@ def plot(rows):
 
 
 if __name__ == "__main__":
-    exit_after(main)  # skips the interpreter teardown (known pythonfmu abort, spindle.cli.exit_after)
+    sys.exit(main())

@@ -10,17 +10,20 @@ from . import (
     dem_fmu,
     dem_timing,
     ehl_film_table,
+    fidelity_ladder,
     first_start,
     fixed_preload_stability,
     fmu_startup,
     hertz_approximation,
     kernel_timing,
+    master_memory,
     option_cost,
     portable_cost,
     quasistatic_low_speed,
     quasistatic_timing,
     rabreau_preload,
     rabreau_torque_sensitivity,
+    solver_tolerance,
     torque_palmgren,
 )
 
@@ -36,6 +39,7 @@ def main():
         torque_palmgren,
         quasistatic_timing,
         quasistatic_low_speed,
+        solver_tolerance,
         option_cost,
         rabreau_preload,
         rabreau_torque_sensitivity,
@@ -48,6 +52,8 @@ def main():
         dem_fmu,
         dem_closed_loop,
         dem_closed_loop_steps,
+        fidelity_ladder,
+        master_memory,
     ):
         module.main()
 
