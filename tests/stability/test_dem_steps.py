@@ -20,13 +20,13 @@ OMEGA = 500.0  # rad/s
 QS = Scene(name="quasi_static_no_gyro", fidelity="quasi_static", gyroscopic=False)
 
 
-def started(omega, F_x):
+def started(omega, F_y):
     """A 6208 after the validation tests' start-up: 2 ms at rest, a 5 ms ramp, steady to 30 ms."""
     model = DemModel("6208", "guessasma_oil")
-    model.advance(2e-3, omega=0.0, F_x=F_x)
+    model.advance(2e-3, omega=0.0, F_y=F_y)
     for k in range(1, 21):
-        model.advance(2e-3 + 5e-3 * k / 20, omega=omega * k / 20, F_x=F_x)
-    model.advance(0.03, omega=omega, F_x=F_x)
+        model.advance(2e-3 + 5e-3 * k / 20, omega=omega * k / 20, F_y=F_y)
+    model.advance(0.03, omega=omega, F_y=F_y)
     return model
 
 
@@ -41,15 +41,15 @@ def finite(samples):
     return all(np.isfinite(float(v)) for s in samples for v in s.values())
 
 
-def qs_displacement(F_x):
-    return QuasiStaticModel("6208", "guessasma_oil", scene=QS).evaluate(omega=OMEGA, F_x=F_x)["x"]
+def qs_displacement(F_y):
+    return QuasiStaticModel("6208", "guessasma_oil", scene=QS).evaluate(omega=OMEGA, F_y=F_y)["y"]
 
 
 @pytest.fixture(scope="module")
 def stepped():
     """One 6208 through 750 N -> 7500 N -> 750 N at 500 rad/s, 100 ms at each level."""
     model = started(OMEGA, 750.0)
-    return {F: history(model, 0.1, omega=OMEGA, F_x=F) for F in (7500.0, 750.0)}
+    return {F: history(model, 0.1, omega=OMEGA, F_y=F) for F in (7500.0, 750.0)}
 
 
 @pytest.mark.parametrize("F", [7500.0, 750.0])
@@ -60,8 +60,8 @@ def test_load_step_settles_on_the_quasi_static_displacement(stepped, F):
     ball-passage ripple of the displacement is 0.2 % of it)."""
     samples = stepped[F]
     assert finite(samples)
-    x = np.mean([s["x"] for s in samples[50:]])
-    assert x == pytest.approx(qs_displacement(F), rel=0.01)
+    y = np.mean([s["y"] for s in samples[50:]])
+    assert y == pytest.approx(qs_displacement(F), rel=0.01)
 
 
 def test_load_removed_leaves_a_bounded_rattle():
@@ -73,7 +73,7 @@ def test_load_removed_leaves_a_bounded_rattle():
     0.2 x the 750 N displacement (twice that estimate) and does not grow from the first to the next
     150 ms after the transient (5 % margin for the sampling of a whirl at 1 ms)."""
     model = started(OMEGA, 750.0)
-    samples = history(model, 0.35, omega=OMEGA, F_x=0.0)
+    samples = history(model, 0.35, omega=OMEGA, F_y=0.0)
     assert finite(samples)
     radius = np.hypot([s["x"] for s in samples], [s["y"] for s in samples])
     first, later = radius[50:200].max(), radius[200:].max()
@@ -88,8 +88,8 @@ def test_speed_step_accelerates_the_cage_without_overshoot():
     kinematic cage speed at 1700 rad/s (the tolerance of the steady-state validation), gets there within
     0.1 s, and never passes 1.01 x the kinematic speed."""
     model = started(100.0, 3000.0)
-    model.advance(model.time + 1e-5, omega=1700.0, F_x=3000.0)
-    samples = history(model, 0.2, every=5e-3, omega=1700.0, F_x=3000.0)
+    model.advance(model.time + 1e-5, omega=1700.0, F_y=3000.0)
+    samples = history(model, 0.2, every=5e-3, omega=1700.0, F_y=3000.0)
     assert finite(samples)
     kinematic = rolling_kinematics(1700.0, 12.6e-3, 60.6e-3, 0.0)[0]
     cage = np.array([s["omega_cage"] for s in samples])

@@ -26,12 +26,13 @@ def finite(outputs):
     return all(np.all(np.isfinite(np.asarray(v, dtype=float))) for v in outputs.values())
 
 
-def dem_start(model, omega, F_x, settle=2e-3, ramp=5e-3, run_to=0.03):
-    """The DEM start-up of the validation tests: settle at rest under F_x, ramp to omega, run."""
-    model.advance(settle, omega=0.0, F_x=F_x)
+def dem_start(model, omega, F_y, settle=2e-3, ramp=5e-3, run_to=0.03):
+    """The DEM start-up of the validation tests: settle at rest under a radial F_y (on the line of ball 1,
+    docs/conventions.md), ramp to omega, run."""
+    model.advance(settle, omega=0.0, F_y=F_y)
     for k in range(1, 21):
-        model.advance(settle + ramp * k / 20, omega=omega * k / 20, F_x=F_x)
-    return model.advance(run_to, omega=omega, F_x=F_x)
+        model.advance(settle + ramp * k / 20, omega=omega * k / 20, F_y=F_y)
+    return model.advance(run_to, omega=omega, F_y=F_y)
 
 
 def test_analytic_at_rest_gives_the_static_load_distribution():
@@ -66,11 +67,11 @@ def test_dem_at_rest_carries_the_load_of_the_quasi_static_fidelity():
     within 2 % of the quasi-static fidelity at rest (the slow-drive agreement validated in
     tests/validation/test_dem_6208.py; the ring settles within a few ms)."""
     model = DemModel("6208", "guessasma_oil")
-    out = model.advance(0.010, omega=0.0, F_x=3000.0)
+    out = model.advance(0.010, omega=0.0, F_y=3000.0)
     assert finite(out)
     assert abs(out["omega_cage"]) < 1e-3
     qs = QuasiStaticModel("6208", "guessasma_oil", scene=Scene(name="qs", fidelity="quasi_static", gyroscopic=False))
-    reference = qs.evaluate(omega=0.0, F_x=3000.0)
+    reference = qs.evaluate(omega=0.0, F_y=3000.0)
     assert out["Q_max_inner"] == pytest.approx(reference["Q_max_inner"], rel=0.02)
 
 
@@ -88,7 +89,7 @@ def test_speed_reversal_mirrors_the_solution(fidelity):
         model = QuasiStaticModel("B7214C", scene=QS_SCENE)
         forward = dict(model.evaluate(omega=10000.0 * RPM, F_x=2000.0, F_z=800.0))
         backward = dict(model.evaluate(omega=-10000.0 * RPM, F_x=2000.0, F_z=800.0))
-    speeds = {"omega_cage", "omega_ball", "omega_ball_cage"}
+    speeds = {"omega_cage", "omega_ball"}  # signed; omega_ball_cage and the frequencies are magnitudes
     work = {"iterations"}  # solver work, not physics: the reversed case starts warm from the mirrored one
     for name, value in forward.items():
         if name in work:
@@ -106,8 +107,8 @@ def test_dem_speed_reversal_runs_through_zero():
     dem_start(model, 500.0, 3000.0)
     t0 = model.time
     for k in range(1, 21):
-        model.advance(t0 + 0.020 * k / 20, omega=500.0 - 1000.0 * k / 20, F_x=3000.0)
-    out = model.advance(t0 + 0.1, omega=-500.0, F_x=3000.0)
+        model.advance(t0 + 0.020 * k / 20, omega=500.0 - 1000.0 * k / 20, F_y=3000.0)
+    out = model.advance(t0 + 0.1, omega=-500.0, F_y=3000.0)
     assert finite(out)
     cage = rolling_kinematics(-500.0, 12.6e-3, 60.6e-3, 0.0)[0]
     assert out["omega_cage"] == pytest.approx(cage, rel=0.01)
@@ -143,7 +144,7 @@ def test_dem_at_very_high_speed_is_stable_and_slips(omega):
     limits the cage's acceleration)."""
     model = DemModel("6208", "guessasma_oil")
     early = dem_start(model, omega, 3000.0)
-    late = model.advance(0.2, omega=omega, F_x=3000.0)
+    late = model.advance(0.2, omega=omega, F_y=3000.0)
     assert finite(early) and finite(late)
     assert late["Q_max_outer"] > late["Q_max_inner"]
     cage = rolling_kinematics(omega, 12.6e-3, 60.6e-3, 0.0)[0]
@@ -162,7 +163,7 @@ def test_speed_beyond_the_limit_is_refused(fidelity):
         call = lambda w: model.evaluate(omega=w, F_x=3000.0)  # noqa: E731
     else:
         model = DemModel("6208", "guessasma_oil")
-        call = lambda w: model.advance(1e-4, omega=w, F_x=3000.0)  # noqa: E731
+        call = lambda w: model.advance(1e-4, omega=w, F_y=3000.0)  # noqa: E731
     too_fast = 1.01 * 4.0e6 / 60.6 * RPM
     with pytest.raises(InputError) as info:
         call(too_fast)
