@@ -417,7 +417,10 @@ class DemModel:
             dt = self.safety * self.stable_time_step(F_x, F_y, F_z, max(abs(self.omega), abs(omega)))
         n_steps = max(1, math.ceil(interval / dt * (1.0 - 1e-12)))
         dt = interval / n_steps  # land exactly on t_end
-        refresh = self.refresh_fixed or max(1, round(self.refresh_interval / dt))
+        # refreshed at least every refresh_interval: floor, with a guard so that a ratio that is a whole number
+        # in exact arithmetic stays one (a round() would flip at x.5 with the last bits of dt, and a master
+        # that hands step sizes differing in the last bits would then take other steps)
+        refresh = self.refresh_fixed or max(1, math.floor(self.refresh_interval / dt * (1.0 + 1e-9)))
         self.par[s.P_REFRESH] = refresh
         self.dt, self.refresh = dt, refresh
         omega0 = self.omega

@@ -130,7 +130,7 @@ def test_dem_fmu_alone_libcosim_equals_fmpy_master(tmp_path):
         "run": {"stop": 0.03, "step": 1e-3, "algorithm": "jacobi", "record": record},
         "fmus": {"dem": str(_fmu("BearingDEM", "dem.toml"))},
         "instances": {
-            "dem": {"fmu": "dem", "inputs": {"F_x": 3000.0}, "schedules": {"omega": [[0.0, 0.0], [0.02, 300.0]]}}
+            "dem": {"fmu": "dem", "inputs": {"F_y": 3000.0}, "schedules": {"omega": [[0.0, 0.0], [0.02, 300.0]]}}
         },
     }
     result = assert_masters_agree(parse_run(doc, tmp_path / "r.toml"), record, bit_for_bit=False)

@@ -402,6 +402,8 @@ def test_record_returns_time_series_of_outputs_and_contacts():
     assert rec["contacts"]["Q_inner"].shape == (5, model.bearing.Z) and rec["omega_cage"].shape == (5,)
     assert rec["Lambda_outer"][-1] == model.outputs_dict()["Lambda_outer"]
     model.set_state(saved)
-    for k in range(1, 6):
-        out = model.advance(1e-3 + k * 1e-4, omega=10.0 * k / 5, F_y=3000.0)
+    t0 = model.time
+    for k in range(1, 6):  # the same times and speeds as record() computes them (bit for bit)
+        t = t0 + k * 1e-4
+        out = model.advance(t, omega=10.0 * (t - t0) / (1.5e-3 - t0), F_y=3000.0)
     assert out["Q_max_inner"] == rec["Q_max_inner"][-1]
