@@ -138,7 +138,7 @@ def run_benchmarks(names):
         t0 = time.perf_counter()
         print(f"== {name}", flush=True)
         forget(name)
-        if inspect.signature(module.main).parameters:  # a command-line main: its arguments, never sys.argv
+        if "argv" in inspect.signature(module.main).parameters:  # a command-line main: its arguments, never sys.argv
             module.main(BENCHMARK_ARGS.get(name, []))
         else:
             module.main()
