@@ -19,7 +19,7 @@ import numpy as np
 
 from bearing_fmu.models.dem import REFRESH_INTERVAL, SAFETY, DemModel, DemUnstableError
 
-from .common import REPORTS, machine, write_report
+from .common import REPORTS, machine, record, write_report
 from .dem_timing import F_R, OMEGA, steady_model
 
 RUN_TIME = 6e-3
@@ -102,6 +102,12 @@ def main():
     chosen = min(fit, key=lambda row: row[4])[0] if fit else None
     default = next(row for row in settings if row[0] == (SAFETY, REFRESH_INTERVAL))
     _, default_dt, default_refresh, default_means, default_cpu, _ = default
+    for dt, refresh, means, cpu, failure in rows:
+        if means is not None and failure is None:
+            key = f"dt = {dt * 1e6:g} us, refresh every {refresh} steps"
+            record("dem_error", f"{key}: largest error", max(errors(means).values()), "1", kind="error")
+            record("dem_error", f"{key}: CPU ms per simulated ms", cpu, "1", kind="timing")
+    record("dem_error", "default settings: largest error", max(errors(default_means).values()), "1", kind="error")
 
     lines = [
         "# DEM error against run time (6208, 500 rad/s, 3 kN)",

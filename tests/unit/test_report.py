@@ -43,11 +43,12 @@ def test_a_benchmark_run_again_forgets_its_old_entries(reports):
 def test_reproduction_counts_exact_errors_and_timing_deviations():
     now = {"b": {"e": dict(value=0.5, kind="error"), "t": dict(value=1.2, kind="timing")}}
     before = {"b": {"e": dict(value=0.5, kind="error"), "t": dict(value=1.0, kind="timing")}}
-    lines = report.reproduction_section(now, before)
+    lines = report.reproduction_section(now, before, {"b"})
     assert lines[0] == "Errors and counts: 1 repeated exactly, 0 differ."
     assert "median deviation 20.0 %" in lines[2] and "0 outside" in lines[2]
     before["b"]["e"]["value"] = 0.4
-    assert "1 differ" in report.reproduction_section(now, before)[0]
+    assert "1 differ" in report.reproduction_section(now, before, {"b"})[0]
+    assert "nothing to compare" in report.reproduction_section(now, before, set())[0]
 
 
 def test_stability_table_quotes_each_cases_outcome():
