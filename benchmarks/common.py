@@ -1,6 +1,7 @@
 """Timing helpers for the benchmarks: medians over repeats, never asserted in tests (targets: docs/architecture.md, performance budget)."""
 
 import json
+import math
 import platform
 import statistics
 import time
@@ -18,6 +19,38 @@ def median_time(fn, *args, number=1000, repeats=15):
         for _ in range(number):
             fn(*args)
         samples.append((time.perf_counter() - t0) / number)
+    return statistics.median(samples)
+
+
+def interleaved_medians(calls, repeats, clock=time.perf_counter):
+    """Median time (s, on `clock`) of each zero-argument callable in `calls` (dict name -> callable).
+
+    The calls run in turn, `repeats` rounds of one call each, so every median draws its samples from the same
+    stretch of time: on this shared machine the speed of a core changes within a fraction of a second (other
+    users, frequency), and timings taken one after the other in short windows differ by up to 2x between runs."""
+    for fn in calls.values():
+        fn()  # warm-up (compilation, caches)
+    samples = {name: [] for name in calls}
+    for _ in range(repeats):
+        for name, fn in calls.items():
+            t0 = clock()
+            fn()
+            samples[name].append(clock() - t0)
+    return {name: statistics.median(s) for name, s in samples.items()}
+
+
+def machine_speed(seconds=0.5):
+    """Median wall time (s) of a fixed reference workload (a pure-Python floating-point loop of about 1.5 ms),
+    sampled for `seconds`: how fast this shared machine runs at the moment, independent of the product's code
+    (benchmarks/report.py takes its spread over a run as part of the timing noise band)."""
+    samples = []
+    t_end = time.perf_counter() + seconds
+    while not samples or time.perf_counter() < t_end:
+        t0 = time.perf_counter()
+        acc = 0.0
+        for i in range(1, 5001):
+            acc += math.sqrt(i) * math.exp(-1e-5 * i) + math.log(i)
+        samples.append(time.perf_counter() - t0)
     return statistics.median(samples)
 
 

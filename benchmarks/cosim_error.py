@@ -42,7 +42,7 @@ OMEGA = 1047.1975511965977  # rad/s
 CONSTANT_SPEED = {"bearing_1.omega": OMEGA, "bearing_2.omega": OMEGA, "spindle.omega": OMEGA}
 ALGORITHMS = ("gauss_seidel", "jacobi")
 REPEATS = 3
-REPEATS_SHORT = 5  # H >= 1 s: runs of 0.3 s and less, more exposed to the machine's noise
+REPEATS_SHORT = 15  # H >= 1 s: runs of 0.3 s and less, more exposed to the machine's noise
 REF_STEPS = (0.1, 0.05, 0.025, 0.0125)
 # co-simulation column -> reference column (spindle.T_oil_1 is a connection source: always recorded)
 TEMPS = {

@@ -45,10 +45,22 @@ def test_reproduction_counts_exact_errors_and_timing_deviations():
     before = {"b": {"e": dict(value=0.5, kind="error"), "t": dict(value=1.0, kind="timing")}}
     lines = report.reproduction_section(now, before, {"b"})
     assert lines[0] == "Errors and counts: 1 repeated exactly, 0 differ."
-    assert "median deviation 20.0 %" in lines[2] and "0 outside" in lines[2]
+    assert "median deviation 20.0 %" in lines[2] and "All within." in lines[4]
     before["b"]["e"]["value"] = 0.4
     assert "1 differ" in report.reproduction_section(now, before, {"b"})[0]
     assert "nothing to compare" in report.reproduction_section(now, before, set())[0]
+
+
+def test_timing_noise_band_widens_to_the_machines_measured_speed_spread():
+    """A timing 1.6x slower is outside the same-state band of 1.3, but inside it when the reference workload
+    itself ran 1.7x slower at some point of the two runs (the machine changed, not the code)."""
+    now = {"b": {"t": dict(value=1.6, kind="timing")}}
+    before = {"b": {"t": dict(value=1.0, kind="timing")}}
+    assert "1 outside: b: t (x1.60)" in report.reproduction_section(now, before, {"b"})[4]
+    now[report.MACHINE] = {"before b": dict(value=1.7e-3, kind="machine")}
+    before[report.MACHINE] = {"before b": dict(value=1.0e-3, kind="machine")}
+    line = report.reproduction_section(now, before, {"b"})[4]
+    assert "within a factor 1.70" in line and "All within." in line
 
 
 def test_stability_table_quotes_each_cases_outcome():
