@@ -135,8 +135,8 @@ def report(results, repeats, load_before, load_after):
         "Before the FMUs carried compiled code (same benchmark, same machine), the first start of Bearing.fmu "
         + BEFORE,
         "",
-        "The 'first ever' rows of `fmu_startup.md` (start-up of Bearing.fmu 28.83 s at load average 1.05) were",
-        "measured before the FMUs carried compiled code; rerun now, they load it instead of compiling.",
+        "The 'first start' rows of `fmu_startup.md` (an empty numba cache) took 28.83 s for Bearing.fmu at load",
+        "average 1.05 before the FMUs carried compiled code; now they load it instead of compiling.",
         "",
         "A host Python with only fmpy, numpy, numba and scipy installed (a fresh virtual environment; "
         "`--python VENV/bin/python`): " + MINIMAL_HOST,

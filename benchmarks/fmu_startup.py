@@ -144,7 +144,7 @@ def main(warm_runs=7):
         target = STEP_TARGET_US.get(name)
         shown = f"{target:.0f}" if target else "-"
         lines += [
-            f"| {name} | first ever (empty cache: numba compiles) | {cold['startup']:.2f} | {cold['wall']:.2f} "
+            f"| {name} | first start (empty numba cache: the FMU's compiled code is loaded) | {cold['startup']:.2f} | {cold['wall']:.2f} "
             f"| {1e6 * cold['step_all_outputs']:.0f} | {1e6 * cold['step_cpu']:.0f} | {1e6 * cold['kernels']:.0f} "
             f"| {cold['step_cpu'] / cold['kernels']:.2f} | {shown} |",
             f"| {name} | warm cache, median of {warm_runs} | {med['startup']:.3f} | {med['wall']:.2f} | "
