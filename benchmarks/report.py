@@ -117,10 +117,9 @@ CAUSES = {
         "a one-time growth of the allocator and of fmpy's and numba's caches in the first block; the next two "
         "blocks of 1000 cycles grow by about 0.05 MB each (docs/reports/master_memory.md): no per-instance leak"
     ),
-    ("fmu_startup", "Bearing: doStep + all outputs / kernels"): (
-        "the FMU layer's Python and FMI transfers around a solve of about 90 us; 1.29 before the outputs added in "
-        "this release (rating life copied per step, defect frequencies, central films: 56 outputs read per step) "
-        "and the per-step warning check (docs/reports/fmu_startup.md)"
+    ("fmu_startup", "Bearing: doStep + all outputs, batched / kernels"): (
+        "the model's Python around a solve of about 100 us (input check, warm-start copies, output assembly: about "
+        "15 us) and the FMI transfers (docs/reports/fmu_startup.md)"
     ),
     ("closed_loop", "closed-loop step / replayed-kernel floor"): (
         "the master's fmpy calls and per-step value dict, and the bearings' added outputs (as the row above); "

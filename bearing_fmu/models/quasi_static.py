@@ -150,6 +150,13 @@ class QuasiStaticModel:
         self._summary = np.zeros(bo.BS_SIZE)
         self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
         self._load_controlled = tuple(bool(c) for c in self.control)  # per DOF, as plain booleans
+        # where update() finds each input in its list u (positions resolved once, not a dict per step)
+        position = {name: k for k, name in enumerate(self.input_names)}
+        self._u_omega, self._u_T_oil = position["omega"], position["T_oil"]
+        self._u_dPd, self._u_dz = position.get("dPd_thermal"), position.get("dz_thermal")
+        self._u_loads = tuple((i, position[LOAD_NAMES[i]]) for i in range(5) if self._load_controlled[i])
+        self._u_dofs = tuple((i, position[DOF_NAMES[i]]) for i in range(5) if not self._load_controlled[i])
+        self._applied = np.zeros(5)  # the applied loads of the step (0 on displacement-driven DOFs)
         self._limits = self._input_limits()
 
     def _input_limits(self):
@@ -295,20 +302,19 @@ class QuasiStaticModel:
         """Evaluate for the input values u in self.inputs order (SI) and fill self.values (self.outputs
         order); returns self.values. Raises as evaluate()."""
         self._limits.check(u)
-        values = dict(zip(self.input_names, u))
-        omega = float(values["omega"])
-        controlled = self._load_controlled
-        applied = np.array([float(values[n]) if controlled[i] else 0.0 for i, n in enumerate(LOAD_NAMES)])
-        for i in range(5):
-            if not controlled[i]:
-                self.d[i] = float(values[DOF_NAMES[i]])
+        omega = float(u[self._u_omega])
+        applied = self._applied
+        for i, k in self._u_loads:
+            applied[i] = u[k]
+        for i, k in self._u_dofs:
+            self.d[i] = u[k]
         if not self.control[2]:
-            self.d[2] += self.z0 + float(values.get("dz_thermal", 0.0))
-        dPd = float(values.get("dPd_thermal", 0.0))
-        self._solve(applied, dPd, omega, values)
+            self.d[2] += self.z0 + (0.0 if self._u_dz is None else float(u[self._u_dz]))
+        dPd = 0.0 if self._u_dPd is None else float(u[self._u_dPd])
+        self._solve(applied, dPd, omega, u)
         ck.contact_outputs(
             omega,
-            float(values["T_oil"]),
+            float(u[self._u_T_oil]),
             self.cp,
             self.lubricant.array,
             self.balls,
@@ -316,9 +322,13 @@ class QuasiStaticModel:
             self.per_contact,
             self._losses,
         )
-        return self._collect(omega, values)
+        return self._collect(omega, u)
 
-    def _solve(self, applied, dPd, omega, values):
+    def _shown(self, u):
+        """The inputs u as 'name = value unit' for a message."""
+        return ", ".join(f"{v.name} = {u[k]:.6g} {v.unit}" for k, v in enumerate(self.inputs))
+
+    def _solve(self, applied, dPd, omega, u):
         d_start = self.d.copy()
         X_start = self.X.copy()
         status, iters, res = qk.solve_quasistatic(
@@ -340,12 +350,13 @@ class QuasiStaticModel:
                 qk.QS_BALL_NOT_CONVERGED: "a ball equilibrium did not converge",
                 qk.QS_NOT_FINITE: "the iteration produced a non-finite value",
             }[status]
-            shown = ", ".join(f"{v.name} = {values[v.name]:.6g} {v.unit}" for v in self.inputs)
-            raise SolverError(f"quasi-static equilibrium not found ({reason}, load residual {res:.3g} N) for {shown}")
+            raise SolverError(
+                f"quasi-static equilibrium not found ({reason}, load residual {res:.3g} N) for {self._shown(u)}"
+            )
         if self.bearing.kind == "angular_contact":
-            self._check_thrust_side(d_start, X_start, values)
+            self._check_thrust_side(d_start, X_start, u)
 
-    def _check_thrust_side(self, d_start, X_start, values):
+    def _check_thrust_side(self, d_start, X_start, u):
         """Refuse a solution that needs the shoulder a single-row angular-contact bearing does not have.
 
         The kernel's grooves are full circles; the bearing's inner ring has its thrust shoulder on the side of
@@ -362,7 +373,7 @@ class QuasiStaticModel:
         j = int(np.argmax(np.where(wrong, balls[qk.BQ_Q_I], -1.0)))
         self.d[:] = d_start
         self.X[:] = X_start
-        shown = ", ".join(f"{v.name} = {values[v.name]:.6g} {v.unit}" for v in self.inputs)
+        shown = self._shown(u)
         raise InputError(
             f"bearing '{self.bearing.name}' is a single-row angular-contact bearing: it carries thrust in +z only, "
             f"and these loads need its missing shoulder (ball {j} would carry {balls[qk.BQ_Q_I, j]:.4g} N at a "
@@ -371,7 +382,7 @@ class QuasiStaticModel:
             f"touches the inner ring at a contact angle >= 0. Inputs: {shown}"
         )
 
-    def _collect(self, omega, values):
+    def _collect(self, omega, u):
         """Fill self.values from the solver's and the contact kernel's arrays (declaration order)."""
         out = self.out
         self.warnings = pressure_warnings(out[ck.CO_PMAX], "the loads")
@@ -401,9 +412,8 @@ class QuasiStaticModel:
             )
             self.values[self._life_slots] = self._life[self._life_index]
         if bad >= 0:
-            shown = ", ".join(f"{v.name} = {values[v.name]:.6g}" for v in self.inputs)
             raise SolverError(
-                f"output {self.output_names[bad]} is not finite ({self.values[bad]}) for {shown}: "
+                f"output {self.output_names[bad]} is not finite ({self.values[bad]}) for {self._shown(u)}: "
                 f"please report this case"
             )
         return self.values

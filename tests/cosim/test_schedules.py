@@ -5,6 +5,9 @@ master through FMI as u(t) before every communication step [t, t + h] (halves of
 The expected values are written from the definition (linear interpolation between the points, held
 outside them) by hand, not with the code under test."""
 
+import math
+
+import numpy as np
 import pytest
 
 from spindle import cli
@@ -26,6 +29,20 @@ def test_schedule_interpolates_and_holds_outside_the_table():
     u = Schedule.from_table([[1.0, 2.0], [3.0, 6.0], [4.0, 0.0]], "k")
     assert [u(t) for t in (0.0, 1.0, 2.0, 2.5, 3.0, 3.5, 4.0, 9.0)] == [2.0, 2.0, 4.0, 5.0, 6.0, 3.0, 0.0, 0.0]
     assert Schedule.from_table([[0, 5]], "k")(123.0) == 5.0  # one point: a constant
+
+
+def test_schedule_equals_numpy_interp_bit_for_bit():
+    """The schedule evaluates numpy.interp's formula itself (no array conversion per call): the same doubles,
+    before, on, between and after the points, and NaN for a NaN time."""
+    rng = np.random.default_rng(7)
+    for n in (1, 2, 5, 40):
+        times = np.cumsum(rng.uniform(0.01, 2.0, n)) - 1.0
+        table = [[float(t), float(v)] for t, v in zip(times, rng.normal(0.0, 1e3, n))]
+        u = Schedule.from_table(table, "k")
+        ts = np.concatenate([times, rng.uniform(times[0] - 1.0, times[-1] + 1.0, 500)])
+        expected = np.interp(ts, u.times, u.values)
+        assert [u(float(t)) for t in ts] == expected.tolist()
+    assert math.isnan(Schedule.from_table([[0.0, 1.0], [1.0, 2.0]], "k")(math.nan))
 
 
 @pytest.mark.parametrize(
