@@ -24,7 +24,7 @@ from bearing_fmu.kernels.ball_dynamics.cage import ball_cage_contact, cage_guide
 from bearing_fmu.kernels.ball_dynamics.contacts import ball_race_contact
 from bearing_fmu.kernels.ball_dynamics.tribology import TC_SIZE, race_circle, refresh_tribology, tribology_constants
 from bearing_fmu.kernels.lubricant import LUB_EPS_R0, clausius_mossotti_constant, lubricant_state
-from bearing_fmu.models.dem import DemModel
+from bearing_fmu.models.dem import REFRESH_INTERVAL, DemModel
 
 from .common import machine, record, write_report
 
@@ -262,7 +262,7 @@ def main():
         f"| tribology every step | {every[0]:.2f} | {every[1]:.2f} | {every[2]:.2f} | <= 2 |",
         f"| tribology every 10 steps (multirate) | {multirate[0]:.2f} | {multirate[1]:.2f} | {multirate[2]:.2f} "
         "| <= 1.2 |",
-        f"| tribology every {default_refresh} steps (default: every 20 us) | {default[0]:.2f} | {default[1]:.2f} "
+        f"| tribology every {default_refresh} steps (default: every {REFRESH_INTERVAL * 1e6:g} us) | {default[0]:.2f} | {default[1]:.2f} "
         f"| {default[2]:.2f} | |",
         f"| contact law only (no refresh during the run) | {contact_law[0]:.2f} | {contact_law[1]:.2f} "
         f"| {contact_law[2]:.2f} | |",

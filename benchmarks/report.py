@@ -138,10 +138,10 @@ DEFAULTS = (
     ("DEM time step", "0.5 x the stability limit", "dem_error", "on the front of the DEM time-step study"),
     (
         "DEM tribology refresh",
-        "at least every 20 us",
+        "at least every 40 us",
         "dem_error",
-        "within the error budget (largest error 4e-5 of 2e-4); the study's rule now picks 40 us, kept at 20 us "
-        "until timed on a quiet machine",
+        "the cheapest setting within the error budget (2e-4) that starts the 6208 up at every load and speed "
+        "of the study",
     ),
     (
         "co-simulation step (quasi-static loop)",
