@@ -148,10 +148,35 @@ class CacheTiers:
         except (OSError, ValueError, KeyError):
             return False
         entries = path / self.key
-        if not entries.is_dir() or any(entries == d for d, _ in self.read):
+        if not entries.is_dir():
+            entries = same_sources_entries(path)
+        if entries is None or any(entries == d for d, _ in self.read):
             return False
         self.read.append((entries, magic))
         return True
+
+
+def same_sources_entries(path, root=_ROOT):
+    """The entries of a compiled-code directory built from another set of the kernel sources, if every kernel
+    source it was built from is, byte for byte, the file of the same name under root; else None.
+
+    The case: a host that imported the product itself (the co-simulation master) loads an FMU; the FMU's
+    entry script then runs on the host's modules, whose key covers every kernel source of the product, while
+    the FMU's code was compiled under the key of the sources it bundles (path.parent: the FMU's resources).
+    Equal bundled sources mean equal kernels and callees, so the FMU's entries are valid for the host."""
+    bundle = path.parent
+    entries = path / kernel_source_hash(bundle)
+    if not entries.is_dir():
+        return None
+    for pattern in KERNEL_SOURCES:
+        for source in bundle.glob(pattern):
+            own = root / source.relative_to(bundle)
+            try:
+                if own.read_bytes() != source.read_bytes():
+                    return None
+            except OSError:
+                return None
+    return entries
 
 
 TIERS = CacheTiers()

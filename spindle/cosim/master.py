@@ -59,6 +59,14 @@ from fmpy.fmi2 import (
     fmi2ValueReference,
 )
 
+# The product's own packages, imported here so that every FMU of this release runs on them (an FMU's entry
+# script uses the packages the host already has) under one kernel cache whose key covers them all: each
+# FMU's shipped compiled code is then used (bearing_fmu_common.jit.same_sources_entries) instead of some
+# kernels compiling at start-up because the thermal FMU's modules and the bearing FMU's jit policy came
+# from different copies.
+import bearing_fmu  # noqa: F401, E402
+import bearing_fmu_common.jit  # noqa: F401, E402
+
 from .runfile import split_name
 
 STATUS_NAMES = {0: "OK", 1: "Warning", 2: "Discard", 3: "Error", 4: "Fatal", 5: "Pending"}

@@ -245,6 +245,41 @@ def test_shipped_code_of_another_platform_is_not_used(tmp_path):
     assert (result["hits"], result["misses"]) == (0, 1)
 
 
+def _bundle_with_compiled_code(tmp_path, edit=None):
+    """An FMU's resources: a subset of the kernel sources (without spindle's) and, in numba_portable/, the
+    hertz kernels compiled for the generic CPU under the key of that subset (not the whole tree's)."""
+    bundle = tmp_path / "resources"
+    for pattern in ("bearing_fmu_common/*.py", "bearing_fmu/kernels/**/*.py"):
+        for path in ROOT.glob(pattern):
+            target = bundle / path.relative_to(ROOT)
+            target.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(path, target)
+    if edit:
+        (bundle / edit).write_text((bundle / edit).read_text() + "\n# edited\n")
+    key = jit.kernel_source_hash(bundle)
+    assert key != jit.kernel_source_hash()
+    compiled = _portable_dir(tmp_path)
+    (compiled / jit.kernel_source_hash()).rename(compiled / key)
+    shutil.move(str(compiled), str(bundle / "numba_portable"))
+    return bundle / "numba_portable"
+
+
+def test_a_host_with_its_own_copy_of_the_sources_uses_an_fmus_code_built_from_equal_ones(tmp_path):
+    """The co-simulation master imports the product, so an FMU's entry script runs on the host's modules, keyed
+    on the whole tree; the FMU's code is keyed on the sources it bundles. Equal sources: used, nothing compiled."""
+    compiled = _bundle_with_compiled_code(tmp_path)
+    result, _ = run_child({"BEARING_FMU_CACHE": str(tmp_path / "fresh"), "COMPILED": str(compiled)})
+    assert (result["hits"], result["misses"]) == (1, 0)
+    assert not list(Path(result["write"]).rglob("*.nbc"))
+
+
+def test_an_fmus_code_built_from_other_sources_is_not_used(tmp_path):
+    """One bundled kernel source differs from the host's (another release's FMU): its code is not trusted."""
+    compiled = _bundle_with_compiled_code(tmp_path, edit="bearing_fmu/kernels/ehl.py")
+    result, _ = run_child({"BEARING_FMU_CACHE": str(tmp_path / "fresh"), "COMPILED": str(compiled)})
+    assert (result["hits"], result["misses"]) == (0, 1)
+
+
 def test_a_directory_without_target_description_is_not_registered(tmp_path):
     (tmp_path / jit.kernel_source_hash()).mkdir()
     assert jit.add_compiled_dir(tmp_path) is False
