@@ -141,7 +141,8 @@ def normal_damping(lam, Q, alpha_e, eta, a_major, R_ball, h_min):
     regime = lubrication_regime(lam)
     if regime == REGIME_BOUNDARY or h_min <= 0.0:
         return c_hyst
-    c_fluid = 3.0 * math.pi * eta * a_major / math.sqrt(2.0) * (R_ball / h_min) ** 1.5
+    ratio = R_ball / h_min
+    c_fluid = 3.0 * math.pi * eta * a_major / math.sqrt(2.0) * ratio * math.sqrt(ratio)  # x^1.5: sqrt, not pow
     if regime == REGIME_FULL_FILM:
         return c_fluid
     return c_hyst * c_fluid / (c_hyst + c_fluid)

@@ -565,7 +565,8 @@ DEM_OUTPUTS = (
         "monitor_status",
         "1",
         "stability monitor of the last doStep: 0 ok, 1 non-finite force, 2 penetration beyond the material "
-        "limit, 3 energy growth, 4 tangential chatter (a non-zero code comes with fmi2Discard)",
+        "limit, 3 energy growth, 4 tangential chatter, 5 normal damping beyond the step (a non-zero code comes "
+        "with fmi2Discard)",
         "integer",
         source=("status", ds.ST_CODE),
     ),

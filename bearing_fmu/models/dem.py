@@ -24,7 +24,7 @@ from bearing_fmu_common.variables import InputLimits, gather_plan, select
 
 from ..kernels.ball_dynamics import integrator as dyn
 from ..kernels.ball_dynamics import state as s
-from ..kernels.ball_dynamics.monitor import critical_time_step, kinetic_energy
+from ..kernels.ball_dynamics.monitor import critical_time_step, damping_step_ratio, kinetic_energy
 from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_angles, contact_loads
 from ..kernels.ball_dynamics.stiffness import stiffness_matrix
 from ..kernels.geometry import (
@@ -64,6 +64,15 @@ SAFETY = 0.5  # default time step over the stability limit of the stiffest pair 
 # entering the load zone during a start-up reverses for up to ~15 steps without changing the results
 # (cage speed and torque equal within 0.05 % at half the step)
 CHATTER_STEPS = 50
+# the normal damping of a ball (its loaded contacts' C_n) times the step over its mass: the automatic step keeps
+# it at or below DAMPING_PLAN, the monitor stops above DAMPING_STOP (a film that thickened into full film
+# within the call); measured on the B7214C entering full film at 10 rad/s: correct up to 0.43, a spurious
+# dissipation from 0.48 (docs/dem.md)
+DAMPING_PLAN = 0.25
+DAMPING_STOP = 0.35
+MU_BOUNDARY = 0.1  # mu(Lambda) of the boundary regime (kernels.ehl.friction_coefficient), before any contact
+# an automatic step that the monitor stops is halved and the call repeated, at most this often (16x smaller)
+AUTO_STEP_HALVINGS = 4
 ENERGY_FACTOR = 10.0  # kinetic-energy bound: this factor x (pure-rolling energy + load x groove clearance)
 T_OIL_DEFAULT = 313.15  # K
 
@@ -72,6 +81,8 @@ STATUS_WORDS = {
     s.STATUS_PENETRATION: "a ball-race penetration passed the physical limit (Hertz pressure above the material limit)",
     s.STATUS_ENERGY: "the kinetic energy grew beyond the bound of the inputs (energy growth without input)",
     s.STATUS_CHATTER: "a tangential spring chattered against its Coulomb limit (slip direction reversing every step)",
+    s.STATUS_DAMPING: "a ball's normal damping is beyond what the step integrates ((c_i + c_o) dt / m above "
+    f"{DAMPING_STOP}; e.g. a contact that entered full film at low speed, whose squeeze damping overdamps the ball)",
 }
 
 
@@ -208,6 +219,8 @@ class DemModel:
         self._plan = gather_plan(self.outputs, arrays)
         self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
         self._before = self.get_state()  # state at the start of the last update(), restored when it fails
+        self._retry = self.get_state()  # state at the start of an automatic-step call, for its repetition
+        self.step_halvings = 0  # times the last call's automatic step was halved after a monitor stop
         self._gather()
 
     # -- set-up --------------------------------------------------------------------------------
@@ -270,7 +283,9 @@ class DemModel:
             )
         E_star = 1.0 / ((1.0 - b.ball.nu**2) / b.ball.E + (1.0 - nu_c**2) / E_c)
         R_eq = 0.5 * D * R_z / (0.5 * D + R_z)
-        p[s.P_M_CAGE] = rho_c * 4.0 / 3.0 * math.pi * R_z**3
+        # the cage's inertia: a file that gives the cage's mass shares it over the Z cage balls (their contacts
+        # keep the cage balls' radius and material); otherwise solid cage balls of the cage material (seeds)
+        p[s.P_M_CAGE] = b.cage_mass / b.Z if b.cage_mass > 0.0 else rho_c * 4.0 / 3.0 * math.pi * R_z**3
         p[s.P_R_CAGE] = R_z
         p[s.P_K_CB] = 4.0 / 3.0 * E_star * math.sqrt(R_eq)
         p[s.P_K_GUIDE] = 4.0 / 3.0 * E_star * math.sqrt(R_z)
@@ -294,6 +309,7 @@ class DemModel:
             p[s.P_HB_I + s.P_HERTZ_SCALE_STRIDE * race] = b1 * cube
             p[s.P_HP_I + s.P_HERTZ_SCALE_STRIDE * race] = p1 * cube
         p[s.P_CHATTER] = CHATTER_STEPS
+        p[s.P_DAMPING_STOP] = DAMPING_STOP
         p[s.P_CAPACITANCE] = 1.0 if sc.capacitance else 0.0
         p[s.P_REFRESH] = 1
         return p
@@ -357,7 +373,11 @@ class DemModel:
         contact loads are an estimate (Stribeck's
         5 F_r/Z for the radial load, F_a/(Z sin alpha) for the axial one with alpha >= 5 deg, plus the
         centrifugal force), or the current ones where larger (include_state); the cage-ball load is bounded
-        by the friction force mu_max Q a ball can transmit (mu_max = 0.1)."""
+        by the friction force mu Q a ball can transmit (the cage contacts are frictionless: only the races'
+        traction pushes a ball against a cage ball), mu the largest mu(Lambda) of the loaded contacts at the
+        last tribology refresh (0.1 in the boundary regime, 0.01 in a full film). The normal damping C_n of
+        each contact is also that of the last refresh (a cold full film at low speed is overdamped). A film
+        that changes within the call is caught by the monitor (the automatic step is then halved)."""
         b = self.bearing
         omega = self.omega if omega is None else omega
         contact_loads(self.balls, self.ring, self.par, self._Q)
@@ -369,7 +389,18 @@ class DemModel:
         estimate = 5.0 * math.hypot(F_x, F_y) / b.Z + abs(F_z) / (b.Z * math.sin(alpha)) + F_c
         Q_i = np.maximum(self._Q[0], estimate)
         Q_o = np.maximum(self._Q[1], estimate)
-        return critical_time_step(self.par, Q_i, Q_o, 0.1 * max(Q_i.max(), Q_o.max()))
+        C = self.trib[s.T_C_N]
+        loaded = self.trib[s.T_Q] > 0.0
+        mu = float(self.trib[s.T_MU][loaded].max()) if loaded.any() else MU_BOUNDARY
+        return critical_time_step(self.par, Q_i, Q_o, C[0], C[1], mu * max(Q_i.max(), Q_o.max()))
+
+    def automatic_time_step(self, F_x=0.0, F_y=0.0, F_z=0.0, omega=None):
+        """The automatic step (s) for the given loads (N) and speed (rad/s; the faster end of a call: the limit
+        falls with the centrifugal load): safety x stable_time_step(), and at most DAMPING_PLAN m / c of the ball
+        with the largest normal damping c (N.s/m, loaded contacts at the last refresh)."""
+        dt = self.safety * self.stable_time_step(F_x, F_y, F_z, omega)
+        ratio = damping_step_ratio(self.trib, self.par, 1.0)[0]  # largest c / m (1/s)
+        return min(dt, DAMPING_PLAN / ratio) if ratio > 0.0 else dt
 
     # -- inputs --------------------------------------------------------------------------------
     def _check(self, t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal):
@@ -412,11 +443,52 @@ class DemModel:
         self.par[s.P_RHO_O] = self._rho_outer + 0.5 * dPd_thermal
         interval = t_end - self.time
         dt = self.dt_fixed
-        if dt is None:
-            # the limit falls with speed (centrifugal load): take the faster end of the interval
-            dt = self.safety * self.stable_time_step(F_x, F_y, F_z, max(abs(self.omega), abs(omega)))
+        automatic = dt is None
+        if automatic:
+            dt = self.automatic_time_step(F_x, F_y, F_z, max(abs(self.omega), abs(omega)))
+            self._copy_state(self._retry, self.__dict__)
+            self._retry["omega"] = self.omega
         n_steps = max(1, math.ceil(interval / dt * (1.0 - 1e-12)))
-        dt = interval / n_steps  # land exactly on t_end
+        self.step_halvings = 0
+        while True:
+            dt = interval / n_steps  # land exactly on t_end
+            omega0, orbit0 = self._run(n_steps, dt, omega, F_x, F_y, F_z, T_oil)
+            if self.status[s.ST_CODE] == s.STATUS_OK:
+                break
+            if not automatic or self.step_halvings == AUTO_STEP_HALVINGS:
+                self._raise_unstable(dt, F_x, F_y, F_z)
+            # the step was chosen from the state at the start of the call; the film can change within it (a
+            # contact entering full film at low speed takes a squeeze damping that overdamps the ball): repeat
+            # the call from its start with half the step, or the step the stopped state's film needs if smaller
+            smaller = self.automatic_time_step(F_x, F_y, F_z, max(abs(omega0), abs(omega)))
+            self._copy_state(self.__dict__, self._retry)
+            self.omega = self._retry["omega"]
+            self.step_halvings += 1
+            needed = math.ceil(interval / smaller * (1.0 - 1e-12))
+            n_steps = max(2 * n_steps, min(needed, 16 * n_steps))  # (a blown-up state's loads are no guide)
+        bearing_outputs(
+            self.balls,
+            self.cage,
+            self.ring,
+            self.trib,
+            self.par,
+            self._acc,
+            self.omega,
+            interval,
+            orbit0,
+            self.scene.background_capacitance,
+            self.averaged,
+            self._Q,
+            self._alpha,
+            self.out,
+        )
+        # as the other fidelities: a warning above the ISO 76 limit; beyond the material limit (6 GPa) the
+        # monitor has already stopped the step (penetration), so only the warning can apply here
+        self.warnings = pressure_warnings(min(self.out[s.O_PMAX], P_MAX_ERROR), "the loads")
+
+    def _run(self, n_steps, dt, omega, F_x, F_y, F_z, T_oil):
+        """One kernel call of n_steps steps of dt (s) to the inner-ring speed omega; returns the speed and the sum
+        of the orbital angles at its start. self.status holds the monitor's verdict."""
         # refreshed at least every refresh_interval: floor, with a guard so that a ratio that is a whole number
         # in exact arithmetic stays one (a round() would flip at x.5 with the last bits of dt, and a master
         # that hands step sizes differing in the last bits would then take other steps)
@@ -449,27 +521,7 @@ class DemModel:
         )
         done = int(self.status[s.ST_STEP])
         self.omega = omega0 + (omega - omega0) * done / n_steps
-        if self.status[s.ST_CODE] != s.STATUS_OK:
-            self._raise_unstable(dt, F_x, F_y, F_z)
-        bearing_outputs(
-            self.balls,
-            self.cage,
-            self.ring,
-            self.trib,
-            self.par,
-            self._acc,
-            self.omega,
-            interval,
-            orbit0,
-            self.scene.background_capacitance,
-            self.averaged,
-            self._Q,
-            self._alpha,
-            self.out,
-        )
-        # as the other fidelities: a warning above the ISO 76 limit; beyond the material limit (6 GPa) the
-        # monitor has already stopped the step (penetration), so only the warning can apply here
-        self.warnings = pressure_warnings(min(self.out[s.O_PMAX], P_MAX_ERROR), "the loads")
+        return omega0, orbit0
 
     def _energy_limit(self, omega, force):
         """Bound (J) of the kinetic energy over a call: ENERGY_FACTOR x (pure-rolling kinetic energy at omega +
@@ -497,6 +549,15 @@ class DemModel:
         code, step, index = (int(v) for v in self.status)
         Z = self.bearing.Z
         where = ""
+        if code == s.STATUS_DAMPING:
+            # the stopped state's film; a ball's other contact may still follow into full film: 2 x the largest
+            c_max = float(self.trib[s.T_C_N][self.trib[s.T_Q] > 0.0].max())
+            raise DemUnstableError(
+                f"DEM stopped at t = {self.time:.9g} s (step {step} of the interval) on ball {index}: "
+                f"{STATUS_WORDS[code]}. dt = {dt:.3g} s is too large here; use dt <= "
+                f"{DAMPING_PLAN * self.par[s.P_M_BALL] / (2.0 * c_max):.3g} s (largest contact damping "
+                f"{c_max:.4g} N.s/m)"
+            )
         if index >= 0:
             race = "inner" if index < Z else "outer"
             where = f" at the {race} contact of ball {index % Z}"

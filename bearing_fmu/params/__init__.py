@@ -133,6 +133,7 @@ class Bearing:
     Ra_outer: float  # outer race roughness Ra (m)
     Ra_ball: float  # ball roughness Ra (m)
     cage_ball_radius: float = 0.0  # DEM cage-ball radius (m), 0 if absent
+    cage_mass: float = 0.0  # mass of the whole cage (kg), 0 if absent: the DEM's Z cage balls share it
     extras: dict = field(default_factory=dict)
 
 
@@ -237,6 +238,7 @@ def load_bearing(name_or_path):
         Ra_outer=_value(doc, "surface.outer_race_Ra", Spec("m", 0.0, 1e-4), path),
         Ra_ball=_value(doc, "surface.ball_Ra", Spec("m", 0.0, 1e-4), path),
         cage_ball_radius=_value(doc, "cage.ball_radius", Spec("m", 0.0, 1.0, True), path, required=False, default=0.0),
+        cage_mass=_value(doc, "cage.mass", Spec("kg", 0.0, 1e3, True), path, required=False, default=0.0),
     )
     if math.pi * dm < bearing.Z * D:
         raise ParameterError(

@@ -83,20 +83,53 @@ def test_time_step_limit_and_kinetic_energy_match_twin(models, name):
     model = models[name]
     Z = model.bearing.Z
     rng = np.random.default_rng(3)
-    for Q_cage in (0.0, 25.0):
+    # damping from none to the overdamped squeeze film of a cold full film at low speed (~7000 N.s/m)
+    for Q_cage, c_max in ((0.0, 0.0), (25.0, 100.0), (25.0, 1e4)):
         Q_i, Q_o = rng.uniform(0.0, 2000.0, Z), rng.uniform(0.0, 2000.0, Z)
-        Q_i[0] = 0.0  # an open contact
-        kernel = monitor.critical_time_step(model.par, Q_i, Q_o, Q_cage)
-        assert kernel == pytest.approx(ref_monitor.critical_time_step(model.par, Q_i, Q_o, Q_cage), rel=1e-12)
+        C_i, C_o = rng.uniform(0.0, c_max, Z), rng.uniform(0.0, c_max, Z)
+        Q_i[0] = 0.0  # an open contact (its damping must not count)
+        C_i[0] = 1e9
+        kernel = monitor.critical_time_step(model.par, Q_i, Q_o, C_i, C_o, Q_cage)
+        twin = ref_monitor.critical_time_step(model.par, Q_i, Q_o, C_i, C_o, Q_cage)
+        # the twin bisects the spectral radius of the step's amplification matrix (eigenvalue round-off)
+        assert kernel == pytest.approx(twin, rel=1e-9)
     zero = np.zeros(Z)
-    assert monitor.critical_time_step(model.par, zero, zero, 0.0) == ref_monitor.critical_time_step(
-        model.par, zero, zero, 0.0
+    assert monitor.critical_time_step(model.par, zero, zero, zero, zero, 0.0) == ref_monitor.critical_time_step(
+        model.par, zero, zero, zero, zero, 0.0
     )
     energy = monitor.kinetic_energy(model.balls, model.cage, model.ring, model.par)
     assert energy > 0.0
     assert energy == pytest.approx(
         ref_monitor.kinetic_energy(model.balls, model.cage, model.ring, model.par), rel=1e-12
     )
+
+
+@pytest.mark.parametrize("zeta", [0.0, 0.01, 0.3, 1.0, 4.0, 50.0])
+def test_damped_limit_matches_the_spectral_radius_of_the_step(zeta):
+    """The closed form (2/omega)(sqrt(1 + 4 zeta^2) - 2 zeta) against the bisection of the step's amplification
+    matrix (twin); 2/omega undamped."""
+    omega = 3.0e5
+    assert monitor.damped_limit(omega, zeta) == pytest.approx(ref_monitor.damped_limit(omega, zeta), rel=1e-9)
+    if zeta == 0.0:
+        assert monitor.damped_limit(omega, zeta) == pytest.approx(2.0 / omega, rel=1e-15)
+
+
+@pytest.mark.parametrize("name", ["6208", "B7214C"])
+def test_damping_step_ratio_matches_twin(models, name):
+    """Largest (c_i + c_o) dt / m of a ball, open contacts left out: on the fixture's film and on one with an
+    overdamped ball and an open contact carrying a stale damping."""
+    model = models[name]
+    trib = model.trib.copy()
+    for case in range(2):
+        if case:
+            trib[s.T_C_N, 1, 2] = 9000.0
+            trib[s.T_Q, 0, 3] = 0.0
+            trib[s.T_C_N, 0, 3] = 1e6
+        kernel = monitor.damping_step_ratio(trib, model.par, 2e-6)
+        twin = ref_monitor.damping_step_ratio(trib, model.par, 2e-6)
+        assert kernel[1] == twin[1] and kernel[0] == pytest.approx(twin[0], rel=1e-12)
+        assert kernel[0] > 0.0
+    assert kernel[1] == 2
 
 
 @pytest.mark.parametrize("name", ["6208", "B7214C"])

@@ -20,7 +20,7 @@ from ..capacitance import ball_capacitance
 from ..lubricant import LUB_EPS_R0, clausius_mossotti_constant, lubricant_state
 from .cage import ball_cage_contact, cage_guide_contact
 from .contacts import ball_race_contact
-from .monitor import kinetic_energy
+from .monitor import damping_step_ratio, kinetic_energy
 from .state import (
     A_CAP,
     A_DISS_I,
@@ -46,6 +46,7 @@ from .state import (
     P_CAPACITANCE,
     P_CHATTER,
     P_D,
+    P_DAMPING_STOP,
     P_DELTA_LIM_I,
     P_GUIDE_GAP,
     P_I_BALL,
@@ -72,6 +73,7 @@ from .state import (
     ST_INDEX,
     ST_STEP,
     STATUS_CHATTER,
+    STATUS_DAMPING,
     STATUS_ENERGY,
     STATUS_NOT_FINITE,
     STATUS_OK,
@@ -352,7 +354,8 @@ def advance(
 
     Stops early with status[ST_CODE] != STATUS_OK (monitor) after the offending step; status[ST_STEP]
     holds the steps done, status[ST_INDEX] the ball or contact (race * Z + ball). energy_limit (J)
-    bounds the kinetic energy (checked at each tribology refresh). acc[A_DISS_I], acc[A_DISS_O]
+    bounds the kinetic energy and par[P_DAMPING_STOP] the damping ratio of a step (monitor.damping_step_ratio),
+    both checked at each tribology refresh. acc[A_DISS_I], acc[A_DISS_O]
     receive the energy (J) dissipated in the inner and outer contacts during the call, acc[A_POWER_I],
     acc[A_POWER_O] the power (W) of the last step, and acc[A_CAP] the bearing capacitance of every step (the
     loaded balls' capacitances at the last refresh, without a background term) integrated over the call (F.s).
@@ -364,6 +367,7 @@ def advance(
     Z = balls.shape[1]
     refresh = max(int(par[P_REFRESH]), 1)
     chatter_limit = int(par[P_CHATTER])
+    damping_stop = par[P_DAMPING_STOP]
     capacitance = par[P_CAPACITANCE] > 0.5
     acc[A_DISS_I] = 0.0
     acc[A_DISS_O] = 0.0
@@ -394,6 +398,12 @@ def advance(
             if kinetic_energy(balls, cage, ring, par) > energy_limit:
                 status[ST_CODE] = STATUS_ENERGY
                 status[ST_STEP] = n
+                return
+            ratio, at = damping_step_ratio(trib, par, dt)
+            if ratio > damping_stop:
+                status[ST_CODE] = STATUS_DAMPING
+                status[ST_STEP] = n
+                status[ST_INDEX] = at
                 return
         countdown -= 1
         omega = omega0 + d_omega * (n + 1)

@@ -25,43 +25,66 @@ from .state import (
     P_M_RING,
     P_ZETA_CAGE,
     R_VX,
+    T_C_N,
+    T_Q,
 )
 
 
+@kernel(inline="always")
+def damped_limit(omega, zeta):
+    """Stability limit (s) of this integrator for an oscillator of natural frequency omega (rad/s) and damping
+    ratio zeta whose damping force is evaluated with the predicted velocity v* = v_n + a_n dt:
+    (2/omega)(sqrt(1 + 4 zeta^2) - 2 zeta). (The amplification matrix of (x, v, a) has an eigenvalue -1 at
+    h = omega dt with h^2/4 + 2 zeta h - 1 = 0 (h = 2 for zeta = 0); the central-difference bound
+    (2/omega)(sqrt(1 + zeta^2) - zeta) overestimates it, by 1.75x at zeta = 1.)"""
+    return 2.0 / omega * (math.sqrt(1.0 + 4.0 * zeta * zeta) - 2.0 * zeta)
+
+
 @kernel
-def critical_time_step(par, Q_inner, Q_outer, Q_cage):
+def critical_time_step(par, Q_inner, Q_outer, C_inner, C_outer, Q_cage):
     """Stability limit (s) of velocity Verlet for the stiffest contact pair at the given loads (N).
 
-    Q_inner, Q_outer: float64[Z] ball-race loads; Q_cage: largest ball - cage-ball load.
+    Q_inner, Q_outer: float64[Z] ball-race loads; C_inner, C_outer: float64[Z] their normal damping (N.s/m,
+    C_n(Lambda) of the last tribology refresh); Q_cage: largest ball - cage-ball load.
     - ball squeezed between its two races: omega^2 = (k_i + k_o)/m with the tangent stiffnesses
-      k = 1.5 K_h^(2/3) Q^(1/3) (Hertz, Q = K_h delta^1.5);
+      k = 1.5 K_h^(2/3) Q^(1/3) (Hertz, Q = K_h delta^1.5), damping ratio zeta = (c_i + c_o)/(2 sqrt(k m))
+      of its loaded contacts (a full film's squeeze damping can make it overdamped at low speed), limit
+      damped_limit(omega, zeta);
     - tangential springs of the same ball: k_t = ratio K_h^(2/3) Q^(1/3) per contact; a force at
       the surface moves it at 1/m + (D/2)^2/I = 3.5/m per newton (solid sphere), omega_t^2 = 3.5 k_t/m.
       The spring is lengthened by the predicted velocity v* = v_n + a_n dt (not integrated from positions),
       xi' = xi + v* dt: for F = -k xi this step has trace 2 - 1.5 h^2 and determinant 1 - h^2/2
       (h = omega_t dt), whose eigenvalue passes -1 at h = sqrt(2): the limit is sqrt(2)/omega_t, not
       2/omega_t. Beyond it the slip velocity alternates sign every step (chatter against the Coulomb cap);
-    - cage ball between two steel balls, critically damped (ratio zeta): the damped explicit limit
-      (2/omega)(sqrt(1 + zeta^2) - zeta), omega^2 = 2 k/m_cage.
-    Returns the smallest of 2/omega (squeeze), sqrt(2)/omega_t (springs) and the damped cage limit; inf when
-    nothing is loaded.
+    - cage ball against a steel ball: omega^2 = k/m_eff with the reduced mass m_eff, damping ratio zeta_c
+      (critical, c = 2 zeta_c sqrt(k m_eff)); limit damped_limit(omega, zeta_c). The pocket play lets a cage
+      ball touch one steel ball at a time: a cage ball jammed between both (omega^2 = 2 k/m_cage, zeta =
+      sqrt(2 m_eff/m_cage) zeta_c) would need about half of it, which the monitor catches (the facade's
+      automatic step then repeats the call with half the step).
+    Returns the smallest of the three; inf when nothing is loaded.
     """
     m = par[P_M_BALL]
-    s_max = 0.0  # largest K_i^(2/3) Q_i^(1/3) + K_o^(2/3) Q_o^(1/3) of a ball
-    ki_c = par[P_KH_I] ** (2.0 / 3.0)
-    ko_c = par[P_KH_O] ** (2.0 / 3.0)
-    for j in range(Q_inner.shape[0]):
-        si = ki_c * max(Q_inner[j], 0.0) ** (1.0 / 3.0)
-        so = ko_c * max(Q_outer[j], 0.0) ** (1.0 / 3.0)
-        s_max = max(s_max, si + so)
+    ki_c = 1.5 * par[P_KH_I] ** (2.0 / 3.0)
+    ko_c = 1.5 * par[P_KH_O] ** (2.0 / 3.0)
+    tangential = par[P_KT_RATIO] / 1.5 * 3.5  # omega_t^2 m / k_squeeze
     dt = math.inf
-    if s_max > 0.0:
-        dt = min(2.0 / math.sqrt(1.5 * s_max / m), math.sqrt(2.0) / math.sqrt(3.5 * par[P_KT_RATIO] * s_max / m))
+    for j in range(Q_inner.shape[0]):
+        k = 0.0
+        c = 0.0
+        if Q_inner[j] > 0.0:
+            k += ki_c * Q_inner[j] ** (1.0 / 3.0)
+            c += C_inner[j]
+        if Q_outer[j] > 0.0:
+            k += ko_c * Q_outer[j] ** (1.0 / 3.0)
+            c += C_outer[j]
+        if k > 0.0:
+            omega = math.sqrt(k / m)
+            zeta = c / (2.0 * math.sqrt(k * m))
+            dt = min(dt, damped_limit(omega, zeta), math.sqrt(2.0) / (omega * math.sqrt(tangential)))
     if Q_cage > 0.0:
         k_c = 1.5 * par[P_K_CB] ** (2.0 / 3.0) * Q_cage ** (1.0 / 3.0)
-        zeta = par[P_ZETA_CAGE]
-        dt_c = 2.0 / math.sqrt(2.0 * k_c / par[P_M_CAGE]) * (math.sqrt(1.0 + zeta * zeta) - zeta)
-        dt = min(dt, dt_c)
+        m_eff = m * par[P_M_CAGE] / (m + par[P_M_CAGE])
+        dt = min(dt, damped_limit(math.sqrt(k_c / m_eff), par[P_ZETA_CAGE]))
     return dt
 
 
@@ -77,3 +100,25 @@ def kinetic_energy(balls, cage, ring, par):
         e += 0.5 * (par[P_M_BALL] * v2 + par[P_I_BALL] * w2 + par[P_M_CAGE] * c2)
     e += 0.5 * par[P_M_RING] * (ring[R_VX] ** 2 + ring[R_VX + 1] ** 2 + ring[R_VX + 2] ** 2)
     return e
+
+
+@kernel
+def damping_step_ratio(trib, par, dt):
+    """Largest (c_i + c_o) dt / m over the balls, and its ball: the normal damping (N.s/m, of the loaded
+    contacts at the last tribology refresh) of a ball times the step dt (s) over its mass. A pure damper
+    integrated with the predicted velocity is stable below 1; the overdamped squeeze film of a full film at low
+    speed (C_n of thousands of N.s/m) integrates correctly up to about 0.43 and gives a spurious dissipation
+    from about 0.48 (B7214C at 10 rad/s, docs/dem.md): the monitor stops above par[P_DAMPING_STOP]."""
+    worst = 0.0
+    at = -1
+    scale = dt / par[P_M_BALL]
+    for j in range(trib.shape[2]):
+        c = 0.0
+        if trib[T_Q, 0, j] > 0.0:
+            c += trib[T_C_N, 0, j]
+        if trib[T_Q, 1, j] > 0.0:
+            c += trib[T_C_N, 1, j]
+        if c * scale > worst:
+            worst = c * scale
+            at = j
+    return worst, at

@@ -122,7 +122,8 @@ P_HB_O = 55
 P_HP_O = 56
 P_HERTZ_SCALE_STRIDE = P_HA_O - P_HA_I  # inner -> outer block of the Hertz scaling
 P_CAPACITANCE = 57  # 1: compute the contact capacitances; 0: the scene turned them off (not computed, 0)
-P_SIZE = 58
+P_DAMPING_STOP = 58  # largest (c_i + c_o) dt / m of a ball at a refresh before the monitor stops (-)
+P_SIZE = 59
 
 # ---- outputs of advance(): float64[O_SIZE] --------------------------------------------------------
 O_OMEGA_CAGE = 0  # cage speed: mean orbital angular speed of the balls (rad/s)
@@ -162,6 +163,7 @@ STATUS_NOT_FINITE = 1  # a NaN or inf appeared in the forces
 STATUS_PENETRATION = 2  # a ball-race penetration passed its physical limit
 STATUS_ENERGY = 3  # kinetic energy passed the bound set by the inputs (growth without input)
 STATUS_CHATTER = 4  # a tangential spring reversed while slipping on consecutive steps
+STATUS_DAMPING = 5  # a ball's normal damping grew beyond what the step integrates (a full film at low speed)
 
 # ---- work arrays of one force evaluation: float64[W_SIZE, Z] -------------------------------------
 W_FB = 0  # force on each ball (N), 3 rows
