@@ -11,6 +11,7 @@ includes the waits for a core, is reported beside it with the load average.
 Run: python -m benchmarks.dem_timing -> docs/reports/dem_timing.md
 """
 
+import math
 import os
 import statistics
 import time
@@ -226,7 +227,7 @@ def main():
     every = per_step(model, 1)
     multirate = per_step(model, 10)
     contact_law = per_step(model, NEVER)
-    default_refresh = max(1, round(20e-6 / default_dt))
+    default_refresh = max(1, math.floor(REFRESH_INTERVAL / default_dt * (1.0 + 1e-9)))  # DemModel's own rule
     default = per_step(model, default_refresh)
     real_time = per_simulated_ms(model)
     real_time_4us = per_simulated_ms(model, dt=4e-6)

@@ -58,17 +58,17 @@ def cage_guide_contact(px, py, pz, vx, vy, vz, r_guide, z_guide, gap, K, c0):
     r = math.sqrt(px * px + py * py)
     if r == 0.0:
         return 0.0, 0.0, 0.0
-    scale = 1.0 - r_guide / r
-    sx = px * scale
-    sy = py * scale
+    # as contacts.groove_approach: the offset from the circle, (p_xy (r - r_guide)/r, dz), normalised with
+    # one division
+    radial = r - r_guide
     sz = pz - z_guide
-    dist = math.sqrt(sx * sx + sy * sy + sz * sz)
+    dist = math.sqrt(radial * radial + sz * sz)
     delta = dist - gap
     if delta <= 0.0:
         return 0.0, 0.0, 0.0
-    inv = 1.0 / dist
-    nx = sx * inv
-    ny = sy * inv
-    nz = sz * inv
+    inv = 1.0 / (r * dist)
+    nx = px * radial * inv
+    ny = py * radial * inv
+    nz = sz * r * inv
     f = damped_hertz(K, c0, delta, vx * nx + vy * ny + vz * nz)
     return -f * nx, -f * ny, -f * nz

@@ -49,15 +49,15 @@ def groove_approach(px, py, pz, cx, cy, cz, rho, rg):
     r = math.sqrt(dx * dx + dy * dy)
     if r == 0.0:
         return -1.0, 0.0, 0.0, 0.0
-    scale = 1.0 - rho / r
-    sx = dx * scale
-    sy = dy * scale
+    # s = (dx (r - rho)/r, dy (r - rho)/r, dz): |s| = sqrt((r - rho)^2 + dz^2), and n = s/|s| needs only
+    # 1/(r |s|) (one division instead of rho/r and 1/|s|)
+    radial = r - rho
     sz = pz - cz
-    dist = math.sqrt(sx * sx + sy * sy + sz * sz)
+    dist = math.sqrt(radial * radial + sz * sz)
     if dist == 0.0:
         return -1.0, 0.0, 0.0, 0.0
-    inv = 1.0 / dist
-    return dist - rg, sx * inv, sy * inv, sz * inv
+    inv = 1.0 / (r * dist)
+    return dist - rg, dx * radial * inv, dy * radial * inv, sz * r * inv
 
 
 @kernel(inline="always")
@@ -99,9 +99,9 @@ def tangential_spring(ox, oy, oz, nx, ny, nz, vtx, vty, vtz, dt, kt, f_limit):
         fx *= scale
         fy *= scale
         fz *= scale
-        sx = -fx / kt
-        sy = -fy / kt
-        sz = -fz / kt
+        sx *= scale  # the spring that carries the capped force, -F/kt (no division)
+        sy *= scale
+        sz *= scale
         reversed_ = sx * ox + sy * oy + sz * oz < 0.0
     return sx, sy, sz, fx, fy, fz, slipping, reversed_
 
