@@ -91,27 +91,28 @@ BENCHMARK_ARGS = {"dem_closed_loop": ["--runs", "1"]}
 # Why a target is missed, where it is: keyed by (benchmark, metric). Written from the profiles in the reports.
 CAUSES = {
     ("dem_timing", "step, tribology every step (CPU median)"): (
-        "the refresh of the 18 contacts is about 1.5 us by itself: per contact 2 logarithms, 3 exponentials and a "
-        "power of 1.5 in the normal damping (kernels.ehl.normal_damping); the contact laws, inlined and free of "
-        "array-passing calls, take 0.6 us (docs/dem.md, Speed)"
+        "the refresh of the 18 contacts is about 1.1 us by itself: per loaded contact 2 logarithms and 3 "
+        "exponentials (the fused Hamrock-Dowson films and Houpert's rolling force, a quarter of it) besides the "
+        "groove geometry and the Houpert forces; the Verlet step about 0.9 us (docs/dem.md, Speed)"
     ),
     ("dem_timing", "step, multirate tribology every 10 steps (CPU median)"): (
-        "the Verlet step itself is about 1.1 us: 18 ball-race contact laws 0.6 us, 9 cage balls 0.24 us, the "
-        "rest integration; a refresh every 10 steps adds 0.15 us (docs/dem.md, Speed)"
+        "the Verlet step itself is about 0.9 us: 18 ball-race contact laws 0.46 us, 9 cage balls 0.16 us, the "
+        "rest integration; a refresh every 10 steps adds about 0.11 us (docs/dem.md, Speed)"
     ),
     ("dem_timing", "1 ms simulated at the default dt (wall)"): (
-        "the default step includes the tangential spring's own stability limit (sqrt(2)/omega_t, docs/dem.md, "
-        "Integration): 2.67 us at 3 kN instead of 2.99 us, 12 % more steps per simulated ms"
+        "the default step, 2.53 us at 3 kN, is set by the cage ball's bound at the mixed film's mu (docs/dem.md, "
+        "Integration), just below the tangential springs' 2.67 us: about 396 steps per simulated ms"
     ),
     ("dem_fmu", "doStep of 1 ms simulated incl. FMI transfers (wall median)"): (
         "the DEM steps of the millisecond (see the dem_timing rows) plus about 0.05 ms of FMI transfers"
     ),
     ("dem_closed_loop", "runs/startup_dem.toml, 10 s simulated (wall)"): (
-        "the B7214C's estimated cage balls (1 mm, 5 mg) set a 0.55 us default step: 10 s of two bearings are "
-        "about 36 million DEM steps; at about 1.5 us each that is about a minute per bearing (docs/dem.md)"
+        "two B7214C with all 34 contacts loaded at a 4.5-4.8 us step: about 2.1 million steps per bearing at about "
+        "2.2 us each; the cold oil's full film at low speed needs 0.26-3.7 us steps in the first 0.2 s "
+        "(docs/dem.md, Integration)"
     ),
     ("dem_closed_loop", "wall per simulated second, both DEM bearings"): (
-        "as above: two B7214C at a 0.55 us step, set by the cage balls of the estimated geometry"
+        "as above: two B7214C of 17 balls, every contact loaded by the axial preload"
     ),
     ("master_memory", "first 1000 create/free cycles: RSS growth"): (
         "a one-time growth of the allocator and of fmpy's and numba's caches in the first block; the next two "

@@ -112,6 +112,21 @@ def test_wrong_unit_is_named(tmp_path):
         load_bearing(_write(tmp_path, text))
 
 
+def test_cage_mass_is_shared_by_the_dem_cage_balls(tmp_path):
+    """cage.mass (kg, the whole cage) gives each of the Z DEM cage balls m/Z; without it the cage balls are solid
+    balls of the cage material (the 6208 of the papers); a non-positive mass is refused with its range."""
+    from bearing_fmu.kernels.ball_dynamics import state as s
+    from bearing_fmu.models.dem import DemModel
+
+    assert load_bearing("B7214C").cage_mass == 14e-3 and load_bearing("6208").cage_mass == 0.0
+    assert DemModel("B7214C", "iso_vg68_mineral").par[s.P_M_CAGE] == pytest.approx(14e-3 / 17, rel=1e-15)
+    solid = 1140.0 * 4.0 / 3.0 * math.pi * 4.19e-3**3  # PA66, R_z of Guessasma 2018 Table 1
+    assert DemModel("6208", "guessasma_oil").par[s.P_M_CAGE] == pytest.approx(solid, rel=1e-12)
+    text = BASE.replace("[cage]\n", '[cage]\nmass = { value = 0.0, unit = "kg", source = "test" }\n')
+    with pytest.raises(ParameterError, match=r"'cage.mass' = 0.0 kg is outside the allowed range \]0.0, 1000.0\]"):
+        load_bearing(_write(tmp_path, text))
+
+
 def test_unknown_catalogue_name_lists_choices():
     with pytest.raises(ParameterError, match="unknown bearing 'xyz'.*6208"):
         load_bearing("xyz")
