@@ -98,7 +98,7 @@ from .state import (
 from .tribology import TC_SIZE, race_circle, refresh_tribology, tribology_constants
 
 
-@kernel
+@kernel(inline="always")  # called once per refresh from advance: no array-passing call
 def ball_capacitances(trib, work):
     """work[W_CAP_BALL, j] = capacitance (F) of ball j from the last refresh: its two contacts in series."""
     for j in range(trib.shape[2]):

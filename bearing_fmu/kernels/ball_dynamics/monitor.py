@@ -88,7 +88,7 @@ def critical_time_step(par, Q_inner, Q_outer, C_inner, C_outer, Q_cage):
     return dt
 
 
-@kernel
+@kernel(inline="always")  # called once per refresh from advance: no array-passing call
 def kinetic_energy(balls, cage, ring, par):
     """Kinetic energy (J) of the balls (translation and rotation), cage balls and inner-ring translation
     (the ring's prescribed rotation is left out: it is an input)."""
@@ -102,7 +102,7 @@ def kinetic_energy(balls, cage, ring, par):
     return e
 
 
-@kernel
+@kernel(inline="always")  # called once per refresh from advance: no array-passing call
 def damping_step_ratio(trib, par, dt):
     """Largest (c_i + c_o) dt / m over the balls, and its ball: the normal damping (N.s/m, of the loaded
     contacts at the last tribology refresh) of a ball times the step dt (s) over its mass. A pure damper
