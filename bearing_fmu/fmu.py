@@ -191,6 +191,7 @@ class BearingDEM(_BearingSlave):
             float(self.Pd),
             float(self.dt),
             float(self.refresh_interval),
+            float(self.traction_limit),
             bool(self.average_outputs),
         )
 
@@ -203,6 +204,7 @@ class BearingDEM(_BearingSlave):
             Pd=None if self.Pd_from_file else self.Pd,
             refresh_interval=self.refresh_interval,
             averaged=bool(self.average_outputs),
+            traction_limit=self.traction_limit,
         )
 
     def _advance(self, step_size):

@@ -129,6 +129,20 @@ def friction_coefficient(lam):
 
 
 @kernel
+def traction_coefficient(lam, limit):
+    """Coulomb limit of the DEM's tangential force (-): the papers' mu(Lambda) (friction_coefficient) for
+    limit <= 0; otherwise 0.1 for Lambda <= 1, linear to `limit` on ]1, 3] and `limit` above: a full film that
+    carries up to the lubricant's limiting traction coefficient instead of the papers' 0.01."""
+    if limit <= 0.0:
+        return friction_coefficient(lam)
+    if lam <= 1.0:
+        return 0.1
+    if lam <= 3.0:
+        return 0.1 + 0.5 * (limit - 0.1) * (lam - 1.0)
+    return limit
+
+
+@kernel
 def normal_damping(lam, Q, alpha_e, eta, a_major, R_ball, h_min):
     """Normal damping C_n(Lambda) (N.s/m) of one contact (Guessasma & Machado 2018, eqs. 4-5, Table 2).
 

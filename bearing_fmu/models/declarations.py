@@ -595,6 +595,16 @@ DEM_PARAMETERS = (
         limits="> 0; beyond 1 ms the film and friction lag the ball motion (docs/reports/dem_error.md)",
     ),
     Variable(
+        "traction_limit",
+        "1",
+        "Coulomb limit of the balls' tangential contact force in a full film (ramped from 0.1 at Lambda = 1), "
+        "0 = the papers' mu(Lambda) (0.01 in full film)",
+        start=0.0,
+        min=0.0,
+        max=0.1,
+        limits="0 = the papers' law; at most the boundary regime's 0.1",
+    ),
+    Variable(
         "average_outputs",
         "",
         "true: torque, P_loss, Q_inner_ring, Q_outer_ring and C_bearing are means over the communication step; "

@@ -70,6 +70,7 @@ CHATTER_STEPS = 50
 # dissipation from 0.48 (docs/dem.md)
 DAMPING_PLAN = 0.25
 DAMPING_STOP = 0.35
+TRACTION_LIMIT_MAX = 0.1  # the boundary regime's mu: a full film carries no more than dry contact
 MU_BOUNDARY = 0.1  # mu(Lambda) of the boundary regime (kernels.ehl.friction_coefficient), before any contact
 # an automatic step that the monitor stops is halved and the call repeated, at most this often (16x smaller)
 AUTO_STEP_HALVINGS = 4
@@ -120,7 +121,10 @@ class DemModel:
     refresh interval in steps (>= 1); None = every refresh_interval (s) of simulated time. The defaults
     SAFETY and REFRESH_INTERVAL are chosen from the error-vs-run-time front (docs/reports/dem_error.md). Pd: diametral
     clearance (m) overriding the file. ring_mass: inner-ring mass (kg); None = estimated from the bore.
-    kt_ratio: tangential/normal stiffness (-). averaged: True (default) reports torque, P_loss, Q_inner_ring,
+    kt_ratio: tangential/normal stiffness (-). traction_limit: Coulomb limit (-) of the tangential force in a full
+    film, ramped from 0.1 at Lambda = 1 (kernels.ehl.traction_coefficient); 0 (default) = the papers' mu(Lambda),
+    0.01 in full film (docs/dem.md, B7214C: a full film that can hold the gyroscopic moment).
+    averaged: True (default) reports torque, P_loss, Q_inner_ring,
     Q_outer_ring and C_bearing as means over each advance() interval (what a co-simulation partner integrates:
     the energy of the step), False their values at the interval's last step (docs/dem.md, Outputs).
     """
@@ -138,6 +142,7 @@ class DemModel:
         safety=SAFETY,
         refresh_interval=REFRESH_INTERVAL,
         averaged=True,
+        traction_limit=0.0,
     ):
         self.scene = (scene or Scene(name="dem", fidelity="dem")).validate()
         if self.scene.fidelity != "dem":
@@ -157,6 +162,12 @@ class DemModel:
             raise InputError(
                 f"refresh_interval = {refresh_interval} s is outside the allowed range ]0, {DEM_REFRESH_MAX:g}] s"
             )
+        if not (math.isfinite(traction_limit) and 0.0 <= traction_limit <= TRACTION_LIMIT_MAX):
+            raise InputError(
+                f"traction_limit = {traction_limit} is outside the allowed range [0, {TRACTION_LIMIT_MAX:g}] "
+                "(0 = the papers' mu(Lambda))"
+            )
+        self.traction_limit = float(traction_limit)
         self.averaged = bool(averaged)
         self.safety = float(safety)
         self.refresh_interval = float(refresh_interval)
@@ -310,6 +321,7 @@ class DemModel:
             p[s.P_HP_I + s.P_HERTZ_SCALE_STRIDE * race] = p1 * cube
         p[s.P_CHATTER] = CHATTER_STEPS
         p[s.P_DAMPING_STOP] = DAMPING_STOP
+        p[s.P_TRACTION] = self.traction_limit
         p[s.P_CAPACITANCE] = 1.0 if sc.capacitance else 0.0
         p[s.P_REFRESH] = 1
         return p

@@ -22,6 +22,7 @@ from fmpy import read_model_description
 from fmpy.validation import validate_fmu
 
 from bearing_fmu.build import SCENES_DIR
+from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.kernels.ball_dynamics.state import (
     ST_CODE,
     STATUS_DAMPING,
@@ -30,6 +31,7 @@ from bearing_fmu.kernels.ball_dynamics.state import (
     STATUS_OK,
     STATUS_PENETRATION,
 )
+from bearing_fmu.kernels.ehl import friction_coefficient
 from bearing_fmu.models.dem import DemModel, DemUnstableError
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
@@ -83,7 +85,16 @@ def test_validate_and_variables(dem_fmu):
     shared |= {"omega_ball_cage", "FTF", "BPFO", "BPFI", "BSF", "h_c_inner", "h_c_outer"}
     shared |= {f"K[{i},{j}]" for i in range(1, 6) for j in range(1, 6)}
     assert outputs == shared | {"cage_slip", "SRR_max", "monitor_status"}
-    assert parameters == {"bearing", "lubricant", "Pd_from_file", "Pd", "dt", "refresh_interval", "average_outputs"}
+    assert parameters == {
+        "bearing",
+        "lubricant",
+        "Pd_from_file",
+        "Pd",
+        "dt",
+        "refresh_interval",
+        "traction_limit",
+        "average_outputs",
+    }
     quasi_static = {v.name: v for v in read_model_description(str(_fmu("Bearing", "quasi_static.toml"))).modelVariables}
     for name in shared | inputs:
         assert (by_name[name].unit, by_name[name].type) == (quasi_static[name].unit, quasi_static[name].type), name
@@ -200,6 +211,28 @@ def test_bad_parameter_fails_initialisation_with_its_range(dem_fmu):
     assert probe.init_statuses == [3]  # fmi2Error
     assert any("dt = -1e-06 s is outside the allowed range [0, 0.0001] s" in t for t in error_messages())
     assert step_status(fmu, 0.0, H) == 2
+    fmu.freeInstance()
+
+
+def test_traction_limit_parameter_reaches_the_model_and_is_range_checked(dem_fmu):
+    """traction_limit = 0.05 through the FMU gives the outputs of DemModel(traction_limit=0.05) bit for bit (a 6208
+    start-up into its mixed film, where the limit changes the balls' Coulomb limit); 0.2 fails initialisation
+    with the parameter's range."""
+    model = DemModel(scene=dem_scene(), traction_limit=0.05)
+    names = output_names(dem_fmu)
+    with opened(dem_fmu, "traction", {"traction_limit": 0.05}) as (fmu, vr):
+        for n in range(6):
+            set_inputs(fmu, vr, 100.0 * n, 3000.0)
+            fmu.doStep(n * H, H)
+            got = read_outputs(fmu, vr, names)
+            ref = model.evaluate(model.time + H, omega=100.0 * n, F_x=3000.0)
+            assert got == ref, n
+    assert (model.trib[s.T_MU] != [[friction_coefficient(x) for x in row] for row in model.trib[s.T_LAMBDA]]).any()
+    probe.messages.clear()
+    probe.init_statuses.clear()
+    fmu, vr, _ = probe.open_fmu(str(dem_fmu), {"traction_limit": 0.2})
+    assert probe.init_statuses == [3]  # fmi2Error
+    assert any("traction_limit = 0.2" in t and "allowed range" in t for t in error_messages())
     fmu.freeInstance()
 
 

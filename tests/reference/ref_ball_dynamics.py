@@ -113,7 +113,7 @@ def refresh(st, par, lub, omega, T_oil):
             R_c = 2.0 * f * D / (2.0 * f + 1.0)
             F_H = HEATHCOTE_C * mu * Q * a * a / (R_c * Rx)
             M_s = 3.0 / 8.0 * mu * Q * a * ell_E
-            trib[s.T_MU, race, j] = mu
+            trib[s.T_MU, race, j] = ref_ehl.traction_coefficient(lam, par[s.P_TRACTION])
             trib[s.T_C_N, race, j] = ref_ehl.normal_damping(lam, Q, par[s.P_ALPHA_E], eta, a, 0.5 * D, h_min)
             trib[s.T_REGIME, race, j] = ref_ehl.lubrication_regime(lam)
             trib[s.T_F_ROLL, race, j] = F_R + 0.5 * (F_h + F_H)

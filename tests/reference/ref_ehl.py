@@ -108,6 +108,14 @@ def friction_coefficient(lam):
     return float(np.interp(lam, [1.0, 3.0], [0.1, 0.01]))
 
 
+def traction_coefficient(lam, limit):
+    """The papers' mu(Lambda) for limit <= 0; else 0.1 up to Lambda = 1, straight line to `limit` at 3, `limit`
+    beyond."""
+    if limit <= 0.0:
+        return friction_coefficient(lam)
+    return float(np.interp(lam, [1.0, 3.0], [0.1, limit]))
+
+
 def normal_damping(lam, Q, alpha_e, eta, a_major, R_ball, h_min):
     """C_n (N s/m). Hysteretic C_h = 1.5 alpha_e K_n delta with K_n = Q/delta (secant), so C_h =
     1.5 alpha_e Q; fluid C_f = (3 pi eta a / sqrt 2)(R_b/h_min)^1.5. Boundary (or no film): C_h;
@@ -134,5 +142,6 @@ TWINS = {
     "film_parameter": film_parameter,
     "lubrication_regime": lubrication_regime,
     "friction_coefficient": friction_coefficient,
+    "traction_coefficient": traction_coefficient,
     "normal_damping": normal_damping,
 }

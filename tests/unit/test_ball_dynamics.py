@@ -50,10 +50,13 @@ def _scale_err(a, b):
     return float(np.max(diff)) / scale
 
 
-@pytest.mark.parametrize("film, steps", [(0, STEPS), (1, STEPS // 3), (2, STEPS // 3)])
-def test_kernel_matches_twin_over_steps(running_6208, film, steps):
+@pytest.mark.parametrize(
+    "film, steps, traction", [(0, STEPS, 0.0), (1, STEPS // 3, 0.0), (2, STEPS // 3, 0.0), (0, STEPS // 3, 0.05)]
+)
+def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction):
     """Film formulas: 0 Hamrock-Dowson (the kernel's fused fast path), 1 Masjedi-Khonsari and 2 Chittenden
-    (through kernels.ehl.film_thickness)."""
+    (through kernels.ehl.film_thickness); the papers' mu(Lambda) and a traction limit of 0.05 (mixed film here:
+    the tangential limit differs from the Houpert terms' mu)."""
     model = running_6208
     state = model.get_state()
     kernel_state = {k: (v.copy() if isinstance(v, np.ndarray) else v) for k, v in state.items()}
@@ -61,6 +64,7 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps):
     par = model.par.copy()
     par[s.P_REFRESH] = 10
     par[s.P_FILM] = film
+    par[s.P_TRACTION] = traction
     lub = model.lubricant.array
     omega0, omega1, F, T_oil = 150.0, 160.0, (0.0, 3000.0, 0.0), 313.15  # F_y, on the line of ball 1
     acc = np.zeros(s.A_SIZE)
@@ -86,6 +90,9 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps):
         status,
     )
     assert status[s.ST_CODE] == s.STATUS_OK
+    if traction:  # some loaded contact above Lambda = 1, where the traction limit changes the Coulomb limit
+        lam = kernel_state["trib"][s.T_LAMBDA][kernel_state["trib"][s.T_Q] > 0.0]
+        assert (lam > 1.0).any()
     energy, last_power, capacitance = ref.advance(twin_state, par, lub, steps, DT, omega0, omega1, np.array(F), T_oil)
     report = {}
     for name in ("balls", "cage", "ring", "spring", "trib"):

@@ -149,6 +149,18 @@ def test_regime_boundaries_and_friction_ramp():
     assert ek.friction_coefficient(math.inf) == 0.01
 
 
+def test_traction_limit_replaces_the_full_film_friction():
+    """limit 0: the papers' mu(Lambda) exactly; limit 0.05: 0.1 up to Lambda = 1, linear to 0.05 at 3, 0.05 above;
+    against the twin (np.interp) over the whole range."""
+    for lam in (0.0, 0.5, 1.0, 1.7, 2.0, 3.0, 3.5, 100.0, math.inf):
+        assert ek.traction_coefficient(lam, 0.0) == ek.friction_coefficient(lam)
+        for limit in (0.0, 0.01, 0.05, 0.1):
+            assert_close(ek.traction_coefficient(lam, limit), re_.traction_coefficient(lam, limit), RTOL, "mu_t")
+    assert ek.traction_coefficient(2.0, 0.05) == pytest.approx(0.075, rel=1e-14, abs=0)
+    assert ek.traction_coefficient(3.0, 0.05) == pytest.approx(0.05, rel=1e-14, abs=0)
+    assert ek.traction_coefficient(7.0, 0.05) == 0.05 and ek.traction_coefficient(0.9, 0.05) == 0.1
+
+
 def test_mixed_damping_is_the_series_combination():
     lam, Q, h = 2.0, 1457.0, 0.75e-6
     c_h = 1.5 * 0.08 * Q

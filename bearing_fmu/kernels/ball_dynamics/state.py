@@ -39,7 +39,7 @@ S_SIZE = 6
 S_STRIDE = S_OUTER - S_INNER  # inner -> outer block
 
 # ---- per-contact tribology, refreshed every N steps: float64[T_SIZE, 2, Z] (race 0 inner, 1 outer)
-T_MU = 0  # Coulomb coefficient mu(Lambda) (-)
+T_MU = 0  # Coulomb limit of the tangential force, ehl.traction_coefficient (-; the papers' mu(Lambda) by default)
 T_C_N = 1  # normal damping C_n(Lambda) at the refresh load (N.s/m); boundary regime recomputes it
 T_REGIME = 2  # 0 boundary, 1 mixed, 2 full film
 T_F_ROLL = 3  # rolling resistance per surface F_R + (F_h + F_H)/2 (N), applied as a moment on the ball
@@ -123,7 +123,8 @@ P_HP_O = 56
 P_HERTZ_SCALE_STRIDE = P_HA_O - P_HA_I  # inner -> outer block of the Hertz scaling
 P_CAPACITANCE = 57  # 1: compute the contact capacitances; 0: the scene turned them off (not computed, 0)
 P_DAMPING_STOP = 58  # largest (c_i + c_o) dt / m of a ball at a refresh before the monitor stops (-)
-P_SIZE = 59
+P_TRACTION = 59  # limiting traction coefficient of a full film for the tangential force; 0 = the papers' mu(Lambda)
+P_SIZE = 60
 
 # ---- outputs of advance(): float64[O_SIZE] --------------------------------------------------------
 O_OMEGA_CAGE = 0  # cage speed: mean orbital angular speed of the balls (rad/s)

@@ -32,6 +32,7 @@ from ..ehl import (
     friction_coefficient,
     lubrication_regime,
     normal_damping,
+    traction_coefficient,
 )
 from ..torque import heathcote_force, hysteresis_force, spin_moment
 from .contacts import groove_approach
@@ -60,6 +61,7 @@ from .state import (
     P_RX_I,
     P_RY_I,
     P_SIGMA_I,
+    P_TRACTION,
     P_Z_I,
     R_VX,
     R_X,
@@ -150,6 +152,7 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
     film = int(par[P_FILM])
     capacitance = par[P_CAPACITANCE] > 0.5
     pressure = int(par[P_PRESSURE])
+    traction = par[P_TRACTION]
     for race in range(2):
         h = RACE_STRIDE_HERTZ * race
         cx, cy, cz, rho = race_circle(race, ring, par)
@@ -239,8 +242,8 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
                 h_c = 0.0
                 h_min = 0.0
             lam = film_parameter(h_min, sigma)
-            mu = friction_coefficient(lam)
-            trib[T_MU, race, j] = mu
+            mu = friction_coefficient(lam)  # the papers' mu(Lambda): the Houpert sliding terms below
+            trib[T_MU, race, j] = traction_coefficient(lam, traction)
             trib[T_C_N, race, j] = normal_damping(lam, Q, par[P_ALPHA_E], eta, a, half_d, h_min)
             trib[T_REGIME, race, j] = lubrication_regime(lam)
             # Houpert forces (F_R above, the others from kernels.torque); the contact's power as
