@@ -27,6 +27,7 @@ from ..kernels.ball_dynamics import state as s
 from ..kernels.ball_dynamics.monitor import critical_time_step, damping_step_ratio, kinetic_energy
 from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_angles, contact_loads
 from ..kernels.ball_dynamics.stiffness import stiffness_matrix
+from ..kernels.ehl import friction_coefficient
 from ..kernels.geometry import (
     ball_direction,
     ball_mass,
@@ -70,8 +71,8 @@ CHATTER_STEPS = 50
 # dissipation from 0.48 (docs/dem.md)
 DAMPING_PLAN = 0.25
 DAMPING_STOP = 0.35
-TRACTION_LIMIT_MAX = 0.1  # the boundary regime's mu: a full film carries no more than dry contact
-MU_BOUNDARY = 0.1  # mu(Lambda) of the boundary regime (kernels.ehl.friction_coefficient), before any contact
+MU_BOUNDARY = friction_coefficient(0.0)  # mu(Lambda) of the boundary regime (0.1), before any contact
+TRACTION_LIMIT_MAX = MU_BOUNDARY  # a full film carries no more than the boundary regime
 # an automatic step that the monitor stops is halved and the call repeated, at most this often (16x smaller)
 AUTO_STEP_HALVINGS = 4
 ENERGY_FACTOR = 10.0  # kinetic-energy bound: this factor x (pure-rolling energy + load x groove clearance)
