@@ -75,15 +75,23 @@ def two_thread_command():
     return [sys.executable, "-c", TWO_THREAD_HOST, str(FMUS / "Bearing.fmu"), str(FMUS / "SpindleThermal.fmu")]
 
 
+def failure_text(proc):
+    """What a failing process said: the end of its stderr (the host's own error) and the first FMU error
+    message (fmpy prints the FMU's log to stdout; the layer puts the Python exception before its traceback)."""
+    k = proc.stdout.find("[ERROR]")
+    fmu_log = proc.stdout[k : k + 3000] if k >= 0 else proc.stdout[-1000:]
+    return f"exit code {proc.returncode}\nstderr: {proc.stderr[-1500:]}\nFMU log: {fmu_log}"
+
+
 def exit_codes(command, n):
-    """Exit codes of n fresh processes of `command` (run one after the other) and the stderr of the
-    first failing one."""
+    """Exit codes of n fresh processes of `command` (run one after the other) and what the first failing
+    one said (failure_text)."""
     codes, first_failure = collections.Counter(), ""
     for _ in range(n):
         proc = subprocess.run(command, cwd=ROOT, capture_output=True, text=True)
         codes[proc.returncode] += 1
         if proc.returncode != 0 and not first_failure:
-            first_failure = proc.stderr[-2000:]
+            first_failure = failure_text(proc)
     return codes, first_failure
 
 

@@ -26,7 +26,17 @@
 
 /* Python code the layer needs; compiled once into its own namespace. */
 static const char *HELPER_SOURCE =
-    "import importlib, inspect, os, pickle, sys, traceback\n"
+    "import importlib, inspect, os, pickle, sys, threading, traceback, types\n"
+    "# One set-up lock for every FMU of the product in the process. Each FMU brings its own copy of this\n"
+    "# library and so its own namespace: the lock lives in a module registered once in sys.modules.\n"
+    "# Two FMUs set up by two threads at once (imports, numba loading kernels and filling its registries)\n"
+    "# are not safe: one of them can fail to instantiate.\n"
+    "_shared = sys.modules.setdefault('_bearing_fmu_runtime_shared', types.ModuleType('_bearing_fmu_runtime_shared'))\n"
+    "_setup_lock = _shared.__dict__.setdefault('setup_lock', threading.RLock())\n"
+    "def begin_setup():\n"
+    "    _setup_lock.acquire()\n"
+    "def end_setup():\n"
+    "    _setup_lock.release()\n"
     "def slave_class(resources):\n"
     "    with open(os.path.join(resources, 'slavemodule.txt'), encoding='utf-8') as fh:\n"
     "        name = fh.readline().strip()\n"
@@ -39,7 +49,9 @@ static const char *HELPER_SOURCE =
     "        raise ImportError(f'no Fmi2Slave subclass in module {name} ({module.__file__})')\n"
     "    return max(found, key=lambda c: len(c.__mro__))\n"
     "def describe(kind, value, tb):\n"
-    "    return ''.join(traceback.format_exception(kind, value, tb)).rstrip()\n"
+    "    # the exception first: a host that shows only the start of a long message still shows the cause\n"
+    "    head = ''.join(traceback.format_exception_only(kind, value)).rstrip()\n"
+    "    return head + '\\n' + ''.join(traceback.format_exception(kind, value, tb)).rstrip()\n"
     "def dumps(state):\n"
     "    return pickle.dumps(state, protocol=pickle.HIGHEST_PROTOCOL)\n"
     "loads = pickle.loads\n";
@@ -76,7 +88,7 @@ static PyObject *helper; /* namespace of HELPER_SOURCE; lives as long as the pro
  * a call by an interned name skips building the name and parsing a format string per call. */
 static const char *KIND_METHODS[N_KINDS] = {"get_real",   "get_integer", "get_boolean", "get_string",
                                             "set_real",   "set_integer", "set_boolean", "set_string"};
-static PyObject *kind_names[N_KINDS], *name_do_step, *name_log_queue;
+static PyObject *kind_names[N_KINDS], *name_do_step, *name_log_queue, *name_begin_setup, *name_end_setup;
 
 /* -- logging -------------------------------------------------------------------------------- */
 
@@ -160,7 +172,17 @@ static void log_exception(const Instance *c, const char *what)
         text = PyObject_CallMethod(helper, "describe", "(OOO)", kind, value ? value : Py_None, tb ? tb : Py_None);
     const char *utf8 = text ? PyUnicode_AsUTF8(text) : NULL;
     PyErr_Clear();
-    emitf(c, fmi2Error, "%s: %s: %s", c->name, what, utf8 ? utf8 : "unknown Python error");
+    const char *detail = utf8 ? utf8 : "unknown Python error";
+    /* sized to the traceback: emitf's fixed buffer would cut a long one before its end */
+    size_t n = strlen(c->name) + strlen(what) + strlen(detail) + 5;
+    char *message = malloc(n);
+    if (message != NULL) {
+        snprintf(message, n, "%s: %s: %s", c->name, what, detail);
+        emit(c, fmi2Error, "logStatusError", message);
+        free(message);
+    } else {
+        emitf(c, fmi2Error, "%s: %s: %s", c->name, what, detail);
+    }
     Py_XDECREF(text);
     Py_XDECREF(kind);
     Py_XDECREF(value);
@@ -271,6 +293,8 @@ static int ensure_python(const char *resources, char *error, size_t size)
                 kind_names[k] = PyUnicode_InternFromString(KIND_METHODS[k]);
             name_do_step = PyUnicode_InternFromString("do_step");
             name_log_queue = PyUnicode_InternFromString("log_queue");
+            name_begin_setup = PyUnicode_InternFromString("begin_setup");
+            name_end_setup = PyUnicode_InternFromString("end_setup");
         }
         PyGILState_Release(gil);
     }
@@ -326,10 +350,22 @@ static char *uri_to_path(const char *uri)
 const char *fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
 const char *fmi2GetVersion(void) { return fmi2Version; }
 
+/* Call the helper's begin_setup or end_setup (the process-wide set-up lock); holds the GIL, no exception
+ * pending. Waiting for the lock releases the GIL. */
+static void setup_lock(PyObject *name)
+{
+    PyObject *done = PyObject_CallMethodNoArgs(helper, name);
+    if (done == NULL)
+        PyErr_Print(); /* cannot happen short of memory exhaustion: say so rather than hide it */
+    Py_XDECREF(done);
+}
+
 static int create_slave(Instance *c)
 {
     PyObject *args = PyTuple_New(0);
+    setup_lock(name_begin_setup);
     c->slave = PyObject_Call(c->cls, args, c->kwargs);
+    setup_lock(name_end_setup);
     Py_DECREF(args);
     if (c->slave == NULL) {
         log_exception(c, "creating the slave");
@@ -382,6 +418,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
         return NULL;
     }
     PyGILState_STATE gil = PyGILState_Ensure();
+    setup_lock(name_begin_setup); /* the class and the slave under one hold: see HELPER_SOURCE */
     c->cls = PyObject_CallMethod(helper, "slave_class", "(s)", resources);
     if (c->cls == NULL)
         log_exception(c, "loading the slave class");
@@ -389,6 +426,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
         c->kwargs = Py_BuildValue("{s:s,s:s,s:O}", "instance_name", c->name, "resources", resources, "visible",
                                   visible ? Py_True : Py_False);
     int ok = c->cls != NULL && c->kwargs != NULL && create_slave(c);
+    setup_lock(name_end_setup);
     if (!ok) {
         release(c);
         c = NULL;

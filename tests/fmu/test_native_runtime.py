@@ -8,9 +8,13 @@
   and prints the FMU's own message (with '%' shown as written);
 - a bad input gives fmi2Discard without the terminate flag and a corrected input continues; the
   same step refused twice becomes fmi2Error (fmpy's simulate_fmu would otherwise retry forever);
-- a Python exception in the slave is fmi2Error with its traceback logged, never fmi2Fatal.
+- a Python exception in the slave is fmi2Error with its traceback logged (the exception first), never
+  fmi2Fatal;
+- FMUs set up by several host threads at once take turns: every copy of the layer in a process holds
+  one set-up lock while it imports and constructs its slave.
 """
 
+import json
 import os
 import shutil
 import subprocess
@@ -182,8 +186,60 @@ def test_python_exception_is_an_error_with_its_traceback(analytic_fmu):
         assert failed.value.status == 3  # fmi2Error, not fmi2Fatal
         texts = [m["message"] for m in probe.messages if m["status"] == 3]
         assert any("Traceback" in t and "TypeError" in t and "is not of type String" in t for t in texts), texts
+        # the exception before its traceback: a host that shows only a message's start still shows the cause
+        assert all(t.index("TypeError") < t.index("Traceback") for t in texts if "Traceback" in t), texts
         assert fmu.getReal([vr["omega"]]) == [0.0]  # the instance is still usable
         fmu.terminate()
     finally:
         fmu.freeInstance()
         shutil.rmtree(unzip, ignore_errors=True)
+
+
+SETUP_TURNS = textwrap.dedent("""
+    import json, sys, threading, time, types
+    from fmpy import extract, read_model_description
+    from fmpy.fmi2 import FMU2Slave
+
+    # the layer's process-wide set-up lock, registered here first so that this host can hold it
+    shared = types.ModuleType("_bearing_fmu_runtime_shared")
+    shared.setup_lock = lock = threading.RLock()
+    sys.modules["_bearing_fmu_runtime_shared"] = shared
+    path = sys.argv[1]
+    md = read_model_description(path)
+    report, done = {}, {}
+
+    def instantiate(fmu, key):
+        fmu.instantiate()
+        done[key] = time.monotonic()
+
+    for key in ("first", "second"):  # two extractions: two copies of the layer, as two FMUs bring
+        fmu = FMU2Slave(guid=md.guid, unzipDirectory=extract(path), modelIdentifier=md.coSimulation.modelIdentifier,
+                        instanceName=key)
+        lock.acquire()  # another FMU's set-up in progress
+        thread = threading.Thread(target=instantiate, args=(fmu, key))
+        thread.start()
+        thread.join(1.0)
+        report[key + "_waited"] = key not in done
+        lock.release()
+        thread.join(120.0)
+        report[key + "_instantiated"] = key in done
+        fmu.freeInstance()
+    print(json.dumps(report))
+""")
+
+
+def test_fmus_set_up_by_several_threads_take_turns(analytic_fmu):
+    """Two threads setting up FMUs at once (imports, numba loading kernels and filling its registries) are
+    not safe. While another set-up holds the process-wide lock, fmi2Instantiate of each copy of the layer
+    waits, and goes on when it is released."""
+    proc = subprocess.run(
+        [sys.executable, "-c", SETUP_TURNS, str(analytic_fmu)], capture_output=True, text=True, timeout=300
+    )
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    report = json.loads(proc.stdout.strip().splitlines()[-1])
+    assert report == {
+        "first_waited": True,
+        "first_instantiated": True,
+        "second_waited": True,
+        "second_instantiated": True,
+    }
