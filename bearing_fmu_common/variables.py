@@ -121,3 +121,9 @@ def gather_plan(variables, arrays):
             by_array[array][0].append(index)
             by_array[array][1].append(slot)
     return [(arrays[name], np.array(src), np.array(dst)) for name, (src, dst) in by_array.items()]
+
+
+def outputs_as_dict(variables, values):
+    """Outputs as a dict name -> SI value: `values` (a 1-D array ordered like `variables`) as floats, the
+    integer variables' as int."""
+    return {v.name: int(x) if v.kind == "integer" else x for v, x in zip(variables, values.tolist())}

@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 
-from bearing_fmu_common.variables import InputLimits, gather_plan, select
+from bearing_fmu_common.variables import InputLimits, gather_plan, outputs_as_dict, select
 
 from ..kernels import radial_bearing as ak
 from ..kernels import rating_life as rl
@@ -90,7 +90,6 @@ class AnalyticModel:
             rl.rating_parameters(0.0, b.Z, b.D, b.dm, b.f_i, b.f_o, 0.0, self._life_parameters)
         self._gather = gather_plan(self.outputs, {"out": self._out, "life": self._life})
         self._slot = {name: k for k, name in enumerate(self.output_names)}
-        self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
 
     def _pack(self):
         b, s = self.bearing, self.scene
@@ -139,10 +138,7 @@ class AnalyticModel:
 
     def as_dict(self):
         """The outputs of the last evaluation as a dict name -> SI value (integers for integer outputs)."""
-        result = dict(zip(self.output_names, self.values.tolist()))
-        for name in self._integers:
-            result[name] = int(result[name])
-        return result
+        return outputs_as_dict(self.outputs, self.values)
 
     def update(self, u):
         """Evaluate for the inputs u = (omega, F_y, T_oil) in self.inputs order (rad/s, N, K) and fill

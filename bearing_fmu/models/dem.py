@@ -20,7 +20,7 @@ import tomllib
 
 import numpy as np
 
-from bearing_fmu_common.variables import InputLimits, gather_plan, select
+from bearing_fmu_common.variables import InputLimits, gather_plan, outputs_as_dict, select
 
 from ..kernels.ball_dynamics import integrator as dyn
 from ..kernels.ball_dynamics import state as s
@@ -229,7 +229,6 @@ class DemModel:
             "freq": self.frequencies,
         }
         self._plan = gather_plan(self.outputs, arrays)
-        self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
         self._before = self.get_state()  # state at the start of the last update(), restored when it fails
         self._retry = self.get_state()  # state at the start of an automatic-step call, for its repetition
         self.step_halvings = 0  # times the last call's automatic step was halved after a monitor stop
@@ -690,10 +689,7 @@ class DemModel:
 
     def as_dict(self):
         """The outputs of the last update() as a dict name -> SI value (integers for integer outputs)."""
-        result = dict(zip(self.output_names, self.values.tolist()))
-        for name in self._integers:
-            result[name] = int(result[name])
-        return result
+        return outputs_as_dict(self.outputs, self.values)
 
     def contacts(self):
         """Per-ball arrays (Z,): azimuth psi (rad, in [0, 2 pi)), orbital and spin speeds (rad/s), and per race

@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from bearing_fmu_common.variables import InputLimits, select
+from bearing_fmu_common.variables import InputLimits, outputs_as_dict, select
 
 from ..kernels import bearing_outputs as bo
 from ..kernels import contacts as ck
@@ -148,7 +148,6 @@ class QuasiStaticModel:
         self._life_parameters = self._rating_parameters() if self.scene.life else np.zeros(rl.LP_SIZE)
         self._K_flat = self.K.reshape(-1)  # a view: the solver writes K in place
         self._summary = np.zeros(bo.BS_SIZE)
-        self._integers = tuple(v.name for v in self.outputs if v.kind == "integer")
         self._load_controlled = tuple(bool(c) for c in self.control)  # per DOF, as plain booleans
         # where update() finds each input in its list u (positions resolved once, not a dict per step)
         position = {name: k for k, name in enumerate(self.input_names)}
@@ -293,10 +292,7 @@ class QuasiStaticModel:
 
     def as_dict(self):
         """The outputs of the last evaluation as a dict name -> SI value (integers for integer outputs)."""
-        result = dict(zip(self.output_names, self.values.tolist()))
-        for name in self._integers:
-            result[name] = int(result[name])
-        return result
+        return outputs_as_dict(self.outputs, self.values)
 
     def update(self, u):
         """Evaluate for the input values u in self.inputs order (SI) and fill self.values (self.outputs
