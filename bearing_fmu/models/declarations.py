@@ -61,6 +61,13 @@ T_OIL = Variable(
     max=T_OIL_RANGE[1],
     limits=T_OIL_LIMITS,
 )
+PD_FROM_FILE = Variable(
+    "Pd_from_file",
+    "",
+    "true: diametral clearance from the bearing file; false: from the parameter Pd",
+    "boolean",
+    start=True,
+)
 PD = Variable(
     "Pd",
     "m",
@@ -180,13 +187,7 @@ ANALYTIC_OUTPUTS = (
 ANALYTIC_PARAMETERS = (
     Variable("bearing", "", BEARING_NAME.format("6208, 6306"), "string", start="6208"),
     Variable("lubricant", "", LUBRICANT_NAME, "string", start="guessasma_oil"),
-    Variable(
-        "Pd_from_file",
-        "",
-        "true: diametral clearance from the bearing file; false: from the parameter Pd",
-        "boolean",
-        start=True,
-    ),
+    PD_FROM_FILE,
     PD,
 )
 
@@ -421,13 +422,7 @@ QUASI_STATIC_OUTPUTS = (
 QUASI_STATIC_PARAMETERS = (
     Variable("bearing", "", BEARING_NAME.format("6208, 6306, B7214C"), "string", start="B7214C"),
     Variable("lubricant", "", LUBRICANT_NAME, "string", start="iso_vg68_mineral"),
-    Variable(
-        "Pd_from_file",
-        "",
-        "true: diametral clearance from the bearing file; false: from the parameter Pd",
-        "boolean",
-        start=True,
-    ),
+    PD_FROM_FILE,
     PD,
     Variable(
         "race_control",
