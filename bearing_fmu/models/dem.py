@@ -31,21 +31,14 @@ from ..kernels.ehl import friction_coefficient
 from ..kernels.geometry import (
     ball_direction,
     ball_mass,
-    curvature_radii,
     free_contact_angle,
     pass_frequencies,
     rolling_kinematics,
 )
-from ..kernels.hertz import (
-    hertz_coefficients_approx,
-    hertz_coefficients_exact,
-    hertz_contact,
-    hertz_stiffness,
-    reduced_modulus,
-)
-from ..kernels.torque import ALPHA_HYSTERESIS_STEEL
+from ..kernels.hertz import hertz_contact, hertz_stiffness
 from ..params import clearance_limits, load_bearing, load_lubricant
-from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
+from ..scene import Scene
+from .contacts import contact_terms, pack, race_contacts
 from .declarations import DEM_DT_MAX, DEM_INPUTS, DEM_OUTPUTS, DEM_REFRESH_MAX
 from .declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
 from .variables import DM_N_LIMIT, MATERIAL_LIMIT, P_MAX_ERROR, InputError, check_clearance, pressure_warnings
@@ -238,12 +231,8 @@ class DemModel:
     def _pack(self, ring_mass, kt_ratio):
         b, sc = self.bearing, self.scene
         D = b.D
-        alpha0 = free_contact_angle(D, b.f_i, b.f_o, self.Pd) if self.Pd > 0.0 else 0.0
-        Rx_i, Ry_i, Rx_o, Ry_o = curvature_radii(D, b.dm, b.f_i, b.f_o, alpha0)
-        coeff = hertz_coefficients_exact if sc.hertz == "exact" else hertz_coefficients_approx
-        E_red = reduced_modulus(b.ball.E, b.ball.nu, b.ring.E, b.ring.nu)
-        ci = coeff(Rx_i, Ry_i)
-        co = coeff(Rx_o, Ry_o)
+        rc = race_contacts(b, sc, self.Pd)
+        alpha0, Rx_i, Ry_i, Rx_o, Ry_o, ci, co, E_red = rc
         p = np.zeros(s.P_SIZE)
         p[s.P_Z] = b.Z
         p[s.P_D] = D
@@ -264,19 +253,7 @@ class DemModel:
         p[s.P_RG_O] = (b.f_o - 0.5) * D
         p[s.P_KH_I] = hertz_stiffness(Rx_i, Ry_i, E_red, *ci)
         p[s.P_KH_O] = hertz_stiffness(Rx_o, Ry_o, E_red, *co)
-        p[s.P_RX_I], p[s.P_RY_I] = Rx_i, Ry_i
-        p[s.P_K_I], p[s.P_EE_I], p[s.P_KK_I] = ci
-        p[s.P_RX_O], p[s.P_RY_O] = Rx_o, Ry_o
-        p[s.P_K_O], p[s.P_EE_O], p[s.P_KK_O] = co
-        p[s.P_E_RED] = E_red
-        p[s.P_SIGMA_I] = sc.roughness_factor * math.hypot(b.Ra_inner, b.Ra_ball)
-        p[s.P_SIGMA_O] = sc.roughness_factor * math.hypot(b.Ra_outer, b.Ra_ball)
-        p[s.P_FILM] = FILM_FORMULAS[sc.film]
-        p[s.P_PRESSURE] = PERMITTIVITY_PRESSURES[sc.permittivity_pressure]
-        p[s.P_H_FLOOR] = sc.film_floor
-        p[s.P_ALPHA_H] = ALPHA_HYSTERESIS_STEEL
-        p[s.P_F_I] = b.f_i
-        p[s.P_F_O] = b.f_o
+        pack(p, s, "P_", contact_terms(b, sc, rc))
         p[s.P_ALPHA_E] = ALPHA_E
         p[s.P_KT_RATIO] = kt_ratio
         p[s.P_V_REG] = V_REG

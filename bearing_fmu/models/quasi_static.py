@@ -16,17 +16,12 @@ from ..kernels import bearing_outputs as bo
 from ..kernels import contacts as ck
 from ..kernels import jones_harris as qk
 from ..kernels import rating_life as rl
-from ..kernels.geometry import ball_mass, curvature_radii, free_contact_angle
-from ..kernels.hertz import (
-    hertz_coefficients_approx,
-    hertz_coefficients_exact,
-    hertz_contact,
-    hertz_stiffness,
-    reduced_modulus,
-)
-from ..kernels.torque import ALPHA_HYSTERESIS_STEEL, TL_SIZE
+from ..kernels.geometry import ball_mass, free_contact_angle
+from ..kernels.hertz import hertz_contact, hertz_stiffness
+from ..kernels.torque import TL_SIZE
 from ..params import load_bearing, load_lubricant
-from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, RACE_CONTROLS, Scene
+from ..scene import RACE_CONTROLS, Scene
+from .contacts import contact_terms, pack, race_contacts
 from .declarations import (
     DISPLACEMENT_LIMIT,
     DOF_NAMES,
@@ -179,12 +174,8 @@ class QuasiStaticModel:
     # -- set-up --------------------------------------------------------------------------------
     def _pack(self):
         b, s = self.bearing, self.scene
-        alpha0 = free_contact_angle(b.D, b.f_i, b.f_o, self.Pd) if self.Pd > 0.0 else 0.0
-        Rx_i, Ry_i, Rx_o, Ry_o = curvature_radii(b.D, b.dm, b.f_i, b.f_o, alpha0)
-        coeff = hertz_coefficients_exact if s.hertz == "exact" else hertz_coefficients_approx
-        E_red = reduced_modulus(b.ball.E, b.ball.nu, b.ring.E, b.ring.nu)
-        ci = coeff(Rx_i, Ry_i)
-        co = coeff(Rx_o, Ry_o)
+        rc = race_contacts(b, s, self.Pd)
+        Rx_i, Ry_i, Rx_o, Ry_o, ci, co, E_red = rc.Rx_i, rc.Ry_i, rc.Rx_o, rc.Ry_o, rc.ci, rc.co, rc.E_red
         qs = np.zeros(qk.QS_SIZE)
         qs[qk.QS_Z] = b.Z
         qs[qk.QS_D] = b.D
@@ -210,20 +201,8 @@ class QuasiStaticModel:
         qs[qk.QS_MAXIT] = s.max_iterations
         qs[qk.QS_STIFFNESS] = 1.0 if s.stiffness else 0.0
         cp = np.zeros(ck.CP_SIZE)
-        cp[ck.CP_RX_I], cp[ck.CP_RY_I] = Rx_i, Ry_i
-        cp[ck.CP_K_I], cp[ck.CP_EE_I], cp[ck.CP_KK_I] = ci
-        cp[ck.CP_RX_O], cp[ck.CP_RY_O] = Rx_o, Ry_o
-        cp[ck.CP_K_O], cp[ck.CP_EE_O], cp[ck.CP_KK_O] = co
-        cp[ck.CP_E_RED] = E_red
-        cp[ck.CP_SIGMA_I] = s.roughness_factor * math.hypot(b.Ra_inner, b.Ra_ball)
-        cp[ck.CP_SIGMA_O] = s.roughness_factor * math.hypot(b.Ra_outer, b.Ra_ball)
-        cp[ck.CP_FILM] = FILM_FORMULAS[s.film]
-        cp[ck.CP_PRESSURE] = PERMITTIVITY_PRESSURES[s.permittivity_pressure]
-        cp[ck.CP_H_FLOOR] = s.film_floor
+        pack(cp, ck, "CP_", contact_terms(b, s, rc))
         cp[ck.CP_C_BACKGROUND] = s.background_capacitance
-        cp[ck.CP_ALPHA_H] = ALPHA_HYSTERESIS_STEEL
-        cp[ck.CP_F_I] = b.f_i
-        cp[ck.CP_F_O] = b.f_o
         cp[ck.CP_D] = b.D
         cp[ck.CP_CAPACITANCE] = 1.0 if s.capacitance else 0.0
         cp[ck.CP_TORQUE] = 1.0 if s.torque else 0.0
