@@ -11,10 +11,10 @@ takes the GIL, and run_libcosim destroys the execution before returning. 30 cons
 processes exited 0 when this was written; `test_fresh_processes_exit_0` keeps checking a few.
 """
 
+import os
 import shutil
 import subprocess
 import sys
-import tempfile
 import textwrap
 from pathlib import Path
 
@@ -258,10 +258,13 @@ def test_errors_name_instance_and_variable(analytic_fmu):
     assert run_libcosim({"instances": {"b": {"fmu": fmu}}}, 0.1, 0.1, ["b.y"]).shape == (2,)
 
 
-def test_fresh_processes_exit_0(analytic_fmu):
+def test_fresh_processes_exit_0(analytic_fmu, tmp_path):
     """A script that runs pythonfmu FMUs under libcosim exits 0 (no abort at exit), with a
-    plain return from the script, i.e. no os._exit workaround, and leaves no libcosim extraction."""
-    leftovers = set(Path(tempfile.gettempdir()).glob("libcosim_*"))
+    plain return from the script, i.e. no os._exit workaround, and leaves no libcosim extraction (in a
+    temporary directory of its own: the shared one may hold other processes' extractions)."""
+    own_tmp = tmp_path / "tmp"
+    own_tmp.mkdir()
+    env = {**os.environ, "TMPDIR": str(own_tmp)}
     script = textwrap.dedent(f"""
         import sys
         sys.path.insert(0, {str(ROOT)!r})
@@ -271,7 +274,7 @@ def test_fresh_processes_exit_0(analytic_fmu):
         print(r["b.omega_cage"][-1])
     """)
     for _ in range(3):
-        proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
+        proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120, env=env)
         assert proc.returncode == 0, (proc.returncode, proc.stderr[-2000:])
         assert float(proc.stdout.split()[-1]) == pytest.approx(198.0198, rel=1e-6)
-    assert set(Path(tempfile.gettempdir()).glob("libcosim_*")) <= leftovers
+    assert list(own_tmp.glob("libcosim_*")) == []
