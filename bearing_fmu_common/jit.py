@@ -276,7 +276,8 @@ def kernel(function=None, **overrides):
 
     def decorate(f):
         dispatcher = njit(**options)(f)
-        if cache:
+        # with NUMBA_DISABLE_JIT=1 (debugging) njit returns the plain function: nothing to cache
+        if cache and hasattr(dispatcher, "py_func"):
             dispatcher._cache = KernelCache(dispatcher.py_func)
         return dispatcher
 

@@ -326,6 +326,12 @@ def _ball_eval(X1, X2, ball, kg, w):
     dao_X2 = -so / L_o
     dai_A1 = ci / L_i
     dai_A2 = -si / L_i
+    # the inner angle the kinematics take, a_k, and its gradients: a_i, except for an open inner contact
+    # whose ball lies beyond the inner curvature centre (cos a_i <= 0, at a clearance of the order of the
+    # groove's), where w_m's denominator vanishes at a_i = pi; such a ball rolls on its outer contact's angle
+    a_k, dak_X1, dak_X2, dak_A1, dak_A2 = a_i, -dai_A1, -dai_A2, dai_A1, dai_A2
+    if ci <= 0.0 and d_i <= 0.0:
+        a_k, dak_X1, dak_X2, dak_A1, dak_A2 = a_o, dao_X1, dao_X2, 0.0, 0.0
     dQo_X1 = dQ_o * so
     dQo_X2 = dQ_o * co
     dQi_A1 = dQ_i * si
@@ -345,14 +351,15 @@ def _ball_eval(X1, X2, ball, kg, w):
     dC_X2 = -dC_Qi * dQi_A2 + dC_Qo * dQo_X2
     dC_A1 = dC_Qi * dQi_A1
     dC_A2 = dC_Qi * dQi_A2
-    _kin_grad(a_i, a_o, C, omega, gp, dm, D, m_ball, race, cen, gyro, kg)
+    _kin_grad(a_k, a_o, C, omega, gp, dm, D, m_ball, race, cen, gyro, kg)
     F_c = kg[KG_FC, KG_VALUE]
     Mgo = kg[KG_MGO, KG_VALUE]
     Mgi = kg[KG_MGI, KG_VALUE]
-    # total derivatives of the kinematic terms: d/dX = p_ai (-dai_A) + p_ao dao_X + p_C dC_X
-    dFc_X1, dFc_X2, dFc_A1, dFc_A2 = _chain(kg, KG_FC, dai_A1, dai_A2, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2)
-    dMo_X1, dMo_X2, dMo_A1, dMo_A2 = _chain(kg, KG_MGO, dai_A1, dai_A2, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2)
-    dMi_X1, dMi_X2, dMi_A1, dMi_A2 = _chain(kg, KG_MGI, dai_A1, dai_A2, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2)
+    # total derivatives of the kinematic terms: d/dX = p_ak dak_X + p_ao dao_X + p_C dC_X
+    dak = (dak_X1, dak_X2, dak_A1, dak_A2)
+    dFc_X1, dFc_X2, dFc_A1, dFc_A2 = _chain(kg, KG_FC, dak, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2)
+    dMo_X1, dMo_X2, dMo_A1, dMo_A2 = _chain(kg, KG_MGO, dak, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2)
+    dMi_X1, dMi_X2, dMi_A1, dMi_A2 = _chain(kg, KG_MGI, dak, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2)
     # n = (sin a, cos a), t = (cos a, -sin a); dn/da = t, dt/da = -n
     # ring load g = Q_i n_i - Mgi t_i;  dg = n_i dQ_i + (Q_i t_i + Mgi n_i) da_i - t_i dMgi
     gz = Q_i * si - Mgi * ci
@@ -404,17 +411,17 @@ def _ball_eval(X1, X2, ball, kg, w):
 
 
 @kernel(inline="always")
-def _chain(kg, row, dai_A1, dai_A2, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2):
-    """Total derivatives (d/dX1, d/dX2, d/dA1, d/dA2) of the kinematic term kg[row] through a_i, a_o and C
-    (a_i depends on A - X, so its X-derivative is minus its A-derivative; a_o depends on X only)."""
-    p_ai = kg[row, KG_DAI]
+def _chain(kg, row, dak, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2):
+    """Total derivatives (d/dX1, d/dX2, d/dA1, d/dA2) of the kinematic term kg[row] through the kinematics'
+    inner angle a_k (dak: its gradient (d/dX1, d/dX2, d/dA1, d/dA2)), a_o (depends on X only) and C."""
+    p_ak = kg[row, KG_DAI]
     p_ao = kg[row, KG_DAO]
     p_C = kg[row, KG_DC]
     return (
-        -p_ai * dai_A1 + p_ao * dao_X1 + p_C * dC_X1,
-        -p_ai * dai_A2 + p_ao * dao_X2 + p_C * dC_X2,
-        p_ai * dai_A1 + p_C * dC_A1,
-        p_ai * dai_A2 + p_C * dC_A2,
+        p_ak * dak[0] + p_ao * dao_X1 + p_C * dC_X1,
+        p_ak * dak[1] + p_ao * dao_X2 + p_C * dC_X2,
+        p_ak * dak[2] + p_C * dC_A1,
+        p_ak * dak[3] + p_C * dC_A2,
     )
 
 
@@ -693,8 +700,9 @@ def ball_outputs(omega, qs, X, contact, balls):
         a_i = contact[CS_A_I, j]
         a_o = contact[CS_A_O, j]
         C = contact[CS_C, j]
+        a_k = a_o if contact[CS_Q_I, j] <= 0.0 and math.cos(a_i) <= 0.0 else a_i  # as in _ball_eval
         F_c, Mgo, Mgi, w_m, w_R, beta = kinematics(
-            complex(a_i, 0.0), complex(a_o, 0.0), complex(C, 0.0), omega, gp, dm, D, qs[QS_M_BALL], race, cen, gyro
+            complex(a_k, 0.0), complex(a_o, 0.0), complex(C, 0.0), omega, gp, dm, D, qs[QS_M_BALL], race, cen, gyro
         )
         w_m = w_m.real
         w_R = w_R.real

@@ -42,6 +42,10 @@ from .variables import (
 )
 
 RACE_CODES = {"outer": qk.RACE_OUTER, "inner": qk.RACE_INNER, "hybrid": qk.RACE_HYBRID}
+# rad: an inner contact angle down to -1e-8 counts as 0 in the thrust-side check. A radial load alone puts
+# the balls of a free single angular-contact bearing at the groove bottom (angle 0), which the solver returns
+# to its rounding (~1e-12 rad); 1e-8 rad is an axial offset of picometres, far from a shoulder.
+SHOULDER_ANGLE_TOL = 1e-8
 # readings of the hybrid model's gyroscopic-moment share (Python API only, for sensitivity studies;
 # the FMUs use 'spin_moments'): docs/quasistatic.md section 2, docs/reports/rabreau_torque_sensitivity.md
 HYBRID_SPLITS = {
@@ -340,9 +344,11 @@ class QuasiStaticModel:
         radial load or moment with too little thrust) must be carried by another bearing or a preload
         (models.pair, or a second bearing FMU)."""
         balls = self.balls
-        if min(balls[qk.BQ_A_I].tolist()) >= 0.0:  # the usual case: no inner contact at a negative angle
-            return  # (a list's min is a fraction of numpy's fixed cost for a few dozen balls; NaN never passes)
-        wrong = (balls[qk.BQ_Q_I] > 0.0) & (balls[qk.BQ_A_I] < 0.0)
+        # the usual case: no inner contact at a negative angle (a list's min is a fraction of numpy's fixed
+        # cost for a few dozen balls; NaN never passes)
+        if min(balls[qk.BQ_A_I].tolist()) >= -SHOULDER_ANGLE_TOL:
+            return
+        wrong = (balls[qk.BQ_Q_I] > 0.0) & (balls[qk.BQ_A_I] < -SHOULDER_ANGLE_TOL)
         if not wrong.any():
             return
         j = int(np.argmax(np.where(wrong, balls[qk.BQ_Q_I], -1.0)))
@@ -354,7 +360,7 @@ class QuasiStaticModel:
             f"and these loads need its missing shoulder (ball {j} would carry {balls[qk.BQ_Q_I, j]:.4g} N at a "
             f"contact angle of {math.degrees(balls[qk.BQ_A_I, j]):.3g} deg). Carry the reverse thrust with a "
             f"second bearing or a preload (bearing_fmu.models.pair). Allowed: loads with which every loaded ball "
-            f"touches the inner ring at a contact angle >= 0. Inputs: {shown}"
+            f"touches the inner ring at a contact angle >= 0 (to {SHOULDER_ANGLE_TOL:g} rad). Inputs: {shown}"
         )
 
     def _collect(self, omega, u):

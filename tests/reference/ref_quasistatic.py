@@ -198,9 +198,14 @@ def inertial_loads(w_m, w_R, beta, p):
 
 
 def kinematics(c, p, g):
-    """Race control, speeds and inertial loads of a ball whose contacts are c (dict of contacts)."""
-    beta, lam_i, lam_o = race_control(c["a_i"], c["a_o"], c["Q_i"], c["Q_o"], p, g["gp"])
-    w_m, w_R = cage_and_spin_speeds(c["a_i"], c["a_o"], beta, p["omega"], g["gp"])
+    """Race control, speeds and inertial loads of a ball whose contacts are c (dict of contacts).
+
+    The inner angle of the kinematics is a_i, or a_o for an open inner contact whose ball lies beyond the
+    inner curvature centre (cos a_i <= 0, at a clearance of the order of the groove's), where the cage
+    speed's denominator (1 + gp cos a_o) cos(a_i - beta) + n_o vanishes at a_i = pi."""
+    a_k = c["a_o"] if c["Q_i"] <= 0.0 and math.cos(c["a_i"]) <= 0.0 else c["a_i"]
+    beta, lam_i, lam_o = race_control(a_k, c["a_o"], c["Q_i"], c["Q_o"], p, g["gp"])
+    w_m, w_R = cage_and_spin_speeds(a_k, c["a_o"], beta, p["omega"], g["gp"])
     F_c, M_g = inertial_loads(w_m, w_R, beta, p)
     return dict(beta=beta, lam_i=lam_i, lam_o=lam_o, w_m=w_m, w_R=w_R, F_c=F_c, M_g=M_g)
 

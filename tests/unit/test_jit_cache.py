@@ -298,3 +298,25 @@ def test_no_home_directory_at_all_falls_back_with_a_warning(tmp_path, monkeypatc
     assert tiers.write == tmp_path / f"bearing_fmu-{os.getuid()}" / "numba" / ("h" * 64)
     assert tiers.read == [(tiers.write, None)]
     assert "no home directory" in caplog.text and str(tiers.write) in caplog.text
+
+
+def test_numba_disable_jit_runs_the_kernels_as_plain_python(tmp_path):
+    """NUMBA_DISABLE_JIT=1 (numba's switch for debugging kernels in Python) runs the product: the policy
+    attaches its cache only to compiled kernels, and the plain functions give the compiled results."""
+    code = (
+        "from bearing_fmu import AnalyticModel; import json; "
+        "print(json.dumps(AnalyticModel('6208').evaluate(omega=500.0, F_y=3000.0, T_oil=313.15)['Q_max_inner']))"
+    )
+    env = {k: v for k, v in os.environ.items() if k not in UNSET}
+    results = []
+    for disable in ("1", "0"):
+        proc = subprocess.run(
+            [sys.executable, "-c", code],
+            env={**env, "NUMBA_DISABLE_JIT": disable, "BEARING_FMU_CACHE": str(tmp_path)},
+            cwd=ROOT,
+            capture_output=True,
+            text=True,
+        )
+        assert proc.returncode == 0, proc.stderr[-3000:]
+        results.append(json.loads(proc.stdout.strip().splitlines()[-1]))
+    assert results[0] == pytest.approx(results[1], rel=1e-12)

@@ -129,3 +129,51 @@ def test_reverse_thrust_on_single_angular_contact_bearing_is_refused(load):
     with pytest.raises(InputError, match="single-row angular-contact bearing.*missing shoulder"):
         m.evaluate(**load)
     assert m.get_state() == state
+
+
+def test_radial_load_with_a_clearance_of_half_the_groove_matches_the_twin():
+    """A clearance of half the groove clearance (P_d = 0.5 A, free angle 41 deg): under a radial load at
+    speed the unloaded balls rest on the outer race beyond the inner curvature centre (cos a_i < 0), where
+    the cage speed of the race-control kinematics is singular at a_i = pi; their kinematics take the outer
+    angle (docs/quasistatic.md). Kernel and twin (scipy root on the same equations) agree to 1e-6 of the
+    displacement, as for the ordinary cases above."""
+    p = ref.params_6208(centrifugal=True, gyroscopic=True, omega=500.0)
+    A = (p["f_i"] + p["f_o"] - 1.0) * p["D"]
+    p = ref.params_6208(centrifugal=True, gyroscopic=True, omega=500.0, Pd=0.5 * A)
+    F_applied = (0.0, 3000.0, 0.0, 0.0, 0.0)
+    status, d, *_ = kernel_solve(pack(p, tol=1e-10), F_applied, p["omega"])
+    assert status == qk.QS_OK
+    d_ref = ref.solve_loads(F_applied, p)
+    scale = np.array([1, 1, 1, p["dm"] / 2, p["dm"] / 2])
+    assert np.max(np.abs((d - d_ref) * scale)) <= 1e-6 * np.max(np.abs(d_ref * scale))
+
+
+@pytest.mark.parametrize("share", [0.3, 0.5, 0.9])
+def test_deep_groove_bearing_with_a_large_clearance_converges_under_radial_load(share):
+    """The 6208 with P_d = 0.3, 0.5 and 0.9 A (free angles 32-58 deg, far beyond any clearance class) under
+    300 N and 3 kN radial at 50-1500 rad/s: converged, finite, the ring centred axially (a symmetric deep
+    groove under a radial load) and the cage between rest and the inner ring's speed."""
+    b = QuasiStaticModel("6208", scene=SCENE).bearing
+    A = (b.f_i + b.f_o - 1.0) * b.D  # m
+    for omega in (50.0, 500.0, 1500.0):
+        for F_y in (300.0, 3000.0):
+            m = QuasiStaticModel("6208", scene=SCENE, Pd=share * A)
+            out = m.evaluate(omega=omega, F_y=F_y)
+            assert m.status[0] == qk.QS_OK
+            assert all(np.all(np.isfinite(np.asarray(v, dtype=float))) for v in out.values())
+            assert abs(out["z"]) <= 1e-9 * A
+            assert 0.0 < out["omega_cage"] < omega
+
+
+def test_radial_load_alone_on_a_single_angular_contact_bearing_sits_at_the_groove_bottom():
+    """A free single-row angular-contact bearing under a radial load alone slides axially until its loaded
+    balls touch the groove bottoms (contact angle 0, no shoulder needed): computed every time, whatever the
+    solver's rounding of that zero angle (~1e-12 rad, either sign), at its own and at three times its
+    clearance; a reverse thrust or moment that really needs the missing shoulder is still refused (above)."""
+    for Pd in (None, 3 * 54.09e-6):
+        for omega in (0.0, 50.0, 500.0, 1500.0):
+            kwargs = {} if Pd is None else dict(Pd=Pd)
+            m = QuasiStaticModel("B7214C", scene=SCENE, **kwargs)
+            out = m.evaluate(omega=omega, F_y=3000.0)
+            assert m.status[0] == qk.QS_OK
+            assert abs(out["alpha_inner"]) <= 1e-8
