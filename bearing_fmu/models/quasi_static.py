@@ -42,9 +42,10 @@ from .variables import (
 )
 
 RACE_CODES = {"outer": qk.RACE_OUTER, "inner": qk.RACE_INNER, "hybrid": qk.RACE_HYBRID}
-# rad: an inner contact angle down to -1e-8 counts as 0 in the thrust-side check. A radial load alone puts
-# the balls of a free single angular-contact bearing at the groove bottom (angle 0), which the solver returns
-# to its rounding (~1e-12 rad); 1e-8 rad is an axial offset of picometres, far from a shoulder.
+# rad: the thrust-side check refuses loaded inner contacts below +1e-8 rad. A radial load without thrust puts
+# the loaded balls of a free single angular-contact bearing at the groove bottom (angle 0, returned to the
+# solver's rounding, ~1e-12 rad of either sign), where nothing locates the ring axially and it is nearly free
+# to tilt: refused every time, not by the sign of a rounding error. Any thrust lifts the angles far above it.
 SHOULDER_ANGLE_TOL = 1e-8
 # readings of the hybrid model's gyroscopic-moment share (Python API only, for sensitivity studies;
 # the FMUs use 'spin_moments'): docs/quasistatic.md section 2, docs/reports/rabreau_torque_sensitivity.md
@@ -324,6 +325,7 @@ class QuasiStaticModel:
         if status != qk.QS_OK:
             self.d[:] = d_start
             self.X[:] = X_start
+            self._refuse_without_thrust(applied, u)
             reason = {
                 qk.QS_NOT_CONVERGED: f"no convergence in {self.scene.max_iterations} iterations",
                 qk.QS_BALL_NOT_CONVERGED: "a ball equilibrium did not converge",
@@ -335,8 +337,26 @@ class QuasiStaticModel:
         if self.bearing.kind == "angular_contact":
             self._check_thrust_side(d_start, X_start, u)
 
+    def _refuse_without_thrust(self, applied, u):
+        """An equilibrium not found for a single angular-contact bearing whose thrust is load-controlled and not
+        positive, under a radial load or moment: the physical reason, not the solver's. With F_z <= 0 the axial
+        balance sum Q sin(alpha) = F_z leaves loaded balls at the groove bottom or beyond (_check_thrust_side):
+        a state the bearing cannot take, and nearly free to slide and tilt, where the solver may also stall."""
+        if self.bearing.kind != "angular_contact" or not self.control[2] or applied[2] > 0.0:
+            return
+        if not any(applied[i] != 0.0 for i in (0, 1, 3, 4) if self.control[i]):
+            return
+        raise InputError(
+            f"bearing '{self.bearing.name}' is a single-row angular-contact bearing: it carries thrust in +z only, "
+            f"and a radial load or moment with F_z = {applied[2]:.6g} N needs its missing shoulder, or leaves its "
+            f"balls at the groove bottom with nothing to locate it axially (no equilibrium found there). Carry the "
+            f"reverse thrust, or the thrust a radial load needs, with a second bearing or a preload "
+            f"(bearing_fmu.models.pair). Allowed: F_z > 0 with a radial load or moment. Inputs: {self._shown(u)}"
+        )
+
     def _check_thrust_side(self, d_start, X_start, u):
-        """Refuse a solution that needs the shoulder a single-row angular-contact bearing does not have.
+        """Refuse a solution that needs the shoulder a single-row angular-contact bearing does not have, or that
+        leaves its loaded balls at the groove bottom (a radial load without thrust: no axial location).
 
         The kernel's grooves are full circles; the bearing's inner ring has its thrust shoulder on the side of
         positive contact angles only (z = 0 where the balls touch it at the free angle). A loaded inner contact
@@ -346,9 +366,9 @@ class QuasiStaticModel:
         balls = self.balls
         # the usual case: no inner contact at a negative angle (a list's min is a fraction of numpy's fixed
         # cost for a few dozen balls; NaN never passes)
-        if min(balls[qk.BQ_A_I].tolist()) >= -SHOULDER_ANGLE_TOL:
+        if min(balls[qk.BQ_A_I].tolist()) >= SHOULDER_ANGLE_TOL:
             return
-        wrong = (balls[qk.BQ_Q_I] > 0.0) & (balls[qk.BQ_A_I] < -SHOULDER_ANGLE_TOL)
+        wrong = (balls[qk.BQ_Q_I] > 0.0) & (balls[qk.BQ_A_I] < SHOULDER_ANGLE_TOL)
         if not wrong.any():
             return
         j = int(np.argmax(np.where(wrong, balls[qk.BQ_Q_I], -1.0)))
@@ -357,10 +377,11 @@ class QuasiStaticModel:
         shown = self._shown(u)
         raise InputError(
             f"bearing '{self.bearing.name}' is a single-row angular-contact bearing: it carries thrust in +z only, "
-            f"and these loads need its missing shoulder (ball {j} would carry {balls[qk.BQ_Q_I, j]:.4g} N at a "
-            f"contact angle of {math.degrees(balls[qk.BQ_A_I, j]):.3g} deg). Carry the reverse thrust with a "
-            f"second bearing or a preload (bearing_fmu.models.pair). Allowed: loads with which every loaded ball "
-            f"touches the inner ring at a contact angle >= 0 (to {SHOULDER_ANGLE_TOL:g} rad). Inputs: {shown}"
+            f"and these loads need its missing shoulder, or leave its balls at the groove bottom with nothing to "
+            f"locate it axially (ball {j} would carry {balls[qk.BQ_Q_I, j]:.4g} N at a contact angle of "
+            f"{math.degrees(balls[qk.BQ_A_I, j]):.3g} deg). Carry the reverse thrust, or the thrust a radial load "
+            f"needs, with a second bearing or a preload (bearing_fmu.models.pair). Allowed: loads with which every "
+            f"loaded ball touches the inner ring at a contact angle above {SHOULDER_ANGLE_TOL:g} rad. Inputs: {shown}"
         )
 
     def _collect(self, omega, u):
