@@ -5,7 +5,8 @@ large positive clearance.
 Outcomes: stable and finite, with the ISO 76 pressure warning above 4.2 GPa; an InputError naming the
 cause, its value and the allowed range beyond the material limit (6 GPa) or the geometric clearance
 limits |P_d| <= A = (f_i + f_o - 1) D; a SolverError naming the inputs where the quasi-static solver
-does not converge (free contact angles beyond about 55 deg) -- never a NaN.
+does not converge (large free contact angles under a mostly radial load: docs/decisions.md, known
+defects) -- never a NaN.
 """
 
 import math
