@@ -222,8 +222,9 @@ class DemModel:
             "freq": self.frequencies,
         }
         self._plan = gather_plan(self.outputs, arrays)
-        self._before = self.get_state()  # state at the start of the last update(), restored when it fails
-        self._retry = self.get_state()  # state at the start of an automatic-step call, for its repetition
+        # state at the start of the last kernel call: an automatic-step call is repeated from it, and update()
+        # restores it when the call fails
+        self._start = self.get_state()
         self.step_halvings = 0  # times the last call's automatic step was halved after a monitor stop
         self._gather()
 
@@ -431,12 +432,12 @@ class DemModel:
         self._check(t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
         self.par[s.P_RHO_O] = self._rho_outer + 0.5 * dPd_thermal
         interval = t_end - self.time
+        self._copy_state(self._start, self.__dict__)
+        self._start["omega"] = self.omega
         dt = self.dt_fixed
         automatic = dt is None
         if automatic:
             dt = self.automatic_time_step(F_x, F_y, F_z, max(abs(self.omega), abs(omega)))
-            self._copy_state(self._retry, self.__dict__)
-            self._retry["omega"] = self.omega
         n_steps = max(1, math.ceil(interval / dt * (1.0 - 1e-12)))
         self.step_halvings = 0
         while True:
@@ -450,8 +451,7 @@ class DemModel:
             # contact entering full film at low speed takes a squeeze damping that overdamps the ball): repeat
             # the call from its start with half the step, or the step the stopped state's film needs if smaller
             smaller = self.automatic_time_step(F_x, F_y, F_z, max(abs(omega0), abs(omega)))
-            self._copy_state(self.__dict__, self._retry)
-            self.omega = self._retry["omega"]
+            self._restore_start()
             self.step_halvings += 1
             needed = math.ceil(interval / smaller * (1.0 - 1e-12))
             n_steps = max(2 * n_steps, min(needed, 16 * n_steps))  # (a blown-up state's loads are no guide)
@@ -626,13 +626,10 @@ class DemModel:
         self.status[s.ST_CODE] = s.STATUS_OK  # a refused input leaves no stale monitor code
         self.warnings = []  # nor stale warnings
         self._check(t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
-        self._copy_state(self._before, self.__dict__)
-        self._before["omega"] = self.omega
         try:
             self._advance(t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
         except DemUnstableError:
-            self._copy_state(self.__dict__, self._before)
-            self.omega = self._before["omega"]
+            self._restore_start()
             raise
 
     def _gather(self):
@@ -655,6 +652,11 @@ class DemModel:
     def _copy_state(self, target, source):
         for name in self.STATE_ARRAYS:
             np.copyto(target[name], source[name])
+
+    def _restore_start(self):
+        """Back to the state at the start of the last kernel call (_advance)."""
+        self._copy_state(self.__dict__, self._start)
+        self.omega = self._start["omega"]
 
     def evaluate(self, time, **values):
         """Advance to `time` (s) with the named inputs (missing ones take their start values: 0, T_oil 313.15 K) as
