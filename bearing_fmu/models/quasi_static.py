@@ -364,7 +364,7 @@ class QuasiStaticModel:
         radial load or moment with too little thrust) must be carried by another bearing or a preload
         (models.pair, or a second bearing FMU)."""
         balls = self.balls
-        # the usual case: no inner contact at a negative angle (a list's min is a fraction of numpy's fixed
+        # the usual case: no inner contact at or below the groove bottom (a list's min is a fraction of numpy's fixed
         # cost for a few dozen balls; NaN never passes)
         if min(balls[qk.BQ_A_I].tolist()) >= SHOULDER_ANGLE_TOL:
             return
