@@ -142,6 +142,47 @@ def traction_coefficient(lam, limit):
     return limit
 
 
+SPIN_SLIP = 8.0 / (3.0 * math.pi)  # film_slip_speed: linearised traction of a saturated spinning Hertz circle
+
+
+@kernel
+def film_share(lam):
+    """Share (-) of a contact's tangential force carried by the film: 0 for Lambda <= 1 (asperities carry
+    the load), linear to 1 on ]1, 3] (the ramp of friction_coefficient), 1 above (full film)."""
+    if lam <= 1.0:
+        return 0.0
+    if lam <= 3.0:
+        return 0.5 * (lam - 1.0)
+    return 1.0
+
+
+@kernel
+def film_traction_coefficient(srr, mu_lim, s_0):
+    """Traction coefficient (-) of an EHL film at slide-to-roll ratio srr (-): mu_lim (1 - exp(-srr / s_0)).
+
+    The limiting-shear-stress law of Bair & Winer (1979, J. Lubr. Technol. 101(3) 258-265),
+    tau = tau_L (1 - exp(-eta gamma_dot / tau_L)), taken over the whole contact: the film's shear rate is the
+    sliding speed over the film, gamma_dot = srr u / h, so the curve rises linearly at small slip (a viscous
+    film: a damper, slope mu_lim / s_0) and saturates at the limiting traction coefficient mu_lim = tau_L / p
+    (lubricant file). s_0 (-) is the slide-to-roll ratio where the linear part meets the limit."""
+    return -mu_lim * math.expm1(-srr / s_0)
+
+
+@kernel
+def film_slip_speed(s_0, u, spin, a_major):
+    """Sliding speed (m/s) that scales a contact's traction curve mu_lim (1 - exp(-v_t / v_s)) in the sliding
+    speed v_t of its centre: the creep scale s_0 u (u entrainment speed, m/s), or, where the contact spins at
+    `spin` (rad/s) relative to the race, (8 / (3 pi)) |spin| a (a: semi-major axis, m) if larger.
+
+    Why: across a spinning contact the surfaces already slide at |spin| r, saturating the traction locally; a
+    small uniform slip v_t then changes the net force only by dF/dv_t = (1/(2 |spin|)) integral(tau_L / r dA)
+    (the component of the local unit slip direction along v_t averages 1/2 over the angle); with tau_L = mu_lim p
+    and the Hertz pressure of a circle of radius a this is F_max 3 pi / (8 a |spin|), F_max = mu_lim Q (the
+    spin creep of rolling contacts, Johnson 1985, Contact Mechanics, ch. 8). A contact that pivots therefore
+    grips a transverse slip far less than one that rolls: the race without spin controls the ball."""
+    return max(s_0 * u, SPIN_SLIP * abs(spin) * a_major)
+
+
 @kernel
 def normal_damping(lam, Q, alpha_e, eta, a_major, R_ball, h_min):
     """Normal damping C_n(Lambda) (N.s/m) of one contact (Guessasma & Machado 2018, eqs. 4-5, Table 2).

@@ -547,7 +547,8 @@ DEM_OUTPUTS = (
     Variable(
         "cage_slip",
         "1",
-        "cage slip 1 - omega_cage/(pure-rolling cage speed) (0 at rest)",
+        "cage slip 1 - omega_cage / (pure-rolling cage speed): the mean orbital speed at which the balls loaded "
+        "on both races would roll without sliding at their current contact points and spin axes (0 at rest)",
         source=("out", ds.O_CAGE_SLIP),
     ),
     Variable(
@@ -592,12 +593,14 @@ DEM_PARAMETERS = (
     Variable(
         "traction_limit",
         "1",
-        "Coulomb limit of the balls' tangential contact force in a full film (ramped from 0.1 at Lambda = 1), "
-        "0 = the papers' mu(Lambda) (0.01 in full film)",
+        "tangential law of the ball-race contacts: 0 = the film's share of the force follows the lubricant's EHL "
+        "traction curve of the slide-to-roll ratio (the asperities' share a spring capped at 0.1); > 0 = override, "
+        "a spring alone capped at this value in a full film, ramped from 0.1 at Lambda = 1 (0.01 = the papers' "
+        "mu(Lambda))",
         start=0.0,
         min=0.0,
         max=0.1,
-        limits="0 = the papers' law; at most the boundary regime's 0.1",
+        limits="0 = the EHL traction curve; at most the boundary regime's 0.1",
     ),
     Variable(
         "average_outputs",

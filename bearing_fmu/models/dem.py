@@ -66,6 +66,9 @@ DAMPING_PLAN = 0.25
 DAMPING_STOP = 0.35
 MU_BOUNDARY = friction_coefficient(0.0)  # mu(Lambda) of the boundary regime (0.1), before any contact
 TRACTION_LIMIT_MAX = MU_BOUNDARY  # a full film carries no more than the boundary regime
+# the film's traction is evaluated linearly implicitly in the slip: a force at the surface of a solid sphere
+# changes the surface's speed by 3.5/m per newton and second, and a ball has two contacts (docs/dem.md, Tangential)
+FILM_RATE = 2.0 * 3.5
 # an automatic step that the monitor stops is halved and the call repeated, at most this often (16x smaller)
 AUTO_STEP_HALVINGS = 4
 ENERGY_FACTOR = 10.0  # kinetic-energy bound: this factor x (pure-rolling energy + load x groove clearance)
@@ -115,9 +118,11 @@ class DemModel:
     refresh interval in steps (>= 1); None = every refresh_interval (s) of simulated time. The defaults
     SAFETY and REFRESH_INTERVAL are chosen from the error-vs-run-time front (docs/reports/dem_error.md). Pd: diametral
     clearance (m) overriding the file. ring_mass: inner-ring mass (kg); None = estimated from the bore.
-    kt_ratio: tangential/normal stiffness (-). traction_limit: Coulomb limit (-) of the tangential force in a full
-    film, ramped from 0.1 at Lambda = 1 (kernels.ehl.traction_coefficient); 0 (default) = the papers' mu(Lambda),
-    0.01 in full film (docs/dem.md, B7214C: a full film that can hold the gyroscopic moment).
+    kt_ratio: tangential/normal stiffness (-) of the asperities' spring. traction_limit: 0 (default) = the
+    tangential force of the film is the lubricant's EHL traction curve (kernels.ehl.film_traction_coefficient,
+    the film's share ehl.film_share(Lambda)), the asperities' share a spring capped at the boundary friction;
+    > 0 = override: a spring alone, capped at the ramp from 0.1 at Lambda = 1 to traction_limit in a full film
+    (kernels.ehl.traction_coefficient; 0.01 = the papers' mu(Lambda)) (docs/dem.md, Tangential force).
     averaged: True (default) reports torque, P_loss, Q_inner_ring,
     Q_outer_ring and C_bearing as means over each advance() interval (what a co-simulation partner integrates:
     the energy of the step), False their values at the interval's last step (docs/dem.md, Outputs).
@@ -159,7 +164,7 @@ class DemModel:
         if not (math.isfinite(traction_limit) and 0.0 <= traction_limit <= TRACTION_LIMIT_MAX):
             raise InputError(
                 f"traction_limit = {traction_limit} is outside the allowed range [0, {TRACTION_LIMIT_MAX:g}] "
-                "(0 = the papers' mu(Lambda))"
+                "(0 = the lubricant's EHL traction curve; 0.01 = the papers' mu(Lambda))"
             )
         self.traction_limit = float(traction_limit)
         self.averaged = bool(averaged)
@@ -300,6 +305,9 @@ class DemModel:
         p[s.P_CHATTER] = CHATTER_STEPS
         p[s.P_DAMPING_STOP] = DAMPING_STOP
         p[s.P_TRACTION] = self.traction_limit
+        p[s.P_MU_LIM] = self.lubricant.traction_limit
+        p[s.P_S_TRACTION] = self.lubricant.traction_slip
+        p[s.P_FILM_RATE] = FILM_RATE
         p[s.P_CAPACITANCE] = 1.0 if sc.capacitance else 0.0
         p[s.P_REFRESH] = 1
         return p

@@ -255,9 +255,14 @@ class Lubricant:
     path: str
     array: np.ndarray
     reference: dict = field(default_factory=dict)
+    traction_limit: float = 0.0  # limiting traction coefficient of the EHL film (-)
+    traction_slip: float = 0.0  # slide-to-roll ratio where the traction curve's linear part meets the limit (-)
 
 
 TEMPERATURE = Spec("K", 150.0, 700.0)
+# the EHL traction curve of a file without a [traction] section (docs/parameters.md): a mineral oil's, estimated
+TRACTION_LIMIT_DEFAULT = 0.06
+TRACTION_SLIP_DEFAULT = 0.001
 
 
 def load_lubricant(name_or_path):
@@ -322,8 +327,17 @@ def load_lubricant(name_or_path):
     reference = {
         k: v["value"] for k, v in doc.get("reference_313K", {}).items() if isinstance(v, dict) and "value" in v
     }
+    traction_limit = _value(
+        doc, "traction.limiting_coefficient", Spec("-", 0.0, 0.2, True), path, False, TRACTION_LIMIT_DEFAULT
+    )
+    traction_slip = _value(doc, "traction.slip_scale", Spec("-", 0.0, 1.0, True), path, False, TRACTION_SLIP_DEFAULT)
     return Lubricant(
-        name=str(doc.get("meta", {}).get("name", path.stem)), path=str(path), array=arr, reference=reference
+        name=str(doc.get("meta", {}).get("name", path.stem)),
+        path=str(path),
+        array=arr,
+        reference=reference,
+        traction_limit=traction_limit,
+        traction_slip=traction_slip,
     )
 
 

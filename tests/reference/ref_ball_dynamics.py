@@ -8,8 +8,10 @@ be handed to both. The model:
   approach delta = |p - q| - (f - 1/2) D, normal n = (p - q)/|p - q|, contact point p + (D/2) n;
 - normal force Q + C_n v_n >= 0, Q = K_h delta^1.5 (Hertz), C_n from the last refresh except in the
   boundary regime where C_n = 1.5 alpha_e Q (Guessasma eq. 4 with K_n delta = Q);
-- tangential spring xi: projected on the tangent plane, xi += v_t dt, F_t = -k_t xi with
-  k_t = ratio K_h delta^0.5, capped at mu F_n (xi rescaled to the cap), reset when the contact opens;
+- tangential force: the asperities' spring xi (projected on the tangent plane, xi += v_t dt, F_t = -k_t xi
+  with k_t = ratio K_h delta^0.5, capped at mu F_n minus the film's share, xi rescaled to the cap, reset when
+  the contact opens; absent in a full film) plus the film's EHL traction phi mu_lim F_n (1 - e^(-|v_t|/v_s))
+  against v_t, evaluated linearly implicitly (the Coulomb override: the spring alone, capped at mu F_n);
 - rolling-resistance moment -M_r q/max(|q|, w_reg, 4 M_r dt/I) with M_r = F_roll (D/2) and q the
   ball's angular velocity relative to its orbiting frame, tangential part; spin moment
   -M_s s/max(|s|, w_reg, 4 M_s dt/I) n, s the spin relative to the race; F_roll = F_R + (F_h + F_H)/2
@@ -113,7 +115,14 @@ def refresh(st, par, lub, omega, T_oil):
             R_c = 2.0 * f * D / (2.0 * f + 1.0)
             F_H = HEATHCOTE_C * mu * Q * a * a / (R_c * Rx)
             M_s = 3.0 / 8.0 * mu * Q * a * ell_E
-            trib[s.T_MU, race, j] = ref_ehl.traction_coefficient(lam, par[s.P_TRACTION])
+            if par[s.P_TRACTION] > 0.0:  # the Coulomb override: a spring alone
+                trib[s.T_MU, race, j] = ref_ehl.traction_coefficient(lam, par[s.P_TRACTION])
+            else:  # asperities' spring at mu(0) for 1 - phi, the film's EHL traction curve for phi
+                phi = ref_ehl.film_share(lam)
+                trib[s.T_PHI, race, j] = phi
+                trib[s.T_MU, race, j] = (1.0 - phi) * ref_ehl.friction_coefficient(0.0) + phi * par[s.P_MU_LIM]
+                v_s = max(par[s.P_S_TRACTION] * u, 8.0 / (3.0 * math.pi) * abs(spin) * a)
+                trib[s.T_SLIP, race, j] = 1.0 / v_s if u > 0.0 else 0.0
             trib[s.T_C_N, race, j] = ref_ehl.normal_damping(lam, Q, par[s.P_ALPHA_E], eta, a, 0.5 * D, h_min)
             trib[s.T_REGIME, race, j] = ref_ehl.lubrication_regime(lam)
             trib[s.T_F_ROLL, race, j] = F_R + 0.5 * (F_h + F_H)
@@ -182,19 +191,37 @@ def forces(st, par, omega, F_ring, vel, dt):
             else:
                 c_n = trib[s.T_C_N, race, j]
             F_n = max(Q + c_n * v_n, 0.0)
+            phi = trib[s.T_PHI, race, j]
+            F_film = phi * par[s.P_MU_LIM] * F_n  # the film's traction plateau
             old = spring[rows, j] - np.dot(spring[rows, j], n) * n
-            xi = old + v_t * dt
-            k_t = par[s.P_KT_RATIO] * K_h * math.sqrt(delta)
-            F_t = -k_t * xi
-            cap = trib[s.T_MU, race, j] * F_n
-            slipping = np.linalg.norm(F_t) > cap
-            if slipping:
-                F_t = F_t * cap / np.linalg.norm(F_t)
-                xi = -F_t / k_t
-                counters[kc] = counters[kc] + 1 if np.dot(xi, old) < 0.0 else 0
-            else:
+            slipping = False
+            if phi < 1.0:  # the asperities' spring, capped at the rest of the tangential limit
+                xi = old + v_t * dt
+                k_t = par[s.P_KT_RATIO] * K_h * math.sqrt(delta)
+                F_t = -k_t * xi
+                cap = max(trib[s.T_MU, race, j] * F_n - F_film, 0.0)
+                slipping = np.linalg.norm(F_t) > cap
+                if slipping:
+                    F_t = F_t * cap / np.linalg.norm(F_t)
+                    xi = -F_t / k_t
+                    counters[kc] = counters[kc] + 1 if np.dot(xi, old) < 0.0 else 0
+                else:
+                    counters[kc] = 0
+            else:  # a full film: no elastic stick
+                xi = np.zeros(3)
+                F_t = np.zeros(3)
                 counters[kc] = 0
             spring[rows, j] = xi
+            slip_power = -np.dot(F_t, v_t) if slipping else 0.0
+            v = np.linalg.norm(v_t)
+            if F_film > 0.0 and v > 0.0:
+                # EHL traction curve F_film (1 - exp(-v/v_s)), solved linearly implicitly: F / (1 + kappa dF/dv),
+                # kappa = 2 x 3.5 dt / m (a force at a solid sphere's surface, both contacts of the ball)
+                g = trib[s.T_SLIP, race, j]
+                kappa = par[s.P_FILM_RATE] * dt / par[s.P_M_BALL]
+                f = F_film * (1.0 - math.exp(-v * g)) / (1.0 + kappa * F_film * g * math.exp(-v * g))
+                F_t = F_t - f * v_t / v
+                slip_power += f * v
             force = -F_n * n + F_t
             f_ball[:, j] += force
             q = w_b[:, j] - orbit_speed(p, v_b[:, j]) * Z_AXIS
@@ -211,7 +238,7 @@ def forces(st, par, omega, F_ring, vel, dt):
             )
             if race == 0:
                 f_ring -= force
-            power[race] += (c_n * v_n**2 if F_n > 0.0 else 0.0) - (np.dot(F_t, v_t) if slipping else 0.0)
+            power[race] += (c_n * v_n**2 if F_n > 0.0 else 0.0) + slip_power
     R_sum = 0.5 * D + par[s.P_R_CAGE]
     m_b, m_c = par[s.P_M_BALL], par[s.P_M_CAGE]
     for k in range(Z):

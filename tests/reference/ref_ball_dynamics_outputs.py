@@ -12,7 +12,7 @@ Q = K_h delta^1.5), sharing only the array layout (the kernel's slot constants):
 - capacitance: balls loaded on both races in parallel, each the series of its two contacts, plus background;
 - averaged: power = energy dissipated over the interval / interval, capacitance = its integral over the
   steps / interval; else the power of the last step and the capacitance now; torque = power / |omega|;
-  cage slip against the kinematic cage speed (Harris).
+  cage slip against the pure-rolling cage speed of the loaded balls at their current contacts and spin axes.
 """
 
 import math
@@ -20,7 +20,7 @@ import math
 import numpy as np
 
 from bearing_fmu.kernels.ball_dynamics import state as s
-from tests.reference import ref_capacitance, ref_ehl, ref_geometry
+from tests.reference import ref_capacitance, ref_ehl
 from tests.reference.ref_ball_dynamics import groove_contact, race_centre
 from tests.reference.ref_ball_dynamics_monitor import kinetic_energy
 
@@ -55,6 +55,40 @@ def contact_angles(balls, ring, par):
             for row in _contacts(balls, ring, par)
         ]
     )
+
+
+def pure_rolling_cage_speed(balls, ring, par, omega, Q):
+    """Mean over the balls loaded on both races of the orbital speed w_c at which the ball, spinning about its
+    current axis e (unit of w - w_orbit z) at some w_R, rolls without sliding in the orbit direction t at both
+    contact centres: solve the 2x2 linear system for (w_c, w_R) with numpy."""
+    if omega == 0.0:
+        return 0.0
+    D = par[s.P_D]
+    speeds = []
+    for j in np.flatnonzero((Q > 0.0).all(axis=0)):
+        p = balls[s.B_X : s.B_X + 3, j]
+        v = balls[s.B_VX : s.B_VX + 3, j]
+        w_orbit = (p[0] * v[1] - p[1] * v[0]) / (p[0] ** 2 + p[1] ** 2)
+        e = balls[s.B_WX : s.B_WX + 3, j] - w_orbit * np.array([0.0, 0.0, 1.0])
+        if not np.any(e):
+            continue
+        e = e / np.linalg.norm(e)
+        t = np.cross([0.0, 0.0, 1.0], p)
+        t = t / np.linalg.norm(t)
+        rows, rhs = [], []
+        for race in range(2):
+            centre, rho = race_centre(race, ring, par)
+            _, n = groove_contact(p, centre, rho, par[s.P_RG_I + race])
+            r_c = 0.5 * D * n
+            # ball surface: w_c z x (p + r_c) + w_R e x r_c; race surface: Omega z x (p + r_c - ring centre)
+            rows.append([np.dot(np.cross([0.0, 0.0, 1.0], p + r_c), t), np.dot(np.cross(e, r_c), t)])
+            axis = np.array([centre[0], centre[1], 0.0]) if race == 0 else np.zeros(3)
+            Omega = omega if race == 0 else 0.0
+            rhs.append(Omega * np.dot(np.cross([0.0, 0.0, 1.0], p + r_c - axis), t))
+        A = np.array(rows)
+        if np.linalg.det(A) != 0.0:
+            speeds.append(np.linalg.solve(A, np.array(rhs))[0])
+    return float(np.mean(speeds)) if speeds else 0.0
 
 
 def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, c_background, averaged):
@@ -99,10 +133,15 @@ def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, 
         out[s.O_Q_OUTER_RING] = acc[s.A_DISS_O] / interval
     out[s.O_P_LOSS] = out[s.O_Q_INNER_RING] + out[s.O_Q_OUTER_RING]
     out[s.O_TORQUE] = out[s.O_P_LOSS] / abs(omega) if omega != 0.0 else 0.0
-    kinematic_cage = ref_geometry.rolling_kinematics(omega, par[s.P_D], par[s.P_DM], par[s.P_ALPHA0])[0]
-    out[s.O_CAGE_SLIP] = 1.0 - omega_cage / kinematic_cage if kinematic_cage != 0.0 else 0.0
+    pure = pure_rolling_cage_speed(balls, ring, par, omega, Q)
+    out[s.O_CAGE_SLIP] = 1.0 - omega_cage / pure if pure != 0.0 else 0.0
     out[s.O_KINETIC] = kinetic_energy(balls, cage, ring, par)
     return out
 
 
-TWINS = {"contact_loads": contact_loads, "contact_angles": contact_angles, "bearing_outputs": bearing_outputs}
+TWINS = {
+    "contact_loads": contact_loads,
+    "contact_angles": contact_angles,
+    "bearing_outputs": bearing_outputs,
+    "pure_rolling_cage_speed": pure_rolling_cage_speed,
+}

@@ -116,6 +116,22 @@ def traction_coefficient(lam, limit):
     return float(np.interp(lam, [1.0, 3.0], [0.1, limit]))
 
 
+def film_share(lam):
+    """0 up to Lambda = 1, straight line to 1 at Lambda = 3, 1 beyond (np.interp clamps)."""
+    return float(np.interp(lam, [1.0, 3.0], [0.0, 1.0]))
+
+
+def film_traction_coefficient(srr, mu_lim, s_0):
+    """Bair & Winer's tau = tau_L (1 - exp(-eta gamma_dot / tau_L)) over the contact: mu_lim (1 - e^(-srr/s_0))."""
+    return mu_lim * (1.0 - math.exp(-srr / s_0))
+
+
+def film_slip_speed(s_0, u, spin, a_major):
+    """max(s_0 u, (8 / (3 pi)) |spin| a): the creep scale or the linearised traction of a saturated spinning circle,
+    whose net force per unit slip is (1/(2|spin|)) int(mu_lim p / r dA) = mu_lim Q 3 pi / (8 a |spin|)."""
+    return max(s_0 * u, 8.0 / (3.0 * math.pi) * abs(spin) * a_major)
+
+
 def normal_damping(lam, Q, alpha_e, eta, a_major, R_ball, h_min):
     """C_n (N s/m). Hysteretic C_h = 1.5 alpha_e K_n delta with K_n = Q/delta (secant), so C_h =
     1.5 alpha_e Q; fluid C_f = (3 pi eta a / sqrt 2)(R_b/h_min)^1.5. Boundary (or no film): C_h;
@@ -143,5 +159,8 @@ TWINS = {
     "lubrication_regime": lubrication_regime,
     "friction_coefficient": friction_coefficient,
     "traction_coefficient": traction_coefficient,
+    "film_share": film_share,
+    "film_traction_coefficient": film_traction_coefficient,
+    "film_slip_speed": film_slip_speed,
     "normal_damping": normal_damping,
 }

@@ -364,7 +364,7 @@ def test_fused_power_laws_equal_the_film_and_houpert_kernels(lubricant, T_oil):
     """The refresh writes the Hamrock-Dowson films and Houpert's rolling force as exp(c + p ln u + q ln delta);
     at every contact they equal kernels.ehl.film_thickness and kernels.torque.houpert_rolling_force at the
     contact's own load and entrainment speed to rounding (1e-12: a handful of logs and exps)."""
-    from bearing_fmu.kernels.ehl import FILM_HAMROCK_DOWSON, film_thickness
+    from bearing_fmu.kernels.ehl import FILM_HAMROCK_DOWSON, film_thickness, friction_coefficient
     from bearing_fmu.kernels.lubricant import lubricant_state
     from bearing_fmu.kernels.torque import heathcote_force, houpert_rolling_force, hysteresis_force
 
@@ -389,8 +389,8 @@ def test_fused_power_laws_equal_the_film_and_houpert_kernels(lubricant, T_oil):
         assert t[s.T_H_C, 1, j] == pytest.approx(h_c, rel=1e-12)
         F_R = houpert_rolling_force(Q, u, p[s.P_RX_O], p[s.P_RY_O], p[s.P_E_RED], eta, xi)
         F_hh = hysteresis_force(Q, b, p[s.P_RX_O], p[s.P_ALPHA_H]) + heathcote_force(
-            Q, a, p[s.P_RX_O], p[s.P_F_O], p[s.P_D], t[s.T_MU, 1, j]
-        )
+            Q, a, p[s.P_RX_O], p[s.P_F_O], p[s.P_D], friction_coefficient(t[s.T_LAMBDA, 1, j])
+        )  # the Houpert terms keep the papers' mu(Lambda); T_MU is the tangential law's limit
         assert t[s.T_F_ROLL, 1, j] == pytest.approx(F_R + 0.5 * F_hh, rel=1e-12)
         a_ref, b_ref, _, p_ref = hertz_contact(
             Q, p[s.P_RX_O], p[s.P_RY_O], p[s.P_E_RED], p[s.P_K_O], p[s.P_EE_O], p[s.P_KK_O]

@@ -158,6 +158,21 @@ def test_contact_loads_angles_and_outputs_match_twin(models, name):
         assert out[s.O_P_LOSS] == (5.0 if averaged else 4.0)  # energy / interval, or the last step's power
 
 
+@pytest.mark.parametrize("name", ["6208", "B7214C"])
+def test_pure_rolling_cage_speed_matches_twin(models, name):
+    """The cage speed of pure rolling at the balls' current contacts and spin axes (the reference of cage_slip):
+    kernel (closed form of the 2x2 system) = twin (np.linalg.solve) on a 6208 under radial load and a B7214C
+    under thrust, at the model's speed and at another one (the speed scales it)."""
+    model = models[name]
+    Q = ref_outputs.contact_loads(model.balls, model.ring, model.par)
+    for omega in (model.omega, 2.5 * model.omega):
+        kernel = outputs.pure_rolling_cage_speed(model.balls, model.ring, model.par, omega, Q)
+        twin = ref_outputs.pure_rolling_cage_speed(model.balls, model.ring, model.par, omega, Q)
+        assert kernel == pytest.approx(twin, rel=1e-10)
+        assert 0.3 * abs(omega) < abs(kernel) < 0.5 * abs(omega)  # (1 - gamma)/2 for any bearing: 0.4-0.45
+    assert outputs.pure_rolling_cage_speed(model.balls, model.ring, model.par, 0.0, Q) == 0.0
+
+
 def test_film_outputs_skip_a_contact_closed_since_the_last_refresh(models):
     """A contact loaded now but open at the last refresh carries what the refresh writes for an open contact
     (Lambda = 0, h_min = h_c = inf): the film outputs come from the other contacts (kernel = twin), not Lambda = 0

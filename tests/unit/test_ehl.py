@@ -161,6 +161,25 @@ def test_traction_limit_replaces_the_full_film_friction():
     assert ek.traction_coefficient(7.0, 0.05) == 0.05 and ek.traction_coefficient(0.9, 0.05) == 0.1
 
 
+def test_film_traction_curve_share_and_slip_speed_match_their_twins():
+    """The tangential law's film pieces against their twins (np.interp, plain exp, max) over their range, and the
+    curve's defining points: Bair & Winer's tau_L (1 - exp(-gamma_dot eta / tau_L)) over the contact gives
+    mu_lim (1 - 1/e) at srr = s_0 and mu_lim at large slip; the share is 0 up to Lambda = 1, 1/2 at 2, 1 from 3."""
+    for lam in (0.0, 0.5, 1.0, 1.7, 2.0, 3.0, 3.5, math.inf):
+        assert_close(ek.film_share(lam), re_.film_share(lam), RTOL, "phi")
+    assert (ek.film_share(1.0), ek.film_share(2.0), ek.film_share(3.0)) == (0.0, 0.5, 1.0)
+    for srr in (0.0, 1e-4, 1e-3, 0.01, 0.3, 2.0):
+        for mu_lim, s_0 in ((0.06, 0.001), (0.045, 0.01)):
+            got = ek.film_traction_coefficient(srr, mu_lim, s_0)
+            assert_close(got, re_.film_traction_coefficient(srr, mu_lim, s_0), RTOL, "mu_film")
+    assert ek.film_traction_coefficient(0.001, 0.06, 0.001) == pytest.approx(0.06 * (1.0 - math.exp(-1.0)), rel=1e-14)
+    assert ek.film_traction_coefficient(1.0, 0.06, 0.001) == pytest.approx(0.06, rel=1e-14)
+    for spin in (-2000.0, -1.0, 0.0, 300.0, 5000.0):
+        for u in (0.5, 25.0):
+            got = ek.film_slip_speed(0.001, u, spin, 8e-4)
+            assert_close(got, re_.film_slip_speed(0.001, u, spin, 8e-4), RTOL, "v_s")
+
+
 def test_mixed_damping_is_the_series_combination():
     lam, Q, h = 2.0, 1457.0, 0.75e-6
     c_h = 1.5 * 0.08 * Q

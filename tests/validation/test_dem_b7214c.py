@@ -3,12 +3,12 @@ iso_vg68_mineral at 313 K. The internal geometry is estimated (bearing file), so
 radius, sharing the estimated 14 g of the cage: the default time step is 4.8 us at speed).
 
 The DEM imposes no race-control law: the balls' spin axes follow from the contact friction and inertia.
-Against the three quasi-static hypotheses (Rabreau 2018; Harris & Kotzalas 2006 vol. 2): outer-race
-control is the closest in cage speed and torque. In full film (mu = 0.01) the balls need ~0.4 s to reach
-rolling speed; after it every ball slides at both races (the friction cannot hold the gyroscopic moment)
-and the contact angles swing (alpha_i 23.0-24.4 deg, alpha_o 7.9-10.4 deg) with an ~800 Hz axial motion
-of the ring (+-7.4 um) and the balls that the sliding Coulomb contacts do not damp; its mean angles are
-23.6 deg and 9.3 deg (docs/dem.md).
+Against the three quasi-static hypotheses (Rabreau 2018; Harris & Kotzalas 2006 vol. 2): with the default
+tangential law (the film's EHL traction curve) the DEM is outer-race controlled. With the papers' Coulomb
+spring at mu(Lambda) = 0.01 in full film (traction_limit = 0.01) the balls need ~0.4 s to reach rolling speed;
+after it every ball slides at both races (the friction cannot hold the gyroscopic moment) and the contact angles
+swing (alpha_i 23.0-24.4 deg, alpha_o 7.9-10.4 deg) with an ~800 Hz axial motion of the ring (+-7.4 um) and the
+balls that the sliding Coulomb contacts do not damp; its mean angles are 23.6 deg and 9.3 deg (docs/dem.md).
 """
 
 import math
@@ -25,10 +25,14 @@ OMEGA = 10000.0 * 2.0 * math.pi / 60.0
 F_AXIAL = 800.0
 
 
+PAPERS_LAW = 0.01  # traction_limit of the papers' mu(Lambda): a Coulomb spring capped at 0.01 F_n in a full film
+
+
 @pytest.fixture(scope="module")
 def rolling():
-    """The state after 0.5 s: 10 ms speed ramp, then the balls' slow acceleration to rolling speed."""
-    model = DemModel("B7214C", "iso_vg68_mineral")
+    """With the papers' law, the state after 0.5 s: 10 ms speed ramp, then the balls' slow acceleration to rolling
+    speed."""
+    model = DemModel("B7214C", "iso_vg68_mineral", traction_limit=PAPERS_LAW)
     model.advance(2e-3, omega=0.0, F_z=F_AXIAL)
     for k in range(1, 21):
         model.advance(2e-3 + 10e-3 * k / 20, omega=OMEGA * k / 20, F_z=F_AXIAL)
@@ -38,7 +42,7 @@ def rolling():
 
 @pytest.fixture(scope="module")
 def steady(rolling):
-    model = DemModel("B7214C", "iso_vg68_mineral")
+    model = DemModel("B7214C", "iso_vg68_mineral", traction_limit=PAPERS_LAW)
     model.set_state(rolling)
     samples = [model.advance(0.5 + 0.02 * k, omega=OMEGA, F_z=F_AXIAL) for k in range(1, 6)]
     return {key: float(np.mean([o[key] for o in samples])) for key in samples[0]}
@@ -55,14 +59,14 @@ def _axial_amplitude(model, duration, samples=400):
     return 0.5 * (max(tail) - min(tail))
 
 
-def test_axial_oscillation_comes_with_sliding_at_both_contacts(rolling):
+def test_papers_law_axial_oscillation_comes_with_sliding_at_both_contacts(rolling):
     """The contact angles swing with an ~800 Hz axial motion of the ring and the balls (700 Hz with twice the
     ring mass), 7.2-7.4 um whatever dt (0.25-4.8 us), refresh (every 1-80 steps), k_t ratio, cage damping,
     hysteresis and v_reg (docs/dem.md). Measured with it: with mu = 0.01 (full film) every ball slides at
     both races, each tangential force at its Coulomb limit (the gyroscopic moment of outer-race control
     exceeds what the friction can hold), and a sliding Coulomb force does not grow with the sliding speed,
     so it does not damp the mode."""
-    model = DemModel("B7214C", "iso_vg68_mineral")
+    model = DemModel("B7214C", "iso_vg68_mineral", traction_limit=PAPERS_LAW)
     model.set_state(rolling)
     contacts = model.contacts()
     for race, suffix in ((0, "_inner"), (1, "_outer")):
@@ -84,9 +88,9 @@ def hypotheses():
     }
 
 
-def test_b7214c_runs_stably_and_rolls_as_outer_race_control(steady, hypotheses):
-    """0.6 s at the default time step without a monitor stop; cage speed within 1 % of outer-race control
-    (measured +0.6 %), friction torque from the contact power within 15 % of its Houpert torque (measured
+def test_papers_law_runs_stably_and_rolls_close_to_outer_race_control(steady, hypotheses):
+    """The papers' law: 0.6 s at the default time step without a monitor stop; cage speed within 1 % of outer-race
+    control (measured +0.6 %), friction torque from the contact power within 15 % of its Houpert torque (measured
     +1.7 %); the contact angles lie between the outer- and the inner-race-control angles (3 % margin), as
     expected of a spin axis that no race-control law imposes."""
     orc, irc = hypotheses["outer"], hypotheses["inner"]
@@ -106,6 +110,35 @@ def test_b7214c_runs_stably_and_rolls_as_outer_race_control(steady, hypotheses):
         assert 0.97 * low <= steady[name] <= 1.03 * high
 
 
+def _check_outer_race_control(model, n_samples, hypotheses, torque_rel):
+    """Run the model up to 10 000 rpm (10 ms ramp) and 0.3 s at speed, then n_samples 10 ms averages; assert
+    outer-race control with the gyroscopic moment: cage within 1 %, both contact angles within 3 % (the acceptance of
+    the DEM fidelity against the closest quasi-static hypothesis), torque within torque_rel, alpha_o within 0.5 deg
+    over the samples (no 800 Hz swing), and the cage slip, against pure rolling at the operating contacts and spin
+    axes, below 0.5 % as the cage speed is (against the free angle's kinematics it read -3.9 %)."""
+    model.advance(2e-3, omega=0.0, F_z=F_AXIAL)
+    for k in range(1, 21):
+        model.advance(2e-3 + 10e-3 * k / 20, omega=OMEGA * k / 20, F_z=F_AXIAL)
+    model.advance(0.3, omega=OMEGA, F_z=F_AXIAL)
+    samples = [model.advance(0.3 + 0.01 * k, omega=OMEGA, F_z=F_AXIAL) for k in range(1, n_samples + 1)]
+    mean = {
+        key: float(np.mean([o[key] for o in samples])) for key in ("omega_cage", "torque", "alpha_inner", "alpha_outer")
+    }
+    orc = hypotheses["outer"]
+    print(
+        f"B7214C DEM, traction_limit {model.traction_limit}: cage {mean['omega_cage']:.2f} rad/s, torque "
+        f"{mean['torque']:.4f} N.m, alpha_i {math.degrees(mean['alpha_inner']):.2f} deg, alpha_o "
+        f"{math.degrees(mean['alpha_outer']):.2f} deg, cage slip {samples[-1]['cage_slip']:.4f}"
+    )
+    assert mean["omega_cage"] == pytest.approx(orc["omega_cage"], rel=0.01)
+    assert mean["alpha_inner"] == pytest.approx(orc["alpha_inner"], rel=0.03)
+    assert mean["alpha_outer"] == pytest.approx(orc["alpha_outer"], rel=0.03)
+    assert mean["torque"] == pytest.approx(orc["torque"], rel=torque_rel)
+    alpha_o = [math.degrees(o["alpha_outer"]) for o in samples]
+    assert max(alpha_o) - min(alpha_o) < 0.5
+    assert abs(samples[-1]["cage_slip"]) < 0.005
+
+
 def test_with_a_full_film_that_can_hold_the_gyroscopic_moment_it_is_outer_race_control(hypotheses):
     """traction_limit = 0.05 (the balls' tangential force may reach 0.05 F_n in a full film instead of the papers'
     0.01; of the order of an EHL limiting traction coefficient, a value for the test, not a measured one; the
@@ -116,23 +149,18 @@ def test_with_a_full_film_that_can_hold_the_gyroscopic_moment_it_is_outer_race_c
     control with the gyroscopic moment. Asserted: cage within 1 %, both contact angles within 3 % (the
     acceptance of the DEM fidelity against the closest quasi-static hypothesis), torque within 15 %, and the
     800 Hz swing gone: alpha_o within 0.5 deg over the samples (measured 0.06 deg; 7.9-10.4 deg with 0.01)."""
-    model = DemModel("B7214C", "iso_vg68_mineral", traction_limit=0.05)
-    model.advance(2e-3, omega=0.0, F_z=F_AXIAL)
-    for k in range(1, 21):
-        model.advance(2e-3 + 10e-3 * k / 20, omega=OMEGA * k / 20, F_z=F_AXIAL)
-    model.advance(0.3, omega=OMEGA, F_z=F_AXIAL)
-    samples = [model.advance(0.3 + 0.01 * k, omega=OMEGA, F_z=F_AXIAL) for k in range(1, 31)]
-    mean = {
-        key: float(np.mean([o[key] for o in samples])) for key in ("omega_cage", "torque", "alpha_inner", "alpha_outer")
-    }
-    orc = hypotheses["outer"]
-    print(
-        f"B7214C DEM, traction limit 0.05: cage {mean['omega_cage']:.2f} rad/s, torque {mean['torque']:.4f} N.m, "
-        f"alpha_i {math.degrees(mean['alpha_inner']):.2f} deg, alpha_o {math.degrees(mean['alpha_outer']):.2f} deg"
-    )
-    assert mean["omega_cage"] == pytest.approx(orc["omega_cage"], rel=0.01)
-    assert mean["alpha_inner"] == pytest.approx(orc["alpha_inner"], rel=0.03)
-    assert mean["alpha_outer"] == pytest.approx(orc["alpha_outer"], rel=0.03)
-    assert mean["torque"] == pytest.approx(orc["torque"], rel=0.15)
-    alpha_o = [math.degrees(o["alpha_outer"]) for o in samples]
-    assert max(alpha_o) - min(alpha_o) < 0.5
+    _check_outer_race_control(DemModel("B7214C", "iso_vg68_mineral", traction_limit=0.05), 30, hypotheses, 0.15)
+
+
+def test_with_the_ehl_traction_curve_it_is_outer_race_control(hypotheses):
+    """The default tangential law (the film's EHL traction curve of iso_vg68_mineral: limiting coefficient 0.06,
+    knee s_0 = 0.1 % slide-to-roll ratio, both estimated; docs/dem.md) holds the gyroscopic moment of outer-race
+    control, and the DEM reproduces that hypothesis (Jones 1960; Harris & Kotzalas 2006 vol. 2; the quasi-static
+    fidelity with the gyroscopic moment). Acceptance of the DEM fidelity against the closest quasi-static
+    hypothesis: contact angles within 3 %, cage speed within 1 %, torque within 5 % (the Houpert terms are the
+    same; the film's slip adds its traction losses). Measured (0.3-0.5 s, means of 10 ms averages): cage -0.27 %,
+    torque +0.08 %, alpha_i -0.20 %, alpha_o +1.04 %; the 800 Hz swing of the papers' law is gone (alpha_o within
+    0.01 deg over the samples; asserted 0.5 deg as for the 0.05 override). How the result depends on the estimated
+    knee (docs/dem.md): s_0 = 0.3 % gives alpha_o +3.2 %, 1 % gives +13 % (the balls then hold part of the moment at
+    the inner race)."""
+    _check_outer_race_control(DemModel("B7214C", "iso_vg68_mineral"), 20, hypotheses, 0.05)

@@ -1,5 +1,6 @@
 """Ball-race contact of the DEM: exact groove-torus geometry, Hertz normal law with C_n(Lambda) damping,
-tangential spring with a Coulomb limit, and the Houpert resistances as moments on the ball.
+tangential force of the asperities (spring with a Coulomb limit) and of the film (EHL traction curve), and the
+Houpert resistances as moments on the ball.
 
 SI units. Guessasma & Machado (2018) and Farah et al. (2020) give the model: Kelvin-Voigt normal
 contact with the Hertz elliptical stiffness, regime-dependent damping C_n(Lambda) and friction mu(Lambda),
@@ -12,6 +13,14 @@ to the ball centre; the contact normal is n = s/|s| (it points from the curvatur
 ball centre to the contact point, at the ball centre + (D/2) n). The same expression holds for the
 inner and the outer groove (Harris & Kotzalas 2006, ch. 2; the quasi-static model of this package
 uses it per ball in the ball's plane).
+
+Tangential force. The papers' Cundall-Strack spring with a Coulomb cap mu(Lambda) F_n stores elastic energy
+that a full EHL film does not: a film transmits a traction that depends on the sliding speed. So the spring is
+kept for the share of the load that asperities carry (the boundary friction, 1 - phi with phi =
+ehl.film_share(Lambda)), and the film's share phi transmits the EHL traction curve mu_lim (1 - exp(-SRR/s_0))
+of the lubricant (ehl.film_traction_coefficient) along the sliding velocity. The override traction_limit > 0
+keeps the spring alone, capped at the ramp from 0.1 at Lambda = 1 to that value in a full film (0.01: the
+papers' mu(Lambda)).
 
 Rolling resistances (Houpert, kernels.torque). The EHL rolling force F_R acts on both surfaces
 (power 2 F_R u, Biboulet & Houpert 2010); hysteresis F_h and Heathcote sliding F_H dissipate F u
@@ -127,6 +136,7 @@ def ball_race_contact(
     c_frozen,
     f_roll_surface,
     m_s,
+    film,
     frame,
     steps,
 ):
@@ -136,7 +146,10 @@ def ball_race_contact(
     1 outer (fixed). Ball: centre (px, py, pz) (m), predicted velocity v (m/s) and angular velocity w (rad/s),
     orbital speed w_orbit (rad/s); (ox, oy, oz): the contact's tangential spring (m). From the last tribology
     refresh: mu (-), regime code, c_frozen (N.s/m), f_roll_surface = F_R + (F_h + F_H)/2 (N) and the pivoting
-    moment m_s (N.m). frame = (omega (rad/s), vrx0, vry0, vrz0 (m/s), cx, cy, cz, rho, rg (m), K_h (N/m^1.5)):
+    moment m_s (N.m). film = (phi (-), slip = 1/v_s (s/m), mu_lim (-), kappa (s/kg)): the film's share of
+    the tangential force, its traction curve mu_lim (1 - exp(-v_t / v_s)) (ehl.film_slip_speed) and the slip a
+    newton removes from the ball's two contacts in a step (7 dt / m), for the curve's implicit evaluation.
+    frame = (omega (rad/s), vrx0, vry0, vrz0 (m/s), cx, cy, cz, rho, rg (m), K_h (N/m^1.5)):
     the race's motion, its groove's curvature-centre circle, (f - 1/2) D and Hertz constant. steps = (half_d
     = D/2 (m), alpha_e (s/m), kt_ratio (-), rate_inv = 4 dt / I (1/(N.m.s)), the inverse of the largest viscous
     rate of a regularised moment, w_reg = v_reg / (D/2) (rad/s), dt (s)). (Tuples keep the argument count
@@ -183,10 +196,35 @@ def ball_race_contact(
     F_n = Q + c_n * vn
     if F_n < 0.0:  # a damper cannot pull the surfaces together
         F_n = 0.0
-    kt = kt_ratio * K_h * root
-    sx, sy, sz, ftx, fty, ftz, slipping, reversed_ = tangential_spring(
-        ox, oy, oz, nx, ny, nz, vtx, vty, vtz, dt, kt, mu * F_n
-    )
+    phi, slip, mu_lim, kappa = film
+    # tangential force: where asperities carry load (share 1 - phi) an elastic stick, the Cundall-Strack spring
+    # capped at the boundary friction; the film (share phi) has no elastic stick, it transmits the EHL traction
+    # of the sliding speed (ehl.film_traction_coefficient): a damper at small slip, the limiting traction beyond
+    film_force = phi * mu_lim * F_n  # plateau of the film's traction (N)
+    if phi < 1.0:
+        kt = kt_ratio * K_h * root
+        sx, sy, sz, ftx, fty, ftz, slipping, reversed_ = tangential_spring(
+            ox, oy, oz, nx, ny, nz, vtx, vty, vtz, dt, kt, max(mu * F_n - film_force, 0.0)
+        )
+    else:
+        sx, sy, sz, ftx, fty, ftz, slipping, reversed_ = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, False, False
+    power = c_n * vn * vn if F_n > 0.0 else 0.0
+    if slipping:
+        power -= ftx * vtx + fty * vty + ftz * vtz
+    if film_force > 0.0:
+        v = math.sqrt(vtx * vtx + vty * vty + vtz * vtz)
+        if v > 0.0:
+            # linearly implicit in the slip: F = F(v) / (1 + kappa dF/dv) with kappa = 7 dt / m, the slip a force
+            # at the surface of a solid sphere removes per newton in a step (3.5 dt / m) for both contacts of the
+            # ball. Where the curve is steep (low speed, dF/dv dt >> m) the film stops at most half the slip in a
+            # step (no overshoot, no chatter) and holds what rolling needs, as a stick; elsewhere F = F(v)
+            e = math.expm1(-v * slip)
+            f = -film_force * e / (1.0 + kappa * film_force * slip * (1.0 + e))
+            scale = f / v
+            ftx -= scale * vtx
+            fty -= scale * vty
+            ftz -= scale * vtz
+            power += f * v
     # force on the ball: normal push back towards the curvature centre, tangential traction
     fx = -F_n * nx + ftx
     fy = -F_n * ny + fty
@@ -214,7 +252,4 @@ def ball_race_contact(
     mx = mx - m_roll * qx - m_spin * spin * nx
     my = my - m_roll * qy - m_spin * spin * ny
     mz = mz - m_roll * qz - m_spin * spin * nz
-    power = c_n * vn * vn if F_n > 0.0 else 0.0
-    if slipping:
-        power -= ftx * vtx + fty * vty + ftz * vtz
     return delta, fx, fy, fz, mx, my, mz, sx, sy, sz, slipping, reversed_, power

@@ -48,6 +48,7 @@ from .state import (
     P_D,
     P_DAMPING_STOP,
     P_DELTA_LIM_I,
+    P_FILM_RATE,
     P_GUIDE_GAP,
     P_I_BALL,
     P_K_CB,
@@ -57,6 +58,7 @@ from .state import (
     P_M_BALL,
     P_M_CAGE,
     P_M_RING,
+    P_MU_LIM,
     P_R_CAGE,
     P_R_GUIDE,
     P_REFRESH,
@@ -84,7 +86,9 @@ from .state import (
     T_M_SPIN,
     T_MU,
     T_P_FILM,
+    T_PHI,
     T_REGIME,
+    T_SLIP,
     W_CAP_BALL,
     W_FB,
     W_FC,
@@ -163,6 +167,8 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
         2.0 * par[P_V_REG] / par[P_D],
         dt,
     )
+    mu_lim = par[P_MU_LIM]
+    kappa = par[P_FILM_RATE] * dt / par[P_M_BALL]  # slip (m/s) a newton removes from a ball's contacts in a step
     for race in range(2):
         cx, cy, cz, rho = race_circle(race, ring, par)
         frame = (
@@ -201,6 +207,7 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
                 trib[T_C_N, race, j],
                 trib[T_F_ROLL, race, j],
                 trib[T_M_SPIN, race, j],
+                (trib[T_PHI, race, j], trib[T_SLIP, race, j], mu_lim, kappa),
                 frame,
                 steps,
             )

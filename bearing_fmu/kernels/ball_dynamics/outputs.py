@@ -15,7 +15,6 @@ from bearing_fmu_common.jit import kernel
 
 from ..capacitance import ball_capacitance
 from ..ehl import lubrication_regime
-from ..geometry import rolling_kinematics
 from .contacts import groove_approach
 from .monitor import kinetic_energy
 from .state import (
@@ -25,6 +24,7 @@ from .state import (
     A_POWER_I,
     A_POWER_O,
     B_ORBIT,
+    B_VX,
     B_WX,
     B_X,
     O_ALPHA_I,
@@ -49,9 +49,7 @@ from .state import (
     O_SIZE,
     O_SRR_MAX,
     O_TORQUE,
-    P_ALPHA0,
     P_D,
-    P_DM,
     P_KH_I,
     P_RG_I,
     T_CAP,
@@ -88,6 +86,63 @@ def contact_angles(balls, ring, par, alpha):
                 balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, rho, par[P_RG_I + race]
             )
             alpha[race, j] = math.atan2(abs(nz), math.sqrt(nx * nx + ny * ny)) if delta > 0.0 else 0.0
+
+
+@kernel(inline="always")  # called once per output evaluation from bearing_outputs: no array-passing call
+def pure_rolling_cage_speed(balls, ring, par, omega, Q):
+    """Cage speed (rad/s) at which the balls loaded on both races (Q[race, ball] > 0, N) would roll without
+    sliding in the rolling direction at either contact centre, at their current contact points and with their
+    current spin axes; the mean over those balls, 0 when none (or at rest).
+
+    Per ball at p with unit spin axis e (its angular velocity relative to its orbit, w - w_orbit z), orbit
+    direction t = z x p / |p|, contact offsets r_k = (D/2) n_k: the ball surface moves at w_c (z x (p + r_k)).t +
+    w_R (e x r_k).t in the rolling direction, the inner race at omega (z x (p + r_i - c)).t (c its centre), the
+    outer one not at all; zero slip at both gives w_c = omega b_i g_o / (a_i g_o - a_o g_i) with
+    a_k = (z x (p + r_k)).t, b_i = (z x (p + r_i - c)).t, g_k = (e x r_k).t. A radial bearing (n = -+ radial,
+    e = z) gives omega (1 - gamma) / 2 (Harris & Kotzalas 2006, vol. 1, ch. 8)."""
+    half_d = 0.5 * par[P_D]
+    total = 0.0
+    count = 0
+    for j in range(balls.shape[1]):
+        if omega == 0.0 or Q[0, j] <= 0.0 or Q[1, j] <= 0.0:
+            continue
+        px = balls[B_X, j]
+        py = balls[B_X + 1, j]
+        pz = balls[B_X + 2, j]
+        r2 = px * px + py * py
+        w_orbit = (px * balls[B_VX + 1, j] - py * balls[B_VX, j]) / r2
+        ex = balls[B_WX, j]
+        ey = balls[B_WX + 1, j]
+        ez = balls[B_WX + 2, j] - w_orbit
+        w = math.sqrt(ex * ex + ey * ey + ez * ez)
+        if w == 0.0:
+            continue
+        ex /= w
+        ey /= w
+        ez /= w
+        r = math.sqrt(r2)
+        tx = -py / r
+        ty = px / r
+        a_i = a_o = g_i = g_o = b_i = 0.0
+        for race in range(2):
+            cx, cy, cz, rho = race_circle(race, ring, par)
+            _, nx, ny, nz = groove_approach(px, py, pz, cx, cy, cz, rho, par[P_RG_I + race])
+            rx = half_d * nx
+            ry = half_d * ny
+            rz = half_d * nz
+            # (z x v).t = -v_y t_x + v_x t_y
+            a_k = -(py + ry) * tx + (px + rx) * ty
+            g_k = (ey * rz - ez * ry) * tx + (ez * rx - ex * rz) * ty
+            if race == 0:
+                a_i, g_i = a_k, g_k
+                b_i = -(py + ry - cy) * tx + (px + rx - cx) * ty
+            else:
+                a_o, g_o = a_k, g_k
+        den = a_i * g_o - a_o * g_i
+        if den != 0.0:
+            total += omega * b_i * g_o / den
+            count += 1
+    return total / count if count > 0 else 0.0
 
 
 @kernel
@@ -170,6 +225,6 @@ def bearing_outputs(balls, cage, ring, trib, par, acc, omega, interval, orbit0, 
         out[O_Q_OUTER_RING] = acc[A_DISS_O] / interval
     out[O_P_LOSS] = out[O_Q_INNER_RING] + out[O_Q_OUTER_RING]
     out[O_TORQUE] = out[O_P_LOSS] / abs(omega) if omega != 0.0 else 0.0
-    kinematic_cage = rolling_kinematics(omega, par[P_D], par[P_DM], par[P_ALPHA0])[0]
-    out[O_CAGE_SLIP] = 1.0 - omega_cage / kinematic_cage if kinematic_cage != 0.0 else 0.0
+    pure = pure_rolling_cage_speed(balls, ring, par, omega, Q)
+    out[O_CAGE_SLIP] = 1.0 - omega_cage / pure if pure != 0.0 else 0.0
     out[O_KINETIC] = kinetic_energy(balls, cage, ring, par)

@@ -39,7 +39,7 @@ S_SIZE = 6
 S_STRIDE = S_OUTER - S_INNER  # inner -> outer block
 
 # ---- per-contact tribology, refreshed every N steps: float64[T_SIZE, 2, Z] (race 0 inner, 1 outer)
-T_MU = 0  # Coulomb limit of the tangential force, ehl.traction_coefficient (-; the papers' mu(Lambda) by default)
+T_MU = 0  # largest tangential force over F_n (-): (1 - phi) mu_boundary + phi mu_lim, or the Coulomb override's cap
 T_C_N = 1  # normal damping C_n(Lambda) at the refresh load (N.s/m); boundary regime recomputes it
 T_REGIME = 2  # 0 boundary, 1 mixed, 2 full film
 T_F_ROLL = 3  # rolling resistance per surface F_R + (F_h + F_H)/2 (N), applied as a moment on the ball
@@ -56,7 +56,9 @@ T_H_MIN = 13  # minimum film thickness (m, inf if open)
 T_H_C = 14  # central film thickness (m, inf if open)
 T_LAMBDA = 15  # film parameter (-)
 T_CAP = 16  # capacitance (F)
-T_SIZE = 17
+T_PHI = 17  # share of the tangential force carried by the film, ehl.film_share (-; 0 with the Coulomb override)
+T_SLIP = 18  # 1 / (s_0 u): the film's traction is mu_lim (1 - exp(-|v_t| T_SLIP)) (s/m)
+T_SIZE = 19
 
 # ---- counters: int64[K_SIZE + 2 Z] ---------------------------------------------------------------
 K_STEP = 0  # steps taken since the start (selects the tribology refresh steps)
@@ -123,8 +125,11 @@ P_HP_O = 56
 P_HERTZ_SCALE_STRIDE = P_HA_O - P_HA_I  # inner -> outer block of the Hertz scaling
 P_CAPACITANCE = 57  # 1: compute the contact capacitances; 0: the scene turned them off (not computed, 0)
 P_DAMPING_STOP = 58  # largest (c_i + c_o) dt / m of a ball at a refresh before the monitor stops (-)
-P_TRACTION = 59  # limiting traction coefficient of a full film for the tangential force; 0 = the papers' mu(Lambda)
-P_SIZE = 60
+P_TRACTION = 59  # Coulomb override: the full-film cap of a spring-only tangential law (-); 0 = the EHL traction curve
+P_MU_LIM = 60  # limiting traction coefficient of the lubricant's film (-), the traction curve's plateau
+P_S_TRACTION = 61  # slide-to-roll ratio s_0 where the traction curve's linear part meets mu_lim (-)
+P_FILM_RATE = 62  # slip a newton removes from a ball's two contacts in a step, over dt / m_ball (-): 2 x 3.5
+P_SIZE = 63
 
 # ---- outputs of advance(): float64[O_SIZE] --------------------------------------------------------
 O_OMEGA_CAGE = 0  # cage speed: mean orbital angular speed of the balls (rad/s)

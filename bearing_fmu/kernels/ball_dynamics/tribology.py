@@ -28,6 +28,8 @@ from ..capacitance import contact_capacitance, contact_permittivity
 from ..ehl import (
     FILM_HAMROCK_DOWSON,
     film_parameter,
+    film_share,
+    film_slip_speed,
     film_thickness,
     friction_coefficient,
     lubrication_regime,
@@ -55,11 +57,13 @@ from .state import (
     P_HP_I,
     P_K_I,
     P_KH_I,
+    P_MU_LIM,
     P_PRESSURE,
     P_RG_I,
     P_RHO_I,
     P_RX_I,
     P_RY_I,
+    P_S_TRACTION,
     P_SIGMA_I,
     P_TRACTION,
     P_Z_I,
@@ -77,9 +81,11 @@ from .state import (
     T_MU,
     T_P_FILM,
     T_P_MAX,
+    T_PHI,
     T_Q,
     T_REGIME,
     T_SIZE,
+    T_SLIP,
     T_SPIN,
     T_SRR,
     T_U,
@@ -153,6 +159,9 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
     capacitance = par[P_CAPACITANCE] > 0.5
     pressure = int(par[P_PRESSURE])
     traction = par[P_TRACTION]
+    mu_lim = par[P_MU_LIM]
+    s_0 = par[P_S_TRACTION]
+    mu_boundary = friction_coefficient(0.0)
     for race in range(2):
         h = RACE_STRIDE_HERTZ * race
         cx, cy, cz, rho = race_circle(race, ring, par)
@@ -243,7 +252,20 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
                 h_min = 0.0
             lam = film_parameter(h_min, sigma)
             mu = friction_coefficient(lam)  # the papers' mu(Lambda): the Houpert sliding terms below
-            trib[T_MU, race, j] = traction_coefficient(lam, traction)
+            # tangential law: the asperities' share (1 - phi) a Coulomb spring at the boundary mu, the film's
+            # share phi the EHL traction curve of the sliding speed (contacts.ball_race_contact); the Coulomb
+            # override (traction > 0) keeps a spring alone, capped at the ramp to its full-film value
+            if traction > 0.0:
+                trib[T_MU, race, j] = traction_coefficient(lam, traction)
+                trib[T_PHI, race, j] = 0.0
+                trib[T_SLIP, race, j] = 0.0
+            else:
+                phi = film_share(lam)
+                trib[T_PHI, race, j] = phi
+                trib[T_MU, race, j] = (1.0 - phi) * mu_boundary + phi * mu_lim
+                # the sliding speed that sets the curve's slope: the creep scale s_0 u, or, in a contact that spins,
+                # the spin's own sliding across the ellipse (SPIN_SLIP |spin| a, ehl.film_slip_speed)
+                trib[T_SLIP, race, j] = 1.0 / film_slip_speed(s_0, u, spin, a) if u > 0.0 else 0.0
             trib[T_C_N, race, j] = normal_damping(lam, Q, par[P_ALPHA_E], eta, a, half_d, h_min)
             trib[T_REGIME, race, j] = lubrication_regime(lam)
             # Houpert forces (F_R above, the others from kernels.torque); the contact's power as
