@@ -475,6 +475,8 @@ DEM_INPUTS = (
     _BY_NAME["F_x"],
     _BY_NAME["F_y"],
     _BY_NAME["F_z"],
+    _BY_NAME["M_x"],
+    _BY_NAME["M_y"],
     T_OIL,
     replace(_BY_NAME["dPd_thermal"], option=""),  # the DEM always has it
 )
@@ -483,6 +485,10 @@ DEM_OUTPUTS = (
     *(
         _dem_output(name, ("ring", ds.R_X + i), f"{DOF_WORDS[i]} of the inner ring at the end of the step")
         for i, name in enumerate(("x", "y", "z"))
+    ),
+    *(
+        _dem_output(name, ("ring", ds.R_TH + i), f"{DOF_WORDS[3 + i]} of the inner ring at the end of the step")
+        for i, name in enumerate(("theta_x", "theta_y"))
     ),
     *(
         _dem_output(

@@ -1,8 +1,8 @@
 """DemModel: facade of the DEM (ball dynamics) fidelity, kernels.ball_dynamics.
 
 Guessasma & Machado (2018) and Farah et al. (2020): Z steel balls and Z PA66 cage balls, inner ring
-with translational DOF x, y, z and prescribed rotation omega(t), fixed outer ring; per-contact EHL
-film, regime-dependent damping and friction, Houpert rolling resistances, capacitance. SI units.
+with translational DOF x, y, z, tilts theta_x, theta_y and prescribed rotation omega(t), fixed outer ring;
+per-contact EHL film, regime-dependent damping and friction, Houpert rolling resistances, capacitance. SI units.
 
 The whole state lives in numpy arrays (get_state/set_state copy all of them, for FMU rollback).
 advance(t_end, ...) runs every step of the interval in one jitted call; the inner-ring speed goes
@@ -97,15 +97,29 @@ def _cage_material(path):
     return get("E", CAGE_E), get("nu", CAGE_NU), get("rho", CAGE_RHO)
 
 
-def _ring_mass(bearing):
-    """Inner-ring mass (kg): steel annulus from the bore to the groove bottom over the ring width (estimated:
-    shoulders and groove roughly cancel); without bore or width in the file, bore = d_m - 2 D, width = 1.5 D."""
+def _ring_annulus(bearing):
+    """(bore, groove bottom, width) in m of the annulus that estimates the inner ring: from the bore to the groove
+    bottom over the ring width (shoulders and groove roughly cancel); without bore or width in the file,
+    bore = d_m - 2 D, width = 1.5 D."""
     with open(bearing.path, "rb") as fh:
         geometry = tomllib.load(fh).get("geometry", {})
     bore = float(geometry["bore"]["value"]) if "bore" in geometry else bearing.dm - 2.0 * bearing.D
     width = float(geometry["width"]["value"]) if "width" in geometry else 1.5 * bearing.D
-    groove_bottom = bearing.dm - bearing.D
+    return bore, bearing.dm - bearing.D, width
+
+
+def _ring_mass(bearing):
+    """Inner-ring mass (kg): a steel annulus (_ring_annulus, estimated)."""
+    bore, groove_bottom, width = _ring_annulus(bearing)
     return bearing.ring.rho * 0.25 * math.pi * (groove_bottom**2 - bore**2) * width
+
+
+def _ring_inertia(bearing, mass):
+    """(about a diameter, about the axis) in kg.m^2 of an inner ring of mass `mass` (kg) shaped as the annulus of
+    _ring_mass (estimated): m ((R^2 + r^2)/4 + w^2/12) and m (R^2 + r^2)/2, R and r the outer and bore radii."""
+    bore, groove_bottom, width = _ring_annulus(bearing)
+    radii = 0.25 * (groove_bottom**2 + bore**2)  # R^2 + r^2
+    return mass * (0.25 * radii + width**2 / 12.0), 0.5 * mass * radii
 
 
 class DemModel:
@@ -118,6 +132,9 @@ class DemModel:
     refresh interval in steps (>= 1); None = every refresh_interval (s) of simulated time. The defaults
     SAFETY and REFRESH_INTERVAL are chosen from the error-vs-run-time front (docs/reports/dem_error.md). Pd: diametral
     clearance (m) overriding the file. ring_mass: inner-ring mass (kg); None = estimated from the bore.
+    ring_inertia: its moment of inertia about a diameter through its centre (kg.m^2), for the tilts; None =
+    estimated from the same annulus (the polar moment, for the ring's gyroscopic moment, is always the annulus's
+    for the ring's mass).
     kt_ratio: tangential/normal stiffness (-) of the asperities' spring. traction_limit: 0 (default) = the
     tangential force of the film is the lubricant's EHL traction curve (kernels.ehl.film_traction_coefficient,
     the film's share ehl.film_share(Lambda)), the asperities' share a spring capped at the boundary friction;
@@ -138,6 +155,7 @@ class DemModel:
         Pd=None,
         ring_mass=None,
         kt_ratio=KT_RATIO,
+        ring_inertia=None,
         safety=SAFETY,
         refresh_interval=REFRESH_INTERVAL,
         averaged=True,
@@ -174,14 +192,19 @@ class DemModel:
             raise InputError(f"kt_ratio = {kt_ratio} is outside the allowed range [0.1, 1.5]")
         if ring_mass is not None and not (math.isfinite(ring_mass) and ring_mass > 0.0):
             raise InputError(f"ring_mass = {ring_mass} kg is outside the allowed range ]0, inf[ kg")
+        if ring_inertia is not None and not (math.isfinite(ring_inertia) and ring_inertia > 0.0):
+            raise InputError(f"ring_inertia = {ring_inertia} kg.m^2 is outside the allowed range ]0, inf[ kg.m^2")
         self.ring_mass_estimated = ring_mass is None
+        self.ring_inertia_estimated = ring_inertia is None
         self.dt_fixed = dt
         self.refresh_fixed = None if refresh is None else int(refresh)
         self.omega_max = DM_N_LIMIT / (b.dm * 1e3) * 2.0 * math.pi / 60.0
-        self.par = self._pack(ring_mass, kt_ratio)
+        self.par = self._pack(ring_mass, kt_ratio, ring_inertia)
         self.load_limit = self._load_limit()
         load = self.load_limit
         narrowed = {name: (-load, load, MATERIAL_LIMIT) for name in ("F_x", "F_y", "F_z")}
+        # moments: the load limit at the pitch radius, as the quasi-static fidelity's
+        narrowed.update({name: (-load * 0.5 * b.dm, load * 0.5 * b.dm, MATERIAL_LIMIT) for name in ("M_x", "M_y")})
         narrowed["omega"] = (-self.omega_max, self.omega_max, f"d_m n <= {DM_N_LIMIT:.0e} mm.rpm")
         # the clearance in effect, P_d + dPd_thermal, keeps the geometric limits of P_d itself (|P_d| <= A:
         # neither an interference beyond the groove clearance nor a free contact angle beyond 60 deg)
@@ -234,7 +257,7 @@ class DemModel:
         self._gather()
 
     # -- set-up --------------------------------------------------------------------------------
-    def _pack(self, ring_mass, kt_ratio):
+    def _pack(self, ring_mass, kt_ratio, ring_inertia):
         b, sc = self.bearing, self.scene
         D = b.D
         rc = race_contacts(b, sc, self.Pd)
@@ -291,6 +314,9 @@ class DemModel:
         p[s.P_C_CB] = 2.0 * p[s.P_ZETA_CAGE] * math.sqrt(1.5 * p[s.P_K_CB] * m_eff)
         p[s.P_C_GUIDE] = 2.0 * p[s.P_ZETA_CAGE] * math.sqrt(1.5 * p[s.P_K_GUIDE] * p[s.P_M_CAGE])
         p[s.P_M_RING] = _ring_mass(b) if ring_mass is None else float(ring_mass)
+        p[s.P_I_RING], p[s.P_IP_RING] = _ring_inertia(b, p[s.P_M_RING])
+        if ring_inertia is not None:
+            p[s.P_I_RING] = float(ring_inertia)
         # physical penetration limit: the approach at which the Hertz pressure reaches the material limit
         for race, (Rx, Ry, c) in enumerate(((Rx_i, Ry_i, ci), (Rx_o, Ry_o, co))):
             q_lim = (P_MAX_ERROR / hertz_contact(1.0, Rx, Ry, E_red, *c)[3]) ** 3
@@ -346,7 +372,7 @@ class DemModel:
             self.cage[s.C_X : s.C_X + 3, j] = (R * c, R * sn, self.par[s.P_Z_GUIDE])
         self.omega = 0.0
 
-    def _initialise(self, omega, F_x, F_y, F_z, T_oil):
+    def _initialise(self, omega, F_x, F_y, F_z, T_oil, M_x=0.0, M_y=0.0):
         dyn.initialise_accelerations(
             self.balls,
             self.cage,
@@ -360,22 +386,23 @@ class DemModel:
             F_x,
             F_y,
             F_z,
+            M_x,
+            M_y,
             T_oil,
             self._work,
             self._acc,
         )
 
     # -- time step -----------------------------------------------------------------------------
-    def stable_time_step(self, F_x=0.0, F_y=0.0, F_z=0.0, omega=None, include_state=True):
-        """Stability limit (s) of the stiffest contact pair for the given loads (N) and speed (rad/s):
-        contact loads are an estimate (Stribeck's
-        5 F_r/Z for the radial load, F_a/(Z sin alpha) for the axial one with alpha >= 5 deg, plus the
-        centrifugal force), or the current ones where larger (include_state); the cage-ball load is bounded
-        by the friction force mu Q a ball can transmit (the cage contacts are frictionless: only the races'
-        traction pushes a ball against a cage ball), mu the largest mu(Lambda) of the loaded contacts at the
-        last tribology refresh (0.1 in the boundary regime, 0.01 in a full film). The normal damping C_n of
-        each contact is also that of the last refresh (a cold full film at low speed is overdamped). A film
-        that changes within the call is caught by the monitor (the automatic step is then halved)."""
+    def stable_time_step(self, F_x=0.0, F_y=0.0, F_z=0.0, omega=None, include_state=True, M_x=0.0, M_y=0.0):
+        """Stability limit (s) of the stiffest contact pair for the given loads (N, N.m) and speed (rad/s): contact
+        loads are an estimate (Stribeck's 5 F_r/Z for the radial load, F_a/(Z sin alpha) for the axial one with alpha >=
+        5 deg, 2 M/(Z rho_i sin alpha) for a moment, plus the centrifugal force), or the current ones where larger
+        (include_state); the cage-ball load is bounded by the friction force mu Q a ball can transmit (the cage contacts
+        are frictionless: only the races' traction pushes a ball against a cage ball), mu the largest mu(Lambda) of the
+        loaded contacts at the last tribology refresh (0.1 in the boundary regime, 0.01 in a full film). The normal
+        damping C_n of each contact is also that of the last refresh (a cold full film at low speed is overdamped). A
+        film that changes within the call is caught by the monitor (the automatic step is then halved)."""
         b = self.bearing
         omega = self.omega if omega is None else omega
         contact_loads(self.balls, self.ring, self.par, self._Q)
@@ -384,7 +411,8 @@ class DemModel:
         alpha = max(self.par[s.P_ALPHA0], math.radians(5.0))
         cage_speed = rolling_kinematics(abs(omega), b.D, b.dm, self.par[s.P_ALPHA0])[0]
         F_c = 0.5 * self.par[s.P_M_BALL] * b.dm * cage_speed**2
-        estimate = 5.0 * math.hypot(F_x, F_y) / b.Z + abs(F_z) / (b.Z * math.sin(alpha)) + F_c
+        axial = abs(F_z) + 2.0 * math.hypot(M_x, M_y) / self.par[s.P_RHO_I]
+        estimate = 5.0 * math.hypot(F_x, F_y) / b.Z + axial / (b.Z * math.sin(alpha)) + F_c
         Q_i = np.maximum(self._Q[0], estimate)
         Q_o = np.maximum(self._Q[1], estimate)
         C = self.trib[s.T_C_N]
@@ -392,22 +420,22 @@ class DemModel:
         mu = float(self.trib[s.T_MU][loaded].max()) if loaded.any() else MU_BOUNDARY
         return critical_time_step(self.par, Q_i, Q_o, C[0], C[1], mu * max(Q_i.max(), Q_o.max()))
 
-    def automatic_time_step(self, F_x=0.0, F_y=0.0, F_z=0.0, omega=None):
-        """The automatic step (s) for the given loads (N) and speed (rad/s; the faster end of a call: the limit
+    def automatic_time_step(self, F_x=0.0, F_y=0.0, F_z=0.0, omega=None, M_x=0.0, M_y=0.0):
+        """The automatic step (s) for the given loads (N, N.m) and speed (rad/s; the faster end of a call: the limit
         falls with the centrifugal load): safety x stable_time_step(), and at most DAMPING_PLAN m / c of the ball
         with the largest normal damping c (N.s/m, loaded contacts at the last refresh)."""
-        dt = self.safety * self.stable_time_step(F_x, F_y, F_z, omega)
+        dt = self.safety * self.stable_time_step(F_x, F_y, F_z, omega, M_x=M_x, M_y=M_y)
         ratio = damping_step_ratio(self.trib, self.par, 1.0)[0]  # largest c / m (1/s)
         return min(dt, DAMPING_PLAN / ratio) if ratio > 0.0 else dt
 
     # -- inputs --------------------------------------------------------------------------------
-    def _check(self, t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal):
+    def _check(self, t_end, omega, loads, T_oil, dPd_thermal):
         t = self.time
         if not (math.isfinite(t_end) and t_end > t):
             raise InputError(
                 f"t_end = {t_end} s is outside the allowed range ]{t:.9g}, inf[ s (after the current time)"
             )
-        self._limits.check((omega, F_x, F_y, F_z, T_oil, dPd_thermal))
+        self._limits.check((omega, *loads, T_oil, dPd_thermal))  # the order of DEM_INPUTS
 
     def _load_limit(self):
         """Largest admissible load (N): Z balls at the contact load of the penetration limit (p_max = 6 GPa);
@@ -422,22 +450,28 @@ class DemModel:
         return float(self.ring[s.R_TIME])
 
     # -- stepping ------------------------------------------------------------------------------
-    def advance(self, t_end, omega=None, F_x=0.0, F_y=0.0, F_z=0.0, T_oil=T_OIL_DEFAULT, dPd_thermal=0.0):
+    def advance(
+        self, t_end, omega=None, F_x=0.0, F_y=0.0, F_z=0.0, T_oil=T_OIL_DEFAULT, dPd_thermal=0.0, M_x=0.0, M_y=0.0
+    ):
         """Integrate to t_end (s): inner-ring speed from its current value linearly to omega (rad/s; None =
-        hold), loads F_x, F_y, F_z (N) on the inner ring, oil temperature T_oil (K), change of diametral
-        clearance dPd_thermal (m, added to Pd, negative = tighter: the outer groove circle moves by half of
-        it; the Hertz constants stay those of the nominal geometry, as in the quasi-static fidelity).
-        Returns outputs_dict().
+        hold), loads F_x, F_y, F_z (N) and moments M_x, M_y (N.m, about the ring's centre, that of its
+        groove-curvature-centre circle: the quasi-static fidelity's) on the inner ring, oil temperature T_oil (K),
+        change of diametral clearance dPd_thermal (m, added to Pd, negative = tighter: the outer groove circle
+        moves by half of it; the Hertz constants stay those of the nominal geometry, as in the quasi-static
+        fidelity). Returns outputs_dict().
 
         Raises InputError for inputs out of range, DemUnstableError when the monitor stops the run (the
         state is then left at the offending step: restore a saved state to retry)."""
         omega = self.omega if omega is None else float(omega)
-        self._advance(float(t_end), omega, float(F_x), float(F_y), float(F_z), float(T_oil), float(dPd_thermal))
+        loads = (float(F_x), float(F_y), float(F_z), float(M_x), float(M_y))
+        self._advance(float(t_end), omega, loads, float(T_oil), float(dPd_thermal))
         return self.outputs_dict()
 
-    def _advance(self, t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal):
-        """advance() without building the output dict (floats in SI units, omega given)."""
-        self._check(t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
+    def _advance(self, t_end, omega, loads, T_oil, dPd_thermal):
+        """advance() without building the output dict (floats in SI units, omega given; loads = (F_x, F_y, F_z,
+        M_x, M_y))."""
+        self._check(t_end, omega, loads, T_oil, dPd_thermal)
+        F_x, F_y, F_z, M_x, M_y = loads
         self.par[s.P_RHO_O] = self._rho_outer + 0.5 * dPd_thermal
         interval = t_end - self.time
         self._copy_state(self._start, self.__dict__)
@@ -445,20 +479,20 @@ class DemModel:
         dt = self.dt_fixed
         automatic = dt is None
         if automatic:
-            dt = self.automatic_time_step(F_x, F_y, F_z, max(abs(self.omega), abs(omega)))
+            dt = self.automatic_time_step(F_x, F_y, F_z, max(abs(self.omega), abs(omega)), M_x, M_y)
         n_steps = max(1, math.ceil(interval / dt * (1.0 - 1e-12)))
         self.step_halvings = 0
         while True:
             dt = interval / n_steps  # land exactly on t_end
-            omega0, orbit0 = self._run(n_steps, dt, omega, F_x, F_y, F_z, T_oil)
+            omega0, orbit0 = self._run(n_steps, dt, omega, loads, T_oil)
             if self.status[s.ST_CODE] == s.STATUS_OK:
                 break
             if not automatic or self.step_halvings == AUTO_STEP_HALVINGS:
-                self._raise_unstable(dt, F_x, F_y, F_z)
+                self._raise_unstable(dt, *loads)
             # the step was chosen from the state at the start of the call; the film can change within it (a
             # contact entering full film at low speed takes a squeeze damping that overdamps the ball): repeat
             # the call from its start with half the step, or the step the stopped state's film needs if smaller
-            smaller = self.automatic_time_step(F_x, F_y, F_z, max(abs(omega0), abs(omega)))
+            smaller = self.automatic_time_step(F_x, F_y, F_z, max(abs(omega0), abs(omega)), M_x, M_y)
             self._restore_start()
             self.step_halvings += 1
             needed = math.ceil(interval / smaller * (1.0 - 1e-12))
@@ -483,7 +517,7 @@ class DemModel:
         # monitor has already stopped the step (penetration), so only the warning can apply here
         self.warnings = pressure_warnings(min(self.out[s.O_PMAX], P_MAX_ERROR), "the loads")
 
-    def _run(self, n_steps, dt, omega, F_x, F_y, F_z, T_oil):
+    def _run(self, n_steps, dt, omega, loads, T_oil):
         """One kernel call of n_steps steps of dt (s) to the inner-ring speed omega; returns the speed and the sum
         of the orbital angles at its start. self.status holds the monitor's verdict."""
         # refreshed at least every refresh_interval: floor, with a guard so that a ratio that is a whole number
@@ -507,11 +541,9 @@ class DemModel:
             dt,
             omega0,
             omega,
-            F_x,
-            F_y,
-            F_z,
+            *loads,
             T_oil,
-            self._energy_limit(max(abs(omega0), abs(omega)), math.sqrt(F_x**2 + F_y**2 + F_z**2)),
+            self._energy_limit(max(abs(omega0), abs(omega)), loads),
             self._work,
             self._acc,
             self.status,
@@ -520,18 +552,21 @@ class DemModel:
         self.omega = omega0 + (omega - omega0) * done / n_steps
         return omega0, orbit0
 
-    def _energy_limit(self, omega, force):
-        """Bound (J) of the kinetic energy over a call: ENERGY_FACTOR x (pure-rolling kinetic energy at omega +
-        load x groove clearance A + the mechanical energy the state already holds: its kinetic energy and the
-        elastic energy of its ball-race contacts, 0.4 Q delta each for Q = K_h delta^1.5). Without input the
-        kinetic energy cannot exceed the energy held plus the work of the drive and the loads, so an unstable
-        integration passes the bound within a few steps and a physical run never does, also when a load is
+    def _energy_limit(self, omega, loads):
+        """Bound (J) of the kinetic energy over a call: ENERGY_FACTOR x (pure-rolling kinetic energy at omega + load x
+        groove clearance A (a moment M counts as the force M / rho_i, rho_i the radius of the inner groove's
+        curvature-centre circle: it tilts the ring by about A / rho_i) + the mechanical energy the state already holds:
+        its kinetic energy and the elastic energy of its ball-race contacts, 0.4 Q delta each for Q = K_h delta^1.5).
+        Without input the kinetic energy cannot exceed the energy held plus the work of the drive and the loads, so an
+        unstable integration passes the bound within a few steps and a physical run never does, also when a load is
         released (its elastic energy turns into motion) or the ring stops while the balls still roll."""
         b, p = self.bearing, self.par
         cage_speed, ball_rel, _, _ = rolling_kinematics(omega, b.D, b.dm, p[s.P_ALPHA0])
         v = 0.5 * b.dm * cage_speed
         rolling = b.Z * (0.5 * (p[s.P_M_BALL] + p[s.P_M_CAGE]) * v * v + 0.5 * p[s.P_I_BALL] * ball_rel**2)
         A = (b.f_i + b.f_o - 1.0) * b.D
+        F_x, F_y, F_z, M_x, M_y = loads
+        force = math.sqrt(F_x**2 + F_y**2 + F_z**2) + math.hypot(M_x, M_y) / p[s.P_RHO_I]
         held = kinetic_energy(self.balls, self.cage, self.ring, p) + self._elastic_energy()
         return ENERGY_FACTOR * (rolling + force * A + held) + 1e-6
 
@@ -542,7 +577,7 @@ class DemModel:
         K_h = self.par[[s.P_KH_I, s.P_KH_O]][:, None]
         return float(0.4 * (self._Q * (self._Q / K_h) ** (2.0 / 3.0)).sum())
 
-    def _raise_unstable(self, dt, F_x, F_y, F_z):
+    def _raise_unstable(self, dt, F_x, F_y, F_z, M_x=0.0, M_y=0.0):
         code, step, index = (int(v) for v in self.status)
         Z = self.bearing.Z
         where = ""
@@ -560,10 +595,10 @@ class DemModel:
             where = f" at the {race} contact of ball {index % Z}"
         # the state at the stop is already disturbed: judge from the inputs alone, or, when they load no
         # contact (no load, no speed), from the contact loads of the stopped state (larger: a safe side)
-        limit = self.stable_time_step(F_x, F_y, F_z, self.omega, include_state=False)
+        limit = self.stable_time_step(F_x, F_y, F_z, self.omega, include_state=False, M_x=M_x, M_y=M_y)
         basis = "at these inputs"
         if not math.isfinite(limit):
-            limit = self.stable_time_step(F_x, F_y, F_z, self.omega)
+            limit = self.stable_time_step(F_x, F_y, F_z, self.omega, M_x=M_x, M_y=M_y)
             basis = "at the contact loads where the run stopped"
         if math.isfinite(limit):
             suggestion = min(0.5 * dt, self.safety * limit)
@@ -608,6 +643,8 @@ class DemModel:
             x=float(self.ring[s.R_X]),
             y=float(self.ring[s.R_X + 1]),
             z=float(self.ring[s.R_X + 2]),
+            theta_x=float(self.ring[s.R_TH]),
+            theta_y=float(self.ring[s.R_TH + 1]),
         )
         if not self.scene.capacitance:
             del result["C_bearing"]
@@ -616,7 +653,7 @@ class DemModel:
     # -- FMU interface ---------------------------------------------------------------------------
     def update(self, u, interval=0.0):
         """Advance by `interval` (s; 0 = only report the current state) with the input values u in self.inputs
-        order (omega, F_x, F_y, F_z, T_oil, dPd_thermal; SI) as advance() takes them, and fill self.values
+        order (omega, F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal; SI) as advance() takes them, and fill self.values
         (self.outputs order: the declarations of models.declarations.DEM_OUTPUTS); returns self.values.
 
         Raises InputError for inputs out of range (nothing changed) and DemUnstableError when the monitor stops
@@ -630,12 +667,13 @@ class DemModel:
 
     def _step_to(self, t_end, u):
         """update()'s step to t_end (s): advance, or on a monitor stop restore the state and raise."""
-        omega, F_x, F_y, F_z, T_oil, dPd_thermal = (float(v) for v in u)
+        omega, F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal = (float(v) for v in u)
+        loads = (F_x, F_y, F_z, M_x, M_y)
         self.status[s.ST_CODE] = s.STATUS_OK  # a refused input leaves no stale monitor code
         self.warnings = []  # nor stale warnings
-        self._check(t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
+        self._check(t_end, omega, loads, T_oil, dPd_thermal)
         try:
-            self._advance(t_end, omega, F_x, F_y, F_z, T_oil, dPd_thermal)
+            self._advance(t_end, omega, loads, T_oil, dPd_thermal)
         except DemUnstableError:
             self._restore_start()
             raise
@@ -718,7 +756,7 @@ class DemModel:
         't' (n,) and every bearing output (n,), and under 'contacts' a dict of every per-ball/per-contact
         array of contacts() (n, Z).
         The speed goes linearly from its current value to omega (rad/s; None = hold) over the whole record;
-        the other inputs (F_x, F_y, F_z, T_oil, dPd_thermal) are held."""
+        the other inputs (F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal) are held."""
         if not (math.isfinite(interval) and interval > 0.0):
             raise InputError(f"interval = {interval} s is outside the allowed range ]0, inf[ s")
         t0, omega0 = self.time, self.omega

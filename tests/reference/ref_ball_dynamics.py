@@ -5,7 +5,14 @@ kernel: every body is a 3-vector, every contact is evaluated with vector algebra
 np.linalg.norm). It shares only the array layout (the kernel's slot constants), so that a state can
 be handed to both. The model:
 - groove = torus: the nearest point q of the groove-curvature-centre circle to the ball centre p,
-  approach delta = |p - q| - (f - 1/2) D, normal n = (p - q)/|p - q|, contact point p + (D/2) n;
+  approach delta = |p - q| - (f - 1/2) D, normal n = (p - q)/|p - q|, contact point p + (D/2) n; the inner
+  ring's circle is centred on the ring's centre c (its translation plus (0, 0, z_i)) in the plane normal to its
+  axis a = R e_z, R the exact rotation by the rotation vector (theta_x, theta_y, 0) (Rodrigues' formula);
+- inner ring: translation and tilts (theta_x, theta_y), velocity Verlet as the balls; its angular velocity
+  omega a + (theta_x', theta_y', 0); it takes the opposite of every inner contact's force at the contact
+  point and the opposite of the contact's resistance moments on the ball; its tilts follow
+  I_d theta'' = (M - (M.a) a)_xy - I_p omega (theta' x a)_xy (the drive holds the moment along a; the
+  gyroscopic moment of a turning ring whose axis turns), M the applied moments plus the contacts' about c;
 - normal force Q + C_n v_n >= 0, Q = K_h delta^1.5 (Hertz), C_n from the last refresh except in the
   boundary regime where C_n = 1.5 alpha_e Q (Guessasma eq. 4 with K_n delta = Q);
 - tangential force: the asperities' spring xi (projected on the tangent plane, xi += v_t dt, F_t = -k_t xi
@@ -47,10 +54,20 @@ HEATHCOTE_C = (
 )
 
 
-def groove_contact(p, centre, rho, rg):
-    """(delta, n) of a ball centre p against the circle (centre, radius rho, normal z)."""
+def ring_axis(ring):
+    """Unit axis of the inner ring: e_z turned by the rotation vector (theta_x, theta_y, 0) (Rodrigues)."""
+    theta = np.array([ring[s.R_TH], ring[s.R_TH + 1], 0.0])
+    t = np.linalg.norm(theta)
+    if t == 0.0:
+        return Z_AXIS.copy()
+    k = theta / t
+    return Z_AXIS * math.cos(t) + np.cross(k, Z_AXIS) * math.sin(t) + k * np.dot(k, Z_AXIS) * (1.0 - math.cos(t))
+
+
+def groove_contact(p, centre, rho, rg, axis=Z_AXIS):
+    """(delta, n) of a ball centre p against the circle (centre, radius rho, normal axis)."""
     d = p - centre
-    radial = np.array([d[0], d[1], 0.0])
+    radial = d - np.dot(d, axis) * axis
     q = centre + rho * radial / np.linalg.norm(radial)
     gap = p - q
     dist = np.linalg.norm(gap)
@@ -58,9 +75,17 @@ def groove_contact(p, centre, rho, rg):
 
 
 def race_centre(race, ring, par):
+    """(centre (m), radius (m), unit axis) of a race's groove-curvature-centre circle."""
     if race == 0:
-        return ring[s.R_X : s.R_X + 3] + np.array([0.0, 0.0, par[s.P_Z_I]]), par[s.P_RHO_I]
-    return np.array([0.0, 0.0, par[s.P_Z_O]]), par[s.P_RHO_O]
+        return ring[s.R_X : s.R_X + 3] + np.array([0.0, 0.0, par[s.P_Z_I]]), par[s.P_RHO_I], ring_axis(ring)
+    return np.array([0.0, 0.0, par[s.P_Z_O]]), par[s.P_RHO_O], Z_AXIS
+
+
+def race_rotation(race, ring, omega, tilt_rates):
+    """Angular velocity (rad/s) of a race: omega about the inner ring's axis plus its tilt rates; 0 (outer)."""
+    if race == 0:
+        return omega * ring_axis(ring) + np.array([tilt_rates[0], tilt_rates[1], 0.0])
+    return np.zeros(3)
 
 
 def hertz_of(race, par):
@@ -80,13 +105,14 @@ def refresh(st, par, lub, omega, T_oil):
     D = par[s.P_D]
     E_red = par[s.P_E_RED]
     for race in range(2):
-        centre, rho = race_centre(race, ring, par)
+        centre, rho, axis = race_centre(race, ring, par)
+        W = race_rotation(race, ring, omega, ring[s.R_VTH : s.R_VTH + 2])
         Rx, Ry, k, ell_E, ell_K = hertz_of(race, par)
         for j in range(balls.shape[1]):
             p = balls[s.B_X : s.B_X + 3, j]
             v = balls[s.B_VX : s.B_VX + 3, j]
             w = balls[s.B_WX : s.B_WX + 3, j]
-            delta, n = groove_contact(p, centre, rho, par[s.P_RG_I + race])
+            delta, n = groove_contact(p, centre, rho, par[s.P_RG_I + race], axis)
             trib[:, race, j] = 0.0
             if delta <= 0.0:
                 trib[s.T_MU, race, j] = 0.1
@@ -96,16 +122,15 @@ def refresh(st, par, lub, omega, T_oil):
             Q = par[s.P_KH_I + race] * delta**1.5
             a, b, _, p_max = ref_hertz.hertz_contact(Q, Rx, Ry, E_red, k, ell_E, ell_K)
             w_orb = orbit_speed(p, v)
-            w_race = omega if race == 0 else 0.0
             u_b = np.cross(w - w_orb * Z_AXIS, 0.5 * D * n)
             r = p + 0.5 * D * n - centre
-            u_r = np.cross((w_race - w_orb) * Z_AXIS, np.array([r[0], r[1], 0.0]))
+            u_r = np.cross(W - w_orb * Z_AXIS, r)
             if race == 0:
                 u_r = u_r + ring[s.R_VX : s.R_VX + 3]
             u_b = u_b - np.dot(u_b, n) * n
             u_r = u_r - np.dot(u_r, n) * n
             u = 0.5 * np.linalg.norm(u_b + u_r)
-            spin = np.dot(w - w_race * Z_AXIS, n)
+            spin = np.dot(w - W, n)
             h_c, h_min = ref_ehl.film_thickness(int(par[s.P_FILM]), eta, xi, E_red, u, Q, Rx, Ry, k)
             lam = ref_ehl.film_parameter(h_min, par[s.P_SIGMA_I + race])
             mu = ref_ehl.friction_coefficient(lam)
@@ -150,25 +175,29 @@ def damped_hertz(K, delta, zeta, m_eff, v_app):
 
 def forces(st, par, omega, F_ring, vel, dt):
     """Forces (N) and moments (N.m) on every body at the current positions with the predicted velocities
-    vel = (v_balls, w_balls, v_cage, v_ring); updates springs, chatter counters and dissipation.
-    Returns (f_ball, m_ball, f_cage, f_ring, dissipated power per race)."""
+    vel = (v_balls, w_balls, v_cage, v_ring, tilt rates of the ring); F_ring = (F_x, F_y, F_z, M_x, M_y) applied
+    to the ring; updates springs, chatter counters and dissipation.
+    Returns (f_ball, m_ball, f_cage, f_ring, m_ring (about the ring's centre, 3 components), dissipated power
+    per race)."""
     balls, cage, ring, spring, trib, counters = (st[k] for k in ("balls", "cage", "ring", "spring", "trib", "counters"))
-    v_b, w_b, v_c, v_r = vel
+    v_b, w_b, v_c, v_r, tilt_rates = vel
     Z = balls.shape[1]
     D = par[s.P_D]
     f_ball = np.zeros((3, Z))
     m_ball = np.zeros((3, Z))
     f_cage = np.zeros((3, Z))
-    f_ring = np.array(F_ring, dtype=float)
+    f_ring = np.array(F_ring[:3], dtype=float)
+    m_ring = np.array([F_ring[3], F_ring[4], 0.0])
     power = np.zeros(2)
     w_reg = par[s.P_V_REG] / (0.5 * D)
     for race in range(2):
-        centre, rho = race_centre(race, ring, par)
+        centre, rho, axis = race_centre(race, ring, par)
+        W = race_rotation(race, ring, omega, tilt_rates)
         for j in range(Z):
             p = balls[s.B_X : s.B_X + 3, j]
             rows = slice(3 * race, 3 * race + 3)
             kc = s.K_SIZE + race * Z + j
-            delta, n = groove_contact(p, centre, rho, par[s.P_RG_I + race])
+            delta, n = groove_contact(p, centre, rho, par[s.P_RG_I + race], axis)
             if delta <= 0.0:
                 spring[rows, j] = 0.0
                 counters[kc] = 0
@@ -178,11 +207,9 @@ def forces(st, par, omega, F_ring, vel, dt):
             r_c = 0.5 * D * n
             v_surface_ball = v_b[:, j] + np.cross(w_b[:, j], r_c)
             if race == 0:
-                v_surface_race = v_r + np.cross(omega * Z_AXIS, p + r_c - centre)
-                w_race = omega
+                v_surface_race = v_r + np.cross(W, p + r_c - centre)
             else:
                 v_surface_race = np.zeros(3)
-                w_race = 0.0
             v_rel = v_surface_ball - v_surface_race
             v_n = np.dot(v_rel, n)
             v_t = v_rel - v_n * n
@@ -226,18 +253,19 @@ def forces(st, par, omega, F_ring, vel, dt):
             f_ball[:, j] += force
             q = w_b[:, j] - orbit_speed(p, v_b[:, j]) * Z_AXIS
             q = q - np.dot(q, n) * n
-            spin = np.dot(w_b[:, j] - w_race * Z_AXIS, n)
+            spin = np.dot(w_b[:, j] - W, n)
             # regularised resistances: viscous below max(w_reg, M / (I / (4 dt))), Coulomb-like above
             M_roll = trib[s.T_F_ROLL, race, j] * 0.5 * D
             M_spin = trib[s.T_M_SPIN, race, j]
             rate = par[s.P_I_BALL] / (4.0 * dt) if dt > 0.0 else math.inf  # dt = 0: the state's accelerations
-            m_ball[:, j] += (
-                np.cross(r_c, F_t)
-                - M_roll * q / max(np.linalg.norm(q), w_reg, M_roll / rate)
+            resistances = (
+                -M_roll * q / max(np.linalg.norm(q), w_reg, M_roll / rate)
                 - M_spin * spin / max(abs(spin), w_reg, M_spin / rate) * n
             )
-            if race == 0:
+            m_ball[:, j] += np.cross(r_c, F_t) + resistances
+            if race == 0:  # the race takes the opposite force at the contact point and the opposite moments
                 f_ring -= force
+                m_ring -= np.cross(p + r_c - centre, force) + resistances
             power[race] += (c_n * v_n**2 if F_n > 0.0 else 0.0) + slip_power
     R_sum = 0.5 * D + par[s.P_R_CAGE]
     m_b, m_c = par[s.P_M_BALL], par[s.P_M_CAGE]
@@ -264,7 +292,16 @@ def forces(st, par, omega, F_ring, vel, dt):
             n = (pc - q) / dist
             f = damped_hertz(par[s.P_K_GUIDE], dist - par[s.P_GUIDE_GAP], par[s.P_ZETA_CAGE], m_c, np.dot(v_c[:, k], n))
             f_cage[:, k] -= f * n
-    return f_ball, m_ball, f_cage, f_ring, power
+    return f_ball, m_ball, f_cage, f_ring, m_ring, power
+
+
+def tilt_acceleration(ring, par, omega, m_ring, tilt_rates):
+    """(theta_x'', theta_y'') (rad/s^2): the moment across the ring's axis plus the gyroscopic moment
+    -I_p omega (theta' x a), over the moment of inertia about a diameter."""
+    a = ring_axis(ring)
+    across = m_ring - np.dot(m_ring, a) * a
+    gyroscopic = -par[s.P_IP_RING] * omega * np.cross(np.array([tilt_rates[0], tilt_rates[1], 0.0]), a)
+    return (across + gyroscopic)[:2] / par[s.P_I_RING]
 
 
 def step(st, par, omega, F_ring, dt):
@@ -279,10 +316,19 @@ def step(st, par, omega, F_ring, dt):
     xc += vc * dt + 0.5 * ac * dt * dt
     xr, vr, ar = (ring[r : r + 3] for r in (s.R_X, s.R_VX, s.R_AX))
     xr += vr * dt + 0.5 * ar * dt * dt
-    vel = (v + a * dt, w + alpha * dt, vc + ac * dt, vr + ar * dt)
-    f_b, m_b, f_c, f_r, power = forces(st, par, omega, F_ring, vel, dt)
-    new = (f_b / par[s.P_M_BALL], m_b / par[s.P_I_BALL], f_c / par[s.P_M_CAGE], f_r / par[s.P_M_RING])
-    for vel_now, acc_now, acc_new in ((v, a, new[0]), (w, alpha, new[1]), (vc, ac, new[2]), (vr, ar, new[3])):
+    th, vth, ath = (ring[r : r + 2] for r in (s.R_TH, s.R_VTH, s.R_ATH))
+    th += vth * dt + 0.5 * ath * dt * dt
+    vel = (v + a * dt, w + alpha * dt, vc + ac * dt, vr + ar * dt, vth + ath * dt)
+    f_b, m_b, f_c, f_r, m_r, power = forces(st, par, omega, F_ring, vel, dt)
+    new = (
+        f_b / par[s.P_M_BALL],
+        m_b / par[s.P_I_BALL],
+        f_c / par[s.P_M_CAGE],
+        f_r / par[s.P_M_RING],
+        tilt_acceleration(ring, par, omega, m_r, vel[4]),
+    )
+    pairs = ((v, a, new[0]), (w, alpha, new[1]), (vc, ac, new[2]), (vr, ar, new[3]), (vth, ath, new[4]))
+    for vel_now, acc_now, acc_new in pairs:
         vel_now += 0.5 * (acc_now + acc_new) * dt
         acc_now[...] = acc_new
     ring[s.R_TIME] += dt
@@ -297,12 +343,14 @@ def initialise_accelerations(st, par, lub, omega, F_ring, T_oil):
     balls, cage, ring = st["balls"], st["cage"], st["ring"]
     saved = st["spring"].copy()
     vel = tuple(a[r : r + 3].copy() for a, r in ((balls, s.B_VX), (balls, s.B_WX), (cage, s.C_VX), (ring, s.R_VX)))
-    f_b, m_b, f_c, f_r, _ = forces(st, par, omega, F_ring, vel, 0.0)
+    vel += (ring[s.R_VTH : s.R_VTH + 2].copy(),)
+    f_b, m_b, f_c, f_r, m_r, _ = forces(st, par, omega, F_ring, vel, 0.0)
     st["spring"][...] = saved
     balls[s.B_AX : s.B_AX + 3] = f_b / par[s.P_M_BALL]
     balls[s.B_ALX : s.B_ALX + 3] = m_b / par[s.P_I_BALL]
     cage[s.C_AX : s.C_AX + 3] = f_c / par[s.P_M_CAGE]
     ring[s.R_AX : s.R_AX + 3] = f_r / par[s.P_M_RING]
+    ring[s.R_ATH : s.R_ATH + 2] = tilt_acceleration(ring, par, omega, m_r, vel[4])
 
 
 def step_capacitance(st, par):
@@ -311,9 +359,10 @@ def step_capacitance(st, par):
     total = 0.0
     for j in range(st["balls"].shape[1]):
         p = st["balls"][s.B_X : s.B_X + 3, j]
-        loaded = [
-            groove_contact(p, *race_centre(race, st["ring"], par), par[s.P_RG_I + race])[0] > 0.0 for race in (0, 1)
-        ]
+        loaded = []
+        for race in (0, 1):
+            centre, rho, axis = race_centre(race, st["ring"], par)
+            loaded.append(groove_contact(p, centre, rho, par[s.P_RG_I + race], axis)[0] > 0.0)
         if all(loaded):
             total += ref_capacitance.ball_capacitance(st["trib"][s.T_CAP, 0, j], st["trib"][s.T_CAP, 1, j])
     return total

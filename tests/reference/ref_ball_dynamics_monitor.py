@@ -74,16 +74,19 @@ def critical_time_step(par, Q_inner, Q_outer, C_inner, C_outer, Q_cage):
 
 
 def kinetic_energy(balls, cage, ring, par):
-    """Kinetic energy (J) of the balls (translation, rotation), cage balls and the inner ring's translation."""
+    """Kinetic energy (J) of the balls (translation, rotation), cage balls and the inner ring's translation and
+    tilt rates (its turning about its axis is an input, left out)."""
     v = balls[s.B_VX : s.B_VX + 3]
     w = balls[s.B_WX : s.B_WX + 3]
     vc = cage[s.C_VX : s.C_VX + 3]
     vr = ring[s.R_VX : s.R_VX + 3]
+    tilt_rates = ring[s.R_VTH : s.R_VTH + 2]
     return 0.5 * (
         par[s.P_M_BALL] * np.sum(v * v)
         + par[s.P_I_BALL] * np.sum(w * w)
         + par[s.P_M_CAGE] * np.sum(vc * vc)
         + par[s.P_M_RING] * np.dot(vr, vr)
+        + par[s.P_I_RING] * np.dot(tilt_rates, tilt_rates)
     )
 
 

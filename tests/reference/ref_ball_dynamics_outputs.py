@@ -2,7 +2,7 @@
 
 Written from the definitions with vector algebra (the groove-torus contact of ref_ball_dynamics, Hertz
 Q = K_h delta^1.5), sharing only the array layout (the kernel's slot constants):
-- contact angle: angle of the contact normal from the radial plane, atan2(|n_z|, |n_radial|);
+- contact angle: angle of the contact normal from the plane normal to the bearing axis z, atan2(|n_z|, |n_radial|);
 - cage speed: mean change of the balls' orbital angles over the interval; ball speeds of the most loaded
   ball (inner race, or the outer one when no inner contact is loaded), in the fixed frame and relative to
   the cage;
@@ -31,9 +31,11 @@ def _contacts(balls, ring, par):
     """Per race and ball: (delta (m), normal n) of the ball-race contact."""
     result = []
     for race in range(2):
-        centre, rho = race_centre(race, ring, par)
+        centre, rho, axis = race_centre(race, ring, par)
         rg = par[s.P_RG_I + race]
-        result.append([groove_contact(balls[s.B_X : s.B_X + 3, j], centre, rho, rg) for j in range(balls.shape[1])])
+        result.append(
+            [groove_contact(balls[s.B_X : s.B_X + 3, j], centre, rho, rg, axis) for j in range(balls.shape[1])]
+        )
     return result
 
 
@@ -77,14 +79,14 @@ def pure_rolling_cage_speed(balls, ring, par, omega, Q):
         t = t / np.linalg.norm(t)
         rows, rhs = [], []
         for race in range(2):
-            centre, rho = race_centre(race, ring, par)
-            _, n = groove_contact(p, centre, rho, par[s.P_RG_I + race])
+            centre, rho, axis = race_centre(race, ring, par)
+            _, n = groove_contact(p, centre, rho, par[s.P_RG_I + race], axis)
             r_c = 0.5 * D * n
-            # ball surface: w_c z x (p + r_c) + w_R e x r_c; race surface: Omega z x (p + r_c - ring centre)
+            # ball surface: w_c z x (p + r_c) + w_R e x r_c; race surface: Omega a x (p + r_c - ring centre), the
+            # inner race turning about its (tilted) axis a
             rows.append([np.dot(np.cross([0.0, 0.0, 1.0], p + r_c), t), np.dot(np.cross(e, r_c), t)])
-            axis = np.array([centre[0], centre[1], 0.0]) if race == 0 else np.zeros(3)
             Omega = omega if race == 0 else 0.0
-            rhs.append(Omega * np.dot(np.cross([0.0, 0.0, 1.0], p + r_c - axis), t))
+            rhs.append(Omega * np.dot(np.cross(axis, p + r_c - centre), t))
         A = np.array(rows)
         if np.linalg.det(A) != 0.0:
             speeds.append(np.linalg.solve(A, np.array(rhs))[0])

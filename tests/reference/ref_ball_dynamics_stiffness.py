@@ -5,7 +5,8 @@ array layout: per ball, each loaded contact's 3x3 spring k_n n n^T + k_t (I - n 
 (Hertz tangent) and k_t = Q/(r_g + delta) (the force turning about the groove's curvature centre), restricted to
 the ball's radial plane (e_r, e_z) by the projector P = [e_r; e_z]; the ball eliminated from the two contacts
 in series by a linear solve, K_ball = K_i - K_i (K_i + K_o)^-1 K_i; the ring's DOFs (x, y, z, theta_x, theta_y)
-move the inner curvature-centre point c = rho_i e_r + z_i e_z by u + theta x c, projected on (e_r, e_z);
+move the inner curvature-centre point nearest to the ball, c + L (c the ring's centre, about which it tilts; L of
+length rho_i toward the ball in the plane of the ring's tilted circle), by u + theta x L, projected on (e_r, e_z);
 K = sum G^T K_ball G. Balls open on either race are skipped.
 """
 
@@ -31,7 +32,6 @@ def _in_plane_spring(delta, n, K_h, rg, P):
 def stiffness_matrix(balls, ring, par, K):
     """Fill K (5x5) with sum over the balls of G^T K_ball G (see the module docstring)."""
     K[...] = 0.0
-    rho_i, z_i = par[s.P_RHO_I], par[s.P_Z_I]
     for j in range(balls.shape[1]):
         p = balls[s.B_X : s.B_X + 3, j]
         e_r = np.array([p[0], p[1], 0.0]) / np.hypot(p[0], p[1])
@@ -39,8 +39,8 @@ def stiffness_matrix(balls, ring, par, K):
         P = np.vstack([e_r, e_z])
         springs = []
         for race in (0, 1):
-            centre, rho = race_centre(race, ring, par)
-            delta, n = groove_contact(p, centre, rho, par[s.P_RG_I + race])
+            centre, rho, axis = race_centre(race, ring, par)
+            delta, n = groove_contact(p, centre, rho, par[s.P_RG_I + race], axis)
             if delta <= 0.0:
                 break
             springs.append(_in_plane_spring(delta, n, par[s.P_KH_I + race], par[s.P_RG_I + race], P))
@@ -48,10 +48,12 @@ def stiffness_matrix(balls, ring, par, K):
             continue
         K_i, K_o = springs
         K_ball = K_i - K_i @ np.linalg.solve(K_i + K_o, K_i)
-        c = rho_i * e_r + z_i * e_z
-        # displacement of c for a unit DOF: translations u = e_x, e_y, e_z; tilts theta = e_x, e_y: theta x c
+        centre, rho_i, axis = race_centre(0, ring, par)
+        toward = (p - centre) - np.dot(p - centre, axis) * axis
+        L = rho_i * toward / np.linalg.norm(toward)
+        # displacement of c + L for a unit DOF: translations u = e_x, e_y, e_z; tilts theta = e_x, e_y: theta x L
         moves = np.column_stack(
-            [np.eye(3)[0], np.eye(3)[1], np.eye(3)[2], np.cross(np.eye(3)[0], c), np.cross(np.eye(3)[1], c)]
+            [np.eye(3)[0], np.eye(3)[1], np.eye(3)[2], np.cross(np.eye(3)[0], L), np.cross(np.eye(3)[1], L)]
         )
         G = P @ moves
         K += G.T @ K_ball @ G

@@ -1,7 +1,8 @@
 """The DEM kernels that the facade calls directly (besides advance) against their plain-Python twins:
 the accelerations of a new state, the time-step limit, the kinetic energy, contact loads and angles, the
-bearing-level outputs and the 5x5 stiffness. States: a 6208 under 3 kN in a speed ramp, and a B7214C under
-axial load (non-zero contact angles)."""
+bearing-level outputs and the 5x5 stiffness. States: a 6208 under 3 kN in a speed ramp, a B7214C under
+axial load (non-zero contact angles), and a B7214C under a combined load and moments (its inner ring tilted by
+about 0.6 mrad)."""
 
 import numpy as np
 import pytest
@@ -21,11 +22,13 @@ RTOL = 1e-10  # same operations in another order (vector algebra against scalar 
 # from +x or from +y: the largest difference is 2.4e-10 of the balls' acceleration scale, and RTOL failed for
 # 2 of the 4 states even with the earlier ball placement. 1e-9 is 4 times the largest measured difference.
 CAGE_RTOL = 1e-9
+MODELS = ["6208", "B7214C", "B7214C tilted"]
 
 
 @pytest.fixture(scope="module")
 def models():
-    """6208: 3 kN radial, 0 -> 200 rad/s over 2 ms after 0.5 ms at rest; B7214C: 800 N axial, 0 -> 300 rad/s."""
+    """6208: 3 kN radial, 0 -> 200 rad/s over 2 ms after 0.5 ms at rest; B7214C: 800 N axial, 0 -> 300 rad/s;
+    B7214C tilted: 2 kN radial, 3 kN axial, M_x = 20 N.m, M_y = -10 N.m, 0 -> 300 rad/s."""
     m6208 = DemModel("6208", "guessasma_oil", dt=3e-6, refresh=10)
     m6208.advance(0.5e-3, omega=0.0, F_y=3000.0)
     for k in range(1, 5):
@@ -33,18 +36,24 @@ def models():
     b7214 = DemModel("B7214C", "iso_vg68_mineral")
     b7214.advance(0.5e-3, omega=0.0, F_z=800.0, F_y=200.0)
     b7214.advance(1e-3, omega=300.0, F_z=800.0, F_y=200.0)
-    return {"6208": m6208, "B7214C": b7214}
+    tilted = DemModel("B7214C", "iso_vg68_mineral")
+    loads = dict(F_y=2000.0, F_z=3000.0, M_x=20.0, M_y=-10.0)
+    tilted.advance(2e-3, omega=0.0, **loads)
+    tilted.advance(3e-3, omega=300.0, **loads)
+    assert abs(tilted.ring[s.R_TH]) > 3e-4 and abs(tilted.ring[s.R_VTH]) > 0.0  # tilted, and tilting
+    return {"6208": m6208, "B7214C": b7214, "B7214C tilted": tilted}
 
 
 def _copy(state):
     return {k: (v.copy() if isinstance(v, np.ndarray) else v) for k, v in state.items()}
 
 
-@pytest.mark.parametrize("name", ["6208", "B7214C"])
+@pytest.mark.parametrize("name", MODELS)
 def test_initialise_accelerations_matches_twin(models, name):
     model = models[name]
     kernel_state, twin_state = _copy(model.get_state()), _copy(model.get_state())
-    F, omega, T_oil = (-50.0, 3000.0, 800.0), model.omega, 313.15  # 3 kN on the line of ball 1 (+y), 50 N across
+    # 3 kN on the line of ball 1 (+y), 50 N across, 800 N axial and moments about x and y
+    F, omega, T_oil = (-50.0, 3000.0, 800.0, 15.0, -8.0), model.omega, 313.15
     Z = model.bearing.Z
     dyn.initialise_accelerations(
         *(kernel_state[k] for k in ("balls", "cage", "ring", "spring", "trib", "counters")),
@@ -71,6 +80,10 @@ def test_initialise_accelerations_matches_twin(models, name):
     )
     ring_acc = slice(s.R_AX, s.R_AX + 3)
     np.testing.assert_allclose(kernel_state["ring"][ring_acc], twin_state["ring"][ring_acc], rtol=1e-9, atol=1e-6)
+    tilt_acc = slice(s.R_ATH, s.R_ATH + 2)
+    b = twin_state["ring"][tilt_acc]
+    assert np.max(np.abs(b)) > 0.0
+    np.testing.assert_allclose(kernel_state["ring"][tilt_acc], b, rtol=1e-9, atol=1e-9 * np.max(np.abs(b)))
     np.testing.assert_array_equal(kernel_state["spring"], model.get_state()["spring"])  # no step: springs kept
     trib_a, trib_b = kernel_state["trib"], twin_state["trib"]
     finite = np.isfinite(trib_b)
@@ -78,7 +91,7 @@ def test_initialise_accelerations_matches_twin(models, name):
     np.testing.assert_allclose(trib_a[finite], trib_b[finite], rtol=1e-9, atol=1e-20)
 
 
-@pytest.mark.parametrize("name", ["6208", "B7214C"])
+@pytest.mark.parametrize("name", MODELS)
 def test_time_step_limit_and_kinetic_energy_match_twin(models, name):
     model = models[name]
     Z = model.bearing.Z
@@ -114,7 +127,7 @@ def test_damped_limit_matches_the_spectral_radius_of_the_step(zeta):
         assert monitor.damped_limit(omega, zeta) == pytest.approx(2.0 / omega, rel=1e-15)
 
 
-@pytest.mark.parametrize("name", ["6208", "B7214C"])
+@pytest.mark.parametrize("name", MODELS)
 def test_damping_step_ratio_matches_twin(models, name):
     """Largest (c_i + c_o) dt / m of a ball, open contacts left out: on the fixture's film and on one with an
     overdamped ball and an open contact carrying a stale damping."""
@@ -132,7 +145,7 @@ def test_damping_step_ratio_matches_twin(models, name):
     assert kernel[1] == 2
 
 
-@pytest.mark.parametrize("name", ["6208", "B7214C"])
+@pytest.mark.parametrize("name", MODELS)
 def test_contact_loads_angles_and_outputs_match_twin(models, name):
     model = models[name]
     Z = model.bearing.Z
@@ -143,7 +156,7 @@ def test_contact_loads_angles_and_outputs_match_twin(models, name):
     np.testing.assert_allclose(Q, Q_twin, rtol=1e-9, atol=1e-9 * Q_twin.max())
     np.testing.assert_allclose(alpha, ref_outputs.contact_angles(model.balls, model.ring, model.par), atol=1e-12)
     assert Q_twin.max() > 100.0
-    assert (Q_twin == 0.0).any() or name == "B7214C"  # the 6208 under radial load has open contacts
+    assert (Q_twin == 0.0).any() or name.startswith("B7214C")  # the 6208 under radial load has open contacts
     acc = np.zeros(s.A_SIZE)
     acc[s.A_DISS_I], acc[s.A_DISS_O] = 2.0e-3, 3.0e-3
     acc[s.A_POWER_I], acc[s.A_POWER_O], acc[s.A_CAP] = 1.5, 2.5, 4e-14
@@ -158,7 +171,7 @@ def test_contact_loads_angles_and_outputs_match_twin(models, name):
         assert out[s.O_P_LOSS] == (5.0 if averaged else 4.0)  # energy / interval, or the last step's power
 
 
-@pytest.mark.parametrize("name", ["6208", "B7214C"])
+@pytest.mark.parametrize("name", MODELS)
 def test_pure_rolling_cage_speed_matches_twin(models, name):
     """The cage speed of pure rolling at the balls' current contacts and spin axes (the reference of cage_slip):
     kernel (closed form of the 2x2 system) = twin (np.linalg.solve) on a 6208 under radial load and a B7214C
@@ -196,7 +209,7 @@ def test_film_outputs_skip_a_contact_closed_since_the_last_refresh(models):
     assert out[s.O_HMIN_O] == trib[s.T_H_MIN, 1, others].min()
 
 
-@pytest.mark.parametrize("name", ["6208", "B7214C"])
+@pytest.mark.parametrize("name", MODELS)
 def test_stiffness_matrix_matches_twin(models, name):
     """The jitted 5x5 stiffness against the twin's matrix algebra (linear solve, G^T K G): RTOL relative to the
     largest entry (the small off-diagonal terms are differences of large products)."""

@@ -84,6 +84,11 @@ COVERED_THROUGH = {
         "to 1e-12 in test_ball_dynamics.py",
     ),
     BD + "tribology.race_circle": (BD + "integrator.verlet_step", "the groove-centre circle of each race"),
+    BD + "tribology.ring_axis": (
+        BD + "integrator.verlet_step",
+        "the tilted inner ring's axis: compared through advance with a tilting ring, and against the twin's Rodrigues "
+        "rotation from 1e-9 to 0.3 rad in test_ball_dynamics.py",
+    ),
     BD + "contacts.ball_race_contact": (BD + "integrator.verlet_step", "every ball-race contact of a step"),
     BD + "contacts.groove_approach": (BD + "contacts.ball_race_contact", "approach and normal of the torus"),
     BD + "contacts.contact_damping": (BD + "contacts.ball_race_contact", "C_n by regime (boundary and mixed)"),

@@ -45,9 +45,10 @@ from ..ehl import REGIME_BOUNDARY
 # their reference counts at each call (atomic operations, ~2.5 ns per array), which cost more than the
 # contact's arithmetic when paid 18 times per step.
 @kernel(inline="always")
-def groove_approach(px, py, pz, cx, cy, cz, rho, rg):
+def groove_approach(px, py, pz, cx, cy, cz, ax, ay, az, rho, rg):
     """Approach and normal of a ball at (px, py, pz) (m) in a groove whose curvature-centre circle has
-    centre (cx, cy, cz) (m), lies in the plane normal to z and has radius rho (m); rg = (f - 1/2) D (m).
+    centre (cx, cy, cz) (m), lies in the plane normal to the unit vector (ax, ay, az) (the ring's axis: z for
+    the outer ring, tilted with the inner one) and has radius rho (m); rg = (f - 1/2) D (m).
 
     Returns (delta, nx, ny, nz): approach (m, > 0 in contact) and the unit normal from the
     curvature centre to the ball centre. A ball on the axis or on the circle itself has no defined
@@ -55,18 +56,23 @@ def groove_approach(px, py, pz, cx, cy, cz, rho, rg):
     """
     dx = px - cx
     dy = py - cy
-    r = math.sqrt(dx * dx + dy * dy)
+    dz = pz - cz
+    h = dx * ax + dy * ay + dz * az  # along the axis
+    ex = dx - h * ax  # in the circle's plane, toward the nearest point of the circle
+    ey = dy - h * ay
+    ez = dz - h * az
+    r = math.sqrt(ex * ex + ey * ey + ez * ez)
     if r == 0.0:
         return -1.0, 0.0, 0.0, 0.0
-    # s = (dx (r - rho)/r, dy (r - rho)/r, dz): |s| = sqrt((r - rho)^2 + dz^2), and n = s/|s| needs only
-    # 1/(r |s|) (one division instead of rho/r and 1/|s|)
+    # s = e (r - rho)/r + h a: |s| = sqrt((r - rho)^2 + h^2), and n = s/|s| needs only 1/(r |s|) (one division
+    # instead of rho/r and 1/|s|)
     radial = r - rho
-    sz = pz - cz
-    dist = math.sqrt(radial * radial + sz * sz)
+    dist = math.sqrt(radial * radial + h * h)
     if dist == 0.0:
         return -1.0, 0.0, 0.0, 0.0
     inv = 1.0 / (r * dist)
-    return dist - rg, dx * radial * inv, dy * radial * inv, sz * r * inv
+    hr = h * r * inv
+    return dist - rg, ex * radial * inv + ax * hr, ey * radial * inv + ay * hr, ez * radial * inv + az * hr
 
 
 @kernel(inline="always")
@@ -142,15 +148,17 @@ def ball_race_contact(
 ):
     """Forces of the contact of a ball with one race.
 
-    race 0 inner (turning at omega about z through the ring centre (cx, cy), translating at (vrx0, vry0, vrz0)),
+    race 0 inner (turning at omega about its axis a through its centre c, tilting at (wtx, wty) about x and y,
+    translating at (vrx0, vry0, vrz0)),
     1 outer (fixed). Ball: centre (px, py, pz) (m), predicted velocity v (m/s) and angular velocity w (rad/s),
     orbital speed w_orbit (rad/s); (ox, oy, oz): the contact's tangential spring (m). From the last tribology
     refresh: mu (-), regime code, c_frozen (N.s/m), f_roll_surface = F_R + (F_h + F_H)/2 (N) and the pivoting
     moment m_s (N.m). film = (phi (-), slip = 1/v_s (s/m), mu_lim (-), kappa (s/kg)): the film's share of
     the tangential force, its traction curve mu_lim (1 - exp(-v_t / v_s)) (ehl.film_slip_speed) and the slip a
     newton removes from the ball's two contacts in a step (7 dt / m), for the curve's implicit evaluation.
-    frame = (omega (rad/s), vrx0, vry0, vrz0 (m/s), cx, cy, cz, rho, rg (m), K_h (N/m^1.5)):
-    the race's motion, its groove's curvature-centre circle, (f - 1/2) D and Hertz constant. steps = (half_d
+    frame = (omega (rad/s), vrx0, vry0, vrz0 (m/s), cx, cy, cz, rho, rg (m), K_h (N/m^1.5), ax, ay, az (-), wtx, wty
+    (rad/s)): the race's motion, its groove's curvature-centre circle (centre c, axis a, radius rho), (f - 1/2) D,
+    Hertz constant and tilt rates. steps = (half_d
     = D/2 (m), alpha_e (s/m), kt_ratio (-), rate_inv = 4 dt / I (1/(N.m.s)), the inverse of the largest viscous
     rate of a regularised moment, w_reg = v_reg / (D/2) (rad/s), dt (s)). (Tuples keep the argument count
     within what numba's IR inliner takes.)
@@ -160,9 +168,9 @@ def ball_race_contact(
     spring's slip and reversal flags and the power (W) dissipated in the contact itself (normal damping,
     tangential slip; the Houpert part is booked per step by the integrator).
     """
-    omega, vrx0, vry0, vrz0, cx, cy, cz, rho, rg, K_h = frame
+    omega, vrx0, vry0, vrz0, cx, cy, cz, rho, rg, K_h, ax, ay, az, wtx, wty = frame
     half_d, alpha_e, kt_ratio, rate_inv, w_reg, dt = steps
-    delta, nx, ny, nz = groove_approach(px, py, pz, cx, cy, cz, rho, rg)
+    delta, nx, ny, nz = groove_approach(px, py, pz, cx, cy, cz, ax, ay, az, rho, rg)
     if delta <= 0.0:  # open: the spring and the chatter count start again at the next touch
         return delta, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, False, False, 0.0
     root = math.sqrt(delta)
@@ -175,16 +183,23 @@ def ball_race_contact(
     vby = vy + wz * rcx - wx * rcz
     vbz = vz + wx * rcy - wy * rcx
     if race == 0:
-        # inner-race surface: ring translation + rotation about the ring's axis
-        vrx = vrx0 - omega * (py + rcy - cy)
-        vry = vry0 + omega * (px + rcx - cx)
-        vrz = vrz0
-        w_race = omega
+        # inner-race surface: ring translation + its angular velocity W = omega a + tilt rates, about its centre
+        wrx = omega * ax + wtx
+        wry = omega * ay + wty
+        wrz = omega * az
+        lx = px + rcx - cx
+        ly = py + rcy - cy
+        lz = pz + rcz - cz
+        vrx = vrx0 + wry * lz - wrz * ly
+        vry = vry0 + wrz * lx - wrx * lz
+        vrz = vrz0 + wrx * ly - wry * lx
     else:
         vrx = 0.0
         vry = 0.0
         vrz = 0.0
-        w_race = 0.0
+        wrx = 0.0
+        wry = 0.0
+        wrz = 0.0
     ux = vbx - vrx
     uy = vby - vry
     uz = vbz - vrz
@@ -247,7 +262,7 @@ def ball_race_contact(
     # ball their sum stays below I/dt: no sign reversal, no chatter)
     f_roll = f_roll_surface * half_d
     m_roll = f_roll / max(q, w_reg, f_roll * rate_inv)
-    spin = wx * nx + wy * ny + (wz - w_race) * nz
+    spin = (wx - wrx) * nx + (wy - wry) * ny + (wz - wrz) * nz
     m_spin = m_s / max(abs(spin), w_reg, m_s * rate_inv)
     mx = mx - m_roll * qx - m_spin * spin * nx
     my = my - m_roll * qy - m_spin * spin * ny

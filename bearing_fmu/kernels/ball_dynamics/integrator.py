@@ -5,8 +5,12 @@ damping, tangential spring increments, resistance directions) evaluated with the
 predictor v* = v_n + a_n dt at the new positions:
   x_{n+1} = x_n + v_n dt + a_n dt^2/2,  a_{n+1} = F(x_{n+1}, v*)/m,  v_{n+1} = v_n + (a_n + a_{n+1}) dt/2,
 and the same for the ball angular velocities (spheres: I dw/dt = M, no gyroscopic term) and the
-inner-ring translation. The inner ring's rotation is prescribed: omega goes linearly from omega0 to
-omega1 over the call (a ramp is a sequence of calls). The tribology (film, Lambda, mu, C_n,
+inner-ring translation and tilts. The inner ring's rotation about its axis is prescribed: omega goes linearly
+from omega0 to omega1 over the call (a ramp is a sequence of calls). Its tilts (small rotations about x and y
+through its centre) follow I_d dtheta_rate/dt = M_perp + gyroscopic moment: M_perp the part across the ring's
+axis of the applied moments and of the contacts' moments about the centre (the drive holds the part along
+the axis), the gyroscopic moment -I_p omega (theta_rate x a) of a ring turning at omega whose axis a turns at the
+tilt rates (taken, as the damping, at the predicted rates). The tribology (film, Lambda, mu, C_n,
 capacitance, Houpert resistances) is refreshed from the state at the start of every N-th step.
 """
 
@@ -26,9 +30,11 @@ from .state import (
     A_DISS_I,
     A_DISS_O,
     A_FR,
+    A_MR,
     A_POWER_I,
     A_POWER_O,
     A_VR,
+    A_WR,
     B_ALX,
     B_AX,
     B_ORBIT,
@@ -51,6 +57,8 @@ from .state import (
     P_FILM_RATE,
     P_GUIDE_GAP,
     P_I_BALL,
+    P_I_RING,
+    P_IP_RING,
     P_K_CB,
     P_K_GUIDE,
     P_KH_I,
@@ -65,8 +73,11 @@ from .state import (
     P_RG_I,
     P_V_REG,
     P_Z_GUIDE,
+    R_ATH,
     R_AX,
+    R_TH,
     R_TIME,
+    R_VTH,
     R_VX,
     R_X,
     S_INNER,
@@ -99,7 +110,7 @@ from .state import (
     W_VC,
     W_WB,
 )
-from .tribology import TC_SIZE, race_circle, refresh_tribology, tribology_constants
+from .tribology import TC_SIZE, race_circle, refresh_tribology, ring_axis, tribology_constants
 
 
 @kernel(inline="always")  # called once per refresh from advance: no array-passing call
@@ -110,9 +121,9 @@ def ball_capacitances(trib, work):
 
 
 @kernel
-def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, dt, work, acc):
+def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, M_x, M_y, dt, work, acc):
     """One velocity-Verlet step of every body (see the module docstring) at inner-ring speed omega (rad/s) and
-    loads F_x, F_y, F_z (N) on the inner ring.
+    loads F_x, F_y, F_z (N), M_x, M_y (N.m, about its centre) on the inner ring.
 
     The forces at the new positions with the predicted velocities: the 2 Z ball-race contacts
     (contacts.ball_race_contact; springs and chatter counters updated, work[W_LOADED] counts each ball's
@@ -151,9 +162,15 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
     for i in range(3):
         ring[R_X + i] += ring[R_VX + i] * dt + ring[R_AX + i] * h
         acc[A_VR + i] = ring[R_VX + i] + ring[R_AX + i] * dt
+    for i in range(2):
+        ring[R_TH + i] += ring[R_VTH + i] * dt + ring[R_ATH + i] * h
+        acc[A_WR + i] = ring[R_VTH + i] + ring[R_ATH + i] * dt
     acc[A_FR] = F_x
     acc[A_FR + 1] = F_y
     acc[A_FR + 2] = F_z
+    acc[A_MR] = M_x
+    acc[A_MR + 1] = M_y
+    acc[A_MR + 2] = 0.0
     # ---- ball-race contacts
     worst_pen = 0.0
     worst_pen_at = -1
@@ -170,7 +187,7 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
     mu_lim = par[P_MU_LIM]
     kappa = par[P_FILM_RATE] * dt / par[P_M_BALL]  # slip (m/s) a newton removes from a ball's contacts in a step
     for race in range(2):
-        cx, cy, cz, rho = race_circle(race, ring, par)
+        cx, cy, cz, ax, ay, az, rho = race_circle(race, ring, par)
         frame = (
             omega,
             acc[A_VR],
@@ -182,6 +199,11 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
             rho,
             par[P_RG_I + race],
             par[P_KH_I + race],
+            ax,
+            ay,
+            az,
+            acc[A_WR],
+            acc[A_WR + 1],
         )
         inv_lim = 1.0 / par[P_DELTA_LIM_I + race]
         row = S_INNER + S_STRIDE * race
@@ -232,6 +254,14 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
                 acc[A_FR] -= fx
                 acc[A_FR + 1] -= fy
                 acc[A_FR + 2] -= fz
+                # the ring takes the opposite of the contact's force and of its moment on the ball: about the ring's
+                # centre, -((p - c) x f + m) (the ball and the race touch through forces along common lines)
+                lx = balls[B_X, j] - cx
+                ly = balls[B_X + 1, j] - cy
+                lz = balls[B_X + 2, j] - cz
+                acc[A_MR] -= ly * fz - lz * fy + mx
+                acc[A_MR + 1] -= lz * fx - lx * fz + my
+                acc[A_MR + 2] -= lx * fy - ly * fx + mz
             power += p
             work[W_LOADED, j] += 1.0
             pen = delta * inv_lim
@@ -285,7 +315,7 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
         work[W_FC + 2, k] += fz
     # a NaN or inf anywhere (positions, velocities, springs) reaches the contact forces within a step;
     # the moments follow from the same quantities
-    total = acc[A_FR] + acc[A_FR + 1] + acc[A_FR + 2]
+    total = acc[A_FR] + acc[A_FR + 1] + acc[A_FR + 2] + acc[A_MR] + acc[A_MR + 1]
     for j in range(Z):
         total += work[W_FB, j] + work[W_FB + 1, j] + work[W_FB + 2, j] + work[W_FC, j] + work[W_FC + 1, j]
         total += work[W_FC + 2, j]
@@ -310,6 +340,18 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
         a = acc[A_FR + i] * inv_r
         ring[R_VX + i] += (ring[R_AX + i] + a) * half
         ring[R_AX + i] = a
+    # tilts: the moment across the ring's axis (the drive holds the part along it) and the gyroscopic moment of the
+    # turning ring whose axis turns at the (predicted) tilt rates
+    ax, ay, az = ring_axis(ring[R_TH], ring[R_TH + 1])
+    m_axial = acc[A_MR] * ax + acc[A_MR + 1] * ay + acc[A_MR + 2] * az
+    spin_inertia = par[P_IP_RING] * omega * az  # -I_p omega (theta' x a) across the axis
+    inv_d = 1.0 / par[P_I_RING]
+    a = (acc[A_MR] - m_axial * ax - spin_inertia * acc[A_WR + 1]) * inv_d
+    ring[R_VTH] += (ring[R_ATH] + a) * half
+    ring[R_ATH] = a
+    a = (acc[A_MR + 1] - m_axial * ay + spin_inertia * acc[A_WR]) * inv_d
+    ring[R_VTH + 1] += (ring[R_ATH + 1] + a) * half
+    ring[R_ATH + 1] = a
     ring[R_TIME] += dt
     counters[K_STEP] += 1
     return worst_pen, worst_pen_at, worst_chat, worst_chat_at, total
@@ -317,7 +359,7 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
 
 @kernel
 def initialise_accelerations(
-    balls, cage, ring, spring, trib, counters, par, lub, omega, F_x, F_y, F_z, T_oil, work, acc
+    balls, cage, ring, spring, trib, counters, par, lub, omega, F_x, F_y, F_z, M_x, M_y, T_oil, work, acc
 ):
     """Tribology and accelerations of a new state (the a_n that the first Verlet step needs), without
     moving anything: call once after the facade sets positions and velocities."""
@@ -328,7 +370,7 @@ def initialise_accelerations(
     refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
     # a step of zero length: positions and velocities stay, the accelerations become those of the forces
     saved = spring.copy()
-    verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, 0.0, work, acc)
+    verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, M_x, M_y, 0.0, work, acc)
     spring[:, :] = saved  # (the springs' projection on the tangent planes waits for the first real step)
     counters[K_STEP] -= 1  # not a step: the refresh phase stays
 
@@ -350,6 +392,8 @@ def advance(
     F_x,
     F_y,
     F_z,
+    M_x,
+    M_y,
     T_oil,
     energy_limit,
     work,
@@ -357,7 +401,8 @@ def advance(
     status,
 ):
     """Run n_steps steps of dt (s) with the inner-ring speed going linearly from omega0 to omega1 (rad/s),
-    constant loads F_x, F_y, F_z (N) on the inner ring and oil temperature T_oil (K).
+    constant loads F_x, F_y, F_z (N) and M_x, M_y (N.m, about its centre) on the inner ring and oil temperature
+    T_oil (K).
 
     Stops early with status[ST_CODE] != STATUS_OK (monitor) after the offending step; status[ST_STEP]
     holds the steps done, status[ST_INDEX] the ball or contact (race * Z + ball). energy_limit (J)
@@ -415,7 +460,7 @@ def advance(
         countdown -= 1
         omega = omega0 + d_omega * (n + 1)
         pen, pen_at, chat, chat_at, total = verlet_step(
-            balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, dt, work, acc
+            balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, M_x, M_y, dt, work, acc
         )
         power_i = acc[A_POWER_I] + film_i
         power_o = acc[A_POWER_O] + film_o

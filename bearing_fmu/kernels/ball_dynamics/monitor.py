@@ -16,6 +16,7 @@ from .state import (
     B_WX,
     C_VX,
     P_I_BALL,
+    P_I_RING,
     P_K_CB,
     P_KH_I,
     P_KH_O,
@@ -24,6 +25,7 @@ from .state import (
     P_M_CAGE,
     P_M_RING,
     P_ZETA_CAGE,
+    R_VTH,
     R_VX,
     T_C_N,
     T_Q,
@@ -90,8 +92,8 @@ def critical_time_step(par, Q_inner, Q_outer, C_inner, C_outer, Q_cage):
 
 @kernel(inline="always")  # called once per refresh from advance: no array-passing call
 def kinetic_energy(balls, cage, ring, par):
-    """Kinetic energy (J) of the balls (translation and rotation), cage balls and inner-ring translation
-    (the ring's prescribed rotation is left out: it is an input)."""
+    """Kinetic energy (J) of the balls (translation and rotation), cage balls and inner-ring translation and tilt
+    rates (the ring's prescribed rotation about its axis is left out: it is an input)."""
     e = 0.0
     for j in range(balls.shape[1]):
         v2 = balls[B_VX, j] ** 2 + balls[B_VX + 1, j] ** 2 + balls[B_VX + 2, j] ** 2
@@ -99,6 +101,7 @@ def kinetic_energy(balls, cage, ring, par):
         c2 = cage[C_VX, j] ** 2 + cage[C_VX + 1, j] ** 2 + cage[C_VX + 2, j] ** 2
         e += 0.5 * (par[P_M_BALL] * v2 + par[P_I_BALL] * w2 + par[P_M_CAGE] * c2)
     e += 0.5 * par[P_M_RING] * (ring[R_VX] ** 2 + ring[R_VX + 1] ** 2 + ring[R_VX + 2] ** 2)
+    e += 0.5 * par[P_I_RING] * (ring[R_VTH] ** 2 + ring[R_VTH + 1] ** 2)
     return e
 
 

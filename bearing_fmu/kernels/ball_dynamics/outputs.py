@@ -67,10 +67,10 @@ from .tribology import race_circle
 def contact_loads(balls, ring, par, Q):
     """Current normal loads (N) of every ball-race contact into Q[race, ball] (0 when open)."""
     for race in range(2):
-        cx, cy, cz, rho = race_circle(race, ring, par)
+        cx, cy, cz, ax, ay, az, rho = race_circle(race, ring, par)
         for j in range(balls.shape[1]):
             delta, _, _, _ = groove_approach(
-                balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, rho, par[P_RG_I + race]
+                balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, ax, ay, az, rho, par[P_RG_I + race]
             )
             Q[race, j] = par[P_KH_I + race] * delta * math.sqrt(delta) if delta > 0.0 else 0.0
 
@@ -78,12 +78,14 @@ def contact_loads(balls, ring, par, Q):
 @kernel
 def contact_angles(balls, ring, par, alpha):
     """Contact angles (rad) of every ball-race contact into alpha[race, ball]: the angle of the contact
-    normal from the radial plane (0 for a deep-groove bearing under radial load); 0 when open."""
+    normal from the radial plane (0 for a deep-groove bearing under radial load); 0 when open. The plane normal to
+    the bearing axis z, for both races (the quasi-static fidelity's angles; a tilted inner ring's own radial plane
+    differs by the tilt, milliradians)."""
     for race in range(2):
-        cx, cy, cz, rho = race_circle(race, ring, par)
+        cx, cy, cz, ax, ay, az, rho = race_circle(race, ring, par)
         for j in range(balls.shape[1]):
             delta, nx, ny, nz = groove_approach(
-                balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, rho, par[P_RG_I + race]
+                balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, ax, ay, az, rho, par[P_RG_I + race]
             )
             alpha[race, j] = math.atan2(abs(nz), math.sqrt(nx * nx + ny * ny)) if delta > 0.0 else 0.0
 
@@ -92,13 +94,14 @@ def contact_angles(balls, ring, par, alpha):
 def pure_rolling_cage_speed(balls, ring, par, omega, Q):
     """Cage speed (rad/s) at which the balls loaded on both races (Q[race, ball] > 0, N) would roll without
     sliding in the rolling direction at either contact centre, at their current contact points and with their
-    current spin axes; the mean over those balls, 0 when none (or at rest).
+    current spin axes, the inner race turning at omega about its current (tilted) axis a; the mean over those
+    balls, 0 when none (or at rest).
 
     Per ball at p with unit spin axis e (its angular velocity relative to its orbit, w - w_orbit z), orbit
     direction t = z x p / |p|, contact offsets r_k = (D/2) n_k: the ball surface moves at w_c (z x (p + r_k)).t +
     w_R (e x r_k).t in the rolling direction, the inner race at omega (z x (p + r_i - c)).t (c its centre), the
     outer one not at all; zero slip at both gives w_c = omega b_i g_o / (a_i g_o - a_o g_i) with
-    a_k = (z x (p + r_k)).t, b_i = (z x (p + r_i - c)).t, g_k = (e x r_k).t. A radial bearing (n = -+ radial,
+    a_k = (z x (p + r_k)).t, b_i = (a x (p + r_i - c)).t, g_k = (e x r_k).t. A radial bearing (n = -+ radial,
     e = z) gives omega (1 - gamma) / 2 (Harris & Kotzalas 2006, vol. 1, ch. 8)."""
     half_d = 0.5 * par[P_D]
     total = 0.0
@@ -125,8 +128,8 @@ def pure_rolling_cage_speed(balls, ring, par, omega, Q):
         ty = px / r
         a_i = a_o = g_i = g_o = b_i = 0.0
         for race in range(2):
-            cx, cy, cz, rho = race_circle(race, ring, par)
-            _, nx, ny, nz = groove_approach(px, py, pz, cx, cy, cz, rho, par[P_RG_I + race])
+            cx, cy, cz, ax, ay, az, rho = race_circle(race, ring, par)
+            _, nx, ny, nz = groove_approach(px, py, pz, cx, cy, cz, ax, ay, az, rho, par[P_RG_I + race])
             rx = half_d * nx
             ry = half_d * ny
             rz = half_d * nz
@@ -135,7 +138,10 @@ def pure_rolling_cage_speed(balls, ring, par, omega, Q):
             g_k = (ey * rz - ez * ry) * tx + (ez * rx - ex * rz) * ty
             if race == 0:
                 a_i, g_i = a_k, g_k
-                b_i = -(py + ry - cy) * tx + (px + rx - cx) * ty
+                lx = px + rx - cx
+                ly = py + ry - cy
+                lz = pz + rz - cz
+                b_i = (ay * lz - az * ly) * tx + (az * lx - ax * lz) * ty
             else:
                 a_o, g_o = a_k, g_k
         den = a_i * g_o - a_o * g_i

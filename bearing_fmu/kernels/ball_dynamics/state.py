@@ -5,7 +5,9 @@ restored as a whole (FMU state, rollback). Row-major ``[row, ball]`` layouts kee
 balls contiguous.
 
 Frames and signs: fixed frame with z along the bearing axis; the outer ring is fixed, the inner ring
-turns about z at omega (rad/s, prescribed) and translates (x, y, z). Azimuth psi is measured from x toward y;
+turns about its own axis at omega (rad/s, prescribed), translates (x, y, z) and tilts (theta_x, theta_y: the
+rotation vector (theta_x, theta_y, 0) about the centre of its groove-curvature-centre circle, right-handed about x
+and y as the quasi-static fidelity's). Azimuth psi is measured from x toward y;
 a load F_x > 0 on the inner ring loads the ball at psi = 0. Ball 1 (index 0) starts on +y, the line of F_y
 (docs/conventions.md).
 """
@@ -26,11 +28,14 @@ C_AX = 6  # acceleration of the last step (m/s^2)
 C_SIZE = 9
 
 # ---- inner ring: float64[R_SIZE] -----------------------------------------------------------------
-R_X = 0  # displacement x, y, z of the centre from the outer ring's (m)
+R_X = 0  # displacement x, y, z of its centre, that of its groove-curvature-centre circle (m; quasi-static zero)
 R_VX = 3  # velocity (m/s)
 R_AX = 6  # acceleration of the last step (m/s^2)
 R_TIME = 9  # simulated time (s)
-R_SIZE = 10
+R_TH = 10  # tilts theta_x, theta_y about the centre (rad): the ring's axis is z turned by (theta_x, theta_y, 0)
+R_VTH = 12  # tilt rates (rad/s): the ring's angular velocity across its axis (small tilts)
+R_ATH = 14  # tilt accelerations of the last step (rad/s^2)
+R_SIZE = 16
 
 # ---- tangential springs: float64[S_SIZE, Z], spring elongation vectors in the fixed frame (m) ----
 S_INNER = 0  # x, y, z of the inner contact's spring
@@ -129,7 +134,9 @@ P_TRACTION = 59  # Coulomb override: the full-film cap of a spring-only tangenti
 P_MU_LIM = 60  # limiting traction coefficient of the lubricant's film (-), the traction curve's plateau
 P_S_TRACTION = 61  # slide-to-roll ratio s_0 where the traction curve's linear part meets mu_lim (-)
 P_FILM_RATE = 62  # slip a newton removes from a ball's two contacts in a step, over dt / m_ball (-): 2 x 3.5
-P_SIZE = 63
+P_I_RING = 63  # inner-ring moment of inertia about a diameter through its centre (kg.m^2)
+P_IP_RING = 64  # about its axis (kg.m^2): the gyroscopic moment of a tilting ring that turns at omega
+P_SIZE = 65
 
 # ---- outputs of advance(): float64[O_SIZE] --------------------------------------------------------
 O_OMEGA_CAGE = 0  # cage speed: mean orbital angular speed of the balls (rad/s)
@@ -191,4 +198,6 @@ A_DISS_O = 7  # in the outer contacts (J)
 A_POWER_I = 8  # power dissipated in the inner contacts in the last step (W, Houpert film losses included)
 A_POWER_O = 9  # in the outer contacts (W)
 A_CAP = 10  # bearing capacitance (without the background) integrated over the call's steps (F.s)
-A_SIZE = 11
+A_MR = 11  # moment on the inner ring about its centre (N.m), x, y, z
+A_WR = 14  # predicted tilt rates of the inner ring (rad/s), 2 entries
+A_SIZE = 16

@@ -7,9 +7,11 @@ Q/(r_g + delta) across it (the contact force stays on the line through the groov
 r_g = (f - 1/2) D, so a ball moved across the normal is pulled back). Each ball's inner and outer contacts
 act in series: the ball's two in-plane coordinates are eliminated, K_ball = K_i - K_i (K_i + K_o)^-1 K_i
 (Harris & Kotzalas 2006, vol. 2, ch. 1: the ball's own equilibrium condensed out). The ball acts on the
-inner groove's curvature-centre point at its azimuth (rho_i e_r + z_i e_z from the ring's origin), which a
-ring displacement moves by u + theta x c; K = sum over the balls of G^T K_ball G. A ball open on either race
-adds nothing. Computed once per communication step, not per DEM step.
+inner groove's curvature-centre point nearest to it, c + L (L of length rho_i in the plane of the ring's
+current, tilted circle, c the ring's centre), which a ring displacement moves by u + theta x L; K = sum over
+the balls of G^T K_ball G. The moments are about the ring's centre, the point about which it tilts (the
+quasi-static fidelity's). A ball open on either race adds nothing. Computed once per communication step, not
+per DEM step.
 """
 
 import math
@@ -19,7 +21,7 @@ import numpy as np
 from bearing_fmu_common.jit import kernel
 
 from .contacts import groove_approach
-from .state import B_X, P_KH_I, P_RG_I, P_RHO_I, P_Z_I
+from .state import B_X, P_KH_I, P_RG_I
 from .tribology import race_circle
 
 
@@ -27,9 +29,9 @@ from .tribology import race_circle
 def _contact_spring(race, x, y, z, c, sn, ring, par):
     """(a, b, e): the 2x2 stiffness (N/m) [[a, b], [b, e]] of one contact in the ball's radial plane
     (e_r = (c, sn, 0), e_z), or a < 0 when the contact is open."""
-    cx, cy, cz, rho = race_circle(race, ring, par)
+    cx, cy, cz, ax, ay, az, rho = race_circle(race, ring, par)
     rg = par[P_RG_I + race]
-    delta, nx, ny, nz = groove_approach(x, y, z, cx, cy, cz, rho, rg)
+    delta, nx, ny, nz = groove_approach(x, y, z, cx, cy, cz, ax, ay, az, rho, rg)
     if delta <= 0.0:
         return -1.0, 0.0, 0.0
     K_h = par[P_KH_I + race]
@@ -50,8 +52,7 @@ def stiffness_matrix(balls, ring, par, K):
     for i in range(5):
         for k in range(5):
             K[i, k] = 0.0
-    rho_i = par[P_RHO_I]
-    z_i = par[P_Z_I]
+    cx, cy, cz, ax, ay, az, rho_i = race_circle(0, ring, par)
     G = np.empty((2, 5))  # d(e_r, e_z displacement of the ball's inner curvature centre)/d(ring DOFs)
     for j in range(balls.shape[1]):
         x = balls[B_X, j]
@@ -82,17 +83,30 @@ def stiffness_matrix(balls, ring, par, K):
         k_rz = b - (a * m12 + b * m22)
         k_zr = b - (b * m11 + e * m21)
         k_zz = e - (b * m12 + e * m22)
-        # displacement of the inner curvature-centre point along e_r and e_z for (x, y, z, theta_x, theta_y)
+        # the lever L from the ring's centre to the inner curvature-centre point nearest to the ball: rho_i along the
+        # ball's direction in the plane of the (tilted) circle
+        dx = x - cx
+        dy = y - cy
+        dz = z - cz
+        h = dx * ax + dy * ay + dz * az
+        dx -= h * ax
+        dy -= h * ay
+        dz -= h * az
+        scale = rho_i / math.sqrt(dx * dx + dy * dy + dz * dz)
+        lx = dx * scale
+        ly = dy * scale
+        lz = dz * scale
+        # displacement of that point along e_r and e_z for (x, y, z, theta_x, theta_y): u + theta x L
         G[0, 0] = c
         G[0, 1] = sn
         G[0, 2] = 0.0
-        G[0, 3] = -z_i * sn
-        G[0, 4] = z_i * c
+        G[0, 3] = -lz * sn
+        G[0, 4] = lz * c
         G[1, 0] = 0.0
         G[1, 1] = 0.0
         G[1, 2] = 1.0
-        G[1, 3] = rho_i * sn
-        G[1, 4] = -rho_i * c
+        G[1, 3] = ly
+        G[1, 4] = -lx
         for i in range(5):
             # (K_ball G)[:, i]
             kr = k_rr * G[0, i] + k_rz * G[1, i]

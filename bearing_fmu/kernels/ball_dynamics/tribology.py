@@ -16,8 +16,9 @@ kernels.ehl.film_thickness itself.
 
 Kinematics at a contact, in the frame that turns with the ball's orbit about z (angular speed
 w_orbit): the ball surface moves at u_b = (w - w_orbit z) x (D/2) n, the race surface at
-u_r = (omega_race - w_orbit) z x r (r from the ring axis to the contact point) + ring velocity;
-entrainment u = |u_b + u_r|/2 (tangential parts), SRR = |u_b - u_r|/u. Spin: (w - omega_race z).n.
+u_r = (W - w_orbit z) x r (r from the ring centre to the contact point, W the race's angular velocity: omega about
+its tilted axis plus the tilt rates) + ring velocity; entrainment u = |u_b + u_r|/2 (tangential parts),
+SRR = |u_b - u_r|/u. Spin: (w - W).n.
 """
 
 import math
@@ -67,6 +68,8 @@ from .state import (
     P_SIGMA_I,
     P_TRACTION,
     P_Z_I,
+    R_TH,
+    R_VTH,
     R_VX,
     R_X,
     T_A,
@@ -107,12 +110,30 @@ RACE_STRIDE_GEOM = 2  # P_RHO_I, P_Z_I -> P_RHO_O, P_Z_O
 
 
 @kernel(inline="always")
+def ring_axis(theta_x, theta_y):
+    """Unit axis (ax, ay, az) of the inner ring tilted by (theta_x, theta_y) (rad): z turned exactly by the rotation
+    vector (theta_x, theta_y, 0), i.e. (theta_y, -theta_x, 0) sin(t)/t + z cos(t) with t its length; (theta_y,
+    -theta_x, 1) to first order, the quasi-static fidelity's small tilts."""
+    t2 = theta_x * theta_x + theta_y * theta_y
+    if t2 < 1e-8:  # sin(t)/t and cos(t) by their series, exact to rounding below t = 1e-4
+        sinc = 1.0 - t2 / 6.0
+        cos = 1.0 - 0.5 * t2
+    else:
+        t = math.sqrt(t2)
+        sinc = math.sin(t) / t
+        cos = math.cos(t)
+    return theta_y * sinc, -theta_x * sinc, cos
+
+
+@kernel(inline="always")
 def race_circle(race, ring, par):
-    """Curvature-centre circle of a race: (cx, cy, cz, rho) in m (race 0 inner, moves with the ring)."""
+    """Curvature-centre circle of a race: (cx, cy, cz, ax, ay, az, rho), centre (m), unit axis (-) and radius (m);
+    race 0 inner: centred on the ring's centre, in the plane normal to its tilted axis."""
     g = RACE_STRIDE_GEOM * race
     if race == 0:
-        return ring[R_X], ring[R_X + 1], ring[R_X + 2] + par[P_Z_I], par[P_RHO_I]
-    return 0.0, 0.0, par[P_Z_I + g], par[P_RHO_I + g]
+        ax, ay, az = ring_axis(ring[R_TH], ring[R_TH + 1])
+        return ring[R_X], ring[R_X + 1], ring[R_X + 2] + par[P_Z_I], ax, ay, az, par[P_RHO_I]
+    return 0.0, 0.0, par[P_Z_I + g], 0.0, 0.0, 1.0, par[P_RHO_I + g]
 
 
 @kernel
@@ -164,7 +185,7 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
     mu_boundary = friction_coefficient(0.0)
     for race in range(2):
         h = RACE_STRIDE_HERTZ * race
-        cx, cy, cz, rho = race_circle(race, ring, par)
+        cx, cy, cz, ax, ay, az, rho = race_circle(race, ring, par)
         rg = par[P_RG_I + race]
         K_h = par[P_KH_I + race]
         Rx = par[P_RX_I + h]
@@ -176,7 +197,10 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
         scale_p = par[P_HP_I + P_HERTZ_SCALE_STRIDE * race]
         sigma = par[P_SIGMA_I + race]
         f_groove = par[P_F_I + race]
-        w_race = omega if race == 0 else 0.0
+        # the race's angular velocity: omega about its (tilted) axis plus the tilt rates; the outer race is fixed
+        wrx = omega * ax + ring[R_VTH] if race == 0 else 0.0
+        wry = omega * ay + ring[R_VTH + 1] if race == 0 else 0.0
+        wrz = omega * az if race == 0 else 0.0
         ring_vx = ring[R_VX] if race == 0 else 0.0
         ring_vy = ring[R_VX + 1] if race == 0 else 0.0
         ring_vz = ring[R_VX + 2] if race == 0 else 0.0
@@ -187,7 +211,7 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
             px = balls[B_X, j]
             py = balls[B_X + 1, j]
             pz = balls[B_X + 2, j]
-            delta, nx, ny, nz = groove_approach(px, py, pz, cx, cy, cz, rho, rg)
+            delta, nx, ny, nz = groove_approach(px, py, pz, cx, cy, cz, ax, ay, az, rho, rg)
             if delta <= 0.0:
                 for t in range(T_SIZE):
                     trib[t, race, j] = 0.0
@@ -215,10 +239,11 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
             # race surface relative to the same frame (the race turns about the ring centre, which moves)
             rx = px + half_d * nx - cx
             ry = py + half_d * ny - cy
-            s = w_race - w_orbit
-            urx = -s * ry + ring_vx
-            ury = s * rx + ring_vy
-            urz = ring_vz
+            rz = pz + half_d * nz - cz
+            s = wrz - w_orbit
+            urx = wry * rz - s * ry + ring_vx
+            ury = s * rx - wrx * rz + ring_vy
+            urz = wrx * ry - wry * rx + ring_vz
             # tangential parts
             un = urx * nx + ury * ny + urz * nz
             urx -= un * nx
@@ -236,7 +261,7 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
             sy = uby - ury
             sz = ubz - urz
             slide = math.sqrt(sx * sx + sy * sy + sz * sz)
-            spin = wx * nx + wy * ny + (wz - w_race) * nz
+            spin = (wx - wrx) * nx + (wy - wry) * ny + (wz - wrz) * nz
             F_R = 0.0
             if u > 0.0 and eta > 0.0:
                 ln_u = math.log(u)
