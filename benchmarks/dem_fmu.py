@@ -69,7 +69,7 @@ def run_model(stiffness=True):
     walls = []
     for omega, F_y in schedule():
         t0 = time.perf_counter()
-        model.update([omega, 0.0, F_y, 0.0, 313.15, 0.0], H)
+        model.update([omega, 0.0, F_y, 0.0, 0.0, 0.0, 313.15, 0.0], H)
         walls.append(time.perf_counter() - t0)
     return walls
 

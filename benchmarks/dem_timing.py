@@ -85,9 +85,10 @@ def _race_contacts(n, balls, ring, spring, trib, par, work, acc, dt):
         2.0 * par[s.P_V_REG] / par[s.P_D],
         dt,
     )
+    kappa = par[s.P_FILM_RATE] * dt / par[s.P_M_BALL]
     for _ in range(n):
         for race in range(2):
-            cx, cy, cz, rho = race_circle(race, ring, par)
+            cx, cy, cz, ax, ay, az, rho = race_circle(race, ring, par)
             frame = (
                 OMEGA,
                 acc[s.A_VR],
@@ -99,6 +100,11 @@ def _race_contacts(n, balls, ring, spring, trib, par, work, acc, dt):
                 rho,
                 par[s.P_RG_I + race],
                 par[s.P_KH_I + race],
+                ax,
+                ay,
+                az,
+                acc[s.A_WR],
+                acc[s.A_WR + 1],
             )
             row = 3 * race
             for j in range(balls.shape[1]):
@@ -122,6 +128,7 @@ def _race_contacts(n, balls, ring, spring, trib, par, work, acc, dt):
                     trib[s.T_C_N, race, j],
                     trib[s.T_F_ROLL, race, j],
                     trib[s.T_M_SPIN, race, j],
+                    (trib[s.T_PHI, race, j], trib[s.T_SLIP, race, j], par[s.P_MU_LIM], kappa),
                     frame,
                     steps,
                 )
@@ -172,7 +179,7 @@ def _cage_contacts(n, balls, cage, par, work):
 def _steps(n, balls, cage, ring, spring, trib, counters, par, work, acc, dt):
     """n Verlet steps from the state (the tribology frozen: the contact law only)."""
     for _ in range(n):
-        dyn.verlet_step(balls, cage, ring, spring, trib, counters, par, OMEGA, F_R, 0.0, 0.0, dt, work, acc)
+        dyn.verlet_step(balls, cage, ring, spring, trib, counters, par, OMEGA, 0.0, F_R, 0.0, 0.0, 0.0, dt, work, acc)
 
 
 @njit
