@@ -85,6 +85,7 @@ def _race_contacts(n, balls, ring, spring, trib, par, work, acc, dt):
         2.0 * par[s.P_V_REG] / par[s.P_D],
         dt,
     )
+    kappa = par[s.P_FILM_RATE] * dt / par[s.P_M_BALL]
     for _ in range(n):
         for race in range(2):
             cx, cy, cz, rho = race_circle(race, ring, par)
@@ -122,6 +123,7 @@ def _race_contacts(n, balls, ring, spring, trib, par, work, acc, dt):
                     trib[s.T_C_N, race, j],
                     trib[s.T_F_ROLL, race, j],
                     trib[s.T_M_SPIN, race, j],
+                    (trib[s.T_PHI, race, j], trib[s.T_SLIP, race, j], par[s.P_MU_LIM], kappa),
                     frame,
                     steps,
                 )

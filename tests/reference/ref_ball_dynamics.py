@@ -17,7 +17,8 @@ be handed to both. The model:
   -M_s s/max(|s|, w_reg, 4 M_s dt/I) n, s the spin relative to the race; F_roll = F_R + (F_h + F_H)/2
   (Houpert EHL force on each surface, hysteresis and Heathcote halved), M_s = (3/8) mu Q a E (Jones);
 - cage ball between balls k and k + 1, Hertz sphere-sphere with critical damping, frictionless; guide
-  channel around the pitch circle (distance from the circle minus the play), critically damped;
+  channel around the pitch circle (distance from the circle minus the play), critically damped; the cage
+  rigid in rotation: each element's torque about z replaced by the mean (the difference as a tangential force);
 - velocity Verlet with the velocity predictor v + a dt for the forces; omega linear over the call;
 - tribology refreshed at the start of every N-th step: Hertz, entrainment u = |u_b + u_r|/2 of the
   surface velocities relative to the orbiting contact frame, film, Lambda, mu, C_n, capacitance.
@@ -264,6 +265,13 @@ def forces(st, par, omega, F_ring, vel, dt):
             n = (pc - q) / dist
             f = damped_hertz(par[s.P_K_GUIDE], dist - par[s.P_GUIDE_GAP], par[s.P_ZETA_CAGE], m_c, np.dot(v_c[:, k], n))
             f_cage[:, k] -= f * n
+    # the cage is rigid in rotation: every element carries the mean torque about z as a tangential force
+    torque = np.array([np.cross(cage[s.C_X : s.C_X + 3, k], f_cage[:, k])[2] for k in range(Z)])
+    for k in range(Z):
+        p = cage[s.C_X : s.C_X + 3, k]
+        tangent = np.cross(Z_AXIS, p)
+        tangent[2] = 0.0
+        f_cage[:, k] += (torque.mean() - torque[k]) / np.dot(tangent, tangent) * tangent
     return f_ball, m_ball, f_cage, f_ring, power
 
 

@@ -109,6 +109,28 @@ def ball_capacitances(trib, work):
         work[W_CAP_BALL, j] = ball_capacitance(trib[T_CAP, 0, j], trib[T_CAP, 1, j])
 
 
+@kernel(inline="always")  # called once per step from verlet_step: no array-passing call
+def rigid_cage_torque(cage, work):
+    """Share the torque about the bearing axis of the forces on the Z cage elements (work[W_FC], N) equally among
+    them: the cage is one rigid ring whose pockets turn together, so each element carries the mean torque
+    T = mean(x F_y - y F_x) (N.m) and turns at the cage's one angular acceleration; the radial and axial forces
+    stay each element's own (its guide holds it on the pitch circle). Elements that could turn on their own
+    would give the train of balls and cage elements relative modes a real cage does not have (a healthy 6205
+    then showed a line at about BPFO/5 as large as BPFO, docs/dem.md)."""
+    Z = cage.shape[1]
+    mean = 0.0
+    for k in range(Z):
+        mean += cage[C_X, k] * work[W_FC + 1, k] - cage[C_X + 1, k] * work[W_FC, k]
+    mean /= Z
+    for k in range(Z):
+        x = cage[C_X, k]
+        y = cage[C_X + 1, k]
+        # (T_mean - T_k) / r^2 along (-y, x): the tangential force whose torque is T_mean
+        d = (mean - (x * work[W_FC + 1, k] - y * work[W_FC, k])) / (x * x + y * y)
+        work[W_FC, k] -= d * y
+        work[W_FC + 1, k] += d * x
+
+
 @kernel
 def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, dt, work, acc):
     """One velocity-Verlet step of every body (see the module docstring) at inner-ring speed omega (rad/s) and
@@ -283,6 +305,7 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
         work[W_FC, k] += fx
         work[W_FC + 1, k] += fy
         work[W_FC + 2, k] += fz
+    rigid_cage_torque(cage, work)
     # a NaN or inf anywhere (positions, velocities, springs) reaches the contact forces within a step;
     # the moments follow from the same quantities
     total = acc[A_FR] + acc[A_FR + 1] + acc[A_FR + 2]
