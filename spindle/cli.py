@@ -2,7 +2,8 @@
 
     spindle build [--out fmus]                    build every FMU (bearing scenes + SpindleThermal)
     spindle run RUNFILE [--out results] [--set KEY=VALUE ...] [--fmus DIR] [--no-plot] [--progress]
-    spindle sweep RUNFILE --param KEY --values V1,V2,... [--scheduler ADDRESS] [--workers N] [--out results]
+    spindle sweep RUNFILE --param KEY --values V1,V2,... [--scheduler ADDRESS] [--workers N] [--serial]
+                  [--set KEY=VALUE ...] [--fmus DIR] [--out results]   Dask if installed, else one after the other
     spindle info [FMU ...]                        what is built: variables, units, parameters
     spindle demo [--out results]                  the closed-loop demo run (runs/closed_loop_spring.toml)
     spindle validate [FMU|RUNFILE ...]            fmpy's validator on the FMUs; run files (.toml) checked
@@ -110,12 +111,32 @@ def cmd_run(args):
 
 
 def cmd_sweep(args):
-    from .cosim.sweep import sweep, write_table
+    from .cosim.runfile import load_run
+    from .cosim.sweep import DaskMissing, sequential, sweep, write_table
 
     values = [_value(v) for v in args.values.split(",") if v.strip()]
-    rows = sweep(
-        args.runfile, args.param, values, scheduler=args.scheduler, n_workers=args.workers, extra=_overrides(args.set)
-    )
+    extra = _overrides(args.set)
+    # an unreadable run file or a bad [run] key: one message before any run, not one failed row per point
+    load_run(args.runfile, {**extra, args.param: values[0]} if values else extra, fmu_dir=args.fmus)
+    try:
+        if args.serial:
+            raise DaskMissing("--serial")
+        rows = sweep(
+            args.runfile,
+            args.param,
+            values,
+            scheduler=args.scheduler,
+            n_workers=args.workers,
+            extra=extra,
+            fmu_dir=args.fmus,
+        )
+    except DaskMissing as exc:
+        if args.scheduler is not None:  # a cluster was asked for: running here instead would surprise
+            print(f"spindle sweep: {exc}; --scheduler needs it", file=sys.stderr)
+            return EXIT_ERROR
+        if not args.serial:
+            print(f"spindle sweep: {exc}; running the {len(values)} points one after the other here", file=sys.stderr)
+        rows = sequential(args.runfile, args.param, values, extra=extra, fmu_dir=args.fmus)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     path = out / f"{Path(args.runfile).stem}_sweep_{args.param.replace('.', '_')}.csv"
@@ -290,7 +311,10 @@ def main(argv=None):
         help="record every this many seconds (a multiple of the step; default every step)",
     )
     p = sub.add_parser(
-        "sweep", help="many runs of a run file on Dask; one table", epilog=EXIT_CODES, formatter_class=raw
+        "sweep",
+        help="many runs of a run file on Dask (without dask: one after the other); one table",
+        epilog=EXIT_CODES,
+        formatter_class=raw,
     )
     p.add_argument("runfile")
     p.add_argument("--param", required=True, help="dotted key, e.g. bearing_1.F_z or run.step")
@@ -298,6 +322,13 @@ def main(argv=None):
     p.add_argument("--set", action="append", metavar="KEY=VALUE", help="fixed overrides for every run")
     p.add_argument("--scheduler", default=None, help="address of a Dask scheduler (default: local cluster)")
     p.add_argument("--workers", type=int, default=2, help="local cluster worker processes")
+    p.add_argument("--fmus", default=None, metavar="DIR", help="folder of the FMUs the run file names")
+    p.add_argument(
+        "--serial",
+        action="store_true",
+        help="run the points one after the other in this process, without Dask (also what happens, with a "
+        "note, when dask is not installed and no --scheduler is given)",
+    )
     p.add_argument("--out", default="results")
     p = sub.add_parser("info", help="what the FMUs expose")
     p.add_argument("fmus", nargs="*")

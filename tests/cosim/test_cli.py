@@ -1,6 +1,8 @@
 """The `spindle` command line: version, validate, run with an FMU folder, and its exit codes."""
 
+import csv
 import shutil
+import sys
 
 import pytest
 
@@ -107,3 +109,33 @@ def test_info_prints_every_variable_and_the_ranges(closed_loop_fmus, capsys):
     assert cli.main(["info", str(path)]) == cli.EXIT_OK
     detail = capsys.readouterr().out
     assert "input     omega                [rad/s] range [-100000, 100000]" in detail
+
+
+def _fmu_folder(closed_loop_fmus, tmp_path):
+    folder = tmp_path / "elsewhere"
+    folder.mkdir()
+    for name in ("Bearing", "SpindleThermal"):
+        shutil.copy2(closed_loop_fmus[name], folder)
+    return folder
+
+
+def test_sweep_without_dask_runs_the_points_here_with_an_fmu_folder(closed_loop_fmus, tmp_path, monkeypatch, capsys):
+    """dask is the optional extra `sweep`: without it `spindle sweep` says so and runs the points one after the
+    other in this process (the same table, spindle.cosim.sweep.sequential), with `--fmus` as `spindle run`."""
+    monkeypatch.setitem(sys.modules, "dask", None)  # import dask / dask.distributed raise ImportError
+    monkeypatch.setitem(sys.modules, "dask.distributed", None)
+    out = tmp_path / "results"
+    folder = _fmu_folder(closed_loop_fmus, tmp_path)
+    args = ["sweep", str(DEMO), "--param", "spindle.T_coolant", "--values", "283.15,303.15", "--set", "run.stop=3"]
+    assert cli.main([*args, "--fmus", str(folder), "--out", str(out)]) == cli.EXIT_OK
+    captured = capsys.readouterr()
+    assert "dask[distributed]" in captured.err and "one after the other" in captured.err
+    assert "Traceback" not in captured.err
+    with open(out / "closed_loop_spring_sweep_spindle_T_coolant.csv", newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    assert [float(r["spindle.T_coolant"]) for r in rows] == [283.15, 303.15]
+    assert [r["status"] for r in rows] == ["ok", "ok"] and [float(r["t_end"]) for r in rows] == [3.0, 3.0]
+    assert float(rows[0]["spindle.T_housing"]) < float(rows[1]["spindle.T_housing"])  # the value reached the run
+    # a cluster asked for without dask: an error naming the missing package, nothing run here
+    assert cli.main([*args, "--fmus", str(folder), "--scheduler", "tcp://127.0.0.1:1"]) == cli.EXIT_ERROR
+    assert "pip install 'bearing-fmu[sweep]'" in capsys.readouterr().err
