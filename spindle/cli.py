@@ -14,11 +14,14 @@
 
 Exit codes: 0 done; 1 error (message on stderr); 2 usage error or an FMU with validation problems;
 3 the run stopped at a limit (e.g. thermal runaway; results up to there are written); 4 `check` found an
-output differing from the reference.
+output differing from the reference; 141 (128 + SIGPIPE) the output was closed by its reader (`| head`),
+the command stopped quietly.
 """
 
 import argparse
 import json
+import os
+import signal
 import sys
 from pathlib import Path
 
@@ -29,12 +32,14 @@ RUNS = ROOT / "runs"
 FMUS = ROOT / "fmus" if IN_CHECKOUT else Path.cwd() / "fmus"
 DEMO_RUN = RUNS / "closed_loop_spring.toml"
 EXIT_OK, EXIT_ERROR, EXIT_INVALID, EXIT_LIMIT, EXIT_DIFFERS = 0, 1, 2, 3, 4
+EXIT_PIPE = 128 + signal.SIGPIPE  # the output was closed by its reader (e.g. `| head`): stopped quietly
 EXIT_CODES = f"""exit codes:
   {EXIT_OK}  done
   {EXIT_ERROR}  error (message on stderr)
   {EXIT_INVALID}  usage error, or `validate` found problems in an FMU or a run file
   {EXIT_LIMIT}  a run stopped at a limit (e.g. thermal runaway); results up to there are written
-  {EXIT_DIFFERS}  `check`: an FMU's output differs from its reference (the variable is named)"""
+  {EXIT_DIFFERS}  `check`: an FMU's output differs from its reference (the variable is named)
+  {EXIT_PIPE}  the output was closed by its reader (e.g. `spindle info | head`): stopped quietly"""
 
 
 def _value(text):
@@ -377,8 +382,17 @@ def main(argv=None):
 
 
 def run():
-    """Console-script entry `spindle`: main()'s return value is the exit code."""
-    sys.exit(main())
+    """Console-script entry `spindle`: main()'s return value is the exit code. A reader that closes the output
+    early (`spindle info | head`) ends the command quietly, as it ends a Unix tool: no traceback, exit status
+    128 + SIGPIPE (the shell's status of a tool stopped by SIGPIPE)."""
+    try:
+        code = main()
+        sys.stdout.flush()  # a closed pipe shows here rather than at interpreter exit
+    except BrokenPipeError:
+        # Python would flush stdout again at exit and report the closed pipe: point it at /dev/null first
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        code = EXIT_PIPE
+    sys.exit(code)
 
 
 if __name__ == "__main__":

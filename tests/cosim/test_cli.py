@@ -2,6 +2,7 @@
 
 import csv
 import shutil
+import subprocess
 import sys
 
 import pytest
@@ -139,3 +140,19 @@ def test_sweep_without_dask_runs_the_points_here_with_an_fmu_folder(closed_loop_
     # a cluster asked for without dask: an error naming the missing package, nothing run here
     assert cli.main([*args, "--fmus", str(folder), "--scheduler", "tcp://127.0.0.1:1"]) == cli.EXIT_ERROR
     assert "pip install 'bearing-fmu[sweep]'" in capsys.readouterr().err
+
+
+def test_a_closed_output_ends_the_command_quietly(closed_loop_fmus):
+    """`spindle info | head`: the reader closes the pipe while the command still writes. The command stops as
+    a Unix tool does, without a traceback, with exit status 128 + SIGPIPE. The child waits for a byte on
+    stdin, sent once its output is closed, so it always writes into a closed pipe."""
+    child = "import os, sys; from spindle import cli; os.read(0, 1); sys.argv = ['spindle', 'info']; cli.run()"
+    proc = subprocess.Popen(
+        [sys.executable, "-c", child], stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE
+    )
+    proc.stdout.close()
+    proc.stdin.write(b"x")
+    proc.stdin.close()
+    status = proc.wait(timeout=120)
+    assert proc.stderr.read().decode() == ""
+    assert status == 141 == getattr(cli, "EXIT_PIPE", None)
