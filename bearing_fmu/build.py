@@ -234,6 +234,14 @@ def _start(value):
     return f"`{value}`" if isinstance(value, str) else f"{value:g}"
 
 
+COMMA_NAMES_NOTE = (
+    "Names such as `K[1,2]` (FMI structured names of matrix entries) contain a comma. In a CSV file they must be "
+    'quoted (`"K[1,2]"`), as fmpy and this product\'s own CSV files (`spindle run`, `spindle sweep`, the '
+    "reference results) write them; some native masters write them unquoted, and a plain CSV reader then "
+    "splits each such name in two and shifts every later column. `spindle check --ref` reads either."
+)
+
+
 def variables_markdown(fmu_name, description, about, parameters, inputs, outputs, scene=None):
     """The variable list of an FMU in the manner of the Modelica Reference-FMUs' per-FMU readme: its
     description, then one table row per variable (causality, type, unit, start, allowed range, description;
@@ -249,6 +257,7 @@ def variables_markdown(fmu_name, description, about, parameters, inputs, outputs
         "",
         "Generated from the variable declarations by `spindle build`; do not edit.",
         "",
+        *([COMMA_NAMES_NOTE, ""] if any("," in v.name for v in (*parameters, *inputs, *outputs)) else []),
         "| Variable | Causality | Type | Unit | Start | Range | Description |",
         "|---|---|---|---|---|---|---|",
     ]

@@ -162,7 +162,7 @@ def readme_block():
             f"| [`{name}.fmu`](fmus/{name}.md) | {_summary(name, scene)} | {_names(inputs)} "
             f"| {_names(outputs, units=False)} | {_names(parameters)} |"
         )
-    lines.append(README_END)
+    lines += ["", bearing_build.COMMA_NAMES_NOTE, README_END]
     return "\n".join(lines)
 
 

@@ -92,11 +92,24 @@ def csv_row(values):
     return [repr(float(v)) for v in values]
 
 
+def header_names(cells):
+    """Column names of a CSV header row: a structured name such as K[1,2] that a writer left unquoted (split at
+    its comma into 'K[1' and '2]') is joined again; the master itself quotes such names."""
+    names = []
+    for cell in cells:
+        if names and names[-1].count("[") > names[-1].count("]"):
+            names[-1] += "," + cell
+        else:
+            names.append(cell)
+    return names
+
+
 def read_csv(path):
-    """Columns and units of a result CSV written by the master: ({name: numpy array}, {name: unit})."""
+    """Columns and units of a result CSV written by the master (or by another master that left names such as
+    K[1,2] unquoted): ({name: numpy array}, {name: unit})."""
     with open(path, newline="") as fh:
         reader = csv.reader(fh)
-        header = next(reader)
+        header = header_names(next(reader))
         values = np.array([[float(v) for v in row] for row in reader], dtype=float).reshape(-1, len(header))
     names, units = [], {}
     for cell in header:
