@@ -81,7 +81,8 @@ def cmd_run(args):
     from .cosim.master import run
     from .cosim.runfile import load_run
 
-    spec = load_run(args.runfile, _overrides(args.set), fmu_dir=args.fmus)
+    overrides = _overrides(args.set)
+    spec = load_run(args.runfile, overrides, fmu_dir=args.fmus)
     missing = sorted({inst.fmu for inst in spec.instances.values() if not Path(inst.fmu).is_file()})
     if missing:
         print(
@@ -94,14 +95,15 @@ def cmd_run(args):
     out.mkdir(parents=True, exist_ok=True)
     stem = Path(args.runfile).stem
     csv_path = out / f"{stem}.csv"
-    # rows go to the CSV as the run goes (memory flat in run length); the plot reads the file
+    # rows go to the CSV as the run goes (memory flat in run length); the plot reads the file row by row
     result = run(spec, progress=args.progress, record_interval=args.record_interval, csv_path=csv_path)
-    written = [csv_path]
+    written = [csv_path, _write_run_record(out / f"{stem}.run.json", args.runfile, spec, overrides, result)]
     if not args.no_plot:
         try:
-            from .cosim.plots import plot_run
+            from .cosim.plots import plot_run, plot_title
 
-            written.append(plot_run(result, out / f"{stem}.png", title=f"{stem}: {spec.description}"))
+            title = plot_title(stem, spec.description, overrides)
+            written.append(plot_run(result, out / f"{stem}.png", title=title))
         except ImportError as exc:  # matplotlib is the optional extra `plot`
             print(f"plot skipped ({exc}): pip install 'bearing-fmu[plot]' for the PNG", file=sys.stderr)
     print(
@@ -113,6 +115,28 @@ def cmd_run(args):
         print(f"STOPPED: {result.message}", file=sys.stderr)
         return EXIT_LIMIT
     return 0
+
+
+def _write_run_record(path, runfile, spec, overrides, result):
+    """The side-car of a run's CSV (<stem>.run.json): which run file, with which --set overrides, produced it,
+    so a result never passes for the run file's own case (a 6000 rpm run of a 10 000 rpm file)."""
+    from bearing_fmu import __version__
+
+    record = {
+        "run_file": str(Path(runfile).resolve()),
+        "description": spec.description,
+        "overrides": overrides,
+        "start": spec.start,
+        "stop": spec.stop,
+        "step": spec.step,
+        "algorithm": spec.algorithm,
+        "status": result.status,
+        "message": result.message,
+        "steps": result.n_steps,
+        "version": __version__,
+    }
+    Path(path).write_text(json.dumps(record, indent=2) + "\n")
+    return path
 
 
 def cmd_sweep(args):
@@ -281,16 +305,28 @@ def cmd_export_ssp(args):
     return EXIT_OK
 
 
-def main(argv=None):
-    from bearing_fmu import __version__
+class _Version(argparse.Action):
+    """--version: imports bearing_fmu (the one place of the version) only when asked, so that a command that
+    runs FMUs leaves each bearing FMU its own bundled package (docs/fmu_runtime.md, "The master")."""
 
+    def __init__(self, option_strings, dest, **kwargs):
+        super().__init__(option_strings, dest, nargs=0, help="show the version and exit")
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        from bearing_fmu import __version__
+
+        print(f"{parser.prog} {__version__}")
+        parser.exit()
+
+
+def main(argv=None):
     parser = argparse.ArgumentParser(
         prog="spindle",
         description="bearing/spindle co-simulation tools",
         epilog=EXIT_CODES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    parser.add_argument("--version", action=_Version)
     sub = parser.add_subparsers(dest="command", required=True)
     raw = argparse.RawDescriptionHelpFormatter
     p = sub.add_parser("build", help=f"build every FMU into {FMUS}")

@@ -1,6 +1,7 @@
 """The `spindle` command line: version, validate, run with an FMU folder, and its exit codes."""
 
 import csv
+import json
 import shutil
 import subprocess
 import sys
@@ -156,3 +157,22 @@ def test_a_closed_output_ends_the_command_quietly(closed_loop_fmus):
     status = proc.wait(timeout=120)
     assert proc.stderr.read().decode() == ""
     assert status == 141 == getattr(cli, "EXIT_PIPE", None)
+
+
+def test_a_runs_overrides_are_recorded_beside_its_csv_and_in_its_plot_title(closed_loop_fmus, tmp_path, monkeypatch):
+    """A run with --set is another case than its run file's description says (a 6000 rpm run of the 10 000 rpm
+    file): the overrides go into <stem>.run.json beside the CSV and into the plot's title."""
+    from spindle.cosim import plots
+
+    titles = []
+    monkeypatch.setattr(plots, "plot_run", lambda result, path, title="": titles.append(title) or path)
+    out = tmp_path / "results"
+    sets = ["--set", "run.stop=3", "--set", "spindle.T_coolant=300.0"]
+    folder = _fmu_folder(closed_loop_fmus, tmp_path)
+    assert cli.main(["run", str(DEMO), *sets, "--fmus", str(folder), "--out", str(out)]) == cli.EXIT_OK
+    record = json.loads((out / "closed_loop_spring.run.json").read_text())
+    assert record["overrides"] == {"run.stop": 3, "spindle.T_coolant": 300.0}
+    assert record["run_file"] == str(DEMO) and record["stop"] == 3.0 and record["status"] == "ok"
+    assert len(titles) == 1
+    assert "10 000 rpm" in titles[0]  # the run file's description, then what this run changed
+    assert "run.stop = 3" in titles[0] and "spindle.T_coolant = 300.0" in titles[0]
