@@ -35,6 +35,9 @@ KIND_SECTIONS = {
 }
 
 
+KIND_NAMES = {"spindle": "spindle network", "bearing": "bearing", "lubricant": "lubricant"}
+
+
 def is_file(path):
     """Path.is_file(), False for a name the system cannot even look up (too long, a NUL byte)."""
     try:
@@ -90,8 +93,8 @@ def read_toml(path, what=None):
     if what is not None and kind is not None and kind != what:
         sections = ", ".join(f"[{s}]" for s in KIND_SECTIONS[kind] if s in doc)
         raise ParameterError(
-            f"{what} = '{path}' is a {kind} file, not a {what} file (it has {sections}): give it as "
-            f"`{kind}`, or give a {what} file as `{what}`"
+            f"{what} = '{path}' is a {KIND_NAMES[kind]} file, not a {KIND_NAMES[what]} file (it has {sections}): "
+            f"give it as `{kind}`, or give a {KIND_NAMES[what]} file as `{what}`"
         )
     return doc
 
