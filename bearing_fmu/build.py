@@ -1,7 +1,7 @@
 """Build the bearing FMUs into fmus/ (one FMU per scene, with its scene file and a reference result).
 
-Each FMU carries the `bearing_fmu` package in resources/ so that only numpy, numba and scipy are needed
-in the importing interpreter. At load time a small generated entry script copies the bundled
+Each FMU carries the `bearing_fmu` and `bearing_fmu_common` packages in resources/ so that only numpy and
+numba are needed in the importing interpreter. At load time a small generated entry script copies the bundled
 package once to a stable per-version directory (~/.cache/bearing_fmu/<hash>, or $BEARING_FMU_CACHE)
 and imports it from there, so later processes import without copying. Each FMU also carries its
 kernels compiled for its platform's generic CPU (resources/numba_portable, bearing_fmu.compiled_code),
@@ -91,16 +91,38 @@ class {fmu_name}(_Slave):
 '''
 
 
-def package_hash(package_dirs=(PACKAGE_DIR, COMMON_DIR)):
-    """Content hash of the package sources (names and bytes): the bundle version."""
+def package_hash(root, names):
+    """Content hash of the staged packages `names` under root (names and bytes of their .py and .toml
+    files): the bundle version."""
     digest = hashlib.sha256()
-    for package_dir in package_dirs:
-        for path in sorted(Path(package_dir).rglob("*")):
+    for name in names:
+        for path in sorted((Path(root) / name).rglob("*")):
             if path.is_file() and "__pycache__" not in path.parts and path.suffix in (".py", ".toml"):
-                digest.update(Path(package_dir).name.encode())
-                digest.update(path.relative_to(package_dir).as_posix().encode())
+                digest.update(name.encode())
+                digest.update(path.relative_to(Path(root) / name).as_posix().encode())
                 digest.update(path.read_bytes())
     return digest.hexdigest()[:16]
+
+
+BEARING_BUNDLE = ((PACKAGE_DIR, "bearing_fmu"), (COMMON_DIR, "bearing_fmu_common"))
+_NOT_BUNDLED = shutil.ignore_patterns("__pycache__", "*.pyc", "*.nbi", "*.nbc")
+
+
+def stage_bundle(stage, bundle):
+    """Copy each (source file or directory, destination relative to stage) of `bundle` into stage; returns
+    the top-level package names, in order."""
+    names = []
+    for source, dest in bundle:
+        target = Path(stage) / dest
+        target.parent.mkdir(parents=True, exist_ok=True)
+        if Path(source).is_dir():
+            shutil.copytree(source, target, ignore=_NOT_BUNDLED)
+        else:
+            shutil.copyfile(source, target)
+        top = Path(dest).parts[0]
+        if top not in names:
+            names.append(top)
+    return names
 
 
 def build_python_fmu(
@@ -108,33 +130,28 @@ def build_python_fmu(
     module,
     base_class,
     out_dir,
-    package_dirs=(PACKAGE_DIR, COMMON_DIR),
+    bundle=BEARING_BUNDLE,
     body="pass",
     imports="",
     runs=(),
 ):
     """Build a pythonfmu FMU whose slave class `fmu_name` derives from module.base_class, bundling
-    the given package directories in resources/ (copied to a stable cache directory at load). Its
+    in resources/ the files and directories of `bundle` ((source, path in resources/) pairs: whole
+    packages, or the parts of one a model needs; copied to a stable cache directory at load). Its
     binary is the project's FMI layer (bearing_fmu_common/runtime), not pythonfmu's. Its kernels are
     compiled for the generic CPU by running each experiment of `runs` on the FMU
     (bearing_fmu.compiled_code.compile_portable) and added to the FMU."""
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
-    package_dirs = [Path(p) for p in package_dirs]
     with tempfile.TemporaryDirectory(prefix="bearing_fmu_build_") as tmp:
         stage = Path(tmp)
-        for package_dir in package_dirs:
-            shutil.copytree(
-                package_dir,
-                stage / package_dir.name,
-                ignore=shutil.ignore_patterns("__pycache__", "*.pyc", "*.nbi", "*.nbc"),
-            )
+        packages = stage_bundle(stage, bundle)
         entry = stage / f"{fmu_name.lower()}_entry.py"
         entry.write_text(
             ENTRY_TEMPLATE.format(
                 fmu_name=fmu_name,
-                bundle=package_hash(package_dirs),
-                packages=[p.name for p in package_dirs],
+                bundle=package_hash(stage, packages),
+                packages=packages,
                 compiled=COMPILED_DIR,
                 module=module,
                 base_class=base_class,
@@ -145,7 +162,7 @@ def build_python_fmu(
         path = FmuBuilder.build_FMU(
             entry,
             dest=out_dir / f"{fmu_name}.fmu",
-            project_files=[stage / p.name for p in package_dirs],
+            project_files=[stage / p for p in packages],
             canGetAndSetFMUstate=True,
             canSerializeFMUstate=True,
         )
@@ -217,6 +234,14 @@ def _start(value):
     return f"`{value}`" if isinstance(value, str) else f"{value:g}"
 
 
+COMMA_NAMES_NOTE = (
+    "Names such as `K[1,2]` (FMI structured names of matrix entries) contain a comma. In a CSV file they must be "
+    'quoted (`"K[1,2]"`), as fmpy and this product\'s own CSV files (`spindle run`, `spindle sweep`, the '
+    "reference results) write them; some native masters write them unquoted, and a plain CSV reader then "
+    "splits each such name in two and shifts every later column. `spindle check --ref` reads either."
+)
+
+
 def variables_markdown(fmu_name, description, about, parameters, inputs, outputs, scene=None):
     """The variable list of an FMU in the manner of the Modelica Reference-FMUs' per-FMU readme: its
     description, then one table row per variable (causality, type, unit, start, allowed range, description;
@@ -232,6 +257,7 @@ def variables_markdown(fmu_name, description, about, parameters, inputs, outputs
         "",
         "Generated from the variable declarations by `spindle build`; do not edit.",
         "",
+        *([COMMA_NAMES_NOTE, ""] if any("," in v.name for v in (*parameters, *inputs, *outputs)) else []),
         "| Variable | Causality | Type | Unit | Start | Range | Description |",
         "|---|---|---|---|---|---|---|",
     ]

@@ -19,6 +19,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
+# Static bounds shared by the bearing and the thermal FMUs (declared ranges of speed and load inputs)
+OMEGA_MAX = 1e5  # rad/s (~955 000 rpm): d_m n = 4e6 mm.rpm is reached below it by any bearing with d_m >= 5 mm
+LOAD_MAX = 1e8  # N: far beyond any ball bearing (the largest slewing ball bearings: C0 of order 1e7 N)
+
 
 class InputError(ValueError):
     """An input or parameter value is outside its allowed range (message names it and the range)."""

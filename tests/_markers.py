@@ -7,8 +7,11 @@
 
 `slow` marks the tests listed in SLOW (more than ~10 s each on the 2-core reference machine: fresh
 processes, hour-long closed loops, a Dask cluster, speed sweeps), kept here beside the folder rule so
-every selection is decided in one place. The quick loop while editing kernels and models is
-`pytest -m "not slow and not fmu and not cosim"` (about a minute); `make test` runs everything.
+every selection is decided in one place. `bare_host` marks the tests listed in BARE_HOST, which set up a
+host environment of their own with pip (a virtual environment with only fmpy, numpy and numba: about a
+minute with pip's cache, and registry access): `make test` leaves them out, `make test-bare-host` runs
+them. The quick loop while editing kernels and models is `pytest -m "not slow and not fmu and not cosim"`
+(about a minute); `make test` runs everything else.
 """
 
 from pathlib import Path
@@ -26,6 +29,9 @@ SLOW = {  # test file -> test function names (every parametrisation of them)
     "tests/cosim/test_teardown.py": {"test_fresh_processes_exit_0_through_the_normal_teardown"},
     "tests/validation/test_quasistatic_literature.py": {"test_controlling_race_split_is_discontinuous_in_speed"},
 }
+BARE_HOST = {  # test file -> test function names that build a pip environment of their own
+    "tests/fmu/test_bare_host.py": {"test_thermal_fmu_runs_in_a_host_with_only_fmpy_numpy_numba"},
+}
 
 
 def pytest_collection_modifyitems(config, items):
@@ -38,5 +44,9 @@ def pytest_collection_modifyitems(config, items):
         if marker:
             item.add_marker(getattr(pytest.mark, marker))
         name = getattr(item, "originalname", item.name)
-        if name in SLOW.get(path.relative_to(root).as_posix(), ()):
+        relative = path.relative_to(root).as_posix()
+        if name in SLOW.get(relative, ()):
             item.add_marker(pytest.mark.slow)
+        if name in BARE_HOST.get(relative, ()):
+            item.add_marker(pytest.mark.slow)
+            item.add_marker(pytest.mark.bare_host)

@@ -584,11 +584,13 @@ DEM_PARAMETERS = (
     Variable(
         "refresh_interval",
         "s",
-        "simulated time between two tribology refreshes (film, friction, damping, capacitance), ]0, 1e-3] s",
+        "simulated time between two tribology refreshes (film, friction, damping, capacitance), [0, 1e-3] s; "
+        "0 = at every DEM step",
         start=DEM_REFRESH_INTERVAL,
         min=0.0,
         max=DEM_REFRESH_MAX,
-        limits="> 0; beyond 1 ms the film and friction lag the ball motion (docs/reports/dem_error.md)",
+        limits="0 = every DEM step (as any interval shorter than the step); beyond 1 ms the film and friction lag "
+        "the ball motion (docs/reports/dem_error.md)",
     ),
     Variable(
         "traction_limit",

@@ -157,9 +157,11 @@ class DemModel:
             raise InputError(f"refresh = {refresh} steps is outside the allowed range [1, 100000] (a whole number)")
         if not (math.isfinite(safety) and 0.0 < safety <= 1.0):
             raise InputError(f"safety = {safety} is outside the allowed range ]0, 1]")
-        if not (math.isfinite(refresh_interval) and 0.0 < refresh_interval <= DEM_REFRESH_MAX):
+        # 0 (the declared minimum) refreshes at every step, as any interval below dt does (_run's floor, min 1)
+        if not (math.isfinite(refresh_interval) and 0.0 <= refresh_interval <= DEM_REFRESH_MAX):
             raise InputError(
-                f"refresh_interval = {refresh_interval} s is outside the allowed range ]0, {DEM_REFRESH_MAX:g}] s"
+                f"refresh_interval = {refresh_interval} s is outside the allowed range [0, {DEM_REFRESH_MAX:g}] s "
+                "(0 = every DEM step)"
             )
         if not (math.isfinite(traction_limit) and 0.0 <= traction_limit <= TRACTION_LIMIT_MAX):
             raise InputError(

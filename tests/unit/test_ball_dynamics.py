@@ -414,3 +414,23 @@ def test_record_returns_time_series_of_outputs_and_contacts():
         t = t0 + k * 1e-4
         out = model.advance(t, omega=10.0 * (t - t0) / (1.5e-3 - t0), F_y=3000.0)
     assert out["Q_max_inner"] == rec["Q_max_inner"][-1]
+
+
+def test_refresh_interval_0_is_accepted_and_refreshes_at_every_step():
+    """refresh_interval's declared range (BearingDEM.fmu's FMI min/max) is [0, 1e-3] s, and the model accepts
+    all of it: 0 means a tribology refresh at every DEM step, what any interval shorter than the step gives
+    (refresh = max(1, floor(interval / dt))). The same steps with refresh = 1 step give the same bits."""
+    from bearing_fmu.models.declarations import DEM_PARAMETERS
+
+    declared = next(v for v in DEM_PARAMETERS if v.name == "refresh_interval")
+    assert declared.min == 0.0
+    dt = 2.0**-19
+    every = DemModel("6208", "guessasma_oil", dt=dt, refresh_interval=0.0)
+    fixed = DemModel("6208", "guessasma_oil", dt=dt, refresh=1)
+    for k in range(1, 4):
+        a = every.advance(20 * k * dt, omega=30.0 * k, F_x=3000.0)
+        b = fixed.advance(20 * k * dt, omega=30.0 * k, F_x=3000.0)
+        assert every.refresh == 1
+        assert a == b
+    with pytest.raises(InputError, match=r"refresh_interval = -1e-06 s is outside the allowed range \[0, 0.001\] s"):
+        DemModel("6208", "guessasma_oil", refresh_interval=-1e-6)
