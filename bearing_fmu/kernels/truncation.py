@@ -1,4 +1,4 @@
-"""Truncation of the contact ellipse by the groove shoulders (docs/quasistatic.md section 7).
+"""Truncation of the contact ellipse by the groove shoulders (docs/quasistatic.md section 8).
 
 A ball-race contact lies on the groove, a circle of radius r = f D about the groove-curvature centre in
 the ball's (axial, radial) plane. Its contact angle alpha is the direction of the contact normal seen

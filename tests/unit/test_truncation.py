@@ -1,4 +1,4 @@
-"""Shoulder truncation of the contact ellipse (kernels.truncation, docs/quasistatic.md section 7): kernels against
+"""Shoulder truncation of the contact ellipse (kernels.truncation, docs/quasistatic.md section 8): kernels against
 their plain-geometry twins, the shoulders of the bearing files, and the outputs and warnings of the three facades."""
 
 import math
