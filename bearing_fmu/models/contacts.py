@@ -112,9 +112,11 @@ def truncation_warnings(tp, tr, loads, load_row, angles, angle_row, truncated):
     the ball, its contact angle, where its ellipse reaches and the shoulder it passes. truncated: list of two
     booleans, the races truncated at the previous evaluation, updated in place (a race leaving truncation is
     warned again at its next entry)."""
+    inner, outer = float(tr[tk.TR_INNER]), float(tr[tk.TR_OUTER])
+    if inner == 0.0 and outer == 0.0 and not (truncated[0] or truncated[1]):  # the usual case, at every step
+        return []
     warnings = []
-    for race in range(2):
-        t = tr[tk.TR_INNER + race]
+    for race, t in enumerate((inner, outer)):
         if t > 0.0 and not truncated[race]:
             o = tk.TP_STRIDE * race
             j = int(tr[tk.TR_BALL_INNER + race])
@@ -132,5 +134,5 @@ def truncation_warnings(tp, tr, loads, load_row, angles, angle_row, truncated):
                 f"edge at {math.degrees(limit):.1f} deg ({100.0 * t:.3g} % of the semi-major axis beyond it); its "
                 f"load, stresses and film are computed as if the groove went on (output truncation_{RACES[race]})"
             )
-        truncated[race] = bool(t > 0.0)
+        truncated[race] = t > 0.0
     return warnings
