@@ -49,6 +49,14 @@ class Bearing:
     cage_ball_radius: float = 0.0  # DEM cage-ball radius (m), 0 if absent
     cage_mass: float = 0.0  # mass of the whole cage (kg), 0 if absent: the DEM's Z cage balls share it
     extras: dict = field(default_factory=dict)
+    # land (shoulder) diameters (m): of each ring on its thrust side (the side a ball presses under a thrust +z on
+    # the inner ring; both sides of a deep-groove ring) and on the other side; 0 only in a Bearing built by hand
+    # (read_bearing always fills them: the file's values, else the estimates of shoulder_estimate)
+    shoulder_inner: float = 0.0
+    shoulder_outer: float = 0.0
+    shoulder_inner_back: float = 0.0
+    shoulder_outer_back: float = 0.0
+    shoulders_estimated: tuple = ()  # keys of SHOULDER_KEYS the file did not give (estimated by shoulder_estimate)
 
 
 def _material(doc, section, path):
@@ -57,6 +65,57 @@ def _material(doc, section, path):
         nu=_value(doc, f"{section}.nu", POISSON, path),
         rho=_value(doc, f"{section}.rho", DENSITY, path),
     )
+
+
+# Shoulders (docs/parameters.md, shoulders): file key -> (ring, side). Estimates for a file without them, as
+# shoulder heights above the groove bottom of the nominal geometry (d_m -+ D): a deep-groove ring 0.2 D on both
+# sides; an angular-contact ring's thrust side the point of the groove 60 deg from its bottom, h = f D (1 - cos 60),
+# its other side a low shoulder of 0.1 D.
+SHOULDER_KEYS = {
+    "inner_shoulder_diameter": ("inner", "thrust"),
+    "outer_shoulder_diameter": ("outer", "thrust"),
+    "inner_back_shoulder_diameter": ("inner", "back"),
+    "outer_back_shoulder_diameter": ("outer", "back"),
+}
+DEEP_GROOVE_SHOULDER = 0.2  # x D, estimated shoulder height of a deep-groove ring
+THRUST_SHOULDER_ANGLE = math.radians(60.0)  # rad, estimated thrust-side shoulder of an angular-contact ring
+BACK_SHOULDER = 0.1  # x D, estimated low shoulder of an angular-contact ring
+
+
+def shoulder_estimate(kind, D, dm, f, ring, side):
+    """Estimated land diameter (m) of a ring ('inner' | 'outer') on a side ('thrust' | 'back') of a bearing of
+    kind 'deep_groove' | 'angular_contact', ball diameter D (m), pitch diameter dm (m), the ring's groove
+    conformity f (-): the groove bottom d_m -+ D raised by the shoulder height h of SHOULDER_KEYS' comment."""
+    if kind == "deep_groove":
+        h = DEEP_GROOVE_SHOULDER * D
+    elif side == "thrust":
+        h = f * D * (1.0 - math.cos(THRUST_SHOULDER_ANGLE))
+    else:
+        h = BACK_SHOULDER * D
+    return dm - D + 2.0 * h if ring == "inner" else dm + D - 2.0 * h
+
+
+def _shoulders(doc, kind, D, dm, f_i, f_o, path):
+    """{key: land diameter (m)} of SHOULDER_KEYS and the keys estimated. Given: within the ring's groove, between
+    the groove bottom and the pitch circle (inner ]d_m - D, d_m[, outer ]d_m, d_m + D[). Missing: estimated; a
+    deep-groove ring's back side is its thrust side's value when that is given (a symmetric ring)."""
+    values, estimated = {}, []
+    for key, (ring, side) in SHOULDER_KEYS.items():
+        low, high = (dm - D, dm) if ring == "inner" else (dm, dm + D)
+        value = _value(doc, f"geometry.{key}", LENGTH, path, required=False)
+        if value is not None and not low < value < high:
+            raise ParameterError(
+                f"{path}: 'geometry.{key}' = {value} m is outside the allowed range ]{low:.6g}, {high:.6g}[ m "
+                f"(between the {ring} groove bottom d_m {'-' if ring == 'inner' else '+'} D and the pitch circle)"
+            )
+        if value is None:
+            estimated.append(key)
+            if kind == "deep_groove" and side == "back":  # a symmetric ring: the thrust side's (given or estimated)
+                value = values[f"{ring}_shoulder_diameter"]
+            else:
+                value = shoulder_estimate(kind, D, dm, f_i if ring == "inner" else f_o, ring, side)
+        values[key] = value
+    return values, tuple(estimated)
 
 
 ALPHA_MAX = math.radians(60.0)  # largest free contact angle accepted (rad): P_d <= 2 A (1 - cos 60 deg) = A
@@ -135,6 +194,7 @@ def read_bearing(path):
     f_i = _value(doc, "geometry.inner_conformity", conf, path)
     f_o = _value(doc, "geometry.outer_conformity", conf, path)
     Pd, alpha0 = _clearance_and_angle(doc, D, f_i, f_o, kind, path)
+    shoulders, shoulders_estimated = _shoulders(doc, kind, D, dm, f_i, f_o, path)
     bearing = Bearing(
         name=str(meta.get("name", path.stem)),
         kind=kind,
@@ -153,6 +213,11 @@ def read_bearing(path):
         Ra_ball=_value(doc, "surface.ball_Ra", Spec("m", 0.0, 1e-4), path),
         cage_ball_radius=_value(doc, "cage.ball_radius", Spec("m", 0.0, 1.0, True), path, required=False, default=0.0),
         cage_mass=_value(doc, "cage.mass", Spec("kg", 0.0, 1e3, True), path, required=False, default=0.0),
+        shoulder_inner=shoulders["inner_shoulder_diameter"],
+        shoulder_outer=shoulders["outer_shoulder_diameter"],
+        shoulder_inner_back=shoulders["inner_back_shoulder_diameter"],
+        shoulder_outer_back=shoulders["outer_back_shoulder_diameter"],
+        shoulders_estimated=shoulders_estimated,
     )
     if math.pi * dm < bearing.Z * D:
         raise ParameterError(

@@ -25,6 +25,7 @@ from ..kernels import bearing_outputs as bo
 from ..kernels import contacts as ck
 from ..kernels import radial_bearing as ak
 from ..kernels import rating_life as rl
+from ..kernels import truncation as tk
 from ..kernels.ball_dynamics import state as ds
 from .variables import (
     GROOVE_MAX,
@@ -112,6 +113,23 @@ LIFE_OUTPUTS = (
     ),
 )
 CAPACITANCE = "electrical capacitance of the bearing (balls in parallel)"
+# shoulder truncation of the contact ellipse (kernels.truncation; the shoulders of the bearing file)
+TRUNCATION = (
+    "part of the contact ellipse's major axis beyond the {0} ring's shoulder edge, in semi-major axes, for the "
+    "most truncated loaded {0} contact{1}: 0 none, 1 the contact centre on the edge, 2 the whole ellipse beyond; "
+    "a warning is logged on entry (load, stresses and film are computed as if the groove went on)"
+)
+
+
+def truncation_outputs(source, words=""):
+    """truncation_inner, truncation_outer (-) from the array named `source` (kernels.truncation TR_* slots);
+    `words` says when they are evaluated."""
+    return tuple(
+        Variable(f"truncation_{race}", "1", TRUNCATION.format(race, words), source=(source, slot))
+        for race, slot in (("inner", tk.TR_INNER), ("outer", tk.TR_OUTER))
+    )
+
+
 H_C = "central film thickness of the most loaded {} contact (0 if none; what capacitance film measurements report)"
 # speeds: every angular speed is about the bearing axis in the fixed frame (outer ring) unless it says otherwise
 BALL_CAGE = (
@@ -158,6 +176,7 @@ ANALYTIC_OUTPUTS = (
         "Q_max_outer", "N", "largest outer contact load (includes centrifugal force)", source=("out", ak.O_QMAX_O)
     ),
     Variable("p_max", "Pa", "largest Hertz contact pressure", source=("out", ak.O_PMAX)),
+    *truncation_outputs("trunc", " (contacts at the groove bottom)"),
     Variable(
         "omega_cage",
         "rad/s",
@@ -383,6 +402,7 @@ QUASI_STATIC_OUTPUTS = (
     ),
     Variable("alpha_inner", "rad", "inner contact angle of the most loaded ball", source=("ball_set", bo.BS_ALPHA_I)),
     Variable("alpha_outer", "rad", "outer contact angle of the most loaded ball", source=("ball_set", bo.BS_ALPHA_O)),
+    *truncation_outputs("trunc"),
     Variable(
         "omega_cage",
         "rad/s",
@@ -521,6 +541,7 @@ DEM_OUTPUTS = (
     _dem_output("p_max", ("out", ds.O_PMAX), "largest Hertz contact pressure of a loaded contact at the last refresh"),
     _dem_output("alpha_inner", ("out", ds.O_ALPHA_I), "inner contact angle of the most loaded ball (end of step)"),
     _dem_output("alpha_outer", ("out", ds.O_ALPHA_O), "outer contact angle of the most loaded ball (end of step)"),
+    *truncation_outputs("trunc", " at the end of the step"),
     _dem_output(
         "omega_cage",
         ("out", ds.O_OMEGA_CAGE),

@@ -22,10 +22,11 @@ import numpy as np
 
 from bearing_fmu_common.variables import InputLimits, gather_plan, outputs_as_dict, select
 
+from ..kernels import truncation as tk
 from ..kernels.ball_dynamics import integrator as dyn
 from ..kernels.ball_dynamics import state as s
 from ..kernels.ball_dynamics.monitor import critical_time_step, damping_step_ratio, kinetic_energy
-from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_angles, contact_loads
+from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_angles, contact_loads, shoulder_truncation
 from ..kernels.ball_dynamics.stiffness import stiffness_matrix
 from ..kernels.ehl import friction_coefficient
 from ..kernels.geometry import (
@@ -38,7 +39,7 @@ from ..kernels.geometry import (
 from ..kernels.hertz import hertz_contact, hertz_stiffness
 from ..params import clearance_limits, load_bearing, load_lubricant
 from ..scene import Scene
-from .contacts import contact_terms, pack, race_contacts
+from .contacts import contact_terms, pack, race_contacts, truncation_parameters, truncation_warnings
 from .declarations import DEM_DT_MAX, DEM_INPUTS, DEM_OUTPUTS, DEM_REFRESH_MAX
 from .declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
 from .variables import DM_N_LIMIT, MATERIAL_LIMIT, P_MAX_ERROR, InputError, check_clearance, pressure_warnings
@@ -209,6 +210,9 @@ class DemModel:
         self._acc = np.zeros(s.A_SIZE)
         self._Q = np.zeros((2, Z))
         self._alpha = np.zeros((2, Z))
+        self._signed_alpha = np.zeros((2, Z))
+        self.trunc = np.zeros(tk.TR_SIZE)  # shoulder truncation of the last advance() (kernels.truncation TR_*)
+        self.truncated = np.zeros(2)  # 1 for a race truncated at the last advance() (its warning is logged on entry)
         self.dt = math.nan  # time step of the last advance() call (s)
         self.refresh = 0  # its tribology refresh interval (steps)
         self._place_bodies()
@@ -227,6 +231,7 @@ class DemModel:
             "status": self.status,
             "K": self.K.reshape(-1),
             "freq": self.frequencies,
+            "trunc": self.trunc,
         }
         self._plan = gather_plan(self.outputs, arrays)
         # state at the start of the last kernel call: an automatic-step call is repeated from it, and update()
@@ -241,6 +246,7 @@ class DemModel:
         D = b.D
         rc = race_contacts(b, sc, self.Pd)
         alpha0, Rx_i, Ry_i, Rx_o, Ry_o, ci, co, E_red = rc
+        self._truncation_parameters = truncation_parameters(b, rc, self.Pd)
         p = np.zeros(s.P_SIZE)
         p[s.P_Z] = b.Z
         p[s.P_D] = D
@@ -484,6 +490,12 @@ class DemModel:
         # as the other fidelities: a warning above the ISO 76 limit; beyond the material limit (6 GPa) the
         # monitor has already stopped the step (penetration), so only the warning can apply here
         self.warnings = pressure_warnings(min(self.out[s.O_PMAX], P_MAX_ERROR), "the loads")
+        # the contact ellipses against the shoulders: an output of the interval's end state, not of every step
+        tp = self._truncation_parameters
+        shoulder_truncation(self.balls, self.ring, self.par, tp, self._Q, self._signed_alpha, self.trunc)
+        flags = [bool(v) for v in self.truncated]
+        self.warnings += truncation_warnings(tp, self.trunc, self._Q, 0, self._signed_alpha, 0, flags)
+        self.truncated[:] = flags
 
     def _run(self, n_steps, dt, omega, F_x, F_y, F_z, T_oil):
         """One kernel call of n_steps steps of dt (s) to the inner-ring speed omega; returns the speed and the sum
@@ -738,7 +750,7 @@ class DemModel:
         return result
 
     # -- state (FMU get/set state, rollback) ---------------------------------------------------
-    STATE_ARRAYS = ("balls", "cage", "ring", "spring", "trib", "counters")
+    STATE_ARRAYS = ("balls", "cage", "ring", "spring", "trib", "counters", "truncated")
 
     def get_state(self):
         """Copy of the whole dynamic state (every array and the current inner-ring speed)."""

@@ -16,12 +16,13 @@ from ..kernels import bearing_outputs as bo
 from ..kernels import contacts as ck
 from ..kernels import jones_harris as qk
 from ..kernels import rating_life as rl
+from ..kernels import truncation as tk
 from ..kernels.geometry import ball_mass, free_contact_angle
 from ..kernels.hertz import hertz_contact, hertz_stiffness
 from ..kernels.torque import TL_SIZE
 from ..params import load_bearing, load_lubricant
 from ..scene import RACE_CONTROLS, Scene
-from .contacts import contact_terms, pack, race_contacts
+from .contacts import contact_terms, pack, race_contacts, truncation_parameters, truncation_warnings
 from .declarations import (
     DISPLACEMENT_LIMIT,
     DOF_NAMES,
@@ -122,6 +123,10 @@ class QuasiStaticModel:
         self._losses = np.zeros(TL_SIZE)
         self.status = (qk.QS_OK, 0, 0.0)
         self.warnings = []
+        # shoulder truncation of the contact ellipses (kernels.truncation), the races truncated at the last
+        # evaluation (a warning is logged on entry only)
+        self._trunc = np.zeros(tk.TR_SIZE)
+        self._truncated = [False, False]
         self.F_preload = float(F_preload)
         if self.F_preload and self.scene.drive != "fixed_axial":
             raise InputError(
@@ -137,7 +142,14 @@ class QuasiStaticModel:
         self.output_names = tuple(v.name for v in self.outputs)
         self.values = np.zeros(len(self.outputs))  # outputs of the last evaluation, in self.outputs order
         # where each output slot comes from, as the codes of kernels.bearing_outputs
-        codes = {"out": bo.SRC_OUT, "d": bo.SRC_D, "F": bo.SRC_F, "K": bo.SRC_K, "ball_set": bo.SRC_BALL_SET}
+        codes = {
+            "out": bo.SRC_OUT,
+            "d": bo.SRC_D,
+            "F": bo.SRC_F,
+            "K": bo.SRC_K,
+            "ball_set": bo.SRC_BALL_SET,
+            "trunc": bo.SRC_TRUNC,
+        }
         # the rating-life slots are filled after the output kernel (_collect): it copies a placeholder there
         sourced = [(codes[v.source[0]], v.source[1]) if v.source[0] in codes else (bo.SRC_OUT, 0) for v in self.outputs]
         self._source = np.array([code for code, _ in sourced], dtype=np.int64)
@@ -181,6 +193,7 @@ class QuasiStaticModel:
         b, s = self.bearing, self.scene
         rc = race_contacts(b, s, self.Pd)
         Rx_i, Ry_i, Rx_o, Ry_o, ci, co, E_red = rc.Rx_i, rc.Ry_i, rc.Rx_o, rc.Ry_o, rc.ci, rc.co, rc.E_red
+        self._truncation_parameters = truncation_parameters(b, rc, self.Pd)
         qs = np.zeros(qk.QS_SIZE)
         qs[qk.QS_Z] = b.Z
         qs[qk.QS_D] = b.D
@@ -302,6 +315,8 @@ class QuasiStaticModel:
             self.per_contact,
             self._losses,
         )
+        # the contact ellipses against the shoulders (an output: nothing of the solution changes)
+        tk.race_truncation(self.balls, qk.BQ_Q_I, self.balls, qk.BQ_A_I, self._truncation_parameters, self._trunc)
         return self._collect(omega, u)
 
     def _shown(self, u):
@@ -396,6 +411,7 @@ class QuasiStaticModel:
             self.d,
             self.F,
             self._K_flat,
+            self._trunc,
             self._source,
             self._index,
             self._summary,
@@ -418,13 +434,18 @@ class QuasiStaticModel:
                 f"output {self.output_names[bad]} is not finite ({self.values[bad]}) for {self._shown(u)}: "
                 f"please report this case"
             )
+        self.warnings += truncation_warnings(
+            self._truncation_parameters, self._trunc, self.balls, qk.BQ_Q_I, self.balls, qk.BQ_A_I, self._truncated
+        )
         return self.values
 
     # -- state (FMU get/set state, rollback) ---------------------------------------------------
     def get_state(self):
-        """Solver state as plain lists (JSON-serialisable): displacements and ball positions."""
-        return {"d": self.d.tolist(), "X": self.X.tolist()}
+        """Solver state as plain lists (JSON-serialisable): displacements, ball positions and the races whose contact
+        ellipse was truncated (their warning is logged on entry only)."""
+        return {"d": self.d.tolist(), "X": self.X.tolist(), "truncated": list(self._truncated)}
 
     def set_state(self, state):
         self.d[:] = state["d"]
         self.X[:] = state["X"]
+        self._truncated[:] = state.get("truncated", (False, False))

@@ -21,6 +21,7 @@ from bearing_fmu_common.bearing_file import (  # noqa: F401  (re-exported: the b
     LENGTH,
     MODULUS,
     POISSON,
+    SHOULDER_KEYS,
     Bearing,
     Material,
     angle_for_clearance,
@@ -28,6 +29,7 @@ from bearing_fmu_common.bearing_file import (  # noqa: F401  (re-exported: the b
     clearance_limits,
     groove_clearance,
     read_bearing,
+    shoulder_estimate,
 )
 from bearing_fmu_common.paramfile import (  # noqa: F401  (re-exported)
     ParameterError,

@@ -81,7 +81,15 @@ def test_validate_and_variables(dem_fmu):
     assert inputs == {"omega", "F_x", "F_y", "F_z", "T_oil", "dPd_thermal"}
     shared = {"x", "y", "z", "torque", "P_loss", "Q_inner_ring", "Q_outer_ring", "Lambda_inner", "Lambda_outer"}
     shared |= {"h_min_inner", "h_min_outer", "regime", "C_bearing", "Q_max_inner", "Q_max_outer", "p_max"}
-    shared |= {"alpha_inner", "alpha_outer", "omega_cage", "omega_ball", "n_loaded"}
+    shared |= {
+        "alpha_inner",
+        "alpha_outer",
+        "truncation_inner",
+        "truncation_outer",
+        "omega_cage",
+        "omega_ball",
+        "n_loaded",
+    }
     shared |= {"omega_ball_cage", "FTF", "BPFO", "BPFI", "BSF", "h_c_inner", "h_c_outer"}
     shared |= {f"K[{i},{j}]" for i in range(1, 6) for j in range(1, 6)}
     assert outputs == shared | {"cage_slip", "SRR_max", "monitor_status"}

@@ -11,6 +11,8 @@
   fmi2Discard, the host survives, a corrected input recovers.
 """
 
+import math
+
 import numpy as np
 import pytest
 from fmpy import read_model_description, simulate_fmu
@@ -19,6 +21,7 @@ from fmpy.validation import validate_fmu
 from bearing_fmu.build import SCENES_DIR
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
+from tests.fmu import probe as host
 from tests.fmu.harness import close, opened, probe
 
 INTEGER_OUTPUTS = ("regime", "n_loaded", "iterations")
@@ -211,3 +214,40 @@ def test_overload_warning_is_logged():
     out = model.evaluate(omega=100.0, F_z=200000.0)
     assert 4.2e9 < out["p_max"] < 6e9
     assert any("ISO 76" in w for w in model.warnings)
+
+
+def test_shoulder_truncation_is_reported_and_warned_once_per_entry(bearing_fmu):
+    """Bearing.fmu with the 40 deg 218 of the textbook cases (its own bearing file, iso_vg68_mineral) under 8.9 kN
+    thrust: at rest within its shoulders (truncation_inner = 0, no warning); at 10 000 and 12 000 rpm the
+    centrifugal force turns the inner contact to 55-57 deg and its ellipse past the estimated 60.7 deg shoulder
+    edge: truncation_inner > 0 and one fmi2Warning naming the race, the contact angle and the edge, not one per
+    step; back at rest it leaves truncation, and the next entry is warned again. FMU state: a state saved in
+    truncation and restored gives no new warning (the state carries which races are truncated)."""
+    from tests.validation.test_shoulder_truncation import BEARING
+
+    host.messages.clear()
+    fmu, vr, _ = host.open_fmu(str(bearing_fmu), {"bearing": str(BEARING), "lubricant": "iso_vg68_mineral"})
+    fmu.setReal([vr["F_z"]], [8900.0])
+    rpm = (0.0, 10000.0, 12000.0, 12000.0, 10000.0, 0.0, 0.0, 12000.0)
+    truncation, warnings = [], []
+    for k, n in enumerate(rpm):
+        fmu.setReal([vr["omega"]], [n * math.pi / 30.0])
+        host.messages.clear()
+        assert host.step_status(fmu, 0.1 * k) == 0
+        truncation.append(fmu.getReal([vr["truncation_inner"], vr["truncation_outer"]]))
+        warnings.append([m["message"] for m in host.messages if m["status"] == 1 and "truncated" in m["message"]])
+    assert [t[0] > 0.0 for t in truncation] == [n > 0.0 for n in rpm]
+    assert all(t[1] == 0.0 for t in truncation)
+    assert [len(w) for w in warnings] == [0, 1, 0, 0, 0, 0, 0, 1]
+    assert "inner ring's thrust-side shoulder" in warnings[1][0] and "edge at 60.7 deg" in warnings[1][0]
+    state = fmu.getFMUstate()  # in truncation
+    fmu.setReal([vr["omega"]], [0.0])
+    assert host.step_status(fmu, 0.8) == 0
+    fmu.setFMUstate(state)
+    fmu.setReal([vr["omega"]], [12000.0 * math.pi / 30.0])
+    host.messages.clear()
+    assert host.step_status(fmu, 0.9) == 0
+    assert not any("truncated" in m["message"] for m in host.messages)
+    fmu.freeFMUstate(state)
+    fmu.terminate()
+    fmu.freeInstance()

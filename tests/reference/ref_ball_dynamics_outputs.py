@@ -20,7 +20,7 @@ import math
 import numpy as np
 
 from bearing_fmu.kernels.ball_dynamics import state as s
-from tests.reference import ref_capacitance, ref_ehl
+from tests.reference import ref_capacitance, ref_ehl, ref_truncation
 from tests.reference.ref_ball_dynamics import groove_contact, race_centre
 from tests.reference.ref_ball_dynamics_monitor import kinetic_energy
 
@@ -145,3 +145,33 @@ TWINS = {
     "bearing_outputs": bearing_outputs,
     "pure_rolling_cage_speed": pure_rolling_cage_speed,
 }
+
+
+def signed_contact_angles(balls, ring, par):
+    """Signed contact angles alpha[race, ball] (rad) as the quasi-static fidelity measures them: the contact
+    direction (inner: ball centre to groove-curvature centre, -n; outer: centre to ball centre, n) split into its
+    axial component and its component along the outward radial unit vector at the ball, whether open or not."""
+    alpha = np.zeros((2, balls.shape[1]))
+    for race in range(2):
+        centre, rho = race_centre(race, ring, par)
+        for j in range(balls.shape[1]):
+            p = balls[s.B_X : s.B_X + 3, j]
+            d = p - centre
+            e_r = np.array([d[0], d[1], 0.0]) / math.hypot(d[0], d[1])
+            groove_centre = centre + rho * e_r  # the curvature centre in the ball's plane
+            direction = groove_centre - p if race == 0 else p - groove_centre
+            alpha[race, j] = math.atan2(direction[2], float(np.dot(direction, e_r)))
+    return alpha
+
+
+def shoulder_truncation(balls, ring, par, tp):
+    """kernels.truncation TR_* of the current state: loads and signed angles as above, the truncation twin."""
+    tr = np.zeros(4)
+    ref_truncation.race_truncation(
+        contact_loads(balls, ring, par), 0, signed_contact_angles(balls, ring, par), 0, tp, tr
+    )
+    return tr
+
+
+TWINS["signed_contact_angles"] = signed_contact_angles
+TWINS["shoulder_truncation"] = shoulder_truncation

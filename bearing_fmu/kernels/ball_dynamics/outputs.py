@@ -15,6 +15,7 @@ from bearing_fmu_common.jit import kernel
 
 from ..capacitance import ball_capacitance
 from ..ehl import lubrication_regime
+from ..truncation import race_truncation
 from .contacts import groove_approach
 from .monitor import kinetic_energy
 from .state import (
@@ -143,6 +144,32 @@ def pure_rolling_cage_speed(balls, ring, par, omega, Q):
             total += omega * b_i * g_o / den
             count += 1
     return total / count if count > 0 else 0.0
+
+
+@kernel
+def signed_contact_angles(balls, ring, par, alpha):
+    """Signed contact angles (rad) of every ball-race contact into alpha[race, ball], as the quasi-static fidelity
+    measures them (docs/quasistatic.md section 1): the direction from the ball centre to the inner groove-curvature
+    centre, and from the outer one to the ball centre, from the radial plane; positive toward +z at the inner
+    contact and -z at the outer one's centre, i.e. toward each ring's thrust-side shoulder."""
+    for race in range(2):
+        cx, cy, cz, rho = race_circle(race, ring, par)
+        for j in range(balls.shape[1]):
+            dx = balls[B_X, j] - cx
+            dy = balls[B_X + 1, j] - cy
+            radial = math.sqrt(dx * dx + dy * dy) - rho  # ball centre beyond the centre circle (m)
+            axial = balls[B_X + 2, j] - cz
+            alpha[race, j] = math.atan2(-axial, -radial) if race == 0 else math.atan2(axial, radial)
+
+
+@kernel
+def shoulder_truncation(balls, ring, par, tp, Q, alpha, tr):
+    """Fill tr[TR_*] (kernels.truncation) with the most truncated loaded contact of each race in the current
+    state; tp: the TP_* shoulder parameters. Q, alpha: float64[2, Z] work arrays (receive the current contact
+    loads and signed contact angles)."""
+    contact_loads(balls, ring, par, Q)
+    signed_contact_angles(balls, ring, par, alpha)
+    race_truncation(Q, 0, alpha, 0, tp, tr)
 
 
 @kernel
