@@ -65,8 +65,10 @@ COVERED_THROUGH = {
         "the per-ball rows, compared with the twin's balls after every solve (test_solution_matches_twin)",
     ),
     JH + "_global_newton": (JH + "solve_quasistatic", "the iteration whose result is the compared solution"),
-    JH + "_loads_residual_at": (JH + "_loads_line_search", "one evaluation of the damped step"),
-    JH + "_loads_line_search": (JH + "_global_newton", "the damping of the global Newton"),
+    JH + "_loads_residual_at": (JH + "_global_newton", "one trial of the trust-region iteration"),
+    JH + "_dogleg": (JH + "_global_newton", "the step of the trust-region iteration whose result is compared"),
+    JH + "_model_decrease": (JH + "_dogleg", "the quadratic model's decrease, two sums"),
+    JH + "_sum_squares": (JH + "_global_newton", "a squared norm"),
     JH + "_residual_norm": (JH + "_global_newton", "largest scaled load error: the compared solution's criterion"),
     JH + "_mean_ball_load": (JH + "_global_newton", "load scale of the convergence test, a mean"),
     # the DEM step's pieces: compared through advance over 300 steps of a 6208 in a speed ramp under 3 kN
