@@ -770,7 +770,7 @@ def _solve_small(Kr, R, n, out):
 
 @kernel
 def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
-    """Global equilibrium by damped Newton with the analytic Jacobian.
+    """Global equilibrium by trust-region Newton with the analytic Jacobian (_global_newton).
 
     F_applied (5): loads (N, N.m) on the load-controlled DOFs; control (5): 1 = load-controlled,
     0 = displacement-controlled (d holds the imposed value); d (5, m and rad): warm start, solution
