@@ -41,6 +41,10 @@ def grid_loads():
 @pytest.mark.parametrize("omega", SPEEDS)
 @pytest.mark.parametrize("bearing", ["B7214C", "6208"])
 def test_every_grid_point_converges_or_is_refused_for_a_physical_reason(bearing, omega):
+    """Case: every clearance and load of the grid (module docstring) at one speed, from a fresh model. Outcome:
+    converged with the loads balanced to the scene tolerance, or an InputError naming a physical reason (a
+    ball beyond the centre of its inner groove; for the single angular-contact bearing, the missing shoulder
+    or the groove bottom); every thrust-dominated point converges."""
     b = QuasiStaticModel(bearing, scene=SCENE).bearing
     A = (b.f_i + b.f_o - 1.0) * b.D  # m
     scale = np.array([1.0, 1.0, 1.0, 0.5 * b.dm, 0.5 * b.dm])
