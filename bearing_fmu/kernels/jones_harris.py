@@ -169,13 +169,14 @@ _BALL_RTOL = 1e-13  # ball residual relative to its loads plus the bearing-level
 _BALL_TRIES = 8  # step halvings of the ball line search (down to 1/128): bounds the cost of a bad start
 _TR_RADIUS = 0.05  # first trust radius of the global solve, in groove clearances A: the full Newton step inside it
 _TR_COLLAPSE = 1e-12  # trust radius (in A) below which the region has collapsed on a discontinuity of the loads
+_LOADS_TRIES = 12  # step halvings of the last-resort damped Newton (down to 1/2048)
 _TR_ACCEPT = 1e-4  # a trial is taken when the unbalanced load does at least this share of the predicted work
 _F_FLOOR = 1e-3  # N: load scale of a bearing with no applied load (global and ball convergence tests)
 
 
 def line_search(residual_at):
-    """The damping of the ball's Newton iteration (_ball_newton): a kernel
-    search(x, step, res, tries, args) -> (lam, residual) that tries x + lam step for lam = 1, 1/2, 1/4, ...
+    """The damping of the ball's Newton iteration (_ball_newton) and of the global last resort (_damped_newton):
+    a kernel search(x, step, res, tries, args) -> (lam, residual) that tries x + lam step for lam = 1, 1/2, 1/4, ...
     (`tries` times) until the residual norm residual_at(x, lam, step, args) falls below res, and takes the
     full step when none does (a plateau where no contact carries load: the norm is flat there). The
     evaluation of the returned step is the last one made, so its side effects (work arrays) are current.
@@ -788,7 +789,14 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
     stiffness = qs[QS_STIFFNESS] > 0.5
     J = np.empty((5, 5))  # Newton matrix: the stiffness of the current iterate
     contact = np.empty((CS_SIZE, int(qs[QS_Z])))
+    d_start = d.copy()
+    X_start = X.copy()
     status, it, res = _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, stiffness or n > 0)
+    if status != QS_OK and n > 0:
+        d[:] = d_start
+        X[:, :] = X_start
+        status, more, res = _damped_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, True)
+        it += more + 1
     ball_outputs(omega, qs, X, contact, balls)
     if stiffness:
         K[:, :] = J
@@ -902,6 +910,76 @@ def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
             trial = _loads_residual_at(d, 1.0, step, loads)
             radius = _TR_RADIUS * A
         res = trial
+        for a in range(5):
+            d[a] = d_try[a]
+        X[:, :] = X_try
+        ball_status = status[0]
+    return QS_NOT_CONVERGED, status[1], res
+
+
+@kernel
+def _damped_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacobian):
+    """Damped Newton on the loads of the n load-controlled DOFs idx[:n]: solve_quasistatic's last resort when
+    the trust region (_global_newton) fails. The step is capped at 0.05 A and backtracked on the largest load
+    error, and taken whole when no cut lowers it: on a discontinuity of the loads (a hybrid moment share that
+    jumps, a ball state that jumps between branches) this sometimes lands where the trust region stops.
+
+    J (5x5) is assembled at every evaluation when `jacobian` (needed whenever n > 0); the last
+    evaluation is always that of the returned d, so F, J, contact and X belong to the solution."""
+    A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
+    tol = qs[QS_TOL]
+    maxit = int(qs[QS_MAXIT])
+    scale = np.array([1.0, 1.0, 1.0, Rr, Rr])  # rotations as arc lengths at Rr, moments as forces
+    K_s = (qs[QS_K_I] ** (-2.0 / 3.0) + qs[QS_K_O] ** (-2.0 / 3.0)) ** -1.5
+    k_floor = 1e-6 * K_s * math.sqrt(1e-3 * qs[QS_D])  # regularises a bearing with no loaded ball
+    step_cap = 0.05 * A
+    Kr = np.empty((5, 5))
+    R = np.empty(5)
+    Rw = np.empty(5)
+    step = np.empty(5)
+    d_try = np.empty(5)
+    X_try = X.copy()
+    # worst ball status of the last evaluation, bearing evaluations after the first (the work reported)
+    status = np.zeros(2, np.int64)
+    f_ref = _F_FLOOR
+    for i in range(n):
+        f_ref = max(f_ref, abs(F_applied[idx[i]]) / scale[idx[i]])
+    loads = (F_applied, idx, n, scale, qs, dPd, omega, X, X_try, d_try, F, J, contact, jacobian, status, f_ref)
+    ball_status = ring_loads(d, qs, dPd, omega, X, F, J, contact, jacobian, f_ref)
+    if n > 0 and _free_ring_start(F_applied, idx, n, A1_0, d, contact):
+        ball_status = ring_loads(d, qs, dPd, omega, X, F, J, contact, jacobian, f_ref)
+        status[1] += 1
+    res = _residual_norm(F_applied, F, idx, n, scale)
+    for it in range(maxit + 1):
+        if not math.isfinite(res):
+            return QS_NOT_FINITE, status[1], res
+        if res <= tol * max(f_ref, _mean_ball_load(contact)) or n == 0:
+            return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), status[1], res
+        if it == maxit:
+            break
+        kmax = 0.0
+        for a in range(n):
+            kmax = max(kmax, J[idx[a], idx[a]] / (scale[idx[a]] ** 2))
+        for a in range(n):
+            ia = idx[a]
+            R[a] = (F_applied[ia] - F[ia]) / scale[ia]
+            for b in range(n):
+                ib = idx[b]
+                Kr[a, b] = J[ia, ib] / (scale[ia] * scale[ib])
+            Kr[a, a] += 1e-12 * kmax + k_floor
+        if not _solve_small(Kr, R, n, Rw):
+            return QS_NOT_FINITE, it, res
+        big = 0.0
+        for a in range(n):
+            big = max(big, abs(Rw[a]))
+        if big < 1e-15 * A:
+            return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), status[1], res
+        f = 1.0 if big <= step_cap else step_cap / big
+        for a in range(5):
+            step[a] = 0.0
+        for a in range(n):
+            step[idx[a]] = f * Rw[a] / scale[idx[a]]
+        _, res = _loads_line_search(d, step, res, _LOADS_TRIES, loads)  # d_try, X_try, F, J, contact: at the step
         for a in range(5):
             d[a] = d_try[a]
         X[:, :] = X_try
@@ -1026,6 +1104,7 @@ def _loads_residual_at(d, lam, step, loads):
 
 
 _ball_line_search = line_search(_ball_residual_at)
+_loads_line_search = line_search(_loads_residual_at)
 
 
 @kernel

@@ -5,10 +5,10 @@ Grid: the B7214C and the 6208 with P_d = 0.3, 0.4, 0.5, 0.59, 0.7, 0.8, 0.85, 0.
 (A = (f_i + f_o - 1) D; free contact angles 32-60 deg), under 3 kN radial with 0, 100 and 500 N thrust and
 a thrust-dominated 500 N radial + 3 kN thrust, each alone and with a 50 N.m moment M_x, at 0, 50, 500 and
 1000 rad/s, each point solved from a fresh model (cold start) with the scene of Bearing.fmu (tolerance 1e-10
-of the load). 640 points; measured with the trust-region solver: 426 converge, 134 single angular-contact
-cases are refused because their loaded balls need the missing shoulder or sit at the groove bottom, and 80
-(all at speed) because a ball lies beyond the centre of curvature of its inner groove. With the line-search
-Newton it replaced, 127 points ended in "no convergence" (a SolverError without a physical reason).
+of the load). 640 points; measured: 435 converge, 134 single angular-contact cases are refused because their
+loaded balls need the missing shoulder or sit at the groove bottom, and 71 (all at speed) because a ball lies
+beyond the centre of curvature of its inner groove. A damped Newton with line search alone ends 127 points
+in "no convergence" (a SolverError without a physical reason).
 
 Converged points balance the applied loads to the scene tolerance of the larger of the applied load and the
 mean ball load (the solver's own criterion, moments divided by d_m/2); every thrust-dominated point converges.

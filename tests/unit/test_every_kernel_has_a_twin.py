@@ -66,6 +66,8 @@ COVERED_THROUGH = {
     ),
     JH + "_global_newton": (JH + "solve_quasistatic", "the iteration whose result is the compared solution"),
     JH + "_loads_residual_at": (JH + "_global_newton", "one trial of the trust-region iteration"),
+    JH + "_damped_newton": (JH + "solve_quasistatic", "the last resort whose result is the compared solution"),
+    JH + "_loads_line_search": (JH + "_damped_newton", "the damping of the last-resort Newton"),
     JH + "_dogleg": (JH + "_global_newton", "the step of the trust-region iteration whose result is compared"),
     JH + "_model_decrease": (JH + "_dogleg", "the quadratic model's decrease, two sums"),
     JH + "_sum_squares": (JH + "_global_newton", "a squared norm"),
