@@ -135,8 +135,9 @@ def test_interference_at_the_geometric_limit_is_refused_by_pressure(bearing):
 def test_clearance_near_the_geometric_limit_converges_or_says_so(bearing):
     """Case: P_d = 0.95 A and A (free contact angles 58 and 60 deg) under 3 kN radial + 500 N axial.
     Outcome: either converged and finite, or a SolverError whose message names the speed and every load
-    (measured: both bearings at both clearances end with a ball beyond the centre of curvature of its inner
-    groove, and the SolverError names that physical reason, docs/quasistatic.md section 3) -- never a NaN or
+    (measured: the 6208 converges at A, through the last-resort damped Newton in 562 bearing evaluations; at
+    0.95 A, and the B7214C at both, the solve ends with a ball beyond the centre of curvature of its inner
+    groove and the SolverError names that physical reason, docs/quasistatic.md section 3) -- never a NaN or
     a hang (the iteration cap of the scene bounds the work)."""
     A = groove(QuasiStaticModel(bearing, scene=QS_SCENE).bearing)
     for share in (0.95, 1.0):
