@@ -28,6 +28,9 @@ SLOW = {  # test file -> test function names (every parametrisation of them)
     "tests/cosim/test_libcosim_master.py": {"test_fresh_processes_exit_0"},
     "tests/cosim/test_teardown.py": {"test_fresh_processes_exit_0_through_the_normal_teardown"},
     "tests/validation/test_quasistatic_literature.py": {"test_controlling_race_split_is_discontinuous_in_speed"},
+    "tests/stability/test_large_free_angle_grid.py": {
+        "test_every_grid_point_converges_or_is_refused_for_a_physical_reason"
+    },
 }
 BARE_HOST = {  # test file -> test function names that build a pip environment of their own
     "tests/fmu/test_bare_host.py": {"test_thermal_fmu_runs_in_a_host_with_only_fmpy_numpy_numba"},

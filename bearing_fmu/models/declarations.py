@@ -432,7 +432,7 @@ QUASI_STATIC_OUTPUTS = (
     Variable(
         "iterations",
         "1",
-        "work of the last solve: bearing evaluations after the first (Newton iterations plus cut line-search steps)",
+        "work of the last solve: bearing evaluations after the first (trust-region trials of the Newton iteration)",
         "integer",
         source=("ball_set", bo.BS_ITERATIONS),
     ),

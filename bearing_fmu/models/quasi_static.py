@@ -341,6 +341,7 @@ class QuasiStaticModel:
             self.d[:] = d_start
             self.X[:] = X_start
             self._refuse_without_thrust(applied, u)
+            self._refuse_beyond_the_groove_centre(res, u)
             reason = {
                 qk.QS_NOT_CONVERGED: f"no convergence in {self.scene.max_iterations} iterations",
                 qk.QS_BALL_NOT_CONVERGED: "a ball equilibrium did not converge",
@@ -367,6 +368,28 @@ class QuasiStaticModel:
             f"balls at the groove bottom with nothing to locate it axially (no equilibrium found there). Carry the "
             f"reverse thrust, or the thrust a radial load needs, with a second bearing or a preload "
             f"(bearing_fmu.models.pair). Allowed: F_z > 0 with a radial load or moment. Inputs: {self._shown(u)}"
+        )
+
+    def _refuse_beyond_the_groove_centre(self, res, u):
+        """An equilibrium not found where the ring has crossed so much of its clearance that a ball lies beyond the
+        centre of curvature of its inner groove (inner contact angle beyond 90 deg, self.balls: the solver's last
+        state): the physical reason, not the solver's. There the model's full-circle inner groove closes on the
+        ball from behind, a contact the ring does not have, and the ball's state jumps between that contact and
+        none (docs/quasistatic.md section 3): the loads have no continuous equilibrium to converge to."""
+        cos_inner = np.cos(self.balls[qk.BQ_A_I])
+        if not np.all(np.isfinite(cos_inner)) or cos_inner.min() > 0.0:
+            return
+        j = int(np.argmin(cos_inner))
+        b = self.bearing
+        raise SolverError(
+            f"quasi-static equilibrium not found (load residual {res:.3g} N): under these loads the inner ring of "
+            f"bearing '{b.name}' (P_d = {self.Pd:.4g} m, free contact angle "
+            f"{math.degrees(free_contact_angle(b.D, b.f_i, b.f_o, self.Pd)):.3g} deg) crosses so much of its "
+            f"clearance that ball {j} lies beyond the centre of curvature of its inner groove (inner contact angle "
+            f"{math.degrees(self.balls[qk.BQ_A_I, j]):.4g} deg): there the model's full-circle groove would press "
+            f"it from behind, a contact the ring does not have, and no equilibrium of the model describes the "
+            f"bearing. Allowed: loads and clearances that keep every inner contact angle below 90 deg (less "
+            f"clearance, more thrust or less radial load or moment). Inputs: {self._shown(u)}"
         )
 
     def _check_thrust_side(self, d_start, X_start, u):

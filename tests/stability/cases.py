@@ -110,6 +110,12 @@ CASES = (
         S + "test_load_and_clearance_extremes.py",
         "test_clearance_near_the_geometric_limit_converges_or_says_so",
     ),
+    (
+        "large free contact angles (P_d 0.3-1.0 A), mostly radial and thrust-dominated loads, 0-1000 rad/s",
+        "quasi-static",
+        S + "test_large_free_angle_grid.py",
+        "test_every_grid_point_converges_or_is_refused_for_a_physical_reason",
+    ),
     ("step loads", "DEM", S + "test_dem_steps.py", "test_load_step_settles_on_the_quasi_static_displacement"),
     ("speed steps", "DEM", S + "test_dem_steps.py", "test_speed_step_accelerates_the_cage_without_overshoot"),
     (
