@@ -25,6 +25,7 @@ from .variables import (
     DM_N_LIMIT,
     MATERIAL_LIMIT,
     InputError,
+    OilTemperatureWatch,
     check_clearance,
     material_load_limit,
     pressure_warnings,
@@ -83,6 +84,7 @@ class AnalyticModel:
         self._out = np.zeros(ak.O_SIZE)
         self.ball = np.zeros((8, b.Z))
         self.warnings = []
+        self._oil_watch = OilTemperatureWatch(self.lubricant)
         self.outputs = select(ANALYTIC_OUTPUTS, self.scene)
         self.output_names = tuple(v.name for v in self.outputs)
         self.values = np.zeros(len(self.outputs))  # outputs of the last evaluation, in self.outputs order
@@ -183,7 +185,7 @@ class AnalyticModel:
             rl.rating_life(
                 self.ball[0], self.ball[1], abs(float(F_y)), 0.0, float(omega), self._life_parameters, self._life
             )
-        self.warnings = pressure_warnings(out[ak.O_PMAX], f"F_y = {F_y} N")
+        self.warnings = pressure_warnings(out[ak.O_PMAX], f"F_y = {F_y} N") + self._oil_watch.warnings(T_oil)
         # ball rows 0 and 1: inner and outer contact loads, all at the groove bottom (angle 0)
         tk.race_truncation(self.ball, 0, self._angles, 0, self._truncation_parameters, self._trunc)
         self.warnings += truncation_warnings(

@@ -42,7 +42,15 @@ from ..scene import Scene
 from .contacts import contact_terms, pack, race_contacts, truncation_parameters, truncation_warnings
 from .declarations import DEM_DT_MAX, DEM_INPUTS, DEM_OUTPUTS, DEM_REFRESH_MAX
 from .declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
-from .variables import DM_N_LIMIT, MATERIAL_LIMIT, P_MAX_ERROR, InputError, check_clearance, pressure_warnings
+from .variables import (
+    DM_N_LIMIT,
+    MATERIAL_LIMIT,
+    P_MAX_ERROR,
+    InputError,
+    OilTemperatureWatch,
+    check_clearance,
+    pressure_warnings,
+)
 
 # PA66 cage balls when the bearing file has no [material.cage] (Farah 2020: E_c = 3.3 GPa, nu_c = 0.41)
 CAGE_E = 3.3e9
@@ -223,6 +231,7 @@ class DemModel:
         self.output_names = tuple(v.name for v in self.outputs)
         self.values = np.zeros(len(self.outputs))
         self.warnings = []  # of the last advance(): p_max above the ISO 76 limit (pressure_warnings)
+        self._oil_watch = OilTemperatureWatch(self.lubricant)
         self.K = np.zeros((5, 5))  # condensed stiffness of the last update (scene option stiffness)
         self.frequencies = np.zeros(4)  # FTF, BPFO, BPFI, BSF (Hz) of the last update
         arrays = {
@@ -490,6 +499,7 @@ class DemModel:
         # as the other fidelities: a warning above the ISO 76 limit; beyond the material limit (6 GPa) the
         # monitor has already stopped the step (penetration), so only the warning can apply here
         self.warnings = pressure_warnings(min(self.out[s.O_PMAX], P_MAX_ERROR), "the loads")
+        self.warnings += self._oil_watch.warnings(T_oil)
         # the contact ellipses against the shoulders: an output of the interval's end state, not of every step
         tp = self._truncation_parameters
         shoulder_truncation(self.balls, self.ring, self.par, tp, self._Q, self._signed_alpha, self.trunc)

@@ -37,6 +37,7 @@ from .variables import (
     MATERIAL_LIMIT,
     TILT_LIMIT,
     InputError,
+    OilTemperatureWatch,
     check_clearance,
     material_load_limit,
     pressure_warnings,
@@ -123,6 +124,7 @@ class QuasiStaticModel:
         self._losses = np.zeros(TL_SIZE)
         self.status = (qk.QS_OK, 0, 0.0)
         self.warnings = []
+        self._oil_watch = OilTemperatureWatch(self.lubricant)
         # shoulder truncation of the contact ellipses (kernels.truncation), the races truncated at the last
         # evaluation (a warning is logged on entry only)
         self._trunc = np.zeros(tk.TR_SIZE)
@@ -425,7 +427,7 @@ class QuasiStaticModel:
     def _collect(self, omega, u):
         """Fill self.values from the solver's and the contact kernel's arrays (declaration order)."""
         out = self.out
-        self.warnings = pressure_warnings(out[ck.CO_PMAX], "the loads")
+        self.warnings = pressure_warnings(out[ck.CO_PMAX], "the loads") + self._oil_watch.warnings(u[self._u_T_oil])
         bad = bo.quasi_static_outputs(
             self.balls,
             omega,

@@ -91,3 +91,30 @@ def check_clearance(Pd, bearing, given):
             f"Pd = {Pd} m ({origin}) is outside the allowed range [{low:.4g}, {high:.4g}] m "
             f"(|Pd| <= (f_i + f_o - 1) D: free contact angle up to 60 deg)"
         )
+
+
+class OilTemperatureWatch:
+    """Warns once per entry when the oil temperature leaves the range that the lubricant file's data support
+    (its [temperature_range]; none for a file without one, e.g. constant properties given for one state): the
+    viscosity, pressure-viscosity and density laws are then extrapolated. The input range T_OIL_RANGE is checked
+    separately (an error beyond it)."""
+
+    def __init__(self, lubricant):
+        self.name = lubricant.name
+        self.low, self.high = lubricant.T_low, lubricant.T_high
+        self.outside = False
+
+    def warnings(self, T_oil):
+        """[] or the one warning of an entry into the extrapolated range at T_oil (K)."""
+        if self.low is None:
+            return []
+        outside = not (self.low <= T_oil <= self.high)
+        entered = outside and not self.outside
+        self.outside = outside
+        if not entered:
+            return []
+        return [
+            f"T_oil = {T_oil:.5g} K is outside the temperature range of the data of lubricant '{self.name}' "
+            f"[{self.low:.5g}, {self.high:.5g}] K: its viscosity, pressure-viscosity and density are extrapolated "
+            "(the lubricant file's [temperature_range])"
+        ]

@@ -69,6 +69,8 @@ class Lubricant:
     reference: dict = field(default_factory=dict)
     traction_limit: float = 0.0  # limiting traction coefficient of the EHL film (-)
     traction_slip: float = 0.0  # slide-to-roll ratio where the traction curve's linear part meets the limit (-)
+    T_low: float = None  # temperature range of the file's data (K); None: the file gives none
+    T_high: float = None
 
 
 TEMPERATURE = Spec("K", 150.0, 700.0)
@@ -143,6 +145,10 @@ def load_lubricant(name_or_path):
         doc, "traction.limiting_coefficient", Spec("-", 0.0, 0.2, True), path, False, TRACTION_LIMIT_DEFAULT
     )
     traction_slip = _value(doc, "traction.slip_scale", Spec("-", 0.0, 1.0, True), path, False, TRACTION_SLIP_DEFAULT)
+    T_low = _value(doc, "temperature_range.T_low", TEMPERATURE, path, False)
+    T_high = _value(doc, "temperature_range.T_high", TEMPERATURE, path, False)
+    if (T_low is None) != (T_high is None) or (T_low is not None and not T_low < T_high):
+        raise ParameterError(f"{path}: [temperature_range] needs both T_low and T_high, T_low < T_high")
     return Lubricant(
         name=str(doc.get("meta", {}).get("name", path.stem)),
         path=str(path),
@@ -150,6 +156,8 @@ def load_lubricant(name_or_path):
         reference=reference,
         traction_limit=traction_limit,
         traction_slip=traction_slip,
+        T_low=T_low,
+        T_high=T_high,
     )
 
 

@@ -251,3 +251,24 @@ def test_shoulder_truncation_is_reported_and_warned_once_per_entry(bearing_fmu):
     fmu.freeFMUstate(state)
     fmu.terminate()
     fmu.freeInstance()
+
+
+def test_oil_outside_its_data_range_is_warned_once_per_entry(bearing_fmu):
+    """Bearing.fmu with the B7214C and iso_vg68_mineral (data 0-120 C, the file's [temperature_range]): 250 K oil
+    (inside the input range -40..200 C) gives one fmi2Warning naming the temperature and the range at the first
+    step there, none at the next; back in range and out again, one more."""
+    host.messages.clear()
+    fmu, vr, _ = host.open_fmu(str(bearing_fmu), {"bearing": "B7214C", "lubricant": "iso_vg68_mineral"})
+    fmu.setReal([vr["F_z"], vr["omega"]], [800.0, 100.0])
+    warnings = []
+    for k, T in enumerate((313.15, 250.0, 250.0, 313.15, 250.0)):
+        fmu.setReal([vr["T_oil"]], [T])
+        host.messages.clear()
+        assert host.step_status(fmu, 0.1 * k) == 0
+        warnings.append(
+            [m["message"] for m in host.messages if m["status"] == 1 and "temperature range" in m["message"]]
+        )
+    assert [len(w) for w in warnings] == [0, 1, 0, 0, 1]
+    assert "T_oil = 250 K" in warnings[1][0] and "[273.15, 393.15] K" in warnings[1][0]
+    fmu.terminate()
+    fmu.freeInstance()
