@@ -82,6 +82,9 @@ FILM_RATE = 2.0 * 3.5
 AUTO_STEP_HALVINGS = 4
 ENERGY_FACTOR = 10.0  # kinetic-energy bound: this factor x (pure-rolling energy + load x groove clearance)
 T_OIL_DEFAULT = 313.15  # K
+# update()'s communication step is rounded to this grid (s), far below any DEM time step (0.1-10 us)
+COMMUNICATION_DIGITS = 12
+COMMUNICATION_RESOLUTION = 10.0**-COMMUNICATION_DIGITS
 
 STATUS_WORDS = {
     s.STATUS_NOT_FINITE: "a force became NaN or infinite",
@@ -646,9 +649,14 @@ class DemModel:
         Raises InputError for inputs out of range (nothing changed) and DemUnstableError when the monitor stops
         the step: the state is then restored to the start of the step and self.status keeps the monitor's code."""
         if interval != 0.0:
-            if not (math.isfinite(interval) and interval > 0.0):
-                raise InputError(f"communication step = {interval} s is outside the allowed range ]0, inf[ s")
-            self._step_to(self.time + interval, u)
+            if not (math.isfinite(interval) and interval >= COMMUNICATION_RESOLUTION):
+                raise InputError(
+                    f"communication step = {interval} s is outside the allowed range "
+                    f"[{COMMUNICATION_RESOLUTION:g}, inf[ s"
+                )
+            # on a grid of 1 ps: masters that hand the same nominal step in different roundings (libcosim counts
+            # integer nanoseconds, fmpy multiplies n H) then take the same DEM steps, bit for bit
+            self._step_to(self.time + round(interval, COMMUNICATION_DIGITS), u)
         self._gather()
         return self.values
 
