@@ -573,6 +573,13 @@ class DemModel:
         code, step, index = (int(v) for v in self.status)
         Z = self.bearing.Z
         where = ""
+        # a fixed step that works at these inputs can be stopped again when the film or the loads change (a
+        # start-up: the film thickens, the cage's load grows): the automatic step follows them
+        alternative = (
+            "; or use dt = 0 (automatic: the step follows the loads and the film as they change)"
+            if self.dt_fixed is not None
+            else ""
+        )
         if code == s.STATUS_DAMPING:
             # the stopped state's film; a ball's other contact may still follow into full film: 2 x the largest
             c_max = float(self.trib[s.T_C_N][self.trib[s.T_Q] > 0.0].max())
@@ -580,7 +587,7 @@ class DemModel:
                 f"DEM stopped at t = {self.time:.9g} s (step {step} of the interval) on ball {index}: "
                 f"{STATUS_WORDS[code]}. dt = {dt:.3g} s is too large here; use dt <= "
                 f"{DAMPING_PLAN * self.par[s.P_M_BALL] / (2.0 * c_max):.3g} s (largest contact damping "
-                f"{c_max:.4g} N.s/m)"
+                f"{c_max:.4g} N.s/m){alternative}"
             )
         if index >= 0:
             race = "inner" if index < Z else "outer"
@@ -601,6 +608,7 @@ class DemModel:
         raise DemUnstableError(
             f"DEM stopped at t = {self.time:.9g} s (step {step} of the interval){where}: "
             f"{STATUS_WORDS[code]}. dt = {dt:.3g} s is too large here; use dt <= {suggestion:.3g} s ({reason})"
+            f"{alternative}"
         )
 
     # -- outputs -------------------------------------------------------------------------------
