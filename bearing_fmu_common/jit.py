@@ -172,7 +172,10 @@ def same_sources_entries(path, root=_ROOT):
     the FMU's code was compiled under the key of the sources it bundles (path.parent: the FMU's resources).
     Equal bundled sources mean equal kernels and callees, so the FMU's entries are valid for the host."""
     bundle = path.parent
-    entries = path / kernel_source_hash(bundle)
+    try:
+        entries = path / kernel_source_hash(bundle)
+    except OSError:  # the bundle went away: another FMU's extraction, removed by its host while this one set up
+        return None
     if not entries.is_dir():
         return None
     for pattern in KERNEL_SOURCES:
