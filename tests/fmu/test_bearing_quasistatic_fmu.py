@@ -189,9 +189,10 @@ def test_bad_inputs_are_reported_and_host_survives(bearing_fmu):
         if case == "recovered":
             assert result["status"] == 0 and result["outputs"][1] > 0.0
             continue
-        assert result["status"] in (2, 3), case  # fmi2Discard / fmi2Error, never fatal
+        assert result["status"] == 2, case  # fmi2Discard: the step is refused, the instance lives on
         assert all(np.isfinite(result["outputs"])), case
-    texts = [m["message"] for m in report["messages"] if m["status"] == 3]
+    texts = [m["message"] for m in report["messages"] if m["status"] >= 2]
+    assert all(m["status"] == 2 for m in report["messages"] if m["status"] >= 2)  # the status the step returned
     assert any("omega = nan" in t and "allowed range" in t for t in texts)
     assert any("T_oil = 0.0 K" in t and "[233.15, 473.15] K" in t for t in texts)
     assert any("F_z = inf" in t for t in texts)

@@ -244,16 +244,17 @@ def test_bad_inputs_are_reported_and_host_survives(fixture, request):
         ("T_ambient", "T_ambient = -10.0 K is outside the allowed range [150, 1000] K"),
     ):
         case = report[name]
-        assert case["status"] in (2, 3), name
+        assert case["status"] == 2, name  # fmi2Discard: the step is refused, the instance lives on
         assert case["outputs"] == case["before"], name  # refused step: state and outputs unchanged
-        errors = [m["message"] for m in case["messages"] if m["status"] == 3]
+        assert all(m["status"] == 2 for m in case["messages"] if m["status"] >= 2)  # the status the step returned
+        errors = [m["message"] for m in case["messages"] if m["status"] == 2]
         assert any(text in m for m in errors), (name, case["messages"])
     assert report["recovered"]["status"] == 0
     assert report["recovered"]["outputs"][0] > report["Q_inner_ring_1"]["before"][0]  # 300 W keep heating
     unknown = report["unknown_spindle"]
     assert unknown["init_status"] == 3  # fmi2Error from fmi2ExitInitializationMode
     assert unknown["status"] in (2, 3)
-    errors = [m["message"] for m in unknown["messages"] if m["status"] == 3]
+    errors = [m["message"] for m in unknown["messages"] if m["status"] >= 2]
     # the FMI logger receives a printf format: the FMU escaped '%' as '%%' (a master prints it as '%')
     assert any("unknown spindle 'no_such_100%%_spindle'" in m and "b7214c_x_pair" in m for m in errors), errors
     assert any("not initialised" in m for m in errors), errors
