@@ -37,7 +37,7 @@ from ..kernels.geometry import (
     rolling_kinematics,
 )
 from ..kernels.hertz import hertz_contact, hertz_stiffness
-from ..params import clearance_limits, load_bearing, load_lubricant
+from ..params import clearance_limits, load_bearing, load_dem_constants, load_lubricant
 from ..scene import Scene
 from .contacts import contact_terms, pack, race_contacts, truncation_parameters, truncation_warnings
 from .declarations import DEM_DT_MAX, DEM_INPUTS, DEM_OUTPUTS, DEM_REFRESH_MAX
@@ -52,14 +52,11 @@ from .variables import (
     pressure_warnings,
 )
 
-# PA66 cage balls when the bearing file has no [material.cage] (Farah 2020: E_c = 3.3 GPa, nu_c = 0.41)
-CAGE_E = 3.3e9
-CAGE_NU = 0.41
-CAGE_RHO = 1140.0  # kg/m^3, typical PA66 (estimated)
+# the contact model's constants with their units and sources (params/dem_model.toml): the cage elements' default
+# material (the papers' PA66), the hysteretic damping constant alpha_e, the tangential stiffness ratio
+CONSTANTS = load_dem_constants()
 # pocket play of an estimated cage ball: the 6208 of Guessasma & Machado (2018) has 0.033 mm for D = 12.6 mm
 CAGE_GAP_OVER_D = 0.0026
-ALPHA_E = 0.08  # s/m, hysteretic damping constant of steel (Guessasma 2018 eq. 4)
-KT_RATIO = 2.0 / 3.0  # tangential / normal stiffness, lower end of the papers' [2/3, 1]
 V_REG = 1e-3  # m/s, speed below which the resistances' directions are regularised
 SAFETY = 0.5  # default time step over the stability limit of the stiffest pair (docs/reports/dem_error.md)
 # consecutive slipping reversals of one spring that count as chatter: sustained chatter (6208 at 3 kN,
@@ -106,7 +103,7 @@ def _cage_material(path):
         doc = tomllib.load(fh)
     cage = doc.get("material", {}).get("cage", {})
     get = lambda key, default: float(cage[key]["value"]) if key in cage else default  # noqa: E731
-    return get("E", CAGE_E), get("nu", CAGE_NU), get("rho", CAGE_RHO)
+    return get("E", CONSTANTS.cage_E), get("nu", CONSTANTS.cage_nu), get("rho", CONSTANTS.cage_rho)
 
 
 def _ring_mass(bearing):
@@ -130,8 +127,9 @@ class DemModel:
     refresh interval in steps (>= 1); None = every refresh_interval (s) of simulated time. The defaults
     SAFETY and REFRESH_INTERVAL are chosen from the error-vs-run-time front (docs/reports/dem_error.md). Pd: diametral
     clearance (m) overriding the file. ring_mass: inner-ring mass (kg); None = estimated from the bore.
-    kt_ratio: tangential/normal stiffness (-) of the asperities' spring. traction_limit: 0 (default) = the
-    tangential force of the film is the lubricant's EHL traction curve (kernels.ehl.film_traction_coefficient,
+    kt_ratio: tangential/normal stiffness (-) of the asperities' spring; None = params/dem_model.toml's.
+    traction_limit: 0 (default) = the tangential force of the film is the lubricant's EHL traction curve
+    (kernels.ehl.film_traction_coefficient,
     the film's share ehl.film_share(Lambda)), the asperities' share a spring capped at the boundary friction;
     > 0 = override: a spring alone, capped at the ramp from 0.1 at Lambda = 1 to traction_limit in a full film
     (kernels.ehl.traction_coefficient; 0.01 = the papers' mu(Lambda)) (docs/dem.md, Tangential force).
@@ -149,7 +147,7 @@ class DemModel:
         refresh=None,
         Pd=None,
         ring_mass=None,
-        kt_ratio=KT_RATIO,
+        kt_ratio=None,
         safety=SAFETY,
         refresh_interval=REFRESH_INTERVAL,
         averaged=True,
@@ -184,6 +182,7 @@ class DemModel:
         self.averaged = bool(averaged)
         self.safety = float(safety)
         self.refresh_interval = float(refresh_interval)
+        kt_ratio = CONSTANTS.kt_ratio if kt_ratio is None else kt_ratio
         if not (math.isfinite(kt_ratio) and 0.1 <= kt_ratio <= 1.5):
             raise InputError(f"kt_ratio = {kt_ratio} is outside the allowed range [0.1, 1.5]")
         if ring_mass is not None and not (math.isfinite(ring_mass) and ring_mass > 0.0):
@@ -280,7 +279,7 @@ class DemModel:
         p[s.P_KH_I] = hertz_stiffness(Rx_i, Ry_i, E_red, *ci)
         p[s.P_KH_O] = hertz_stiffness(Rx_o, Ry_o, E_red, *co)
         pack(p, s, "P_", contact_terms(b, sc, rc))
-        p[s.P_ALPHA_E] = ALPHA_E
+        p[s.P_ALPHA_E] = CONSTANTS.alpha_e
         p[s.P_KT_RATIO] = kt_ratio
         p[s.P_V_REG] = V_REG
         # cage balls and their guide

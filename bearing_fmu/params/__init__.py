@@ -170,3 +170,26 @@ def _pack_wlf(doc, arr, path):
     arr[lk.LUB_WLF_B2] = _value(doc, "viscosity.b_2", Spec("-", -5.0, 5.0), path)
     arr[lk.LUB_WLF_C1] = _value(doc, "viscosity.C_1", Spec("-", 0.0, 100.0, True), path)
     arr[lk.LUB_WLF_C2] = _value(doc, "viscosity.C_2", Spec("K", 0.0, 1000.0, True), path)
+
+
+@dataclass(frozen=True)
+class DemConstants:
+    """Contact-model constants of the DEM fidelity (params/dem_model.toml), SI."""
+
+    cage_E: float  # Pa, the cage elements' default Young's modulus
+    cage_nu: float  # -, their Poisson's ratio
+    cage_rho: float  # kg/m^3, their density
+    alpha_e: float  # s/m, hysteretic damping constant (C_hyst = 1.5 alpha_e Q)
+    kt_ratio: float  # -, tangential over secant normal stiffness of the asperities' spring
+
+
+def load_dem_constants(path=CATALOGUE / "dem_model.toml"):
+    """The DEM's contact-model constants, checked as the other parameter files' values are."""
+    doc = read_toml(Path(path))
+    return DemConstants(
+        cage_E=_value(doc, "cage_material.E", Spec("Pa", 0.0, 1e13, True), path),
+        cage_nu=_value(doc, "cage_material.nu", Spec("-", 0.0, 0.5), path),
+        cage_rho=_value(doc, "cage_material.rho", DENSITY, path),
+        alpha_e=_value(doc, "contact.alpha_e", Spec("s/m", 0.0, 10.0), path),
+        kt_ratio=_value(doc, "contact.kt_ratio", Spec("-", 0.1, 1.5), path),
+    )
