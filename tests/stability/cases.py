@@ -160,4 +160,40 @@ CASES = (
         "tests/cosim/test_closed_loop.py",
         "test_fixed_10000_runs_away_and_stops_with_a_message",
     ),
+    (
+        "angular-contact bearing under heavy thrust, 3 000-5 000 rpm, kicked: no ring whirl",
+        "DEM",
+        "tests/validation/test_dem_thrust_whirl.py",
+        "test_orbit_decays_below_one_percent_of_the_axial_deflection",
+    ),
+    (
+        "angular-contact bearing under heavy thrust, 8 000 rpm, kicked: orbit below 0.1 um",
+        "DEM",
+        "tests/validation/test_dem_thrust_whirl.py",
+        "test_orbit_at_8000_rpm_stays_below_a_tenth_of_a_micrometre",
+    ),
+    (
+        "angular-contact bearing at 10 000 rpm, 800 N thrust: outer-race control, no swing",
+        "DEM",
+        "tests/validation/test_dem_b7214c.py",
+        "test_with_the_ehl_traction_curve_it_is_outer_race_control",
+    ),
+    (
+        "healthy-bearing spectrum: only bearing frequencies",
+        "DEM",
+        "tests/validation/test_dem_spectrum.py",
+        "test_healthy_bearing_spectrum_has_only_bearing_frequencies",
+    ),
+    (
+        "contacts at the shoulder (light thrust, high speed)",
+        "quasi-static, DEM",
+        "tests/validation/test_shoulder_truncation.py",
+        "test_218_dem_light_thrust_high_speed_is_truncated_and_warned_once",
+    ),
+    (
+        "cold oil outside the lubricant's data",
+        "analytic, quasi-static, DEM",
+        "tests/unit/test_oil_temperature_range.py",
+        "test_analytic_and_dem_warn_once_per_entry",
+    ),
 )

@@ -22,6 +22,8 @@ def _warned(warnings):
 
 
 def test_quasi_static_warns_once_per_entry():
+    """B7214C with iso_vg68_mineral, the same temperature sequence: a warning at each entry, naming the
+    temperature, the file's range [273.15, 393.15] K and that the laws are extrapolated."""
     model = QuasiStaticModel("B7214C", "iso_vg68_mineral")
     warned = []
     for T in TEMPERATURES:
@@ -34,6 +36,8 @@ def test_quasi_static_warns_once_per_entry():
 
 
 def test_analytic_and_dem_warn_once_per_entry():
+    """6208 with iso_vg68_mineral: 313 K, 250 K, 249 K, 313 K, 250 K, 400 K oil: the analytic and DEM fidelities warn
+    at each entry into the range outside the file's data (250 K twice), not while staying out or back in."""
     analytic = AnalyticModel("6208", "iso_vg68_mineral")
     dem = DemModel("6208", "iso_vg68_mineral")
     warned_a, warned_d = [], []

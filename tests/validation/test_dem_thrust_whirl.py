@@ -46,12 +46,16 @@ def orbit_after_a_kick(rpm, traction_limit=0.0):
 
 @pytest.mark.parametrize("rpm", [3000.0, 5000.0])
 def test_orbit_decays_below_one_percent_of_the_axial_deflection(rpm):
+    """218, 8.9 kN thrust, 3 000 and 5 000 rpm, kicked radially: 0.3 s later the ring's orbit is below 1 % of its
+    axial deflection (measured 0.0007 and 0.006 um against 22.2 and 17.8 um; the papers' law: 2.1 um at 5 000)."""
     radius, z = orbit_after_a_kick(rpm)
     print(f"218 at {rpm:.0f} rpm: orbit {radius * 1e6:.4f} um, z {z * 1e6:.2f} um")
     assert radius < 0.01 * abs(z)
 
 
 def test_orbit_at_8000_rpm_stays_below_a_tenth_of_a_micrometre():
+    """218, 8.9 kN thrust, 8 000 rpm, kicked radially: 0.3 s later the ring's orbit is below 0.1 um (measured
+    0.050 um; the papers' Coulomb law whirled at 7.4 um), the axial deflection there being near zero."""
     radius, z = orbit_after_a_kick(8000.0)
     print(f"218 at 8000 rpm: orbit {radius * 1e6:.4f} um, z {z * 1e6:.2f} um")
     assert radius < 0.1e-6
