@@ -198,3 +198,96 @@ def _node_residual(Phi, H, rho_r, eta_r, lam, kx, ky, dX, i, j):
     else:
         couette = (f0 - f1) / dX
     return poiseuille - couette
+
+
+@kernel
+def relaxation_sweep(P, F, H, rho_r, eta_r, lam, k, dX, dY, Kc, xi_switch, omega_gs, omega_jac, delta):
+    """One relaxation sweep of the discrete Reynolds equation reynolds_residual = F on the pressure P (-), in
+    place; returns the largest change of P. F (-) is the right-hand side (0 on the finest grid, the FAS
+    right-hand side on a coarser one).
+
+    The film H, rho_r and eta_r are held (the caller recomputes them, the deflection by FFT, after the sweep);
+    Kc[m, n] (-) is the deflection W at offset (m, n) nodes under unit P on one cell (c_w times the rectangle
+    influence). Each interior node's change is the Newton step of its own residual (reynolds_residual with
+    theta = 1, P >= 0) with the derivative of the Poiseuille term (eps held) and of the Couette term through
+    the local deflection:
+    - Gauss-Seidel, under-relaxed by omega_gs, where eps max(1/dX^2, 1/(k dY)^2) >= xi_switch or the node or
+      a neighbour is at P = 0;
+    - elsewhere (the high-pressure zone, eps small) Jacobi distributive relaxation: the change d of a node
+      is applied as +omega_jac d at the node and -omega_jac d / 4 at each of its four neighbours, which makes
+      its effect on the deflection local; the derivative is that of the distributed change. These changes
+      are computed from the residuals after the Gauss-Seidel pass and applied together (delta is work space).
+    Negative pressures are set to 0 (cavitation by complementarity). Boundary nodes stay at 0."""
+    nx, ny = P.shape
+    kx = 1.0 / (dX * dX)
+    ky = 1.0 / (k * k * dY * dY)
+    kmax = max(kx, ky)
+    # elastic derivative of the upwind Couette difference: point change and distributed change
+    d00 = Kc[0, 0] - 0.5 * (Kc[1, 0] + Kc[0, 1])
+    d10 = Kc[1, 0] - 0.25 * (Kc[0, 0] + Kc[2, 0] + 2.0 * Kc[1, 1])
+    d20 = Kc[2, 0] - 0.25 * (Kc[1, 0] + Kc[3, 0] + 2.0 * Kc[2, 1])
+    change = 0.0
+    for i in range(nx):
+        for j in range(ny):
+            delta[i, j] = 0.0
+    for i in range(1, nx - 1):
+        for j in range(1, ny - 1):
+            e0 = _eps(P, H, rho_r, eta_r, lam, i, j)
+            sep = P[i, j] <= 0.0 or P[i + 1, j] <= 0.0 or P[i - 1, j] <= 0.0
+            sep = sep or P[i, j + 1] <= 0.0 or P[i, j - 1] <= 0.0
+            if e0 * kmax < xi_switch and not sep:
+                delta[i, j] = 1.0  # marks a Jacobi node
+                continue
+            r = _node_residual(P, H, rho_r, eta_r, lam, kx, ky, dX, i, j) - F[i, j]
+            jac = _poiseuille_diagonal(P, H, rho_r, eta_r, lam, kx, ky, i, j)
+            if i >= 2:
+                jac -= (1.5 * rho_r[i, j] * Kc[0, 0] - 2.0 * rho_r[i - 1, j] * Kc[1, 0]) / dX
+                jac -= 0.5 * rho_r[i - 2, j] * Kc[2, 0] / dX
+            else:
+                jac -= (rho_r[i, j] * Kc[0, 0] - rho_r[i - 1, j] * Kc[1, 0]) / dX
+            new = max(P[i, j] - omega_gs * r / jac, 0.0)
+            change = max(change, abs(new - P[i, j]))
+            P[i, j] = new
+    for i in range(1, nx - 1):
+        for j in range(1, ny - 1):
+            if delta[i, j] == 0.0:
+                continue
+            r = _node_residual(P, H, rho_r, eta_r, lam, kx, ky, dX, i, j) - F[i, j]
+            jac = 1.25 * _poiseuille_diagonal(P, H, rho_r, eta_r, lam, kx, ky, i, j)
+            if i >= 2:
+                jac -= (1.5 * rho_r[i, j] * d00 - 2.0 * rho_r[i - 1, j] * d10 + 0.5 * rho_r[i - 2, j] * d20) / dX
+            else:
+                jac -= (rho_r[i, j] * d00 - rho_r[i - 1, j] * d10) / dX
+            delta[i, j] = -omega_jac * r / jac
+    for i in range(1, nx - 1):
+        for j in range(1, ny - 1):
+            d = delta[i, j]
+            if d == 0.0:
+                continue
+            P[i, j] += d
+            if i > 1:
+                P[i - 1, j] -= 0.25 * d
+            if i < nx - 2:
+                P[i + 1, j] -= 0.25 * d
+            if j > 1:
+                P[i, j - 1] -= 0.25 * d
+            if j < ny - 2:
+                P[i, j + 1] -= 0.25 * d
+    for i in range(1, nx - 1):
+        for j in range(1, ny - 1):
+            if P[i, j] < 0.0:
+                P[i, j] = 0.0
+            if delta[i, j] != 0.0:
+                change = max(change, abs(delta[i, j]))
+    return change
+
+
+@kernel
+def _poiseuille_diagonal(P, H, rho_r, eta_r, lam, kx, ky, i, j):
+    """Derivative (-) of the Poiseuille term of node (i, j) with respect to its own P, eps held."""
+    e0 = _eps(P, H, rho_r, eta_r, lam, i, j)
+    eE = 0.5 * (e0 + _eps(P, H, rho_r, eta_r, lam, i + 1, j))
+    eW = 0.5 * (e0 + _eps(P, H, rho_r, eta_r, lam, i - 1, j))
+    eN = 0.5 * (e0 + _eps(P, H, rho_r, eta_r, lam, i, j + 1))
+    eS = 0.5 * (e0 + _eps(P, H, rho_r, eta_r, lam, i, j - 1))
+    return -(kx * (eE + eW) + ky * (eN + eS))
