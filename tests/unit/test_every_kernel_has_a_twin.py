@@ -34,9 +34,17 @@ KERNEL_MODULES = (
     + ["spindle.thermal.network"]
 )
 JH = "bearing_fmu.kernels.jones_harris."
+ES = "bearing_fmu.kernels.ehl_solver."
 BD = "bearing_fmu.kernels.ball_dynamics."
 # helper -> (twinned caller, why the caller's comparison covers it)
 COVERED_THROUGH = {
+    ES + "_node_residual": (ES + "reynolds_residual", "the residual of one interior node, every node compared"),
+    ES + "_eps": (ES + "_node_residual", "the Poiseuille coefficient of a node, four face means per residual"),
+    ES + "_flux": (ES + "_node_residual", "the Couette flux of a node, three per upwind difference"),
+    ES + "_poiseuille_diagonal": (
+        ES + "relaxation_sweep",
+        "the derivative of a node's Poiseuille term in its own pressure, the Newton step's denominator",
+    ),
     "bearing_fmu.kernels.hertz._radius_ratio_of_ellipticity": (
         "bearing_fmu.kernels.hertz._ellipticity_exact_major",
         "the printed relation Ry/Rx(k) that the bisection inverts; compared on a grid of Ry/Rx through the exact "
