@@ -38,10 +38,10 @@ def _contacts(balls, ring, par):
 
 
 def contact_loads(balls, ring, par):
-    """Normal loads Q[race, ball] (N), 0 where the contact is open."""
+    """Normal loads Q[race, ball] (N), 0 where the contact is open or its approach is at most LOADED_APPROACH."""
     return np.array(
         [
-            [par[s.P_KH_I + race] * max(d, 0.0) ** 1.5 for d, _ in row]
+            [par[s.P_KH_I + race] * d**1.5 if d > s.LOADED_APPROACH else 0.0 for d, _ in row]
             for race, row in enumerate(_contacts(balls, ring, par))
         ]
     )
@@ -51,7 +51,7 @@ def contact_angles(balls, ring, par):
     """Contact angles alpha[race, ball] (rad) of the contact normals from the radial plane, 0 where open."""
     return np.array(
         [
-            [math.atan2(abs(n[2]), math.hypot(n[0], n[1])) if d > 0.0 else 0.0 for d, n in row]
+            [math.atan2(abs(n[2]), math.hypot(n[0], n[1])) if d > s.LOADED_APPROACH else 0.0 for d, n in row]
             for row in _contacts(balls, ring, par)
         ]
     )

@@ -435,3 +435,15 @@ def test_refresh_interval_0_is_accepted_and_refreshes_at_every_step():
         assert a == b
     with pytest.raises(InputError, match=r"refresh_interval = -1e-06 s is outside the allowed range \[0, 0.001\] s"):
         DemModel("6208", "guessasma_oil", refresh_interval=-1e-6)
+
+
+def test_unloaded_bearing_reports_no_load_pressure_or_loaded_ball():
+    """6208 at rest without load: the balls touch nothing but within rounding (approaches of 1e-18-1e-15 m, loads of
+    1e-16 N) and p_max read 1.4 kPa with n_loaded 0; a contact counts as loaded from an approach of 1 pm
+    (state.LOADED_APPROACH, about 1e-8 N), so p_max, Q_max and n_loaded are all 0. With 10 N radial the loaded
+    contacts are counted and the pressure follows (Hertz: about 0.5 GPa at 10 N on a 6208 ball)."""
+    model = DemModel("6208", "guessasma_oil")
+    out = model.advance(0.01)
+    assert (out["p_max"], out["Q_max_inner"], out["Q_max_outer"], out["n_loaded"]) == (0.0, 0.0, 0.0, 0)
+    out = model.advance(0.02, F_y=10.0)
+    assert out["n_loaded"] > 0 and out["Q_max_outer"] > 1.0 and 1e8 < out["p_max"] < 2e9

@@ -28,6 +28,7 @@ from .state import (
     B_VX,
     B_WX,
     B_X,
+    LOADED_APPROACH,
     O_ALPHA_I,
     O_ALPHA_O,
     O_C_BEARING,
@@ -66,14 +67,15 @@ from .tribology import race_circle
 
 @kernel
 def contact_loads(balls, ring, par, Q):
-    """Current normal loads (N) of every ball-race contact into Q[race, ball] (0 when open)."""
+    """Current normal loads (N) of every ball-race contact into Q[race, ball] (0 when open or touching with an
+    approach below LOADED_APPROACH, a rounding-level contact)."""
     for race in range(2):
         cx, cy, cz, rho = race_circle(race, ring, par)
         for j in range(balls.shape[1]):
             delta, _, _, _ = groove_approach(
                 balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, rho, par[P_RG_I + race]
             )
-            Q[race, j] = par[P_KH_I + race] * delta * math.sqrt(delta) if delta > 0.0 else 0.0
+            Q[race, j] = par[P_KH_I + race] * delta * math.sqrt(delta) if delta > LOADED_APPROACH else 0.0
 
 
 @kernel
@@ -86,7 +88,7 @@ def contact_angles(balls, ring, par, alpha):
             delta, nx, ny, nz = groove_approach(
                 balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, rho, par[P_RG_I + race]
             )
-            alpha[race, j] = math.atan2(abs(nz), math.sqrt(nx * nx + ny * ny)) if delta > 0.0 else 0.0
+            alpha[race, j] = math.atan2(abs(nz), math.sqrt(nx * nx + ny * ny)) if delta > LOADED_APPROACH else 0.0
 
 
 @kernel(inline="always")  # called once per output evaluation from bearing_outputs: no array-passing call

@@ -131,6 +131,11 @@ P_S_TRACTION = 61  # slide-to-roll ratio s_0 where the traction curve's linear p
 P_FILM_RATE = 62  # slip a newton removes from a ball's two contacts in a step, over dt / m_ball (-): 2 x 3.5
 P_SIZE = 63
 
+# a ball-race contact counts as loaded in the outputs (loads, pressure, films, angles, n_loaded) when its approach
+# exceeds this (m): the rounding of the positions (~1e-18 m) leaves approaches of 1e-18-1e-15 m on contacts that
+# carry nothing (loads of 1e-16 N, Hertz pressures of kPa); 1 pm is a load of about 1e-8 N
+LOADED_APPROACH = 1e-12
+
 # ---- outputs of advance(): float64[O_SIZE] --------------------------------------------------------
 O_OMEGA_CAGE = 0  # cage speed: mean orbital angular speed of the balls (rad/s)
 O_OMEGA_BALL = 1  # angular speed of the most loaded ball in the fixed frame (rad/s, sign of omega)
