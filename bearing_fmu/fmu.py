@@ -200,6 +200,7 @@ class BearingDEM(_BearingSlave):
             float(self.refresh_interval),
             float(self.traction_limit),
             bool(self.average_outputs),
+            bool(self.average_state_outputs),
         )
 
     def _make_model(self):
@@ -211,6 +212,7 @@ class BearingDEM(_BearingSlave):
             Pd=None if self.Pd_from_file else self.Pd,
             refresh_interval=self.refresh_interval,
             averaged=bool(self.average_outputs),
+            averaged_state=bool(self.average_state_outputs),
             traction_limit=self.traction_limit,
         )
 

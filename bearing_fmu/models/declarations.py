@@ -501,7 +501,12 @@ DEM_INPUTS = (
 
 DEM_OUTPUTS = (
     *(
-        _dem_output(name, ("ring", ds.R_X + i), f"{DOF_WORDS[i]} of the inner ring at the end of the step")
+        _dem_output(
+            name,
+            ("out", ds.O_X + i),
+            f"{DOF_WORDS[i]} of the inner ring at the end of the step (its mean over the step with "
+            "average_state_outputs)",
+        )
         for i, name in enumerate(("x", "y", "z"))
     ),
     *(
@@ -536,9 +541,22 @@ DEM_OUTPUTS = (
         "contact capacitances of the tribology refreshes)",
         option="capacitance",
     ),
-    _dem_output("Q_max_inner", ("out", ds.O_QMAX_I), "largest inner contact load at the end of the step"),
-    _dem_output("Q_max_outer", ("out", ds.O_QMAX_O), "largest outer contact load at the end of the step"),
-    _dem_output("p_max", ("out", ds.O_PMAX), "largest Hertz contact pressure of a loaded contact at the last refresh"),
+    _dem_output(
+        "Q_max_inner",
+        ("out", ds.O_QMAX_I),
+        "largest inner contact load at the end of the step (with average_state_outputs: its mean over the step)",
+    ),
+    _dem_output(
+        "Q_max_outer",
+        ("out", ds.O_QMAX_O),
+        "largest outer contact load at the end of the step (with average_state_outputs: its mean over the step)",
+    ),
+    _dem_output(
+        "p_max",
+        ("out", ds.O_PMAX),
+        "largest Hertz contact pressure of a loaded contact at the last refresh (or its mean over the step's "
+        "refreshes with average_state_outputs)",
+    ),
     _dem_output("alpha_inner", ("out", ds.O_ALPHA_I), "inner contact angle of the most loaded ball (end of step)"),
     _dem_output("alpha_outer", ("out", ds.O_ALPHA_O), "outer contact angle of the most loaded ball (end of step)"),
     *truncation_outputs("trunc", " at the end of the step"),
@@ -634,5 +652,14 @@ DEM_PARAMETERS = (
         "false: their values at the step's last DEM step",
         "boolean",
         start=True,
+    ),
+    Variable(
+        "average_state_outputs",
+        "",
+        "true: x, y, z are means over the communication step's DEM steps and Q_max_*, p_max, Lambda_*, h_min_*, "
+        "h_c_* means over its tribology refreshes (for masters that sample slower than the ball pass); false: "
+        "their values at the end of the step",
+        "boolean",
+        start=False,
     ),
 )

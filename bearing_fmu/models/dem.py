@@ -79,6 +79,18 @@ FILM_RATE = 2.0 * 3.5
 AUTO_STEP_HALVINGS = 4
 ENERGY_FACTOR = 10.0  # kinetic-energy bound: this factor x (pure-rolling energy + load x groove clearance)
 T_OIL_DEFAULT = 313.15  # K
+# the outputs that averaged_state replaces by their means over the tribology refreshes of a call: (out, acc sum)
+AVERAGED_STATE = (
+    (s.O_QMAX_I, s.A_S_QMAX_I),
+    (s.O_QMAX_O, s.A_S_QMAX_O),
+    (s.O_PMAX, s.A_S_PMAX),
+    (s.O_LAMBDA_I, s.A_S_LAMBDA_I),
+    (s.O_LAMBDA_O, s.A_S_LAMBDA_O),
+    (s.O_HMIN_I, s.A_S_HMIN_I),
+    (s.O_HMIN_O, s.A_S_HMIN_O),
+    (s.O_HC_I, s.A_S_HC_I),
+    (s.O_HC_O, s.A_S_HC_O),
+)
 # update()'s communication step is rounded to this grid (s), far below any DEM time step (0.1-10 us)
 COMMUNICATION_DIGITS = 12
 COMMUNICATION_RESOLUTION = 10.0**-COMMUNICATION_DIGITS
@@ -136,6 +148,9 @@ class DemModel:
     averaged: True (default) reports torque, P_loss, Q_inner_ring,
     Q_outer_ring and C_bearing as means over each advance() interval (what a co-simulation partner integrates:
     the energy of the step), False their values at the interval's last step (docs/dem.md, Outputs).
+    averaged_state: False (default) reports the loads, pressure, films and the ring's displacement at the end of
+    each interval; True as means over it (the displacement over its steps, the others over its tribology
+    refreshes): for masters that sample slower than the ball pass (docs/dem.md, Outputs).
     """
 
     def __init__(
@@ -152,6 +167,7 @@ class DemModel:
         refresh_interval=REFRESH_INTERVAL,
         averaged=True,
         traction_limit=0.0,
+        averaged_state=False,
     ):
         self.scene = (scene or Scene(name="dem", fidelity="dem")).validate()
         if self.scene.fidelity != "dem":
@@ -180,6 +196,7 @@ class DemModel:
             )
         self.traction_limit = float(traction_limit)
         self.averaged = bool(averaged)
+        self.averaged_state = bool(averaged_state)
         self.safety = float(safety)
         self.refresh_interval = float(refresh_interval)
         kt_ratio = CONSTANTS.kt_ratio if kt_ratio is None else kt_ratio
@@ -498,6 +515,7 @@ class DemModel:
             self._alpha,
             self.out,
         )
+        self._state_outputs(interval)
         # as the other fidelities: a warning above the ISO 76 limit; beyond the material limit (6 GPa) the
         # monitor has already stopped the step (penetration), so only the warning can apply here
         self.warnings = pressure_warnings(min(self.out[s.O_PMAX], P_MAX_ERROR), "the loads")
@@ -508,6 +526,20 @@ class DemModel:
         flags = [bool(v) for v in self.truncated]
         self.warnings += truncation_warnings(tp, self.trunc, self._Q, 0, self._signed_alpha, 0, flags)
         self.truncated[:] = flags
+
+    def _state_outputs(self, interval):
+        """The ring's displacement into out[O_X:O_X + 3]: at the end of the interval, or with averaged_state its
+        mean over the interval's steps, and then also the loads, pressure and films as means over its tribology
+        refreshes (a call without a refresh keeps the end values)."""
+        o, acc = self.out, self._acc
+        if not self.averaged_state or interval <= 0.0:
+            o[s.O_X : s.O_X + 3] = self.ring[s.R_X : s.R_X + 3]
+            return
+        o[s.O_X : s.O_X + 3] = acc[s.A_XT : s.A_XT + 3] / interval
+        samples = acc[s.A_SAMPLES]
+        if samples > 0.0:
+            for out_slot, sum_slot in AVERAGED_STATE:
+                o[out_slot] = acc[sum_slot] / samples
 
     def _run(self, n_steps, dt, omega, F_x, F_y, F_z, T_oil):
         """One kernel call of n_steps steps of dt (s) to the inner-ring speed omega; returns the speed and the sum
@@ -639,9 +671,9 @@ class DemModel:
             cage_slip=o[s.O_CAGE_SLIP],
             SRR_max=o[s.O_SRR_MAX],
             kinetic_energy=o[s.O_KINETIC],
-            x=float(self.ring[s.R_X]),
-            y=float(self.ring[s.R_X + 1]),
-            z=float(self.ring[s.R_X + 2]),
+            x=o[s.O_X],
+            y=o[s.O_X + 1],
+            z=o[s.O_X + 2],
         )
         if not self.scene.capacitance:
             del result["C_bearing"]

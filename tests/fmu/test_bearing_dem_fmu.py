@@ -102,6 +102,7 @@ def test_validate_and_variables(dem_fmu):
         "refresh_interval",
         "traction_limit",
         "average_outputs",
+        "average_state_outputs",
     }
     quasi_static = {v.name: v for v in read_model_description(str(_fmu("Bearing", "quasi_static.toml"))).modelVariables}
     for name in shared | inputs:
@@ -109,13 +110,15 @@ def test_validate_and_variables(dem_fmu):
     assert by_name["dt"].unit == "s" and by_name["refresh_interval"].unit == "s"
 
 
-@pytest.mark.parametrize("averaged", [True, False])
-def test_fmu_equals_python_model_over_ramp_and_load_step(dem_fmu, averaged):
+@pytest.mark.parametrize("averaged, averaged_state", [(True, False), (False, False), (True, True)])
+def test_fmu_equals_python_model_over_ramp_and_load_step(dem_fmu, averaged, averaged_state):
     """Every output after every step equals DemModel.evaluate at the same inputs, to the bit, with the power
-    outputs and the capacitance averaged over the step (default) or taken at its end (average_outputs false)."""
-    model = DemModel(scene=dem_scene(), averaged=averaged)
+    outputs and the capacitance averaged over the step (default) or taken at its end (average_outputs false), and
+    with the loads, films and displacements averaged too (average_state_outputs)."""
+    model = DemModel(scene=dem_scene(), averaged=averaged, averaged_state=averaged_state)
     names = output_names(dem_fmu)
-    with opened(dem_fmu, "loop", {"average_outputs": averaged}) as (fmu, vr):
+    parameters = {"average_outputs": averaged, "average_state_outputs": averaged_state}
+    with opened(dem_fmu, "loop", parameters) as (fmu, vr):
         for n, (omega, F_x, F_y) in enumerate(SCRIPT):
             set_inputs(fmu, vr, omega, F_x, F_y)
             fmu.doStep(n * H, H)

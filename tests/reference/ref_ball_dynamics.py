@@ -327,22 +327,50 @@ def step_capacitance(st, par):
     return total
 
 
+def refresh_sample(trib):
+    """One refresh's sample of the averaged state outputs, in the order of acc[A_S_QMAX_I:A_SIZE]: largest load per
+    race, largest Hertz pressure, smallest Lambda and h_min per race and h_c of the most loaded contact (0 where a
+    race has no loaded contact)."""
+    loaded = trib[s.T_Q] > 0.0
+    sample = {}
+    for race in range(2):
+        q = np.where(loaded[race], trib[s.T_Q, race], 0.0)
+        any_ = loaded[race].any()
+        sample[("qmax", race)] = q.max()
+        sample[("lam", race)] = trib[s.T_LAMBDA, race][loaded[race]].min() if any_ else 0.0
+        sample[("hmin", race)] = trib[s.T_H_MIN, race][loaded[race]].min() if any_ else 0.0
+        sample[("hc", race)] = trib[s.T_H_C, race, int(np.argmax(q))] if any_ else 0.0
+    p_max = trib[s.T_P_MAX][loaded].max() if loaded.any() else 0.0
+    return np.array(
+        [sample[("qmax", 0)], sample[("qmax", 1)], p_max]
+        + [sample[(name, race)] for name in ("lam", "hmin", "hc") for race in range(2)]
+    )
+
+
 def advance(st, par, lub, n_steps, dt, omega0, omega1, F_ring, T_oil):
     """n_steps steps (omega linear from omega0 to omega1); returns (energy dissipated per race (J), power
-    dissipated per race in the last step (W), capacitance of every step integrated over time (F.s))."""
+    dissipated per race in the last step (W), capacitance of every step integrated over time (F.s), the averaged
+    state outputs' sums in the layout of acc[A_XT:A_SIZE]: the ring's displacement integrated over the steps,
+    the number of refreshes and the sums of their samples)."""
     refresh_every = int(par[s.P_REFRESH])
     energy = np.zeros(2)
     last = np.zeros(2)
     capacitance = 0.0
+    position = np.zeros(3)
+    samples = np.zeros(9)
+    count = 0
     for n in range(n_steps):
         if st["counters"][s.K_STEP] % refresh_every == 0:
             refresh(st, par, lub, omega0 + (omega1 - omega0) * n / n_steps, T_oil)
+            samples += refresh_sample(st["trib"])
+            count += 1
         last = step(st, par, omega0 + (omega1 - omega0) * (n + 1) / n_steps, F_ring, dt) + st["trib"][s.T_P_FILM].sum(
             axis=1
         )
         energy += last * dt
         capacitance += step_capacitance(st, par) * dt
-    return energy, last, capacitance
+        position += st["ring"][s.R_X : s.R_X + 3] * dt
+    return energy, last, capacitance, np.concatenate((position, [count], samples))
 
 
 KERNEL_MODULE = "bearing_fmu.kernels.ball_dynamics.integrator"

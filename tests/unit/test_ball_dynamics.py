@@ -93,7 +93,9 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction):
     if traction:  # some loaded contact above Lambda = 1, where the traction limit changes the Coulomb limit
         lam = kernel_state["trib"][s.T_LAMBDA][kernel_state["trib"][s.T_Q] > 0.0]
         assert (lam > 1.0).any()
-    energy, last_power, capacitance = ref.advance(twin_state, par, lub, steps, DT, omega0, omega1, np.array(F), T_oil)
+    energy, last_power, capacitance, state_sums = ref.advance(
+        twin_state, par, lub, steps, DT, omega0, omega1, np.array(F), T_oil
+    )
     report = {}
     for name in ("balls", "cage", "ring", "spring", "trib"):
         a, b = kernel_state[name], twin_state[name]
@@ -115,6 +117,11 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction):
     report["dissipated"] = _scale_err(acc[s.A_DISS_I : s.A_DISS_O + 1], energy)
     report["last step's power"] = _scale_err(acc[s.A_POWER_I : s.A_POWER_O + 1], last_power)
     report["capacitance x time"] = _scale_err(acc[s.A_CAP : s.A_CAP + 1], np.array([capacitance]))
+    # the averaged state outputs' integrals and sums: the displacement over the steps, the refresh samples
+    report["displacement x time"] = _scale_err(acc[s.A_XT : s.A_XT + 3], state_sums[:3])
+    assert acc[s.A_SAMPLES] == state_sums[3] > 0.0
+    for k in range(9):  # each sum on its own scale (loads, pressure, Lambda, films)
+        report[f"refresh sum {k}"] = _scale_err(acc[s.A_S_QMAX_I + k : s.A_S_QMAX_I + k + 1], state_sums[4 + k : 5 + k])
     print("kernel vs twin, largest scaled difference:", {k: f"{v:.2e}" for k, v in report.items()})
     assert np.array_equal(kernel_state["counters"], twin_state["counters"])
     for name, err in report.items():
@@ -267,6 +274,45 @@ def test_averaged_outputs_are_the_mean_of_the_per_step_values():
         assert np.ptp(values) > 1e-6 * abs(values.mean()), name  # the values do vary over the interval
     assert steps[-1]["P_loss"] == steps[-1]["Q_inner_ring"] + steps[-1]["Q_outer_ring"]
     assert averaged["Q_max_outer"] == steps[-1]["Q_max_outer"]  # loads are end values in both modes
+
+
+def test_averaged_state_outputs_are_the_means_over_the_interval():
+    """averaged_state (FMU parameter average_state_outputs): the ring's displacement is its mean over the interval's
+    DEM steps, and the loads, pressure and films their means over its tribology refreshes. The same 42 steps
+    (dt = 2^-19 s, exact in binary: bit-identical runs, the state restored between them) as one call with
+    averaged_state and as 42 one-step calls: x, y, z equal the means of the 42 end values (rtol 1e-12: the order
+    of the additions); with a refresh every step (refresh = 1) each one-step call's refresh sample is the film
+    its step starts from, so Lambda_outer, h_min_outer and Q_max_outer averaged equal the means of the samples the
+    refreshes wrote (trib after each one-step call; rtol 1e-12); without averaged_state they are end values."""
+    dt = 2.0**-19
+    model = DemModel("6208", "guessasma_oil", dt=dt, refresh=1)
+    for k in range(1, 11):
+        model.advance(400 * k * dt, omega=30.0 * k, F_x=3000.0)
+    start = model.get_state()
+    N = 42
+    model.averaged_state = True
+    averaged = model.advance(model.time + N * dt, F_x=3000.0)
+    model.set_state(start)
+    model.averaged_state = False
+    ends, samples = [], []
+    for _ in range(N):
+        ends.append(model.advance(model.time + dt, F_x=3000.0))
+        loaded = model.trib[s.T_Q, 1] > 0.0
+        samples.append(
+            (
+                model.trib[s.T_LAMBDA, 1][loaded].min(),
+                model.trib[s.T_H_MIN, 1][loaded].min(),
+                model.trib[s.T_Q, 1].max(),
+            )
+        )
+    for name in ("x", "y", "z"):
+        values = np.array([out[name] for out in ends])
+        assert averaged[name] == pytest.approx(values.mean(), rel=1e-12, abs=1e-18), name
+    assert np.ptp([out["x"] for out in ends]) > 0.0  # the ring moves over the interval
+    means = np.array(samples).mean(axis=0)
+    for k, name in enumerate(("Lambda_outer", "h_min_outer", "Q_max_outer")):
+        assert averaged[name] == pytest.approx(means[k], rel=1e-12), name
+    assert ends[-1]["x"] == model.ring[s.R_X]  # end values without averaged_state
 
 
 def test_clearance_limits_follow_the_groove_geometry():

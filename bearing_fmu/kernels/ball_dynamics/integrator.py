@@ -28,7 +28,15 @@ from .state import (
     A_FR,
     A_POWER_I,
     A_POWER_O,
+    A_S_HC_I,
+    A_S_HMIN_I,
+    A_S_LAMBDA_I,
+    A_S_PMAX,
+    A_S_QMAX_I,
+    A_SAMPLES,
+    A_SIZE,
     A_VR,
+    A_XT,
     B_ALX,
     B_AX,
     B_ORBIT,
@@ -83,10 +91,15 @@ from .state import (
     T_C_N,
     T_CAP,
     T_F_ROLL,
+    T_H_C,
+    T_H_MIN,
+    T_LAMBDA,
     T_M_SPIN,
     T_MU,
     T_P_FILM,
+    T_P_MAX,
     T_PHI,
+    T_Q,
     T_REGIME,
     T_SLIP,
     W_CAP_BALL,
@@ -129,6 +142,36 @@ def rigid_cage_torque(cage, work):
         d = (mean - (x * work[W_FC + 1, k] - y * work[W_FC, k])) / (x * x + y * y)
         work[W_FC, k] -= d * y
         work[W_FC + 1, k] += d * x
+
+
+@kernel(inline="always")  # called once per refresh from advance: no array-passing call
+def sample_refresh(trib, acc):
+    """Add this refresh's loads, pressure and films to the sums acc[A_S_*] (one sample, acc[A_SAMPLES] += 1): per
+    race the largest load, the smallest Lambda and h_min and the central film of the most loaded contact among
+    the loaded ones (0 without one), and the largest Hertz pressure; their means over a call are the averaged
+    state outputs (models.dem, averaged_state)."""
+    p_max = 0.0
+    for race in range(2):
+        q_max = 0.0
+        lam = math.inf
+        h_min = math.inf
+        h_c = 0.0
+        for j in range(trib.shape[2]):
+            q = trib[T_Q, race, j]
+            if q > 0.0:
+                p_max = max(p_max, trib[T_P_MAX, race, j])
+                lam = min(lam, trib[T_LAMBDA, race, j])
+                h_min = min(h_min, trib[T_H_MIN, race, j])
+                if q > q_max:
+                    q_max = q
+                    h_c = trib[T_H_C, race, j]
+        acc[A_S_QMAX_I + race] += q_max
+        if q_max > 0.0:
+            acc[A_S_LAMBDA_I + race] += lam
+            acc[A_S_HMIN_I + race] += h_min
+            acc[A_S_HC_I + race] += h_c
+    acc[A_S_PMAX] += p_max
+    acc[A_SAMPLES] += 1.0
 
 
 @kernel
@@ -402,6 +445,8 @@ def advance(
     acc[A_DISS_I] = 0.0
     acc[A_DISS_O] = 0.0
     acc[A_CAP] = 0.0
+    for k in range(A_XT, A_SIZE):  # the averaged state outputs' integrals and sums
+        acc[k] = 0.0
     status[ST_CODE] = STATUS_OK
     status[ST_STEP] = 0
     status[ST_INDEX] = -1
@@ -425,6 +470,7 @@ def advance(
                 film_i += trib[T_P_FILM, 0, j]
                 film_o += trib[T_P_FILM, 1, j]
             ball_capacitances(trib, work)
+            sample_refresh(trib, acc)
             if kinetic_energy(balls, cage, ring, par) > energy_limit:
                 status[ST_CODE] = STATUS_ENERGY
                 status[ST_STEP] = n
@@ -446,6 +492,9 @@ def advance(
         acc[A_POWER_O] = power_o
         acc[A_DISS_I] += power_i * dt
         acc[A_DISS_O] += power_o * dt
+        acc[A_XT] += ring[R_X] * dt
+        acc[A_XT + 1] += ring[R_X + 1] * dt
+        acc[A_XT + 2] += ring[R_X + 2] * dt
         if capacitance:  # the balls loaded on both races in this step, in parallel
             c = 0.0
             for j in range(Z):

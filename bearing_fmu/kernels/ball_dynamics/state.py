@@ -161,7 +161,8 @@ O_SRR_MAX = 20  # largest slide-to-roll ratio of a loaded contact (-)
 O_KINETIC = 21  # kinetic energy of all bodies (J)
 O_ALPHA_I = 22  # contact angle of the most loaded ball's inner contact (rad)
 O_ALPHA_O = 23  # and of its outer contact (rad)
-O_SIZE = 24
+O_X = 24  # inner-ring displacement x, y, z (m): at the end of the interval, or its mean (averaged state outputs)
+O_SIZE = 27
 
 # ---- status of advance(): int64[ST_SIZE] ----------------------------------------------------------
 ST_CODE = 0  # one of the STATUS_* codes
@@ -196,4 +197,15 @@ A_DISS_O = 7  # in the outer contacts (J)
 A_POWER_I = 8  # power dissipated in the inner contacts in the last step (W, Houpert film losses included)
 A_POWER_O = 9  # in the outer contacts (W)
 A_CAP = 10  # bearing capacitance (without the background) integrated over the call's steps (F.s)
-A_SIZE = 11
+A_XT = 11  # inner-ring displacement x, y, z integrated over the call's steps (m.s), 3 entries
+A_SAMPLES = 14  # tribology refreshes in the call: the samples of the sums below
+A_S_QMAX_I = 15  # sums over those refreshes of: the largest inner contact load (N) ...
+A_S_QMAX_O = 16  # ... outer (N)
+A_S_PMAX = 17  # ... the largest Hertz pressure of a loaded contact (Pa)
+A_S_LAMBDA_I = 18  # ... the smallest inner film parameter of a loaded contact (-, 0 with none)
+A_S_LAMBDA_O = 19
+A_S_HMIN_I = 20  # ... the smallest inner minimum film (m, 0 with none)
+A_S_HMIN_O = 21
+A_S_HC_I = 22  # ... the central film of the most loaded inner contact (m, 0 with none)
+A_S_HC_O = 23
+A_SIZE = 24
