@@ -123,7 +123,7 @@ def refresh(st, par, lub, omega, T_oil):
                 trib[s.T_PHI, race, j] = phi
                 trib[s.T_MU, race, j] = (1.0 - phi) * ref_ehl.friction_coefficient(0.0) + phi * par[s.P_MU_LIM]
                 v_s = max(par[s.P_S_TRACTION] * u, 8.0 / (3.0 * math.pi) * abs(spin) * a)
-                trib[s.T_SLIP, race, j] = 1.0 / v_s if u > 0.0 else 0.0
+                trib[s.T_SLIP, race, j] = 1.0 / v_s if v_s > 0.0 else 0.0
             trib[s.T_C_N, race, j] = ref_ehl.normal_damping(lam, Q, par[s.P_ALPHA_E], eta, a, 0.5 * D, h_min)
             trib[s.T_REGIME, race, j] = ref_ehl.lubrication_regime(lam)
             trib[s.T_F_ROLL, race, j] = F_R + 0.5 * (F_h + F_H)

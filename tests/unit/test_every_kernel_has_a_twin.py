@@ -105,6 +105,7 @@ COVERED_THROUGH = {
     BD + "cage.cage_guide_contact": (BD + "integrator.verlet_step", "cage ball - channel contacts of a step"),
     BD + "cage.damped_hertz": (BD + "cage.ball_cage_contact", "the damped Hertz law of both cage contacts"),
     BD + "integrator.rigid_cage_torque": (BD + "integrator.verlet_step", "the cage's torque shared by its elements"),
+    BD + "integrator.sample_refresh": (BD + "integrator.advance", "the averaged state outputs' refresh samples"),
 }
 
 
