@@ -91,7 +91,8 @@ class _BearingSlave(DeclaredSlave):
 
     def do_step(self, current_time, step_size):
         if not self._ready:
-            # initialisation failed (logged then); try again so a corrected parameter recovers
+            # the model could not be built (a refused parameter, logged then: e.g. restored by
+            # _set_fmu_state); try again rather than step without a model
             self._ready = self._guarded(self._build_model)
             if not self._ready:
                 return False
