@@ -481,13 +481,14 @@ static int has_slave(Instance *c, const char *call)
     if (!allowed(c, (mask), (call)))                                                               \
     RETURN(fmi2Error)
 
-/* Leave the call: an error or fatal status puts the instance into that state; releases the GIL. */
+/* Leave the call: an error or fatal status puts the instance into that state (not while a step runs on
+ * another thread: a call refused meanwhile leaves the step's outcome to decide); releases the GIL. */
 #define RETURN(value)                                                                              \
     do {                                                                                           \
         fmi2Status value__ = (value);                                                              \
-        if (value__ == fmi2Error)                                                                  \
+        if (value__ == fmi2Error && c->state != STEP_IN_PROGRESS)                                  \
             c->state = ERROR_STATE;                                                                \
-        else if (value__ == fmi2Fatal)                                                             \
+        else if (value__ == fmi2Fatal && c->state != STEP_IN_PROGRESS)                             \
             c->state = FATAL_STATE;                                                                \
         PyGILState_Release(gil__);                                                                 \
         return value__;                                                                            \
