@@ -8,7 +8,9 @@ kernels compiled for its platform's generic CPU (resources/numba_portable, beari
 which the entry script registers with the jit policy: a first start on a fresh machine loads them
 instead of compiling (docs/fmu_runtime.md, "Compiled code").
 Next to each FMU go its scene file, a reference result (<Name>_ref.csv) and its variable list
-(<Name>.md), generated from the declarations in bearing_fmu/models/declarations.py.
+(<Name>.md), generated from the declarations in bearing_fmu/models/declarations.py. Inside it go the
+same variable list as documentation/index.html, the reference experiment as DefaultExperiment and its
+result in the layout of the FMI cross-check (bearing_fmu.fmu_files).
 """
 
 import argparse
@@ -27,6 +29,7 @@ from bearing_fmu_common.runtime.build import install_runtime
 from bearing_fmu_common.variables import select
 
 from .compiled_code import COMPILED_DIR, add_compiled_code
+from .fmu_files import add_documentation, crosscheck_tables, entry_metadata
 from .models.analytic import AnalyticModel
 from .models.declarations import DEFAULT_FIXED_PRELOAD
 from .models.dem import DemModel
@@ -84,9 +87,11 @@ from bearing_fmu_common.jit import add_compiled_dir  # noqa: E402
 
 add_compiled_dir(_HERE / "{compiled}")  # this FMU's kernels compiled for the platform's generic CPU
 from {module} import {base_class} as _Slave  # noqa: E402
+from pythonfmu.default_experiment import DefaultExperiment  # noqa: E402
 {imports}
 
 class {fmu_name}(_Slave):
+    {metadata}
     {body}
 '''
 
@@ -134,13 +139,15 @@ def build_python_fmu(
     body="pass",
     imports="",
     runs=(),
+    experiment=None,
 ):
     """Build a pythonfmu FMU whose slave class `fmu_name` derives from module.base_class, bundling
     in resources/ the files and directories of `bundle` ((source, path in resources/) pairs: whole
     packages, or the parts of one a model needs; copied to a stable cache directory at load). Its
     binary is the project's FMI layer (bearing_fmu_common/runtime), not pythonfmu's. Its kernels are
     compiled for the generic CPU by running each experiment of `runs` on the FMU
-    (bearing_fmu.compiled_code.compile_portable) and added to the FMU."""
+    (bearing_fmu.compiled_code.compile_portable) and added to the FMU. experiment: (stop time, step) of
+    the reference experiment, written as DefaultExperiment."""
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory(prefix="bearing_fmu_build_") as tmp:
@@ -156,6 +163,7 @@ def build_python_fmu(
                 module=module,
                 base_class=base_class,
                 imports=imports,
+                metadata=entry_metadata(*experiment) if experiment else "",
                 body=body,
             )
         )
@@ -184,7 +192,12 @@ def build_fmu(scene_file, out_dir=DEFAULT_OUT):
     fmu_name = doc["fmu"]["name"]
     base_class = doc["fmu"]["slave"]
     scene_dict = doc["scene"]
-    Scene.from_dict(scene_dict)  # fail early, listing every problem
+    scene = Scene.from_dict(scene_dict)  # fail early, listing every problem
+    model = make_model(scene)
+    rows = reference_rows(scene, model)
+    step = DEM_REFERENCE_STEP if scene.fidelity == "dem" else REFERENCE_STEP
+    starts = {v.name: v.start_in(scene) for v in model.inputs}
+    inputs, reference, stop = crosscheck_tables(rows, starts, step, starts)
     path = build_python_fmu(
         fmu_name,
         "bearing_fmu.fmu",
@@ -192,12 +205,17 @@ def build_fmu(scene_file, out_dir=DEFAULT_OUT):
         out_dir,
         body=f"scene = Scene.from_dict({scene_dict!r})",
         imports="from bearing_fmu.scene import Scene  # noqa: E402\n",
-        runs=compile_runs(Scene.from_dict(scene_dict)),
+        runs=compile_runs(scene),
+        experiment=(stop, step),
     )
     out_dir = Path(out_dir)
+    markdown = variables_markdown(*scene_variables(scene_file))
     write_if_changed(out_dir / f"{fmu_name}_scene.toml", Path(scene_file).read_text())
-    write_reference(scene_dict, out_dir / f"{fmu_name}_ref.csv")
-    write_if_changed(out_dir / f"{fmu_name}.md", variables_markdown(*scene_variables(scene_file)))
+    write_if_changed(out_dir / f"{fmu_name}_ref.csv", csv_text(rows, reference_cell))
+    write_if_changed(out_dir / f"{fmu_name}.md", markdown)
+    add_documentation(
+        path, fmu_name, markdown, csv_text(inputs, reference_cell), csv_text(reference, reference_cell), stop, step
+    )
     return Path(path)
 
 
@@ -351,15 +369,16 @@ def make_model(scene):
     return QuasiStaticModel(scene=scene)
 
 
-def write_reference(scene_dict, path):
-    """Reference result of the Python model for the scene (regression data for users, SI units)."""
-    scene = Scene.from_dict(scene_dict)
-    model = make_model(scene)
-    rows = []
-    for inputs in reference_inputs(scene):
-        out = model.evaluate(**inputs)
-        rows.append({**inputs, **out})
-    write_if_changed(path, csv_text(rows, lambda v: repr(float(v)) if isinstance(v, float) else repr(v)))
+def reference_rows(scene, model=None):
+    """Reference result of the Python model for the scene (regression data for users, SI units): one dict
+    of inputs and outputs per point of reference_inputs(scene)."""
+    model = model or make_model(scene)
+    return [{**inputs, **model.evaluate(**inputs)} for inputs in reference_inputs(scene)]
+
+
+def reference_cell(value):
+    """A value as the reference CSV files write it (floats to 17 digits, as repr)."""
+    return repr(float(value)) if isinstance(value, float) else repr(value)
 
 
 def csv_text(rows, cell):

@@ -12,7 +12,7 @@ outputs keep their last valid values. A refused parameter makes exit_initializat
 
 from pythonfmu.enums import Fmi2Status
 
-from bearing_fmu_common.fmi import DeclaredSlave, add_unit_definitions, check_parameters, declared_parameter
+from bearing_fmu_common.fmi import DeclaredSlave, check_parameters, declared_parameter
 from bearing_fmu_common.variables import select
 
 from .kernels.ball_dynamics.state import ST_CODE
@@ -98,7 +98,8 @@ class _BearingSlave(DeclaredSlave):
 
     def do_step(self, current_time, step_size):
         if not self._ready:
-            # initialisation failed (logged then); try again so a corrected parameter recovers
+            # the model could not be built (a refused parameter, logged then: e.g. restored by
+            # _set_fmu_state); try again rather than step without a model
             self._ready = self._guarded(self._build_model, Fmi2Status.discard)
             if not self._ready:
                 return False
@@ -116,9 +117,6 @@ class _BearingSlave(DeclaredSlave):
         self._ready = self._guarded(self._build_model)
         if self._ready and solver:
             self._model.set_state(solver)
-
-    def to_xml(self, model_options=None):
-        return add_unit_definitions(super().to_xml(model_options or {}), self.vars.values())
 
 
 class BearingAnalytic(_BearingSlave):

@@ -16,6 +16,7 @@ import math
 from pathlib import Path
 
 from bearing_fmu import build as bearing_build
+from bearing_fmu.fmu_files import add_documentation
 
 from .thermal.declarations import parameter_declarations
 from .thermal.fmu import SpindleThermal
@@ -43,7 +44,11 @@ def reference_inputs(model):
     return inputs
 
 
-def write_reference(path, spindle=DEFAULT_SPINDLE, axial_float=None, step=60.0, stop=3600.0):
+REFERENCE_STEP, REFERENCE_STOP = 60.0, 3600.0  # s
+
+
+def reference_rows(spindle=DEFAULT_SPINDLE, axial_float=None, step=REFERENCE_STEP, stop=REFERENCE_STOP):
+    """The reference result (rows of time and outputs, from the initialisation on) and its constant inputs."""
     model = SpindleThermalModel(spindle, axial_float=axial_float)
     inputs = reference_inputs(model)
     model.initialize(**inputs)
@@ -51,7 +56,7 @@ def write_reference(path, spindle=DEFAULT_SPINDLE, axial_float=None, step=60.0, 
     for n in range(int(round(stop / step))):
         model.step(step, **inputs)
         rows.append({"time": (n + 1) * step, **model.outputs_values()})
-    bearing_build.write_if_changed(path, bearing_build.csv_text(rows, lambda v: repr(float(v))))
+    return rows, inputs
 
 
 def compile_runs(network, axial_float, step=60.0):
@@ -89,12 +94,17 @@ def build_thermal_fmu(name, network, axial_float, out_dir=DEFAULT_OUT):
         bundle=THERMAL_BUNDLE,
         body=f"default_network = {network!r}\n    axial_float = {axial_float!r}",
         runs=compile_runs(network, axial_float),
+        experiment=(REFERENCE_STOP, REFERENCE_STEP),
     )
+    rows, inputs = reference_rows(network, axial_float)
+    reference = bearing_build.csv_text(rows, lambda v: repr(float(v)))
+    markdown = bearing_build.variables_markdown(*thermal_variables(name))
     bearing_build.write_if_changed(Path(out_dir) / f"{name}_network.toml", network_path(network).read_text())
-    write_reference(Path(out_dir) / f"{name}_ref.csv", network, axial_float)
-    bearing_build.write_if_changed(
-        Path(out_dir) / f"{name}.md", bearing_build.variables_markdown(*thermal_variables(name))
-    )
+    bearing_build.write_if_changed(Path(out_dir) / f"{name}_ref.csv", reference)
+    bearing_build.write_if_changed(Path(out_dir) / f"{name}.md", markdown)
+    held = [{"time": 0.0, **inputs}, {"time": REFERENCE_STOP, **inputs}]  # constant over the experiment
+    in_csv = bearing_build.csv_text(held, lambda v: repr(float(v)))
+    add_documentation(path, name, markdown, in_csv, reference, REFERENCE_STOP, REFERENCE_STEP)
     return path
 
 

@@ -21,6 +21,7 @@ FOLDER_MARKERS = {"fmu": "fmu", "cosim": "cosim", "validation": "validation", "s
 SLOW = {  # test file -> test function names (every parametrisation of them)
     "tests/fmu/test_bearing_analytic_fmu.py": {"test_thirty_fresh_processes_exit_cleanly"},
     "tests/fmu/test_fuzz.py": {"test_fuzz_full"},
+    "tests/fmu/test_native_runtime.py": {"test_a_hundred_native_hosts_set_up_two_fmus_from_two_threads"},
     "tests/cosim/test_closed_loop.py": {
         "test_fixed_6000_preload_rises_with_temperature_and_settles",
         "test_fixed_10000_runs_away_and_stops_with_a_message",

@@ -15,7 +15,7 @@ the first doStep that accepts them, so the host can correct an input and continu
 
 from pythonfmu.enums import Fmi2Status
 
-from bearing_fmu_common.fmi import DeclaredSlave, add_unit_definitions, check_parameters, declared_parameter
+from bearing_fmu_common.fmi import DeclaredSlave, check_parameters, declared_parameter
 
 from .declarations import parameter_declarations
 from .model import DEFAULT_SPINDLE, SpindleThermalModel
@@ -118,6 +118,3 @@ class SpindleThermal(DeclaredSlave):
         if network is not None:
             self._model.set_state(network)
         self._started = network is not None
-
-    def to_xml(self, model_options=None):
-        return add_unit_definitions(super().to_xml(model_options or {}), self.vars.values())

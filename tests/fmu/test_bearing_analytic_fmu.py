@@ -53,7 +53,7 @@ def test_model_description_units_and_descriptions(analytic_fmu):
         if v.type == "Real":
             assert v.unit in units, v.name
         if v.causality == "output":
-            assert v.initial == "exact", v.name
+            assert v.initial == "calculated", v.name  # computed at initialisation
 
 
 def _ramp():
@@ -142,14 +142,15 @@ def test_bad_inputs_are_reported_and_host_survives(analytic_fmu):
 def test_unknown_bearing_is_reported(analytic_fmu):
     report = probe(analytic_fmu, "unknown_bearing")
     assert report["init_status"] == 3  # fmi2Error from fmi2ExitInitializationMode
-    assert report["status"] == 2
+    assert report["status"] == 3  # the error state: no step until fmi2Reset
+    assert report["recovered"] == 0  # reset and initialised with a catalogue bearing
     assert any("unknown bearing 'no_such_bearing'" in m["message"] for m in report["messages"])
 
 
 def test_percent_in_message_cannot_crash_host(analytic_fmu):
     """The FMI logger takes a printf format: the FMU's layer escapes '%' to '%%' (docs/fmu_runtime.md)."""
     report = probe(analytic_fmu, "percent_in_name")
-    assert report["init_status"] == 3 and report["status"] == 2
+    assert report["init_status"] == 3 and report["status"] == 3
     assert any("100%%_bearing_%%s_%%d" in m["message"] for m in report["messages"])
 
 

@@ -221,7 +221,7 @@ def test_bad_parameter_fails_initialisation_with_its_range(dem_fmu):
     fmu, vr, _ = probe.open_fmu(str(dem_fmu), {"dt": -1e-6})
     assert probe.init_statuses == [3]  # fmi2Error
     assert any("dt = -1e-06 s is outside the allowed range [0, 0.0001] s" in t for t in error_messages())
-    assert step_status(fmu, 0.0, H) == 2
+    assert step_status(fmu, 0.0, H) == 3  # the error state: no step until fmi2Reset
     fmu.freeInstance()
 
 

@@ -204,7 +204,8 @@ def test_bad_inputs_are_reported_and_host_survives(bearing_fmu):
 def test_unknown_race_control_is_reported(bearing_fmu):
     report = probe(bearing_fmu, "qs_bad_race_control")
     assert report["init_status"] == 3  # fmi2Error from fmi2ExitInitializationMode
-    assert report["status"] == 2
+    assert report["status"] == 3  # the error state: no step until fmi2Reset
+    assert report["recovered"] == 0  # reset and initialised with an allowed race control
     assert any("race_control = 'sideways'" in m["message"] and "hybrid" in m["message"] for m in report["messages"])
 
 
