@@ -245,6 +245,16 @@ def test_thermal_clearance_change_acts_like_the_clearance():
     assert np.max(np.abs(loads[0] - loads[1])) < 0.005 * np.max(loads[0])
 
 
+def _after_a_ramp(refresh):
+    """A 6208 at dt = 2^-19 s (exact in binary: runs of the same steps are bit-identical) ramped to 300 rad/s under
+    3 kN, the tribology refreshed every `refresh` steps; returns (model, dt)."""
+    dt = 2.0**-19
+    model = DemModel("6208", "guessasma_oil", dt=dt, refresh=refresh)
+    for k in range(1, 11):
+        model.advance(400 * k * dt, omega=30.0 * k, F_x=3000.0)
+    return model, dt
+
+
 def test_averaged_outputs_are_the_mean_of_the_per_step_values():
     """An interval of N steps with averaged outputs against the same N steps taken one call each with end-of-step
     outputs: the power outputs and the capacitance of the first equal the mean of the N end values of the second.
@@ -254,10 +264,7 @@ def test_averaged_outputs_are_the_mean_of_the_per_step_values():
     additions (sum of p dt / (N dt) against sum of p / N): rtol 1e-12 for N = 40 terms. The 6208 at 300 rad/s,
     3 kN, in the ramp's aftermath (springs slipping, powers varying from step to step), tribology refreshed every
     7 steps so that the capacitance changes within the interval."""
-    dt = 2.0**-19
-    model = DemModel("6208", "guessasma_oil", dt=dt, refresh=7)
-    for k in range(1, 11):
-        model.advance(400 * k * dt, omega=30.0 * k, F_x=3000.0)
+    model, dt = _after_a_ramp(refresh=7)
     start = model.get_state()
     N = 40
     model.averaged = True
@@ -284,10 +291,7 @@ def test_averaged_state_outputs_are_the_means_over_the_interval():
     of the additions); with a refresh every step (refresh = 1) each one-step call's refresh sample is the film
     its step starts from, so Lambda_outer, h_min_outer and Q_max_outer averaged equal the means of the samples the
     refreshes wrote (trib after each one-step call; rtol 1e-12); without averaged_state they are end values."""
-    dt = 2.0**-19
-    model = DemModel("6208", "guessasma_oil", dt=dt, refresh=1)
-    for k in range(1, 11):
-        model.advance(400 * k * dt, omega=30.0 * k, F_x=3000.0)
+    model, dt = _after_a_ramp(refresh=1)
     start = model.get_state()
     N = 42
     model.averaged_state = True
