@@ -804,6 +804,37 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
 
 
 @kernel
+def _newton_settings(qs, dPd):
+    """(A (m), tolerance, iteration cap, DOF scales (rotations as arc lengths at Rr, moments as forces), the
+    stiffness floor that regularises a bearing with no loaded ball) of the ring's Newton solvers."""
+    A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
+    scale = np.array([1.0, 1.0, 1.0, Rr, Rr])
+    K_s = (qs[QS_K_I] ** (-2.0 / 3.0) + qs[QS_K_O] ** (-2.0 / 3.0)) ** -1.5
+    return A, qs[QS_TOL], int(qs[QS_MAXIT]), scale, 1e-6 * K_s * math.sqrt(1e-3 * qs[QS_D])
+
+
+@kernel
+def _newton_start(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacobian, scale, d_try):
+    """The first evaluation of the ring's Newton solvers at d (from the free-ring start when it applies):
+    returns (X_try, status, f_ref, loads, ball_status, res): the trial ball states, the worst ball status of the
+    last evaluation with the count of evaluations after the first (status[0], status[1]), the bearing-level load
+    scale, the arguments of _loads_residual_at, the ball status and the scaled residual at d."""
+    A1_0 = qs_geometry(qs, dPd)[3]
+    X_try = X.copy()
+    status = np.zeros(2, np.int64)
+    f_ref = _F_FLOOR
+    for i in range(n):
+        f_ref = max(f_ref, abs(F_applied[idx[i]]) / scale[idx[i]])
+    loads = (F_applied, idx, n, scale, qs, dPd, omega, X, X_try, d_try, F, J, contact, jacobian, status, f_ref)
+    ball_status = ring_loads(d, qs, dPd, omega, X, F, J, contact, jacobian, f_ref)
+    if n > 0 and _free_ring_start(F_applied, idx, n, A1_0, d, contact):
+        ball_status = ring_loads(d, qs, dPd, omega, X, F, J, contact, jacobian, f_ref)
+        status[1] += 1
+    res = _residual_norm(F_applied, F, idx, n, scale)
+    return X_try, status, f_ref, loads, ball_status, res
+
+
+@kernel
 def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacobian):
     """Trust-region Newton on the loads of the n load-controlled DOFs idx[:n] (solve_quasistatic's loop;
     docs/quasistatic.md section 3).
@@ -818,12 +849,7 @@ def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
     first radius, crosses it. J (5x5) is assembled at every evaluation
     when `jacobian` (needed whenever n > 0). On success the last evaluation is that of the returned d, so
     F, J, contact and X belong to the solution; a failed solve leaves them at its last trial."""
-    A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
-    tol = qs[QS_TOL]
-    maxit = int(qs[QS_MAXIT])
-    scale = np.array([1.0, 1.0, 1.0, Rr, Rr])  # rotations as arc lengths at Rr, moments as forces
-    K_s = (qs[QS_K_I] ** (-2.0 / 3.0) + qs[QS_K_O] ** (-2.0 / 3.0)) ** -1.5
-    k_floor = 1e-6 * K_s * math.sqrt(1e-3 * qs[QS_D])  # regularises a bearing with no loaded ball
+    A, tol, maxit, scale, k_floor = _newton_settings(qs, dPd)
     radius = _TR_RADIUS * A  # trust radius (m, scaled DOFs); the first trial is the full Newton step inside it
     Kr = np.empty((5, 5))
     Ks = np.empty((5, 5))  # symmetric part of the regularised Newton matrix: the curvature of the model
@@ -833,18 +859,9 @@ def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
     p = np.empty(5)  # trial step (m, scaled DOFs)
     step = np.empty(5)
     d_try = np.empty(5)
-    X_try = X.copy()
-    # worst ball status of the last evaluation, bearing evaluations after the first (the work reported)
-    status = np.zeros(2, np.int64)
-    f_ref = _F_FLOOR
-    for i in range(n):
-        f_ref = max(f_ref, abs(F_applied[idx[i]]) / scale[idx[i]])
-    loads = (F_applied, idx, n, scale, qs, dPd, omega, X, X_try, d_try, F, J, contact, jacobian, status, f_ref)
-    ball_status = ring_loads(d, qs, dPd, omega, X, F, J, contact, jacobian, f_ref)
-    if n > 0 and _free_ring_start(F_applied, idx, n, A1_0, d, contact):
-        ball_status = ring_loads(d, qs, dPd, omega, X, F, J, contact, jacobian, f_ref)
-        status[1] += 1
-    res = _residual_norm(F_applied, F, idx, n, scale)
+    X_try, status, f_ref, loads, ball_status, res = _newton_start(
+        F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacobian, scale, d_try
+    )
     for it in range(maxit + 1):
         if not math.isfinite(res):
             return QS_NOT_FINITE, status[1], res
@@ -926,30 +943,16 @@ def _damped_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
 
     J (5x5) is assembled at every evaluation when `jacobian` (needed whenever n > 0); the last
     evaluation is always that of the returned d, so F, J, contact and X belong to the solution."""
-    A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
-    tol = qs[QS_TOL]
-    maxit = int(qs[QS_MAXIT])
-    scale = np.array([1.0, 1.0, 1.0, Rr, Rr])  # rotations as arc lengths at Rr, moments as forces
-    K_s = (qs[QS_K_I] ** (-2.0 / 3.0) + qs[QS_K_O] ** (-2.0 / 3.0)) ** -1.5
-    k_floor = 1e-6 * K_s * math.sqrt(1e-3 * qs[QS_D])  # regularises a bearing with no loaded ball
+    A, tol, maxit, scale, k_floor = _newton_settings(qs, dPd)
     step_cap = 0.05 * A
     Kr = np.empty((5, 5))
     R = np.empty(5)
     Rw = np.empty(5)
     step = np.empty(5)
     d_try = np.empty(5)
-    X_try = X.copy()
-    # worst ball status of the last evaluation, bearing evaluations after the first (the work reported)
-    status = np.zeros(2, np.int64)
-    f_ref = _F_FLOOR
-    for i in range(n):
-        f_ref = max(f_ref, abs(F_applied[idx[i]]) / scale[idx[i]])
-    loads = (F_applied, idx, n, scale, qs, dPd, omega, X, X_try, d_try, F, J, contact, jacobian, status, f_ref)
-    ball_status = ring_loads(d, qs, dPd, omega, X, F, J, contact, jacobian, f_ref)
-    if n > 0 and _free_ring_start(F_applied, idx, n, A1_0, d, contact):
-        ball_status = ring_loads(d, qs, dPd, omega, X, F, J, contact, jacobian, f_ref)
-        status[1] += 1
-    res = _residual_norm(F_applied, F, idx, n, scale)
+    X_try, status, f_ref, loads, ball_status, res = _newton_start(
+        F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacobian, scale, d_try
+    )
     for it in range(maxit + 1):
         if not math.isfinite(res):
             return QS_NOT_FINITE, status[1], res

@@ -79,7 +79,9 @@ COVERED_THROUGH = {
     JH + "_dogleg": (JH + "_global_newton", "the step of the trust-region iteration whose result is compared"),
     JH + "_model_decrease": (JH + "_dogleg", "the quadratic model's decrease, two sums"),
     JH + "_sum_squares": (JH + "_global_newton", "a squared norm"),
-    JH + "_residual_norm": (JH + "_global_newton", "largest scaled load error: the compared solution's criterion"),
+    JH + "_residual_norm": (JH + "_newton_start", "largest scaled load error: the compared solution's criterion"),
+    JH + "_newton_settings": (JH + "_global_newton", "the solvers' tolerance, cap, scales and stiffness floor"),
+    JH + "_newton_start": (JH + "_global_newton", "the first evaluation of the compared iteration"),
     JH + "_mean_ball_load": (JH + "_global_newton", "load scale of the convergence test, a mean"),
     # the DEM step's pieces: compared through advance over 300 steps of a 6208 in a speed ramp under 3 kN
     # (test_ball_dynamics.py: loaded and open contacts, boundary and mixed regimes, slipping springs, cage
