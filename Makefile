@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test lint fmus bench report clean
+.PHONY: demo test test-bare-host test-ehl-full lint fmus bench report clean
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -31,7 +31,15 @@ lint: $(STAMP)
 
 # no cache cleaning needed: the numba cache directory is keyed on the kernel sources (bearing_fmu_common/jit.py)
 test: lint fmus
-	$(BIN)/python -m pytest -q
+	$(BIN)/python -m pytest -q -m "not bare_host and not ehl_full"
+
+# the FMUs in a host with only fmpy, numpy and numba (a virtual environment under /tmp, made with pip once)
+test-bare-host: fmus
+	$(BIN)/python -m pytest -q -m bare_host
+
+# the numerical EHL solver on all 55 Annexe D cases (about 20 min)
+test-ehl-full: $(STAMP)
+	$(BIN)/python -m pytest -q -m ehl_full
 
 bench: fmus
 	$(BIN)/python -m benchmarks.run_all

@@ -1,14 +1,16 @@
 """Build the bearing FMUs into fmus/ (one FMU per scene, with its scene file and a reference result).
 
-Each FMU carries the `bearing_fmu` package in resources/ so that only numpy, numba and scipy are needed
-in the importing interpreter. At load time a small generated entry script copies the bundled
+Each FMU carries the `bearing_fmu` and `bearing_fmu_common` packages in resources/ so that only numpy and
+numba are needed in the importing interpreter. At load time a small generated entry script copies the bundled
 package once to a stable per-version directory (~/.cache/bearing_fmu/<hash>, or $BEARING_FMU_CACHE)
 and imports it from there, so later processes import without copying. Each FMU also carries its
 kernels compiled for its platform's generic CPU (resources/numba_portable, bearing_fmu.compiled_code),
 which the entry script registers with the jit policy: a first start on a fresh machine loads them
 instead of compiling (docs/fmu_runtime.md, "Compiled code").
 Next to each FMU go its scene file, a reference result (<Name>_ref.csv) and its variable list
-(<Name>.md), generated from the declarations in bearing_fmu/models/declarations.py.
+(<Name>.md), generated from the declarations in bearing_fmu/models/declarations.py. Inside it go the
+same variable list as documentation/index.html, the reference experiment as DefaultExperiment and its
+result in the layout of the FMI cross-check (bearing_fmu.fmu_files).
 """
 
 import argparse
@@ -27,6 +29,7 @@ from bearing_fmu_common.runtime.build import install_runtime
 from bearing_fmu_common.variables import select
 
 from .compiled_code import COMPILED_DIR, add_compiled_code
+from .fmu_files import add_documentation, crosscheck_tables, entry_metadata
 from .models.analytic import AnalyticModel
 from .models.declarations import DEFAULT_FIXED_PRELOAD
 from .models.dem import DemModel
@@ -84,23 +87,47 @@ from bearing_fmu_common.jit import add_compiled_dir  # noqa: E402
 
 add_compiled_dir(_HERE / "{compiled}")  # this FMU's kernels compiled for the platform's generic CPU
 from {module} import {base_class} as _Slave  # noqa: E402
+from pythonfmu.default_experiment import DefaultExperiment  # noqa: E402
 {imports}
 
 class {fmu_name}(_Slave):
+    {metadata}
     {body}
 '''
 
 
-def package_hash(package_dirs=(PACKAGE_DIR, COMMON_DIR)):
-    """Content hash of the package sources (names and bytes): the bundle version."""
+def package_hash(root, names):
+    """Content hash of the staged packages `names` under root (names and bytes of their .py and .toml
+    files): the bundle version."""
     digest = hashlib.sha256()
-    for package_dir in package_dirs:
-        for path in sorted(Path(package_dir).rglob("*")):
+    for name in names:
+        for path in sorted((Path(root) / name).rglob("*")):
             if path.is_file() and "__pycache__" not in path.parts and path.suffix in (".py", ".toml"):
-                digest.update(Path(package_dir).name.encode())
-                digest.update(path.relative_to(package_dir).as_posix().encode())
+                digest.update(name.encode())
+                digest.update(path.relative_to(Path(root) / name).as_posix().encode())
                 digest.update(path.read_bytes())
     return digest.hexdigest()[:16]
+
+
+BEARING_BUNDLE = ((PACKAGE_DIR, "bearing_fmu"), (COMMON_DIR, "bearing_fmu_common"))
+_NOT_BUNDLED = shutil.ignore_patterns("__pycache__", "*.pyc", "*.nbi", "*.nbc")
+
+
+def stage_bundle(stage, bundle):
+    """Copy each (source file or directory, destination relative to stage) of `bundle` into stage; returns
+    the top-level package names, in order."""
+    names = []
+    for source, dest in bundle:
+        target = Path(stage) / dest
+        target.parent.mkdir(parents=True, exist_ok=True)
+        if Path(source).is_dir():
+            shutil.copytree(source, target, ignore=_NOT_BUNDLED)
+        else:
+            shutil.copyfile(source, target)
+        top = Path(dest).parts[0]
+        if top not in names:
+            names.append(top)
+    return names
 
 
 def build_python_fmu(
@@ -108,44 +135,42 @@ def build_python_fmu(
     module,
     base_class,
     out_dir,
-    package_dirs=(PACKAGE_DIR, COMMON_DIR),
+    bundle=BEARING_BUNDLE,
     body="pass",
     imports="",
     runs=(),
+    experiment=None,
 ):
     """Build a pythonfmu FMU whose slave class `fmu_name` derives from module.base_class, bundling
-    the given package directories in resources/ (copied to a stable cache directory at load). Its
+    in resources/ the files and directories of `bundle` ((source, path in resources/) pairs: whole
+    packages, or the parts of one a model needs; copied to a stable cache directory at load). Its
     binary is the project's FMI layer (bearing_fmu_common/runtime), not pythonfmu's. Its kernels are
     compiled for the generic CPU by running each experiment of `runs` on the FMU
-    (bearing_fmu.compiled_code.compile_portable) and added to the FMU."""
+    (bearing_fmu.compiled_code.compile_portable) and added to the FMU. experiment: (stop time, step) of
+    the reference experiment, written as DefaultExperiment."""
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
-    package_dirs = [Path(p) for p in package_dirs]
     with tempfile.TemporaryDirectory(prefix="bearing_fmu_build_") as tmp:
         stage = Path(tmp)
-        for package_dir in package_dirs:
-            shutil.copytree(
-                package_dir,
-                stage / package_dir.name,
-                ignore=shutil.ignore_patterns("__pycache__", "*.pyc", "*.nbi", "*.nbc"),
-            )
+        packages = stage_bundle(stage, bundle)
         entry = stage / f"{fmu_name.lower()}_entry.py"
         entry.write_text(
             ENTRY_TEMPLATE.format(
                 fmu_name=fmu_name,
-                bundle=package_hash(package_dirs),
-                packages=[p.name for p in package_dirs],
+                bundle=package_hash(stage, packages),
+                packages=packages,
                 compiled=COMPILED_DIR,
                 module=module,
                 base_class=base_class,
                 imports=imports,
+                metadata=entry_metadata(*experiment) if experiment else "",
                 body=body,
             )
         )
         path = FmuBuilder.build_FMU(
             entry,
             dest=out_dir / f"{fmu_name}.fmu",
-            project_files=[stage / p.name for p in package_dirs],
+            project_files=[stage / p for p in packages],
             canGetAndSetFMUstate=True,
             canSerializeFMUstate=True,
         )
@@ -167,7 +192,12 @@ def build_fmu(scene_file, out_dir=DEFAULT_OUT):
     fmu_name = doc["fmu"]["name"]
     base_class = doc["fmu"]["slave"]
     scene_dict = doc["scene"]
-    Scene.from_dict(scene_dict)  # fail early, listing every problem
+    scene = Scene.from_dict(scene_dict)  # fail early, listing every problem
+    model = make_model(scene)
+    rows = reference_rows(scene, model)
+    step = DEM_REFERENCE_STEP if scene.fidelity == "dem" else REFERENCE_STEP
+    starts = {v.name: v.start_in(scene) for v in model.inputs}
+    inputs, reference, stop = crosscheck_tables(rows, starts, step, starts)
     path = build_python_fmu(
         fmu_name,
         "bearing_fmu.fmu",
@@ -175,12 +205,17 @@ def build_fmu(scene_file, out_dir=DEFAULT_OUT):
         out_dir,
         body=f"scene = Scene.from_dict({scene_dict!r})",
         imports="from bearing_fmu.scene import Scene  # noqa: E402\n",
-        runs=compile_runs(Scene.from_dict(scene_dict)),
+        runs=compile_runs(scene),
+        experiment=(stop, step),
     )
     out_dir = Path(out_dir)
+    markdown = variables_markdown(*scene_variables(scene_file))
     write_if_changed(out_dir / f"{fmu_name}_scene.toml", Path(scene_file).read_text())
-    write_reference(scene_dict, out_dir / f"{fmu_name}_ref.csv")
-    write_if_changed(out_dir / f"{fmu_name}.md", variables_markdown(*scene_variables(scene_file)))
+    write_if_changed(out_dir / f"{fmu_name}_ref.csv", csv_text(rows, reference_cell))
+    write_if_changed(out_dir / f"{fmu_name}.md", markdown)
+    add_documentation(
+        path, fmu_name, markdown, csv_text(inputs, reference_cell), csv_text(reference, reference_cell), stop, step
+    )
     return Path(path)
 
 
@@ -217,6 +252,14 @@ def _start(value):
     return f"`{value}`" if isinstance(value, str) else f"{value:g}"
 
 
+COMMA_NAMES_NOTE = (
+    "Names such as `K[1,2]` (FMI structured names of matrix entries) contain a comma. In a CSV file they must be "
+    'quoted (`"K[1,2]"`), as fmpy and this product\'s own CSV files (`spindle run`, `spindle sweep`, the '
+    "reference results) write them; some native masters write them unquoted, and a plain CSV reader then "
+    "splits each such name in two and shifts every later column. `spindle check --ref` reads either."
+)
+
+
 def variables_markdown(fmu_name, description, about, parameters, inputs, outputs, scene=None):
     """The variable list of an FMU in the manner of the Modelica Reference-FMUs' per-FMU readme: its
     description, then one table row per variable (causality, type, unit, start, allowed range, description;
@@ -232,6 +275,7 @@ def variables_markdown(fmu_name, description, about, parameters, inputs, outputs
         "",
         "Generated from the variable declarations by `spindle build`; do not edit.",
         "",
+        *([COMMA_NAMES_NOTE, ""] if any("," in v.name for v in (*parameters, *inputs, *outputs)) else []),
         "| Variable | Causality | Type | Unit | Start | Range | Description |",
         "|---|---|---|---|---|---|---|",
     ]
@@ -325,15 +369,16 @@ def make_model(scene):
     return QuasiStaticModel(scene=scene)
 
 
-def write_reference(scene_dict, path):
-    """Reference result of the Python model for the scene (regression data for users, SI units)."""
-    scene = Scene.from_dict(scene_dict)
-    model = make_model(scene)
-    rows = []
-    for inputs in reference_inputs(scene):
-        out = model.evaluate(**inputs)
-        rows.append({**inputs, **out})
-    write_if_changed(path, csv_text(rows, lambda v: repr(float(v)) if isinstance(v, float) else repr(v)))
+def reference_rows(scene, model=None):
+    """Reference result of the Python model for the scene (regression data for users, SI units): one dict
+    of inputs and outputs per point of reference_inputs(scene)."""
+    model = model or make_model(scene)
+    return [{**inputs, **model.evaluate(**inputs)} for inputs in reference_inputs(scene)]
+
+
+def reference_cell(value):
+    """A value as the reference CSV files write it (floats to 17 digits, as repr)."""
+    return repr(float(value)) if isinstance(value, float) else repr(value)
 
 
 def csv_text(rows, cell):

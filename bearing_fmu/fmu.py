@@ -12,17 +12,20 @@ outputs keep their last valid values. A refused parameter makes exit_initializat
 
 from pythonfmu.enums import Fmi2Status
 
-from bearing_fmu_common.fmi import DeclaredSlave, add_unit_definitions, check_parameters, declared_parameter
+from bearing_fmu_common.fmi import DeclaredSlave, check_parameters, declared_parameter
 from bearing_fmu_common.variables import select
 
 from .kernels.ball_dynamics.state import ST_CODE
 from .models.analytic import AnalyticModel
 from .models.declarations import ANALYTIC_PARAMETERS, DEM_PARAMETERS, QUASI_STATIC_PARAMETERS
-from .models.dem import DemModel
+from .models.dem import DemModel, DemUnstableError
 from .models.quasi_static import QuasiStaticModel
 from .models.variables import InputError
 from .params import ParameterError
 from .scene import Scene, SceneError
+
+# appended to an input refused at initialisation: the call succeeds (parameters are fine), the step would not
+INPUT_NOTE = " (refused at the first doStep unless the input is corrected)"
 
 
 class _BearingSlave(DeclaredSlave):
@@ -68,15 +71,16 @@ class _BearingSlave(DeclaredSlave):
         for warning in self._model.warnings:
             self.log(warning, Fmi2Status.warning)
 
-    def _guarded(self, action):
-        """Run action(); log a clear message and return False on bad input or parameters."""
+    def _guarded(self, action, status=Fmi2Status.error, note=""):
+        """Run action(); on bad input or parameters log a clear message (with the FMI status that the calling
+        function returns, and `note` appended) and return False."""
         try:
             action()
             return True
-        except (InputError, ParameterError, SceneError) as exc:
-            self.log(f"{self.instance_name}: {exc}", Fmi2Status.error)
+        except (InputError, ParameterError, SceneError, DemUnstableError) as exc:
+            self.log(f"{self.instance_name}: {exc}{note}", status)
         except Exception as exc:  # logged as the model's own message, not a traceback
-            self.log(f"{self.instance_name}: internal error {type(exc).__name__}: {exc}", Fmi2Status.error)
+            self.log(f"{self.instance_name}: internal error {type(exc).__name__}: {exc}{note}", status)
         return False
 
     # -- FMI -------------------------------------------------------------------------------------
@@ -85,17 +89,21 @@ class _BearingSlave(DeclaredSlave):
         # bad input is logged and refused again by the first doStep (fmi2Discard): the host may still
         # correct an input (and libcosim 0.11 aborts the process on fmi2Error here, docs/fmu_runtime.md)
         self._ready = self._guarded(self._build_model)
-        if self._ready:
-            self._guarded(self._update)
-        return self._ready
+        if not self._ready:
+            return False  # fmi2Error, logged as such
+        # an input refused now is logged once as a warning (fmi2Warning returned) and refused by the first doStep
+        if not self._guarded(self._update, Fmi2Status.warning, INPUT_NOTE):
+            return Fmi2Status.warning
+        return True
 
     def do_step(self, current_time, step_size):
         if not self._ready:
-            # initialisation failed (logged then); try again so a corrected parameter recovers
-            self._ready = self._guarded(self._build_model)
+            # the model could not be built (a refused parameter, logged then: e.g. restored by
+            # _set_fmu_state); try again rather than step without a model
+            self._ready = self._guarded(self._build_model, Fmi2Status.discard)
             if not self._ready:
                 return False
-        return self._guarded(self._update)
+        return self._guarded(self._update, Fmi2Status.discard)  # False: fmi2Discard
 
     def _get_fmu_state(self):
         state = super()._get_fmu_state()
@@ -109,9 +117,6 @@ class _BearingSlave(DeclaredSlave):
         self._ready = self._guarded(self._build_model)
         if self._ready and solver:
             self._model.set_state(solver)
-
-    def to_xml(self, model_options=None):
-        return add_unit_definitions(super().to_xml(model_options or {}), self.vars.values())
 
 
 class BearingAnalytic(_BearingSlave):
@@ -193,6 +198,7 @@ class BearingDEM(_BearingSlave):
             float(self.refresh_interval),
             float(self.traction_limit),
             bool(self.average_outputs),
+            bool(self.average_state_outputs),
         )
 
     def _make_model(self):
@@ -204,6 +210,7 @@ class BearingDEM(_BearingSlave):
             Pd=None if self.Pd_from_file else self.Pd,
             refresh_interval=self.refresh_interval,
             averaged=bool(self.average_outputs),
+            averaged_state=bool(self.average_state_outputs),
             traction_limit=self.traction_limit,
         )
 
@@ -213,10 +220,10 @@ class BearingDEM(_BearingSlave):
 
     def do_step(self, current_time, step_size):
         if not self._ready:
-            self._ready = self._guarded(self._build_model)
+            self._ready = self._guarded(self._build_model, Fmi2Status.discard)
             if not self._ready:
                 return False
-        if self._guarded(lambda: self._advance(step_size)):
+        if self._guarded(lambda: self._advance(step_size), Fmi2Status.discard):
             return True
         self._y[self._monitor_slot] = int(self._model.status[ST_CODE])  # the cause of a monitor stop, else 0
         return False

@@ -1,8 +1,12 @@
 """FMI helpers shared by the slave classes: SI units in modelDescription, variables registered from
-declarations and read by precomputed index.
+declarations and read by precomputed index, the model structure.
 
 pythonfmu 0.7 writes no units; FMI 2.0 wants a `unit` attribute on each Real and the unit defined
-in <UnitDefinitions> by its SI base-unit exponents.
+in <UnitDefinitions> by its SI base-unit exponents. pythonfmu lists the outputs in
+<ModelStructure><Outputs> without dependencies, which FMI reads as "depends on every input": a master
+that sorts a coupled system (OMSimulator) then finds algebraic loops that do not exist. The outputs of
+these FMUs change only in fmi2DoStep, so each declares `dependencies=""`, and they are computed at
+initialisation (initial="calculated", listed in <InitialUnknowns>).
 """
 
 from operator import itemgetter
@@ -34,18 +38,18 @@ BASE_UNITS = {
 
 class UnitReal(Real):
     """pythonfmu Real with an FMI `unit` attribute and, for inputs and parameters, the declared allowed
-    range as `min`/`max` (bearing_fmu_common.variables.Variable)."""
+    range as `min`/`max` (bearing_fmu_common.variables.Variable) and, for inputs, a `nominal`."""
 
-    def __init__(self, name, unit, minimum=None, maximum=None, **kwargs):
+    def __init__(self, name, unit, minimum=None, maximum=None, nominal=None, **kwargs):
         super().__init__(name, **kwargs)
         self.unit = unit
-        self.minimum, self.maximum = minimum, maximum
+        self.minimum, self.maximum, self.nominal = minimum, maximum, nominal
 
     def to_xml(self):
         node = super().to_xml()
         real = node.find("Real")
         real.set("unit", self.unit)
-        for key, value in (("min", self.minimum), ("max", self.maximum)):
+        for key, value in (("nominal", self.nominal), ("min", self.minimum), ("max", self.maximum)):
             if value is not None:
                 real.set(key, f"{value:.16g}")  # as pythonfmu writes start: enough digits to read back exactly
         return node
@@ -82,13 +86,14 @@ def parameter(name, start, description, unit=None, minimum=None, maximum=None):
     return UnitReal(name, unit, minimum, maximum, **kwargs)
 
 
-def input_variable(name, unit, start, description, getter=None, setter=None, minimum=None, maximum=None):
-    """A continuous Real input with its unit and allowed range."""
+def input_variable(name, unit, start, description, getter=None, setter=None, minimum=None, maximum=None, nominal=None):
+    """A continuous Real input with its unit, allowed range and typical magnitude."""
     return UnitReal(
         name,
         unit,
         minimum,
         maximum,
+        nominal,
         causality=Fmi2Causality.input,
         variability=Fmi2Variability.continuous,
         start=start,
@@ -99,15 +104,33 @@ def input_variable(name, unit, start, description, getter=None, setter=None, min
 
 
 def output_variable(name, unit, description, integer=False, getter=None, setter=None):
-    """Output declared initial=exact (computed at initialisation): pythonfmu writes a start value for
-    every output, and FMI 2.0 allows a start value on an output only with initial = exact, so with it
-    `fmpy validate` finds no problem."""
+    """Output declared initial=calculated: the slave computes it at initialisation from the parameters
+    and the inputs set in initialisation mode (so it has no start value)."""
     kwargs = dict(
-        causality=Fmi2Causality.output, initial=Fmi2Initial.exact, description=description, getter=getter, setter=setter
+        causality=Fmi2Causality.output,
+        initial=Fmi2Initial.calculated,
+        description=description,
+        getter=getter,
+        setter=setter,
     )
     if integer:
         return Integer(name, variability=Fmi2Variability.discrete, **kwargs)
     return UnitReal(name, unit, variability=Fmi2Variability.continuous, **kwargs)
+
+
+def declare_structure(root: Element):
+    """Rewrite <ModelStructure>: every output in <Outputs> with dependencies="" (it changes only in
+    fmi2DoStep: no direct feedthrough from an input) and in <InitialUnknowns> (computed at initialisation;
+    no dependencies attribute: it depends on the inputs and parameters, all of them)."""
+    variables = root.find("ModelVariables")
+    outputs = [str(i + 1) for i, v in enumerate(variables) if v.get("causality") == "output"]
+    structure = root.find("ModelStructure")
+    for child in list(structure):
+        structure.remove(child)
+    if outputs:
+        SubElement(structure, "Outputs").extend(Element("Unknown", index=i, dependencies="") for i in outputs)
+        SubElement(structure, "InitialUnknowns").extend(Element("Unknown", index=i) for i in outputs)
+    return root
 
 
 def declared_parameter(var, scene=None):
@@ -150,6 +173,7 @@ class DeclaredSlave(Fmi2Slave):
                 setter=lambda value, k=k: self._u.__setitem__(k, value),
                 minimum=var.min,
                 maximum=var.max,
+                nominal=var.typical(),
             )
             self.register_variable(fmi_var)
             self._input_slot[fmi_var.value_reference] = k
@@ -165,6 +189,10 @@ class DeclaredSlave(Fmi2Slave):
             )
             self.register_variable(fmi_var)
             (self._integer_slot if integer else self._real_slot)[fmi_var.value_reference] = k
+
+    def to_xml(self, model_options=None):
+        root = add_unit_definitions(super().to_xml(model_options or {}), self.vars.values())
+        return declare_structure(root)
 
     def _reader(self, vrs, slots):
         """A function y -> [y[slot] for the value references vrs], cached per tuple of references (a

@@ -14,12 +14,18 @@ Cache (docs/fmu_runtime.md, "Compiled code"): a kernel is looked up, in order,
 and compiled on a miss, into the user cache, or, where that cannot be written (read-only, another
 user's, no home), into a private per-user temporary directory, with a logged warning.
 
-Entries are filed under the kernel's path relative to the package root and stamped with a hash of its
-source file's contents, so a cache serves any copy of the sources wherever it is unpacked and whatever
-its file times. numba checks only the source file of a cached kernel, not those of the kernels it calls,
-so an edit to a callee would otherwise be served stale; with the directory keyed on every kernel source
-file, any edit starts a fresh cache. The cache is attached to each kernel when it is decorated; numba's
-global cache settings are left alone (other numba code in a host process is not affected).
+Entries are filed under the kernel's path relative to the root of its source tree (the directory its
+top-level package is in) and stamped with a hash of its source file's contents, so a cache serves any
+copy of the sources wherever it is unpacked and whatever its file times. Each source tree has its own
+tiers, keyed on its own kernel sources: a host process may run kernels from several trees at once (the
+co-simulation master's own `spindle.thermal` beside the bearing FMU's bundled `bearing_fmu`, two FMUs of
+which the first brought this module), and each kernel is looked up under the key of the tree it was
+imported from, with every registered compiled-code directory (``same_sources_entries``).
+
+numba checks only the source file of a cached kernel, not those of the kernels it calls, so an edit
+to a callee would otherwise be served stale; with the directory keyed on every kernel source file, any
+edit starts a fresh cache. The cache is attached to each kernel when it is decorated; numba's global
+cache settings are left alone (other numba code in a host process is not affected).
 
 Kernels never read module globals that change at run time (numba freezes globals into the cache);
 options reach them as integer codes.
@@ -115,11 +121,12 @@ def private_temp_dir(key):
 
 
 class CacheTiers:
-    """Where kernels are looked up (read: [(directory, codegen description or None for this host's)]) and
-    where new compilations are saved (write)."""
+    """Where the kernels of one source tree (root) are looked up (read: [(directory, codegen description or
+    None for this host's)]) and where new compilations are saved (write)."""
 
-    def __init__(self, key=None):
-        self.key = key or kernel_source_hash()
+    def __init__(self, key=None, root=_ROOT):
+        self.root = Path(root)
+        self.key = key or kernel_source_hash(self.root)
         try:
             user = user_cache_dir(self.key)
         except OSError as error:
@@ -149,7 +156,7 @@ class CacheTiers:
             return False
         entries = path / self.key
         if not entries.is_dir():
-            entries = same_sources_entries(path)
+            entries = same_sources_entries(path, self.root)
         if entries is None or any(entries == d for d, _ in self.read):
             return False
         self.read.append((entries, magic))
@@ -165,7 +172,10 @@ def same_sources_entries(path, root=_ROOT):
     the FMU's code was compiled under the key of the sources it bundles (path.parent: the FMU's resources).
     Equal bundled sources mean equal kernels and callees, so the FMU's entries are valid for the host."""
     bundle = path.parent
-    entries = path / kernel_source_hash(bundle)
+    try:
+        entries = path / kernel_source_hash(bundle)
+    except OSError:  # the bundle went away: another FMU's extraction, removed by its host while this one set up
+        return None
     if not entries.is_dir():
         return None
     for pattern in KERNEL_SOURCES:
@@ -179,12 +189,37 @@ def same_sources_entries(path, root=_ROOT):
     return entries
 
 
-TIERS = CacheTiers()
+TIERS = CacheTiers()  # the tiers of this module's own source tree
+_TIERS = {_ROOT: TIERS}  # source root -> its tiers
+_COMPILED = []  # every compiled-code directory registered, offered to the tiers of trees met later
+
+
+def source_root(py_file):
+    """The root of a kernel's source tree: the directory holding its top-level package (the first parent
+    without __init__.py)."""
+    directory = Path(py_file).resolve().parent
+    while (directory / "__init__.py").is_file():
+        directory = directory.parent
+    return directory
+
+
+def tiers_for(py_file):
+    """The tiers of the source tree of py_file, made (with every compiled-code directory registered so far)
+    when a kernel of that tree is first met."""
+    root = source_root(py_file)
+    tiers = _TIERS.get(root)
+    if tiers is None:
+        tiers = _TIERS[root] = CacheTiers(kernel_source_hash(root), root)
+        for path in _COMPILED:
+            tiers.add_compiled_dir(path)
+    return tiers
 
 
 def add_compiled_dir(path):
-    """Register a directory of compiled code shipped with an FMU (looked up after the user cache)."""
-    return TIERS.add_compiled_dir(path)
+    """Register a directory of compiled code shipped with an FMU (looked up after the user cache) with the
+    tiers of every source tree; True if one of them can use it."""
+    _COMPILED.append(Path(path))
+    return any([tiers.add_compiled_dir(path) for tiers in _TIERS.values()])
 
 
 def codegen_description(codegen=None):
@@ -199,12 +234,11 @@ def codegen_description(codegen=None):
 
 def kernel_subpath(py_file):
     """Directory of a kernel's entries relative to a cache directory: its source's package path (the same
-    for every copy of the sources), or numba's hashed name for a file outside the package root."""
+    for every copy of the sources), or numba's hashed name for a file outside any package."""
     path = Path(py_file).resolve()
-    try:
-        return path.parent.relative_to(_ROOT).as_posix()
-    except ValueError:
+    if not (path.parent / "__init__.py").is_file():
         return caching._CacheLocator.get_suitable_cache_subpath(str(path))
+    return path.parent.relative_to(source_root(path)).as_posix()
 
 
 class _Locator(caching._CacheLocator):
@@ -226,7 +260,7 @@ class _Locator(caching._CacheLocator):
 
     @classmethod
     def from_function(cls, py_func, py_file):
-        return cls(py_func, py_file, TIERS.write)
+        return cls(py_func, py_file, tiers_for(py_file).write)
 
 
 class _CacheImpl(caching.CompileResultCacheImpl):
@@ -243,7 +277,7 @@ class KernelCache(caching.FunctionCache):
     def _index_files(self):
         base, stamp = self._impl.filename_base, self._impl.locator.get_source_stamp()
         py_file = self._impl.locator._py_file
-        for directory, magic in TIERS.read:
+        for directory, magic in tiers_for(py_file).read:
             path = Path(directory) / kernel_subpath(py_file)
             yield caching.IndexDataCacheFile(cache_path=str(path), filename_base=base, source_stamp=stamp), magic
 
@@ -266,7 +300,8 @@ class KernelCache(caching.FunctionCache):
         try:
             super()._save_overload(sig, data)
         except OSError as error:  # the directory went away or became read-only: compiled, not kept
-            logger.warning("bearing_fmu: cannot save a compiled kernel to %s (%s)", TIERS.write, error)
+            where = self._impl.locator.get_cache_path()
+            logger.warning("bearing_fmu: cannot save a compiled kernel to %s (%s)", where, error)
 
 
 def kernel(function=None, **overrides):

@@ -19,6 +19,18 @@ from dataclasses import dataclass
 
 import numpy as np
 
+# Order of magnitude of a typical value of a Real input by unit (FMI `nominal`, used by masters to scale
+# tolerances): spindle speeds of 1e3-1e4 rpm, bearing loads of kN, moments of N.m to tens of N.m,
+# ring displacements and clearance changes of micrometres, tilts of milliradians, temperatures about
+# 300 K, ring heat of tens to hundreds of watts, axial stiffness of 1e8 N/m. A declaration's `nominal`
+# takes precedence.
+TYPICAL_MAGNITUDE = {"rad/s": 1e3, "N": 1e3, "N.m": 10.0, "m": 1e-5, "rad": 1e-3, "K": 300.0, "W": 100.0}
+TYPICAL_MAGNITUDE |= {"N/m": 1e8, "1": 1.0}
+
+# Static bounds shared by the bearing and the thermal FMUs (declared ranges of speed and load inputs)
+OMEGA_MAX = 1e5  # rad/s (~955 000 rpm): d_m n = 4e6 mm.rpm is reached below it by any bearing with d_m >= 5 mm
+LOAD_MAX = 1e8  # N: far beyond any ball bearing (the largest slewing ball bearings: C0 of order 1e7 N)
+
 
 class InputError(ValueError):
     """An input or parameter value is outside its allowed range (message names it and the range)."""
@@ -38,6 +50,7 @@ class Variable:
     max: float = None
     limits: str = ""  # why these bounds (shown in the documentation and in refusals)
     choices: tuple = ()  # allowed values of a String parameter; () = any (e.g. a catalogue name or path)
+    nominal: float = None  # typical magnitude of a Real input (FMI nominal); None = TYPICAL_MAGNITUDE[unit]
 
     def enabled(self, scene):
         """True if this variable exists in `scene` (its option is on and the scene's drive is listed)."""
@@ -75,6 +88,14 @@ class Variable:
             return
         allowed = ", ".join(repr(c) for c in self.choices) if self.choices else "a non-empty name or path"
         raise InputError(f"{self.name} = {value!r} is not allowed: allowed values {allowed}")
+
+    def typical(self):
+        """The order of magnitude of a typical value (FMI `nominal` of a Real input)."""
+        if self.nominal is not None:
+            return self.nominal
+        if self.unit not in TYPICAL_MAGNITUDE:
+            raise KeyError(f"{self.name}: no typical magnitude for unit {self.unit!r}: declare its nominal")
+        return TYPICAL_MAGNITUDE[self.unit]
 
     def start_in(self, scene):
         """Start value in `scene` (outputs: None, they start from the model at the start inputs)."""

@@ -1,9 +1,10 @@
 """Build every FMU: the bearing FMUs (one per scene, bearing_fmu.build) and SpindleThermal.fmu.
 
-SpindleThermal.fmu bundles the `spindle`, `bearing_fmu` and `bearing_fmu_common` packages (the
-thermal model reads bearing files with bearing_fmu.params); next to it go the network it was built
-with, a reference result (the Python model's step response, regression data for users) and its
-variable list (<Name>.md, generated from spindle/thermal/declarations.py).
+SpindleThermal.fmu bundles `bearing_fmu_common`, the thermal model `spindle.thermal` and the bearing
+catalogue (THERMAL_BUNDLE; the thermal model reads bearing files with bearing_fmu_common.bearing_file),
+never the bearing model; next to it go the network it was built with, a reference result (the Python
+model's step response, regression data for users) and its variable list (<Name>.md, generated from
+spindle/thermal/declarations.py).
 
 `python -m spindle.build readme` rewrites the FMU variable block of README.md (between the markers
 README_BEGIN and README_END) from the same declarations; tests/fmu/test_variable_docs.py fails when
@@ -15,6 +16,7 @@ import math
 from pathlib import Path
 
 from bearing_fmu import build as bearing_build
+from bearing_fmu.fmu_files import add_documentation
 
 from .thermal.declarations import parameter_declarations
 from .thermal.fmu import SpindleThermal
@@ -42,7 +44,11 @@ def reference_inputs(model):
     return inputs
 
 
-def write_reference(path, spindle=DEFAULT_SPINDLE, axial_float=None, step=60.0, stop=3600.0):
+REFERENCE_STEP, REFERENCE_STOP = 60.0, 3600.0  # s
+
+
+def reference_rows(spindle=DEFAULT_SPINDLE, axial_float=None, step=REFERENCE_STEP, stop=REFERENCE_STOP):
+    """The reference result (rows of time and outputs, from the initialisation on) and its constant inputs."""
     model = SpindleThermalModel(spindle, axial_float=axial_float)
     inputs = reference_inputs(model)
     model.initialize(**inputs)
@@ -50,7 +56,7 @@ def write_reference(path, spindle=DEFAULT_SPINDLE, axial_float=None, step=60.0, 
     for n in range(int(round(stop / step))):
         model.step(step, **inputs)
         rows.append({"time": (n + 1) * step, **model.outputs_values()})
-    bearing_build.write_if_changed(path, bearing_build.csv_text(rows, lambda v: repr(float(v))))
+    return rows, inputs
 
 
 def compile_runs(network, axial_float, step=60.0):
@@ -68,6 +74,15 @@ def compile_runs(network, axial_float, step=60.0):
 # the axial-float inputs (axial reaction and stiffness of each bearing), which a spring-preloaded
 # spindle does not need (what a scene does not need is not exposed: docs/architecture.md, scenes).
 THERMAL_FMUS = {"SpindleThermal": (DEFAULT_SPINDLE, False), "SpindleThermalFixed": (DEFAULT_SPINDLE, True)}
+# What a thermal FMU carries: the shared package, the thermal model (not the rest of `spindle`: the master,
+# the command line) and the bearing catalogue its networks name (spindle.thermal.model.BEARING_CATALOGUES).
+# No bearing model: the host needs numpy and numba only, not scipy (docs/fmu_runtime.md).
+THERMAL_BUNDLE = (
+    (bearing_build.COMMON_DIR, "bearing_fmu_common"),
+    (SPINDLE_DIR / "__init__.py", "spindle/__init__.py"),
+    (SPINDLE_DIR / "thermal", "spindle/thermal"),
+    (bearing_build.PACKAGE_DIR / "params" / "bearings", "spindle/thermal/bearings"),
+)
 
 
 def build_thermal_fmu(name, network, axial_float, out_dir=DEFAULT_OUT):
@@ -76,15 +91,20 @@ def build_thermal_fmu(name, network, axial_float, out_dir=DEFAULT_OUT):
         "spindle.thermal.fmu",
         "SpindleThermal",
         out_dir,
-        package_dirs=(bearing_build.PACKAGE_DIR, bearing_build.COMMON_DIR, SPINDLE_DIR),
+        bundle=THERMAL_BUNDLE,
         body=f"default_network = {network!r}\n    axial_float = {axial_float!r}",
         runs=compile_runs(network, axial_float),
+        experiment=(REFERENCE_STOP, REFERENCE_STEP),
     )
+    rows, inputs = reference_rows(network, axial_float)
+    reference = bearing_build.csv_text(rows, lambda v: repr(float(v)))
+    markdown = bearing_build.variables_markdown(*thermal_variables(name))
     bearing_build.write_if_changed(Path(out_dir) / f"{name}_network.toml", network_path(network).read_text())
-    write_reference(Path(out_dir) / f"{name}_ref.csv", network, axial_float)
-    bearing_build.write_if_changed(
-        Path(out_dir) / f"{name}.md", bearing_build.variables_markdown(*thermal_variables(name))
-    )
+    bearing_build.write_if_changed(Path(out_dir) / f"{name}_ref.csv", reference)
+    bearing_build.write_if_changed(Path(out_dir) / f"{name}.md", markdown)
+    held = [{"time": 0.0, **inputs}, {"time": REFERENCE_STOP, **inputs}]  # constant over the experiment
+    in_csv = bearing_build.csv_text(held, lambda v: repr(float(v)))
+    add_documentation(path, name, markdown, in_csv, reference, REFERENCE_STOP, REFERENCE_STEP)
     return path
 
 
@@ -152,7 +172,7 @@ def readme_block():
             f"| [`{name}.fmu`](fmus/{name}.md) | {_summary(name, scene)} | {_names(inputs)} "
             f"| {_names(outputs, units=False)} | {_names(parameters)} |"
         )
-    lines.append(README_END)
+    lines += ["", bearing_build.COMMA_NAMES_NOTE, README_END]
     return "\n".join(lines)
 
 

@@ -51,12 +51,15 @@ class CheckResult:
 
 
 def reference_table(path):
-    """The reference CSV as (column names, {name: float array})."""
+    """The reference CSV as (column names, {name: float array}); names such as K[1,2] quoted or not (a
+    native master may leave them unquoted)."""
     import csv
+
+    from .cosim.master import header_names
 
     with open(path, newline="") as fh:
         reader = csv.reader(fh)
-        names = next(reader)
+        names = header_names(next(reader))
         rows = np.array([[float(v) for v in row] for row in reader], dtype=float)
     return names, {n: rows[:, k] for k, n in enumerate(names)}
 

@@ -2,7 +2,8 @@
 
     spindle build [--out fmus]                    build every FMU (bearing scenes + SpindleThermal)
     spindle run RUNFILE [--out results] [--set KEY=VALUE ...] [--fmus DIR] [--no-plot] [--progress]
-    spindle sweep RUNFILE --param KEY --values V1,V2,... [--scheduler ADDRESS] [--workers N] [--out results]
+    spindle sweep RUNFILE --param KEY --values V1,V2,... [--scheduler ADDRESS] [--workers N] [--serial]
+                  [--set KEY=VALUE ...] [--fmus DIR] [--out results]   Dask if installed, else one after the other
     spindle info [FMU ...]                        what is built: variables, units, parameters
     spindle demo [--out results]                  the closed-loop demo run (runs/closed_loop_spring.toml)
     spindle validate [FMU|RUNFILE ...]            fmpy's validator on the FMUs; run files (.toml) checked
@@ -13,11 +14,14 @@
 
 Exit codes: 0 done; 1 error (message on stderr); 2 usage error or an FMU with validation problems;
 3 the run stopped at a limit (e.g. thermal runaway; results up to there are written); 4 `check` found an
-output differing from the reference.
+output differing from the reference; 141 (128 + SIGPIPE) the output was closed by its reader (`| head`),
+the command stopped quietly.
 """
 
 import argparse
 import json
+import os
+import signal
 import sys
 from pathlib import Path
 
@@ -28,12 +32,14 @@ RUNS = ROOT / "runs"
 FMUS = ROOT / "fmus" if IN_CHECKOUT else Path.cwd() / "fmus"
 DEMO_RUN = RUNS / "closed_loop_spring.toml"
 EXIT_OK, EXIT_ERROR, EXIT_INVALID, EXIT_LIMIT, EXIT_DIFFERS = 0, 1, 2, 3, 4
+EXIT_PIPE = 128 + signal.SIGPIPE  # the output was closed by its reader (e.g. `| head`): stopped quietly
 EXIT_CODES = f"""exit codes:
   {EXIT_OK}  done
   {EXIT_ERROR}  error (message on stderr)
   {EXIT_INVALID}  usage error, or `validate` found problems in an FMU or a run file
   {EXIT_LIMIT}  a run stopped at a limit (e.g. thermal runaway); results up to there are written
-  {EXIT_DIFFERS}  `check`: an FMU's output differs from its reference (the variable is named)"""
+  {EXIT_DIFFERS}  `check`: an FMU's output differs from its reference (the variable is named)
+  {EXIT_PIPE}  the output was closed by its reader (e.g. `spindle info | head`): stopped quietly"""
 
 
 def _value(text):
@@ -75,7 +81,8 @@ def cmd_run(args):
     from .cosim.master import run
     from .cosim.runfile import load_run
 
-    spec = load_run(args.runfile, _overrides(args.set), fmu_dir=args.fmus)
+    overrides = _overrides(args.set)
+    spec = load_run(args.runfile, overrides, fmu_dir=args.fmus)
     missing = sorted({inst.fmu for inst in spec.instances.values() if not Path(inst.fmu).is_file()})
     if missing:
         print(
@@ -88,14 +95,15 @@ def cmd_run(args):
     out.mkdir(parents=True, exist_ok=True)
     stem = Path(args.runfile).stem
     csv_path = out / f"{stem}.csv"
-    # rows go to the CSV as the run goes (memory flat in run length); the plot reads the file
+    # rows go to the CSV as the run goes (memory flat in run length); the plot reads the file row by row
     result = run(spec, progress=args.progress, record_interval=args.record_interval, csv_path=csv_path)
-    written = [csv_path]
+    written = [csv_path, _write_run_record(out / f"{stem}.run.json", args.runfile, spec, overrides, result)]
     if not args.no_plot:
         try:
-            from .cosim.plots import plot_run
+            from .cosim.plots import plot_run, plot_title
 
-            written.append(plot_run(result, out / f"{stem}.png", title=f"{stem}: {spec.description}"))
+            title = plot_title(stem, spec.description, overrides)
+            written.append(plot_run(result, out / f"{stem}.png", title=title))
         except ImportError as exc:  # matplotlib is the optional extra `plot`
             print(f"plot skipped ({exc}): pip install 'bearing-fmu[plot]' for the PNG", file=sys.stderr)
     print(
@@ -109,13 +117,55 @@ def cmd_run(args):
     return 0
 
 
+def _write_run_record(path, runfile, spec, overrides, result):
+    """The side-car of a run's CSV (<stem>.run.json): which run file, with which --set overrides, produced it,
+    so a result never passes for the run file's own case (a 6000 rpm run of a 10 000 rpm file)."""
+    from bearing_fmu import __version__
+
+    record = {
+        "run_file": str(Path(runfile).resolve()),
+        "description": spec.description,
+        "overrides": overrides,
+        "start": spec.start,
+        "stop": spec.stop,
+        "step": spec.step,
+        "algorithm": spec.algorithm,
+        "status": result.status,
+        "message": result.message,
+        "steps": result.n_steps,
+        "version": __version__,
+    }
+    Path(path).write_text(json.dumps(record, indent=2) + "\n")
+    return path
+
+
 def cmd_sweep(args):
-    from .cosim.sweep import sweep, write_table
+    from .cosim.runfile import load_run
+    from .cosim.sweep import DaskMissing, sequential, sweep, write_table
 
     values = [_value(v) for v in args.values.split(",") if v.strip()]
-    rows = sweep(
-        args.runfile, args.param, values, scheduler=args.scheduler, n_workers=args.workers, extra=_overrides(args.set)
-    )
+    extra = _overrides(args.set)
+    # an unreadable run file or a bad [run] key: one message before any run, not one failed row per point
+    load_run(args.runfile, {**extra, args.param: values[0]} if values else extra, fmu_dir=args.fmus)
+    try:
+        if args.serial:
+            raise DaskMissing("--serial")
+        rows = sweep(
+            args.runfile,
+            args.param,
+            values,
+            scheduler=args.scheduler,
+            n_workers=args.workers,
+            extra=extra,
+            fmu_dir=args.fmus,
+        )
+    except DaskMissing as exc:
+        if args.scheduler is not None:  # a cluster was asked for: running here instead would surprise
+            print(f"spindle sweep: {exc}; --scheduler needs it", file=sys.stderr)
+            return EXIT_ERROR
+        if not args.serial:
+            print(f"spindle sweep: {exc}; running the {len(values)} points one after the other here", file=sys.stderr)
+        rows = sequential(args.runfile, args.param, values, extra=extra, fmu_dir=args.fmus)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     path = out / f"{Path(args.runfile).stem}_sweep_{args.param.replace('.', '_')}.csv"
@@ -255,16 +305,28 @@ def cmd_export_ssp(args):
     return EXIT_OK
 
 
-def main(argv=None):
-    from bearing_fmu import __version__
+class _Version(argparse.Action):
+    """--version: imports bearing_fmu (the one place of the version) only when asked, so that a command that
+    runs FMUs leaves each bearing FMU its own bundled package (docs/fmu_runtime.md, "The master")."""
 
+    def __init__(self, option_strings, dest, **kwargs):
+        super().__init__(option_strings, dest, nargs=0, help="show the version and exit")
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        from bearing_fmu import __version__
+
+        print(f"{parser.prog} {__version__}")
+        parser.exit()
+
+
+def main(argv=None):
     parser = argparse.ArgumentParser(
         prog="spindle",
         description="bearing/spindle co-simulation tools",
         epilog=EXIT_CODES,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
-    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    parser.add_argument("--version", action=_Version)
     sub = parser.add_subparsers(dest="command", required=True)
     raw = argparse.RawDescriptionHelpFormatter
     p = sub.add_parser("build", help=f"build every FMU into {FMUS}")
@@ -290,7 +352,10 @@ def main(argv=None):
         help="record every this many seconds (a multiple of the step; default every step)",
     )
     p = sub.add_parser(
-        "sweep", help="many runs of a run file on Dask; one table", epilog=EXIT_CODES, formatter_class=raw
+        "sweep",
+        help="many runs of a run file on Dask (without dask: one after the other); one table",
+        epilog=EXIT_CODES,
+        formatter_class=raw,
     )
     p.add_argument("runfile")
     p.add_argument("--param", required=True, help="dotted key, e.g. bearing_1.F_z or run.step")
@@ -298,6 +363,13 @@ def main(argv=None):
     p.add_argument("--set", action="append", metavar="KEY=VALUE", help="fixed overrides for every run")
     p.add_argument("--scheduler", default=None, help="address of a Dask scheduler (default: local cluster)")
     p.add_argument("--workers", type=int, default=2, help="local cluster worker processes")
+    p.add_argument("--fmus", default=None, metavar="DIR", help="folder of the FMUs the run file names")
+    p.add_argument(
+        "--serial",
+        action="store_true",
+        help="run the points one after the other in this process, without Dask (also what happens, with a "
+        "note, when dask is not installed and no --scheduler is given)",
+    )
     p.add_argument("--out", default="results")
     p = sub.add_parser("info", help="what the FMUs expose")
     p.add_argument("fmus", nargs="*")
@@ -346,8 +418,17 @@ def main(argv=None):
 
 
 def run():
-    """Console-script entry `spindle`: main()'s return value is the exit code."""
-    sys.exit(main())
+    """Console-script entry `spindle`: main()'s return value is the exit code. A reader that closes the output
+    early (`spindle info | head`) ends the command quietly, as it ends a Unix tool: no traceback, exit status
+    128 + SIGPIPE (the shell's status of a tool stopped by SIGPIPE)."""
+    try:
+        code = main()
+        sys.stdout.flush()  # a closed pipe shows here rather than at interpreter exit
+    except BrokenPipeError:
+        # Python would flush stdout again at exit and report the closed pipe: point it at /dev/null first
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        code = EXIT_PIPE
+    sys.exit(code)
 
 
 if __name__ == "__main__":

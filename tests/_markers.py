@@ -7,8 +7,12 @@
 
 `slow` marks the tests listed in SLOW (more than ~10 s each on the 2-core reference machine: fresh
 processes, hour-long closed loops, a Dask cluster, speed sweeps), kept here beside the folder rule so
-every selection is decided in one place. The quick loop while editing kernels and models is
-`pytest -m "not slow and not fmu and not cosim"` (about a minute); `make test` runs everything.
+every selection is decided in one place. `bare_host` marks the tests listed in BARE_HOST, which set up a
+host environment of their own with pip (a virtual environment with only fmpy, numpy and numba: about a
+minute with pip's cache, and registry access): `make test` leaves them out, `make test-bare-host` runs
+them; likewise `ehl_full` (the numerical EHL solver on all 55 Annexe D cases) and `make test-ehl-full`.
+The quick loop while editing kernels and models is `pytest -m "not slow and not fmu and not cosim"`
+(about a minute); `make test` runs everything else.
 """
 
 from pathlib import Path
@@ -17,6 +21,7 @@ FOLDER_MARKERS = {"fmu": "fmu", "cosim": "cosim", "validation": "validation", "s
 SLOW = {  # test file -> test function names (every parametrisation of them)
     "tests/fmu/test_bearing_analytic_fmu.py": {"test_thirty_fresh_processes_exit_cleanly"},
     "tests/fmu/test_fuzz.py": {"test_fuzz_full"},
+    "tests/fmu/test_native_runtime.py": {"test_a_hundred_native_hosts_set_up_two_fmus_from_two_threads"},
     "tests/cosim/test_closed_loop.py": {
         "test_fixed_6000_preload_rises_with_temperature_and_settles",
         "test_fixed_10000_runs_away_and_stops_with_a_message",
@@ -25,6 +30,16 @@ SLOW = {  # test file -> test function names (every parametrisation of them)
     "tests/cosim/test_libcosim_master.py": {"test_fresh_processes_exit_0"},
     "tests/cosim/test_teardown.py": {"test_fresh_processes_exit_0_through_the_normal_teardown"},
     "tests/validation/test_quasistatic_literature.py": {"test_controlling_race_split_is_discontinuous_in_speed"},
+    "tests/validation/test_ehl_annexe_d.py": {"test_grid_convergence_is_second_order_and_level_2_within_2_percent"},
+    "tests/stability/test_large_free_angle_grid.py": {
+        "test_every_grid_point_converges_or_is_refused_for_a_physical_reason"
+    },
+}
+# the numerical EHL solver on all 55 Annexe D cases (about 20 min): `make test-ehl-full`, outside `make test`;
+# its heavy-load cases do not converge yet (docs/ehl_solver.md), so this is the solver's open acceptance
+EHL_FULL = {"tests/validation/test_ehl_annexe_d.py": {"test_every_case_matches_annexe_d"}}
+BARE_HOST = {  # test file -> test function names that build a pip environment of their own
+    "tests/fmu/test_bare_host.py": {"test_thermal_fmu_runs_in_a_host_with_only_fmpy_numpy_numba"},
 }
 
 
@@ -38,5 +53,12 @@ def pytest_collection_modifyitems(config, items):
         if marker:
             item.add_marker(getattr(pytest.mark, marker))
         name = getattr(item, "originalname", item.name)
-        if name in SLOW.get(path.relative_to(root).as_posix(), ()):
+        relative = path.relative_to(root).as_posix()
+        if name in SLOW.get(relative, ()):
             item.add_marker(pytest.mark.slow)
+        if name in EHL_FULL.get(relative, ()):
+            item.add_marker(pytest.mark.slow)
+            item.add_marker(pytest.mark.ehl_full)
+        if name in BARE_HOST.get(relative, ()):
+            item.add_marker(pytest.mark.slow)
+            item.add_marker(pytest.mark.bare_host)

@@ -29,6 +29,7 @@ SRC_D = 1  # the solver's displacements
 SRC_F = 2  # the solver's reactions
 SRC_K = 3  # the stiffness matrix, flattened row by row
 SRC_BALL_SET = 4  # the ball-set summary below (BS_*)
+SRC_TRUNC = 5  # the shoulder truncation of the contact ellipses (kernels.truncation TR_*)
 # the ball-set summary
 BS_ALPHA_I = 0  # inner contact angle of the most loaded ball (rad)
 BS_ALPHA_O = 1  # outer contact angle of the most loaded ball (rad)
@@ -78,7 +79,7 @@ def ball_set_summary(balls, omega, iterations, summary):
 
 
 @kernel
-def quasi_static_outputs(balls, omega, iterations, out, d, F, K_flat, source, index, summary, values):
+def quasi_static_outputs(balls, omega, iterations, out, d, F, K_flat, trunc, source, index, summary, values):
     """Fill values[k] = (source array source[k])[index[k]] for every output slot k (SRC_* codes), after
     ball_set_summary(); returns the first slot whose value is not finite, -1 if every value is."""
     ball_set_summary(balls, omega, iterations, summary)
@@ -93,6 +94,8 @@ def quasi_static_outputs(balls, omega, iterations, out, d, F, K_flat, source, in
             v = F[i]
         elif code == SRC_K:
             v = K_flat[i]
+        elif code == SRC_TRUNC:
+            v = trunc[i]
         else:
             v = summary[i]
         values[k] = v

@@ -167,13 +167,16 @@ _H_CSTEP = 1e-30  # complex-step increment: exact derivatives, no subtraction er
 _BALL_MAXIT = 60
 _BALL_RTOL = 1e-13  # ball residual relative to its loads plus the bearing-level load per ball (_ball_newton)
 _BALL_TRIES = 8  # step halvings of the ball line search (down to 1/128): bounds the cost of a bad start
-_LOADS_TRIES = 12  # step halvings of the global line search (down to 1/2048)
+_TR_RADIUS = 0.05  # first trust radius of the global solve, in groove clearances A: the full Newton step inside it
+_TR_COLLAPSE = 1e-12  # trust radius (in A) below which the region has collapsed on a discontinuity of the loads
+_LOADS_TRIES = 12  # step halvings of the last-resort damped Newton (down to 1/2048)
+_TR_ACCEPT = 1e-4  # a trial is taken when the unbalanced load does at least this share of the predicted work
 _F_FLOOR = 1e-3  # N: load scale of a bearing with no applied load (global and ball convergence tests)
 
 
 def line_search(residual_at):
-    """The damping of both Newton iterations of this module (ball position, ring displacements): a kernel
-    search(x, step, res, tries, args) -> (lam, residual) that tries x + lam step for lam = 1, 1/2, 1/4, ...
+    """The damping of the ball's Newton iteration (_ball_newton) and of the global last resort (_damped_newton):
+    a kernel search(x, step, res, tries, args) -> (lam, residual) that tries x + lam step for lam = 1, 1/2, 1/4, ...
     (`tries` times) until the residual norm residual_at(x, lam, step, args) falls below res, and takes the
     full step when none does (a plateau where no contact carries load: the norm is flat there). The
     evaluation of the returned step is the last one made, so its side effects (work arrays) are current.
@@ -768,7 +771,7 @@ def _solve_small(Kr, R, n, out):
 
 @kernel
 def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
-    """Global equilibrium by damped Newton with the analytic Jacobian.
+    """Global equilibrium by trust-region Newton with the analytic Jacobian (_global_newton).
 
     F_applied (5): loads (N, N.m) on the load-controlled DOFs; control (5): 1 = load-controlled,
     0 = displacement-controlled (d holds the imposed value); d (5, m and rad): warm start, solution
@@ -786,7 +789,14 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
     stiffness = qs[QS_STIFFNESS] > 0.5
     J = np.empty((5, 5))  # Newton matrix: the stiffness of the current iterate
     contact = np.empty((CS_SIZE, int(qs[QS_Z])))
+    d_start = d.copy()
+    X_start = X.copy()
     status, it, res = _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, stiffness or n > 0)
+    if status != QS_OK and n > 0:
+        d[:] = d_start
+        X[:, :] = X_start
+        status, more, res = _damped_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, True)
+        it += more + 1
     ball_outputs(omega, qs, X, contact, balls)
     if stiffness:
         K[:, :] = J
@@ -794,25 +804,23 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
 
 
 @kernel
-def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacobian):
-    """Damped Newton on the loads of the n load-controlled DOFs idx[:n] (solve_quasistatic's loop).
-
-    J (5x5) is assembled at every evaluation when `jacobian` (needed whenever n > 0); the last
-    evaluation is always that of the returned d, so F, J, contact and X belong to the solution."""
+def _newton_settings(qs, dPd):
+    """(A (m), tolerance, iteration cap, DOF scales (rotations as arc lengths at Rr, moments as forces), the
+    stiffness floor that regularises a bearing with no loaded ball) of the ring's Newton solvers."""
     A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
-    tol = qs[QS_TOL]
-    maxit = int(qs[QS_MAXIT])
-    scale = np.array([1.0, 1.0, 1.0, Rr, Rr])  # rotations as arc lengths at Rr, moments as forces
+    scale = np.array([1.0, 1.0, 1.0, Rr, Rr])
     K_s = (qs[QS_K_I] ** (-2.0 / 3.0) + qs[QS_K_O] ** (-2.0 / 3.0)) ** -1.5
-    k_floor = 1e-6 * K_s * math.sqrt(1e-3 * qs[QS_D])  # regularises a bearing with no loaded ball
-    step_cap = 0.05 * A
-    Kr = np.empty((5, 5))
-    R = np.empty(5)
-    Rw = np.empty(5)
-    step = np.empty(5)
-    d_try = np.empty(5)
+    return A, qs[QS_TOL], int(qs[QS_MAXIT]), scale, 1e-6 * K_s * math.sqrt(1e-3 * qs[QS_D])
+
+
+@kernel
+def _newton_start(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacobian, scale, d_try):
+    """The first evaluation of the ring's Newton solvers at d (from the free-ring start when it applies):
+    returns (X_try, status, f_ref, loads, ball_status, res): the trial ball states, the worst ball status of the
+    last evaluation with the count of evaluations after the first (status[0], status[1]), the bearing-level load
+    scale, the arguments of _loads_residual_at, the ball status and the scaled residual at d."""
+    A1_0 = qs_geometry(qs, dPd)[3]
     X_try = X.copy()
-    # worst ball status of the last evaluation, bearing evaluations after the first (the work reported)
     status = np.zeros(2, np.int64)
     f_ref = _F_FLOOR
     for i in range(n):
@@ -823,6 +831,128 @@ def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
         ball_status = ring_loads(d, qs, dPd, omega, X, F, J, contact, jacobian, f_ref)
         status[1] += 1
     res = _residual_norm(F_applied, F, idx, n, scale)
+    return X_try, status, f_ref, loads, ball_status, res
+
+
+@kernel
+def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacobian):
+    """Trust-region Newton on the loads of the n load-controlled DOFs idx[:n] (solve_quasistatic's loop;
+    docs/quasistatic.md section 3).
+
+    Each iteration tries the Newton step first and takes it whole when it lies inside the trust region;
+    otherwise a dogleg step (_dogleg) between the Newton step and the steepest descent of the ring's
+    potential energy (the unbalanced load itself). A trial is taken when the unbalanced load does at least
+    _TR_ACCEPT of the work the quadratic model predicts along it (at rest: the potential energy falls), or
+    when it lowers the largest load error (plain damped Newton's rule, so that the globalisation changes
+    nothing where Newton converges); otherwise the region shrinks and the iteration tries again. A region
+    that collapses (_TR_COLLAPSE) sits on a discontinuity of the loads: the Newton step, capped at the
+    first radius, crosses it. J (5x5) is assembled at every evaluation
+    when `jacobian` (needed whenever n > 0). On success the last evaluation is that of the returned d, so
+    F, J, contact and X belong to the solution; a failed solve leaves them at its last trial."""
+    A, tol, maxit, scale, k_floor = _newton_settings(qs, dPd)
+    radius = _TR_RADIUS * A  # trust radius (m, scaled DOFs); the first trial is the full Newton step inside it
+    Kr = np.empty((5, 5))
+    Ks = np.empty((5, 5))  # symmetric part of the regularised Newton matrix: the curvature of the model
+    R = np.empty(5)
+    g = np.empty(5)  # scaled unbalanced load at the iterate (N): minus the gradient of the potential energy
+    Rw = np.empty(5)  # Newton step (m, scaled DOFs)
+    p = np.empty(5)  # trial step (m, scaled DOFs)
+    step = np.empty(5)
+    d_try = np.empty(5)
+    X_try, status, f_ref, loads, ball_status, res = _newton_start(
+        F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacobian, scale, d_try
+    )
+    for it in range(maxit + 1):
+        if not math.isfinite(res):
+            return QS_NOT_FINITE, status[1], res
+        if res <= tol * max(f_ref, _mean_ball_load(contact)) or n == 0:
+            return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), status[1], res
+        if it == maxit:
+            break
+        kmax = 0.0
+        for a in range(n):
+            kmax = max(kmax, J[idx[a], idx[a]] / (scale[idx[a]] ** 2))
+        for a in range(n):
+            ia = idx[a]
+            R[a] = (F_applied[ia] - F[ia]) / scale[ia]
+            g[a] = R[a]
+            for b in range(n):
+                ib = idx[b]
+                Kr[a, b] = J[ia, ib] / (scale[ia] * scale[ib])
+            Kr[a, a] += 1e-12 * kmax + k_floor
+        for a in range(n):
+            for b in range(n):
+                Ks[a, b] = 0.5 * (Kr[a, b] + Kr[b, a])
+        if not _solve_small(Kr, R, n, Rw):
+            return QS_NOT_FINITE, it, res
+        big = 0.0
+        for a in range(n):
+            big = max(big, abs(Rw[a]))
+        if big < 1e-15 * A:
+            return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), status[1], res
+        accepted = False
+        while radius >= _TR_COLLAPSE * A:
+            predicted = _dogleg(Rw, g, Ks, n, radius, p)
+            for a in range(5):
+                step[a] = 0.0
+            for a in range(n):
+                step[idx[a]] = p[a] / scale[idx[a]]
+            trial = _loads_residual_at(d, 1.0, step, loads)  # d_try, X_try, F, J, contact: at the trial
+            # work of the unbalanced load along the step (trapezoidal rule): at rest the decrease of the
+            # potential energy, to third order in the step; the model predicts it exactly when K is constant
+            work = 0.0
+            length = 0.0
+            for a in range(n):
+                ia = idx[a]
+                work += 0.5 * (g[a] + (F_applied[ia] - F[ia]) / scale[ia]) * p[a]
+                length += p[a] * p[a]
+            length = math.sqrt(length)
+            ratio = work / predicted
+            if not (ratio >= 0.25 and math.isfinite(trial)):
+                radius = 0.25 * length
+            elif ratio > 0.75 and length >= 0.99 * radius:
+                radius = min(2.0 * radius, A)
+            if (ratio > _TR_ACCEPT or trial < res) and math.isfinite(trial):
+                accepted = True
+                break
+        if not accepted:
+            # the region collapsed on a discontinuity of the loads (a ball state that jumps between branches,
+            # docs/quasistatic.md section 3): step across it with the Newton step, capped at the first radius,
+            # and start afresh from there
+            f = min(1.0, _TR_RADIUS * A / math.sqrt(_sum_squares(Rw, n)))
+            for a in range(5):
+                step[a] = 0.0
+            for a in range(n):
+                step[idx[a]] = f * Rw[a] / scale[idx[a]]
+            trial = _loads_residual_at(d, 1.0, step, loads)
+            radius = _TR_RADIUS * A
+        res = trial
+        for a in range(5):
+            d[a] = d_try[a]
+        X[:, :] = X_try
+        ball_status = status[0]
+    return QS_NOT_CONVERGED, status[1], res
+
+
+@kernel
+def _damped_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacobian):
+    """Damped Newton on the loads of the n load-controlled DOFs idx[:n]: solve_quasistatic's last resort when
+    the trust region (_global_newton) fails. The step is capped at 0.05 A and backtracked on the largest load
+    error, and taken whole when no cut lowers it: on a discontinuity of the loads (a hybrid moment share that
+    jumps, a ball state that jumps between branches) this sometimes lands where the trust region stops.
+
+    J (5x5) is assembled at every evaluation when `jacobian` (needed whenever n > 0); the last
+    evaluation is always that of the returned d, so F, J, contact and X belong to the solution."""
+    A, tol, maxit, scale, k_floor = _newton_settings(qs, dPd)
+    step_cap = 0.05 * A
+    Kr = np.empty((5, 5))
+    R = np.empty(5)
+    Rw = np.empty(5)
+    step = np.empty(5)
+    d_try = np.empty(5)
+    X_try, status, f_ref, loads, ball_status, res = _newton_start(
+        F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacobian, scale, d_try
+    )
     for it in range(maxit + 1):
         if not math.isfinite(res):
             return QS_NOT_FINITE, status[1], res
@@ -861,6 +991,79 @@ def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
 
 
 @kernel
+def _dogleg(newton, g, Ks, n, radius, p):
+    """Dogleg step p[:n] (m, scaled DOFs) of the trust region of the given radius (m) for the model
+    m(p) = -g.p + p.Ks.p / 2 of the potential energy (g: scaled unbalanced load, N; Ks: symmetric
+    curvature, N/m; newton: the Newton step, m). Returns the model's predicted decrease -m(p) > 0 (N.m).
+
+    The Newton step when it lies inside the region; otherwise the point where the path from the Cauchy
+    point (the model's minimum along g) to the Newton step leaves the region, or the boundary along g
+    when the Cauchy point already lies outside it (Nocedal & Wright 2006, Numerical Optimization,
+    section 4.1). Where that path does not decrease the model (a Newton matrix that is not positive
+    definite, at speed), the step is the Cauchy point itself, which always does."""
+    gg = 0.0
+    nn = 0.0
+    for a in range(n):
+        gg += g[a] * g[a]
+        nn += newton[a] * newton[a]
+    gKg = 0.0
+    for a in range(n):
+        for b in range(n):
+            gKg += g[a] * Ks[a, b] * g[b]
+    g_norm = math.sqrt(gg)
+    # the Cauchy point's distance along g (m): the model's minimum, or the boundary
+    t_c = radius if gKg <= 0.0 else min(radius, g_norm * gg / gKg)
+    if nn <= radius * radius:
+        for a in range(n):
+            p[a] = newton[a]
+    elif t_c >= radius:
+        for a in range(n):
+            p[a] = radius * g[a] / g_norm
+    else:
+        # p = c + s (newton - c) with |p| = radius, c the Cauchy point, 0 < s < 1
+        cc = 0.0
+        cv = 0.0
+        vv = 0.0
+        for a in range(n):
+            c = t_c * g[a] / g_norm
+            v = newton[a] - c
+            cc += c * c
+            cv += c * v
+            vv += v * v
+        s = (-cv + math.sqrt(max(cv * cv - vv * (cc - radius * radius), 0.0))) / vv
+        for a in range(n):
+            c = t_c * g[a] / g_norm
+            p[a] = c + s * (newton[a] - c)
+    predicted = _model_decrease(g, Ks, n, p)
+    if predicted > 0.0:
+        return predicted
+    for a in range(n):
+        p[a] = t_c * g[a] / g_norm
+    return _model_decrease(g, Ks, n, p)
+
+
+@kernel(inline="always")
+def _sum_squares(v, n):
+    """Sum of the squares of v[:n]."""
+    s = 0.0
+    for a in range(n):
+        s += v[a] * v[a]
+    return s
+
+
+@kernel(inline="always")
+def _model_decrease(g, Ks, n, p):
+    """Decrease g.p - p.Ks.p / 2 (N.m) of the quadratic model of the potential energy over the step p."""
+    lin = 0.0
+    quad = 0.0
+    for a in range(n):
+        lin += g[a] * p[a]
+        for b in range(n):
+            quad += p[a] * Ks[a, b] * p[b]
+    return lin - 0.5 * quad
+
+
+@kernel
 def _free_ring_start(F_applied, idx, n, A1_0, d, contact):
     """Where the Newton on the n load-controlled DOFs idx[:n] starts when the ring is free in its
     clearance (docs/quasistatic.md section 3); contact: the contact state at the warm start d.
@@ -892,7 +1095,8 @@ def _free_ring_start(F_applied, idx, n, A1_0, d, contact):
 @kernel
 def _loads_residual_at(d, lam, step, loads):
     """Evaluate the bearing at d + lam step into d_try, X_try (from X), F, J, contact and the status of
-    `loads` (_global_newton), counting the evaluation; returns the load residual norm (N)."""
+    `loads` (_global_newton), counting the evaluation; returns the load residual norm (N): one trial of
+    the trust-region iteration."""
     F_applied, idx, n, scale, qs, dPd, omega, X, X_try, d_try, F, J, contact, jacobian, status, f_ref = loads
     for a in range(5):
         d_try[a] = d[a] + lam * step[a]

@@ -13,16 +13,19 @@ from bearing_fmu_common.variables import InputLimits, gather_plan, outputs_as_di
 
 from ..kernels import radial_bearing as ak
 from ..kernels import rating_life as rl
+from ..kernels import truncation as tk
 from ..kernels.geometry import ball_mass, curvature_radii
 from ..kernels.hertz import hertz_coefficients_approx, hertz_coefficients_exact, reduced_modulus
 from ..kernels.loaddist import gauss_legendre
 from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
+from .contacts import RaceContacts, truncation_parameters, truncation_warnings
 from .declarations import ANALYTIC_INPUTS, ANALYTIC_OUTPUTS
 from .variables import (
     DM_N_LIMIT,
     MATERIAL_LIMIT,
     InputError,
+    OilTemperatureWatch,
     check_clearance,
     material_load_limit,
     pressure_warnings,
@@ -81,6 +84,7 @@ class AnalyticModel:
         self._out = np.zeros(ak.O_SIZE)
         self.ball = np.zeros((8, b.Z))
         self.warnings = []
+        self._oil_watch = OilTemperatureWatch(self.lubricant)
         self.outputs = select(ANALYTIC_OUTPUTS, self.scene)
         self.output_names = tuple(v.name for v in self.outputs)
         self.values = np.zeros(len(self.outputs))  # outputs of the last evaluation, in self.outputs order
@@ -88,7 +92,12 @@ class AnalyticModel:
         self._life_parameters = np.zeros(rl.LP_SIZE)
         if self.scene.life:  # a radial-contact groove bearing (docs/rating_life.md)
             rl.rating_parameters(0.0, b.Z, b.D, b.dm, b.f_i, b.f_o, 0.0, self._life_parameters)
-        self._gather = gather_plan(self.outputs, {"out": self._out, "life": self._life})
+        # shoulder truncation of the contact ellipses at the groove bottom (contact angle 0, kernels.truncation)
+        self._truncation_parameters = truncation_parameters(b, self._race_contacts(), self.Pd)
+        self._angles = np.zeros((2, b.Z))
+        self._trunc = np.zeros(tk.TR_SIZE)
+        self._truncated = [False, False]  # races truncated at the last evaluation (warned on entry only)
+        self._gather = gather_plan(self.outputs, {"out": self._out, "life": self._life, "trunc": self._trunc})
         self._slot = {name: k for k, name in enumerate(self.output_names)}
 
     def _pack(self):
@@ -116,14 +125,29 @@ class AnalyticModel:
         brg[ak.B_CAPACITANCE] = 1.0 if s.capacitance else 0.0
         return brg
 
+    def _race_contacts(self):
+        """The contacts as _pack put them into the kernel's array (radial contact, the scene's Hertz coefficients)."""
+        brg = self.brg
+        return RaceContacts(
+            0.0,
+            brg[ak.B_RX_I],
+            brg[ak.B_RY_I],
+            brg[ak.B_RX_O],
+            brg[ak.B_RY_O],
+            (brg[ak.B_K_I], brg[ak.B_EE_I], brg[ak.B_KK_I]),
+            (brg[ak.B_K_O], brg[ak.B_EE_O], brg[ak.B_KK_O]),
+            brg[ak.B_E_RED],
+        )
+
     inputs = ANALYTIC_INPUTS
 
     def get_state(self):
-        """The analytic model is algebraic: no solver state beyond the FMU variables."""
-        return {}
+        """The analytic model is algebraic: no solver state beyond the FMU variables, but the races whose contact
+        ellipse was truncated at the last evaluation (their warning is logged on entry only)."""
+        return {"truncated": list(self._truncated)}
 
     def set_state(self, state):
-        pass
+        self._truncated[:] = state.get("truncated", (False, False))
 
     def check_inputs(self, omega, F_y, T_oil):
         """Raise InputError naming the first input outside its allowed range."""
@@ -161,7 +185,12 @@ class AnalyticModel:
             rl.rating_life(
                 self.ball[0], self.ball[1], abs(float(F_y)), 0.0, float(omega), self._life_parameters, self._life
             )
-        self.warnings = pressure_warnings(out[ak.O_PMAX], f"F_y = {F_y} N")
+        self.warnings = pressure_warnings(out[ak.O_PMAX], f"F_y = {F_y} N") + self._oil_watch.warnings(T_oil)
+        # ball rows 0 and 1: inner and outer contact loads, all at the groove bottom (angle 0)
+        tk.race_truncation(self.ball, 0, self._angles, 0, self._truncation_parameters, self._trunc)
+        self.warnings += truncation_warnings(
+            self._truncation_parameters, self._trunc, self.ball, 0, self._angles, 0, self._truncated
+        )
         sign = -1.0 if F_y < 0.0 else 1.0
         values, slot = self.values, self._slot
         for source, index, target in self._gather:

@@ -1,12 +1,16 @@
 """The two race contacts of a bearing as the facades pack them: the free contact angle, the reduced radii,
-the Hertz coefficients and modulus, and the contact terms the quasi-static (kernels.contacts CP_*) and DEM
-(kernels.ball_dynamics.state P_*) parameter arrays share under the same slot names."""
+the Hertz coefficients and modulus, the contact terms the quasi-static (kernels.contacts CP_*) and DEM
+(kernels.ball_dynamics.state P_*) parameter arrays share under the same slot names, and the shoulder
+truncation parameters every fidelity shares (kernels.truncation TP_*)."""
 
 import math
 from typing import NamedTuple
 
+import numpy as np
+
+from ..kernels import truncation as tk
 from ..kernels.geometry import curvature_radii, free_contact_angle
-from ..kernels.hertz import hertz_coefficients_approx, hertz_coefficients_exact, reduced_modulus
+from ..kernels.hertz import hertz_coefficients_approx, hertz_coefficients_exact, hertz_contact, reduced_modulus
 from ..kernels.torque import ALPHA_HYSTERESIS_STEEL
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES
 
@@ -65,3 +69,70 @@ def pack(array, slots, prefix, terms):
     """array[slots.<prefix><name>] = value for each term (slots: the module that names the array's slots)."""
     for name, value in terms.items():
         array[getattr(slots, prefix + name)] = value
+
+
+def groove_centre_radii(bearing, Pd):
+    """Radii (m) of the inner and outer groove-curvature-centre circles of the unloaded, centred bearing at the
+    diametral clearance Pd (m), as the quasi-static and DEM geometries place them: rho_i = d_m/2 + (f_i - 1/2) D
+    cos alpha0, rho_o = rho_i - (A - P_d/2), A = (f_i + f_o - 1) D (docs/quasistatic.md section 1)."""
+    b = bearing
+    alpha0 = free_contact_angle(b.D, b.f_i, b.f_o, Pd) if Pd > 0.0 else 0.0
+    rho_i = 0.5 * b.dm + (b.f_i - 0.5) * b.D * math.cos(alpha0)
+    return rho_i, rho_i - ((b.f_i + b.f_o - 1.0) * b.D - 0.5 * Pd)
+
+
+def truncation_parameters(bearing, rc, Pd):
+    """kernels.truncation TP_* array of `bearing` at the clearance Pd (m): per race the semi-major axis at 1 N
+    (m) of the contacts RaceContacts rc, the groove radius f D (m) and the angles (rad) of the thrust-side and
+    other shoulder edges from the groove-curvature centre. The shoulders move with their ring: a thermal
+    clearance change leaves these angles as they are."""
+    b = bearing
+    tp = np.zeros(tk.TP_SIZE)
+    rho = groove_centre_radii(b, Pd)
+    races = (
+        (rc.Rx_i, rc.Ry_i, rc.ci, b.f_i, b.shoulder_inner, b.shoulder_inner_back),
+        (rc.Rx_o, rc.Ry_o, rc.co, b.f_o, b.shoulder_outer, b.shoulder_outer_back),
+    )
+    for race, (Rx, Ry, c, f, thrust, back) in enumerate(races):
+        o = tk.TP_STRIDE * race
+        r = f * b.D
+        tp[o + tk.TP_A1] = hertz_contact(1.0, Rx, Ry, rc.E_red, *c)[0]
+        tp[o + tk.TP_R] = r
+        tp[o + tk.TP_THRUST] = tk.shoulder_angle(rho[race], r, thrust, race)
+        tp[o + tk.TP_BACK] = tk.shoulder_angle(rho[race], r, back, race)
+    return tp
+
+
+RACES = ("inner", "outer")
+
+
+def truncation_warnings(tp, tr, loads, load_row, angles, angle_row, truncated):
+    """Warnings for the races whose contact ellipse has just become truncated by a shoulder (kernels.truncation:
+    tr[TR_*] filled by race_truncation from the same loads and signed angles): one per entry, naming the race,
+    the ball, its contact angle, where its ellipse reaches and the shoulder it passes. truncated: list of two
+    booleans, the races truncated at the previous evaluation, updated in place (a race leaving truncation is
+    warned again at its next entry)."""
+    inner, outer = float(tr[tk.TR_INNER]), float(tr[tk.TR_OUTER])
+    if inner == 0.0 and outer == 0.0 and not (truncated[0] or truncated[1]):  # the usual case, at every step
+        return []
+    warnings = []
+    for race, t in enumerate((inner, outer)):
+        if t > 0.0 and not truncated[race]:
+            o = tk.TP_STRIDE * race
+            j = int(tr[tk.TR_BALL_INNER + race])
+            alpha = float(angles[angle_row + race, j])
+            a = tp[o + tk.TP_A1] * float(loads[load_row + race, j]) ** (1.0 / 3.0)
+            theta = math.asin(min(1.0, a / tp[o + tk.TP_R]))  # the semi-major axis seen from the groove centre
+            thrust, back = tp[o + tk.TP_THRUST], tp[o + tk.TP_BACK]
+            if thrust - alpha <= back + alpha:  # the nearer edge (in angle) is the one passed
+                side, edge, limit = "thrust-side", alpha + theta, thrust
+            else:
+                side, edge, limit = "other", alpha - theta, -back
+            warnings.append(
+                f"contact ellipse truncated by the {RACES[race]} ring's {side} shoulder: ball {j + 1}'s {RACES[race]} "
+                f"contact at {math.degrees(alpha):.1f} deg reaches {math.degrees(edge):.1f} deg, past the shoulder "
+                f"edge at {math.degrees(limit):.1f} deg ({100.0 * t:.3g} % of the semi-major axis beyond it); its "
+                f"load, stresses and film are computed as if the groove went on (output truncation_{RACES[race]})"
+            )
+        truncated[race] = t > 0.0
+    return warnings

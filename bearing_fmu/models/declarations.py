@@ -25,6 +25,7 @@ from ..kernels import bearing_outputs as bo
 from ..kernels import contacts as ck
 from ..kernels import radial_bearing as ak
 from ..kernels import rating_life as rl
+from ..kernels import truncation as tk
 from ..kernels.ball_dynamics import state as ds
 from .variables import (
     GROOVE_MAX,
@@ -112,6 +113,23 @@ LIFE_OUTPUTS = (
     ),
 )
 CAPACITANCE = "electrical capacitance of the bearing (balls in parallel)"
+# shoulder truncation of the contact ellipse (kernels.truncation; the shoulders of the bearing file)
+TRUNCATION = (
+    "part of the contact ellipse's major axis beyond the {0} ring's shoulder edge, in semi-major axes, for the "
+    "most truncated loaded {0} contact{1}: 0 none, 1 the contact centre on the edge, 2 the whole ellipse beyond; "
+    "a warning is logged on entry (load, stresses and film are computed as if the groove went on)"
+)
+
+
+def truncation_outputs(source, words=""):
+    """truncation_inner, truncation_outer (-) from the array named `source` (kernels.truncation TR_* slots);
+    `words` says when they are evaluated."""
+    return tuple(
+        Variable(f"truncation_{race}", "1", TRUNCATION.format(race, words), source=(source, slot))
+        for race, slot in (("inner", tk.TR_INNER), ("outer", tk.TR_OUTER))
+    )
+
+
 H_C = "central film thickness of the most loaded {} contact (0 if none; what capacitance film measurements report)"
 # speeds: every angular speed is about the bearing axis in the fixed frame (outer ring) unless it says otherwise
 BALL_CAGE = (
@@ -158,6 +176,7 @@ ANALYTIC_OUTPUTS = (
         "Q_max_outer", "N", "largest outer contact load (includes centrifugal force)", source=("out", ak.O_QMAX_O)
     ),
     Variable("p_max", "Pa", "largest Hertz contact pressure", source=("out", ak.O_PMAX)),
+    *truncation_outputs("trunc", " (contacts at the groove bottom)"),
     Variable(
         "omega_cage",
         "rad/s",
@@ -383,6 +402,7 @@ QUASI_STATIC_OUTPUTS = (
     ),
     Variable("alpha_inner", "rad", "inner contact angle of the most loaded ball", source=("ball_set", bo.BS_ALPHA_I)),
     Variable("alpha_outer", "rad", "outer contact angle of the most loaded ball", source=("ball_set", bo.BS_ALPHA_O)),
+    *truncation_outputs("trunc"),
     Variable(
         "omega_cage",
         "rad/s",
@@ -412,7 +432,7 @@ QUASI_STATIC_OUTPUTS = (
     Variable(
         "iterations",
         "1",
-        "work of the last solve: bearing evaluations after the first (Newton iterations plus cut line-search steps)",
+        "work of the last solve: bearing evaluations after the first (trust-region trials of the Newton iteration)",
         "integer",
         source=("ball_set", bo.BS_ITERATIONS),
     ),
@@ -483,7 +503,12 @@ DEM_INPUTS = (
 
 DEM_OUTPUTS = (
     *(
-        _dem_output(name, ("ring", ds.R_X + i), f"{DOF_WORDS[i]} of the inner ring at the end of the step")
+        _dem_output(
+            name,
+            ("out", ds.O_X + i),
+            f"{DOF_WORDS[i]} of the inner ring at the end of the step (its mean over the step with "
+            "average_state_outputs)",
+        )
         for i, name in enumerate(("x", "y", "z"))
     ),
     *(
@@ -522,11 +547,25 @@ DEM_OUTPUTS = (
         "contact capacitances of the tribology refreshes)",
         option="capacitance",
     ),
-    _dem_output("Q_max_inner", ("out", ds.O_QMAX_I), "largest inner contact load at the end of the step"),
-    _dem_output("Q_max_outer", ("out", ds.O_QMAX_O), "largest outer contact load at the end of the step"),
-    _dem_output("p_max", ("out", ds.O_PMAX), "largest Hertz contact pressure of a loaded contact at the last refresh"),
+    _dem_output(
+        "Q_max_inner",
+        ("out", ds.O_QMAX_I),
+        "largest inner contact load at the end of the step (with average_state_outputs: its mean over the step)",
+    ),
+    _dem_output(
+        "Q_max_outer",
+        ("out", ds.O_QMAX_O),
+        "largest outer contact load at the end of the step (with average_state_outputs: its mean over the step)",
+    ),
+    _dem_output(
+        "p_max",
+        ("out", ds.O_PMAX),
+        "largest Hertz contact pressure of a loaded contact at the last refresh (or its mean over the step's "
+        "refreshes with average_state_outputs)",
+    ),
     _dem_output("alpha_inner", ("out", ds.O_ALPHA_I), "inner contact angle of the most loaded ball (end of step)"),
     _dem_output("alpha_outer", ("out", ds.O_ALPHA_O), "outer contact angle of the most loaded ball (end of step)"),
+    *truncation_outputs("trunc", " at the end of the step"),
     _dem_output(
         "omega_cage",
         ("out", ds.O_OMEGA_CAGE),
@@ -585,16 +624,20 @@ DEM_PARAMETERS = (
         "DEM time step, 0 = automatic (half the stability limit of the stiffest pair); <= 1e-4 s",
         min=0.0,
         max=DEM_DT_MAX,
-        limits="0 = automatic; a fixed step above 1e-4 s exceeds the contact stability limit of any steel ball bearing",
+        limits="0 = automatic (follows the loads and the film); a fixed step above the stability limit of the "
+        "bearing at the step's loads is stopped by the monitor (fmi2Discard) with a step that works there and "
+        "dt = 0 suggested; above 1e-4 s it exceeds the limit of any steel ball bearing",
     ),
     Variable(
         "refresh_interval",
         "s",
-        "simulated time between two tribology refreshes (film, friction, damping, capacitance), ]0, 1e-3] s",
+        "simulated time between two tribology refreshes (film, friction, damping, capacitance), [0, 1e-3] s; "
+        "0 = at every DEM step",
         start=DEM_REFRESH_INTERVAL,
         min=0.0,
         max=DEM_REFRESH_MAX,
-        limits="> 0; beyond 1 ms the film and friction lag the ball motion (docs/reports/dem_error.md)",
+        limits="0 = every DEM step (as any interval shorter than the step); beyond 1 ms the film and friction lag "
+        "the ball motion (docs/reports/dem_error.md)",
     ),
     Variable(
         "traction_limit",
@@ -615,5 +658,14 @@ DEM_PARAMETERS = (
         "false: their values at the step's last DEM step",
         "boolean",
         start=True,
+    ),
+    Variable(
+        "average_state_outputs",
+        "",
+        "true: x, y, z are means over the communication step's DEM steps and Q_max_*, p_max, Lambda_*, h_min_*, "
+        "h_c_* means over its tribology refreshes (for masters that sample slower than the ball pass); false: "
+        "their values at the end of the step",
+        "boolean",
+        start=False,
     ),
 )

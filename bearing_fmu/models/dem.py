@@ -22,10 +22,11 @@ import numpy as np
 
 from bearing_fmu_common.variables import InputLimits, gather_plan, outputs_as_dict, select
 
+from ..kernels import truncation as tk
 from ..kernels.ball_dynamics import integrator as dyn
 from ..kernels.ball_dynamics import state as s
 from ..kernels.ball_dynamics.monitor import critical_time_step, damping_step_ratio, kinetic_energy
-from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_angles, contact_loads
+from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_angles, contact_loads, shoulder_truncation
 from ..kernels.ball_dynamics.stiffness import stiffness_matrix
 from ..kernels.ehl import friction_coefficient
 from ..kernels.geometry import (
@@ -36,21 +37,26 @@ from ..kernels.geometry import (
     rolling_kinematics,
 )
 from ..kernels.hertz import hertz_contact, hertz_stiffness
-from ..params import clearance_limits, load_bearing, load_lubricant
+from ..params import clearance_limits, load_bearing, load_dem_constants, load_lubricant
 from ..scene import Scene
-from .contacts import contact_terms, pack, race_contacts
+from .contacts import contact_terms, pack, race_contacts, truncation_parameters, truncation_warnings
 from .declarations import DEM_DT_MAX, DEM_INPUTS, DEM_OUTPUTS, DEM_REFRESH_MAX
 from .declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
-from .variables import DM_N_LIMIT, MATERIAL_LIMIT, P_MAX_ERROR, InputError, check_clearance, pressure_warnings
+from .variables import (
+    DM_N_LIMIT,
+    MATERIAL_LIMIT,
+    P_MAX_ERROR,
+    InputError,
+    OilTemperatureWatch,
+    check_clearance,
+    pressure_warnings,
+)
 
-# PA66 cage balls when the bearing file has no [material.cage] (Farah 2020: E_c = 3.3 GPa, nu_c = 0.41)
-CAGE_E = 3.3e9
-CAGE_NU = 0.41
-CAGE_RHO = 1140.0  # kg/m^3, typical PA66 (estimated)
+# the contact model's constants with their units and sources (params/dem_model.toml): the cage elements' default
+# material (the papers' PA66), the hysteretic damping constant alpha_e, the tangential stiffness ratio
+CONSTANTS = load_dem_constants()
 # pocket play of an estimated cage ball: the 6208 of Guessasma & Machado (2018) has 0.033 mm for D = 12.6 mm
 CAGE_GAP_OVER_D = 0.0026
-ALPHA_E = 0.08  # s/m, hysteretic damping constant of steel (Guessasma 2018 eq. 4)
-KT_RATIO = 2.0 / 3.0  # tangential / normal stiffness, lower end of the papers' [2/3, 1]
 V_REG = 1e-3  # m/s, speed below which the resistances' directions are regularised
 SAFETY = 0.5  # default time step over the stability limit of the stiffest pair (docs/reports/dem_error.md)
 # consecutive slipping reversals of one spring that count as chatter: sustained chatter (6208 at 3 kN,
@@ -73,6 +79,21 @@ FILM_RATE = 2.0 * 3.5
 AUTO_STEP_HALVINGS = 4
 ENERGY_FACTOR = 10.0  # kinetic-energy bound: this factor x (pure-rolling energy + load x groove clearance)
 T_OIL_DEFAULT = 313.15  # K
+# the outputs that averaged_state replaces by their means over the tribology refreshes of a call: (out, acc sum)
+AVERAGED_STATE = (
+    (s.O_QMAX_I, s.A_S_QMAX_I),
+    (s.O_QMAX_O, s.A_S_QMAX_O),
+    (s.O_PMAX, s.A_S_PMAX),
+    (s.O_LAMBDA_I, s.A_S_LAMBDA_I),
+    (s.O_LAMBDA_O, s.A_S_LAMBDA_O),
+    (s.O_HMIN_I, s.A_S_HMIN_I),
+    (s.O_HMIN_O, s.A_S_HMIN_O),
+    (s.O_HC_I, s.A_S_HC_I),
+    (s.O_HC_O, s.A_S_HC_O),
+)
+# update()'s communication step is rounded to this grid (s), far below any DEM time step (0.1-10 us)
+COMMUNICATION_DIGITS = 12
+COMMUNICATION_RESOLUTION = 10.0**-COMMUNICATION_DIGITS
 
 STATUS_WORDS = {
     s.STATUS_NOT_FINITE: "a force became NaN or infinite",
@@ -94,7 +115,7 @@ def _cage_material(path):
         doc = tomllib.load(fh)
     cage = doc.get("material", {}).get("cage", {})
     get = lambda key, default: float(cage[key]["value"]) if key in cage else default  # noqa: E731
-    return get("E", CAGE_E), get("nu", CAGE_NU), get("rho", CAGE_RHO)
+    return get("E", CONSTANTS.cage_E), get("nu", CONSTANTS.cage_nu), get("rho", CONSTANTS.cage_rho)
 
 
 def _ring_annulus(bearing):
@@ -135,14 +156,18 @@ class DemModel:
     ring_inertia: its moment of inertia about a diameter through its centre (kg.m^2), for the tilts; None =
     estimated from the same annulus (the polar moment, for the ring's gyroscopic moment, is always the annulus's
     for the ring's mass).
-    kt_ratio: tangential/normal stiffness (-) of the asperities' spring. traction_limit: 0 (default) = the
-    tangential force of the film is the lubricant's EHL traction curve (kernels.ehl.film_traction_coefficient,
+    kt_ratio: tangential/normal stiffness (-) of the asperities' spring; None = params/dem_model.toml's.
+    traction_limit: 0 (default) = the tangential force of the film is the lubricant's EHL traction curve
+    (kernels.ehl.film_traction_coefficient,
     the film's share ehl.film_share(Lambda)), the asperities' share a spring capped at the boundary friction;
     > 0 = override: a spring alone, capped at the ramp from 0.1 at Lambda = 1 to traction_limit in a full film
     (kernels.ehl.traction_coefficient; 0.01 = the papers' mu(Lambda)) (docs/dem.md, Tangential force).
     averaged: True (default) reports torque, P_loss, Q_inner_ring,
     Q_outer_ring and C_bearing as means over each advance() interval (what a co-simulation partner integrates:
     the energy of the step), False their values at the interval's last step (docs/dem.md, Outputs).
+    averaged_state: False (default) reports the loads, pressure, films and the ring's displacement at the end of
+    each interval; True as means over it (the displacement over its steps, the others over its tribology
+    refreshes): for masters that sample slower than the ball pass (docs/dem.md, Outputs).
     """
 
     def __init__(
@@ -154,12 +179,13 @@ class DemModel:
         refresh=None,
         Pd=None,
         ring_mass=None,
-        kt_ratio=KT_RATIO,
+        kt_ratio=None,
         ring_inertia=None,
         safety=SAFETY,
         refresh_interval=REFRESH_INTERVAL,
         averaged=True,
         traction_limit=0.0,
+        averaged_state=False,
     ):
         self.scene = (scene or Scene(name="dem", fidelity="dem")).validate()
         if self.scene.fidelity != "dem":
@@ -175,9 +201,11 @@ class DemModel:
             raise InputError(f"refresh = {refresh} steps is outside the allowed range [1, 100000] (a whole number)")
         if not (math.isfinite(safety) and 0.0 < safety <= 1.0):
             raise InputError(f"safety = {safety} is outside the allowed range ]0, 1]")
-        if not (math.isfinite(refresh_interval) and 0.0 < refresh_interval <= DEM_REFRESH_MAX):
+        # 0 (the declared minimum) refreshes at every step, as any interval below dt does (_run's floor, min 1)
+        if not (math.isfinite(refresh_interval) and 0.0 <= refresh_interval <= DEM_REFRESH_MAX):
             raise InputError(
-                f"refresh_interval = {refresh_interval} s is outside the allowed range ]0, {DEM_REFRESH_MAX:g}] s"
+                f"refresh_interval = {refresh_interval} s is outside the allowed range [0, {DEM_REFRESH_MAX:g}] s "
+                "(0 = every DEM step)"
             )
         if not (math.isfinite(traction_limit) and 0.0 <= traction_limit <= TRACTION_LIMIT_MAX):
             raise InputError(
@@ -186,8 +214,10 @@ class DemModel:
             )
         self.traction_limit = float(traction_limit)
         self.averaged = bool(averaged)
+        self.averaged_state = bool(averaged_state)
         self.safety = float(safety)
         self.refresh_interval = float(refresh_interval)
+        kt_ratio = CONSTANTS.kt_ratio if kt_ratio is None else kt_ratio
         if not (math.isfinite(kt_ratio) and 0.1 <= kt_ratio <= 1.5):
             raise InputError(f"kt_ratio = {kt_ratio} is outside the allowed range [0.1, 1.5]")
         if ring_mass is not None and not (math.isfinite(ring_mass) and ring_mass > 0.0):
@@ -230,6 +260,9 @@ class DemModel:
         self._acc = np.zeros(s.A_SIZE)
         self._Q = np.zeros((2, Z))
         self._alpha = np.zeros((2, Z))
+        self._signed_alpha = np.zeros((2, Z))
+        self.trunc = np.zeros(tk.TR_SIZE)  # shoulder truncation of the last advance() (kernels.truncation TR_*)
+        self.truncated = np.zeros(2)  # 1 for a race truncated at the last advance() (its warning is logged on entry)
         self.dt = math.nan  # time step of the last advance() call (s)
         self.refresh = 0  # its tribology refresh interval (steps)
         self._place_bodies()
@@ -240,6 +273,7 @@ class DemModel:
         self.output_names = tuple(v.name for v in self.outputs)
         self.values = np.zeros(len(self.outputs))
         self.warnings = []  # of the last advance(): p_max above the ISO 76 limit (pressure_warnings)
+        self._oil_watch = OilTemperatureWatch(self.lubricant)
         self.K = np.zeros((5, 5))  # condensed stiffness of the last update (scene option stiffness)
         self.frequencies = np.zeros(4)  # FTF, BPFO, BPFI, BSF (Hz) of the last update
         arrays = {
@@ -248,6 +282,7 @@ class DemModel:
             "status": self.status,
             "K": self.K.reshape(-1),
             "freq": self.frequencies,
+            "trunc": self.trunc,
         }
         self._plan = gather_plan(self.outputs, arrays)
         # state at the start of the last kernel call: an automatic-step call is repeated from it, and update()
@@ -262,6 +297,7 @@ class DemModel:
         D = b.D
         rc = race_contacts(b, sc, self.Pd)
         alpha0, Rx_i, Ry_i, Rx_o, Ry_o, ci, co, E_red = rc
+        self._truncation_parameters = truncation_parameters(b, rc, self.Pd)
         p = np.zeros(s.P_SIZE)
         p[s.P_Z] = b.Z
         p[s.P_D] = D
@@ -283,7 +319,7 @@ class DemModel:
         p[s.P_KH_I] = hertz_stiffness(Rx_i, Ry_i, E_red, *ci)
         p[s.P_KH_O] = hertz_stiffness(Rx_o, Ry_o, E_red, *co)
         pack(p, s, "P_", contact_terms(b, sc, rc))
-        p[s.P_ALPHA_E] = ALPHA_E
+        p[s.P_ALPHA_E] = CONSTANTS.alpha_e
         p[s.P_KT_RATIO] = kt_ratio
         p[s.P_V_REG] = V_REG
         # cage balls and their guide
@@ -513,9 +549,32 @@ class DemModel:
             self._alpha,
             self.out,
         )
+        self._state_outputs(interval)
         # as the other fidelities: a warning above the ISO 76 limit; beyond the material limit (6 GPa) the
         # monitor has already stopped the step (penetration), so only the warning can apply here
         self.warnings = pressure_warnings(min(self.out[s.O_PMAX], P_MAX_ERROR), "the loads")
+        self.warnings += self._oil_watch.warnings(T_oil)
+        # the contact ellipses against the shoulders: an output of the interval's end state, not of every step
+        tp = self._truncation_parameters
+        shoulder_truncation(self.balls, self.ring, self.par, tp, self._Q, self._signed_alpha, self.trunc)
+        flags = [bool(v) for v in self.truncated]
+        self.warnings += truncation_warnings(tp, self.trunc, self._Q, 0, self._signed_alpha, 0, flags)
+        self.truncated[:] = flags
+
+    def _state_outputs(self, interval):
+        """The ring's displacement and tilts into out[O_X:O_X + 5]: at the end of the interval, or with averaged_state its
+        mean over the interval's steps, and then also the loads, pressure and films as means over its tribology
+        refreshes (a call without a refresh keeps the end values)."""
+        o, acc = self.out, self._acc
+        if not self.averaged_state or interval <= 0.0:
+            o[s.O_X : s.O_X + 3] = self.ring[s.R_X : s.R_X + 3]
+            o[s.O_X + 3 : s.O_X + 5] = self.ring[s.R_TH : s.R_TH + 2]
+            return
+        o[s.O_X : s.O_X + 5] = acc[s.A_XT : s.A_XT + 5] / interval
+        samples = acc[s.A_SAMPLES]
+        if samples > 0.0:
+            for out_slot, sum_slot in AVERAGED_STATE:
+                o[out_slot] = acc[sum_slot] / samples
 
     def _run(self, n_steps, dt, omega, loads, T_oil):
         """One kernel call of n_steps steps of dt (s) to the inner-ring speed omega; returns the speed and the sum
@@ -581,6 +640,13 @@ class DemModel:
         code, step, index = (int(v) for v in self.status)
         Z = self.bearing.Z
         where = ""
+        # a fixed step that works at these inputs can be stopped again when the film or the loads change (a
+        # start-up: the film thickens, the cage's load grows): the automatic step follows them
+        alternative = (
+            "; or use dt = 0 (automatic: the step follows the loads and the film as they change)"
+            if self.dt_fixed is not None
+            else ""
+        )
         if code == s.STATUS_DAMPING:
             # the stopped state's film; a ball's other contact may still follow into full film: 2 x the largest
             c_max = float(self.trib[s.T_C_N][self.trib[s.T_Q] > 0.0].max())
@@ -588,7 +654,7 @@ class DemModel:
                 f"DEM stopped at t = {self.time:.9g} s (step {step} of the interval) on ball {index}: "
                 f"{STATUS_WORDS[code]}. dt = {dt:.3g} s is too large here; use dt <= "
                 f"{DAMPING_PLAN * self.par[s.P_M_BALL] / (2.0 * c_max):.3g} s (largest contact damping "
-                f"{c_max:.4g} N.s/m)"
+                f"{c_max:.4g} N.s/m){alternative}"
             )
         if index >= 0:
             race = "inner" if index < Z else "outer"
@@ -609,6 +675,7 @@ class DemModel:
         raise DemUnstableError(
             f"DEM stopped at t = {self.time:.9g} s (step {step} of the interval){where}: "
             f"{STATUS_WORDS[code]}. dt = {dt:.3g} s is too large here; use dt <= {suggestion:.3g} s ({reason})"
+            f"{alternative}"
         )
 
     # -- outputs -------------------------------------------------------------------------------
@@ -640,11 +707,11 @@ class DemModel:
             cage_slip=o[s.O_CAGE_SLIP],
             SRR_max=o[s.O_SRR_MAX],
             kinetic_energy=o[s.O_KINETIC],
-            x=float(self.ring[s.R_X]),
-            y=float(self.ring[s.R_X + 1]),
-            z=float(self.ring[s.R_X + 2]),
-            theta_x=float(self.ring[s.R_TH]),
-            theta_y=float(self.ring[s.R_TH + 1]),
+            x=o[s.O_X],
+            y=o[s.O_X + 1],
+            z=o[s.O_X + 2],
+            theta_x=o[s.O_X + 3],
+            theta_y=o[s.O_X + 4],
         )
         if not self.scene.capacitance:
             del result["C_bearing"]
@@ -659,9 +726,14 @@ class DemModel:
         Raises InputError for inputs out of range (nothing changed) and DemUnstableError when the monitor stops
         the step: the state is then restored to the start of the step and self.status keeps the monitor's code."""
         if interval != 0.0:
-            if not (math.isfinite(interval) and interval > 0.0):
-                raise InputError(f"communication step = {interval} s is outside the allowed range ]0, inf[ s")
-            self._step_to(self.time + interval, u)
+            if not (math.isfinite(interval) and interval >= COMMUNICATION_RESOLUTION):
+                raise InputError(
+                    f"communication step = {interval} s is outside the allowed range "
+                    f"[{COMMUNICATION_RESOLUTION:g}, inf[ s"
+                )
+            # on a grid of 1 ps: masters that hand the same nominal step in different roundings (libcosim counts
+            # integer nanoseconds, fmpy multiplies n H) then take the same DEM steps, bit for bit
+            self._step_to(self.time + round(interval, COMMUNICATION_DIGITS), u)
         self._gather()
         return self.values
 
@@ -774,7 +846,7 @@ class DemModel:
         return result
 
     # -- state (FMU get/set state, rollback) ---------------------------------------------------
-    STATE_ARRAYS = ("balls", "cage", "ring", "spring", "trib", "counters")
+    STATE_ARRAYS = ("balls", "cage", "ring", "spring", "trib", "counters", "truncated")
 
     def get_state(self):
         """Copy of the whole dynamic state (every array and the current inner-ring speed)."""

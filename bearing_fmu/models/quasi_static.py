@@ -16,12 +16,13 @@ from ..kernels import bearing_outputs as bo
 from ..kernels import contacts as ck
 from ..kernels import jones_harris as qk
 from ..kernels import rating_life as rl
+from ..kernels import truncation as tk
 from ..kernels.geometry import ball_mass, free_contact_angle
 from ..kernels.hertz import hertz_contact, hertz_stiffness
 from ..kernels.torque import TL_SIZE
 from ..params import load_bearing, load_lubricant
 from ..scene import RACE_CONTROLS, Scene
-from .contacts import contact_terms, pack, race_contacts
+from .contacts import contact_terms, pack, race_contacts, truncation_parameters, truncation_warnings
 from .declarations import (
     DISPLACEMENT_LIMIT,
     DOF_NAMES,
@@ -36,6 +37,7 @@ from .variables import (
     MATERIAL_LIMIT,
     TILT_LIMIT,
     InputError,
+    OilTemperatureWatch,
     check_clearance,
     material_load_limit,
     pressure_warnings,
@@ -122,6 +124,11 @@ class QuasiStaticModel:
         self._losses = np.zeros(TL_SIZE)
         self.status = (qk.QS_OK, 0, 0.0)
         self.warnings = []
+        self._oil_watch = OilTemperatureWatch(self.lubricant)
+        # shoulder truncation of the contact ellipses (kernels.truncation), the races truncated at the last
+        # evaluation (a warning is logged on entry only)
+        self._trunc = np.zeros(tk.TR_SIZE)
+        self._truncated = [False, False]
         self.F_preload = float(F_preload)
         if self.F_preload and self.scene.drive != "fixed_axial":
             raise InputError(
@@ -137,7 +144,14 @@ class QuasiStaticModel:
         self.output_names = tuple(v.name for v in self.outputs)
         self.values = np.zeros(len(self.outputs))  # outputs of the last evaluation, in self.outputs order
         # where each output slot comes from, as the codes of kernels.bearing_outputs
-        codes = {"out": bo.SRC_OUT, "d": bo.SRC_D, "F": bo.SRC_F, "K": bo.SRC_K, "ball_set": bo.SRC_BALL_SET}
+        codes = {
+            "out": bo.SRC_OUT,
+            "d": bo.SRC_D,
+            "F": bo.SRC_F,
+            "K": bo.SRC_K,
+            "ball_set": bo.SRC_BALL_SET,
+            "trunc": bo.SRC_TRUNC,
+        }
         # the rating-life slots are filled after the output kernel (_collect): it copies a placeholder there
         sourced = [(codes[v.source[0]], v.source[1]) if v.source[0] in codes else (bo.SRC_OUT, 0) for v in self.outputs]
         self._source = np.array([code for code, _ in sourced], dtype=np.int64)
@@ -181,6 +195,7 @@ class QuasiStaticModel:
         b, s = self.bearing, self.scene
         rc = race_contacts(b, s, self.Pd)
         Rx_i, Ry_i, Rx_o, Ry_o, ci, co, E_red = rc.Rx_i, rc.Ry_i, rc.Rx_o, rc.Ry_o, rc.ci, rc.co, rc.E_red
+        self._truncation_parameters = truncation_parameters(b, rc, self.Pd)
         qs = np.zeros(qk.QS_SIZE)
         qs[qk.QS_Z] = b.Z
         qs[qk.QS_D] = b.D
@@ -302,6 +317,8 @@ class QuasiStaticModel:
             self.per_contact,
             self._losses,
         )
+        # the contact ellipses against the shoulders (an output: nothing of the solution changes)
+        tk.race_truncation(self.balls, qk.BQ_Q_I, self.balls, qk.BQ_A_I, self._truncation_parameters, self._trunc)
         return self._collect(omega, u)
 
     def _shown(self, u):
@@ -326,6 +343,7 @@ class QuasiStaticModel:
             self.d[:] = d_start
             self.X[:] = X_start
             self._refuse_without_thrust(applied, u)
+            self._refuse_beyond_the_groove_centre(res, u)
             reason = {
                 qk.QS_NOT_CONVERGED: f"no convergence in {self.scene.max_iterations} iterations",
                 qk.QS_BALL_NOT_CONVERGED: "a ball equilibrium did not converge",
@@ -352,6 +370,28 @@ class QuasiStaticModel:
             f"balls at the groove bottom with nothing to locate it axially (no equilibrium found there). Carry the "
             f"reverse thrust, or the thrust a radial load needs, with a second bearing or a preload "
             f"(bearing_fmu.models.pair). Allowed: F_z > 0 with a radial load or moment. Inputs: {self._shown(u)}"
+        )
+
+    def _refuse_beyond_the_groove_centre(self, res, u):
+        """An equilibrium not found where the ring has crossed so much of its clearance that a ball lies beyond the
+        centre of curvature of its inner groove (inner contact angle beyond 90 deg, self.balls: the solver's last
+        state): the physical reason, not the solver's. There the model's full-circle inner groove closes on the
+        ball from behind, a contact the ring does not have, and the ball's state jumps between that contact and
+        none (docs/quasistatic.md section 3): the loads have no continuous equilibrium to converge to."""
+        cos_inner = np.cos(self.balls[qk.BQ_A_I])
+        if not np.all(np.isfinite(cos_inner)) or cos_inner.min() > 0.0:
+            return
+        j = int(np.argmin(cos_inner))
+        b = self.bearing
+        raise SolverError(
+            f"quasi-static equilibrium not found (load residual {res:.3g} N): under these loads the inner ring of "
+            f"bearing '{b.name}' (P_d = {self.Pd:.4g} m, free contact angle "
+            f"{math.degrees(free_contact_angle(b.D, b.f_i, b.f_o, self.Pd)):.3g} deg) crosses so much of its "
+            f"clearance that ball {j} lies beyond the centre of curvature of its inner groove (inner contact angle "
+            f"{math.degrees(self.balls[qk.BQ_A_I, j]):.4g} deg): there the model's full-circle groove would press "
+            f"it from behind, a contact the ring does not have, and no equilibrium of the model describes the "
+            f"bearing. Allowed: loads and clearances that keep every inner contact angle below 90 deg (less "
+            f"clearance, more thrust or less radial load or moment). Inputs: {self._shown(u)}"
         )
 
     def _check_thrust_side(self, d_start, X_start, u):
@@ -387,7 +427,7 @@ class QuasiStaticModel:
     def _collect(self, omega, u):
         """Fill self.values from the solver's and the contact kernel's arrays (declaration order)."""
         out = self.out
-        self.warnings = pressure_warnings(out[ck.CO_PMAX], "the loads")
+        self.warnings = pressure_warnings(out[ck.CO_PMAX], "the loads") + self._oil_watch.warnings(u[self._u_T_oil])
         bad = bo.quasi_static_outputs(
             self.balls,
             omega,
@@ -396,6 +436,7 @@ class QuasiStaticModel:
             self.d,
             self.F,
             self._K_flat,
+            self._trunc,
             self._source,
             self._index,
             self._summary,
@@ -418,13 +459,18 @@ class QuasiStaticModel:
                 f"output {self.output_names[bad]} is not finite ({self.values[bad]}) for {self._shown(u)}: "
                 f"please report this case"
             )
+        self.warnings += truncation_warnings(
+            self._truncation_parameters, self._trunc, self.balls, qk.BQ_Q_I, self.balls, qk.BQ_A_I, self._truncated
+        )
         return self.values
 
     # -- state (FMU get/set state, rollback) ---------------------------------------------------
     def get_state(self):
-        """Solver state as plain lists (JSON-serialisable): displacements and ball positions."""
-        return {"d": self.d.tolist(), "X": self.X.tolist()}
+        """Solver state as plain lists (JSON-serialisable): displacements, ball positions and the races whose contact
+        ellipse was truncated (their warning is logged on entry only)."""
+        return {"d": self.d.tolist(), "X": self.X.tolist(), "truncated": list(self._truncated)}
 
     def set_state(self, state):
         self.d[:] = state["d"]
         self.X[:] = state["X"]
+        self._truncated[:] = state.get("truncated", (False, False))

@@ -6,7 +6,12 @@ static bounds below are the declared ranges (FMI min/max) of the inputs and para
 material load limit, the groove clearance).
 """
 
-from bearing_fmu_common.variables import InputError, Variable  # noqa: F401  (re-exported for the models)
+from bearing_fmu_common.variables import (  # noqa: F401  (re-exported for the models)
+    LOAD_MAX,
+    OMEGA_MAX,
+    InputError,
+    Variable,
+)
 
 # Pressures that bound the admissible load (docs/decisions.md):
 P_MAX_WARNING = 4.2e9  # Pa, ISO 76 static load rating criterion for ball bearings
@@ -14,8 +19,7 @@ P_MAX_ERROR = 6.0e9  # Pa, estimated: far beyond first yield of bearing steel; H
 DM_N_LIMIT = 4.0e6  # mm.rpm, d_m n beyond any oil-lubricated steel ball bearing (estimated)
 T_OIL_RANGE = (233.15, 473.15)  # K, -40..200 C: range of the viscosity laws of mineral and PAO oils
 # Static bounds (declared ranges; the bearing-dependent limit applies within them):
-OMEGA_MAX = 1e5  # rad/s (~955 000 rpm): d_m n = 4e6 mm.rpm is reached below it by any bearing with d_m >= 5 mm
-LOAD_MAX = 1e8  # N: far beyond any ball bearing (the largest slewing ball bearings: C0 of order 1e7 N)
+# OMEGA_MAX (rad/s) and LOAD_MAX (N) are bearing_fmu_common.variables' (the thermal FMU uses them too)
 MOMENT_MAX = 1e8  # N.m: LOAD_MAX at 1 m
 GROOVE_MAX = 1e-2  # m: groove clearance (f_i + f_o - 1) D of a 0.25 m ball (beyond any catalogue ball), 0.52 + 0.52
 TILT_LIMIT = 0.01  # rad: imposed tilt, over 3 x the largest misalignment ball-bearing catalogues permit
@@ -87,3 +91,30 @@ def check_clearance(Pd, bearing, given):
             f"Pd = {Pd} m ({origin}) is outside the allowed range [{low:.4g}, {high:.4g}] m "
             f"(|Pd| <= (f_i + f_o - 1) D: free contact angle up to 60 deg)"
         )
+
+
+class OilTemperatureWatch:
+    """Warns once per entry when the oil temperature leaves the range that the lubricant file's data support
+    (its [temperature_range]; none for a file without one, e.g. constant properties given for one state): the
+    viscosity, pressure-viscosity and density laws are then extrapolated. The input range T_OIL_RANGE is checked
+    separately (an error beyond it)."""
+
+    def __init__(self, lubricant):
+        self.name = lubricant.name
+        self.low, self.high = lubricant.T_low, lubricant.T_high
+        self.outside = False
+
+    def warnings(self, T_oil):
+        """[] or the one warning of an entry into the extrapolated range at T_oil (K)."""
+        if self.low is None:
+            return []
+        outside = not (self.low <= T_oil <= self.high)
+        entered = outside and not self.outside
+        self.outside = outside
+        if not entered:
+            return []
+        return [
+            f"T_oil = {T_oil:.5g} K is outside the temperature range of the data of lubricant '{self.name}' "
+            f"[{self.low:.5g}, {self.high:.5g}] K: its viscosity, pressure-viscosity and density are extrapolated "
+            "(the lubricant file's [temperature_range])"
+        ]

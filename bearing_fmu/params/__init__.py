@@ -3,53 +3,45 @@
 A set is named by a catalogue name (a file in bearings/ or lubricants/ beside this module) or by
 the path of a TOML file in the same format (docs/parameters.md). Every value is checked for
 presence, unit and physical range; a failure raises ParameterError naming the file, the key and
-the allowed range.
+the allowed range. A path that is no file is reported as "file not found", a file of another kind
+(a lubricant file given as bearing) as such. Reading and checking the files, and the bearing file
+itself, live in bearing_fmu_common (the thermal FMU reads bearing files too); the names are
+re-exported here.
 """
 
-import math
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
+from bearing_fmu_common.bearing_file import (  # noqa: F401  (re-exported: the bearing file's API)
+    ALPHA_MAX,
+    ANGLE_MATCH,
+    DENSITY,
+    LENGTH,
+    MODULUS,
+    POISSON,
+    SHOULDER_KEYS,
+    Bearing,
+    Material,
+    angle_for_clearance,
+    clearance_for_angle,
+    clearance_limits,
+    groove_clearance,
+    read_bearing,
+    shoulder_estimate,
+)
+from bearing_fmu_common.paramfile import (  # noqa: F401  (re-exported)
+    ParameterError,
+    Spec,
+    read_toml,
+    resolve_toml,
+)
+from bearing_fmu_common.paramfile import checked_value as _value
+
 from ..kernels import lubricant as lk
 
 CATALOGUE = Path(__file__).resolve().parent
-
-
-class ParameterError(ValueError):
-    """A parameter file is missing, malformed or holds a non-physical value."""
-
-
-@dataclass(frozen=True)
-class Spec:
-    unit: str
-    low: float
-    high: float
-    low_open: bool = False  # True: value must be > low (not >=)
-
-
-def _is_file(path):
-    """Path.is_file(), False for a name the system cannot even look up (too long, a NUL byte)."""
-    try:
-        return path.is_file()
-    except (OSError, ValueError):
-        return False
-
-
-def resolve_toml(name_or_path, folder, what):
-    """Path of a catalogue entry `folder/<name>.toml` (by name) or of a user TOML file (by path);
-    `what` names the kind of entry in the error message."""
-    text = str(name_or_path)
-    candidate = Path(folder) / f"{text}.toml"
-    if _is_file(candidate):
-        return candidate
-    path = Path(text).expanduser()
-    if path.suffix == ".toml" and _is_file(path):
-        return path
-    names = ", ".join(sorted(p.stem for p in Path(folder).glob("*.toml")))
-    raise ParameterError(f"unknown {what} '{text}': give a catalogue name ({names}) or the path of a .toml file")
 
 
 def _resolve(name_or_path, kind):
@@ -62,189 +54,9 @@ def catalogue(kind):
     return sorted(p.stem for p in (CATALOGUE / kind).glob("*.toml"))
 
 
-def _read(path):
-    try:
-        with open(path, "rb") as fh:
-            return tomllib.load(fh)
-    except tomllib.TOMLDecodeError as exc:
-        raise ParameterError(f"{path}: not valid TOML ({exc})") from None
-
-
-def _value(doc, dotted, spec, path, required=True, default=None):
-    """Checked value of entry `dotted` (e.g. 'geometry.ball_diameter')."""
-    node = doc
-    for part in dotted.split("."):
-        if not isinstance(node, dict) or part not in node:
-            if required:
-                raise ParameterError(f"{path}: missing key '{dotted}' ({spec.unit})")
-            return default
-        node = node[part]
-    if not isinstance(node, dict) or "value" not in node:
-        raise ParameterError(
-            f"{path}: '{dotted}' must be a table {{ value = ..., unit = \"{spec.unit}\", source = ... }}"
-        )
-    unit = node.get("unit")
-    if unit != spec.unit:
-        raise ParameterError(f"{path}: '{dotted}' has unit '{unit}', expected '{spec.unit}'")
-    if "source" not in node:
-        raise ParameterError(f"{path}: '{dotted}' has no 'source'")
-    value = node["value"]
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-        raise ParameterError(f"{path}: '{dotted}' = {value!r} is not a finite number")
-    low_ok = value > spec.low if spec.low_open else value >= spec.low
-    if not (low_ok and value <= spec.high):
-        bracket = "]" if spec.low_open else "["
-        raise ParameterError(
-            f"{path}: '{dotted}' = {value} {spec.unit} is outside the allowed range {bracket}{spec.low}, {spec.high}]"
-        )
-    return float(value)
-
-
-LENGTH = Spec("m", 0.0, 10.0, low_open=True)
-MODULUS = Spec("Pa", 1e6, 1e13, low_open=True)
-POISSON = Spec("-", 0.0, 0.5, low_open=False)
-DENSITY = Spec("kg/m^3", 100.0, 30000.0)
-
-
-@dataclass(frozen=True)
-class Material:
-    E: float  # Pa
-    nu: float  # -
-    rho: float  # kg/m^3
-
-
-@dataclass(frozen=True)
-class Bearing:
-    """Bearing geometry and materials (SI). Values documented in the TOML file."""
-
-    name: str
-    kind: str
-    path: str
-    D: float  # ball diameter (m)
-    dm: float  # pitch diameter (m)
-    f_i: float  # inner groove conformity (-)
-    f_o: float  # outer groove conformity (-)
-    Z: int  # number of balls (-)
-    Pd: float  # diametral clearance (m), negative = preload
-    alpha0: float  # nominal contact angle (rad): the file's, else the free angle of the clearance
-    ball: Material
-    ring: Material
-    Ra_inner: float  # inner race roughness Ra (m)
-    Ra_outer: float  # outer race roughness Ra (m)
-    Ra_ball: float  # ball roughness Ra (m)
-    cage_ball_radius: float = 0.0  # DEM cage-ball radius (m), 0 if absent
-    cage_mass: float = 0.0  # mass of the whole cage (kg), 0 if absent: the DEM's Z cage balls share it
-    extras: dict = field(default_factory=dict)
-
-
-def _material(doc, section, path):
-    return Material(
-        E=_value(doc, f"{section}.E", MODULUS, path),
-        nu=_value(doc, f"{section}.nu", POISSON, path),
-        rho=_value(doc, f"{section}.rho", DENSITY, path),
-    )
-
-
-ALPHA_MAX = math.radians(60.0)  # largest free contact angle accepted (rad): P_d <= 2 A (1 - cos 60 deg) = A
-ANGLE_MATCH = math.radians(0.05)  # rad: a file's angle and clearance agree when the derived angles differ less
-
-
-def groove_clearance(D, f_i, f_o):
-    """A = (f_i + f_o - 1) D (m): the distance between the groove curvature centres with the ball touching
-    both races without load (D in m, conformities -)."""
-    return (f_i + f_o - 1.0) * D
-
-
-def clearance_limits(D, f_i, f_o):
-    """Admissible diametral clearance (m) from the geometry: -A <= P_d <= A. Above A the free contact
-    angle passes 60 deg (the contact runs to the groove shoulder); an interference beyond A presses
-    every ball by more than the whole groove clearance, far past any material limit."""
-    A = groove_clearance(D, f_i, f_o)
-    return -A, A
-
-
-def clearance_for_angle(D, f_i, f_o, alpha):
-    """Diametral clearance P_d = 2 A (1 - cos alpha) (m) whose free contact angle is alpha (rad)
-    (Harris & Kotzalas 2006, vol. 1, free contact angle: cos alpha0 = 1 - P_d / (2 A))."""
-    return 2.0 * groove_clearance(D, f_i, f_o) * (1.0 - math.cos(alpha))
-
-
-def angle_for_clearance(D, f_i, f_o, Pd):
-    """Free contact angle alpha0 = arccos(1 - P_d / (2 A)) (rad) of the diametral clearance P_d (m); 0 for
-    P_d <= 0 (no clearance or a preload)."""
-    return math.acos(1.0 - Pd / (2.0 * groove_clearance(D, f_i, f_o))) if Pd > 0.0 else 0.0
-
-
-def _clearance_and_angle(doc, D, f_i, f_o, kind, path):
-    """(P_d (m), contact angle (rad): the file's nominal one, else the free one) from the file's
-    'geometry.diametral_clearance' and/or 'geometry.contact_angle' (docs/parameters.md, clearance and
-    contact angle): one gives the other by cos alpha0 = 1 - P_d/(2A); given both, they must agree to
-    ANGLE_MATCH. A deep-groove file's contact angle 0 is its nominal (radial) angle and leaves the
-    clearance free."""
-    low, high = clearance_limits(D, f_i, f_o)
-    Pd = _value(doc, "geometry.diametral_clearance", Spec("m", low, high), path, required=False)
-    alpha = _value(doc, "geometry.contact_angle", Spec("rad", 0.0, ALPHA_MAX), path, required=False)
-    if Pd is None and alpha is None:
-        raise ParameterError(
-            f"{path}: give 'geometry.diametral_clearance' (m) or 'geometry.contact_angle' (rad, the nominal "
-            f"contact angle), or both"
-        )
-    if Pd is None:
-        return clearance_for_angle(D, f_i, f_o, alpha), alpha
-    free = angle_for_clearance(D, f_i, f_o, Pd)
-    if alpha is not None and (alpha > 0.0 or kind == "angular_contact") and abs(free - alpha) > ANGLE_MATCH:
-        raise ParameterError(
-            f"{path}: 'geometry.contact_angle' = {alpha} rad ({math.degrees(alpha):.3f} deg) and "
-            f"'geometry.diametral_clearance' = {Pd} m (free contact angle {math.degrees(free):.3f} deg) disagree: "
-            f"the clearance for {math.degrees(alpha):.3f} deg is {clearance_for_angle(D, f_i, f_o, alpha):.6g} m "
-            f"(cos alpha0 = 1 - P_d / (2 (f_i + f_o - 1) D)); give one of them, or both consistent"
-        )
-    return Pd, free if alpha is None else alpha
-
-
 def load_bearing(name_or_path):
     """Bearing set from a catalogue name ('6208', '6306', 'B7214C') or a TOML path; validated."""
-    path = _resolve(name_or_path, "bearings")
-    doc = _read(path)
-    meta = doc.get("meta", {})
-    kind = meta.get("kind", "deep_groove")
-    if kind not in ("deep_groove", "angular_contact"):
-        raise ParameterError(f"{path}: 'meta.kind' = {kind!r}, allowed: 'deep_groove', 'angular_contact'")
-    D = _value(doc, "geometry.ball_diameter", Spec("m", 0.0, 1.0, True), path)
-    dm = _value(doc, "geometry.pitch_diameter", Spec("m", 0.0, 10.0, True), path)
-    if dm <= D:
-        raise ParameterError(f"{path}: 'geometry.pitch_diameter' = {dm} m must exceed the ball diameter {D} m")
-    conf = Spec("-", 0.5, 1.0, low_open=True)
-    Z = _value(doc, "geometry.n_balls", Spec("-", 3, 200), path)
-    if Z != int(Z):
-        raise ParameterError(f"{path}: 'geometry.n_balls' = {Z} must be a whole number in [3, 200]")
-    f_i = _value(doc, "geometry.inner_conformity", conf, path)
-    f_o = _value(doc, "geometry.outer_conformity", conf, path)
-    Pd, alpha0 = _clearance_and_angle(doc, D, f_i, f_o, kind, path)
-    bearing = Bearing(
-        name=str(meta.get("name", path.stem)),
-        kind=kind,
-        path=str(path),
-        D=D,
-        dm=dm,
-        f_i=f_i,
-        f_o=f_o,
-        Z=int(Z),
-        Pd=Pd,
-        alpha0=alpha0,
-        ball=_material(doc, "material.ball", path),
-        ring=_material(doc, "material.ring", path),
-        Ra_inner=_value(doc, "surface.inner_race_Ra", Spec("m", 0.0, 1e-4), path),
-        Ra_outer=_value(doc, "surface.outer_race_Ra", Spec("m", 0.0, 1e-4), path),
-        Ra_ball=_value(doc, "surface.ball_Ra", Spec("m", 0.0, 1e-4), path),
-        cage_ball_radius=_value(doc, "cage.ball_radius", Spec("m", 0.0, 1.0, True), path, required=False, default=0.0),
-        cage_mass=_value(doc, "cage.mass", Spec("kg", 0.0, 1e3, True), path, required=False, default=0.0),
-    )
-    if math.pi * dm < bearing.Z * D:
-        raise ParameterError(
-            f"{path}: {bearing.Z} balls of {D} m do not fit on the pitch circle (pi d_m = {math.pi * dm:.4g} m)"
-        )
-    return bearing
+    return read_bearing(_resolve(name_or_path, "bearings"))
 
 
 @dataclass(frozen=True)
@@ -257,6 +69,8 @@ class Lubricant:
     reference: dict = field(default_factory=dict)
     traction_limit: float = 0.0  # limiting traction coefficient of the EHL film (-)
     traction_slip: float = 0.0  # slide-to-roll ratio where the traction curve's linear part meets the limit (-)
+    T_low: float = None  # temperature range of the file's data (K); None: the file gives none
+    T_high: float = None
 
 
 TEMPERATURE = Spec("K", 150.0, 700.0)
@@ -268,7 +82,7 @@ TRACTION_SLIP_DEFAULT = 0.001
 def load_lubricant(name_or_path):
     """Lubricant set from a catalogue name or a TOML path; validated and packed for the kernels."""
     path = _resolve(name_or_path, "lubricants")
-    doc = _read(path)
+    doc = read_toml(path, "lubricant")
     arr = np.zeros(lk.LUB_SIZE)
     visc = doc.get("viscosity", {}).get("model", "constant")
     piezo = doc.get("pressure_viscosity", {}).get("model", "constant")
@@ -331,6 +145,10 @@ def load_lubricant(name_or_path):
         doc, "traction.limiting_coefficient", Spec("-", 0.0, 0.2, True), path, False, TRACTION_LIMIT_DEFAULT
     )
     traction_slip = _value(doc, "traction.slip_scale", Spec("-", 0.0, 1.0, True), path, False, TRACTION_SLIP_DEFAULT)
+    T_low = _value(doc, "temperature_range.T_low", TEMPERATURE, path, False)
+    T_high = _value(doc, "temperature_range.T_high", TEMPERATURE, path, False)
+    if (T_low is None) != (T_high is None) or (T_low is not None and not T_low < T_high):
+        raise ParameterError(f"{path}: [temperature_range] needs both T_low and T_high, T_low < T_high")
     return Lubricant(
         name=str(doc.get("meta", {}).get("name", path.stem)),
         path=str(path),
@@ -338,6 +156,8 @@ def load_lubricant(name_or_path):
         reference=reference,
         traction_limit=traction_limit,
         traction_slip=traction_slip,
+        T_low=T_low,
+        T_high=T_high,
     )
 
 
@@ -350,3 +170,26 @@ def _pack_wlf(doc, arr, path):
     arr[lk.LUB_WLF_B2] = _value(doc, "viscosity.b_2", Spec("-", -5.0, 5.0), path)
     arr[lk.LUB_WLF_C1] = _value(doc, "viscosity.C_1", Spec("-", 0.0, 100.0, True), path)
     arr[lk.LUB_WLF_C2] = _value(doc, "viscosity.C_2", Spec("K", 0.0, 1000.0, True), path)
+
+
+@dataclass(frozen=True)
+class DemConstants:
+    """Contact-model constants of the DEM fidelity (params/dem_model.toml), SI."""
+
+    cage_E: float  # Pa, the cage elements' default Young's modulus
+    cage_nu: float  # -, their Poisson's ratio
+    cage_rho: float  # kg/m^3, their density
+    alpha_e: float  # s/m, hysteretic damping constant (C_hyst = 1.5 alpha_e Q)
+    kt_ratio: float  # -, tangential over secant normal stiffness of the asperities' spring
+
+
+def load_dem_constants(path=CATALOGUE / "dem_model.toml"):
+    """The DEM's contact-model constants, checked as the other parameter files' values are."""
+    doc = read_toml(Path(path))
+    return DemConstants(
+        cage_E=_value(doc, "cage_material.E", Spec("Pa", 0.0, 1e13, True), path),
+        cage_nu=_value(doc, "cage_material.nu", Spec("-", 0.0, 0.5), path),
+        cage_rho=_value(doc, "cage_material.rho", DENSITY, path),
+        alpha_e=_value(doc, "contact.alpha_e", Spec("s/m", 0.0, 10.0), path),
+        kt_ratio=_value(doc, "contact.kt_ratio", Spec("-", 0.1, 1.5), path),
+    )

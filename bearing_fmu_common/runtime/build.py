@@ -20,6 +20,7 @@ from xml.etree import ElementTree
 SOURCE = Path(__file__).with_name("fmi2_python.c")
 PLATFORM = "linux64"  # the only platform the layer is built for
 PYTHON_HINT = "python.txt"  # resources/ file read by the layer: the interpreter for native hosts
+GUID_FILE = "guid.txt"  # resources/ file read by the layer: the GUID fmi2Instantiate must be given
 
 
 class RuntimeBuildError(RuntimeError):
@@ -95,18 +96,22 @@ def compiled_runtime(directory=None):
 
 
 def install_runtime(fmu_path, python=sys.executable):
-    """Replace the binaries of a pythonfmu-built FMU by the layer (binaries/linux64/<modelIdentifier>.so)
-    and record `python` in resources/python.txt for native hosts."""
+    """Replace the binaries of a pythonfmu-built FMU by the layer (binaries/linux64/<modelIdentifier>.so),
+    record `python` in resources/python.txt for native hosts and the modelDescription's GUID in
+    resources/guid.txt (fmi2Instantiate refuses another GUID: one library serves every FMU, so the GUID
+    cannot be compiled in)."""
     fmu_path = Path(fmu_path)
     library = compiled_runtime()
     staged = fmu_path.with_suffix(".fmu.tmp")
     with zipfile.ZipFile(fmu_path) as source, zipfile.ZipFile(staged, "w", zipfile.ZIP_DEFLATED) as target:
         md = ElementTree.fromstring(source.read("modelDescription.xml"))
         identifier = md.find("CoSimulation").get("modelIdentifier")
+        written = (f"resources/{PYTHON_HINT}", f"resources/{GUID_FILE}")
         for item in source.infolist():
-            if not item.filename.startswith("binaries/") and item.filename != f"resources/{PYTHON_HINT}":
+            if not item.filename.startswith("binaries/") and item.filename not in written:
                 target.writestr(item, source.read(item))
         target.write(library, f"binaries/{PLATFORM}/{identifier}.so")
         target.writestr(f"resources/{PYTHON_HINT}", f"{python}\n")
+        target.writestr(f"resources/{GUID_FILE}", f"{md.get('guid')}\n")
     shutil.move(staged, fmu_path)
     return fmu_path

@@ -9,20 +9,31 @@
  * instances, from any extraction of the FMU, reuse it and add nothing to sys.path) and instantiates
  * its Fmi2Slave subclass. Every call holds the GIL (PyGILState_Ensure), so a Python host (fmpy, whose
  * ctypes calls release the GIL) and a native host on any thread are served the same way.
+ *
+ * No call can crash the host: a NULL instance gets fmi2Error, and every call is checked against the FMI
+ * 2.0 co-simulation call sequence (the states and masks below, as the Modelica Reference-FMUs check it);
+ * a call the sequence does not allow, a NULL argument and an instance left without its slave by a failed
+ * fmi2Reset get fmi2Error with a message naming the call and the state.
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
 
 #include <dlfcn.h>
+#include <errno.h>
 #include <pthread.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/socket.h>
+#include <sys/un.h>
+#include <unistd.h>
 
 #include "fmi2Functions.h"
 
 #define PYTHON_ENV "BEARING_FMU_PYTHON" /* a Python executable (e.g. venv/bin/python) for a native host */
 #define PYTHON_HINT "python.txt"        /* resources/ file: the interpreter that built the FMU */
+#define GUID_FILE "guid.txt"            /* resources/ file: the GUID of the FMU's modelDescription.xml */
 
 /* Python code the layer needs; compiled once into its own namespace. */
 static const char *HELPER_SOURCE =
@@ -66,10 +77,45 @@ typedef struct {
 
 enum { GET_REAL, GET_INTEGER, GET_BOOLEAN, GET_STRING, SET_REAL, SET_INTEGER, SET_BOOLEAN, SET_STRING, N_KINDS };
 
+/* The FMI 2.0 co-simulation states (as bits, so that a call's allowed states are one mask). A refused
+ * step (fmi2Discard) leaves the instance in STEP_COMPLETE, as in the Reference-FMUs: the host may change an
+ * input or restore a state and step again; steps are synchronous, so "step failed" and "step canceled" are
+ * never entered. Any call that returns fmi2Error leaves the instance in ERROR_STATE (FMI 2.0: the
+ * simulation cannot go on), from which fmi2Reset or fmi2SetFMUstate (a state saved before) recover. */
+typedef enum {
+    INSTANTIATED = 1 << 0,
+    INITIALIZATION_MODE = 1 << 1,
+    STEP_COMPLETE = 1 << 2,
+    STEP_IN_PROGRESS = 1 << 3,
+    TERMINATED = 1 << 4,
+    ERROR_STATE = 1 << 5,
+    FATAL_STATE = 1 << 6,
+} State;
+
+static const char *STATE_NAMES[] = {"instantiated", "initialization mode", "step complete", "step in progress",
+                                    "terminated",   "error",               "fatal"};
+
+/* The states in which each call is allowed (FMI 2.0.4, co-simulation state machine). */
+#define MASK_SetDebugLogging (INSTANTIATED | INITIALIZATION_MODE | STEP_COMPLETE | STEP_IN_PROGRESS | TERMINATED | ERROR_STATE)
+#define MASK_SetupExperiment INSTANTIATED
+#define MASK_EnterInitializationMode INSTANTIATED
+#define MASK_ExitInitializationMode INITIALIZATION_MODE
+#define MASK_Terminate STEP_COMPLETE
+#define MASK_Reset (INSTANTIATED | INITIALIZATION_MODE | STEP_COMPLETE | TERMINATED | ERROR_STATE)
+#define MASK_FreeInstance (MASK_Reset | FATAL_STATE)
+#define MASK_Get (INITIALIZATION_MODE | STEP_COMPLETE | TERMINATED | ERROR_STATE) /* in error: diagnostics */
+#define MASK_Set (INSTANTIATED | INITIALIZATION_MODE | STEP_COMPLETE)
+#define MASK_GetFMUstate (INSTANTIATED | INITIALIZATION_MODE | STEP_COMPLETE | TERMINATED)
+#define MASK_FMUstate MASK_Reset /* set, free, (de)serialise: restoring a state saved before leaves an error */
+#define MASK_DoStep STEP_COMPLETE
+#define MASK_CancelStep STEP_IN_PROGRESS
+#define MASK_Status (STEP_COMPLETE | STEP_IN_PROGRESS | TERMINATED)
+
 typedef struct {
+    State state;       /* where the instance is in the FMI call sequence */
     PyObject *cls;     /* the slave class (kept for fmi2Reset) */
     PyObject *kwargs;  /* its constructor arguments */
-    PyObject *slave;   /* the Fmi2Slave instance */
+    PyObject *slave;   /* the Fmi2Slave instance; NULL after a failed fmi2Reset */
     PyObject *strings; /* bytes behind the pointers of the last fmi2GetString */
     fmi2CallbackLogger logger;
     fmi2ComponentEnvironment env;
@@ -81,7 +127,7 @@ typedef struct {
     References refs[N_KINDS];
 } Instance;
 
-static pthread_mutex_t init_lock = PTHREAD_MUTEX_INITIALIZER;
+static pthread_mutex_t own_lock = PTHREAD_MUTEX_INITIALIZER; /* only if the process lock cannot be made */
 static PyObject *helper; /* namespace of HELPER_SOURCE; lives as long as the process */
 
 /* Names of the slave methods called every step and of its log queue, interned once (ensure_python):
@@ -225,13 +271,57 @@ static int read_hint(const char *resources, const char *name, char *buf, size_t 
     return ok && buf[0] != '\0';
 }
 
+/* The process-wide lock of the interpreter's start. Each FMU brings its own copy of this library, with
+ * its own statics: a mutex of the library would let two copies start Python at once from two host
+ * threads (which crashes it), and before Python runs there is no shared Python object to lock. The lock
+ * is the name of an abstract Unix socket that carries the process id: binding a name is atomic and
+ * exclusive, so the copy that binds it holds the lock; Linux drops the name when the socket is closed
+ * or the process ends, so a crash leaves nothing behind (a named semaphore would stay in /dev/shm, held,
+ * for a later process of the same id), and other processes never wait for it. Returns the socket to
+ * close to release the lock, or -1 if no socket can be made (then the copy's own mutex is taken). */
+static int process_lock(void)
+{
+    int fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    if (fd < 0)
+        return -1;
+    struct sockaddr_un address = {.sun_family = AF_UNIX}; /* sun_path[0] = '\0': the abstract namespace */
+    int n = snprintf(address.sun_path + 1, sizeof address.sun_path - 1, "bearing_fmu_runtime.%ld", (long)getpid());
+    socklen_t length = (socklen_t)(offsetof(struct sockaddr_un, sun_path) + 1 + (size_t)n);
+    useconds_t wait = 100; /* us; the holder starts Python: tens to hundreds of milliseconds */
+    while (bind(fd, (struct sockaddr *)&address, length) != 0) {
+        if (errno != EADDRINUSE) {
+            int cause = errno;
+            close(fd);
+            errno = cause;
+            return -1;
+        }
+        usleep(wait);
+        wait = wait < 10000 ? 2 * wait : wait;
+    }
+    return fd;
+}
+
+static void process_unlock(int fd)
+{
+    if (fd >= 0)
+        close(fd);
+    else
+        pthread_mutex_unlock(&own_lock);
+}
+
 /* Make sure an interpreter runs: the host's (Python hosts) or one started here (native hosts).
  * Never finalised (docs/fmu_runtime.md): numba's compiled code and LLVM's static objects are torn
- * down by the C runtime at exit, and a Py_Finalize after that calls into freed LLVM state. */
-static int ensure_python(const char *resources, char *error, size_t size)
+ * down by the C runtime at exit, and a Py_Finalize after that calls into freed LLVM state.
+ * `warning` gets a message for the host's logger if the process-wide lock could not be made. */
+static int ensure_python(const char *resources, char *error, size_t size, char *warning, size_t wsize)
 {
     int ok = 1;
-    pthread_mutex_lock(&init_lock);
+    int lock = process_lock();
+    if (lock < 0) {
+        snprintf(warning, wsize, "no process-wide lock (socket: %s): two FMUs started at once from two threads "
+                 "may fail", strerror(errno));
+        pthread_mutex_lock(&own_lock);
+    }
     /* A host's interpreter takes precedence over the linked libpython (its symbols come first in
      * the global scope): it must be the version the layer was compiled for. */
     char version[16];
@@ -298,7 +388,7 @@ static int ensure_python(const char *resources, char *error, size_t size)
         }
         PyGILState_Release(gil);
     }
-    pthread_mutex_unlock(&init_lock);
+    process_unlock(lock);
     return ok;
 }
 
@@ -336,37 +426,105 @@ static char *uri_to_path(const char *uri)
 
 /* -- instance ------------------------------------------------------------------------------- */
 
-#define WITH_GIL(c)                                                                                \
-    if ((c) == NULL)                                                                               \
+static const char *state_name(State state)
+{
+    for (int k = 0; k < 7; k++)
+        if ((int)state == 1 << k)
+            return STATE_NAMES[k];
+    return "unknown";
+}
+
+/* Is `call` allowed in the instance's state (mask: MASK_<call>)? If not, say so: the call, the state and
+ * where the FMI 2.0 call sequence allows it. Holds the GIL. */
+static int allowed(Instance *c, int mask, const char *call)
+{
+    if (c->state & mask)
+        return 1;
+    char where[256] = "";
+    for (int k = 0; k < 7; k++)
+        if (mask & (1 << k))
+            snprintf(where + strlen(where), sizeof where - strlen(where), "%s%s", where[0] ? ", " : "", STATE_NAMES[k]);
+    emitf(c, fmi2Error, "%s: %s is not allowed in state %s (FMI 2.0 co-simulation call sequence; allowed in: %s)%s",
+          c->name, call, state_name(c->state), where,
+          c->state == ERROR_STATE ? ". An earlier call failed (logged above): fmi2Reset, or fmi2SetFMUstate with a "
+                                    "state saved before, makes the instance usable again"
+                                  : "");
+    return 0;
+}
+
+/* A NULL array or pointer argument (FMI: only allowed with nvr = 0) is refused with a message. */
+static int given(Instance *c, const void *pointer, const char *call, const char *argument)
+{
+    if (pointer != NULL)
+        return 1;
+    emitf(c, fmi2Error, "%s: %s: argument %s is NULL", c->name, call, argument);
+    return 0;
+}
+
+/* After a failed fmi2Reset the instance has no slave: only fmi2Reset and fmi2FreeInstance can help. */
+static int has_slave(Instance *c, const char *call)
+{
+    if (c->slave != NULL)
+        return 1;
+    emitf(c, fmi2Error, "%s: %s: the instance has no model since fmi2Reset failed (logged then); call fmi2Reset "
+          "again or fmi2FreeInstance", c->name, call);
+    return 0;
+}
+
+/* Enter a call on instance `component`: NULL gets fmi2Error (there is no logger to tell), then the GIL
+ * is taken and the call checked against the state (refused: fmi2Error and the error state). */
+#define BEGIN(call, mask)                                                                          \
+    Instance *c = component;                                                                       \
+    if (c == NULL)                                                                                 \
         return fmi2Error;                                                                          \
-    PyGILState_STATE gil__ = PyGILState_Ensure()
+    PyGILState_STATE gil__ = PyGILState_Ensure();                                                  \
+    if (!allowed(c, (mask), (call)))                                                               \
+    RETURN(fmi2Error)
+
+/* Leave the call: an error or fatal status puts the instance into that state (not while a step runs on
+ * another thread: a call refused meanwhile leaves the step's outcome to decide); releases the GIL. */
 #define RETURN(value)                                                                              \
     do {                                                                                           \
         fmi2Status value__ = (value);                                                              \
+        if (value__ == fmi2Error && c->state != STEP_IN_PROGRESS)                                  \
+            c->state = ERROR_STATE;                                                                \
+        else if (value__ == fmi2Fatal && c->state != STEP_IN_PROGRESS)                             \
+            c->state = FATAL_STATE;                                                                \
         PyGILState_Release(gil__);                                                                 \
         return value__;                                                                            \
+    } while (0)
+
+/* The state after a call that succeeded (OK or Warning) moves the instance to `next`. */
+#define MOVE_ON(status, next)                                                                      \
+    do {                                                                                           \
+        if ((status) <= fmi2Warning)                                                               \
+            c->state = (next);                                                                     \
     } while (0)
 
 const char *fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
 const char *fmi2GetVersion(void) { return fmi2Version; }
 
-/* Call the helper's begin_setup or end_setup (the process-wide set-up lock); holds the GIL, no exception
- * pending. Waiting for the lock releases the GIL. */
+/* Call the helper's begin_setup or end_setup (the process-wide set-up lock); holds the GIL. An exception
+ * already pending (the slave constructor's) is kept for the caller to log: calling Python with it set
+ * would replace it by a SystemError and lose its text. Waiting for the lock releases the GIL. */
 static void setup_lock(PyObject *name)
 {
+    PyObject *kind, *value, *tb;
+    PyErr_Fetch(&kind, &value, &tb);
     PyObject *done = PyObject_CallMethodNoArgs(helper, name);
     if (done == NULL)
         PyErr_Print(); /* cannot happen short of memory exhaustion: say so rather than hide it */
     Py_XDECREF(done);
+    PyErr_Restore(kind, value, tb);
 }
 
 static int create_slave(Instance *c)
 {
     PyObject *args = PyTuple_New(0);
     setup_lock(name_begin_setup);
-    c->slave = PyObject_Call(c->cls, args, c->kwargs);
+    c->slave = args ? PyObject_Call(c->cls, args, c->kwargs) : NULL;
     setup_lock(name_end_setup);
-    Py_DECREF(args);
+    Py_XDECREF(args);
     if (c->slave == NULL) {
         log_exception(c, "creating the slave");
         return 0;
@@ -389,33 +547,62 @@ static void release(Instance *c)
     free(c);
 }
 
+/* Is `guid` the GUID of this FMU's modelDescription.xml (resources/guid.txt, written by the build)? */
+static int guid_matches(const Instance *c, const char *resources, const char *guid)
+{
+    char expected[256];
+    if (!read_hint(resources, GUID_FILE, expected, sizeof expected)) {
+        emitf(c, fmi2Error, "%s: %s/%s is missing: cannot check the GUID (an incomplete or altered FMU)", c->name,
+              resources, GUID_FILE);
+        return 0;
+    }
+    if (guid == NULL || strcmp(guid, expected) != 0) {
+        emitf(c, fmi2Error, "%s: fmi2Instantiate: GUID '%s' is not this FMU's ('%s' in its modelDescription.xml): "
+              "the host read another FMU's modelDescription.xml, or the FMU's files were mixed", c->name,
+              guid ? guid : "(NULL)", expected);
+        return 0;
+    }
+    return 1;
+}
+
+/* Free an instance that never ran (fmi2Instantiate failing before the slave exists). */
+static fmi2Component refuse(Instance *c, char *resources)
+{
+    free(resources);
+    free(c->name);
+    free(c);
+    return NULL;
+}
+
 fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
                               fmi2String fmuResourceLocation, const fmi2CallbackFunctions *functions,
                               fmi2Boolean visible, fmi2Boolean loggingOn)
 {
-    (void)fmuGUID;
     Instance *c = calloc(1, sizeof *c);
     if (c == NULL)
         return NULL;
     c->name = strdup(instanceName ? instanceName : "");
-    c->logger = functions ? functions->logger : NULL;
-    c->env = functions ? functions->componentEnvironment : NULL;
-    c->logging_on = loggingOn;
-    char error[1024];
-    char *resources = uri_to_path(fmuResourceLocation);
-    if (fmuType != fmi2CoSimulation || resources == NULL) {
-        emitf(c, fmi2Error, "%s: only co-simulation with a resource location is supported", c->name);
-        free(resources);
-        free(c->name);
+    if (c->name == NULL) {
         free(c);
         return NULL;
     }
-    if (!ensure_python(resources, error, sizeof error)) {
+    c->logger = functions ? functions->logger : NULL;
+    c->env = functions ? functions->componentEnvironment : NULL;
+    c->logging_on = loggingOn;
+    char error[1024], warning[256] = "";
+    char *resources = uri_to_path(fmuResourceLocation);
+    if (fmuType != fmi2CoSimulation || resources == NULL) {
+        emitf(c, fmi2Error, "%s: only co-simulation with a resource location is supported", c->name);
+        return refuse(c, resources);
+    }
+    if (!guid_matches(c, resources, fmuGUID))
+        return refuse(c, resources);
+    int started = ensure_python(resources, error, sizeof error, warning, sizeof warning);
+    if (warning[0])
+        emitf(c, fmi2Warning, "%s: %s", c->name, warning);
+    if (!started) {
         emitf(c, fmi2Error, "%s: %s", c->name, error);
-        free(resources);
-        free(c->name);
-        free(c);
-        return NULL;
+        return refuse(c, resources);
     }
     PyGILState_STATE gil = PyGILState_Ensure();
     setup_lock(name_begin_setup); /* the class and the slave under one hold: see HELPER_SOURCE */
@@ -430,6 +617,8 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     if (!ok) {
         release(c);
         c = NULL;
+    } else {
+        c->state = INSTANTIATED;
     }
     PyGILState_Release(gil);
     free(resources);
@@ -442,6 +631,10 @@ void fmi2FreeInstance(fmi2Component component)
     if (c == NULL)
         return;
     PyGILState_STATE gil = PyGILState_Ensure();
+    if (!allowed(c, MASK_FreeInstance, "fmi2FreeInstance")) {
+        PyGILState_Release(gil); /* a step still running on another thread: leave the instance alone */
+        return;
+    }
     flush_log(c);
     release(c);
     PyGILState_Release(gil);
@@ -451,60 +644,71 @@ void fmi2FreeInstance(fmi2Component component)
 fmi2Status fmi2SetDebugLogging(fmi2Component component, fmi2Boolean loggingOn, size_t nCategories,
                                const fmi2String categories[])
 {
-    Instance *c = component;
     (void)nCategories;
-    (void)categories;
-    if (c == NULL)
-        return fmi2Error;
+    (void)categories; /* categories are not filtered */
+    BEGIN("fmi2SetDebugLogging", MASK_SetDebugLogging);
     c->logging_on = loggingOn;
-    return fmi2OK;
+    RETURN(fmi2OK);
 }
 
 fmi2Status fmi2SetupExperiment(fmi2Component component, fmi2Boolean toleranceDefined, fmi2Real tolerance,
                                fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime)
 {
-    Instance *c = component;
-    WITH_GIL(c);
+    BEGIN("fmi2SetupExperiment", MASK_SetupExperiment);
+    if (!has_slave(c, "fmi2SetupExperiment"))
+        RETURN(fmi2Error);
     c->time = startTime;
     c->discarded = 0;
     PyObject *stop = stopTimeDefined ? PyFloat_FromDouble(stopTime) : Py_NewRef(Py_None);
     PyObject *tol = toleranceDefined ? PyFloat_FromDouble(tolerance) : Py_NewRef(Py_None);
     PyObject *r = PyObject_CallMethod(c->slave, "setup_experiment", "(dOO)", startTime, stop, tol);
-    Py_DECREF(stop);
-    Py_DECREF(tol);
+    Py_XDECREF(stop);
+    Py_XDECREF(tol);
     RETURN(settle(c, "setup_experiment", r, fmi2Error));
 }
 
 fmi2Status fmi2EnterInitializationMode(fmi2Component component)
 {
-    Instance *c = component;
-    WITH_GIL(c);
-    RETURN(settle(c, "enter_initialization_mode", PyObject_CallMethod(c->slave, "enter_initialization_mode", NULL),
-                  fmi2Error));
+    BEGIN("fmi2EnterInitializationMode", MASK_EnterInitializationMode);
+    if (!has_slave(c, "fmi2EnterInitializationMode"))
+        RETURN(fmi2Error);
+    fmi2Status status = settle(c, "enter_initialization_mode",
+                               PyObject_CallMethod(c->slave, "enter_initialization_mode", NULL), fmi2Error);
+    MOVE_ON(status, INITIALIZATION_MODE);
+    RETURN(status);
 }
 
 fmi2Status fmi2ExitInitializationMode(fmi2Component component)
 {
-    Instance *c = component;
-    WITH_GIL(c);
-    RETURN(settle(c, "exit_initialization_mode", PyObject_CallMethod(c->slave, "exit_initialization_mode", NULL),
-                  fmi2Error));
+    BEGIN("fmi2ExitInitializationMode", MASK_ExitInitializationMode);
+    if (!has_slave(c, "fmi2ExitInitializationMode"))
+        RETURN(fmi2Error);
+    fmi2Status status = settle(c, "exit_initialization_mode",
+                               PyObject_CallMethod(c->slave, "exit_initialization_mode", NULL), fmi2Error);
+    MOVE_ON(status, STEP_COMPLETE);
+    RETURN(status);
 }
 
 fmi2Status fmi2Terminate(fmi2Component component)
 {
-    Instance *c = component;
-    WITH_GIL(c);
-    RETURN(settle(c, "terminate", PyObject_CallMethod(c->slave, "terminate", NULL), fmi2Error));
+    BEGIN("fmi2Terminate", MASK_Terminate);
+    if (!has_slave(c, "fmi2Terminate"))
+        RETURN(fmi2Error);
+    fmi2Status status = settle(c, "terminate", PyObject_CallMethod(c->slave, "terminate", NULL), fmi2Error);
+    MOVE_ON(status, TERMINATED);
+    RETURN(status);
 }
 
 fmi2Status fmi2Reset(fmi2Component component)
 {
-    Instance *c = component;
-    WITH_GIL(c);
+    BEGIN("fmi2Reset", MASK_Reset);
     Py_CLEAR(c->slave);
     c->discarded = 0;
-    RETURN(create_slave(c) ? fmi2OK : fmi2Error);
+    c->time = 0.0;
+    int ok = create_slave(c); /* fails: no slave, error state; only fmi2Reset and fmi2FreeInstance help */
+    if (ok)
+        c->state = INSTANTIATED;
+    RETURN(ok ? fmi2OK : fmi2Error);
 }
 
 /* -- variables ------------------------------------------------------------------------------ */
@@ -537,6 +741,13 @@ static PyObject *references(Instance *c, int kind, const fmi2ValueReference vr[]
     return refs;
 }
 
+/* The checks every getter and setter makes before touching the slave: the arrays are there (or nvr = 0)
+ * and the instance has a slave. */
+static int arrays_ok(Instance *c, const char *call, const void *vr, const void *value, size_t nvr)
+{
+    return (nvr == 0 || (given(c, vr, call, "vr") && given(c, value, call, "value"))) && has_slave(c, call);
+}
+
 /* slave.<method of kind>(vrs) -> a list of nvr values, or NULL with the problem logged. */
 static PyObject *get_values(Instance *c, int kind, const fmi2ValueReference vr[], size_t nvr)
 {
@@ -555,9 +766,10 @@ static PyObject *get_values(Instance *c, int kind, const fmi2ValueReference vr[]
 }
 
 /* slave.<method of kind>(vrs, values) with values built by make(i). */
-#define SET_VALUES(kind, make)                                                                     \
-    Instance *c = component;                                                                       \
-    WITH_GIL(c);                                                                                   \
+#define SET_VALUES(call, kind, make)                                                               \
+    BEGIN(call, MASK_Set);                                                                         \
+    if (!arrays_ok(c, call, vr, value, nvr))                                                       \
+        RETURN(fmi2Error);                                                                         \
     PyObject *vrs = references(c, kind, vr, nvr), *values = PyList_New((Py_ssize_t)nvr);           \
     for (size_t i = 0; values != NULL && i < nvr; i++)                                             \
         PyList_SET_ITEM(values, (Py_ssize_t)i, make);                                              \
@@ -568,32 +780,33 @@ static PyObject *get_values(Instance *c, int kind, const fmi2ValueReference vr[]
 
 fmi2Status fmi2SetReal(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[])
 {
-    SET_VALUES(SET_REAL, PyFloat_FromDouble(value[i]));
+    SET_VALUES("fmi2SetReal", SET_REAL, PyFloat_FromDouble(value[i]));
 }
 
 fmi2Status fmi2SetInteger(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,
                           const fmi2Integer value[])
 {
-    SET_VALUES(SET_INTEGER, PyLong_FromLong(value[i]));
+    SET_VALUES("fmi2SetInteger", SET_INTEGER, PyLong_FromLong(value[i]));
 }
 
 fmi2Status fmi2SetBoolean(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,
                           const fmi2Boolean value[])
 {
-    SET_VALUES(SET_BOOLEAN, PyBool_FromLong(value[i]));
+    SET_VALUES("fmi2SetBoolean", SET_BOOLEAN, PyBool_FromLong(value[i]));
 }
 
 fmi2Status fmi2SetString(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,
                          const fmi2String value[])
 {
-    SET_VALUES(SET_STRING, PyUnicode_DecodeUTF8(value[i] ? value[i] : "", (Py_ssize_t)strlen(value[i] ? value[i] : ""),
-                                                 "replace"));
+    SET_VALUES("fmi2SetString", SET_STRING,
+               PyUnicode_DecodeUTF8(value[i] ? value[i] : "", (Py_ssize_t)strlen(value[i] ? value[i] : ""), "replace"));
 }
 
 fmi2Status fmi2GetReal(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[])
 {
-    Instance *c = component;
-    WITH_GIL(c);
+    BEGIN("fmi2GetReal", MASK_Get);
+    if (!arrays_ok(c, "fmi2GetReal", vr, value, nvr))
+        RETURN(fmi2Error);
     PyObject *values = get_values(c, GET_REAL, vr, nvr);
     if (values == NULL)
         RETURN(fmi2Error);
@@ -610,8 +823,9 @@ fmi2Status fmi2GetReal(fmi2Component component, const fmi2ValueReference vr[], s
 
 fmi2Status fmi2GetInteger(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[])
 {
-    Instance *c = component;
-    WITH_GIL(c);
+    BEGIN("fmi2GetInteger", MASK_Get);
+    if (!arrays_ok(c, "fmi2GetInteger", vr, value, nvr))
+        RETURN(fmi2Error);
     PyObject *values = get_values(c, GET_INTEGER, vr, nvr);
     if (values == NULL)
         RETURN(fmi2Error);
@@ -628,8 +842,9 @@ fmi2Status fmi2GetInteger(fmi2Component component, const fmi2ValueReference vr[]
 
 fmi2Status fmi2GetBoolean(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[])
 {
-    Instance *c = component;
-    WITH_GIL(c);
+    BEGIN("fmi2GetBoolean", MASK_Get);
+    if (!arrays_ok(c, "fmi2GetBoolean", vr, value, nvr))
+        RETURN(fmi2Error);
     PyObject *values = get_values(c, GET_BOOLEAN, vr, nvr);
     if (values == NULL)
         RETURN(fmi2Error);
@@ -650,8 +865,9 @@ fmi2Status fmi2GetBoolean(fmi2Component component, const fmi2ValueReference vr[]
 
 fmi2Status fmi2GetString(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2String value[])
 {
-    Instance *c = component;
-    WITH_GIL(c);
+    BEGIN("fmi2GetString", MASK_Get);
+    if (!arrays_ok(c, "fmi2GetString", vr, value, nvr))
+        RETURN(fmi2Error);
     PyObject *values = get_values(c, GET_STRING, vr, nvr);
     if (values == NULL)
         RETURN(fmi2Error);
@@ -677,39 +893,67 @@ fmi2Status fmi2GetString(fmi2Component component, const fmi2ValueReference vr[],
 
 /* -- state ---------------------------------------------------------------------------------- */
 
-/* An FMU state is the slave's _get_fmu_state() object (a new reference); serialised with pickle. */
+/* An FMU state is the tuple (call-sequence state, last successful time, the slave's _get_fmu_state()
+ * object): restoring it restores where the instance was in the call sequence too. Serialised with
+ * pickle. NULL with the problem logged if `state` is not such a tuple. */
+static PyObject *slave_part(Instance *c, PyObject *state, const char *call, State *where, fmi2Real *time)
+{
+    if (PyTuple_Check(state) && PyTuple_GET_SIZE(state) == 3 && PyLong_Check(PyTuple_GET_ITEM(state, 0)) &&
+        PyFloat_Check(PyTuple_GET_ITEM(state, 1))) {
+        long saved = PyLong_AsLong(PyTuple_GET_ITEM(state, 0));
+        if ((saved & MASK_GetFMUstate) != 0 && (saved & (saved - 1)) == 0) { /* one allowed state */
+            *where = (State)saved;
+            *time = PyFloat_AS_DOUBLE(PyTuple_GET_ITEM(state, 1));
+            return PyTuple_GET_ITEM(state, 2);
+        }
+    }
+    PyErr_Clear();
+    emitf(c, fmi2Error, "%s: %s: not an FMU state of this FMU (saved by another FMU or another version)", c->name,
+          call);
+    return NULL;
+}
+
 fmi2Status fmi2GetFMUstate(fmi2Component component, fmi2FMUstate *state)
 {
-    Instance *c = component;
-    WITH_GIL(c);
+    BEGIN("fmi2GetFMUstate", MASK_GetFMUstate);
+    if (!given(c, state, "fmi2GetFMUstate", "FMUstate") || !has_slave(c, "fmi2GetFMUstate"))
+        RETURN(fmi2Error);
     PyObject *got = PyObject_CallMethod(c->slave, "_get_fmu_state", NULL);
-    if (got == NULL) {
+    PyObject *whole = got ? Py_BuildValue("(idO)", (int)c->state, c->time, got) : NULL;
+    Py_XDECREF(got);
+    if (whole == NULL) {
         log_exception(c, "_get_fmu_state");
         RETURN(fmi2Error);
     }
     Py_XDECREF((PyObject *)*state); /* FMI: a state passed in is overwritten */
-    *state = got;
+    *state = whole;
     flush_log(c);
     RETURN(fmi2OK);
 }
 
 fmi2Status fmi2SetFMUstate(fmi2Component component, fmi2FMUstate state)
 {
-    Instance *c = component;
-    WITH_GIL(c);
-    if (state == NULL) {
-        emitf(c, fmi2Error, "%s: fmi2SetFMUstate with no state", c->name);
+    BEGIN("fmi2SetFMUstate", MASK_FMUstate);
+    if (!given(c, state, "fmi2SetFMUstate", "FMUstate") || !has_slave(c, "fmi2SetFMUstate"))
         RETURN(fmi2Error);
+    State where;
+    fmi2Real time;
+    PyObject *slave_state = slave_part(c, (PyObject *)state, "fmi2SetFMUstate", &where, &time);
+    if (slave_state == NULL)
+        RETURN(fmi2Error);
+    fmi2Status status =
+        settle(c, "_set_fmu_state", PyObject_CallMethod(c->slave, "_set_fmu_state", "(O)", slave_state), fmi2Error);
+    if (status <= fmi2Warning) {
+        c->state = where;
+        c->time = time;
+        c->discarded = 0;
     }
-    c->discarded = 0;
-    RETURN(settle(c, "_set_fmu_state", PyObject_CallMethod(c->slave, "_set_fmu_state", "(O)", (PyObject *)state),
-                  fmi2Error));
+    RETURN(status);
 }
 
 fmi2Status fmi2FreeFMUstate(fmi2Component component, fmi2FMUstate *state)
 {
-    Instance *c = component;
-    WITH_GIL(c);
+    BEGIN("fmi2FreeFMUstate", MASK_FMUstate);
     if (state != NULL) {
         Py_XDECREF((PyObject *)*state);
         *state = NULL;
@@ -729,8 +973,9 @@ static PyObject *pickled(Instance *c, fmi2FMUstate state)
 
 fmi2Status fmi2SerializedFMUstateSize(fmi2Component component, fmi2FMUstate state, size_t *size)
 {
-    Instance *c = component;
-    WITH_GIL(c);
+    BEGIN("fmi2SerializedFMUstateSize", MASK_FMUstate);
+    if (!given(c, size, "fmi2SerializedFMUstateSize", "size"))
+        RETURN(fmi2Error);
     PyObject *bytes = pickled(c, state);
     if (bytes == NULL)
         RETURN(fmi2Error);
@@ -742,8 +987,9 @@ fmi2Status fmi2SerializedFMUstateSize(fmi2Component component, fmi2FMUstate stat
 fmi2Status fmi2SerializeFMUstate(fmi2Component component, fmi2FMUstate state, fmi2Byte serializedState[],
                                  size_t size)
 {
-    Instance *c = component;
-    WITH_GIL(c);
+    BEGIN("fmi2SerializeFMUstate", MASK_FMUstate);
+    if (!given(c, serializedState, "fmi2SerializeFMUstate", "serializedState"))
+        RETURN(fmi2Error);
     PyObject *bytes = pickled(c, state);
     if (bytes == NULL)
         RETURN(fmi2Error);
@@ -762,13 +1008,21 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component component, fmi2FMUstate state, fm
 fmi2Status fmi2DeSerializeFMUstate(fmi2Component component, const fmi2Byte serializedState[], size_t size,
                                    fmi2FMUstate *state)
 {
-    Instance *c = component;
-    WITH_GIL(c);
+    BEGIN("fmi2DeSerializeFMUstate", MASK_FMUstate);
+    if (!given(c, serializedState, "fmi2DeSerializeFMUstate", "serializedState") ||
+        !given(c, state, "fmi2DeSerializeFMUstate", "FMUstate"))
+        RETURN(fmi2Error);
     PyObject *bytes = PyBytes_FromStringAndSize(serializedState, (Py_ssize_t)size);
     PyObject *loaded = bytes ? PyObject_CallMethod(helper, "loads", "(O)", bytes) : NULL;
     Py_XDECREF(bytes);
     if (loaded == NULL) {
         log_exception(c, "deserialising the FMU state");
+        RETURN(fmi2Error);
+    }
+    State where;
+    fmi2Real time;
+    if (slave_part(c, loaded, "fmi2DeSerializeFMUstate", &where, &time) == NULL) {
+        Py_DECREF(loaded);
         RETURN(fmi2Error);
     }
     Py_XDECREF((PyObject *)*state);
@@ -781,15 +1035,18 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component component, const fmi2Byte seria
 fmi2Status fmi2DoStep(fmi2Component component, fmi2Real currentCommunicationPoint,
                       fmi2Real communicationStepSize, fmi2Boolean noSetFMUStatePriorToCurrentPoint)
 {
-    Instance *c = component;
     (void)noSetFMUStatePriorToCurrentPoint;
-    WITH_GIL(c);
+    BEGIN("fmi2DoStep", MASK_DoStep);
+    if (!has_slave(c, "fmi2DoStep"))
+        RETURN(fmi2Error);
     fmi2Real t = currentCommunicationPoint, h = communicationStepSize;
+    c->state = STEP_IN_PROGRESS; /* another thread's call on this instance meanwhile is refused */
     PyObject *args[3] = {c->slave, PyFloat_FromDouble(t), PyFloat_FromDouble(h)};
     PyObject *r = args[1] && args[2] ? PyObject_VectorcallMethod(name_do_step, args, 3, NULL) : NULL;
     Py_XDECREF(args[1]);
     Py_XDECREF(args[2]);
     fmi2Status status = settle(c, "do_step", r, fmi2Discard);
+    c->state = STEP_COMPLETE; /* also after fmi2Discard: the host may change an input or restore a state */
     if (status == fmi2Discard && c->discarded && c->discard_t == t && c->discard_h == h) {
         /* the host retried the refused step unchanged (fmpy does so forever): stop it here */
         emitf(c, fmi2Error,
@@ -806,53 +1063,62 @@ fmi2Status fmi2DoStep(fmi2Component component, fmi2Real currentCommunicationPoin
 
 fmi2Status fmi2CancelStep(fmi2Component component)
 {
-    Instance *c = component;
-    WITH_GIL(c);
+    BEGIN("fmi2CancelStep", MASK_CancelStep);
     emitf(c, fmi2Error, "%s: fmi2CancelStep: steps are synchronous, nothing to cancel", c->name);
     RETURN(fmi2Error);
 }
 
+/* The status functions: only fmi2LastSuccessfulTime and fmi2Terminated are available (no asynchronous
+ * step); for the other kinds FMI asks for fmi2Discard. */
+#define STATUS_BEGIN(call)                                                                         \
+    BEGIN(call, MASK_Status);                                                                      \
+    if (!given(c, value, call, "value"))                                                           \
+    RETURN(fmi2Error)
+
 fmi2Status fmi2GetStatus(fmi2Component component, const fmi2StatusKind s, fmi2Status *value)
 {
-    (void)component, (void)s, (void)value;
-    return fmi2Discard; /* FMI: fmi2Discard when the status is not available (no asynchronous step) */
+    (void)s;
+    STATUS_BEGIN("fmi2GetStatus");
+    RETURN(fmi2Discard);
 }
 
 fmi2Status fmi2GetRealStatus(fmi2Component component, const fmi2StatusKind s, fmi2Real *value)
 {
-    Instance *c = component;
-    if (c == NULL || s != fmi2LastSuccessfulTime)
-        return fmi2Discard;
+    STATUS_BEGIN("fmi2GetRealStatus");
+    if (s != fmi2LastSuccessfulTime)
+        RETURN(fmi2Discard);
     *value = c->time;
-    return fmi2OK;
+    RETURN(fmi2OK);
 }
 
 fmi2Status fmi2GetIntegerStatus(fmi2Component component, const fmi2StatusKind s, fmi2Integer *value)
 {
-    (void)component, (void)s, (void)value;
-    return fmi2Discard;
+    (void)s;
+    STATUS_BEGIN("fmi2GetIntegerStatus");
+    RETURN(fmi2Discard);
 }
 
 fmi2Status fmi2GetBooleanStatus(fmi2Component component, const fmi2StatusKind s, fmi2Boolean *value)
 {
-    if (component == NULL || s != fmi2Terminated)
-        return fmi2Discard;
+    STATUS_BEGIN("fmi2GetBooleanStatus");
+    if (s != fmi2Terminated)
+        RETURN(fmi2Discard);
     *value = fmi2False; /* a refused step never ends the simulation by itself: the host decides */
-    return fmi2OK;
+    RETURN(fmi2OK);
 }
 
 fmi2Status fmi2GetStringStatus(fmi2Component component, const fmi2StatusKind s, fmi2String *value)
 {
-    (void)component, (void)s, (void)value;
-    return fmi2Discard;
+    (void)s;
+    STATUS_BEGIN("fmi2GetStringStatus");
+    RETURN(fmi2Discard);
 }
 
 /* -- not provided by a Python slave ----------------------------------------------------------- */
 
 static fmi2Status unsupported(fmi2Component component, const char *what)
 {
-    Instance *c = component;
-    WITH_GIL(c);
+    BEGIN(what, ~0);
     emitf(c, fmi2Error, "%s: %s is not supported by this FMU", c->name, what);
     RETURN(fmi2Error);
 }

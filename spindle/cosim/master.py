@@ -1,5 +1,5 @@
-"""fmpy co-simulation master (docs/architecture.md, master). Talks to FMUs only through FMI; imports no
-physics.
+"""fmpy co-simulation master (docs/architecture.md, master). Talks to FMUs only through FMI and imports no
+physics for them: each FMU runs on the packages it carries (docs/fmu_runtime.md, "The master").
 
 A run (spindle.cosim.runfile.RunSpec) couples FMU instances by connections output -> input and steps them
 with a fixed communication step H:
@@ -39,12 +39,11 @@ import time as wallclock
 from dataclasses import dataclass, field
 from pathlib import Path
 
-# pythonfmu FMUs run inside this interpreter. Loading scipy's compiled libraries (numba imports scipy)
-# for the first time from inside an FMU can make the process abort at exit, so load both here, before
-# any FMU (docs/decisions.md, "Abort at interpreter exit after a long FMU run").
-import numba  # noqa: F401, E402
+# numba (and, where scipy is installed, the scipy BLAS bindings numba loads with it) are loaded here, by the
+# host, before any FMU: the order the teardown tests were run with. It costs no start-up time: the first FMU
+# would load it (docs/fmu_runtime.md, "The master"). Nothing of the product is imported for the FMUs' sake.
+import numba  # noqa: F401
 import numpy as np
-import scipy.special  # noqa: F401, E402
 from fmpy import calloc, extract, free, read_model_description
 from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import (
@@ -58,14 +57,6 @@ from fmpy.fmi2 import (
     fmi2True,
     fmi2ValueReference,
 )
-
-# The product's own packages, imported here so that every FMU of this release runs on them (an FMU's entry
-# script uses the packages the host already has) under one kernel cache whose key covers them all: each
-# FMU's shipped compiled code is then used (bearing_fmu_common.jit.same_sources_entries) instead of some
-# kernels compiling at start-up because the thermal FMU's modules and the bearing FMU's jit policy came
-# from different copies.
-import bearing_fmu  # noqa: F401, E402
-import bearing_fmu_common.jit  # noqa: F401, E402
 
 from .runfile import split_name
 
@@ -101,11 +92,24 @@ def csv_row(values):
     return [repr(float(v)) for v in values]
 
 
+def header_names(cells):
+    """Column names of a CSV header row: a structured name such as K[1,2] that a writer left unquoted (split at
+    its comma into 'K[1' and '2]') is joined again; the master itself quotes such names."""
+    names = []
+    for cell in cells:
+        if names and names[-1].count("[") > names[-1].count("]"):
+            names[-1] += "," + cell
+        else:
+            names.append(cell)
+    return names
+
+
 def read_csv(path):
-    """Columns and units of a result CSV written by the master: ({name: numpy array}, {name: unit})."""
+    """Columns and units of a result CSV written by the master (or by another master that left names such as
+    K[1,2] unquoted): ({name: numpy array}, {name: unit})."""
     with open(path, newline="") as fh:
         reader = csv.reader(fh)
-        header = next(reader)
+        header = header_names(next(reader))
         values = np.array([[float(v) for v in row] for row in reader], dtype=float).reshape(-1, len(header))
     names, units = [], {}
     for cell in header:

@@ -4,6 +4,8 @@ Each point is a full co-simulation in a Dask worker (its own process: pythonfmu 
 the host process, so workers use processes, one thread each). Local cluster by default; pass the
 address of a running scheduler to use a cluster. Results are gathered into one table: the swept
 value, the status and message, the wall time and the final value of every recorded variable.
+Dask is the optional extra `sweep`; without it `sweep()` raises DaskMissing, and `sequential()` gives
+the same table in this process (what `spindle sweep` then does).
 """
 
 import csv
@@ -13,11 +15,16 @@ from .master import run
 from .runfile import load_run
 
 
-def run_point(runfile, overrides):
-    """One run; returns a summary row (dict). Never raises: a failed run is a row with its message."""
+class DaskMissing(ImportError):
+    """dask.distributed is not installed (the optional extra `sweep`)."""
+
+
+def run_point(runfile, overrides, fmu_dir=None):
+    """One run; returns a summary row (dict). Never raises: a failed run is a row with its message.
+    fmu_dir: folder of the FMUs the run file names (None: the paths in the run file)."""
     row = {"status": "error", "message": "", "wall_time": math.nan}
     try:
-        result = run(load_run(runfile, overrides))
+        result = run(load_run(runfile, overrides, fmu_dir=fmu_dir))
     except Exception as exc:  # a failed point must not lose the others
         row["message"] = f"{type(exc).__name__}: {exc}"
         return row
@@ -33,12 +40,16 @@ def run_point(runfile, overrides):
     return row
 
 
-def sweep(runfile, param, values, scheduler=None, n_workers=2, extra=None):
+def sweep(runfile, param, values, scheduler=None, n_workers=2, extra=None, fmu_dir=None):
     """Run `runfile` once per value of `param` (a dotted override key) on Dask; rows in input order.
 
     scheduler: None = a LocalCluster with n_workers processes (closed afterwards), or the address
-    of an existing scheduler ("tcp://host:8786")."""
-    from dask.distributed import Client, LocalCluster
+    of an existing scheduler ("tcp://host:8786"). fmu_dir: folder of the FMUs (None: the run file's
+    paths). Raises DaskMissing if dask.distributed is not installed."""
+    try:
+        from dask.distributed import Client, LocalCluster
+    except ImportError as exc:
+        raise DaskMissing(f"sweeps on Dask need dask[distributed] ({exc}): pip install 'bearing-fmu[sweep]'") from None
 
     points = [{**(extra or {}), param: v} for v in values]
     cluster = None
@@ -48,7 +59,8 @@ def sweep(runfile, param, values, scheduler=None, n_workers=2, extra=None):
     else:
         client = Client(scheduler)
     try:
-        futures = client.map(run_point, [str(runfile)] * len(points), points, pure=False)
+        n = len(points)
+        futures = client.map(run_point, [str(runfile)] * n, points, [fmu_dir] * n, pure=False)
         rows = client.gather(futures)
     finally:
         client.close()
@@ -57,9 +69,10 @@ def sweep(runfile, param, values, scheduler=None, n_workers=2, extra=None):
     return [{param: v, **row} for v, row in zip(values, rows)]
 
 
-def sequential(runfile, param, values, extra=None):
-    """The same table computed in this process, one run after the other (the check of sweep())."""
-    return [{param: v, **run_point(str(runfile), {**(extra or {}), param: v})} for v in values]
+def sequential(runfile, param, values, extra=None, fmu_dir=None):
+    """The same table computed in this process, one run after the other (the check of sweep(), and the
+    sweep without Dask)."""
+    return [{param: v, **run_point(str(runfile), {**(extra or {}), param: v}, fmu_dir)} for v in values]
 
 
 def write_table(rows, path):

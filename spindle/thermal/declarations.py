@@ -6,9 +6,8 @@ array in the order of output_declarations(), the FMU class (spindle.thermal.fmu)
 variables from the same declarations, and fmus/<Name>.md is generated from them (spindle.build).
 """
 
-from bearing_fmu.models.variables import LOAD_MAX, OMEGA_MAX
-from bearing_fmu.params import ParameterError
-from bearing_fmu_common.variables import Variable
+from bearing_fmu_common.paramfile import ParameterError
+from bearing_fmu_common.variables import LOAD_MAX, OMEGA_MAX, Variable
 
 T_START = 293.15  # K, start value of the temperature inputs of the FMU (20 C, the default assembly temperature)
 DEFAULT_SPINDLE = "b7214c_x_pair"

@@ -15,7 +15,7 @@ the first doStep that accepts them, so the host can correct an input and continu
 
 from pythonfmu.enums import Fmi2Status
 
-from bearing_fmu_common.fmi import DeclaredSlave, add_unit_definitions, check_parameters, declared_parameter
+from bearing_fmu_common.fmi import DeclaredSlave, check_parameters, declared_parameter
 
 from .declarations import parameter_declarations
 from .model import DEFAULT_SPINDLE, SpindleThermalModel
@@ -51,12 +51,14 @@ class SpindleThermal(DeclaredSlave):
     def _inputs(self):
         return dict(zip(self._input_names, self._u))
 
-    def _guarded(self, action):
+    def _guarded(self, action, status=Fmi2Status.error, note=""):
+        """Run action(); on an exception log its message (with the FMI status that the calling function returns,
+        and `note` appended) and return False."""
         try:
             action()
             return True
         except Exception as exc:  # logged as the model's own message, not a traceback
-            self.log(f"{self.instance_name}: {exc}", Fmi2Status.error)
+            self.log(f"{self.instance_name}: {exc}{note}", status)
             return False
 
     def _build(self):
@@ -85,13 +87,16 @@ class SpindleThermal(DeclaredSlave):
 
     def exit_initialization_mode(self):
         self._ready = self._guarded(self._build)
-        if self._ready:
-            self._guarded(self._start)  # a bad input is logged now and refused again by the first doStep
-        return self._ready  # False: fmi2Error from fmi2ExitInitializationMode
+        if not self._ready:
+            return False  # fmi2Error from fmi2ExitInitializationMode
+        # a bad input is logged once as a warning (fmi2Warning returned) and refused by the first doStep
+        if not self._guarded(self._start, Fmi2Status.warning, " (refused at the first doStep unless corrected)"):
+            return Fmi2Status.warning
+        return True
 
     def do_step(self, current_time, step_size):
         if not self._ready:
-            self.log(f"{self.instance_name}: not initialised (see the error at initialisation)", Fmi2Status.error)
+            self.log(f"{self.instance_name}: not initialised (see the error at initialisation)", Fmi2Status.discard)
             return False
 
         def step():
@@ -99,7 +104,7 @@ class SpindleThermal(DeclaredSlave):
                 self._start()
             self._y = self._model.update(step_size, self._u).tolist()
 
-        return self._guarded(step)
+        return self._guarded(step, Fmi2Status.discard)  # False: fmi2Discard
 
     def _get_fmu_state(self):
         state = super()._get_fmu_state()
@@ -113,6 +118,3 @@ class SpindleThermal(DeclaredSlave):
         if network is not None:
             self._model.set_state(network)
         self._started = network is not None
-
-    def to_xml(self, model_options=None):
-        return add_unit_definitions(super().to_xml(model_options or {}), self.vars.values())

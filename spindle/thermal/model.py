@@ -16,7 +16,8 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_fmu.params import ParameterError, load_bearing, resolve_toml
+from bearing_fmu_common.bearing_file import read_bearing
+from bearing_fmu_common.paramfile import ParameterError, read_toml, resolve_toml
 from bearing_fmu_common.variables import InputError
 
 from . import network as nk
@@ -31,6 +32,12 @@ from .declarations import (
 )
 
 CATALOGUE = Path(__file__).resolve().parent / "params"
+# The bearing catalogue the networks' [[bearing]] entries name: the bearing_fmu package's beside this
+# one (source tree, installed package), or the copy the thermal FMU carries instead of that package
+BEARING_CATALOGUES = (
+    Path(__file__).resolve().parent / "bearings",
+    Path(__file__).resolve().parents[2] / "bearing_fmu" / "params" / "bearings",
+)
 ARRANGEMENT_SIGN = {"X": 1.0, "O": -1.0}
 # Admissible inputs: the declared ranges (spindle.thermal.declarations); anything outside is reported,
 # never integrated into NaN
@@ -49,6 +56,20 @@ def network_path(name_or_path):
 
 def _resolve(name_or_path):
     return resolve_toml(name_or_path, CATALOGUE, "spindle")
+
+
+def bearing_catalogue():
+    """The folder of the bearing catalogue (BEARING_CATALOGUES: the first that exists)."""
+    for folder in BEARING_CATALOGUES:
+        if folder.is_dir():
+            return folder
+    return BEARING_CATALOGUES[-1]
+
+
+def load_ring_bearing(name_or_path):
+    """The bearing (bearing_fmu_common.bearing_file.Bearing) of a network's [[bearing]] entry: a catalogue
+    name or a bearing file path."""
+    return read_bearing(resolve_toml(name_or_path, bearing_catalogue(), "bearing"))
 
 
 def _quantity(table, key, unit, where, low=0.0, high=math.inf, low_open=True):
@@ -115,7 +136,7 @@ def _bearing_entry(entry, index, node_index, where):
         if name not in node_index:
             raise ParameterError(f"{where}: '{role}' = {name!r} is not a node ({', '.join(node_index)})")
         nodes[role] = node_index[name]
-    b = load_bearing(entry.get("bearing", ""))
+    b = load_ring_bearing(entry.get("bearing", ""))
     d_i = b.dm - b.D - 0.5 * b.Pd  # groove diameters with P_d = d_o - d_i - 2 D (Harris)
     d_o = b.dm + b.D + 0.5 * b.Pd
     # the Bearing record does not carry the bore: read it from the bearing's own file
@@ -128,10 +149,7 @@ def _bearing_entry(entry, index, node_index, where):
 def load_spindle(name_or_path):
     """Network from a catalogue name ('b7214c_x_pair') or a TOML path; validated (docs/spindle_thermal.md)."""
     path = _resolve(name_or_path)
-    try:
-        doc = tomllib.loads(path.read_text())
-    except tomllib.TOMLDecodeError as exc:
-        raise ParameterError(f"{path}: not valid TOML ({exc})") from None
+    doc = read_toml(path, "spindle")
     where = str(path)
     nodes, C = [], []
     for k, entry in enumerate(doc.get("node", [])):

@@ -29,8 +29,9 @@ Integrators over one step h with inputs held (zero-order hold):
 Both are unconditionally stable. Linear algebra is written out in loops (Cholesky for the symmetric
 positive definite systems, plain matrix-vector products), as in the bearing kernels: for n ~ 10 nodes
 that is as fast as BLAS, and a non-positive pivot comes back as NaN instead of an exception inside a
-kernel. (This module imports no scipy; numba itself imports scipy.linalg's Cython BLAS/LAPACK bindings
-on its first dispatch, which is why the master loads numba and scipy before any FMU: docs/decisions.md.)
+kernel. No kernel here calls BLAS or LAPACK (np.dot, np.linalg): numba takes those from scipy, and the
+thermal FMU must run in a host without scipy (docs/fmu_runtime.md); the eigendecomposition of the
+exponential update is numpy's, done by the caller outside the kernels.
 """
 
 import math
@@ -344,4 +345,7 @@ def network_outputs(
         P_in += u[heat_at[q]]
     values[idx[LS_P_IN]] = P_in
     values[idx[LS_P_OUT]] = boundary_heat_flow(n, ends_i, ends_j, G, T, u[boundary_at])
-    values[idx[LS_E_STORED]] = np.dot(C, T - T0)
+    E = 0.0
+    for i in range(n):  # a loop, not np.dot: numba's np.dot calls scipy's BLAS, absent from a bare host
+        E += C[i] * (T[i] - T0[i])
+    values[idx[LS_E_STORED]] = E

@@ -1,6 +1,10 @@
 """The `spindle` command line: version, validate, run with an FMU folder, and its exit codes."""
 
+import csv
+import json
 import shutil
+import subprocess
+import sys
 
 import pytest
 
@@ -107,3 +111,68 @@ def test_info_prints_every_variable_and_the_ranges(closed_loop_fmus, capsys):
     assert cli.main(["info", str(path)]) == cli.EXIT_OK
     detail = capsys.readouterr().out
     assert "input     omega                [rad/s] range [-100000, 100000]" in detail
+
+
+def _fmu_folder(closed_loop_fmus, tmp_path):
+    folder = tmp_path / "elsewhere"
+    folder.mkdir()
+    for name in ("Bearing", "SpindleThermal"):
+        shutil.copy2(closed_loop_fmus[name], folder)
+    return folder
+
+
+def test_sweep_without_dask_runs_the_points_here_with_an_fmu_folder(closed_loop_fmus, tmp_path, monkeypatch, capsys):
+    """dask is the optional extra `sweep`: without it `spindle sweep` says so and runs the points one after the
+    other in this process (the same table, spindle.cosim.sweep.sequential), with `--fmus` as `spindle run`."""
+    monkeypatch.setitem(sys.modules, "dask", None)  # import dask / dask.distributed raise ImportError
+    monkeypatch.setitem(sys.modules, "dask.distributed", None)
+    out = tmp_path / "results"
+    folder = _fmu_folder(closed_loop_fmus, tmp_path)
+    args = ["sweep", str(DEMO), "--param", "spindle.T_coolant", "--values", "283.15,303.15", "--set", "run.stop=3"]
+    assert cli.main([*args, "--fmus", str(folder), "--out", str(out)]) == cli.EXIT_OK
+    captured = capsys.readouterr()
+    assert "dask[distributed]" in captured.err and "one after the other" in captured.err
+    assert "Traceback" not in captured.err
+    with open(out / "closed_loop_spring_sweep_spindle_T_coolant.csv", newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    assert [float(r["spindle.T_coolant"]) for r in rows] == [283.15, 303.15]
+    assert [r["status"] for r in rows] == ["ok", "ok"] and [float(r["t_end"]) for r in rows] == [3.0, 3.0]
+    assert float(rows[0]["spindle.T_housing"]) < float(rows[1]["spindle.T_housing"])  # the value reached the run
+    # a cluster asked for without dask: an error naming the missing package, nothing run here
+    assert cli.main([*args, "--fmus", str(folder), "--scheduler", "tcp://127.0.0.1:1"]) == cli.EXIT_ERROR
+    assert "pip install 'bearing-fmu[sweep]'" in capsys.readouterr().err
+
+
+def test_a_closed_output_ends_the_command_quietly(closed_loop_fmus):
+    """`spindle info | head`: the reader closes the pipe while the command still writes. The command stops as
+    a Unix tool does, without a traceback, with exit status 128 + SIGPIPE. The child waits for a byte on
+    stdin, sent once its output is closed, so it always writes into a closed pipe."""
+    child = "import os, sys; from spindle import cli; os.read(0, 1); sys.argv = ['spindle', 'info']; cli.run()"
+    proc = subprocess.Popen(
+        [sys.executable, "-c", child], stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE
+    )
+    proc.stdout.close()
+    proc.stdin.write(b"x")
+    proc.stdin.close()
+    status = proc.wait(timeout=120)
+    assert proc.stderr.read().decode() == ""
+    assert status == 141 == getattr(cli, "EXIT_PIPE", None)
+
+
+def test_a_runs_overrides_are_recorded_beside_its_csv_and_in_its_plot_title(closed_loop_fmus, tmp_path, monkeypatch):
+    """A run with --set is another case than its run file's description says (a 6000 rpm run of the 10 000 rpm
+    file): the overrides go into <stem>.run.json beside the CSV and into the plot's title."""
+    from spindle.cosim import plots
+
+    titles = []
+    monkeypatch.setattr(plots, "plot_run", lambda result, path, title="": titles.append(title) or path)
+    out = tmp_path / "results"
+    sets = ["--set", "run.stop=3", "--set", "spindle.T_coolant=300.0"]
+    folder = _fmu_folder(closed_loop_fmus, tmp_path)
+    assert cli.main(["run", str(DEMO), *sets, "--fmus", str(folder), "--out", str(out)]) == cli.EXIT_OK
+    record = json.loads((out / "closed_loop_spring.run.json").read_text())
+    assert record["overrides"] == {"run.stop": 3, "spindle.T_coolant": 300.0}
+    assert record["run_file"] == str(DEMO) and record["stop"] == 3.0 and record["status"] == "ok"
+    assert len(titles) == 1
+    assert "10 000 rpm" in titles[0]  # the run file's description, then what this run changed
+    assert "run.stop = 3" in titles[0] and "spindle.T_coolant = 300.0" in titles[0]

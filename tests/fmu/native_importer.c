@@ -1,14 +1,28 @@
 /* A minimal native FMI 2.0 co-simulation importer (what a C/C++ master does), used by
- * tests/fmu/test_native_runtime.py. It dlopens the FMU binary with nothing preloaded, runs
- * RUNS times: instantiate, set the given variables in initialisation mode, N steps of size H,
- * a serialised state round trip (the step after restoring must repeat the first step's outputs
- * bit for bit), read the outputs, free. It prints the outputs of the last run as "VR=value"
- * lines and the FMU's messages on stderr, formatted as printf formats (FMI 2.0 logger).
+ * tests/fmu/test_native_runtime.py. It dlopens the FMU binary with nothing preloaded. Three modes:
  *
- * usage: native_importer LIBRARY RESOURCE_URI GUID RUNS N H [r:VR=REAL] [s:VR=TEXT] [b:VR=0|1] [o:VR] ...
- * exit: 0 all calls OK, 2 usage or loading problem, 3 an FMI call failed, 4 state round trip differs
+ * native_importer LIBRARY RESOURCE_URI GUID RUNS N H [r:VR=REAL] [s:VR=TEXT] [b:VR=0|1] [o:VR] ...
+ *     RUNS times: instantiate, set the given variables in initialisation mode, N steps of size H, a
+ *     serialised state round trip (the step after restoring must repeat the first step's outputs bit for
+ *     bit), read the outputs, free. Prints the outputs of the last run as "VR=value" lines.
+ *     exit: 0 all calls OK, 2 usage or loading problem, 3 an FMI call failed, 4 state round trip differs
+ * native_importer --calls LIBRARY RESOURCE_URI GUID CALL ...
+ *     makes the calls in order on one instance and prints "CALL STATUS" per call (STATUS: the fmi2Status
+ *     number; for instantiate "ok" or "null"), whatever they return: the caller judges the sequence.
+ *     CALL: instantiate, guid:TEXT (the GUID of the next instantiate), setup, enter, exit, step (doStep
+ *     of 0.1 s from the last accepted step's end), terminate, reset, getReal:VR, setReal:VR=REAL,
+ *     getState, setState, cancel, free, null (every function with a NULL instance, one line each),
+ *     nullargs (NULL array or state arguments, one line each).
+ *     exit: 0 (2 usage or loading problem)
+ * native_importer --threads LIB1 URI1 GUID1 LIB2 URI2 GUID2
+ *     two threads, released together, each instantiate, initialise, step twice, terminate and free
+ *     one of the two FMUs: what a host that sets up two FMUs at once does.
+ *     exit: 0 all calls OK, 2 usage or loading problem, 3 an FMI call failed
+ *
+ * The FMU's messages go to stderr, formatted as printf formats (FMI 2.0 logger).
  */
 #include <dlfcn.h>
+#include <pthread.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,18 +38,47 @@ static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status sta
     (void)env;
     va_list args;
     va_start(args, message);
+    flockfile(stderr); /* one message per line, also with two threads logging */
     fprintf(stderr, "[%d] %s (%s): ", (int)status, name, category);
     vfprintf(stderr, message, args);
     fputc('\n', stderr);
+    funlockfile(stderr);
     va_end(args);
 }
 
-#define LOAD(name)                                                                                 \
-    name##TYPE *name = (name##TYPE *)dlsym(lib, #name);                                            \
-    if (name == NULL) {                                                                            \
-        fprintf(stderr, "missing %s\n", #name);                                                    \
-        return 2;                                                                                  \
+/* The FMU's functions (dlsym), one table per loaded library. */
+#define FUNCTIONS(X)                                                                               \
+    X(fmi2Instantiate) X(fmi2FreeInstance) X(fmi2SetupExperiment) X(fmi2EnterInitializationMode)   \
+    X(fmi2ExitInitializationMode) X(fmi2Terminate) X(fmi2Reset) X(fmi2SetDebugLogging)             \
+    X(fmi2GetReal) X(fmi2GetInteger) X(fmi2GetBoolean) X(fmi2GetString) X(fmi2SetReal)             \
+    X(fmi2SetInteger) X(fmi2SetBoolean) X(fmi2SetString) X(fmi2GetFMUstate) X(fmi2SetFMUstate)     \
+    X(fmi2FreeFMUstate) X(fmi2SerializedFMUstateSize) X(fmi2SerializeFMUstate)                     \
+    X(fmi2DeSerializeFMUstate) X(fmi2GetDirectionalDerivative) X(fmi2SetRealInputDerivatives)      \
+    X(fmi2GetRealOutputDerivatives) X(fmi2DoStep) X(fmi2CancelStep) X(fmi2GetStatus)               \
+    X(fmi2GetRealStatus) X(fmi2GetIntegerStatus) X(fmi2GetBooleanStatus) X(fmi2GetStringStatus)
+
+#define FIELD(name) name##TYPE *name;
+typedef struct {
+    FUNCTIONS(FIELD)
+} Api;
+
+static int load(const char *path, Api *api)
+{
+    void *lib = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    if (lib == NULL) {
+        fprintf(stderr, "dlopen: %s\n", dlerror());
+        return 0;
     }
+#define LOOKUP(name)                                                                               \
+    if ((api->name = (name##TYPE *)dlsym(lib, #name)) == NULL) {                                   \
+        fprintf(stderr, "missing %s\n", #name);                                                    \
+        return 0;                                                                                  \
+    }
+    FUNCTIONS(LOOKUP)
+    return 1;
+}
+
+static fmi2CallbackFunctions callbacks = {logger, calloc, free, NULL, NULL};
 
 #define CHECK(call)                                                                                \
     do {                                                                                           \
@@ -46,36 +89,15 @@ static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status sta
         }                                                                                          \
     } while (0)
 
-int main(int argc, char **argv)
+/* -- default mode: runs of a whole simulation --------------------------------------------------- */
+
+static int runs_mode(const Api *api, int argc, char **argv)
 {
     if (argc < 7) {
         fprintf(stderr, "usage: %s LIBRARY RESOURCE_URI GUID RUNS N H [r:VR=REAL|s:VR=TEXT|b:VR=0|1|o:VR] ...\n",
                 argv[0]);
         return 2;
     }
-    void *lib = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);
-    if (lib == NULL) {
-        fprintf(stderr, "dlopen: %s\n", dlerror());
-        return 2;
-    }
-    LOAD(fmi2Instantiate);
-    LOAD(fmi2SetupExperiment);
-    LOAD(fmi2EnterInitializationMode);
-    LOAD(fmi2ExitInitializationMode);
-    LOAD(fmi2SetReal);
-    LOAD(fmi2SetString);
-    LOAD(fmi2SetBoolean);
-    LOAD(fmi2GetReal);
-    LOAD(fmi2DoStep);
-    LOAD(fmi2GetFMUstate);
-    LOAD(fmi2SetFMUstate);
-    LOAD(fmi2FreeFMUstate);
-    LOAD(fmi2SerializedFMUstateSize);
-    LOAD(fmi2SerializeFMUstate);
-    LOAD(fmi2DeSerializeFMUstate);
-    LOAD(fmi2Terminate);
-    LOAD(fmi2FreeInstance);
-
     int runs = atoi(argv[4]), steps = atoi(argv[5]);
     double h = atof(argv[6]);
     fmi2ValueReference out_vr[MAX_VARS];
@@ -85,16 +107,15 @@ int main(int argc, char **argv)
         if (strncmp(argv[i], "o:", 2) == 0 && n_out < MAX_VARS)
             out_vr[n_out++] = (fmi2ValueReference)strtoul(argv[i] + 2, NULL, 10);
 
-    fmi2CallbackFunctions callbacks = {logger, calloc, free, NULL, NULL};
     for (int run = 0; run < runs; run++) {
-        fmi2Component c = fmi2Instantiate("native", fmi2CoSimulation, argv[3], argv[2], &callbacks, fmi2False,
-                                          fmi2False);
+        fmi2Component c = api->fmi2Instantiate("native", fmi2CoSimulation, argv[3], argv[2], &callbacks, fmi2False,
+                                               fmi2False);
         if (c == NULL) {
             fprintf(stderr, "fmi2Instantiate failed\n");
             return 3;
         }
-        CHECK(fmi2SetupExperiment(c, fmi2False, 0.0, 0.0, fmi2False, 0.0));
-        CHECK(fmi2EnterInitializationMode(c));
+        CHECK(api->fmi2SetupExperiment(c, fmi2False, 0.0, 0.0, fmi2False, 0.0));
+        CHECK(api->fmi2EnterInitializationMode(c));
         for (int i = 7; i < argc; i++) {
             char kind = argv[i][0], *eq = strchr(argv[i], '=');
             if (eq == NULL)
@@ -102,45 +123,249 @@ int main(int argc, char **argv)
             fmi2ValueReference vr = (fmi2ValueReference)strtoul(argv[i] + 2, NULL, 10);
             if (kind == 'r') {
                 fmi2Real value = strtod(eq + 1, NULL);
-                CHECK(fmi2SetReal(c, &vr, 1, &value));
+                CHECK(api->fmi2SetReal(c, &vr, 1, &value));
             } else if (kind == 's') {
                 fmi2String value = eq + 1;
-                CHECK(fmi2SetString(c, &vr, 1, &value));
+                CHECK(api->fmi2SetString(c, &vr, 1, &value));
             } else if (kind == 'b') {
                 fmi2Boolean value = atoi(eq + 1) != 0;
-                CHECK(fmi2SetBoolean(c, &vr, 1, &value));
+                CHECK(api->fmi2SetBoolean(c, &vr, 1, &value));
             }
         }
-        CHECK(fmi2ExitInitializationMode(c));
+        CHECK(api->fmi2ExitInitializationMode(c));
 
         /* state round trip through bytes: the first step, repeated after restoring, is bit-exact */
         fmi2FMUstate saved = NULL, restored = NULL;
         size_t size = 0;
-        CHECK(fmi2GetFMUstate(c, &saved));
-        CHECK(fmi2DoStep(c, 0.0, h, fmi2True));
-        CHECK(fmi2GetReal(c, out_vr, n_out, first));
-        CHECK(fmi2SerializedFMUstateSize(c, saved, &size));
+        CHECK(api->fmi2GetFMUstate(c, &saved));
+        CHECK(api->fmi2DoStep(c, 0.0, h, fmi2True));
+        CHECK(api->fmi2GetReal(c, out_vr, n_out, first));
+        CHECK(api->fmi2SerializedFMUstateSize(c, saved, &size));
         fmi2Byte *bytes = malloc(size);
-        CHECK(fmi2SerializeFMUstate(c, saved, bytes, size));
-        CHECK(fmi2DeSerializeFMUstate(c, bytes, size, &restored));
+        CHECK(api->fmi2SerializeFMUstate(c, saved, bytes, size));
+        CHECK(api->fmi2DeSerializeFMUstate(c, bytes, size, &restored));
         free(bytes);
-        CHECK(fmi2SetFMUstate(c, restored));
-        CHECK(fmi2DoStep(c, 0.0, h, fmi2False));
-        CHECK(fmi2GetReal(c, out_vr, n_out, again));
+        CHECK(api->fmi2SetFMUstate(c, restored));
+        CHECK(api->fmi2DoStep(c, 0.0, h, fmi2False));
+        CHECK(api->fmi2GetReal(c, out_vr, n_out, again));
         if (n_out > 0 && memcmp(first, again, n_out * sizeof first[0]) != 0) {
             fprintf(stderr, "outputs after restoring a deserialised state differ\n");
             return 4;
         }
-        CHECK(fmi2FreeFMUstate(c, &saved));
-        CHECK(fmi2FreeFMUstate(c, &restored));
+        CHECK(api->fmi2FreeFMUstate(c, &saved));
+        CHECK(api->fmi2FreeFMUstate(c, &restored));
 
         for (int n = 1; n < steps; n++)
-            CHECK(fmi2DoStep(c, n * h, h, fmi2True));
-        CHECK(fmi2GetReal(c, out_vr, n_out, out));
-        CHECK(fmi2Terminate(c));
-        fmi2FreeInstance(c);
+            CHECK(api->fmi2DoStep(c, n * h, h, fmi2True));
+        CHECK(api->fmi2GetReal(c, out_vr, n_out, out));
+        CHECK(api->fmi2Terminate(c));
+        api->fmi2FreeInstance(c);
     }
     for (size_t i = 0; i < n_out; i++)
         printf("%u=%.17g\n", (unsigned)out_vr[i], out[i]);
     return 0;
+}
+
+/* -- --calls: a call sequence, each status printed ---------------------------------------------- */
+
+#define SHOW(label, call) printf("%s %d\n", label, (int)(call))
+
+/* Every function that takes an instance, called with NULL. */
+static void null_instance(const Api *api)
+{
+    fmi2ValueReference vr = 0;
+    fmi2Real r = 0.0;
+    fmi2Integer i = 0;
+    fmi2Boolean b = fmi2False;
+    fmi2String s = "";
+    fmi2FMUstate state = NULL;
+    size_t size = 0;
+    fmi2Byte byte = 0;
+    fmi2Status status = fmi2OK;
+    api->fmi2FreeInstance(NULL); /* no status: it must simply return */
+    SHOW("null:fmi2SetDebugLogging", api->fmi2SetDebugLogging(NULL, fmi2True, 0, NULL));
+    SHOW("null:fmi2SetupExperiment", api->fmi2SetupExperiment(NULL, fmi2False, 0.0, 0.0, fmi2False, 0.0));
+    SHOW("null:fmi2EnterInitializationMode", api->fmi2EnterInitializationMode(NULL));
+    SHOW("null:fmi2ExitInitializationMode", api->fmi2ExitInitializationMode(NULL));
+    SHOW("null:fmi2Terminate", api->fmi2Terminate(NULL));
+    SHOW("null:fmi2Reset", api->fmi2Reset(NULL));
+    SHOW("null:fmi2GetReal", api->fmi2GetReal(NULL, &vr, 1, &r));
+    SHOW("null:fmi2GetInteger", api->fmi2GetInteger(NULL, &vr, 1, &i));
+    SHOW("null:fmi2GetBoolean", api->fmi2GetBoolean(NULL, &vr, 1, &b));
+    SHOW("null:fmi2GetString", api->fmi2GetString(NULL, &vr, 1, &s));
+    SHOW("null:fmi2SetReal", api->fmi2SetReal(NULL, &vr, 1, &r));
+    SHOW("null:fmi2SetInteger", api->fmi2SetInteger(NULL, &vr, 1, &i));
+    SHOW("null:fmi2SetBoolean", api->fmi2SetBoolean(NULL, &vr, 1, &b));
+    SHOW("null:fmi2SetString", api->fmi2SetString(NULL, &vr, 1, &s));
+    SHOW("null:fmi2GetFMUstate", api->fmi2GetFMUstate(NULL, &state));
+    SHOW("null:fmi2SetFMUstate", api->fmi2SetFMUstate(NULL, state));
+    SHOW("null:fmi2FreeFMUstate", api->fmi2FreeFMUstate(NULL, &state));
+    SHOW("null:fmi2SerializedFMUstateSize", api->fmi2SerializedFMUstateSize(NULL, state, &size));
+    SHOW("null:fmi2SerializeFMUstate", api->fmi2SerializeFMUstate(NULL, state, &byte, 1));
+    SHOW("null:fmi2DeSerializeFMUstate", api->fmi2DeSerializeFMUstate(NULL, &byte, 1, &state));
+    SHOW("null:fmi2GetDirectionalDerivative", api->fmi2GetDirectionalDerivative(NULL, &vr, 1, &vr, 1, &r, &r));
+    SHOW("null:fmi2SetRealInputDerivatives", api->fmi2SetRealInputDerivatives(NULL, &vr, 1, &i, &r));
+    SHOW("null:fmi2GetRealOutputDerivatives", api->fmi2GetRealOutputDerivatives(NULL, &vr, 1, &i, &r));
+    SHOW("null:fmi2DoStep", api->fmi2DoStep(NULL, 0.0, 0.1, fmi2True));
+    SHOW("null:fmi2CancelStep", api->fmi2CancelStep(NULL));
+    SHOW("null:fmi2GetStatus", api->fmi2GetStatus(NULL, fmi2DoStepStatus, &status));
+    SHOW("null:fmi2GetRealStatus", api->fmi2GetRealStatus(NULL, fmi2LastSuccessfulTime, &r));
+    SHOW("null:fmi2GetIntegerStatus", api->fmi2GetIntegerStatus(NULL, fmi2DoStepStatus, &i));
+    SHOW("null:fmi2GetBooleanStatus", api->fmi2GetBooleanStatus(NULL, fmi2Terminated, &b));
+    SHOW("null:fmi2GetStringStatus", api->fmi2GetStringStatus(NULL, fmi2PendingStatus, &s));
+}
+
+/* NULL where the instance's functions expect an array or a state (nvr > 0). */
+static void null_arguments(const Api *api, fmi2Component c)
+{
+    fmi2ValueReference vr = 0;
+    fmi2Real r = 0.0;
+    SHOW("nullargs:fmi2GetReal(vr)", api->fmi2GetReal(c, NULL, 1, &r));
+    SHOW("nullargs:fmi2GetReal(value)", api->fmi2GetReal(c, &vr, 1, NULL));
+    SHOW("nullargs:fmi2SetReal(value)", api->fmi2SetReal(c, &vr, 1, NULL));
+    SHOW("nullargs:fmi2GetFMUstate", api->fmi2GetFMUstate(c, NULL));
+    SHOW("nullargs:fmi2SetFMUstate", api->fmi2SetFMUstate(c, NULL));
+    SHOW("nullargs:fmi2SerializedFMUstateSize", api->fmi2SerializedFMUstateSize(c, NULL, NULL));
+    SHOW("nullargs:fmi2GetRealStatus", api->fmi2GetRealStatus(c, fmi2LastSuccessfulTime, NULL));
+}
+
+static int calls_mode(const Api *api, int argc, char **argv)
+{
+    if (argc < 5) {
+        fprintf(stderr, "usage: %s --calls LIBRARY RESOURCE_URI GUID CALL ...\n", argv[0]);
+        return 2;
+    }
+    const char *uri = argv[3], *guid = argv[4];
+    fmi2Component c = NULL;
+    fmi2FMUstate state = NULL;
+    fmi2Real t = 0.0, h = 0.1;
+    for (int k = 5; k < argc; k++) {
+        const char *call = argv[k], *arg = strchr(call, ':');
+        arg = arg ? arg + 1 : "";
+        if (strcmp(call, "instantiate") == 0) {
+            c = api->fmi2Instantiate("native", fmi2CoSimulation, guid, uri, &callbacks, fmi2False, fmi2False);
+            printf("%s %s\n", call, c ? "ok" : "null");
+        } else if (strncmp(call, "guid:", 5) == 0) {
+            guid = arg;
+        } else if (strcmp(call, "setup") == 0) {
+            SHOW(call, api->fmi2SetupExperiment(c, fmi2False, 0.0, 0.0, fmi2False, 0.0));
+        } else if (strcmp(call, "enter") == 0) {
+            SHOW(call, api->fmi2EnterInitializationMode(c));
+        } else if (strcmp(call, "exit") == 0) {
+            SHOW(call, api->fmi2ExitInitializationMode(c));
+        } else if (strcmp(call, "step") == 0) {
+            fmi2Status s = api->fmi2DoStep(c, t, h, fmi2True);
+            if (s <= fmi2Warning)
+                t += h;
+            SHOW(call, s);
+        } else if (strcmp(call, "terminate") == 0) {
+            SHOW(call, api->fmi2Terminate(c));
+        } else if (strcmp(call, "reset") == 0) {
+            t = 0.0;
+            SHOW(call, api->fmi2Reset(c));
+        } else if (strncmp(call, "getReal:", 8) == 0) {
+            fmi2ValueReference vr = (fmi2ValueReference)strtoul(arg, NULL, 10);
+            fmi2Real value = 0.0;
+            SHOW(call, api->fmi2GetReal(c, &vr, 1, &value));
+        } else if (strncmp(call, "setReal:", 8) == 0) {
+            fmi2ValueReference vr = (fmi2ValueReference)strtoul(arg, NULL, 10);
+            const char *eq = strchr(arg, '=');
+            fmi2Real value = eq ? strtod(eq + 1, NULL) : 0.0;
+            SHOW(call, api->fmi2SetReal(c, &vr, 1, &value));
+        } else if (strcmp(call, "getState") == 0) {
+            SHOW(call, api->fmi2GetFMUstate(c, &state));
+        } else if (strcmp(call, "setState") == 0) {
+            SHOW(call, api->fmi2SetFMUstate(c, state));
+        } else if (strcmp(call, "cancel") == 0) {
+            SHOW(call, api->fmi2CancelStep(c));
+        } else if (strcmp(call, "free") == 0) {
+            if (state != NULL)
+                api->fmi2FreeFMUstate(c, &state);
+            api->fmi2FreeInstance(c);
+            c = NULL;
+            printf("%s done\n", call);
+        } else if (strcmp(call, "null") == 0) {
+            null_instance(api);
+        } else if (strcmp(call, "nullargs") == 0) {
+            null_arguments(api, c);
+        } else {
+            fprintf(stderr, "unknown call %s\n", call);
+            return 2;
+        }
+        fflush(stdout);
+    }
+    return 0;
+}
+
+/* -- --threads: two FMUs set up at once --------------------------------------------------------- */
+
+typedef struct {
+    Api api;
+    const char *uri, *guid, *name;
+    pthread_barrier_t *start;
+    int result;
+} Job;
+
+static int simulate(const Api *api, const char *name, const char *uri, const char *guid)
+{
+    fmi2Component c = api->fmi2Instantiate(name, fmi2CoSimulation, guid, uri, &callbacks, fmi2False, fmi2False);
+    if (c == NULL) {
+        fprintf(stderr, "%s: fmi2Instantiate failed\n", name);
+        return 3;
+    }
+    CHECK(api->fmi2SetupExperiment(c, fmi2False, 0.0, 0.0, fmi2False, 0.0));
+    CHECK(api->fmi2EnterInitializationMode(c));
+    CHECK(api->fmi2ExitInitializationMode(c));
+    CHECK(api->fmi2DoStep(c, 0.0, 0.1, fmi2True));
+    CHECK(api->fmi2DoStep(c, 0.1, 0.1, fmi2True));
+    CHECK(api->fmi2Terminate(c));
+    api->fmi2FreeInstance(c);
+    return 0;
+}
+
+static void *job_main(void *arg)
+{
+    Job *job = arg;
+    pthread_barrier_wait(job->start);
+    job->result = simulate(&job->api, job->name, job->uri, job->guid);
+    return NULL;
+}
+
+static int threads_mode(int argc, char **argv)
+{
+    if (argc != 8) {
+        fprintf(stderr, "usage: %s --threads LIB1 URI1 GUID1 LIB2 URI2 GUID2\n", argv[0]);
+        return 2;
+    }
+    pthread_barrier_t start;
+    pthread_barrier_init(&start, NULL, 2);
+    Job jobs[2];
+    pthread_t threads[2];
+    for (int k = 0; k < 2; k++) {
+        jobs[k] = (Job){.uri = argv[3 + 3 * k], .guid = argv[4 + 3 * k], .name = k ? "second" : "first",
+                        .start = &start, .result = 3};
+        if (!load(argv[2 + 3 * k], &jobs[k].api))
+            return 2;
+    }
+    for (int k = 0; k < 2; k++)
+        pthread_create(&threads[k], NULL, job_main, &jobs[k]);
+    for (int k = 0; k < 2; k++)
+        pthread_join(threads[k], NULL);
+    pthread_barrier_destroy(&start);
+    return jobs[0].result ? jobs[0].result : jobs[1].result;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc > 1 && strcmp(argv[1], "--threads") == 0)
+        return threads_mode(argc, argv);
+    int calls = argc > 1 && strcmp(argv[1], "--calls") == 0;
+    if (argc < 2 + calls) {
+        fprintf(stderr, "usage: see the head of native_importer.c\n");
+        return 2;
+    }
+    Api api;
+    if (!load(argv[1 + calls], &api))
+        return 2;
+    return calls ? calls_mode(&api, argc, argv) : runs_mode(&api, argc, argv);
 }

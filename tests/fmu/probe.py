@@ -59,6 +59,17 @@ def step_status(fmu, t, dt=0.1):
         return exc.status
 
 
+def reinitialised(fmu, vr, parameters):
+    """fmi2Reset, then initialise with `parameters` (String) and step: the step's status."""
+    fmu.reset()
+    fmu.setupExperiment(startTime=0.0)
+    fmu.enterInitializationMode()
+    for name, value in parameters.items():
+        fmu.setString([vr[name]], [value])
+    fmu.exitInitializationMode()
+    return step_status(fmu, 0.0)
+
+
 def main():
     path, scenario = sys.argv[1], sys.argv[2]
     report = {"scenario": scenario}
@@ -85,8 +96,8 @@ def main():
         name = "no_such_bearing" if scenario == "unknown_bearing" else "100%_bearing_%s_%d"
         fmu, vr, unzip = open_fmu(path, {"bearing": name})
         report["init_status"] = init_statuses[-1]
-        report["status"] = step_status(fmu, 0.0)
-        fmu.setString([vr["bearing"]], ["6208"])  # a corrected parameter recovers
+        report["status"] = step_status(fmu, 0.0)  # refused: the instance is in the error state
+        report["recovered"] = reinitialised(fmu, vr, {"bearing": "6208"})  # reset, a corrected parameter
     elif scenario == "qs_bad_inputs":
         fmu, vr, unzip = open_fmu(path)
         good = {"omega": 1047.0, "F_z": 800.0, "F_x": 200.0, "T_oil": 313.15, "dPd_thermal": 0.0}
@@ -113,6 +124,7 @@ def main():
         fmu, vr, unzip = open_fmu(path, {"race_control": "sideways"})
         report["init_status"] = init_statuses[-1]
         report["status"] = step_status(fmu, 0.0)
+        report["recovered"] = reinitialised(fmu, vr, {"race_control": "outer"})
     elif scenario == "simulate":
         fmu, vr, unzip = open_fmu(path)
         fmu.setReal([vr["omega"], vr["F_y"]], [500.0, 3000.0])

@@ -82,7 +82,15 @@ def test_validate_and_variables(dem_fmu):
     shared = {"x", "y", "z", "theta_x", "theta_y", "torque", "P_loss", "Q_inner_ring", "Q_outer_ring"}
     shared |= {"Lambda_inner", "Lambda_outer"}
     shared |= {"h_min_inner", "h_min_outer", "regime", "C_bearing", "Q_max_inner", "Q_max_outer", "p_max"}
-    shared |= {"alpha_inner", "alpha_outer", "omega_cage", "omega_ball", "n_loaded"}
+    shared |= {
+        "alpha_inner",
+        "alpha_outer",
+        "truncation_inner",
+        "truncation_outer",
+        "omega_cage",
+        "omega_ball",
+        "n_loaded",
+    }
     shared |= {"omega_ball_cage", "FTF", "BPFO", "BPFI", "BSF", "h_c_inner", "h_c_outer"}
     shared |= {f"K[{i},{j}]" for i in range(1, 6) for j in range(1, 6)}
     assert outputs == shared | {"cage_slip", "SRR_max", "monitor_status"}
@@ -95,6 +103,7 @@ def test_validate_and_variables(dem_fmu):
         "refresh_interval",
         "traction_limit",
         "average_outputs",
+        "average_state_outputs",
     }
     quasi_static = {v.name: v for v in read_model_description(str(_fmu("Bearing", "quasi_static.toml"))).modelVariables}
     for name in shared | inputs:
@@ -121,13 +130,15 @@ def test_moments_tilt_the_ring_as_the_python_model(dem_fmu):
     assert ref["theta_x"] > 1e-5 and ref["theta_y"] < -1e-6
 
 
-@pytest.mark.parametrize("averaged", [True, False])
-def test_fmu_equals_python_model_over_ramp_and_load_step(dem_fmu, averaged):
+@pytest.mark.parametrize("averaged, averaged_state", [(True, False), (False, False), (True, True)])
+def test_fmu_equals_python_model_over_ramp_and_load_step(dem_fmu, averaged, averaged_state):
     """Every output after every step equals DemModel.evaluate at the same inputs, to the bit, with the power
-    outputs and the capacitance averaged over the step (default) or taken at its end (average_outputs false)."""
-    model = DemModel(scene=dem_scene(), averaged=averaged)
+    outputs and the capacitance averaged over the step (default) or taken at its end (average_outputs false), and
+    with the loads, films and displacements averaged too (average_state_outputs)."""
+    model = DemModel(scene=dem_scene(), averaged=averaged, averaged_state=averaged_state)
     names = output_names(dem_fmu)
-    with opened(dem_fmu, "loop", {"average_outputs": averaged}) as (fmu, vr):
+    parameters = {"average_outputs": averaged, "average_state_outputs": averaged_state}
+    with opened(dem_fmu, "loop", parameters) as (fmu, vr):
         for n, (omega, F_x, F_y) in enumerate(SCRIPT):
             set_inputs(fmu, vr, omega, F_x, F_y)
             fmu.doStep(n * H, H)
@@ -230,7 +241,7 @@ def test_bad_parameter_fails_initialisation_with_its_range(dem_fmu):
     fmu, vr, _ = probe.open_fmu(str(dem_fmu), {"dt": -1e-6})
     assert probe.init_statuses == [3]  # fmi2Error
     assert any("dt = -1e-06 s is outside the allowed range [0, 0.0001] s" in t for t in error_messages())
-    assert step_status(fmu, 0.0, H) == 2
+    assert step_status(fmu, 0.0, H) == 3  # the error state: no step until fmi2Reset
     fmu.freeInstance()
 
 

@@ -11,7 +11,12 @@
 - a Python exception in the slave is fmi2Error with its traceback logged (the exception first), never
   fmi2Fatal;
 - FMUs set up by several host threads at once take turns: every copy of the layer in a process holds
-  one set-up lock while it imports and constructs its slave.
+  one set-up lock while it imports and constructs its slave, and a native host that starts two FMUs on
+  two threads at once (both copies of the layer starting the interpreter) exits 0;
+- no entry point crashes the host: a NULL instance, a NULL argument, a call out of the FMI 2.0 call
+  sequence, a wrong GUID and calls after a failed fmi2Reset get fmi2Error (with a message naming the
+  call and the state where an instance has a logger), and a slave constructor's exception reaches the
+  host's logger with its text.
 """
 
 import json
@@ -27,7 +32,7 @@ from fmpy import extract, read_model_description
 from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import fmi2Terminated
 
-from bearing_fmu_common.runtime.build import fmi_headers
+from bearing_fmu_common.runtime.build import fmi_headers, install_runtime
 from tests.fmu import probe
 from tests.fmu.harness import opened
 
@@ -48,7 +53,8 @@ CASES = {
 @pytest.fixture(scope="module")
 def importer(tmp_path_factory):
     exe = tmp_path_factory.mktemp("native") / "native_importer"
-    cmd = ["gcc", "-O1", "-Wall", "-Wextra", "-Werror", f"-I{fmi_headers()}", str(IMPORTER), "-o", str(exe), "-ldl"]
+    cmd = ["gcc", "-O1", "-Wall", "-Wextra", "-Werror", f"-I{fmi_headers()}", str(IMPORTER), "-o", str(exe)]
+    cmd += ["-ldl", "-lpthread"]
     proc = subprocess.run(cmd, capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
     return exe
@@ -79,8 +85,25 @@ class Unpacked:
         values = {name: float(by_vr[str(self.vr[name])]) for name in outputs if str(self.vr[name]) in by_vr}
         return proc.returncode, values, proc.stderr
 
+    def calls(self, importer, calls):
+        """The importer's --calls mode in a fresh process with a bare environment: (returncode, [(call,
+        status)], stderr); status is the fmi2Status number, or "ok"/"null" for instantiate."""
+        args = [str(importer), "--calls", str(self.library), self.resources, self.guid, *calls]
+        env = {k: os.environ[k] for k in KEPT if k in os.environ}
+        proc = subprocess.run(args, capture_output=True, text=True, env=env, timeout=600)
+        lines = [line.split(" ", 1) for line in proc.stdout.splitlines()]
+        return proc.returncode, [(call, int(s) if s.isdigit() else s) for call, s in lines], proc.stderr
+
     def remove(self):
         shutil.rmtree(self.dir, ignore_errors=True)
+
+
+@pytest.fixture
+def unpacked(request):
+    """Unpacked(fmu) for the FMU fixture named by the test's parameter, removed afterwards."""
+    fmu = Unpacked(request.getfixturevalue(request.param))
+    yield fmu
+    fmu.remove()
 
 
 def fmpy_outputs(fmu_path, inputs, outputs):
@@ -160,21 +183,35 @@ def test_fmpy_simulate_fmu_raises_with_the_fmu_message(analytic_fmu, how, functi
 
 
 def test_bad_input_is_discarded_without_terminate_and_a_corrected_input_continues(analytic_fmu):
+    """fmi2Discard leaves the instance stepping (a corrected input continues); the same step refused twice
+    is fmi2Error, after which the instance is in the error state until a state saved before is restored."""
     with opened(analytic_fmu, "discard", {"omega": 500.0, "F_y": 3000.0}) as (fmu, vr):
         fmu.doStep(0.0, STEP)
         good = fmu.getReal([vr["Lambda_outer"]])
+        saved = fmu.getFMUstate()
         fmu.setReal([vr["omega"]], [float("nan")])
         with pytest.raises(FMICallException) as refused:
             fmu.doStep(STEP, STEP)
         assert refused.value.status == 2  # fmi2Discard
         assert fmu.getBooleanStatus(fmi2Terminated) is False or fmu.getBooleanStatus(fmi2Terminated) == 0
         assert fmu.getReal([vr["Lambda_outer"]]) == good  # outputs keep their last valid values
-        with pytest.raises(FMICallException) as again:  # the same step refused twice: fmi2Error
-            fmu.doStep(STEP, STEP)
-        assert again.value.status == 3
         fmu.setReal([vr["omega"]], [500.0])
         fmu.doStep(STEP, STEP)
         assert fmu.getReal([vr["Lambda_outer"]]) == good  # same inputs as the first step: same outputs
+        fmu.setReal([vr["omega"]], [float("nan")])
+        with pytest.raises(FMICallException):
+            fmu.doStep(2 * STEP, STEP)
+        with pytest.raises(FMICallException) as again:  # the same step refused twice: fmi2Error
+            fmu.doStep(2 * STEP, STEP)
+        assert again.value.status == 3
+        with pytest.raises(FMICallException) as stopped:  # the error state: no step before a restore
+            fmu.doStep(2 * STEP, STEP)
+        assert stopped.value.status == 3
+        fmu.setFMUstate(saved)
+        fmu.freeFMUstate(saved)
+        fmu.setReal([vr["omega"]], [500.0])
+        fmu.doStep(STEP, STEP)
+        assert fmu.getReal([vr["Lambda_outer"]]) == good
 
 
 def test_python_exception_is_an_error_with_its_traceback(analytic_fmu):
@@ -188,7 +225,12 @@ def test_python_exception_is_an_error_with_its_traceback(analytic_fmu):
         assert any("Traceback" in t and "TypeError" in t and "is not of type String" in t for t in texts), texts
         # the exception before its traceback: a host that shows only a message's start still shows the cause
         assert all(t.index("TypeError") < t.index("Traceback") for t in texts if "Traceback" in t), texts
-        assert fmu.getReal([vr["omega"]]) == [0.0]  # the instance is still usable
+        assert fmu.getReal([vr["omega"]]) == [0.0]  # values can still be read (diagnostics)
+        fmu.reset()  # and the instance runs again after fmi2Reset
+        fmu.setupExperiment(startTime=0.0)
+        fmu.enterInitializationMode()
+        fmu.exitInitializationMode()
+        fmu.doStep(0.0, STEP)
         fmu.terminate()
     finally:
         fmu.freeInstance()
@@ -243,3 +285,130 @@ def test_fmus_set_up_by_several_threads_take_turns(analytic_fmu):
         "second_waited": True,
         "second_instantiated": True,
     }
+
+
+# -- the layer cannot crash its host ------------------------------------------------------------------
+
+FUNCTIONS = """SetDebugLogging SetupExperiment EnterInitializationMode ExitInitializationMode Terminate Reset GetReal
+    GetInteger GetBoolean GetString SetReal SetInteger SetBoolean SetString GetFMUstate SetFMUstate FreeFMUstate
+    SerializedFMUstateSize SerializeFMUstate DeSerializeFMUstate GetDirectionalDerivative SetRealInputDerivatives
+    GetRealOutputDerivatives DoStep CancelStep GetStatus GetRealStatus GetIntegerStatus GetBooleanStatus
+    GetStringStatus""".split()
+
+
+@pytest.mark.parametrize("unpacked", ["analytic_fmu"], indirect=True)
+def test_every_entry_point_refuses_a_null_instance(unpacked, importer):
+    """fmi2Error (3) from each of the 30 functions that take an instance, fmi2FreeInstance(NULL) returns."""
+    rc, statuses, stderr = unpacked.calls(importer, ["null"])
+    assert rc == 0, stderr[-2000:]
+    assert statuses == [(f"null:fmi2{name}", 3) for name in FUNCTIONS]
+
+
+@pytest.mark.parametrize("unpacked", ["analytic_fmu"], indirect=True)
+def test_calls_out_of_the_fmi_call_sequence_are_refused(unpacked, importer):
+    """fmi2DoStep before fmi2ExitInitializationMode (in state instantiated, then in initialization mode)
+    and after fmi2Terminate returns fmi2Error with a message naming the call and the state; the instance
+    is then in the error state (fmi2Terminate refused) and fmi2Reset makes it run again."""
+    calls = ["instantiate", "step", "reset", "setup", "enter", "step", "terminate", "reset"]
+    calls += ["setup", "enter", "exit", "step", "terminate", "step", "free"]
+    rc, statuses, stderr = unpacked.calls(importer, calls)
+    assert rc == 0, stderr[-2000:]
+    assert [s for _, s in statuses] == ["ok", 3, 0, 0, 0, 3, 3, 0, 0, 0, 0, 0, 0, 3, "done"]
+    assert "fmi2DoStep is not allowed in state instantiated" in stderr
+    assert "fmi2DoStep is not allowed in state initialization mode" in stderr
+    assert "fmi2Terminate is not allowed in state error" in stderr
+    assert "fmi2DoStep is not allowed in state terminated" in stderr
+
+
+@pytest.mark.parametrize("unpacked", ["analytic_fmu"], indirect=True)
+def test_null_arguments_are_refused(unpacked, importer):
+    rc, statuses, stderr = unpacked.calls(importer, ["instantiate", "setup", "enter", "exit", "nullargs", "free"])
+    assert rc == 0, stderr[-2000:]
+    assert all(status == 3 for call, status in statuses if call.startswith("nullargs:")), statuses
+    assert "fmi2GetReal: argument vr is NULL" in stderr
+
+
+@pytest.mark.parametrize("unpacked", ["analytic_fmu"], indirect=True)
+def test_a_wrong_guid_is_refused(unpacked, importer):
+    rc, statuses, stderr = unpacked.calls(importer, ["guid:{not-this-fmu}", "instantiate"])
+    assert rc == 0, stderr[-2000:]
+    assert statuses == [("instantiate", "null")]
+    assert f"GUID '{{not-this-fmu}}' is not this FMU's ('{unpacked.guid}' in its modelDescription.xml)" in stderr
+
+
+@pytest.fixture(scope="module")
+def failing_fmu(tmp_path_factory):
+    """An FMU of tests/fmu/failing_constructor_slave.py with the product's FMI layer."""
+    from pythonfmu.builder import FmuBuilder
+
+    script = Path(__file__).with_name("failing_constructor_slave.py")
+    path = FmuBuilder.build_FMU(script, dest=tmp_path_factory.mktemp("failing"))
+    sys.modules.pop(script.stem, None)
+    return install_runtime(path)
+
+
+def failing_from(fmu_path, construction):
+    """The failing FMU unpacked, its constructor failing from the given construction on."""
+    fmu = Unpacked(fmu_path)
+    (fmu.dir / "resources" / "fail_from.txt").write_text(str(construction))
+    return fmu
+
+
+def test_a_constructor_exception_reaches_the_logger_with_its_text(failing_fmu, importer):
+    fmu = failing_from(failing_fmu, 1)
+    try:
+        rc, statuses, stderr = fmu.calls(importer, ["instantiate"])
+    finally:
+        fmu.remove()
+    assert rc == 0, stderr[-2000:]
+    assert statuses == [("instantiate", "null")]
+    # printed by a printf-formatting logger: the '%' arrives as written
+    assert "creating the slave: RuntimeError: the constructor refuses on purpose (construction 1, 100% planned)" in (
+        stderr
+    )
+    assert "unknown Python error" not in stderr
+
+
+def test_calls_after_a_failed_reset_return_error(failing_fmu, importer):
+    """The reset's new slave fails: the instance has no slave; stepping, reading, setting and another
+    reset return fmi2Error (no crash: the process exits 0), and the instance can be freed."""
+    fmu = failing_from(failing_fmu, 2)
+    try:
+        calls = ["instantiate", "setup", "enter", "exit", "step", "reset", "step", "getReal:0", "setReal:0=1"]
+        rc, statuses, stderr = fmu.calls(importer, calls + ["reset", "free"])
+    finally:
+        fmu.remove()
+    assert rc == 0, stderr[-2000:]
+    assert [s for _, s in statuses] == ["ok", 0, 0, 0, 0, 3, 3, 3, 3, 3, "done"]
+    assert "RuntimeError: the constructor refuses on purpose (construction 2, 100% planned)" in stderr
+    assert "fmi2GetReal: the instance has no model since fmi2Reset failed" in stderr
+
+
+TWO_THREAD_RUNS = 3
+
+
+def two_thread_runs(importer, first, second, runs):
+    """Exit codes of `runs` fresh processes that each set up the two FMUs from two threads at once."""
+    fmus = [Unpacked(first), Unpacked(second)]
+    env = {k: os.environ[k] for k in KEPT if k in os.environ}
+    args = [str(importer), "--threads"] + [str(x) for f in fmus for x in (f.library, f.resources, f.guid)]
+    try:
+        procs = [subprocess.run(args, capture_output=True, text=True, env=env, timeout=600) for _ in range(runs)]
+    finally:
+        for fmu in fmus:
+            fmu.remove()
+    return [p.returncode for p in procs], [p.stderr[-1000:] for p in procs if p.returncode]
+
+
+def test_a_native_host_sets_up_two_fmus_from_two_threads(analytic_fmu, spindle_thermal_fmu, importer):
+    """Both copies of the layer start the interpreter at once: the process-wide lock lets one start it.
+    Without that lock 10 of 12 such processes segfaulted here; the slow test below runs 100."""
+    codes, errors = two_thread_runs(importer, analytic_fmu, spindle_thermal_fmu, TWO_THREAD_RUNS)
+    assert codes == [0] * TWO_THREAD_RUNS, errors
+
+
+def test_a_hundred_native_hosts_set_up_two_fmus_from_two_threads(analytic_fmu, spindle_thermal_fmu, importer):
+    """100 fresh processes (about 1.5 s each here), each instantiating BearingAnalytic.fmu and
+    SpindleThermal.fmu from two threads at once, initialising, stepping and freeing: all exit 0."""
+    codes, errors = two_thread_runs(importer, analytic_fmu, spindle_thermal_fmu, 100)
+    assert codes == [0] * 100, (sum(c != 0 for c in codes), errors[:3])

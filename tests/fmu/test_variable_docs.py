@@ -58,3 +58,16 @@ def test_built_fmu_exposes_the_documented_variables(fixture, name, request):
     md = read_model_description(str(request.getfixturevalue(fixture)))
     exposed = [(v.name, v.causality, v.type, v.unit or "") for v in md.modelVariables]
     assert exposed == documented(name)
+
+
+def test_names_with_a_comma_come_with_the_csv_quoting_note():
+    """K[i,j] names contain a comma: each variable list that has one, and the README's FMU section, say how
+    a CSV must write them; a list without such names does not."""
+    from bearing_fmu.build import COMMA_NAMES_NOTE
+
+    for arguments in all_variables():
+        name, *_, parameters, inputs, outputs = arguments[:6]
+        has_comma = any("," in v.name for v in (*parameters, *inputs, *outputs))
+        assert (COMMA_NAMES_NOTE in variables_markdown(*arguments)) == has_comma, name
+    assert COMMA_NAMES_NOTE in readme_block()
+    assert '`"K[1,2]"`' in COMMA_NAMES_NOTE

@@ -24,7 +24,8 @@ be handed to both. The model:
   -M_s s/max(|s|, w_reg, 4 M_s dt/I) n, s the spin relative to the race; F_roll = F_R + (F_h + F_H)/2
   (Houpert EHL force on each surface, hysteresis and Heathcote halved), M_s = (3/8) mu Q a E (Jones);
 - cage ball between balls k and k + 1, Hertz sphere-sphere with critical damping, frictionless; guide
-  channel around the pitch circle (distance from the circle minus the play), critically damped;
+  channel around the pitch circle (distance from the circle minus the play), critically damped; the cage
+  rigid in rotation: each element's torque about z replaced by the mean (the difference as a tangential force);
 - velocity Verlet with the velocity predictor v + a dt for the forces; omega linear over the call;
 - tribology refreshed at the start of every N-th step: Hertz, entrainment u = |u_b + u_r|/2 of the
   surface velocities relative to the orbiting contact frame, film, Lambda, mu, C_n, capacitance.
@@ -147,7 +148,7 @@ def refresh(st, par, lub, omega, T_oil):
                 trib[s.T_PHI, race, j] = phi
                 trib[s.T_MU, race, j] = (1.0 - phi) * ref_ehl.friction_coefficient(0.0) + phi * par[s.P_MU_LIM]
                 v_s = max(par[s.P_S_TRACTION] * u, 8.0 / (3.0 * math.pi) * abs(spin) * a)
-                trib[s.T_SLIP, race, j] = 1.0 / v_s if u > 0.0 else 0.0
+                trib[s.T_SLIP, race, j] = 1.0 / v_s if v_s > 0.0 else 0.0
             trib[s.T_C_N, race, j] = ref_ehl.normal_damping(lam, Q, par[s.P_ALPHA_E], eta, a, 0.5 * D, h_min)
             trib[s.T_REGIME, race, j] = ref_ehl.lubrication_regime(lam)
             trib[s.T_F_ROLL, race, j] = F_R + 0.5 * (F_h + F_H)
@@ -292,6 +293,13 @@ def forces(st, par, omega, F_ring, vel, dt):
             n = (pc - q) / dist
             f = damped_hertz(par[s.P_K_GUIDE], dist - par[s.P_GUIDE_GAP], par[s.P_ZETA_CAGE], m_c, np.dot(v_c[:, k], n))
             f_cage[:, k] -= f * n
+    # the cage is rigid in rotation: every element carries the mean torque about z as a tangential force
+    torque = np.array([np.cross(cage[s.C_X : s.C_X + 3, k], f_cage[:, k])[2] for k in range(Z)])
+    for k in range(Z):
+        p = cage[s.C_X : s.C_X + 3, k]
+        tangent = np.cross(Z_AXIS, p)
+        tangent[2] = 0.0
+        f_cage[:, k] += (torque.mean() - torque[k]) / np.dot(tangent, tangent) * tangent
     return f_ball, m_ball, f_cage, f_ring, m_ring, power
 
 
@@ -368,22 +376,50 @@ def step_capacitance(st, par):
     return total
 
 
+def refresh_sample(trib):
+    """One refresh's sample of the averaged state outputs, in the order of acc[A_S_QMAX_I:A_SIZE]: largest load per
+    race, largest Hertz pressure, smallest Lambda and h_min per race and h_c of the most loaded contact (0 where a
+    race has no loaded contact)."""
+    loaded = trib[s.T_Q] > 0.0
+    sample = {}
+    for race in range(2):
+        q = np.where(loaded[race], trib[s.T_Q, race], 0.0)
+        any_ = loaded[race].any()
+        sample[("qmax", race)] = q.max()
+        sample[("lam", race)] = trib[s.T_LAMBDA, race][loaded[race]].min() if any_ else 0.0
+        sample[("hmin", race)] = trib[s.T_H_MIN, race][loaded[race]].min() if any_ else 0.0
+        sample[("hc", race)] = trib[s.T_H_C, race, int(np.argmax(q))] if any_ else 0.0
+    p_max = trib[s.T_P_MAX][loaded].max() if loaded.any() else 0.0
+    return np.array(
+        [sample[("qmax", 0)], sample[("qmax", 1)], p_max]
+        + [sample[(name, race)] for name in ("lam", "hmin", "hc") for race in range(2)]
+    )
+
+
 def advance(st, par, lub, n_steps, dt, omega0, omega1, F_ring, T_oil):
     """n_steps steps (omega linear from omega0 to omega1); returns (energy dissipated per race (J), power
-    dissipated per race in the last step (W), capacitance of every step integrated over time (F.s))."""
+    dissipated per race in the last step (W), capacitance of every step integrated over time (F.s), the averaged
+    state outputs' sums in the layout of acc[A_XT:A_SIZE]: the ring's displacement and tilts integrated over the steps,
+    the number of refreshes and the sums of their samples)."""
     refresh_every = int(par[s.P_REFRESH])
     energy = np.zeros(2)
     last = np.zeros(2)
     capacitance = 0.0
+    position = np.zeros(5)
+    samples = np.zeros(9)
+    count = 0
     for n in range(n_steps):
         if st["counters"][s.K_STEP] % refresh_every == 0:
             refresh(st, par, lub, omega0 + (omega1 - omega0) * n / n_steps, T_oil)
+            samples += refresh_sample(st["trib"])
+            count += 1
         last = step(st, par, omega0 + (omega1 - omega0) * (n + 1) / n_steps, F_ring, dt) + st["trib"][s.T_P_FILM].sum(
             axis=1
         )
         energy += last * dt
         capacitance += step_capacitance(st, par) * dt
-    return energy, last, capacitance
+        position += np.concatenate((st["ring"][s.R_X : s.R_X + 3], st["ring"][s.R_TH : s.R_TH + 2])) * dt
+    return energy, last, capacitance, np.concatenate((position, [count], samples))
 
 
 KERNEL_MODULE = "bearing_fmu.kernels.ball_dynamics.integrator"

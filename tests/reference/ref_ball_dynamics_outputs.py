@@ -20,7 +20,7 @@ import math
 import numpy as np
 
 from bearing_fmu.kernels.ball_dynamics import state as s
-from tests.reference import ref_capacitance, ref_ehl
+from tests.reference import ref_capacitance, ref_ehl, ref_truncation
 from tests.reference.ref_ball_dynamics import groove_contact, race_centre
 from tests.reference.ref_ball_dynamics_monitor import kinetic_energy
 
@@ -40,10 +40,10 @@ def _contacts(balls, ring, par):
 
 
 def contact_loads(balls, ring, par):
-    """Normal loads Q[race, ball] (N), 0 where the contact is open."""
+    """Normal loads Q[race, ball] (N), 0 where the contact is open or its approach is at most LOADED_APPROACH."""
     return np.array(
         [
-            [par[s.P_KH_I + race] * max(d, 0.0) ** 1.5 for d, _ in row]
+            [par[s.P_KH_I + race] * d**1.5 if d > s.LOADED_APPROACH else 0.0 for d, _ in row]
             for race, row in enumerate(_contacts(balls, ring, par))
         ]
     )
@@ -53,7 +53,7 @@ def contact_angles(balls, ring, par):
     """Contact angles alpha[race, ball] (rad) of the contact normals from the radial plane, 0 where open."""
     return np.array(
         [
-            [math.atan2(abs(n[2]), math.hypot(n[0], n[1])) if d > 0.0 else 0.0 for d, n in row]
+            [math.atan2(abs(n[2]), math.hypot(n[0], n[1])) if d > s.LOADED_APPROACH else 0.0 for d, n in row]
             for row in _contacts(balls, ring, par)
         ]
     )
@@ -147,3 +147,34 @@ TWINS = {
     "bearing_outputs": bearing_outputs,
     "pure_rolling_cage_speed": pure_rolling_cage_speed,
 }
+
+
+def signed_contact_angles(balls, ring, par):
+    """Signed contact angles alpha[race, ball] (rad) as the quasi-static fidelity measures them: the contact
+    direction (inner: ball centre to groove-curvature centre, -n; outer: centre to ball centre, n) split into its
+    axial component and its component along the outward radial unit vector at the ball, whether open or not."""
+    alpha = np.zeros((2, balls.shape[1]))
+    for race in range(2):
+        centre, rho, axis = race_centre(race, ring, par)
+        for j in range(balls.shape[1]):
+            p = balls[s.B_X : s.B_X + 3, j]
+            d = p - centre
+            across = d - np.dot(d, axis) * axis
+            e_r = across / np.linalg.norm(across)
+            groove_centre = centre + rho * e_r  # the curvature centre in the ball's plane
+            direction = groove_centre - p if race == 0 else p - groove_centre
+            alpha[race, j] = math.atan2(float(np.dot(direction, axis)), float(np.dot(direction, e_r)))
+    return alpha
+
+
+def shoulder_truncation(balls, ring, par, tp):
+    """kernels.truncation TR_* of the current state: loads and signed angles as above, the truncation twin."""
+    tr = np.zeros(4)
+    ref_truncation.race_truncation(
+        contact_loads(balls, ring, par), 0, signed_contact_angles(balls, ring, par), 0, tp, tr
+    )
+    return tr
+
+
+TWINS["signed_contact_angles"] = signed_contact_angles
+TWINS["shoulder_truncation"] = shoulder_truncation

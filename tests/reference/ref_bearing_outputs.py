@@ -11,7 +11,7 @@ import math
 
 from . import ref_geometry
 
-SRC_OUT, SRC_D, SRC_F, SRC_K, SRC_BALL_SET = 0, 1, 2, 3, 4
+SRC_OUT, SRC_D, SRC_F, SRC_K, SRC_BALL_SET, SRC_TRUNC = 0, 1, 2, 3, 4, 5
 BS_ALPHA_I, BS_ALPHA_O, BS_CAGE, BS_BALL, BS_ITERATIONS = 0, 1, 2, 3, 4
 BS_BALL_CAGE, BS_FTF, BS_BPFO, BS_BPFI, BS_BSF, BS_SIZE = 5, 6, 7, 8, 9, 10
 # rows of the per-ball array (kernels.jones_harris BQ_*)
@@ -49,9 +49,9 @@ def ball_set_summary(balls, omega, iterations, summary):
     summary[BS_FTF], summary[BS_BPFO], summary[BS_BPFI], summary[BS_BSF] = frequencies
 
 
-def quasi_static_outputs(balls, omega, iterations, out, d, F, K_flat, source, index, summary, values):
+def quasi_static_outputs(balls, omega, iterations, out, d, F, K_flat, trunc, source, index, summary, values):
     ball_set_summary(balls, omega, iterations, summary)
-    arrays = {SRC_OUT: out, SRC_D: d, SRC_F: F, SRC_K: K_flat, SRC_BALL_SET: summary}
+    arrays = {SRC_OUT: out, SRC_D: d, SRC_F: F, SRC_K: K_flat, SRC_BALL_SET: summary, SRC_TRUNC: trunc}
     for k, (code, i) in enumerate(zip(source, index)):
         values[k] = arrays[int(code)][int(i)]
     bad = [k for k in range(len(values)) if not math.isfinite(values[k])]

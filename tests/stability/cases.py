@@ -110,6 +110,12 @@ CASES = (
         S + "test_load_and_clearance_extremes.py",
         "test_clearance_near_the_geometric_limit_converges_or_says_so",
     ),
+    (
+        "large free contact angles (P_d 0.3-1.0 A), mostly radial and thrust-dominated loads, 0-1000 rad/s",
+        "quasi-static",
+        S + "test_large_free_angle_grid.py",
+        "test_every_grid_point_converges_or_is_refused_for_a_physical_reason",
+    ),
     ("step loads", "DEM", S + "test_dem_steps.py", "test_load_step_settles_on_the_quasi_static_displacement"),
     ("speed steps", "DEM", S + "test_dem_steps.py", "test_speed_step_accelerates_the_cage_without_overshoot"),
     (
@@ -153,5 +159,41 @@ CASES = (
         "closed loop",
         "tests/cosim/test_closed_loop.py",
         "test_fixed_10000_runs_away_and_stops_with_a_message",
+    ),
+    (
+        "angular-contact bearing under heavy thrust, 3 000-5 000 rpm, kicked: no ring whirl",
+        "DEM",
+        "tests/validation/test_dem_thrust_whirl.py",
+        "test_orbit_decays_below_one_percent_of_the_axial_deflection",
+    ),
+    (
+        "angular-contact bearing under heavy thrust, 8 000 rpm, kicked: orbit below 0.1 um",
+        "DEM",
+        "tests/validation/test_dem_thrust_whirl.py",
+        "test_orbit_at_8000_rpm_stays_below_a_tenth_of_a_micrometre",
+    ),
+    (
+        "angular-contact bearing at 10 000 rpm, 800 N thrust: outer-race control, no swing",
+        "DEM",
+        "tests/validation/test_dem_b7214c.py",
+        "test_with_the_ehl_traction_curve_it_is_outer_race_control",
+    ),
+    (
+        "healthy-bearing spectrum: only bearing frequencies",
+        "DEM",
+        "tests/validation/test_dem_spectrum.py",
+        "test_healthy_bearing_spectrum_has_only_bearing_frequencies",
+    ),
+    (
+        "contacts at the shoulder (light thrust, high speed)",
+        "quasi-static, DEM",
+        "tests/validation/test_shoulder_truncation.py",
+        "test_218_dem_light_thrust_high_speed_is_truncated_and_warned_once",
+    ),
+    (
+        "cold oil outside the lubricant's data",
+        "analytic, quasi-static, DEM",
+        "tests/unit/test_oil_temperature_range.py",
+        "test_analytic_and_dem_warn_once_per_entry",
     ),
 )

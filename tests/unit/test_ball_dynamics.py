@@ -94,7 +94,9 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction):
     if traction:  # some loaded contact above Lambda = 1, where the traction limit changes the Coulomb limit
         lam = kernel_state["trib"][s.T_LAMBDA][kernel_state["trib"][s.T_Q] > 0.0]
         assert (lam > 1.0).any()
-    energy, last_power, capacitance = ref.advance(twin_state, par, lub, steps, DT, omega0, omega1, np.array(F), T_oil)
+    energy, last_power, capacitance, state_sums = ref.advance(
+        twin_state, par, lub, steps, DT, omega0, omega1, np.array(F), T_oil
+    )
     report = {}
     for name in ("balls", "cage", "ring", "spring", "trib"):
         a, b = kernel_state[name], twin_state[name]
@@ -114,6 +116,12 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction):
     report["dissipated"] = _scale_err(acc[s.A_DISS_I : s.A_DISS_O + 1], energy)
     report["last step's power"] = _scale_err(acc[s.A_POWER_I : s.A_POWER_O + 1], last_power)
     report["capacitance x time"] = _scale_err(acc[s.A_CAP : s.A_CAP + 1], np.array([capacitance]))
+    # the averaged state outputs' integrals and sums: the displacement and tilts over the steps, the refresh samples
+    report["displacement x time"] = _scale_err(acc[s.A_XT : s.A_XT + 3], state_sums[:3])
+    report["tilt x time"] = _scale_err(acc[s.A_XT + 3 : s.A_XT + 5], state_sums[3:5])
+    assert acc[s.A_SAMPLES] == state_sums[5] > 0.0
+    for k in range(9):  # each sum on its own scale (loads, pressure, Lambda, films)
+        report[f"refresh sum {k}"] = _scale_err(acc[s.A_S_QMAX_I + k : s.A_S_QMAX_I + k + 1], state_sums[6 + k : 7 + k])
     print("kernel vs twin, largest scaled difference:", {k: f"{v:.2e}" for k, v in report.items()})
     assert np.array_equal(kernel_state["counters"], twin_state["counters"])
     for name, err in report.items():
@@ -303,6 +311,16 @@ def test_thermal_clearance_change_acts_like_the_clearance():
     assert np.max(np.abs(loads[0] - loads[1])) < 0.005 * np.max(loads[0])
 
 
+def _after_a_ramp(refresh):
+    """A 6208 at dt = 2^-19 s (exact in binary: runs of the same steps are bit-identical) ramped to 300 rad/s under
+    3 kN, the tribology refreshed every `refresh` steps; returns (model, dt)."""
+    dt = 2.0**-19
+    model = DemModel("6208", "guessasma_oil", dt=dt, refresh=refresh)
+    for k in range(1, 11):
+        model.advance(400 * k * dt, omega=30.0 * k, F_x=3000.0)
+    return model, dt
+
+
 def test_averaged_outputs_are_the_mean_of_the_per_step_values():
     """An interval of N steps with averaged outputs against the same N steps taken one call each with end-of-step
     outputs: the power outputs and the capacitance of the first equal the mean of the N end values of the second.
@@ -312,10 +330,7 @@ def test_averaged_outputs_are_the_mean_of_the_per_step_values():
     additions (sum of p dt / (N dt) against sum of p / N): rtol 1e-12 for N = 40 terms. The 6208 at 300 rad/s,
     3 kN, in the ramp's aftermath (springs slipping, powers varying from step to step), tribology refreshed every
     7 steps so that the capacitance changes within the interval."""
-    dt = 2.0**-19
-    model = DemModel("6208", "guessasma_oil", dt=dt, refresh=7)
-    for k in range(1, 11):
-        model.advance(400 * k * dt, omega=30.0 * k, F_x=3000.0)
+    model, dt = _after_a_ramp(refresh=7)
     start = model.get_state()
     N = 40
     model.averaged = True
@@ -332,6 +347,42 @@ def test_averaged_outputs_are_the_mean_of_the_per_step_values():
         assert np.ptp(values) > 1e-6 * abs(values.mean()), name  # the values do vary over the interval
     assert steps[-1]["P_loss"] == steps[-1]["Q_inner_ring"] + steps[-1]["Q_outer_ring"]
     assert averaged["Q_max_outer"] == steps[-1]["Q_max_outer"]  # loads are end values in both modes
+
+
+def test_averaged_state_outputs_are_the_means_over_the_interval():
+    """averaged_state (FMU parameter average_state_outputs): the ring's displacement is its mean over the interval's
+    DEM steps, and the loads, pressure and films their means over its tribology refreshes. The same 42 steps
+    (dt = 2^-19 s, exact in binary: bit-identical runs, the state restored between them) as one call with
+    averaged_state and as 42 one-step calls: x, y, z equal the means of the 42 end values (rtol 1e-12: the order
+    of the additions); with a refresh every step (refresh = 1) each one-step call's refresh sample is the film
+    its step starts from, so Lambda_outer, h_min_outer and Q_max_outer averaged equal the means of the samples the
+    refreshes wrote (trib after each one-step call; rtol 1e-12); without averaged_state they are end values."""
+    model, dt = _after_a_ramp(refresh=1)
+    start = model.get_state()
+    N = 42
+    model.averaged_state = True
+    averaged = model.advance(model.time + N * dt, F_x=3000.0)
+    model.set_state(start)
+    model.averaged_state = False
+    ends, samples = [], []
+    for _ in range(N):
+        ends.append(model.advance(model.time + dt, F_x=3000.0))
+        loaded = model.trib[s.T_Q, 1] > 0.0
+        samples.append(
+            (
+                model.trib[s.T_LAMBDA, 1][loaded].min(),
+                model.trib[s.T_H_MIN, 1][loaded].min(),
+                model.trib[s.T_Q, 1].max(),
+            )
+        )
+    for name in ("x", "y", "z"):
+        values = np.array([out[name] for out in ends])
+        assert averaged[name] == pytest.approx(values.mean(), rel=1e-12, abs=1e-18), name
+    assert np.ptp([out["x"] for out in ends]) > 0.0  # the ring moves over the interval
+    means = np.array(samples).mean(axis=0)
+    for k, name in enumerate(("Lambda_outer", "h_min_outer", "Q_max_outer")):
+        assert averaged[name] == pytest.approx(means[k], rel=1e-12), name
+    assert ends[-1]["x"] == model.ring[s.R_X]  # end values without averaged_state
 
 
 def test_clearance_limits_follow_the_groove_geometry():
@@ -381,9 +432,10 @@ def test_step_settings_set_the_time_step_and_the_refresh():
 
 def test_too_large_time_step_is_reported():
     """dt = 20 us is beyond the stability limit (about 6 us at 3 kN): the monitor stops the run and names a
-    time step that works."""
+    time step that works at these inputs, and the automatic step (dt = 0 in the FMU), which follows the loads and
+    the film as they change (a fixed step that works now can be stopped again later in a start-up)."""
     model = DemModel("6208", "guessasma_oil", dt=20e-6)
-    with pytest.raises(DemUnstableError, match=r"use dt <= .* s"):
+    with pytest.raises(DemUnstableError, match=r"use dt <= .* s \(.*\); or use dt = 0 \(automatic"):
         model.advance(5e-3, omega=0.0, F_y=3000.0)
 
 
@@ -479,3 +531,35 @@ def test_record_returns_time_series_of_outputs_and_contacts():
         t = t0 + k * 1e-4
         out = model.advance(t, omega=10.0 * (t - t0) / (1.5e-3 - t0), F_y=3000.0)
     assert out["Q_max_inner"] == rec["Q_max_inner"][-1]
+
+
+def test_refresh_interval_0_is_accepted_and_refreshes_at_every_step():
+    """refresh_interval's declared range (BearingDEM.fmu's FMI min/max) is [0, 1e-3] s, and the model accepts
+    all of it: 0 means a tribology refresh at every DEM step, what any interval shorter than the step gives
+    (refresh = max(1, floor(interval / dt))). The same steps with refresh = 1 step give the same bits."""
+    from bearing_fmu.models.declarations import DEM_PARAMETERS
+
+    declared = next(v for v in DEM_PARAMETERS if v.name == "refresh_interval")
+    assert declared.min == 0.0
+    dt = 2.0**-19
+    every = DemModel("6208", "guessasma_oil", dt=dt, refresh_interval=0.0)
+    fixed = DemModel("6208", "guessasma_oil", dt=dt, refresh=1)
+    for k in range(1, 4):
+        a = every.advance(20 * k * dt, omega=30.0 * k, F_x=3000.0)
+        b = fixed.advance(20 * k * dt, omega=30.0 * k, F_x=3000.0)
+        assert every.refresh == 1
+        assert a == b
+    with pytest.raises(InputError, match=r"refresh_interval = -1e-06 s is outside the allowed range \[0, 0.001\] s"):
+        DemModel("6208", "guessasma_oil", refresh_interval=-1e-6)
+
+
+def test_unloaded_bearing_reports_no_load_pressure_or_loaded_ball():
+    """6208 at rest without load: the balls touch nothing but within rounding (approaches of 1e-18-1e-15 m, loads of
+    1e-16 N) and p_max read 1.4 kPa with n_loaded 0; a contact counts as loaded from an approach of 1 pm
+    (state.LOADED_APPROACH, about 1e-8 N), so p_max, Q_max and n_loaded are all 0. With 10 N radial the loaded
+    contacts are counted and the pressure follows (Hertz: about 0.5 GPa at 10 N on a 6208 ball)."""
+    model = DemModel("6208", "guessasma_oil")
+    out = model.advance(0.01)
+    assert (out["p_max"], out["Q_max_inner"], out["Q_max_outer"], out["n_loaded"]) == (0.0, 0.0, 0.0, 0)
+    out = model.advance(0.02, F_y=10.0)
+    assert out["n_loaded"] > 0 and out["Q_max_outer"] > 1.0 and 1e8 < out["p_max"] < 2e9

@@ -85,6 +85,7 @@ def test_facade_outputs_equal_the_twin_fill(scene_file):
         model.d,
         model.F,
         model.K.reshape(-1),
+        model._trunc,
         model._source,
         model._index,
         np.zeros(bo.BS_SIZE),
@@ -99,7 +100,7 @@ def test_facade_outputs_equal_the_twin_fill(scene_file):
     out = model.out.copy()
     out[ck.CO_LAMBDA_I] = math.nan
     values = np.zeros(len(model.outputs))
-    args = (model.balls, 1.0, 3, out, model.d, model.F, model.K.reshape(-1), model._source, model._index)
+    args = (model.balls, 1.0, 3, out, model.d, model.F, model.K.reshape(-1), model._trunc, model._source, model._index)
     k_nan = model.output_names.index("Lambda_inner")
     assert bo.quasi_static_outputs(*args, np.zeros(bo.BS_SIZE), values) == k_nan
     assert rb.quasi_static_outputs(*args, np.zeros(bo.BS_SIZE), values.copy()) == k_nan

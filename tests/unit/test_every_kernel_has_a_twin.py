@@ -34,9 +34,17 @@ KERNEL_MODULES = (
     + ["spindle.thermal.network"]
 )
 JH = "bearing_fmu.kernels.jones_harris."
+ES = "bearing_fmu.kernels.ehl_solver."
 BD = "bearing_fmu.kernels.ball_dynamics."
 # helper -> (twinned caller, why the caller's comparison covers it)
 COVERED_THROUGH = {
+    ES + "_node_residual": (ES + "reynolds_residual", "the residual of one interior node, every node compared"),
+    ES + "_eps": (ES + "_node_residual", "the Poiseuille coefficient of a node, four face means per residual"),
+    ES + "_flux": (ES + "_node_residual", "the Couette flux of a node, three per upwind difference"),
+    ES + "_poiseuille_diagonal": (
+        ES + "relaxation_sweep",
+        "the derivative of a node's Poiseuille term in its own pressure, the Newton step's denominator",
+    ),
     "bearing_fmu.kernels.hertz._radius_ratio_of_ellipticity": (
         "bearing_fmu.kernels.hertz._ellipticity_exact_major",
         "the printed relation Ry/Rx(k) that the bisection inverts; compared on a grid of Ry/Rx through the exact "
@@ -65,9 +73,15 @@ COVERED_THROUGH = {
         "the per-ball rows, compared with the twin's balls after every solve (test_solution_matches_twin)",
     ),
     JH + "_global_newton": (JH + "solve_quasistatic", "the iteration whose result is the compared solution"),
-    JH + "_loads_residual_at": (JH + "_loads_line_search", "one evaluation of the damped step"),
-    JH + "_loads_line_search": (JH + "_global_newton", "the damping of the global Newton"),
-    JH + "_residual_norm": (JH + "_global_newton", "largest scaled load error: the compared solution's criterion"),
+    JH + "_loads_residual_at": (JH + "_global_newton", "one trial of the trust-region iteration"),
+    JH + "_damped_newton": (JH + "solve_quasistatic", "the last resort whose result is the compared solution"),
+    JH + "_loads_line_search": (JH + "_damped_newton", "the damping of the last-resort Newton"),
+    JH + "_dogleg": (JH + "_global_newton", "the step of the trust-region iteration whose result is compared"),
+    JH + "_model_decrease": (JH + "_dogleg", "the quadratic model's decrease, two sums"),
+    JH + "_sum_squares": (JH + "_global_newton", "a squared norm"),
+    JH + "_residual_norm": (JH + "_newton_start", "largest scaled load error: the compared solution's criterion"),
+    JH + "_newton_settings": (JH + "_global_newton", "the solvers' tolerance, cap, scales and stiffness floor"),
+    JH + "_newton_start": (JH + "_global_newton", "the first evaluation of the compared iteration"),
     JH + "_mean_ball_load": (JH + "_global_newton", "load scale of the convergence test, a mean"),
     # the DEM step's pieces: compared through advance over 300 steps of a 6208 in a speed ramp under 3 kN
     # (test_ball_dynamics.py: loaded and open contacts, boundary and mixed regimes, slipping springs, cage
@@ -97,6 +111,8 @@ COVERED_THROUGH = {
     BD + "cage.ball_cage_contact": (BD + "integrator.verlet_step", "ball - cage-ball contacts of a step"),
     BD + "cage.cage_guide_contact": (BD + "integrator.verlet_step", "cage ball - channel contacts of a step"),
     BD + "cage.damped_hertz": (BD + "cage.ball_cage_contact", "the damped Hertz law of both cage contacts"),
+    BD + "integrator.rigid_cage_torque": (BD + "integrator.verlet_step", "the cage's torque shared by its elements"),
+    BD + "integrator.sample_refresh": (BD + "integrator.advance", "the averaged state outputs' refresh samples"),
 }
 
 

@@ -9,6 +9,7 @@ from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.models.variables import InputError
 from bearing_fmu.params import ParameterError, catalogue, load_bearing, load_lubricant
 from bearing_fmu.scene import Scene, SceneError
+from tests.conftest import ROOT
 
 
 def test_scene_reports_every_problem_at_once():
@@ -169,3 +170,44 @@ def test_edge_inputs_give_finite_outputs(omega, F_y, Pd):
     assert all(math.isfinite(v) for v in out.values())
     if omega == 0.0:
         assert out["Lambda_inner"] == 0.0 and out["Lambda_outer"] == 0.0 and out["regime"] == 0
+
+
+# A file given for the wrong parameter, or a path that is no file, is named as such (not "missing key" or
+# "unknown bearing"): the message names the parameter, the value and the kind of file it is.
+BEARING_FILE = "bearing_fmu/params/bearings/B7214C.toml"
+LUBRICANT_FILE = "bearing_fmu/params/lubricants/iso_vg68_mineral.toml"
+SPINDLE_FILE = "spindle/thermal/params/b7214c_x_pair.toml"
+
+
+@pytest.mark.parametrize(
+    ("loader", "given", "message"),
+    [
+        ("bearing", LUBRICANT_FILE, "bearing = '.*iso_vg68_mineral.toml' is a lubricant file, not a bearing file"),
+        ("bearing", SPINDLE_FILE, "bearing = '.*b7214c_x_pair.toml' is a spindle network file, not a bearing file"),
+        ("lubricant", BEARING_FILE, "lubricant = '.*B7214C.toml' is a bearing file, not a lubricant file"),
+        ("spindle", BEARING_FILE, "spindle = '.*B7214C.toml' is a bearing file, not a spindle network file"),
+        ("spindle", LUBRICANT_FILE, "spindle = '.*iso_vg68_mineral.toml' is a lubricant file, not a spindle network"),
+    ],
+)
+def test_a_file_of_another_kind_is_named_as_such(loader, given, message):
+    from bearing_fmu.params import load_bearing, load_lubricant
+    from spindle.thermal.model import load_spindle
+
+    load = {"bearing": load_bearing, "lubricant": load_lubricant, "spindle": load_spindle}[loader]
+    with pytest.raises(ParameterError, match=message):
+        load(ROOT / given)
+
+
+@pytest.mark.parametrize("loader", ["bearing", "lubricant", "spindle"])
+def test_a_toml_path_that_is_no_file_is_file_not_found(loader, tmp_path):
+    from bearing_fmu.params import load_bearing, load_lubricant
+    from spindle.thermal.model import load_spindle
+
+    load = {"bearing": load_bearing, "lubricant": load_lubricant, "spindle": load_spindle}[loader]
+    missing = tmp_path / "my_set.toml"
+    with pytest.raises(ParameterError, match=f"^{loader} = '{missing}': file not found"):
+        load(missing)
+    folder = tmp_path / "a_folder.toml"
+    folder.mkdir()
+    with pytest.raises(ParameterError, match=f"^{loader} = '{folder}': is not a file"):
+        load(folder)

@@ -134,7 +134,8 @@ def python_newton(monkeypatch):
 
         monkeypatch.setattr(qk, name, wrapper)
     monkeypatch.setattr(qk, "_global_newton", qk._global_newton.py_func)
-    monkeypatch.setattr(qk, "_loads_line_search", qk.line_search(qk._loads_residual_at.py_func).py_func)
+    monkeypatch.setattr(qk, "_newton_start", qk._newton_start.py_func)
+    monkeypatch.setattr(qk, "_loads_residual_at", qk._loads_residual_at.py_func)
     return calls
 
 

@@ -46,11 +46,14 @@ def half_unit(printed):
 
 def bearing_file(row, folder):
     """A bearing file of the rig's bearing: the 6208 file with the CWRU size (the frequencies depend on D, d_m, Z
-    only; materials, conformity and roughness are those of the template)."""
+    only; materials, conformity and roughness are those of the template; the template's shoulders are left out,
+    so the loader estimates the rig bearing's own, docs/parameters.md)."""
     text = TEMPLATE.read_text()
     lines = []
     for line in text.splitlines():
         key = line.split("=")[0].strip()
+        if key.endswith("shoulder_diameter"):
+            continue
         values = {
             "name": f'"{row["bearing"]}"',
             "ball_diameter": float(row["ball_diameter_in"]) * INCH,

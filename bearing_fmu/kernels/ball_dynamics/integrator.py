@@ -33,8 +33,16 @@ from .state import (
     A_MR,
     A_POWER_I,
     A_POWER_O,
+    A_S_HC_I,
+    A_S_HMIN_I,
+    A_S_LAMBDA_I,
+    A_S_PMAX,
+    A_S_QMAX_I,
+    A_SAMPLES,
+    A_SIZE,
     A_VR,
     A_WR,
+    A_XT,
     B_ALX,
     B_AX,
     B_ORBIT,
@@ -94,10 +102,15 @@ from .state import (
     T_C_N,
     T_CAP,
     T_F_ROLL,
+    T_H_C,
+    T_H_MIN,
+    T_LAMBDA,
     T_M_SPIN,
     T_MU,
     T_P_FILM,
+    T_P_MAX,
     T_PHI,
+    T_Q,
     T_REGIME,
     T_SLIP,
     W_CAP_BALL,
@@ -118,6 +131,58 @@ def ball_capacitances(trib, work):
     """work[W_CAP_BALL, j] = capacitance (F) of ball j from the last refresh: its two contacts in series."""
     for j in range(trib.shape[2]):
         work[W_CAP_BALL, j] = ball_capacitance(trib[T_CAP, 0, j], trib[T_CAP, 1, j])
+
+
+@kernel(inline="always")  # called once per step from verlet_step: no array-passing call
+def rigid_cage_torque(cage, work):
+    """Share the torque about the bearing axis of the forces on the Z cage elements (work[W_FC], N) equally among
+    them: the cage is one rigid ring whose pockets turn together, so each element carries the mean torque
+    T = mean(x F_y - y F_x) (N.m) and turns at the cage's one angular acceleration; the radial and axial forces
+    stay each element's own (its guide holds it on the pitch circle). Elements that could turn on their own
+    would give the train of balls and cage elements relative modes a real cage does not have (a healthy 6205
+    then showed a line at about BPFO/5 as large as BPFO, docs/dem.md)."""
+    Z = cage.shape[1]
+    mean = 0.0
+    for k in range(Z):
+        mean += cage[C_X, k] * work[W_FC + 1, k] - cage[C_X + 1, k] * work[W_FC, k]
+    mean /= Z
+    for k in range(Z):
+        x = cage[C_X, k]
+        y = cage[C_X + 1, k]
+        # (T_mean - T_k) / r^2 along (-y, x): the tangential force whose torque is T_mean
+        d = (mean - (x * work[W_FC + 1, k] - y * work[W_FC, k])) / (x * x + y * y)
+        work[W_FC, k] -= d * y
+        work[W_FC + 1, k] += d * x
+
+
+@kernel(inline="always")  # called once per refresh from advance: no array-passing call
+def sample_refresh(trib, acc):
+    """Add this refresh's loads, pressure and films to the sums acc[A_S_*] (one sample, acc[A_SAMPLES] += 1): per
+    race the largest load, the smallest Lambda and h_min and the central film of the most loaded contact among
+    the loaded ones (0 without one), and the largest Hertz pressure; their means over a call are the averaged
+    state outputs (models.dem, averaged_state)."""
+    p_max = 0.0
+    for race in range(2):
+        q_max = 0.0
+        lam = math.inf
+        h_min = math.inf
+        h_c = 0.0
+        for j in range(trib.shape[2]):
+            q = trib[T_Q, race, j]
+            if q > 0.0:
+                p_max = max(p_max, trib[T_P_MAX, race, j])
+                lam = min(lam, trib[T_LAMBDA, race, j])
+                h_min = min(h_min, trib[T_H_MIN, race, j])
+                if q > q_max:
+                    q_max = q
+                    h_c = trib[T_H_C, race, j]
+        acc[A_S_QMAX_I + race] += q_max
+        if q_max > 0.0:
+            acc[A_S_LAMBDA_I + race] += lam
+            acc[A_S_HMIN_I + race] += h_min
+            acc[A_S_HC_I + race] += h_c
+    acc[A_S_PMAX] += p_max
+    acc[A_SAMPLES] += 1.0
 
 
 @kernel
@@ -313,6 +378,7 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
         work[W_FC, k] += fx
         work[W_FC + 1, k] += fy
         work[W_FC + 2, k] += fz
+    rigid_cage_torque(cage, work)
     # a NaN or inf anywhere (positions, velocities, springs) reaches the contact forces within a step;
     # the moments follow from the same quantities
     total = acc[A_FR] + acc[A_FR + 1] + acc[A_FR + 2] + acc[A_MR] + acc[A_MR + 1]
@@ -424,6 +490,8 @@ def advance(
     acc[A_DISS_I] = 0.0
     acc[A_DISS_O] = 0.0
     acc[A_CAP] = 0.0
+    for k in range(A_XT, A_SIZE):  # the averaged state outputs' integrals and sums
+        acc[k] = 0.0
     status[ST_CODE] = STATUS_OK
     status[ST_STEP] = 0
     status[ST_INDEX] = -1
@@ -447,6 +515,7 @@ def advance(
                 film_i += trib[T_P_FILM, 0, j]
                 film_o += trib[T_P_FILM, 1, j]
             ball_capacitances(trib, work)
+            sample_refresh(trib, acc)
             if kinetic_energy(balls, cage, ring, par) > energy_limit:
                 status[ST_CODE] = STATUS_ENERGY
                 status[ST_STEP] = n
@@ -468,6 +537,11 @@ def advance(
         acc[A_POWER_O] = power_o
         acc[A_DISS_I] += power_i * dt
         acc[A_DISS_O] += power_o * dt
+        acc[A_XT] += ring[R_X] * dt
+        acc[A_XT + 1] += ring[R_X + 1] * dt
+        acc[A_XT + 2] += ring[R_X + 2] * dt
+        acc[A_XT + 3] += ring[R_TH] * dt
+        acc[A_XT + 4] += ring[R_TH + 1] * dt
         if capacitance:  # the balls loaded on both races in this step, in parallel
             c = 0.0
             for j in range(Z):

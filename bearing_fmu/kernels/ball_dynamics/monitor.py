@@ -38,8 +38,11 @@ def damped_limit(omega, zeta):
     ratio zeta whose damping force is evaluated with the predicted velocity v* = v_n + a_n dt:
     (2/omega)(sqrt(1 + 4 zeta^2) - 2 zeta). (The amplification matrix of (x, v, a) has an eigenvalue -1 at
     h = omega dt with h^2/4 + 2 zeta h - 1 = 0 (h = 2 for zeta = 0); the central-difference bound
-    (2/omega)(sqrt(1 + zeta^2) - zeta) overestimates it, by 1.75x at zeta = 1.)"""
-    return 2.0 / omega * (math.sqrt(1.0 + 4.0 * zeta * zeta) - 2.0 * zeta)
+    (2/omega)(sqrt(1 + zeta^2) - zeta) overestimates it, by 1.75x at zeta = 1.) Written as
+    (2/omega) / (sqrt(1 + 4 zeta^2) + 2 zeta), the same value without the cancellation that gives 0 for a heavily
+    overdamped pair (zeta ~ 1e8 and beyond: a contact touching with a rounding-level load), where it tends to
+    m / c."""
+    return 2.0 / omega / (math.sqrt(1.0 + 4.0 * zeta * zeta) + 2.0 * zeta)
 
 
 @kernel

@@ -15,6 +15,7 @@ from bearing_fmu_common.jit import kernel
 
 from ..capacitance import ball_capacitance
 from ..ehl import lubrication_regime
+from ..truncation import race_truncation
 from .contacts import groove_approach
 from .monitor import kinetic_energy
 from .state import (
@@ -27,6 +28,7 @@ from .state import (
     B_VX,
     B_WX,
     B_X,
+    LOADED_APPROACH,
     O_ALPHA_I,
     O_ALPHA_O,
     O_C_BEARING,
@@ -65,14 +67,15 @@ from .tribology import race_circle
 
 @kernel
 def contact_loads(balls, ring, par, Q):
-    """Current normal loads (N) of every ball-race contact into Q[race, ball] (0 when open)."""
+    """Current normal loads (N) of every ball-race contact into Q[race, ball] (0 when open or touching with an
+    approach below LOADED_APPROACH, a rounding-level contact)."""
     for race in range(2):
         cx, cy, cz, ax, ay, az, rho = race_circle(race, ring, par)
         for j in range(balls.shape[1]):
             delta, _, _, _ = groove_approach(
                 balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, ax, ay, az, rho, par[P_RG_I + race]
             )
-            Q[race, j] = par[P_KH_I + race] * delta * math.sqrt(delta) if delta > 0.0 else 0.0
+            Q[race, j] = par[P_KH_I + race] * delta * math.sqrt(delta) if delta > LOADED_APPROACH else 0.0
 
 
 @kernel
@@ -87,7 +90,7 @@ def contact_angles(balls, ring, par, alpha):
             delta, nx, ny, nz = groove_approach(
                 balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, ax, ay, az, rho, par[P_RG_I + race]
             )
-            alpha[race, j] = math.atan2(abs(nz), math.sqrt(nx * nx + ny * ny)) if delta > 0.0 else 0.0
+            alpha[race, j] = math.atan2(abs(nz), math.sqrt(nx * nx + ny * ny)) if delta > LOADED_APPROACH else 0.0
 
 
 @kernel(inline="always")  # called once per output evaluation from bearing_outputs: no array-passing call
@@ -149,6 +152,37 @@ def pure_rolling_cage_speed(balls, ring, par, omega, Q):
             total += omega * b_i * g_o / den
             count += 1
     return total / count if count > 0 else 0.0
+
+
+@kernel
+def signed_contact_angles(balls, ring, par, alpha):
+    """Signed contact angles (rad) of every ball-race contact into alpha[race, ball], as the quasi-static fidelity
+    measures them (docs/quasistatic.md section 1): the direction from the ball centre to the inner groove-curvature
+    centre, and from the outer one to the ball centre, from the radial plane; positive toward +z at the inner
+    contact and -z at the outer one's centre, i.e. toward each ring's thrust-side shoulder; radial and axial
+    are those of each ring's own axis (the inner ring's tilts turn its groove)."""
+    for race in range(2):
+        cx, cy, cz, ax, ay, az, rho = race_circle(race, ring, par)
+        for j in range(balls.shape[1]):
+            dx = balls[B_X, j] - cx
+            dy = balls[B_X + 1, j] - cy
+            dz = balls[B_X + 2, j] - cz
+            axial = dx * ax + dy * ay + dz * az  # along the ring's (possibly tilted) axis
+            rx = dx - axial * ax
+            ry = dy - axial * ay
+            rz = dz - axial * az
+            radial = math.sqrt(rx * rx + ry * ry + rz * rz) - rho  # ball centre beyond the centre circle (m)
+            alpha[race, j] = math.atan2(-axial, -radial) if race == 0 else math.atan2(axial, radial)
+
+
+@kernel
+def shoulder_truncation(balls, ring, par, tp, Q, alpha, tr):
+    """Fill tr[TR_*] (kernels.truncation) with the most truncated loaded contact of each race in the current
+    state; tp: the TP_* shoulder parameters. Q, alpha: float64[2, Z] work arrays (receive the current contact
+    loads and signed contact angles)."""
+    contact_loads(balls, ring, par, Q)
+    signed_contact_angles(balls, ring, par, alpha)
+    race_truncation(Q, 0, alpha, 0, tp, tr)
 
 
 @kernel

@@ -138,6 +138,11 @@ P_I_RING = 63  # inner-ring moment of inertia about a diameter through its centr
 P_IP_RING = 64  # about its axis (kg.m^2): the gyroscopic moment of a tilting ring that turns at omega
 P_SIZE = 65
 
+# a ball-race contact counts as loaded in the outputs (loads, pressure, films, angles, n_loaded) when its approach
+# exceeds this (m): the rounding of the positions (~1e-18 m) leaves approaches of 1e-18-1e-15 m on contacts that
+# carry nothing (loads of 1e-16 N, Hertz pressures of kPa); 1 pm is a load of about 1e-8 N
+LOADED_APPROACH = 1e-12
+
 # ---- outputs of advance(): float64[O_SIZE] --------------------------------------------------------
 O_OMEGA_CAGE = 0  # cage speed: mean orbital angular speed of the balls (rad/s)
 O_OMEGA_BALL = 1  # angular speed of the most loaded ball in the fixed frame (rad/s, sign of omega)
@@ -163,7 +168,9 @@ O_SRR_MAX = 20  # largest slide-to-roll ratio of a loaded contact (-)
 O_KINETIC = 21  # kinetic energy of all bodies (J)
 O_ALPHA_I = 22  # contact angle of the most loaded ball's inner contact (rad)
 O_ALPHA_O = 23  # and of its outer contact (rad)
-O_SIZE = 24
+O_X = 24  # inner-ring displacement x, y, z (m) and tilts theta_x, theta_y (rad): at the end of the interval, or their
+#   means (averaged state outputs), 5 entries
+O_SIZE = 29
 
 # ---- status of advance(): int64[ST_SIZE] ----------------------------------------------------------
 ST_CODE = 0  # one of the STATUS_* codes
@@ -200,4 +207,15 @@ A_POWER_O = 9  # in the outer contacts (W)
 A_CAP = 10  # bearing capacitance (without the background) integrated over the call's steps (F.s)
 A_MR = 11  # moment on the inner ring about its centre (N.m), x, y, z
 A_WR = 14  # predicted tilt rates of the inner ring (rad/s), 2 entries
-A_SIZE = 16
+A_XT = 16  # inner-ring displacement x, y, z (m.s) and tilts (rad.s) integrated over the call's steps, 5 entries
+A_SAMPLES = 21  # tribology refreshes in the call: the samples of the sums below
+A_S_QMAX_I = 22  # sums over those refreshes of: the largest inner contact load (N) ...
+A_S_QMAX_O = 23  # ... outer (N)
+A_S_PMAX = 24  # ... the largest Hertz pressure of a loaded contact (Pa)
+A_S_LAMBDA_I = 25  # ... the smallest inner film parameter of a loaded contact (-, 0 with none)
+A_S_LAMBDA_O = 26
+A_S_HMIN_I = 27  # ... the smallest inner minimum film (m, 0 with none)
+A_S_HMIN_O = 28
+A_S_HC_I = 29  # ... the central film of the most loaded inner contact (m, 0 with none)
+A_S_HC_O = 30
+A_SIZE = 31

@@ -290,7 +290,8 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
                 trib[T_MU, race, j] = (1.0 - phi) * mu_boundary + phi * mu_lim
                 # the sliding speed that sets the curve's slope: the creep scale s_0 u, or, in a contact that spins,
                 # the spin's own sliding across the ellipse (SPIN_SLIP |spin| a, ehl.film_slip_speed)
-                trib[T_SLIP, race, j] = 1.0 / film_slip_speed(s_0, u, spin, a) if u > 0.0 else 0.0
+                v_s = film_slip_speed(s_0, u, spin, a)
+                trib[T_SLIP, race, j] = 1.0 / v_s if v_s > 0.0 else 0.0  # (0: no entrainment, or one that underflows)
             trib[T_C_N, race, j] = normal_damping(lam, Q, par[P_ALPHA_E], eta, a, half_d, h_min)
             trib[T_REGIME, race, j] = lubrication_regime(lam)
             # Houpert forces (F_R above, the others from kernels.torque); the contact's power as

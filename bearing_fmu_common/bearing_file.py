@@ -1,0 +1,226 @@
+"""A bearing file (docs/parameters.md): its geometry, materials and surfaces, read and checked.
+
+Shared by the bearing FMUs (bearing_fmu.params.load_bearing resolves a catalogue name and reads the file
+here) and the thermal spindle, which needs the rings' geometry and material for their thermal and
+centrifugal growth. Standard library only (no kernels), so the thermal FMU ships no bearing model. The
+clearance/contact-angle rule is that of Harris & Kotzalas (2006, vol. 1).
+"""
+
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .paramfile import ParameterError, Spec, checked_value, read_toml
+
+_value = checked_value
+
+LENGTH = Spec("m", 0.0, 10.0, low_open=True)
+MODULUS = Spec("Pa", 1e6, 1e13, low_open=True)
+POISSON = Spec("-", 0.0, 0.5, low_open=False)
+DENSITY = Spec("kg/m^3", 100.0, 30000.0)
+
+
+@dataclass(frozen=True)
+class Material:
+    E: float  # Pa
+    nu: float  # -
+    rho: float  # kg/m^3
+
+
+@dataclass(frozen=True)
+class Bearing:
+    """Bearing geometry and materials (SI). Values documented in the TOML file."""
+
+    name: str
+    kind: str
+    path: str
+    D: float  # ball diameter (m)
+    dm: float  # pitch diameter (m)
+    f_i: float  # inner groove conformity (-)
+    f_o: float  # outer groove conformity (-)
+    Z: int  # number of balls (-)
+    Pd: float  # diametral clearance (m), negative = preload
+    alpha0: float  # nominal contact angle (rad): the file's, else the free angle of the clearance
+    ball: Material
+    ring: Material
+    Ra_inner: float  # inner race roughness Ra (m)
+    Ra_outer: float  # outer race roughness Ra (m)
+    Ra_ball: float  # ball roughness Ra (m)
+    cage_ball_radius: float = 0.0  # DEM cage-ball radius (m), 0 if absent
+    cage_mass: float = 0.0  # mass of the whole cage (kg), 0 if absent: the DEM's Z cage balls share it
+    extras: dict = field(default_factory=dict)
+    # land (shoulder) diameters (m): of each ring on its thrust side (the side a ball presses under a thrust +z on
+    # the inner ring; both sides of a deep-groove ring) and on the other side; 0 only in a Bearing built by hand
+    # (read_bearing always fills them: the file's values, else the estimates of shoulder_estimate)
+    shoulder_inner: float = 0.0
+    shoulder_outer: float = 0.0
+    shoulder_inner_back: float = 0.0
+    shoulder_outer_back: float = 0.0
+    shoulders_estimated: tuple = ()  # keys of SHOULDER_KEYS the file did not give (estimated by shoulder_estimate)
+
+
+def _material(doc, section, path):
+    return Material(
+        E=_value(doc, f"{section}.E", MODULUS, path),
+        nu=_value(doc, f"{section}.nu", POISSON, path),
+        rho=_value(doc, f"{section}.rho", DENSITY, path),
+    )
+
+
+# Shoulders (docs/parameters.md, shoulders): file key -> (ring, side). Estimates for a file without them, as
+# shoulder heights above the groove bottom of the nominal geometry (d_m -+ D): a deep-groove ring 0.2 D on both
+# sides; an angular-contact ring's thrust side the point of the groove 60 deg from its bottom, h = f D (1 - cos 60),
+# its other side a low shoulder of 0.1 D.
+SHOULDER_KEYS = {
+    "inner_shoulder_diameter": ("inner", "thrust"),
+    "outer_shoulder_diameter": ("outer", "thrust"),
+    "inner_back_shoulder_diameter": ("inner", "back"),
+    "outer_back_shoulder_diameter": ("outer", "back"),
+}
+DEEP_GROOVE_SHOULDER = 0.2  # x D, estimated shoulder height of a deep-groove ring
+THRUST_SHOULDER_ANGLE = math.radians(60.0)  # rad, estimated thrust-side shoulder of an angular-contact ring
+BACK_SHOULDER = 0.1  # x D, estimated low shoulder of an angular-contact ring
+
+
+def shoulder_estimate(kind, D, dm, f, ring, side):
+    """Estimated land diameter (m) of a ring ('inner' | 'outer') on a side ('thrust' | 'back') of a bearing of
+    kind 'deep_groove' | 'angular_contact', ball diameter D (m), pitch diameter dm (m), the ring's groove
+    conformity f (-): the groove bottom d_m -+ D raised by the shoulder height h of SHOULDER_KEYS' comment."""
+    if kind == "deep_groove":
+        h = DEEP_GROOVE_SHOULDER * D
+    elif side == "thrust":
+        h = f * D * (1.0 - math.cos(THRUST_SHOULDER_ANGLE))
+    else:
+        h = BACK_SHOULDER * D
+    return dm - D + 2.0 * h if ring == "inner" else dm + D - 2.0 * h
+
+
+def _shoulders(doc, kind, D, dm, f_i, f_o, path):
+    """{key: land diameter (m)} of SHOULDER_KEYS and the keys estimated. Given: within the ring's groove, between
+    the groove bottom and the pitch circle (inner ]d_m - D, d_m[, outer ]d_m, d_m + D[). Missing: estimated; a
+    deep-groove ring's back side is its thrust side's value when that is given (a symmetric ring)."""
+    values, estimated = {}, []
+    for key, (ring, side) in SHOULDER_KEYS.items():
+        low, high = (dm - D, dm) if ring == "inner" else (dm, dm + D)
+        value = _value(doc, f"geometry.{key}", LENGTH, path, required=False)
+        if value is not None and not low < value < high:
+            raise ParameterError(
+                f"{path}: 'geometry.{key}' = {value} m is outside the allowed range ]{low:.6g}, {high:.6g}[ m "
+                f"(between the {ring} groove bottom d_m {'-' if ring == 'inner' else '+'} D and the pitch circle)"
+            )
+        if value is None:
+            estimated.append(key)
+            if kind == "deep_groove" and side == "back":  # a symmetric ring: the thrust side's (given or estimated)
+                value = values[f"{ring}_shoulder_diameter"]
+            else:
+                value = shoulder_estimate(kind, D, dm, f_i if ring == "inner" else f_o, ring, side)
+        values[key] = value
+    return values, tuple(estimated)
+
+
+ALPHA_MAX = math.radians(60.0)  # largest free contact angle accepted (rad): P_d <= 2 A (1 - cos 60 deg) = A
+ANGLE_MATCH = math.radians(0.05)  # rad: a file's angle and clearance agree when the derived angles differ less
+
+
+def groove_clearance(D, f_i, f_o):
+    """A = (f_i + f_o - 1) D (m): the distance between the groove curvature centres with the ball touching
+    both races without load (D in m, conformities -)."""
+    return (f_i + f_o - 1.0) * D
+
+
+def clearance_limits(D, f_i, f_o):
+    """Admissible diametral clearance (m) from the geometry: -A <= P_d <= A. Above A the free contact
+    angle passes 60 deg (the contact runs to the groove shoulder); an interference beyond A presses
+    every ball by more than the whole groove clearance, far past any material limit."""
+    A = groove_clearance(D, f_i, f_o)
+    return -A, A
+
+
+def clearance_for_angle(D, f_i, f_o, alpha):
+    """Diametral clearance P_d = 2 A (1 - cos alpha) (m) whose free contact angle is alpha (rad)
+    (Harris & Kotzalas 2006, vol. 1, free contact angle: cos alpha0 = 1 - P_d / (2 A))."""
+    return 2.0 * groove_clearance(D, f_i, f_o) * (1.0 - math.cos(alpha))
+
+
+def angle_for_clearance(D, f_i, f_o, Pd):
+    """Free contact angle alpha0 = arccos(1 - P_d / (2 A)) (rad) of the diametral clearance P_d (m); 0 for
+    P_d <= 0 (no clearance or a preload)."""
+    return math.acos(1.0 - Pd / (2.0 * groove_clearance(D, f_i, f_o))) if Pd > 0.0 else 0.0
+
+
+def _clearance_and_angle(doc, D, f_i, f_o, kind, path):
+    """(P_d (m), contact angle (rad): the file's nominal one, else the free one) from the file's
+    'geometry.diametral_clearance' and/or 'geometry.contact_angle' (docs/parameters.md, clearance and
+    contact angle): one gives the other by cos alpha0 = 1 - P_d/(2A); given both, they must agree to
+    ANGLE_MATCH. A deep-groove file's contact angle 0 is its nominal (radial) angle and leaves the
+    clearance free."""
+    low, high = clearance_limits(D, f_i, f_o)
+    Pd = _value(doc, "geometry.diametral_clearance", Spec("m", low, high), path, required=False)
+    alpha = _value(doc, "geometry.contact_angle", Spec("rad", 0.0, ALPHA_MAX), path, required=False)
+    if Pd is None and alpha is None:
+        raise ParameterError(
+            f"{path}: give 'geometry.diametral_clearance' (m) or 'geometry.contact_angle' (rad, the nominal "
+            f"contact angle), or both"
+        )
+    if Pd is None:
+        return clearance_for_angle(D, f_i, f_o, alpha), alpha
+    free = angle_for_clearance(D, f_i, f_o, Pd)
+    if alpha is not None and (alpha > 0.0 or kind == "angular_contact") and abs(free - alpha) > ANGLE_MATCH:
+        raise ParameterError(
+            f"{path}: 'geometry.contact_angle' = {alpha} rad ({math.degrees(alpha):.3f} deg) and "
+            f"'geometry.diametral_clearance' = {Pd} m (free contact angle {math.degrees(free):.3f} deg) disagree: "
+            f"the clearance for {math.degrees(alpha):.3f} deg is {clearance_for_angle(D, f_i, f_o, alpha):.6g} m "
+            f"(cos alpha0 = 1 - P_d / (2 (f_i + f_o - 1) D)); give one of them, or both consistent"
+        )
+    return Pd, free if alpha is None else alpha
+
+
+def read_bearing(path):
+    """Bearing set from the bearing file at path (a lubricant or spindle file is refused as such); validated."""
+    path = Path(path)
+    doc = read_toml(path, "bearing")
+    meta = doc.get("meta", {})
+    kind = meta.get("kind", "deep_groove")
+    if kind not in ("deep_groove", "angular_contact"):
+        raise ParameterError(f"{path}: 'meta.kind' = {kind!r}, allowed: 'deep_groove', 'angular_contact'")
+    D = _value(doc, "geometry.ball_diameter", Spec("m", 0.0, 1.0, True), path)
+    dm = _value(doc, "geometry.pitch_diameter", Spec("m", 0.0, 10.0, True), path)
+    if dm <= D:
+        raise ParameterError(f"{path}: 'geometry.pitch_diameter' = {dm} m must exceed the ball diameter {D} m")
+    conf = Spec("-", 0.5, 1.0, low_open=True)
+    Z = _value(doc, "geometry.n_balls", Spec("-", 3, 200), path)
+    if Z != int(Z):
+        raise ParameterError(f"{path}: 'geometry.n_balls' = {Z} must be a whole number in [3, 200]")
+    f_i = _value(doc, "geometry.inner_conformity", conf, path)
+    f_o = _value(doc, "geometry.outer_conformity", conf, path)
+    Pd, alpha0 = _clearance_and_angle(doc, D, f_i, f_o, kind, path)
+    shoulders, shoulders_estimated = _shoulders(doc, kind, D, dm, f_i, f_o, path)
+    bearing = Bearing(
+        name=str(meta.get("name", path.stem)),
+        kind=kind,
+        path=str(path),
+        D=D,
+        dm=dm,
+        f_i=f_i,
+        f_o=f_o,
+        Z=int(Z),
+        Pd=Pd,
+        alpha0=alpha0,
+        ball=_material(doc, "material.ball", path),
+        ring=_material(doc, "material.ring", path),
+        Ra_inner=_value(doc, "surface.inner_race_Ra", Spec("m", 0.0, 1e-4), path),
+        Ra_outer=_value(doc, "surface.outer_race_Ra", Spec("m", 0.0, 1e-4), path),
+        Ra_ball=_value(doc, "surface.ball_Ra", Spec("m", 0.0, 1e-4), path),
+        cage_ball_radius=_value(doc, "cage.ball_radius", Spec("m", 0.0, 1.0, True), path, required=False, default=0.0),
+        cage_mass=_value(doc, "cage.mass", Spec("kg", 0.0, 1e3, True), path, required=False, default=0.0),
+        shoulder_inner=shoulders["inner_shoulder_diameter"],
+        shoulder_outer=shoulders["outer_shoulder_diameter"],
+        shoulder_inner_back=shoulders["inner_back_shoulder_diameter"],
+        shoulder_outer_back=shoulders["outer_back_shoulder_diameter"],
+        shoulders_estimated=shoulders_estimated,
+    )
+    if math.pi * dm < bearing.Z * D:
+        raise ParameterError(
+            f"{path}: {bearing.Z} balls of {D} m do not fit on the pitch circle (pi d_m = {math.pi * dm:.4g} m)"
+        )
+    return bearing

@@ -1,0 +1,189 @@
+"""Twin of bearing_fmu.kernels.ehl_solver: fluid ratios, rectangle influences, film, Reynolds residual,
+and the direct-summation deflection that the product computes by FFT.
+
+- Viscosity ratio eta(p)/eta(0): Barus exp(alpha p); Roelands exp[(ln eta0 + 9.67)((1 + p/p0)^Z - 1)],
+  Z = alpha p0 / (ln eta0 + 9.67), p0 = 1.96e8 Pa; modified WLF (Bair; Wheeler 2016 thesis eq. 2.1-9) as the
+  quotient of the law at p and at 0, capped at 1e20 (also past the glass singularity C2 + (T - T_g) F = 0).
+- Density ratio: Dowson-Higginson (0.59e9 + 1.34 p) / (0.59e9 + p); Murnaghan (1 + K' p / K_M)^(1/K'),
+  K_M = K_MM exp(-beta_K T) (thesis eq. 2.1-7).
+- Rectangle influence: Johnson (1985), Contact Mechanics, eq. 3.25, the closed form of the integral of 1/r
+  over a uniformly loaded 2c x 2d rectangle, written with its four logarithms.
+- Deflection by direct summation over every pressure cell (no FFT).
+- Reynolds residual written with whole-array flux differences (numpy slicing) instead of per-node loops.
+- Relaxation sweep: the same node updates, each node's residual and derivative taken from the twin's
+  whole-array residual of the current pressure (recomputed after every Gauss-Seidel update) and the
+  derivative of the residual written out from the 5-point stencil and the deflection of a point change
+  (Gauss-Seidel) or of the distributed change +d at the node, -d/4 at its four neighbours (Jacobi).
+"""
+
+import math
+
+import numpy as np
+
+from bearing_fmu.kernels import ehl_solver as es  # option codes and array layout only
+
+KERNEL_MODULE = "bearing_fmu.kernels.ehl_solver"
+ETA_RATIO_MAX = 1e20
+
+
+def viscosity_ratio(p, fluid):
+    code = int(fluid[es.FLUID_VISC])
+    if code == es.VISC_BARUS:
+        ratio = math.exp(min(fluid[es.FLUID_ALPHA] * p, 700.0))
+    elif code == es.VISC_ROELANDS:
+        eta0 = fluid[es.FLUID_ETA0]
+        s = math.log(eta0) + 9.67
+        z = fluid[es.FLUID_ALPHA] * 1.96e8 / s
+        ratio = math.exp(min(s * ((1.0 + p / 1.96e8) ** z - 1.0), 700.0))
+    else:
+        mu_G, T_g0, A1, A2, b1, b2, C1, C2 = fluid[es.FLUID_WLF : es.FLUID_WLF + 8]
+        T = fluid[es.FLUID_T]
+
+        def mu(pp):
+            Tg = T_g0 + A1 * math.log(1.0 + A2 * pp)
+            F = (1.0 + b1 * pp) ** b2
+            dT = (T - Tg) * F
+            if C2 + dT <= 0.0:
+                return math.inf
+            e = -2.303 * C1 * dT / (C2 + dT)
+            return math.inf if e > 700.0 else mu_G * math.exp(e)
+
+        ratio = mu(p) / mu(0.0)
+    return min(ratio, ETA_RATIO_MAX)
+
+
+def density_ratio(p, fluid):
+    code = int(fluid[es.FLUID_DENS])
+    if code == es.DENS_DOWSON_HIGGINSON:
+        return (0.59e9 + 1.34 * p) / (0.59e9 + p)
+    if code == es.DENS_MURNAGHAN:
+        T_R, a_v, beta_K, K_MM, kp = fluid[es.FLUID_MURN : es.FLUID_MURN + 5]
+        K_M = K_MM * math.exp(-beta_K * fluid[es.FLUID_T])
+        return (1.0 + kp * p / K_M) ** (1.0 / kp)
+    return 1.0
+
+
+def fluid_fields(Phi, p_h, fluid, rho_r, eta_r):
+    P = np.maximum(Phi, 0.0) * p_h
+    rho_r[...] = np.vectorize(lambda p: density_ratio(p, fluid))(P)
+    eta_r[...] = np.vectorize(lambda p: viscosity_ratio(p, fluid))(P)
+
+
+def _johnson(x, y, c, d):
+    """Johnson eq. 3.25: integral of 1/r over |x'| <= c, |y'| <= d seen from (x, y)."""
+
+    def r(u, v):
+        return math.sqrt(u * u + v * v)
+
+    return (
+        (x + c) * math.log((y + d + r(y + d, x + c)) / (y - d + r(y - d, x + c)))
+        + (y + d) * math.log((x + c + r(y + d, x + c)) / (x - c + r(y + d, x - c)))
+        + (x - c) * math.log((y - d + r(y - d, x - c)) / (y + d + r(y + d, x - c)))
+        + (y - d) * math.log((x - c + r(y - d, x - c)) / (x + c + r(y - d, x + c)))
+    )
+
+
+def rectangle_influence(nx, ny, dx, dy):
+    out = np.empty((nx, ny))
+    for m in range(nx):
+        for n in range(ny):
+            out[m, n] = _johnson(m * dx, n * dy, 0.5 * dx, 0.5 * dy)
+    return out
+
+
+def deflection_direct(P, kern, c_w):
+    """W at every node: c_w sum over all cells (k, l) of kern[|i - k|, |j - l|] P[k, l] (direct summation)."""
+    nx, ny = P.shape
+    W = np.zeros((nx, ny))
+    ii = np.arange(nx)
+    jj = np.arange(ny)
+    for k in range(nx):
+        for l in range(ny):
+            if P[k, l] != 0.0:
+                W += P[k, l] * kern[np.abs(ii - k)][:, np.abs(jj - l)]
+    return c_w * W
+
+
+def film(H0, X, Y, curv_y, W, H):
+    H[...] = H0 + 0.5 * X[:, None] ** 2 + 0.5 * curv_y * Y[None, :] ** 2 + W
+
+
+def reynolds_residual(Phi, H, rho_r, eta_r, lam, k, dX, dY, R):
+    P = np.maximum(Phi, 0.0)
+    eps = rho_r * H**3 / (eta_r * lam)
+    flux = rho_r * H * (1.0 + np.minimum(Phi, 0.0))
+    ex = 0.5 * (eps[1:, :] + eps[:-1, :])  # faces i + 1/2
+    ey = 0.5 * (eps[:, 1:] + eps[:, :-1])  # faces j + 1/2
+    qx = ex * (P[1:, :] - P[:-1, :]) / dX**2
+    qy = ey * (P[:, 1:] - P[:, :-1]) / (k * k * dY**2)
+    out = np.zeros_like(Phi)
+    out[1:-1, 1:-1] = (qx[1:, 1:-1] - qx[:-1, 1:-1]) + (qy[1:-1, 1:] - qy[1:-1, :-1])
+    couette = np.zeros_like(Phi)
+    couette[2:, :] = (1.5 * flux[2:, :] - 2.0 * flux[1:-1, :] + 0.5 * flux[:-2, :]) / dX
+    couette[1, :] = (flux[1, :] - flux[0, :]) / dX
+    out[1:-1, 1:-1] -= couette[1:-1, 1:-1]
+    R[...] = out
+
+
+def relaxation_sweep(P, F, H, rho_r, eta_r, lam, k, dX, dY, Kc, xi_switch, omega_gs, omega_jac, delta):
+    nx, ny = P.shape
+    kx, ky = 1.0 / dX**2, 1.0 / (k * k * dY**2)
+    eps = rho_r * H**3 / (eta_r * lam)
+    R = np.zeros_like(P)
+
+    def residual(i, j):
+        reynolds_residual(P, H, rho_r, eta_r, lam, k, dX, dY, R)
+        return R[i, j] - F[i, j]
+
+    def poiseuille_diag(i, j):
+        faces = [0.5 * (eps[i, j] + eps[i + a, j + b]) for a, b in ((1, 0), (-1, 0), (0, 1), (0, -1))]
+        return -(kx * (faces[0] + faces[1]) + ky * (faces[2] + faces[3]))
+
+    def couette_diag(i, j, K):
+        if i >= 2:
+            return (1.5 * rho_r[i, j] * K(0) - 2.0 * rho_r[i - 1, j] * K(1) + 0.5 * rho_r[i - 2, j] * K(2)) / dX
+        return (rho_r[i, j] * K(0) - rho_r[i - 1, j] * K(1)) / dX
+
+    def point(m):
+        return Kc[m, 0]
+
+    def distributed(m):  # deflection at offset (-m, 0) of +1 at the node and -1/4 at its neighbours
+        around = [(m - 1, 0), (m + 1, 0), (m, 1), (m, -1)]
+        return Kc[m, 0] - 0.25 * sum(Kc[abs(a), abs(b)] for a, b in around)
+
+    change = 0.0
+    jacobi = []
+    for i in range(1, nx - 1):
+        for j in range(1, ny - 1):
+            star = [P[i, j], P[i + 1, j], P[i - 1, j], P[i, j + 1], P[i, j - 1]]
+            if eps[i, j] * max(kx, ky) < xi_switch and min(star) > 0.0:
+                jacobi.append((i, j))
+                continue
+            new = max(P[i, j] - omega_gs * residual(i, j) / (poiseuille_diag(i, j) - couette_diag(i, j, point)), 0.0)
+            change = max(change, abs(new - P[i, j]))
+            P[i, j] = new
+    reynolds_residual(P, H, rho_r, eta_r, lam, k, dX, dY, R)
+    steps = {}
+    for i, j in jacobi:
+        steps[i, j] = (
+            -omega_jac * (R[i, j] - F[i, j]) / (1.25 * poiseuille_diag(i, j) - couette_diag(i, j, distributed))
+        )
+    for (i, j), d in steps.items():
+        P[i, j] += d
+        for a, b in ((i - 1, j), (i + 1, j), (i, j - 1), (i, j + 1)):
+            if 0 < a < nx - 1 and 0 < b < ny - 1:
+                P[a, b] -= 0.25 * d
+        change = max(change, abs(d))
+    P[1:-1, 1:-1] = np.maximum(P[1:-1, 1:-1], 0.0)
+    return change
+
+
+TWINS = {
+    "relaxation_sweep": relaxation_sweep,
+    "viscosity_ratio": viscosity_ratio,
+    "density_ratio": density_ratio,
+    "fluid_fields": fluid_fields,
+    "rectangle_influence": rectangle_influence,
+    "film": film,
+    "reynolds_residual": reynolds_residual,
+}

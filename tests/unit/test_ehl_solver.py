@@ -1,0 +1,165 @@
+"""kernels.ehl_solver and the discrete contact of models.ehl_numerical against tests/reference/ref_ehl_solver.py,
+and the elastic part against the Hertz solution.
+
+Tolerances:
+- fluid ratios, film: closed forms, RTOL = 1e-12 (measured <= 1.4e-15);
+- rectangle influences: the kernel's antiderivative u ln(v + r) + v ln(u + r) against Johnson's eq. 3.25
+  (four logarithms of quotients, which lose digits where a quotient is close to 1): RTOL = 1e-12, measured
+  4.7e-13; against a 400 x 400 midpoint quadrature of 1/r over the cell from two cells away (the integrand is
+  smooth there): the midpoint rule's error (h^2 / 24) |f''| / f is about 1e-7 (measured <= 2.9e-7),
+  tolerance 1e-6;
+- FFT deflection against direct summation over every cell: both in double precision, relative to the
+  largest deflection 1e-11 (measured <= 1.1e-15);
+- Reynolds residual: the twin's whole-array fluxes sum in another order; relative to the largest flux term
+  of the field 1e-11 (measured <= 9.3e-15).
+- Hertz: the discrete deflection of the Hertz pressure plus the gap's geometry must be flat over the
+  contact and equal the Hertz approach delta (kernels.hertz, Johnson 1985 eq. 3.65 family): a second-order
+  discretisation of the exact integral, measured 0.020 % (k = 1) and 0.023 % (k = 0.2, 5) of delta on a
+  129 x 129 grid of the box [-1.5, 1.5]^2 over r^2 < 0.95; tolerance 0.1 % of delta.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from bearing_fmu.kernels import ehl_solver as es
+from bearing_fmu.kernels import lubricant as lk
+from bearing_fmu.models import ehl_numerical as en
+from tests.reference import ref_ehl_solver as rs
+from tests.unit._compare import assert_close
+
+RTOL = 1e-12
+E_RED = 210e9 / (1.0 - 0.3**2)
+# lubricant 2 of the Wheeler (2016) thesis, Tables 2.1-3 (WLF, Murnaghan) at 313 K
+WLF_2 = (1e12, 189.95, 188.86, 0.7190e-9, 8.2e-9, -0.5278, 16.09, 17.38)
+MURN = (298.0, 7.734e-4, 6.090e-3, 9.234e9, 10.545)
+FLUIDS = {
+    "barus_incompressible": en.fluid_array(es.VISC_BARUS, es.DENS_INCOMPRESSIBLE, 0.00795, 20.2e-9),
+    "roelands_dowson_higginson": en.fluid_array(es.VISC_ROELANDS, es.DENS_DOWSON_HIGGINSON, 0.00795, 20.2e-9),
+    "wlf_murnaghan": en.fluid_array(es.VISC_WLF, es.DENS_MURNAGHAN, 0.00795, 0.0, 313.0, WLF_2, MURN),
+}
+
+
+@pytest.mark.parametrize("name", sorted(FLUIDS))
+def test_fluid_ratios_match_twin(name):
+    fluid = FLUIDS[name]
+    for p in np.concatenate([[0.0], np.geomspace(1e5, 4e9, 60)]):
+        assert_close(es.viscosity_ratio(p, fluid), rs.viscosity_ratio(p, fluid), RTOL, f"{name} eta p={p}")
+        assert_close(es.density_ratio(p, fluid), rs.density_ratio(p, fluid), RTOL, f"{name} rho p={p}")
+    Phi = np.linspace(-0.5, 3.0, 48).reshape(6, 8)
+    got = (np.empty_like(Phi), np.empty_like(Phi))
+    want = (np.empty_like(Phi), np.empty_like(Phi))
+    es.fluid_fields(Phi, 1.5e9, fluid, *got)
+    rs.fluid_fields(Phi, 1.5e9, fluid, *want)
+    assert_close(got[0], want[0], RTOL, "rho_r field")
+    assert_close(got[1], want[1], RTOL, "eta_r field")
+
+
+def test_wlf_and_murnaghan_ratios_agree_with_the_lubricant_kernels():
+    """The solver's ratios are the lubricant module's laws divided by their value at p = 0 (up to the cap)."""
+    fluid = FLUIDS["wlf_murnaghan"]
+    for p in (1e7, 3e8, 1e9, 2e9):
+        mu = [lk.wlf_viscosity(q, 313.0, *WLF_2) for q in (p, 0.0)]
+        assert_close(es.viscosity_ratio(p, fluid), min(mu[0] / mu[1], es.ETA_RATIO_MAX), 1e-12, f"WLF p={p}")
+        rho = [lk.murnaghan_density(q, 313.0, 872.0, *MURN) for q in (p, 0.0)]
+        assert_close(es.density_ratio(p, fluid), rho[0] / rho[1], 1e-12, f"Murnaghan p={p}")
+    # past the glass singularity of lubricant 2 at 313 K (~3.1 GPa) the ratio is the cap, not inf or NaN
+    assert es.viscosity_ratio(3.5e9, fluid) == es.ETA_RATIO_MAX
+
+
+def test_rectangle_influence_matches_johnson_and_quadrature():
+    dx, dy = 2e-6, 7e-6
+    got = es.rectangle_influence(9, 7, dx, dy)
+    assert_close(got, rs.rectangle_influence(9, 7, dx, dy), RTOL, "Johnson 3.25")
+    n = 400
+    xs = (np.arange(n) + 0.5) / n * dx - 0.5 * dx
+    ys = (np.arange(n) + 0.5) / n * dy - 0.5 * dy
+    for m, q in ((2, 0), (0, 2), (3, 4), (8, 6)):
+        r = np.hypot(m * dx - xs[:, None], q * dy - ys[None, :])
+        quad = np.sum(1.0 / r) * (dx / n) * (dy / n)
+        assert_close(got[m, q], quad, 1e-6, f"quadrature ({m}, {q})")
+
+
+def _grid(Rx, Ry, nx=41, ny=33, **kw):
+    return en.ContactGrid(Rx, Ry, 800.0, 2.0, E_RED, 0.00795, FLUIDS["wlf_murnaghan"], en.Domain(nx=nx, ny=ny, **kw))
+
+
+@pytest.mark.parametrize("Rx, Ry", [(0.08, 0.08), (0.02892, 0.345), (0.345, 0.02892)])
+def test_fft_deflection_equals_direct_summation(Rx, Ry):
+    g = _grid(Rx, Ry)
+    rng = np.random.default_rng(3)
+    P = g.hertz_pressure() * (1.0 + 0.3 * rng.random((g.nx, g.ny)))
+    got = g.deflection(P)
+    want = rs.deflection_direct(P, g.kern, g.c_w)
+    assert np.max(np.abs(got - want)) <= 1e-11 * np.max(np.abs(want))
+
+
+@pytest.mark.parametrize("Rx, Ry", [(0.08, 0.08), (0.02892, 0.345), (0.345, 0.02892)])
+def test_hertz_pressure_gives_the_hertz_approach(Rx, Ry):
+    """W + X^2/2 + curv_y Y^2/2 of the Hertz pressure is -delta Rx / b^2 over the whole contact."""
+    g = _grid(Rx, Ry, nx=129, ny=129, x_in=-1.5, x_out=1.5, y_half=1.5)
+    Xg, Yg = np.meshgrid(g.X, g.Y, indexing="ij")
+    gap = g.deflection(g.hertz_pressure()) + 0.5 * Xg**2 + 0.5 * g.curv_y * Yg**2
+    inside = Xg**2 + Yg**2 < 0.95
+    delta = g.delta / g.scale_h
+    assert np.max(np.abs(gap[inside] - delta)) <= 0.001 * delta
+
+
+def test_film_matches_twin():
+    g = _grid(0.0394, 0.2)
+    W = g.deflection(g.hertz_pressure())
+    got, want = np.empty_like(W), np.empty_like(W)
+    es.film(-0.3, g.X, g.Y, g.curv_y, W, got)
+    rs.film(-0.3, g.X, g.Y, g.curv_y, W, want)
+    assert_close(got, want, RTOL, "film")
+
+
+@pytest.mark.parametrize("Rx, Ry", [(0.08, 0.08), (0.02892, 0.345), (0.345, 0.02892)])
+def test_reynolds_residual_matches_twin(Rx, Ry):
+    """A state with a pressurised contact, a cavitated outlet (Phi < 0) and the thesis' WLF/Murnaghan oil."""
+    g = _grid(Rx, Ry)
+    Xg, Yg = np.meshgrid(g.X, g.Y, indexing="ij")
+    Phi = g.hertz_pressure() * 1.05 + 0.02 * np.exp(-((Xg + 1.3) ** 2) - Yg**2)
+    Phi[(Xg > 0.9) & (np.abs(Yg) < 1.2)] = -0.3 * np.sin(3.0 * Xg[(Xg > 0.9) & (np.abs(Yg) < 1.2)]) ** 2
+    Phi[0, :] = Phi[-1, :] = Phi[:, 0] = Phi[:, -1] = 0.0
+    H0 = -g.delta / g.scale_h + 0.05
+    R, load_error, H, rho_r, eta_r = g.residual(Phi, H0)
+    assert np.all(H[1:-1, 1:-1] > 0.0)
+    got, want = np.empty_like(R), np.empty_like(R)
+    es.reynolds_residual(Phi, H, rho_r, eta_r, g.lam, g.k, g.dX, g.dY, got)
+    rs.reynolds_residual(Phi, H, rho_r, eta_r, g.lam, g.k, g.dX, g.dY, want)
+    assert np.array_equal(got, R)  # the facade's residual is the kernel's
+    scale = np.max(np.abs(rho_r * H)) / g.dX
+    assert np.max(np.abs(got - want)) <= 1e-11 * scale
+    assert abs(load_error) < 0.2 and math.isfinite(load_error)
+
+
+def test_relaxation_sweep_matches_twin():
+    """One sweep on a 21 x 17 grid of the thesis' oil at 800 N: Gauss-Seidel nodes (inlet, sides), Jacobi
+    distributive nodes (high pressure, eps small), cavitated nodes and a non-zero FAS right-hand side.
+    Both update the same nodes in the same order; the twin's residuals are whole-array sums in another
+    order: P agrees to 1e-12 of max P (measured <= 1e-15)."""
+    g = en.ContactGrid(
+        0.08, 0.08, 800.0, 2.0, E_RED, 0.00795, FLUIDS["wlf_murnaghan"], en.Domain(-2.0, 1.5, 1.6, 21, 17)
+    )
+    Xg, Yg = np.meshgrid(g.X, g.Y, indexing="ij")
+    P0 = g.hertz_pressure() * (1.0 + 0.05 * np.sin(5.0 * Xg) * np.cos(3.0 * Yg)) + 0.02 * np.exp(-((Xg + 1.4) ** 2))
+    P0[(Xg > 0.9)] = 0.0
+    P0[0, :] = P0[-1, :] = P0[:, 0] = P0[:, -1] = 0.0
+    H0 = -g.delta / g.scale_h + 0.03
+    _, _, H, rho_r, eta_r = g.residual(P0, H0)
+    H = np.maximum(H, 0.0)
+    F = 1e-3 * np.cos(2.0 * Xg) * np.sin(Yg)
+    Kc = g.c_w * g.kern
+    got, want = P0.copy(), P0.copy()
+    delta = np.empty_like(P0)
+    args = (H, rho_r, eta_r, g.lam, g.k, g.dX, g.dY, Kc, 0.3, 0.6, 0.2)
+    c_got = es.relaxation_sweep(got, F, *args, delta)
+    c_want = rs.relaxation_sweep(want, F, *args, np.empty_like(P0))
+    jacobi = int(np.count_nonzero(delta))
+    assert 0 < jacobi < (g.nx - 2) * (g.ny - 2)  # both kinds of update took place
+    assert np.any((got == 0.0)[1:-1, 1:-1])  # and cavitated nodes
+    assert np.max(np.abs(got - want)) <= 1e-12 * np.max(want)
+    assert_close(c_got, c_want, 1e-12, "largest change")
+    assert c_got > 0.0
