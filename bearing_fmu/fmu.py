@@ -199,6 +199,8 @@ class BearingDEM(_BearingSlave):
             float(self.traction_limit),
             bool(self.average_outputs),
             bool(self.average_state_outputs),
+            float(self.support_stiffness),
+            float(self.support_damping),
         )
 
     def _make_model(self):
@@ -212,6 +214,8 @@ class BearingDEM(_BearingSlave):
             averaged=bool(self.average_outputs),
             averaged_state=bool(self.average_state_outputs),
             traction_limit=self.traction_limit,
+            support_stiffness=self.support_stiffness,
+            support_damping=self.support_damping,
         )
 
     def _advance(self, step_size):

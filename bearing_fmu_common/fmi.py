@@ -32,6 +32,7 @@ BASE_UNITS = {
     "s": {"s": 1},
     "Hz": {"s": -1},
     "N/m": {"kg": 1, "s": -2},
+    "N.s/m": {"kg": 1, "s": -1},
     "h": {"s": 1, "factor": 3600},  # hour: rating lives in hours, as catalogues give them
 }
 

@@ -27,6 +27,7 @@ from ..kernels import radial_bearing as ak
 from ..kernels import rating_life as rl
 from ..kernels import truncation as tk
 from ..kernels.ball_dynamics import state as ds
+from ..params import SUPPORT_DAMPING, SUPPORT_STIFFNESS, load_dem_constants
 from .variables import (
     GROOVE_MAX,
     LOAD_LIMITS,
@@ -613,6 +614,8 @@ DEM_OUTPUTS = (
     ),
 )
 
+_DEM = load_dem_constants()  # the DEM's defaults (params/dem_model.toml)
+
 DEM_PARAMETERS = (
     replace(_BY_NAME_PARAMETERS["bearing"], start="6208"),
     replace(_BY_NAME_PARAMETERS["lubricant"], start="guessasma_oil"),
@@ -662,10 +665,33 @@ DEM_PARAMETERS = (
     Variable(
         "average_state_outputs",
         "",
-        "true: x, y, z are means over the communication step's DEM steps and Q_max_*, p_max, Lambda_*, h_min_*, "
+        "true: x, y, z, theta_x, theta_y are means over the communication step's DEM steps and Q_max_*, p_max, "
+        "Lambda_*, h_min_*, "
         "h_c_* means over its tribology refreshes (for masters that sample slower than the ball pass); false: "
         "their values at the end of the step",
         "boolean",
         start=False,
+    ),
+    Variable(
+        "support_stiffness",
+        "N/m",
+        "stiffness of the inner ring's support (the shaft) to its rest position across the axis (x, y); in the tilts "
+        "k (d_m/2)^2/2. 0 = a free ring: the balls alone carry the loads",
+        start=_DEM.support_stiffness,
+        min=SUPPORT_STIFFNESS.low,
+        max=SUPPORT_STIFFNESS.high,
+        limits="a shaft's stiffness at a seat is 1e7-1e9 N/m; the automatic step follows the support",
+    ),
+    Variable(
+        "support_damping",
+        "N.s/m",
+        "damping of the inner ring's support (the shaft) across the axis (x, y); in the tilts c (d_m/2)^2/2. "
+        "Estimated default (a spindle shaft at a bearing seat); changes no steady state. Below about 300 N.s/m the "
+        "free ring of a "
+        "heavily thrust-loaded angular-contact bearing can whirl at speed (docs/dem.md, Ring support)",
+        start=_DEM.support_damping,
+        min=SUPPORT_DAMPING.low,
+        max=SUPPORT_DAMPING.high,
+        limits="0 = none; the automatic step follows the support",
     ),
 )

@@ -37,7 +37,14 @@ from ..kernels.geometry import (
     rolling_kinematics,
 )
 from ..kernels.hertz import hertz_contact, hertz_stiffness
-from ..params import clearance_limits, load_bearing, load_dem_constants, load_lubricant
+from ..params import (
+    SUPPORT_DAMPING,
+    SUPPORT_STIFFNESS,
+    clearance_limits,
+    load_bearing,
+    load_dem_constants,
+    load_lubricant,
+)
 from ..scene import Scene
 from .contacts import contact_terms, pack, race_contacts, truncation_parameters, truncation_warnings
 from .declarations import DEM_DT_MAX, DEM_INPUTS, DEM_OUTPUTS, DEM_REFRESH_MAX
@@ -118,6 +125,14 @@ def _cage_material(path):
     return get("E", CONSTANTS.cage_E), get("nu", CONSTANTS.cage_nu), get("rho", CONSTANTS.cage_rho)
 
 
+def _checked_support(name, value, default, spec):
+    """A support constant (spec's unit) from the argument, or the constants file's when None; checked."""
+    value = default if value is None else float(value)
+    if not (math.isfinite(value) and spec.low <= value <= spec.high):
+        raise InputError(f"{name} = {value} {spec.unit} is outside the allowed range [{spec.low:g}, {spec.high:g}]")
+    return value
+
+
 def _ring_annulus(bearing):
     """(bore, groove bottom, width) in m of the annulus that estimates the inner ring: from the bore to the groove
     bottom over the ring width (shoulders and groove roughly cancel); without bore or width in the file,
@@ -157,6 +172,10 @@ class DemModel:
     estimated from the same annulus (the polar moment, for the ring's gyroscopic moment, is always the annulus's
     for the ring's mass).
     kt_ratio: tangential/normal stiffness (-) of the asperities' spring; None = params/dem_model.toml's.
+    support_stiffness (N/m), support_damping (N.s/m): the inner ring's support, a spring to its rest position and a
+    damper across the axis (x, y; none along z), the same spread over the pitch circle in the tilts (k (d_m/2)^2/2,
+    c (d_m/2)^2/2); None = params/dem_model.toml's (no spring; 1000 N.s/m, the shaft it sits on: docs/dem.md, Ring
+    support).
     traction_limit: 0 (default) = the tangential force of the film is the lubricant's EHL traction curve
     (kernels.ehl.film_traction_coefficient,
     the film's share ehl.film_share(Lambda)), the asperities' share a spring capped at the boundary friction;
@@ -181,6 +200,8 @@ class DemModel:
         ring_mass=None,
         kt_ratio=None,
         ring_inertia=None,
+        support_stiffness=None,
+        support_damping=None,
         safety=SAFETY,
         refresh_interval=REFRESH_INTERVAL,
         averaged=True,
@@ -213,6 +234,10 @@ class DemModel:
                 "(0 = the lubricant's EHL traction curve; 0.01 = the papers' mu(Lambda))"
             )
         self.traction_limit = float(traction_limit)
+        self.support = (
+            _checked_support("support_stiffness", support_stiffness, CONSTANTS.support_stiffness, SUPPORT_STIFFNESS),
+            _checked_support("support_damping", support_damping, CONSTANTS.support_damping, SUPPORT_DAMPING),
+        )
         self.averaged = bool(averaged)
         self.averaged_state = bool(averaged_state)
         self.safety = float(safety)
@@ -321,6 +346,10 @@ class DemModel:
         pack(p, s, "P_", contact_terms(b, sc, rc))
         p[s.P_ALPHA_E] = CONSTANTS.alpha_e
         p[s.P_KT_RATIO] = kt_ratio
+        p[s.P_K_SUPPORT], p[s.P_C_SUPPORT] = self.support
+        lever = 0.5 * (0.5 * b.dm) ** 2  # a support spread over the pitch circle, about a diameter (m^2)
+        p[s.P_KT_SUPPORT] = lever * p[s.P_K_SUPPORT]
+        p[s.P_CT_SUPPORT] = lever * p[s.P_C_SUPPORT]
         p[s.P_V_REG] = V_REG
         # cage balls and their guide
         E_c, nu_c, rho_c = _cage_material(b.path)
@@ -459,9 +488,16 @@ class DemModel:
     def automatic_time_step(self, F_x=0.0, F_y=0.0, F_z=0.0, omega=None, M_x=0.0, M_y=0.0):
         """The automatic step (s) for the given loads (N, N.m) and speed (rad/s; the faster end of a call: the limit
         falls with the centrifugal load): safety x stable_time_step(), and at most DAMPING_PLAN m / c of the ball
-        with the largest normal damping c (N.s/m, loaded contacts at the last refresh)."""
+        with the largest normal damping c (N.s/m, loaded contacts at the last refresh) or of the ring on its support;
+        with a support spring, at most safety x its stability limit 2 / omega_n."""
         dt = self.safety * self.stable_time_step(F_x, F_y, F_z, omega, M_x=M_x, M_y=M_y)
-        ratio = damping_step_ratio(self.trib, self.par, 1.0)[0]  # largest c / m (1/s)
+        p = self.par
+        # the ring on its support: an explicit spring-mass (2 / omega_n) and damper (c / m) like a contact's
+        support = max(p[s.P_K_SUPPORT] / p[s.P_M_RING], p[s.P_KT_SUPPORT] / p[s.P_I_RING])  # omega_n^2 (1/s^2)
+        if support > 0.0:
+            dt = min(dt, self.safety * 2.0 / math.sqrt(support))
+        ratio = damping_step_ratio(self.trib, p, 1.0)[0]  # largest c / m (1/s)
+        ratio = max(ratio, p[s.P_C_SUPPORT] / p[s.P_M_RING], p[s.P_CT_SUPPORT] / p[s.P_I_RING])
         return min(dt, DAMPING_PLAN / ratio) if ratio > 0.0 else dt
 
     # -- inputs --------------------------------------------------------------------------------
@@ -562,8 +598,8 @@ class DemModel:
         self.truncated[:] = flags
 
     def _state_outputs(self, interval):
-        """The ring's displacement and tilts into out[O_X:O_X + 5]: at the end of the interval, or with averaged_state its
-        mean over the interval's steps, and then also the loads, pressure and films as means over its tribology
+        """The ring's displacement and tilts into out[O_X:O_X + 5]: at the end of the interval, or with averaged_state
+        their means over the interval's steps, and then also the loads, pressure and films as means over its tribology
         refreshes (a call without a refresh keeps the end values)."""
         o, acc = self.out, self._acc
         if not self.averaged_state or interval <= 0.0:

@@ -181,6 +181,14 @@ class DemConstants:
     cage_rho: float  # kg/m^3, their density
     alpha_e: float  # s/m, hysteretic damping constant (C_hyst = 1.5 alpha_e Q)
     kt_ratio: float  # -, tangential over secant normal stiffness of the asperities' spring
+    support_stiffness: float  # N/m, the inner ring's support across the axis, x and y (0 = a free ring)
+    support_damping: float  # N.s/m, its damping
+
+
+# the inner ring's support: a shaft's bending stiffness at a seat is 1e7-1e9 N/m; beyond these bounds the ring would
+# be welded to the ground (the automatic step follows the support, so any value in range is stable)
+SUPPORT_STIFFNESS = Spec("N/m", 0.0, 1e10)
+SUPPORT_DAMPING = Spec("N.s/m", 0.0, 1e6)
 
 
 def load_dem_constants(path=CATALOGUE / "dem_model.toml"):
@@ -192,4 +200,6 @@ def load_dem_constants(path=CATALOGUE / "dem_model.toml"):
         cage_rho=_value(doc, "cage_material.rho", DENSITY, path),
         alpha_e=_value(doc, "contact.alpha_e", Spec("s/m", 0.0, 10.0), path),
         kt_ratio=_value(doc, "contact.kt_ratio", Spec("-", 0.1, 1.5), path),
+        support_stiffness=_value(doc, "ring_support.stiffness", SUPPORT_STIFFNESS, path),
+        support_damping=_value(doc, "ring_support.damping", SUPPORT_DAMPING, path),
     )

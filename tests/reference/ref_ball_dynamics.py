@@ -305,11 +305,21 @@ def forces(st, par, omega, F_ring, vel, dt):
 
 def tilt_acceleration(ring, par, omega, m_ring, tilt_rates):
     """(theta_x'', theta_y'') (rad/s^2): the moment across the ring's axis plus the gyroscopic moment
-    -I_p omega (theta' x a), over the moment of inertia about a diameter."""
+    -I_p omega (theta' x a) and the support's moment -k_t theta - c_t theta', over the moment of inertia about a
+    diameter."""
     a = ring_axis(ring)
     across = m_ring - np.dot(m_ring, a) * a
     gyroscopic = -par[s.P_IP_RING] * omega * np.cross(np.array([tilt_rates[0], tilt_rates[1], 0.0]), a)
-    return (across + gyroscopic)[:2] / par[s.P_I_RING]
+    support = -par[s.P_KT_SUPPORT] * ring[s.R_TH : s.R_TH + 2] - par[s.P_CT_SUPPORT] * np.asarray(tilt_rates)
+    return ((across + gyroscopic)[:2] + support) / par[s.P_I_RING]
+
+
+def ring_acceleration(ring, par, f_ring, velocity):
+    """(x'', y'', z'') (m/s^2): the contacts' and the applied force plus the support's -k x - c v across the axis
+    (x, y; none along z), over the mass."""
+    support = -par[s.P_K_SUPPORT] * ring[s.R_X : s.R_X + 3] - par[s.P_C_SUPPORT] * velocity
+    support[2] = 0.0
+    return (f_ring + support) / par[s.P_M_RING]
 
 
 def step(st, par, omega, F_ring, dt):
@@ -332,7 +342,7 @@ def step(st, par, omega, F_ring, dt):
         f_b / par[s.P_M_BALL],
         m_b / par[s.P_I_BALL],
         f_c / par[s.P_M_CAGE],
-        f_r / par[s.P_M_RING],
+        ring_acceleration(ring, par, f_r, vel[3]),
         tilt_acceleration(ring, par, omega, m_r, vel[4]),
     )
     pairs = ((v, a, new[0]), (w, alpha, new[1]), (vc, ac, new[2]), (vr, ar, new[3]), (vth, ath, new[4]))
@@ -357,7 +367,7 @@ def initialise_accelerations(st, par, lub, omega, F_ring, T_oil):
     balls[s.B_AX : s.B_AX + 3] = f_b / par[s.P_M_BALL]
     balls[s.B_ALX : s.B_ALX + 3] = m_b / par[s.P_I_BALL]
     cage[s.C_AX : s.C_AX + 3] = f_c / par[s.P_M_CAGE]
-    ring[s.R_AX : s.R_AX + 3] = f_r / par[s.P_M_RING]
+    ring[s.R_AX : s.R_AX + 3] = ring_acceleration(ring, par, f_r, vel[3])
     ring[s.R_ATH : s.R_ATH + 2] = tilt_acceleration(ring, par, omega, m_r, vel[4])
 
 

@@ -161,7 +161,7 @@ CASES = (
         "test_fixed_10000_runs_away_and_stops_with_a_message",
     ),
     (
-        "angular-contact bearing under heavy thrust, 3 000-5 000 rpm, kicked: no ring whirl",
+        "angular-contact bearing under heavy thrust, 3 000-12 000 rpm, kicked: no ring whirl",
         "DEM",
         "tests/validation/test_dem_thrust_whirl.py",
         "test_orbit_decays_below_one_percent_of_the_axial_deflection",
@@ -171,6 +171,12 @@ CASES = (
         "DEM",
         "tests/validation/test_dem_thrust_whirl.py",
         "test_orbit_at_8000_rpm_stays_below_a_tenth_of_a_micrometre",
+    ),
+    (
+        "angular-contact bearing, ring free to tilt under combined load: steady, along the quasi-static solution",
+        "DEM",
+        "tests/validation/test_dem_tilt.py",
+        "test_free_ring_matches_the_quasi_static_free_ring",
     ),
     (
         "angular-contact bearing at 10 000 rpm, 800 N thrust: outer-race control, no swing",

@@ -52,12 +52,20 @@ def _scale_err(a, b):
 
 
 @pytest.mark.parametrize(
-    "film, steps, traction", [(0, STEPS, 0.0), (1, STEPS // 3, 0.0), (2, STEPS // 3, 0.0), (0, STEPS // 3, 0.05)]
+    "film, steps, traction, support",
+    [
+        (0, STEPS, 0.0, None),
+        (1, STEPS // 3, 0.0, None),
+        (2, STEPS // 3, 0.0, None),
+        (0, STEPS // 3, 0.05, None),
+        (0, STEPS // 3, 0.0, (2e7, 2e3)),
+    ],
 )
-def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction):
+def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction, support):
     """Film formulas: 0 Hamrock-Dowson (the kernel's fused fast path), 1 Masjedi-Khonsari and 2 Chittenden
     (through kernels.ehl.film_thickness); the papers' mu(Lambda) and a traction limit of 0.05 (mixed film here:
-    the tangential limit differs from the Houpert terms' mu)."""
+    the tangential limit differs from the Houpert terms' mu); a ring support with a spring and a damper far
+    above the defaults (N/m, N.s/m), so that their terms weigh in the ring's motion."""
     model = running_6208
     state = model.get_state()
     kernel_state = {k: (v.copy() if isinstance(v, np.ndarray) else v) for k, v in state.items()}
@@ -66,8 +74,14 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction):
     par[s.P_REFRESH] = 10
     par[s.P_FILM] = film
     par[s.P_TRACTION] = traction
+    if support is not None:
+        lever = 0.5 * (0.5 * model.bearing.dm) ** 2
+        par[[s.P_K_SUPPORT, s.P_C_SUPPORT]] = support
+        par[[s.P_KT_SUPPORT, s.P_CT_SUPPORT]] = lever * np.array(support)
     lub = model.lubricant.array
     omega0, omega1, F, T_oil = 150.0, 160.0, (0.0, 3000.0, 0.0, 0.0, 0.0), 313.15  # F_y, on the line of ball 1
+    if support is not None:
+        F = (0.0, 3000.0, 0.0, 2.0, -1.0)  # moments (N.m) that tilt the ring against the support's tilt terms
     acc = np.zeros(s.A_SIZE)
     status = np.zeros(s.ST_SIZE, dtype=np.int64)
     dyn.advance(
@@ -118,6 +132,8 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction):
     report["capacitance x time"] = _scale_err(acc[s.A_CAP : s.A_CAP + 1], np.array([capacitance]))
     # the averaged state outputs' integrals and sums: the displacement and tilts over the steps, the refresh samples
     report["displacement x time"] = _scale_err(acc[s.A_XT : s.A_XT + 3], state_sums[:3])
+    if support is not None:  # (elsewhere the ring does not tilt: both are exactly 0)
+        assert np.max(np.abs(state_sums[3:5])) > 0.0
     report["tilt x time"] = _scale_err(acc[s.A_XT + 3 : s.A_XT + 5], state_sums[3:5])
     assert acc[s.A_SAMPLES] == state_sums[5] > 0.0
     for k in range(9):  # each sum on its own scale (loads, pressure, Lambda, films)
@@ -414,6 +430,9 @@ def test_bad_time_step_is_rejected(dt):
         ({"safety": math.nan}, "safety"),
         ({"refresh_interval": -1e-6}, "refresh_interval"),
         ({"refresh_interval": math.inf}, "refresh_interval"),
+        ({"support_damping": -1.0}, "support_damping"),
+        ({"support_damping": math.nan}, "support_damping"),
+        ({"support_stiffness": 2e10}, "support_stiffness"),
     ],
 )
 def test_bad_step_settings_are_rejected(kwargs, word):

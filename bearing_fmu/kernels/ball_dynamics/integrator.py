@@ -57,8 +57,10 @@ from .state import (
     P_ALPHA_E,
     P_C_CB,
     P_C_GUIDE,
+    P_C_SUPPORT,
     P_CAPACITANCE,
     P_CHATTER,
+    P_CT_SUPPORT,
     P_D,
     P_DAMPING_STOP,
     P_DELTA_LIM_I,
@@ -69,8 +71,10 @@ from .state import (
     P_IP_RING,
     P_K_CB,
     P_K_GUIDE,
+    P_K_SUPPORT,
     P_KH_I,
     P_KT_RATIO,
+    P_KT_SUPPORT,
     P_M_BALL,
     P_M_CAGE,
     P_M_RING,
@@ -401,9 +405,16 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
             a = work[W_FC + i, j] * inv_c
             cage[C_VX + i, j] += (cage[C_AX + i, j] + a) * half
             cage[C_AX + i, j] = a
+    # the ring's support across the axis (the shaft it sits on): a spring to its rest position and a damper on the
+    # predicted velocity in x and y; axially the bearing alone holds the ring
     inv_r = 1.0 / par[P_M_RING]
+    k_s = par[P_K_SUPPORT]
+    c_s = par[P_C_SUPPORT]
     for i in range(3):
-        a = acc[A_FR + i] * inv_r
+        a = acc[A_FR + i]
+        if i < 2:
+            a -= k_s * ring[R_X + i] + c_s * acc[A_VR + i]
+        a *= inv_r
         ring[R_VX + i] += (ring[R_AX + i] + a) * half
         ring[R_AX + i] = a
     # tilts: the moment across the ring's axis (the drive holds the part along it) and the gyroscopic moment of the
@@ -412,10 +423,14 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
     m_axial = acc[A_MR] * ax + acc[A_MR + 1] * ay + acc[A_MR + 2] * az
     spin_inertia = par[P_IP_RING] * omega * az  # -I_p omega (theta' x a) across the axis
     inv_d = 1.0 / par[P_I_RING]
-    a = (acc[A_MR] - m_axial * ax - spin_inertia * acc[A_WR + 1]) * inv_d
+    kt_s = par[P_KT_SUPPORT]
+    ct_s = par[P_CT_SUPPORT]
+    a = acc[A_MR] - m_axial * ax - spin_inertia * acc[A_WR + 1] - kt_s * ring[R_TH] - ct_s * acc[A_WR]
+    a *= inv_d
     ring[R_VTH] += (ring[R_ATH] + a) * half
     ring[R_ATH] = a
-    a = (acc[A_MR + 1] - m_axial * ay + spin_inertia * acc[A_WR]) * inv_d
+    a = acc[A_MR + 1] - m_axial * ay + spin_inertia * acc[A_WR] - kt_s * ring[R_TH + 1] - ct_s * acc[A_WR + 1]
+    a *= inv_d
     ring[R_VTH + 1] += (ring[R_ATH + 1] + a) * half
     ring[R_ATH + 1] = a
     ring[R_TIME] += dt

@@ -136,7 +136,11 @@ P_S_TRACTION = 61  # slide-to-roll ratio s_0 where the traction curve's linear p
 P_FILM_RATE = 62  # slip a newton removes from a ball's two contacts in a step, over dt / m_ball (-): 2 x 3.5
 P_I_RING = 63  # inner-ring moment of inertia about a diameter through its centre (kg.m^2)
 P_IP_RING = 64  # about its axis (kg.m^2): the gyroscopic moment of a tilting ring that turns at omega
-P_SIZE = 65
+P_K_SUPPORT = 65  # stiffness of the inner ring's support across the axis (x, y), to its rest position (N/m)
+P_C_SUPPORT = 66  # viscous damping of the support in x, y (N.s/m); none along the axis
+P_KT_SUPPORT = 67  # the support's tilt stiffness (N.m/rad): P_K_SUPPORT spread over the pitch circle, k (d_m/2)^2/2
+P_CT_SUPPORT = 68  # and its tilt damping (N.m.s/rad), c (d_m/2)^2/2
+P_SIZE = 69
 
 # a ball-race contact counts as loaded in the outputs (loads, pressure, films, angles, n_loaded) when its approach
 # exceeds this (m): the rounding of the positions (~1e-18 m) leaves approaches of 1e-18-1e-15 m on contacts that
