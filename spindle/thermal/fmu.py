@@ -20,6 +20,8 @@ from bearing_fmu_common.fmi import DeclaredSlave, check_parameters, declared_par
 from .declarations import parameter_declarations
 from .model import DEFAULT_SPINDLE, SpindleThermalModel
 
+COMMUNICATION_DIGITS = 12  # the communication step is taken on a grid of 10^-12 s
+
 
 class SpindleThermal(DeclaredSlave):
     """Lumped thermal network of a spindle with bearing heat inputs and clearance/preload outputs."""
@@ -102,7 +104,9 @@ class SpindleThermal(DeclaredSlave):
         def step():
             if not self._started:  # the inputs at initialisation were refused: start from the current ones
                 self._start()
-            self._y = self._model.update(step_size, self._u).tolist()
+            # on a grid of 1 ps, as BearingDEM.fmu: masters that hand the same nominal step in different roundings
+            # (libcosim counts integer nanoseconds, fmpy multiplies n H) then integrate the same step, bit for bit
+            self._y = self._model.update(round(step_size, COMMUNICATION_DIGITS), self._u).tolist()
 
         return self._guarded(step, Fmi2Status.discard)  # False: fmi2Discard
 
