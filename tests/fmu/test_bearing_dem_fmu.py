@@ -104,6 +104,8 @@ def test_validate_and_variables(dem_fmu):
         "traction_limit",
         "average_outputs",
         "average_state_outputs",
+        "support_stiffness",
+        "support_damping",
     }
     quasi_static = {v.name: v for v in read_model_description(str(_fmu("Bearing", "quasi_static.toml"))).modelVariables}
     for name in shared | inputs:

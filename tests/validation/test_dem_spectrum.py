@@ -7,13 +7,17 @@ its pockets). A healthy bearing's vibration is made of the shaft speed, the cage
 and inner-race ball-pass frequencies (BPFO, BPFI), their harmonics and sidebands (e.g. Randall & Antoni 2011,
 Mech. Syst. Signal Process. 25(2) 485-520, section 2). Asserted: every spectral line of the inner ring's
 displacement along the load above 5 % of the BPFO line lies within 0.5 Hz + 1 % of such a frequency (0.5 Hz:
-the 3 s record's resolution, 1/3 Hz, and its window; 1 %: the cage slip), and the BPFO line is the largest above
-the cage frequency's harmonics. A line is a tonal peak: a local maximum at least 4 times the median of the
-spectrum within +-5 Hz around it; the balls' broadband motion near 17-23 Hz (2-6.5 % of BPFO at 1/3 Hz
-resolution, 1-2 times its surroundings) is not a line. With cage elements free to turn each on its own the
+the resolution, 1/3 Hz, and its window; 1 %: the cage slip), and the BPFO line is the largest above the cage
+frequency's harmonics. A line is a tonal peak: a local maximum at least 4 times the median of the spectrum within
++-5 Hz around it; the balls' broadband motion near 17-23 Hz is not a line. The spectrum is a Welch average: 9 s
+of record in five 3 s Hann segments overlapping by half (1/3 Hz resolution). A single 3 s periodogram varies by
+its own size from bin to bin in broadband parts, so one of its bins in the balls' bump reached 9 % of BPFO and
+5 times its surroundings at 2 000 N (the same record's 9 s average there: 2.6 %, 1.2 times); a tone keeps its
+height in the average. Measured with the average: no line but the BPFO line (100 %) and its second harmonic
+(5-6 %) at 500, 1 000 and 2 000 N. With cage elements free to turn each on its own the
 model showed a line at 21.3 Hz (about BPFO / 5, between FTF and 2 FTF; 36, 73 and 89 % of BPFO at 500, 1000 and
-2000 N) and its harmonic: a mode of the train of balls and cage elements that a rigid cage does not have
-(docs/dem.md, Cage)."""
+2000 N; with the average 58-64 % at 21.7 Hz and 8-11 % at its harmonic, so the test still fails on it) and its
+harmonic: a mode of the train of balls and cage elements that a rigid cage does not have (docs/dem.md, Cage)."""
 
 import math
 
@@ -26,7 +30,8 @@ from tests.validation.test_cwru_defect_frequencies import bearing_file, rows
 
 SPEED = 1797.0 * 2.0 * math.pi / 60.0  # rad/s
 SAMPLE_RATE = 10000.0  # Hz: the lines up to 2 kHz, the content above it well below 5 % (measured at 20 kHz)
-RECORD = 3.0  # s: 1/3 Hz resolution, so that a line stands out of the broadband floor
+SEGMENT = 3.0  # s: 1/3 Hz resolution, so that a line stands out of the broadband floor
+RECORD = 9.0  # s: five segments overlapping by half, averaged (Welch)
 FLOOR_BINS = 15  # +-5 Hz around a peak: its broadband floor
 FLOOR_RATIO = 4.0  # a line stands at least 4x above that floor (the BPFO line: ~100x)
 
@@ -63,7 +68,7 @@ def is_line(spectrum, i, threshold):
 
 @pytest.mark.parametrize("load", [500.0, 1000.0, 2000.0])
 def test_healthy_bearing_spectrum_has_only_bearing_frequencies(bearing_6205, load):
-    """CWRU 6205 at 1 797 rpm, 500/1 000/2 000 N radial, 3 s of the ring's displacement: every tonal line above
+    """CWRU 6205 at 1 797 rpm, 500/1 000/2 000 N radial, 9 s of the ring's displacement: every tonal line above
     5 % of the BPFO line is a shaft, cage, ball-spin or ball-pass frequency, harmonic or sideband, and the BPFO
     line is the largest above the cage harmonics (with independent cage elements a 21.3 Hz line reached 36-89 %)."""
     model = DemModel(str(bearing_6205), "guessasma_oil")
@@ -72,14 +77,16 @@ def test_healthy_bearing_spectrum_has_only_bearing_frequencies(bearing_6205, loa
         model.advance(5e-3 + 10e-3 * k / 20, omega=SPEED * k / 20, F_y=load)
     model.advance(0.3, omega=SPEED, F_y=load)
     n = int(RECORD * SAMPLE_RATE)
+    seg = int(SEGMENT * SAMPLE_RATE)
     y = np.empty(n)
     cage = np.empty(n)
     for k in range(n):
         out = model.advance(0.3 + (k + 1) / SAMPLE_RATE, omega=SPEED, F_y=load)
         y[k] = model.ring[s.R_X + 1]
         cage[k] = out["omega_cage"]
-    spectrum = np.abs(np.fft.rfft((y - y.mean()) * np.hanning(n)))
-    freq = np.fft.rfftfreq(n, 1.0 / SAMPLE_RATE)
+    parts = [y[a : a + seg] for a in range(0, n - seg + 1, seg // 2)]
+    spectrum = np.mean([np.abs(np.fft.rfft((p - p.mean()) * np.hanning(seg))) for p in parts], axis=0)
+    freq = np.fft.rfftfreq(seg, 1.0 / SAMPLE_RATE)
     b = model.bearing
     gamma = b.D / b.dm
     shaft = SPEED / (2.0 * math.pi)

@@ -91,15 +91,27 @@ def test_218_dem_light_thrust_high_speed_is_truncated_and_warned_once():
     """The same case in the DEM fidelity: 8.9 kN, the speed ramped to 10 000 rpm in 20 ms and held. As the balls
     take up their orbital speed the inner contact angles grow past 53 deg, and their ellipses pass the inner
     shoulder edge (with the EHL traction curve the balls follow the ramp and the entry comes at 29 ms, after the
-    ramp's end; with the papers' mu = 0.01 they took up speed slowly and it came at 170-220 ms). One warning at the
-    entry, none at the following steps in truncation."""
+    ramp's end). One warning at the entry, none at the following steps in truncation. The ring, on its support,
+    settles axisymmetric: every inner angle 54.28 deg at 300 ms, truncation_inner 0.154, against 54.89 deg and
+    0.232 in the quasi-static fidelity (the test above): the fraction moves by about 0.13 per degree here, so the
+    DEM's 0.6 deg (1.1 %) smaller angle accounts for it. Asserted: above 0.1, every loaded inner angle within
+    0.01 deg of the others (no whirl), the angle within 2 % of the quasi-static one."""
     dem = DemModel(str(BEARING), OIL, Scene.from_toml(SCENES_DIR / "dem.toml"))
     omega = 10000.0 * math.pi / 30.0
     warnings = []
     for k in range(1, 301):
         out = dem.evaluate(k * 1e-3, omega=omega * min(1.0, k / 20.0), F_z=8900.0)
         warnings += [(k, w) for w in dem.warnings if "truncated" in w]
-    assert out["truncation_inner"] > 0.2
+    qs = QuasiStaticModel(str(BEARING), OIL, Scene.from_toml(SCENES_DIR / "quasi_static.toml"))
+    reference = qs.evaluate(omega=omega, F_z=8900.0)
+    angles = dem.contacts()["alpha_inner"]
+    print(
+        f"DEM {math.degrees(out['alpha_inner']):.2f} deg, {out['truncation_inner']:.3f}; quasi-static "
+        f"{math.degrees(reference['alpha_inner']):.2f} deg, {reference['truncation_inner']:.3f}"
+    )
+    assert out["truncation_inner"] > 0.1
     assert out["truncation_outer"] == 0.0
+    assert math.degrees(angles.max() - angles.min()) < 0.01
+    assert out["alpha_inner"] == pytest.approx(reference["alpha_inner"], rel=0.02)
     assert len(warnings) == 1 and "inner ring's thrust-side shoulder" in warnings[0][1]
     assert 20 < warnings[0][0] < 300  # after the ramp to speed
