@@ -8,7 +8,7 @@ system temporary directory (a marker file says it is complete), with numba and f
 the running interpreter (so every version's compiled code is built by the same numba) and the newest
 numpy not newer than the running one that supports that Python.
 
-    python -m bearing_fmu_common.runtime.host_pythons     # prints the environments' pythons, one a line
+    python -m bearing_fmu_common.runtime.host_pythons [--others] [3.X ...]   # their pythons, one a line
 """
 
 import os
@@ -103,9 +103,12 @@ def main(argv=None):
     import argparse
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("versions", nargs="*", help="3.X (default: every supported version that is installed)")
+    parser.add_argument("versions", nargs="*", help="3.X (default: every supported version)")
+    parser.add_argument("--others", action="store_true", help="leave out this interpreter's version")
     args = parser.parse_args(argv)
     wanted = [tuple(int(x) for x in v.split(".")) for v in args.versions] or list(SUPPORTED)
+    if args.others:
+        wanted = [w for w in wanted if w != sys.version_info[:2]]
     failed = False
     for w in wanted:
         try:
