@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test test-bare-host test-ehl-full lint fmus bench report clean
+.PHONY: demo test test-bare-host test-python-hosts test-ehl-full lint fmus fmus-python-hosts bench report clean
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -22,6 +22,13 @@ $(FMU_STAMP): $(STAMP) $(FMU_SOURCES)
 
 fmus: $(FMU_STAMP)
 
+# the FMUs with their kernels compiled for every supported Python (3.10-3.13, each found as python3.X on PATH
+# or under pyenv): an environment of each under /tmp, made with pip once (docs/fmu_runtime.md, "Compiled code")
+fmus-python-hosts: $(STAMP)
+	BEARING_FMU_KERNEL_PYTHONS="$$($(BIN)/python -m bearing_fmu_common.runtime.host_pythons --others | paste -sd:)" \
+		$(BIN)/python -m spindle.cli build
+	touch $(FMU_STAMP)
+
 demo: fmus
 	$(BIN)/python -m spindle.cli demo --out results
 
@@ -31,11 +38,16 @@ lint: $(STAMP)
 
 # no cache cleaning needed: the numba cache directory is keyed on the kernel sources (bearing_fmu_common/jit.py)
 test: lint fmus
-	$(BIN)/python -m pytest -q -m "not bare_host and not ehl_full"
+	$(BIN)/python -m pytest -q -m "not bare_host and not python_hosts and not ehl_full"
 
 # the FMUs in a host with only fmpy, numpy and numba (a virtual environment under /tmp, made with pip once)
 test-bare-host: fmus
 	$(BIN)/python -m pytest -q -m bare_host
+
+# the FMUs in fmpy and native hosts on Python 3.10, 3.11, 3.12 and 3.13 (an environment per Python under /tmp,
+# made with pip once; the tests build their own FMUs with kernels for each)
+test-python-hosts: $(STAMP)
+	$(BIN)/python -m pytest -q -m python_hosts
 
 # the numerical EHL solver on all 55 Annexe D cases (about 20 min)
 test-ehl-full: $(STAMP)

@@ -77,6 +77,8 @@ def _stable_copy():
     return str(target)
 
 
+if sys.version_info < (3, 11):  # tomllib is in the standard library from 3.11: the FMU carries a copy
+    sys.path.append(str(_HERE / "{compat}"))
 if any(p not in sys.modules for p in _PACKAGES):
     try:
         sys.path.insert(0, _stable_copy())
@@ -86,13 +88,35 @@ if any(p not in sys.modules for p in _PACKAGES):
 from bearing_fmu_common.jit import add_compiled_dir  # noqa: E402
 
 add_compiled_dir(_HERE / "{compiled}")  # this FMU's kernels compiled for the platform's generic CPU
+from bearing_fmu_common import first_start  # noqa: E402
 from {module} import {base_class} as _Slave  # noqa: E402
 from pythonfmu.default_experiment import DefaultExperiment  # noqa: E402
+from pythonfmu.enums import Fmi2Status  # noqa: E402
 {imports}
+_NOTE = first_start.note(_HERE / "{compiled}")  # None if the compiled kernels serve this Python and numba
+
 
 class {fmu_name}(_Slave):
     {metadata}
     {body}
+
+    def __init__(self, **kwargs):
+        super().__init__(**kwargs)
+        if _NOTE:
+            self.log(f"{{self.instance_name}}: {{_NOTE}}", Fmi2Status.warning)
+
+    def exit_initialization_mode(self):
+        try:
+            return super().exit_initialization_mode()
+        finally:
+            first_start.report(self)
+
+    def do_step(self, current_time, step_size):
+        try:
+            return super().do_step(current_time, step_size)
+        finally:
+            if _NOTE:
+                first_start.report(self)
 '''
 
 
@@ -110,6 +134,7 @@ def package_hash(root, names):
 
 
 BEARING_BUNDLE = ((PACKAGE_DIR, "bearing_fmu"), (COMMON_DIR, "bearing_fmu_common"))
+COMPAT_DIR = "_py310"  # in the FMU's resources/: standard-library modules that Python 3.10 lacks (tomllib)
 _NOT_BUNDLED = shutil.ignore_patterns("__pycache__", "*.pyc", "*.nbi", "*.nbc")
 
 
@@ -128,6 +153,25 @@ def stage_bundle(stage, bundle):
         if top not in names:
             names.append(top)
     return names
+
+
+def stage_compat(stage):
+    """The build interpreter's tomllib (Python 3.11's standard library; PSF License, its text beside it) in
+    stage/COMPAT_DIR, which the entry script puts at the end of sys.path on Python 3.10."""
+    import sysconfig
+    import tomllib
+
+    target = Path(stage) / COMPAT_DIR
+    shutil.copytree(Path(tomllib.__file__).parent, target / "tomllib", ignore=_NOT_BUNDLED)
+    licence = Path(sysconfig.get_paths()["stdlib"]) / "LICENSE.txt"
+    if licence.is_file():
+        shutil.copyfile(licence, target / "LICENSE-Python.txt")
+    else:
+        (target / "LICENSE-Python.txt").write_text(
+            f"tomllib/ is the standard library's tomllib of Python {sys.version.split()[0]}, under the Python Software "
+            "Foundation License (https://docs.python.org/3/license.html).\n"
+        )
+    return target
 
 
 def build_python_fmu(
@@ -153,6 +197,7 @@ def build_python_fmu(
     with tempfile.TemporaryDirectory(prefix="bearing_fmu_build_") as tmp:
         stage = Path(tmp)
         packages = stage_bundle(stage, bundle)
+        compat = stage_compat(stage)
         entry = stage / f"{fmu_name.lower()}_entry.py"
         entry.write_text(
             ENTRY_TEMPLATE.format(
@@ -160,6 +205,7 @@ def build_python_fmu(
                 bundle=package_hash(stage, packages),
                 packages=packages,
                 compiled=COMPILED_DIR,
+                compat=COMPAT_DIR,
                 module=module,
                 base_class=base_class,
                 imports=imports,
@@ -170,7 +216,7 @@ def build_python_fmu(
         path = FmuBuilder.build_FMU(
             entry,
             dest=out_dir / f"{fmu_name}.fmu",
-            project_files=[stage / p for p in packages],
+            project_files=[*(stage / p for p in packages), compat],
             canGetAndSetFMUstate=True,
             canSerializeFMUstate=True,
         )

@@ -10,7 +10,9 @@ processes, hour-long closed loops, a Dask cluster, speed sweeps), kept here besi
 every selection is decided in one place. `bare_host` marks the tests listed in BARE_HOST, which set up a
 host environment of their own with pip (a virtual environment with only fmpy, numpy and numba: about a
 minute with pip's cache, and registry access): `make test` leaves them out, `make test-bare-host` runs
-them; likewise `ehl_full` (the numerical EHL solver on all 55 Annexe D cases) and `make test-ehl-full`.
+them; likewise `python_hosts` (the FMUs in fmpy and native hosts on every supported Python, 3.10-3.13:
+a pip environment per Python, minutes) and `make test-python-hosts`, and `ehl_full` (the numerical EHL
+solver on all 55 Annexe D cases) and `make test-ehl-full`.
 The quick loop while editing kernels and models is `pytest -m "not slow and not fmu and not cosim"`
 (about a minute); `make test` runs everything else.
 """
@@ -41,6 +43,15 @@ EHL_FULL = {"tests/validation/test_ehl_annexe_d.py": {"test_every_case_matches_a
 BARE_HOST = {  # test file -> test function names that build a pip environment of their own
     "tests/fmu/test_bare_host.py": {"test_thermal_fmu_runs_in_a_host_with_only_fmpy_numpy_numba"},
 }
+# the FMUs on every supported Python (3.10-3.13): a pip environment per Python and FMUs built with kernels for
+# each (minutes): `make test-python-hosts`, outside `make test`
+PYTHON_HOSTS = {
+    "tests/fmu/test_python_hosts.py": {
+        "test_fmpy_hosts_on_every_python_give_the_same_outputs_without_compiling",
+        "test_native_hosts_start_every_python_with_the_same_outputs",
+        "test_a_python_without_the_fmus_kernels_compiles_them_and_says_so",
+    },
+}
 
 
 def pytest_collection_modifyitems(config, items):
@@ -62,3 +73,6 @@ def pytest_collection_modifyitems(config, items):
         if name in BARE_HOST.get(relative, ()):
             item.add_marker(pytest.mark.slow)
             item.add_marker(pytest.mark.bare_host)
+        if name in PYTHON_HOSTS.get(relative, ()):
+            item.add_marker(pytest.mark.slow)
+            item.add_marker(pytest.mark.python_hosts)

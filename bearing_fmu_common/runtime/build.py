@@ -1,9 +1,12 @@
-"""Compile the FMI 2.0 export layer (fmi2_python.c) for the running Python and put it into an FMU.
+"""Compile the FMUs' FMI 2.0 binaries and put them into an FMU (docs/fmu_runtime.md).
 
-The layer replaces pythonfmu's prebuilt binary (docs/fmu_runtime.md): it links the running
-interpreter's libpython, so the FMU binary serves that Python only (same version, built with
---enable-shared). It is compiled once per source/interpreter/compiler into a cache directory and
-reused by every FMU of a build.
+Two libraries, both linked with no libpython:
+- the FMU's binary, binaries/linux64/<modelIdentifier>.so (fmi2_loader.c): finds the interpreter (the
+  host's, or for a native host one found by a documented search and started) and loads the layer;
+- the layer, binaries/linux64/fmi2_python.abi3.so (fmi2_python.c), built for CPython's stable ABI
+  (Py_LIMITED_API 3.10): one binary serves every Python from 3.10 on.
+Each is compiled once per source and compiler command into a cache directory and reused by every FMU
+of a build.
 """
 
 import hashlib
@@ -17,14 +20,19 @@ import zipfile
 from pathlib import Path
 from xml.etree import ElementTree
 
-SOURCE = Path(__file__).with_name("fmi2_python.c")
+RUNTIME_DIR = Path(__file__).resolve().parent
+SOURCE = RUNTIME_DIR / "fmi2_python.c"  # the layer
+LOADER_SOURCE = RUNTIME_DIR / "fmi2_loader.c"  # the FMU's binary
+SHARED_HEADER = RUNTIME_DIR / "fmi2_shared.h"
+LAYER_FILE = "fmi2_python.abi3.so"  # beside the FMU's binary; the name fmi2_loader.c loads
 PLATFORM = "linux64"  # the only platform the layer is built for
-PYTHON_HINT = "python.txt"  # resources/ file read by the layer: the interpreter for native hosts
+PYTHON_HINT = "python.txt"  # resources/ file read by the loader: the interpreter that built the FMU
 GUID_FILE = "guid.txt"  # resources/ file read by the layer: the GUID fmi2Instantiate must be given
+LIMITED_API = "0x030A0000"  # the stable ABI of Python 3.10, the oldest supported host
 
 
 class RuntimeBuildError(RuntimeError):
-    """The export layer cannot be compiled here (no shared libpython, no compiler, compile error)."""
+    """The FMI binaries cannot be compiled here (no compiler, no Python headers, compile error)."""
 
 
 def fmi_headers():
@@ -37,17 +45,13 @@ def fmi_headers():
     return path
 
 
-def compile_command(output):
-    """gcc command line compiling SOURCE into the shared library `output` against this Python."""
+def compile_command(source, output):
+    """gcc command line compiling `source` (SOURCE or LOADER_SOURCE) into the shared library `output`.
+    Neither links a libpython: the layer takes the interpreter's symbols from the process, the loader
+    needs none."""
     if sys.platform != "linux" or sys.maxsize < 2**32:
         raise RuntimeBuildError(f"the FMU runtime is built for {PLATFORM} only, not {sys.platform}")
-    if not sysconfig.get_config_var("Py_ENABLE_SHARED"):
-        raise RuntimeBuildError(
-            f"{sys.executable} has no shared libpython (configure --enable-shared): the FMU runtime links it"
-        )
-    libdir = sysconfig.get_config_var("LIBDIR")
-    library = f"python{sysconfig.get_config_var('LDVERSION')}"
-    return [
+    command = [
         os.environ.get("CC", "gcc"),
         "-shared",
         "-fPIC",
@@ -56,17 +60,15 @@ def compile_command(output):
         "-Wall",
         "-Wextra",
         "-fvisibility=hidden",  # only the fmi2* functions are exported
-        f"-I{sysconfig.get_paths()['include']}",
         f"-I{fmi_headers()}",
-        str(SOURCE),
-        "-o",
-        str(output),
-        f"-L{libdir}",
-        f"-l{library}",
-        f"-Wl,-rpath,{libdir}",  # a native host finds libpython without LD_LIBRARY_PATH
-        "-ldl",
-        "-lpthread",
+        f"-I{RUNTIME_DIR}",
     ]
+    if Path(source) == SOURCE:
+        include = sysconfig.get_paths()["include"]
+        if not (Path(include) / "Python.h").is_file():
+            raise RuntimeBuildError(f"Python.h not found in {include} (the Python headers are needed)")
+        command.append(f"-I{include}")  # any Python >= 3.10: Py_LIMITED_API selects the 3.10 stable ABI
+    return command + [str(source), "-o", str(output), "-ldl", "-lpthread"]
 
 
 def cache_dir():
@@ -76,32 +78,33 @@ def cache_dir():
     return Path(base) / "runtime"
 
 
-def compiled_runtime(directory=None):
-    """Path of the compiled layer for this interpreter, compiling it if the cache has no copy."""
-    probe = compile_command("OUT")
-    digest = hashlib.sha256(SOURCE.read_bytes())
+def compiled_runtime(source=SOURCE, directory=None):
+    """Path of `source` compiled (SOURCE: the layer; LOADER_SOURCE: the FMU's binary), compiling it if the
+    cache has no copy."""
+    probe = compile_command(source, "OUT")
+    digest = hashlib.sha256(Path(source).read_bytes())
+    digest.update(SHARED_HEADER.read_bytes())
     digest.update("\0".join(probe).encode())
-    digest.update(sys.version.encode())
-    path = Path(directory or cache_dir()) / f"fmi2_python-{digest.hexdigest()[:16]}.so"
+    path = Path(directory or cache_dir()) / f"{Path(source).stem}-{digest.hexdigest()[:16]}.so"
     if path.is_file():
         return path
     path.parent.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory(dir=path.parent) as tmp:
         staged = Path(tmp) / path.name
-        proc = subprocess.run(compile_command(staged), capture_output=True, text=True)
+        proc = subprocess.run(compile_command(source, staged), capture_output=True, text=True)
         if proc.returncode != 0:
-            raise RuntimeBuildError(f"compiling {SOURCE.name} failed:\n{proc.stderr}")
+            raise RuntimeBuildError(f"compiling {Path(source).name} failed:\n{proc.stderr}")
         os.replace(staged, path)  # atomic: concurrent builds do not collide
     return path
 
 
 def install_runtime(fmu_path, python=sys.executable):
-    """Replace the binaries of a pythonfmu-built FMU by the layer (binaries/linux64/<modelIdentifier>.so),
-    record `python` in resources/python.txt for native hosts and the modelDescription's GUID in
-    resources/guid.txt (fmi2Instantiate refuses another GUID: one library serves every FMU, so the GUID
-    cannot be compiled in)."""
+    """Replace the binaries of a pythonfmu-built FMU by the project's (binaries/linux64/<modelIdentifier>.so,
+    the loader, and the layer beside it), record `python` in resources/python.txt (a native host's last
+    candidate interpreter: the build machine's) and the modelDescription's GUID in resources/guid.txt
+    (fmi2Instantiate refuses another GUID: one layer serves every FMU, so the GUID cannot be compiled in)."""
     fmu_path = Path(fmu_path)
-    library = compiled_runtime()
+    loader, layer = compiled_runtime(LOADER_SOURCE), compiled_runtime(SOURCE)
     staged = fmu_path.with_suffix(".fmu.tmp")
     with zipfile.ZipFile(fmu_path) as source, zipfile.ZipFile(staged, "w", zipfile.ZIP_DEFLATED) as target:
         md = ElementTree.fromstring(source.read("modelDescription.xml"))
@@ -110,7 +113,8 @@ def install_runtime(fmu_path, python=sys.executable):
         for item in source.infolist():
             if not item.filename.startswith("binaries/") and item.filename not in written:
                 target.writestr(item, source.read(item))
-        target.write(library, f"binaries/{PLATFORM}/{identifier}.so")
+        target.write(loader, f"binaries/{PLATFORM}/{identifier}.so")
+        target.write(layer, f"binaries/{PLATFORM}/{LAYER_FILE}")
         target.writestr(f"resources/{PYTHON_HINT}", f"{python}\n")
         target.writestr(f"resources/{GUID_FILE}", f"{md.get('guid')}\n")
     shutil.move(staged, fmu_path)

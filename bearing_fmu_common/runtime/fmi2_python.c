@@ -1,10 +1,17 @@
-/* FMI 2.0 co-simulation export layer for Python slaves (pythonfmu's Fmi2Slave protocol).
+/* FMI 2.0 co-simulation layer for Python slaves (pythonfmu's Fmi2Slave protocol).
  *
  * SPDX-License-Identifier: MIT. Written from the FMI 2.0.4 standard (Modelica Association); the
  * fmi2*.h headers come from fmpy's package data at build time. docs/fmu_runtime.md explains the
  * statuses, the environment of native hosts and why Python is never finalised.
  *
- * One shared library serves every FMU: fmi2Instantiate reads resources/slavemodule.txt (written by
+ * Built for CPython's stable ABI (Py_LIMITED_API 3.10) and linked with no libpython, so one binary serves
+ * every Python from 3.10 on: the interpreter's symbols come from the process (the host's Python, or the
+ * libpython the FMU's entry library, fmi2_loader.c, loaded and started). The entry library is the FMU's
+ * binaries/linux64/<modelIdentifier>.so; it loads this one (binaries/linux64/fmi2_python.abi3.so) once an
+ * interpreter runs (RTLD_LOCAL: its fmi2* functions never enter the global scope) and passes every call
+ * on. Nothing here calls its own exported functions, so another library's fmi2* cannot take their place.
+ *
+ * One library serves every FMU: fmi2Instantiate reads resources/slavemodule.txt (written by
  * pythonfmu's builder), imports that module with resources/ on sys.path (once per process: later
  * instances, from any extraction of the FMU, reuse it and add nothing to sys.path) and instantiates
  * its Fmi2Slave subclass. Every call holds the GIL (PyGILState_Ensure), so a Python host (fmpy, whose
@@ -16,24 +23,24 @@
  * fmi2Reset get fmi2Error with a message naming the call and the state.
  */
 #define PY_SSIZE_T_CLEAN
+#define Py_LIMITED_API 0x030A0000 /* Python 3.10: the oldest supported host */
 #include <Python.h>
 
-#include <dlfcn.h>
-#include <errno.h>
 #include <pthread.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/socket.h>
-#include <sys/un.h>
-#include <unistd.h>
 
-#include "fmi2Functions.h"
+#include "fmi2_shared.h"
 
-#define PYTHON_ENV "BEARING_FMU_PYTHON" /* a Python executable (e.g. venv/bin/python) for a native host */
-#define PYTHON_HINT "python.txt"        /* resources/ file: the interpreter that built the FMU */
-#define GUID_FILE "guid.txt"            /* resources/ file: the GUID of the FMU's modelDescription.xml */
+/* Py_XSETREF is not part of the limited API */
+#define SET_REF(target, value)                                                                     \
+    do {                                                                                           \
+        PyObject *old__ = (PyObject *)(target);                                                    \
+        (target) = (value);                                                                        \
+        Py_XDECREF(old__);                                                                         \
+    } while (0)
 
 /* Python code the layer needs; compiled once into its own namespace. */
 static const char *HELPER_SOURCE =
@@ -127,10 +134,10 @@ typedef struct {
     References refs[N_KINDS];
 } Instance;
 
-static pthread_mutex_t own_lock = PTHREAD_MUTEX_INITIALIZER; /* only if the process lock cannot be made */
+static pthread_mutex_t helper_lock = PTHREAD_MUTEX_INITIALIZER; /* taken before the GIL: see ensure_helper */
 static PyObject *helper; /* namespace of HELPER_SOURCE; lives as long as the process */
 
-/* Names of the slave methods called every step and of its log queue, interned once (ensure_python):
+/* Names of the slave methods called every step and of its log queue, interned once (ensure_helper):
  * a call by an interned name skips building the name and parsing a format string per call. */
 static const char *KIND_METHODS[N_KINDS] = {"get_real",   "get_integer", "get_boolean", "get_string",
                                             "set_real",   "set_integer", "set_boolean", "set_string"};
@@ -138,27 +145,11 @@ static PyObject *kind_names[N_KINDS], *name_do_step, *name_log_queue, *name_begi
 
 /* -- logging -------------------------------------------------------------------------------- */
 
-/* The FMI logger takes a printf format: pass the text with every '%' doubled so that a host that
- * formats prints it unchanged and a message can never be read as a conversion. */
+/* Pass a message to the host's logger (warnings and errors always; debug messages only if asked for). */
 static void emit(const Instance *c, fmi2Status status, const char *category, const char *text)
 {
-    if (c->logger == NULL || (status == fmi2OK && !c->logging_on))
-        return; /* warnings and errors always reach the host; debug messages only if asked for */
-    size_t n = strlen(text), extra = 0;
-    for (size_t i = 0; i < n; i++)
-        extra += text[i] == '%';
-    char *format = malloc(n + extra + 1);
-    if (format == NULL)
-        return;
-    char *out = format;
-    for (size_t i = 0; i < n; i++) {
-        *out++ = text[i];
-        if (text[i] == '%')
-            *out++ = '%';
-    }
-    *out = '\0';
-    c->logger(c->env, c->name, status, category, format);
-    free(format);
+    if (status != fmi2OK || c->logging_on)
+        log_text(c->logger, c->env, c->name, status, category, text);
 }
 
 static void emitf(const Instance *c, fmi2Status status, const char *fmt, ...)
@@ -177,7 +168,7 @@ static void flush_log(const Instance *c)
     if (c->slave == NULL)
         return;
     PyObject *queue = PyObject_GetAttr(c->slave, name_log_queue);
-    if (queue == NULL || !PyList_Check(queue) || PyList_GET_SIZE(queue) == 0) {
+    if (queue == NULL || !PyList_Check(queue) || PyList_Size(queue) == 0) {
         Py_XDECREF(queue);
         PyErr_Clear();
         return;
@@ -191,8 +182,8 @@ static void flush_log(const Instance *c)
         PyObject *msg_text = msg ? PyObject_Str(msg) : NULL;
         PyObject *category_text = category && category != Py_None ? PyObject_Str(category) : NULL;
         long level = status ? PyLong_AsLong(status) : fmi2Error;
-        const char *text = msg_text ? PyUnicode_AsUTF8(msg_text) : NULL;
-        const char *cat = category_text ? PyUnicode_AsUTF8(category_text) : NULL;
+        const char *text = msg_text ? PyUnicode_AsUTF8AndSize(msg_text, NULL) : NULL;
+        const char *cat = category_text ? PyUnicode_AsUTF8AndSize(category_text, NULL) : NULL;
         PyErr_Clear();
         emit(c, level >= fmi2OK && level <= fmi2Pending ? (fmi2Status)level : fmi2Error, cat ? cat : "logAll",
              text ? text : "(unprintable log message)");
@@ -216,7 +207,7 @@ static void log_exception(const Instance *c, const char *what)
     PyObject *text = NULL;
     if (helper != NULL && kind != NULL)
         text = PyObject_CallMethod(helper, "describe", "(OOO)", kind, value ? value : Py_None, tb ? tb : Py_None);
-    const char *utf8 = text ? PyUnicode_AsUTF8(text) : NULL;
+    const char *utf8 = text ? PyUnicode_AsUTF8AndSize(text, NULL) : NULL;
     PyErr_Clear();
     const char *detail = utf8 ? utf8 : "unknown Python error";
     /* sized to the traceback: emitf's fixed buffer would cut a long one before its end */
@@ -257,128 +248,33 @@ static fmi2Status settle(Instance *c, const char *what, PyObject *result, fmi2St
 
 /* -- interpreter ---------------------------------------------------------------------------- */
 
-/* Read the first line of resources/<name> into buf; 0 if absent. */
-static int read_hint(const char *resources, const char *name, char *buf, size_t size)
+/* Make sure this copy of the layer has its helper. The interpreter runs already: the host's, or the one
+ * the FMU's entry library started (fmi2_loader.c); it is never finalised (docs/fmu_runtime.md). The
+ * helper is made once per copy of the layer; helper_lock is taken before the GIL (never the other way
+ * round), so two host threads instantiating at once make it once. */
+static int ensure_helper(char *error, size_t size)
 {
-    char path[4096];
-    snprintf(path, sizeof path, "%s/%s", resources, name);
-    FILE *fh = fopen(path, "r");
-    if (fh == NULL)
+    if (!Py_IsInitialized()) {
+        snprintf(error, size, "no Python interpreter runs in this process (the FMU's entry library starts one)");
         return 0;
-    int ok = fgets(buf, (int)size, fh) != NULL;
-    fclose(fh);
-    buf[strcspn(buf, "\r\n")] = '\0';
-    return ok && buf[0] != '\0';
-}
-
-/* The process-wide lock of the interpreter's start. Each FMU brings its own copy of this library, with
- * its own statics: a mutex of the library would let two copies start Python at once from two host
- * threads (which crashes it), and before Python runs there is no shared Python object to lock. The lock
- * is the name of an abstract Unix socket that carries the process id: binding a name is atomic and
- * exclusive, so the copy that binds it holds the lock; Linux drops the name when the socket is closed
- * or the process ends, so a crash leaves nothing behind (a named semaphore would stay in /dev/shm, held,
- * for a later process of the same id), and other processes never wait for it. Returns the socket to
- * close to release the lock, or -1 if no socket can be made (then the copy's own mutex is taken). */
-static int process_lock(void)
-{
-    int fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    if (fd < 0)
-        return -1;
-    struct sockaddr_un address = {.sun_family = AF_UNIX}; /* sun_path[0] = '\0': the abstract namespace */
-    int n = snprintf(address.sun_path + 1, sizeof address.sun_path - 1, "bearing_fmu_runtime.%ld", (long)getpid());
-    socklen_t length = (socklen_t)(offsetof(struct sockaddr_un, sun_path) + 1 + (size_t)n);
-    useconds_t wait = 100; /* us; the holder starts Python: tens to hundreds of milliseconds */
-    while (bind(fd, (struct sockaddr *)&address, length) != 0) {
-        if (errno != EADDRINUSE) {
-            int cause = errno;
-            close(fd);
-            errno = cause;
-            return -1;
-        }
-        usleep(wait);
-        wait = wait < 10000 ? 2 * wait : wait;
     }
-    return fd;
-}
-
-static void process_unlock(int fd)
-{
-    if (fd >= 0)
-        close(fd);
-    else
-        pthread_mutex_unlock(&own_lock);
-}
-
-/* Make sure an interpreter runs: the host's (Python hosts) or one started here (native hosts).
- * Never finalised (docs/fmu_runtime.md): numba's compiled code and LLVM's static objects are torn
- * down by the C runtime at exit, and a Py_Finalize after that calls into freed LLVM state.
- * `warning` gets a message for the host's logger if the process-wide lock could not be made. */
-static int ensure_python(const char *resources, char *error, size_t size, char *warning, size_t wsize)
-{
     int ok = 1;
-    int lock = process_lock();
-    if (lock < 0) {
-        snprintf(warning, wsize, "no process-wide lock (socket: %s): two FMUs started at once from two threads "
-                 "may fail", strerror(errno));
-        pthread_mutex_lock(&own_lock);
-    }
-    /* A host's interpreter takes precedence over the linked libpython (its symbols come first in
-     * the global scope): it must be the version the layer was compiled for. */
-    char version[16];
-    snprintf(version, sizeof version, "%d.%d.", PY_MAJOR_VERSION, PY_MINOR_VERSION);
-    if (strncmp(Py_GetVersion(), version, strlen(version)) != 0) {
-        snprintf(error, size, "the host runs Python %.*s; this FMU's binary is built for Python %s%d",
-                 (int)strcspn(Py_GetVersion(), " "), Py_GetVersion(), version, PY_MICRO_VERSION);
-        ok = 0;
-    } else if (!Py_IsInitialized()) {
-        /* libpython came in with this library, local to it: make its symbols global so that
-         * extension modules (numpy, numba) resolve against it, and keep it loaded for good. */
-        Dl_info info;
-        if (dladdr((void *)&Py_IsInitialized, &info) && info.dli_fname != NULL)
-            dlopen(info.dli_fname, RTLD_NOW | RTLD_GLOBAL | RTLD_NOLOAD | RTLD_NODELETE);
-        char python[4096] = "";
-        const char *env = getenv(PYTHON_ENV);
-        if (env != NULL && env[0] != '\0')
-            snprintf(python, sizeof python, "%s", env);
-        else
-            read_hint(resources, PYTHON_HINT, python, sizeof python);
-        PyConfig config;
-        PyConfig_InitPythonConfig(&config);
-        config.install_signal_handlers = 0; /* SIGINT and friends stay the host's */
-        config.parse_argv = 0;
-        PyStatus status = python[0] ? PyConfig_SetBytesString(&config, &config.program_name, python)
-                                    : PyStatus_Ok();
-        if (!PyStatus_Exception(status))
-            status = Py_InitializeFromConfig(&config);
-        PyConfig_Clear(&config);
-        if (PyStatus_Exception(status)) {
-            snprintf(error, size, "cannot start Python (%s = %s): %s", PYTHON_ENV, python[0] ? python : "unset",
-                     status.err_msg ? status.err_msg : "unknown error");
-            ok = 0;
-        } else {
-            PyEval_SaveThread(); /* release the GIL: every call below takes it with PyGILState_Ensure */
-        }
-    }
-    if (ok && helper == NULL) {
-        /* keep this library (and so `helper`) loaded when a host unloads it after fmi2FreeInstance
-         * (fmpy does): a reload would compile the helper again and lose the previous one */
-        Dl_info self;
-        if (dladdr((void *)&fmi2Instantiate, &self) && self.dli_fname != NULL)
-            dlopen(self.dli_fname, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+    pthread_mutex_lock(&helper_lock);
+    if (helper == NULL) {
         PyGILState_STATE gil = PyGILState_Ensure();
         PyObject *globals = PyDict_New();
-        PyDict_SetItemString(globals, "__builtins__", PyEval_GetBuiltins());
-        PyObject *done = PyRun_String(HELPER_SOURCE, Py_file_input, globals, globals);
+        PyObject *code = Py_CompileString(HELPER_SOURCE, "<bearing_fmu_runtime>", Py_file_input);
+        PyObject *done = NULL;
+        if (globals != NULL && code != NULL && PyDict_SetItemString(globals, "__builtins__", PyEval_GetBuiltins()) == 0)
+            done = PyEval_EvalCode(code, globals, globals);
         if (done == NULL) {
             PyErr_Print();
             snprintf(error, size, "the runtime's helper code failed to compile");
-            Py_DECREF(globals);
             ok = 0;
         } else {
             Py_DECREF(done);
             helper = PyModule_New("bearing_fmu_runtime");
             PyDict_Update(PyModule_GetDict(helper), globals);
-            Py_DECREF(globals);
             for (int k = 0; k < N_KINDS; k++)
                 kind_names[k] = PyUnicode_InternFromString(KIND_METHODS[k]);
             name_do_step = PyUnicode_InternFromString("do_step");
@@ -386,42 +282,12 @@ static int ensure_python(const char *resources, char *error, size_t size, char *
             name_begin_setup = PyUnicode_InternFromString("begin_setup");
             name_end_setup = PyUnicode_InternFromString("end_setup");
         }
+        Py_XDECREF(code);
+        Py_XDECREF(globals);
         PyGILState_Release(gil);
     }
-    process_unlock(lock);
+    pthread_mutex_unlock(&helper_lock);
     return ok;
-}
-
-/* fmuResourceLocation is a file URI (file:///path or file:/path, percent-encoded). */
-static char *uri_to_path(const char *uri)
-{
-    if (uri == NULL)
-        return NULL;
-    const char *p = uri;
-    if (strncmp(p, "file://", 7) == 0) {
-        p += 7;
-        if (strncmp(p, "localhost", 9) == 0)
-            p += 9;
-    } else if (strncmp(p, "file:", 5) == 0) {
-        p += 5;
-    }
-    char *path = malloc(strlen(p) + 1), *out = path;
-    if (path == NULL)
-        return NULL;
-    for (; *p; p++) {
-        unsigned int byte;
-        if (p[0] == '%' && p[1] && p[2] && sscanf(p + 1, "%2x", &byte) == 1) {
-            *out++ = (char)byte;
-            p += 2;
-        } else {
-            *out++ = *p;
-        }
-    }
-    *out = '\0';
-    size_t n = strlen(path);
-    while (n > 1 && path[n - 1] == '/')
-        path[--n] = '\0';
-    return path;
 }
 
 /* -- instance ------------------------------------------------------------------------------- */
@@ -511,7 +377,7 @@ static void setup_lock(PyObject *name)
 {
     PyObject *kind, *value, *tb;
     PyErr_Fetch(&kind, &value, &tb);
-    PyObject *done = PyObject_CallMethodNoArgs(helper, name);
+    PyObject *done = PyObject_CallMethodObjArgs(helper, name, NULL);
     if (done == NULL)
         PyErr_Print(); /* cannot happen short of memory exhaustion: say so rather than hide it */
     Py_XDECREF(done);
@@ -589,7 +455,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     c->logger = functions ? functions->logger : NULL;
     c->env = functions ? functions->componentEnvironment : NULL;
     c->logging_on = loggingOn;
-    char error[1024], warning[256] = "";
+    char error[1024];
     char *resources = uri_to_path(fmuResourceLocation);
     if (fmuType != fmi2CoSimulation || resources == NULL) {
         emitf(c, fmi2Error, "%s: only co-simulation with a resource location is supported", c->name);
@@ -597,10 +463,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     }
     if (!guid_matches(c, resources, fmuGUID))
         return refuse(c, resources);
-    int started = ensure_python(resources, error, sizeof error, warning, sizeof warning);
-    if (warning[0])
-        emitf(c, fmi2Warning, "%s: %s", c->name, warning);
-    if (!started) {
+    if (!ensure_helper(error, sizeof error)) {
         emitf(c, fmi2Error, "%s: %s", c->name, error);
         return refuse(c, resources);
     }
@@ -638,7 +501,7 @@ void fmi2FreeInstance(fmi2Component component)
     flush_log(c);
     release(c);
     PyGILState_Release(gil);
-    /* the last instance leaves the interpreter running: see ensure_python */
+    /* the last instance leaves the interpreter running: docs/fmu_runtime.md */
 }
 
 fmi2Status fmi2SetDebugLogging(fmi2Component component, fmi2Boolean loggingOn, size_t nCategories,
@@ -727,14 +590,14 @@ static PyObject *references(Instance *c, int kind, const fmi2ValueReference vr[]
             Py_CLEAR(refs);
             break;
         }
-        PyTuple_SET_ITEM(refs, (Py_ssize_t)i, ref);
+        PyTuple_SetItem(refs, (Py_ssize_t)i, ref);
     }
     fmi2ValueReference *copy = refs != NULL && nvr > 0 ? malloc(nvr * sizeof *vr) : NULL;
     if (refs != NULL && (nvr == 0 || copy != NULL)) { /* remembered only if the copy could be made */
         if (nvr > 0)
             memcpy(copy, vr, nvr * sizeof *vr);
         free(last->vr);
-        Py_XSETREF(last->refs, Py_NewRef(refs));
+        SET_REF(last->refs, Py_NewRef(refs));
         last->vr = copy;
         last->n = nvr;
     }
@@ -753,7 +616,7 @@ static PyObject *get_values(Instance *c, int kind, const fmi2ValueReference vr[]
 {
     const char *method = KIND_METHODS[kind];
     PyObject *vrs = references(c, kind, vr, nvr);
-    PyObject *values = vrs ? PyObject_CallMethodOneArg(c->slave, kind_names[kind], vrs) : NULL;
+    PyObject *values = vrs ? PyObject_CallMethodObjArgs(c->slave, kind_names[kind], vrs, NULL) : NULL;
     Py_XDECREF(vrs);
     if (values != NULL && (!PyList_Check(values) || (size_t)PyList_Size(values) != nvr)) {
         Py_DECREF(values);
@@ -772,7 +635,7 @@ static PyObject *get_values(Instance *c, int kind, const fmi2ValueReference vr[]
         RETURN(fmi2Error);                                                                         \
     PyObject *vrs = references(c, kind, vr, nvr), *values = PyList_New((Py_ssize_t)nvr);           \
     for (size_t i = 0; values != NULL && i < nvr; i++)                                             \
-        PyList_SET_ITEM(values, (Py_ssize_t)i, make);                                              \
+        PyList_SetItem(values, (Py_ssize_t)i, make);                                              \
     PyObject *r = vrs && values ? PyObject_CallMethodObjArgs(c->slave, kind_names[kind], vrs, values, NULL) : NULL; \
     Py_XDECREF(vrs);                                                                               \
     Py_XDECREF(values);                                                                            \
@@ -811,7 +674,7 @@ fmi2Status fmi2GetReal(fmi2Component component, const fmi2ValueReference vr[], s
     if (values == NULL)
         RETURN(fmi2Error);
     for (size_t i = 0; i < nvr; i++)
-        value[i] = PyFloat_AsDouble(PyList_GET_ITEM(values, (Py_ssize_t)i));
+        value[i] = PyFloat_AsDouble(PyList_GetItem(values, (Py_ssize_t)i));
     Py_DECREF(values);
     if (PyErr_Occurred()) {
         log_exception(c, "get_real");
@@ -830,7 +693,7 @@ fmi2Status fmi2GetInteger(fmi2Component component, const fmi2ValueReference vr[]
     if (values == NULL)
         RETURN(fmi2Error);
     for (size_t i = 0; i < nvr; i++)
-        value[i] = (fmi2Integer)PyLong_AsLong(PyList_GET_ITEM(values, (Py_ssize_t)i));
+        value[i] = (fmi2Integer)PyLong_AsLong(PyList_GetItem(values, (Py_ssize_t)i));
     Py_DECREF(values);
     if (PyErr_Occurred()) {
         log_exception(c, "get_integer");
@@ -850,7 +713,7 @@ fmi2Status fmi2GetBoolean(fmi2Component component, const fmi2ValueReference vr[]
         RETURN(fmi2Error);
     int failed = 0;
     for (size_t i = 0; i < nvr; i++) {
-        int truth = PyObject_IsTrue(PyList_GET_ITEM(values, (Py_ssize_t)i));
+        int truth = PyObject_IsTrue(PyList_GetItem(values, (Py_ssize_t)i));
         failed |= truth < 0;
         value[i] = truth > 0 ? fmi2True : fmi2False;
     }
@@ -873,20 +736,20 @@ fmi2Status fmi2GetString(fmi2Component component, const fmi2ValueReference vr[],
         RETURN(fmi2Error);
     PyObject *strings = PyList_New((Py_ssize_t)nvr); /* the pointers stay valid until the next call */
     for (size_t i = 0; strings != NULL && i < nvr; i++) {
-        PyObject *bytes = PyUnicode_AsUTF8String(PyList_GET_ITEM(values, (Py_ssize_t)i));
+        PyObject *bytes = PyUnicode_AsUTF8String(PyList_GetItem(values, (Py_ssize_t)i));
         if (bytes == NULL) {
             Py_CLEAR(strings);
             break;
         }
-        PyList_SET_ITEM(strings, (Py_ssize_t)i, bytes);
-        value[i] = PyBytes_AS_STRING(bytes);
+        PyList_SetItem(strings, (Py_ssize_t)i, bytes);
+        value[i] = PyBytes_AsString(bytes);
     }
     Py_DECREF(values);
     if (strings == NULL) {
         log_exception(c, "get_string");
         RETURN(fmi2Error);
     }
-    Py_XSETREF(c->strings, strings);
+    SET_REF(c->strings, strings);
     flush_log(c);
     RETURN(fmi2OK);
 }
@@ -898,13 +761,13 @@ fmi2Status fmi2GetString(fmi2Component component, const fmi2ValueReference vr[],
  * pickle. NULL with the problem logged if `state` is not such a tuple. */
 static PyObject *slave_part(Instance *c, PyObject *state, const char *call, State *where, fmi2Real *time)
 {
-    if (PyTuple_Check(state) && PyTuple_GET_SIZE(state) == 3 && PyLong_Check(PyTuple_GET_ITEM(state, 0)) &&
-        PyFloat_Check(PyTuple_GET_ITEM(state, 1))) {
-        long saved = PyLong_AsLong(PyTuple_GET_ITEM(state, 0));
+    if (PyTuple_Check(state) && PyTuple_Size(state) == 3 && PyLong_Check(PyTuple_GetItem(state, 0)) &&
+        PyFloat_Check(PyTuple_GetItem(state, 1))) {
+        long saved = PyLong_AsLong(PyTuple_GetItem(state, 0));
         if ((saved & MASK_GetFMUstate) != 0 && (saved & (saved - 1)) == 0) { /* one allowed state */
             *where = (State)saved;
-            *time = PyFloat_AS_DOUBLE(PyTuple_GET_ITEM(state, 1));
-            return PyTuple_GET_ITEM(state, 2);
+            *time = PyFloat_AsDouble(PyTuple_GetItem(state, 1));
+            return PyTuple_GetItem(state, 2);
         }
     }
     PyErr_Clear();
@@ -979,7 +842,7 @@ fmi2Status fmi2SerializedFMUstateSize(fmi2Component component, fmi2FMUstate stat
     PyObject *bytes = pickled(c, state);
     if (bytes == NULL)
         RETURN(fmi2Error);
-    *size = (size_t)PyBytes_GET_SIZE(bytes);
+    *size = (size_t)PyBytes_Size(bytes);
     Py_DECREF(bytes);
     RETURN(fmi2OK);
 }
@@ -993,14 +856,14 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component component, fmi2FMUstate state, fm
     PyObject *bytes = pickled(c, state);
     if (bytes == NULL)
         RETURN(fmi2Error);
-    size_t n = (size_t)PyBytes_GET_SIZE(bytes);
+    size_t n = (size_t)PyBytes_Size(bytes);
     if (n != size) {
         emitf(c, fmi2Error, "%s: the state needs %zu bytes, the host gave %zu (fmi2SerializedFMUstateSize)", c->name,
               n, size);
         Py_DECREF(bytes);
         RETURN(fmi2Error);
     }
-    memcpy(serializedState, PyBytes_AS_STRING(bytes), n);
+    memcpy(serializedState, PyBytes_AsString(bytes), n);
     Py_DECREF(bytes);
     RETURN(fmi2OK);
 }
@@ -1041,10 +904,10 @@ fmi2Status fmi2DoStep(fmi2Component component, fmi2Real currentCommunicationPoin
         RETURN(fmi2Error);
     fmi2Real t = currentCommunicationPoint, h = communicationStepSize;
     c->state = STEP_IN_PROGRESS; /* another thread's call on this instance meanwhile is refused */
-    PyObject *args[3] = {c->slave, PyFloat_FromDouble(t), PyFloat_FromDouble(h)};
-    PyObject *r = args[1] && args[2] ? PyObject_VectorcallMethod(name_do_step, args, 3, NULL) : NULL;
-    Py_XDECREF(args[1]);
-    Py_XDECREF(args[2]);
+    PyObject *t_obj = PyFloat_FromDouble(t), *h_obj = PyFloat_FromDouble(h);
+    PyObject *r = t_obj && h_obj ? PyObject_CallMethodObjArgs(c->slave, name_do_step, t_obj, h_obj, NULL) : NULL;
+    Py_XDECREF(t_obj);
+    Py_XDECREF(h_obj);
     fmi2Status status = settle(c, "do_step", r, fmi2Discard);
     c->state = STEP_COMPLETE; /* also after fmi2Discard: the host may change an input or restore a state */
     if (status == fmi2Discard && c->discarded && c->discard_t == t && c->discard_h == h) {

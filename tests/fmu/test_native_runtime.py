@@ -4,6 +4,9 @@
   binary with nothing preloaded and a bare environment, steps, round-trips a serialised state and
   reads the same outputs as fmpy, bit for bit (same interpreter, same kernels), in fresh processes
   that all exit 0 (no teardown abort);
+- a native host's interpreter search: a BEARING_FMU_PYTHON that does not exist is refused with its name
+  and nothing else is tried; without it, every candidate tried (python3/python on PATH, the build's
+  interpreter) is listed with what it lacks; a python on PATH with numpy and numba is found and runs;
 - a refused parameter fails fmi2ExitInitializationMode with fmi2Error, so fmpy.simulate_fmu raises
   and prints the FMU's own message (with '%' shown as written);
 - a bad input gives fmi2Discard without the terminate flag and a corrected input continues; the
@@ -72,24 +75,26 @@ class Unpacked:
         self.vr = {v.name: v.valueReference for v in md.modelVariables}
         self.types = {v.name: v.type for v in md.modelVariables}
 
-    def run(self, importer, inputs, outputs, runs=1):
-        """Run the importer in a fresh process with a bare environment; (returncode, outputs, stderr)."""
+    def run(self, importer, inputs, outputs, runs=1, extra=None):
+        """Run the importer in a fresh process with a bare environment (and the variables of `extra`);
+        (returncode, outputs, stderr)."""
         args = [str(importer), str(self.library), self.resources, self.guid, str(runs), str(N_STEPS), repr(STEP)]
         for name, value in inputs.items():
             kind = "s" if isinstance(value, str) else "r"
             args.append(f"{kind}:{self.vr[name]}={value}")
         args += [f"o:{self.vr[name]}" for name in outputs]
-        env = {k: os.environ[k] for k in KEPT if k in os.environ}
+        env = {k: os.environ[k] for k in KEPT if k in os.environ} | (extra or {})
         proc = subprocess.run(args, capture_output=True, text=True, env=env, timeout=600)
         by_vr = dict(line.split("=") for line in proc.stdout.split())
         values = {name: float(by_vr[str(self.vr[name])]) for name in outputs if str(self.vr[name]) in by_vr}
         return proc.returncode, values, proc.stderr
 
-    def calls(self, importer, calls):
-        """The importer's --calls mode in a fresh process with a bare environment: (returncode, [(call,
-        status)], stderr); status is the fmi2Status number, or "ok"/"null" for instantiate."""
+    def calls(self, importer, calls, extra=None):
+        """The importer's --calls mode in a fresh process with a bare environment (and the variables of
+        `extra`): (returncode, [(call, status)], stderr); status is the fmi2Status number, or "ok"/"null"
+        for instantiate."""
         args = [str(importer), "--calls", str(self.library), self.resources, self.guid, *calls]
-        env = {k: os.environ[k] for k in KEPT if k in os.environ}
+        env = {k: os.environ[k] for k in KEPT if k in os.environ} | (extra or {})
         proc = subprocess.run(args, capture_output=True, text=True, env=env, timeout=600)
         lines = [line.split(" ", 1) for line in proc.stdout.splitlines()]
         return proc.returncode, [(call, int(s) if s.isdigit() else s) for call, s in lines], proc.stderr
@@ -412,3 +417,56 @@ def test_a_hundred_native_hosts_set_up_two_fmus_from_two_threads(analytic_fmu, s
     SpindleThermal.fmu from two threads at once, initialising, stepping and freeing: all exit 0."""
     codes, errors = two_thread_runs(importer, analytic_fmu, spindle_thermal_fmu, 100)
     assert codes == [0] * 100, (sum(c != 0 for c in codes), errors[:3])
+
+
+def test_a_native_host_is_told_that_BEARING_FMU_PYTHON_does_not_exist(analytic_fmu, importer):
+    fmu = Unpacked(analytic_fmu)
+    try:
+        rc, got, stderr = fmu.calls(importer, ["instantiate"], {"BEARING_FMU_PYTHON": "/nonexistent/bin/python"})
+    finally:
+        fmu.remove()
+    assert rc == 0 and got == [("instantiate", "null")], stderr
+    assert "BEARING_FMU_PYTHON=/nonexistent/bin/python: no such file" in stderr
+    assert "nothing else was tried: BEARING_FMU_PYTHON names the interpreter to use" in stderr
+
+
+@pytest.fixture(scope="module")
+def python_without_numba(tmp_path_factory):
+    """bin/ of a virtual environment of this Python without numpy and numba (no pip: a second or two)."""
+    home = tmp_path_factory.mktemp("no_numba") / "env"
+    base = getattr(sys, "_base_executable", sys.executable)
+    subprocess.run([base, "-m", "venv", "--without-pip", str(home)], check=True, capture_output=True)
+    return home / "bin"
+
+
+def test_a_native_host_is_told_every_interpreter_tried_and_what_it_lacks(analytic_fmu, importer, python_without_numba):
+    """PATH has only a Python without numpy and numba, and the build's interpreter has gone: the message names
+    each candidate, its version and what it lacks."""
+    fmu = Unpacked(analytic_fmu)
+    try:
+        (fmu.dir / "resources" / "python.txt").write_text("/nonexistent/build/bin/python\n")
+        rc, got, stderr = fmu.calls(importer, ["instantiate"], {"PATH": str(python_without_numba)})
+    finally:
+        fmu.remove()
+    assert rc == 0 and got == [("instantiate", "null")], stderr
+    version = ".".join(map(str, sys.version_info[:3]))
+    assert "BEARING_FMU_PYTHON: not set" in stderr
+    for name in ("python3", "python"):
+        assert f"{name} on PATH ({python_without_numba / name}), Python {version}: no modules numpy, numba" in stderr
+    assert "the interpreter that built the FMU (/nonexistent/build/bin/python, resources/python.txt): no such file" in (
+        stderr
+    )
+    assert "Set BEARING_FMU_PYTHON to such a python executable" in stderr
+
+
+def test_a_native_host_finds_a_python_with_numpy_and_numba_on_PATH(analytic_fmu, importer, python_without_numba):
+    """The first candidate lacks numba, the second (this environment's python) has it: the FMU runs."""
+    fmu = Unpacked(analytic_fmu)
+    try:
+        (fmu.dir / "resources" / "python.txt").unlink()
+        path = f"{python_without_numba}:{Path(sys.executable).parent}"
+        rc, got, stderr = fmu.calls(importer, ["instantiate", "setup", "enter", "exit", "step", "free"], {"PATH": path})
+    finally:
+        fmu.remove()
+    assert rc == 0 and got[0] == ("instantiate", "ok"), stderr
+    assert [status for _, status in got[1:5]] == [0, 0, 0, 0], stderr

@@ -1,16 +1,16 @@
-"""The `slow` and `bare_host` lists of tests/_markers.py name tests that exist (a renamed test must not silently
-lose its marker)."""
+"""The `slow`, `bare_host` and `python_hosts` lists of tests/_markers.py name tests that exist (a renamed test
+must not silently lose its marker)."""
 
 import ast
 from pathlib import Path
 
-from tests._markers import BARE_HOST, SLOW
+from tests._markers import BARE_HOST, PYTHON_HOSTS, SLOW
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_every_slow_entry_names_an_existing_test_function():
-    for relative, names in [*SLOW.items(), *BARE_HOST.items()]:
+    for relative, names in [*SLOW.items(), *BARE_HOST.items(), *PYTHON_HOSTS.items()]:
         tree = ast.parse((ROOT / relative).read_text())
         defined = {node.name for node in ast.walk(tree) if isinstance(node, ast.FunctionDef)}
         assert names <= defined, (relative, sorted(names - defined))
