@@ -10,7 +10,6 @@ first can make its host abort at exit, spindle.cosim.master): the eigendecomposi
 """
 
 import math
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -139,10 +138,13 @@ def _bearing_entry(entry, index, node_index, where):
     b = load_ring_bearing(entry.get("bearing", ""))
     d_i = b.dm - b.D - 0.5 * b.Pd  # groove diameters with P_d = d_o - d_i - 2 D (Harris)
     d_o = b.dm + b.D + 0.5 * b.Pd
-    # the Bearing record does not carry the bore: read it from the bearing's own file
-    bore = _quantity(
-        tomllib.loads(Path(b.path).read_text()).get("geometry", {}), "bore", "m", f"{b.path} [geometry]", high=d_i
-    )
+    if b.bore is None:
+        raise ParameterError(f"{b.path} [geometry]: missing key 'bore' (m)")
+    if not b.bore <= d_i:
+        raise ParameterError(
+            f"{b.path} [geometry]: 'bore' = {b.bore} m must not exceed the inner groove diameter {d_i} m"
+        )
+    bore = b.bore
     return dict(name=b.name, d_i=d_i, d_o=d_o, D=b.D, a=0.5 * bore, E=b.ring.E, nu=b.ring.nu, rho=b.ring.rho, **nodes)
 
 
