@@ -25,6 +25,7 @@ from bearing_fmu_common.bearing_file import (  # noqa: F401  (re-exported: the b
     Bearing,
     Material,
     angle_for_clearance,
+    bearing_from_document,
     clearance_for_angle,
     clearance_limits,
     groove_clearance,
