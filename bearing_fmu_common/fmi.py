@@ -57,7 +57,7 @@ class UnitReal(Real):
         real.set("unit", self.unit)
         for key, value in (("nominal", self.nominal), ("min", self.minimum), ("max", self.maximum)):
             if value is not None:
-                real.set(key, f"{value:.16g}")  # as pythonfmu writes start: enough digits to read back exactly
+                real.set(key, repr(float(value)))  # the shortest text that reads back as the same number
         return node
 
 

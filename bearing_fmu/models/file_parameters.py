@@ -58,9 +58,16 @@ class Quantity:
     default: object = None  # the value when a file gives none and `absent` does not apply
 
 
+FILE_LIMITS = (
+    "the range of the {} file's value (docs/parameters.md), 0 included where 0 means not given or unused; "
+    "in use, the file's own checks apply (open bounds, d_m > D, the balls fit, clearance and angle agree)"
+)
+
+
 def _real(name, unit, key, description, low, high, **kwargs):
     """A Real quantity; its file unit is its unit ('-' for a dimensionless '1')."""
-    variable = Variable(name, unit, description, min=low, max=high, limits=kwargs.pop("limits", ""))
+    limits = kwargs.pop("limits", FILE_LIMITS.format(name.split("_data.")[0]))
+    variable = Variable(name, unit, description, min=low, max=high, limits=limits)
     return Quantity(variable, key, "-" if unit == "1" else unit, **kwargs)
 
 

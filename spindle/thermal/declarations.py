@@ -56,6 +56,12 @@ AXIAL = (
 )
 
 
+DIMENSION_LIMITS = (
+    "the range the network and bearing files accept; in use also 0 < D < d_m, 0 < bore <= d_m - D - Pd/2 and "
+    "spacing > 0 (spindle.thermal.model.with_dimensions)"
+)
+
+
 def dimension_rows(net):
     """(FMI name, unit, description, min, max, value in `net`) of each main dimension of a network."""
     rows = [
@@ -74,7 +80,7 @@ def dimension_declarations(net):
     return (
         NETWORK_FROM_FILE,
         *(
-            Variable(name, unit, text, start=value, min=low, max=high)
+            Variable(name, unit, text, start=value, min=low, max=high, limits=DIMENSION_LIMITS)
             for name, unit, text, low, high, value in dimension_rows(net)
         ),
     )
