@@ -229,33 +229,42 @@ def scene_files():
     return sorted(SCENES_DIR.glob("*.toml"))
 
 
-def build_fmu(scene_file, out_dir=DEFAULT_OUT):
-    """Build one FMU from a scene file; returns the FMU path."""
+def build_fmu(scene_file, out_dir=DEFAULT_OUT, configuration=None):
+    """Build one FMU from a scene file; returns the FMU path. configuration: None (the generic FMU) or a
+    configured FMU's (name suffix, choices, files): it is named <Name>_<suffix>, `choices` (bearing, lubricant,
+    race_control: catalogue names, as the FMU knows them) are its parameters' start values
+    (models.file_parameters.configured) and `files` ((source, path in the bundle) pairs) the files it carries
+    beside the catalogue (a configured bearing or lubricant given as a file)."""
     import tomllib
 
     with open(scene_file, "rb") as fh:
         doc = tomllib.load(fh)
-    fmu_name = doc["fmu"]["name"]
+    suffix, choices, files = configuration or ("", {}, ())
+    fmu_name = doc["fmu"]["name"] + (f"_{suffix}" if suffix else "")
     base_class = doc["fmu"]["slave"]
     scene_dict = doc["scene"]
     scene = Scene.from_dict(scene_dict)  # fail early, listing every problem
-    model = make_model(scene)
+    model = make_model(scene, {key: source for key, (_, source) in choices.items()})
     rows = reference_rows(scene, model)
     step = DEM_REFERENCE_STEP if scene.fidelity == "dem" else REFERENCE_STEP
     starts = {v.name: v.start_in(scene) for v in model.inputs}
     inputs, reference, stop = crosscheck_tables(rows, starts, step, starts)
+    names = {key: name for key, (name, _) in choices.items()}
     path = build_python_fmu(
         fmu_name,
         "bearing_fmu.fmu",
         base_class,
         out_dir,
-        body=f"scene = Scene.from_dict({scene_dict!r})",
-        imports="from bearing_fmu.scene import Scene  # noqa: E402\n",
+        bundle=BEARING_BUNDLE + tuple(files),
+        body=f"scene = Scene.from_dict({scene_dict!r})"
+        + (f"\n    parameters = configured(_Slave.parameters, {names!r})" if names else ""),
+        imports="from bearing_fmu.scene import Scene  # noqa: E402\n"
+        + ("from bearing_fmu.models.file_parameters import configured  # noqa: E402\n" if names else ""),
         runs=compile_runs(scene),
         experiment=(stop, step),
     )
     out_dir = Path(out_dir)
-    markdown = variables_markdown(*scene_variables(scene_file))
+    markdown = variables_markdown(*scene_variables(scene_file, fmu_name, names))
     write_if_changed(out_dir / f"{fmu_name}_scene.toml", Path(scene_file).read_text())
     write_if_changed(out_dir / f"{fmu_name}_ref.csv", csv_text(rows, reference_cell))
     write_if_changed(out_dir / f"{fmu_name}.md", markdown)
@@ -336,25 +345,30 @@ def variables_markdown(fmu_name, description, about, parameters, inputs, outputs
     return "\n".join(lines) + "\n"
 
 
-def scene_variables(scene_file):
-    """variables_markdown() arguments of the bearing FMU built from scene_file."""
+def scene_variables(scene_file, fmu_name=None, choices=None):
+    """variables_markdown() arguments of the bearing FMU built from scene_file (named fmu_name, configured with
+    `choices` (catalogue names): build_fmu)."""
     import tomllib
 
     from . import fmu as slaves
+    from .models.file_parameters import configured
 
     with open(scene_file, "rb") as fh:
         doc = tomllib.load(fh)
     scene = Scene.from_dict(doc["scene"])
     slave = getattr(slaves, doc["fmu"]["slave"])
     model = make_model(scene)
+    fmu_name = fmu_name or doc["fmu"]["name"]
     options = ", ".join(f"{k} = {_toml_value(v)}" for k, v in doc["scene"].items() if k != "name")
+    chosen = ", ".join(f"{k} = {_toml_value(v)}" for k, v in (choices or {}).items())
     about = [
-        f"Scene `{scene.name}` (`{doc['fmu']['name']}_scene.toml`): {options}. "
-        f"Reference result of the Python model: `{doc['fmu']['name']}_ref.csv`. Variables declared in "
+        f"Scene `{scene.name}` (`{fmu_name}_scene.toml`): {options}. "
+        + (f"Configured: {chosen} (the start values of these parameters and of the numeric ones). " if chosen else "")
+        + f"Reference result of the Python model: `{fmu_name}_ref.csv`. Variables declared in "
         f"`bearing_fmu/models/declarations.py`; SI units."
     ]
-    parameters = select(slave.parameters, scene)
-    return doc["fmu"]["name"], slave.description, about, parameters, model.inputs, model.outputs, scene
+    parameters = select(configured(slave.parameters, choices or {}), scene)
+    return fmu_name, slave.description, about, parameters, model.inputs, model.outputs, scene
 
 
 def reference_inputs(scene):
@@ -404,15 +418,19 @@ def dem_reference_inputs():
     return rows
 
 
-def make_model(scene):
-    """The Python model of a scene with its FMU's default parameters."""
+def make_model(scene, choices=None):
+    """The Python model of a scene with its FMU's default parameters, or those `choices` sets (bearing,
+    lubricant, race_control: catalogue names or files)."""
+    choices = dict(choices or {})
     if scene.fidelity == "analytic":
-        return AnalyticModel(scene=scene)
+        choices.pop("race_control", None)  # a quasi-static parameter: the other fidelities have none
+        return AnalyticModel(scene=scene, **choices)
     if scene.fidelity == "dem":
-        return DemModel(scene=scene)
+        choices.pop("race_control", None)
+        return DemModel(scene=scene, **choices)
     if scene.drive == "fixed_axial":
-        return QuasiStaticModel(scene=scene, F_preload=DEFAULT_FIXED_PRELOAD)
-    return QuasiStaticModel(scene=scene)
+        return QuasiStaticModel(scene=scene, F_preload=DEFAULT_FIXED_PRELOAD, **choices)
+    return QuasiStaticModel(scene=scene, **choices)
 
 
 def reference_rows(scene, model=None):

@@ -19,10 +19,11 @@ from .kernels.ball_dynamics.state import ST_CODE
 from .models.analytic import AnalyticModel
 from .models.declarations import ANALYTIC_PARAMETERS, DEM_PARAMETERS, QUASI_STATIC_PARAMETERS
 from .models.dem import DemModel, DemUnstableError
+from .models.file_parameters import BEARING_PREFIX, LUBRICANT_PREFIX, bearing_from_values, lubricant_from_values
 from .models.quasi_static import QuasiStaticModel
 from .models.variables import InputError
 from .params import ParameterError
-from .scene import Scene, SceneError
+from .scene import RACE_CONTROLS, Scene, SceneError
 
 # appended to an input refused at initialisation: the call succeeds (parameters are fine), the step would not
 INPUT_NOTE = " (refused at the first doStep unless the input is corrected)"
@@ -42,15 +43,32 @@ class _BearingSlave(DeclaredSlave):
         self._ready = False
         self._parameters = select(self.parameters, self.scene)
         for var in self._parameters:
-            setattr(self, var.name, var.start_in(self.scene))
-            self.register_variable(declared_parameter(var, self.scene))
+            self.register_variable(declared_parameter(var, self, self.scene))
         self._build_model()
         self.register_declared(self._model.inputs, self._model.outputs)
         self._update()  # start values of the outputs = the model at the start inputs
 
     # -- model ---------------------------------------------------------------------------------
     def _model_key(self):
-        raise NotImplementedError
+        """The parameters' values: the model is rebuilt when one of them changed."""
+        return tuple(getattr(self, var.name) for var in self._parameters)
+
+    def _values(self, prefix):
+        return {var.name: getattr(self, var.name) for var in self._parameters if var.name.startswith(prefix)}
+
+    def _bearing(self):
+        """The bearing in effect (bearing_from_file): the name or file of `bearing`, or the numeric one."""
+        return self.bearing if self.bearing_from_file else bearing_from_values(self._values(BEARING_PREFIX))
+
+    def _lubricant(self):
+        """The lubricant in effect (lubricant_from_file): the name or file of `lubricant`, or the numeric one."""
+        if self.lubricant_from_file:
+            return self.lubricant
+        return lubricant_from_values(self._values(LUBRICANT_PREFIX))
+
+    def _clearance(self):
+        """The clearance that replaces the bearing's (m), None: the bearing's own (Pd_from_file)."""
+        return None if self.Pd_from_file else self.Pd
 
     def _make_model(self):
         raise NotImplementedError
@@ -88,6 +106,10 @@ class _BearingSlave(DeclaredSlave):
         # a refused parameter fails initialisation (fmi2Error: parameters are fixed from here on); a
         # bad input is logged and refused again by the first doStep (fmi2Discard): the host may still
         # correct an input (and libcosim 0.11 aborts the process on fmi2Error here, docs/fmu_runtime.md)
+        # a fresh model, also when no parameter changed: the first outputs then do not depend on which start
+        # values the master wrote (one that writes every start value, one that writes none and one that sets
+        # a parameter to its start value all start a solver from the same state)
+        self._built_for = None
         self._ready = self._guarded(self._build_model)
         if not self._ready:
             return False  # fmi2Error, logged as such
@@ -130,11 +152,8 @@ class BearingAnalytic(_BearingSlave):
 
     parameters = ANALYTIC_PARAMETERS
 
-    def _model_key(self):
-        return self.bearing, self.lubricant, bool(self.Pd_from_file), float(self.Pd)
-
     def _make_model(self):
-        return AnalyticModel(self.bearing, self.lubricant, self.scene, Pd=None if self.Pd_from_file else self.Pd)
+        return AnalyticModel(self._bearing(), self._lubricant(), self.scene, Pd=self._clearance())
 
 
 class BearingQuasiStatic(_BearingSlave):
@@ -150,20 +169,18 @@ class BearingQuasiStatic(_BearingSlave):
     parameters = QUASI_STATIC_PARAMETERS
     F_preload = 0.0  # N: no assembly offset unless the scene's drive is fixed_axial (then a parameter)
 
-    def _model_key(self):
-        return (
-            self.bearing,
-            self.lubricant,
-            bool(self.Pd_from_file),
-            float(self.Pd),
-            self.race_control,
-            float(self.F_preload),
-        )
+    def _race_control(self):
+        """The race control in effect: race_control_mode's unless it is -1, then the String race_control's."""
+        return self.race_control if self.race_control_mode < 0 else RACE_CONTROLS[self.race_control_mode]
 
     def _make_model(self):
-        Pd = None if self.Pd_from_file else self.Pd
         return QuasiStaticModel(
-            self.bearing, self.lubricant, self.scene, Pd=Pd, race_control=self.race_control, F_preload=self.F_preload
+            self._bearing(),
+            self._lubricant(),
+            self.scene,
+            Pd=self._clearance(),
+            race_control=self._race_control(),
+            F_preload=self.F_preload,
         )
 
 
@@ -188,28 +205,13 @@ class BearingDEM(_BearingSlave):
         super().__init__(**kwargs)
         self._monitor_slot = self._model.output_names.index("monitor_status")
 
-    def _model_key(self):
-        return (
-            self.bearing,
-            self.lubricant,
-            bool(self.Pd_from_file),
-            float(self.Pd),
-            float(self.dt),
-            float(self.refresh_interval),
-            float(self.traction_limit),
-            bool(self.average_outputs),
-            bool(self.average_state_outputs),
-            float(self.support_stiffness),
-            float(self.support_damping),
-        )
-
     def _make_model(self):
         return DemModel(
-            self.bearing,
-            self.lubricant,
+            self._bearing(),
+            self._lubricant(),
             self.scene,
             dt=None if self.dt == 0.0 else self.dt,  # 0 = automatic
-            Pd=None if self.Pd_from_file else self.Pd,
+            Pd=self._clearance(),
             refresh_interval=self.refresh_interval,
             averaged=bool(self.average_outputs),
             averaged_state=bool(self.average_state_outputs),

@@ -57,6 +57,11 @@ class Bearing:
     shoulder_inner_back: float = 0.0
     shoulder_outer_back: float = 0.0
     shoulders_estimated: tuple = ()  # keys of SHOULDER_KEYS the file did not give (estimated by shoulder_estimate)
+    # boundary dimensions (m), None where the file gives none (the DEM then estimates the inner ring's mass)
+    bore: float = None
+    outer_diameter: float = None
+    width: float = None
+    cage_material: dict = field(default_factory=dict)  # the file's [material.cage] values given: E (Pa), nu, rho
 
 
 def _material(doc, section, path):
@@ -175,10 +180,19 @@ def _clearance_and_angle(doc, D, f_i, f_o, kind, path):
     return Pd, free if alpha is None else alpha
 
 
+CAGE_MATERIAL = {"E": MODULUS, "nu": POISSON, "rho": DENSITY}
+
+
 def read_bearing(path):
     """Bearing set from the bearing file at path (a lubricant or spindle file is refused as such); validated."""
     path = Path(path)
-    doc = read_toml(path, "bearing")
+    return bearing_from_document(read_toml(path, "bearing"), path)
+
+
+def bearing_from_document(doc, path):
+    """Bearing set from a parsed bearing file `doc` (nested dicts as tomllib gives them), validated; `path`
+    names the file in messages and is the record's path (a Path or the text naming where the values came
+    from)."""
     meta = doc.get("meta", {})
     kind = meta.get("kind", "deep_groove")
     if kind not in ("deep_groove", "angular_contact"):
@@ -196,7 +210,7 @@ def read_bearing(path):
     Pd, alpha0 = _clearance_and_angle(doc, D, f_i, f_o, kind, path)
     shoulders, shoulders_estimated = _shoulders(doc, kind, D, dm, f_i, f_o, path)
     bearing = Bearing(
-        name=str(meta.get("name", path.stem)),
+        name=str(meta.get("name", Path(path).stem)),
         kind=kind,
         path=str(path),
         D=D,
@@ -218,6 +232,14 @@ def read_bearing(path):
         shoulder_inner_back=shoulders["inner_back_shoulder_diameter"],
         shoulder_outer_back=shoulders["outer_back_shoulder_diameter"],
         shoulders_estimated=shoulders_estimated,
+        bore=_value(doc, "geometry.bore", LENGTH, path, required=False),
+        outer_diameter=_value(doc, "geometry.outer_diameter", LENGTH, path, required=False),
+        width=_value(doc, "geometry.width", LENGTH, path, required=False),
+        cage_material={
+            key: _value(doc, f"material.cage.{key}", spec, path)
+            for key, spec in CAGE_MATERIAL.items()
+            if key in doc.get("material", {}).get("cage", {})
+        },
     )
     if math.pi * dm < bearing.Z * D:
         raise ParameterError(

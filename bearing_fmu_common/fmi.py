@@ -34,6 +34,12 @@ BASE_UNITS = {
     "N/m": {"kg": 1, "s": -2},
     "N.s/m": {"kg": 1, "s": -1},
     "h": {"s": 1, "factor": 3600},  # hour: rating lives in hours, as catalogues give them
+    "kg": {"kg": 1},
+    "kg/m^3": {"kg": 1, "m": -3},
+    "Pa.s": {"kg": 1, "m": -1, "s": -1},
+    "m^2/s": {"m": 2, "s": -1},
+    "1/Pa": {"kg": -1, "m": 1, "s": 2},
+    "1/K": {"K": -1},
 }
 
 
@@ -52,7 +58,23 @@ class UnitReal(Real):
         real.set("unit", self.unit)
         for key, value in (("nominal", self.nominal), ("min", self.minimum), ("max", self.maximum)):
             if value is not None:
-                real.set(key, f"{value:.16g}")  # as pythonfmu writes start: enough digits to read back exactly
+                real.set(key, repr(float(value)))  # the shortest text that reads back as the same number
+        return node
+
+
+class RangedInteger(Integer):
+    """pythonfmu Integer with the declared allowed range as FMI `min`/`max` (a count or an enumeration code)."""
+
+    def __init__(self, name, minimum=None, maximum=None, **kwargs):
+        super().__init__(name, **kwargs)
+        self.minimum, self.maximum = minimum, maximum
+
+    def to_xml(self):
+        node = super().to_xml()
+        integer = node.find("Integer")
+        for key, value in (("min", self.minimum), ("max", self.maximum)):
+            if value is not None:
+                integer.set(key, str(int(value)))
         return node
 
 
@@ -70,18 +92,23 @@ def add_unit_definitions(root: Element, variables):
     return root
 
 
-def parameter(name, start, description, unit=None, minimum=None, maximum=None):
-    """A fixed parameter variable (Real with unit and allowed range, Boolean for a bool start, or String
-    when unit is None)."""
+def parameter(name, start, description, unit=None, minimum=None, maximum=None, integer=False, getter=None, setter=None):
+    """A fixed parameter variable (Real with unit and allowed range, Boolean for a bool start, Integer with
+    its range when `integer`, or String when unit is None). getter/setter: how the slave reads and writes
+    its value (None: the slave's attribute of that name)."""
     kwargs = dict(
         causality=Fmi2Causality.parameter,
         variability=Fmi2Variability.fixed,
         initial=Fmi2Initial.exact,
         start=start,
         description=description,
+        getter=getter,
+        setter=setter,
     )
     if isinstance(start, bool):
         return Boolean(name, **kwargs)
+    if integer:
+        return RangedInteger(name, minimum, maximum, **kwargs)
     if unit is None:
         return String(name, **kwargs)
     return UnitReal(name, unit, minimum, maximum, **kwargs)
@@ -134,9 +161,23 @@ def declare_structure(root: Element):
     return root
 
 
-def declared_parameter(var, scene=None):
-    """The FMI parameter of a declaration (bearing_fmu_common.variables.Variable) with its start in `scene`."""
-    return parameter(var.name, var.start_in(scene), var.description, var.unit or None, var.min, var.max)
+def declared_parameter(var, slave, scene=None):
+    """The FMI parameter of a declaration (bearing_fmu_common.variables.Variable) with its start in `scene`,
+    kept as the attribute of `slave` named like it (also a structured name such as 'bearing_data.D', which
+    pythonfmu would otherwise look up as an attribute path)."""
+    start = var.start_in(scene)
+    setattr(slave, var.name, start)
+    return parameter(
+        var.name,
+        start,
+        var.description,
+        var.unit or None,
+        var.min,
+        var.max,
+        integer=var.kind == "integer",
+        getter=lambda: getattr(slave, var.name),
+        setter=lambda value: setattr(slave, var.name, value),
+    )
 
 
 def check_parameters(slave, declarations):
@@ -146,7 +187,7 @@ def check_parameters(slave, declarations):
     never accepted."""
     for var in declarations:
         value = getattr(slave, var.name)
-        if var.kind == "real":
+        if var.kind in ("real", "integer"):
             var.check(value)
         elif var.kind == "string":
             var.check_choice(value)

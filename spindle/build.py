@@ -86,6 +86,8 @@ THERMAL_BUNDLE = (
 
 
 def build_thermal_fmu(name, network, axial_float, out_dir=DEFAULT_OUT):
+    """Build the thermal FMU `name` exposing `network` (a catalogue name: the start value of `spindle` and of the
+    network's main dimensions), with the axial-float inputs or not."""
     path = bearing_build.build_python_fmu(
         name,
         "spindle.thermal.fmu",
@@ -98,7 +100,7 @@ def build_thermal_fmu(name, network, axial_float, out_dir=DEFAULT_OUT):
     )
     rows, inputs = reference_rows(network, axial_float)
     reference = bearing_build.csv_text(rows, lambda v: repr(float(v)))
-    markdown = bearing_build.variables_markdown(*thermal_variables(name))
+    markdown = bearing_build.variables_markdown(*thermal_variables(name, (network, axial_float)))
     bearing_build.write_if_changed(Path(out_dir) / f"{name}_network.toml", network_path(network).read_text())
     bearing_build.write_if_changed(Path(out_dir) / f"{name}_ref.csv", reference)
     bearing_build.write_if_changed(Path(out_dir) / f"{name}.md", markdown)
@@ -108,16 +110,24 @@ def build_thermal_fmu(name, network, axial_float, out_dir=DEFAULT_OUT):
     return path
 
 
-def thermal_variables(name):
-    """variables_markdown() arguments of the thermal FMU `name` (spindle.build.THERMAL_FMUS)."""
-    network, axial_float = THERMAL_FMUS[name]
+def thermal_variables(name, built=None):
+    """variables_markdown() arguments of the thermal FMU `name`, built with `built` = (network, axial_float)
+    (default: THERMAL_FMUS[name])."""
+    network, axial_float = built or THERMAL_FMUS[name]
     model = SpindleThermalModel(network, axial_float=axial_float)
     about = [
         f"Network `{network}` (`{name}_network.toml`), axial-float inputs "
         f"{'on (fixed-preload pair)' if axial_float else 'off (spring preload)'}. Reference result of the "
         f"Python model: `{name}_ref.csv`. Variables declared in `spindle/thermal/declarations.py`; SI units."
     ]
-    return name, SpindleThermal.description, about, parameter_declarations(network), model.inputs, model.outputs
+    return (
+        name,
+        SpindleThermal.description,
+        about,
+        parameter_declarations(network, model.net),
+        model.inputs,
+        model.outputs,
+    )
 
 
 def all_variables():
@@ -127,12 +137,19 @@ def all_variables():
 
 
 def _names(variables, units=True):
-    """`a` (unit), `b` ..., with the 25 stiffness entries K[i,j] shown once."""
+    """`a` (unit), `b` ..., with the 25 stiffness entries K[i,j] shown once and each group of structured names
+    (`bearing_data.*`: the numeric bearing parameters) once, with its size."""
     shown = []
     for v in variables:
         if v.name.startswith("K["):
             if v.name == "K[1,1]":
                 shown.append("`K[i,j]` (i, j = 1..5)")
+            continue
+        if "." in v.name:
+            group = v.name.split(".")[0]
+            size = sum(1 for w in variables if w.name.startswith(f"{group}."))
+            if not any(s.startswith(f"`{group}.*`") for s in shown):
+                shown.append(f"`{group}.*` ({size})")
             continue
         shown.append(f"`{v.name}`" + (f" ({v.unit})" if units and v.unit not in ("", "1") else ""))
     return ", ".join(shown)

@@ -1,6 +1,7 @@
 """Command line `spindle` (docs/architecture.md): build, run, sweep, info, demo.
 
-    spindle build [--out fmus]                    build every FMU (bearing scenes + SpindleThermal)
+    spindle build [--out fmus] [--config FILE]    build every FMU (bearing scenes + SpindleThermal), or the
+                                                  configured FMUs of a configuration file (<Name>_<name>.fmu)
     spindle run RUNFILE [--out results] [--set KEY=VALUE ...] [--fmus DIR] [--no-plot] [--progress]
     spindle sweep RUNFILE --param KEY --values V1,V2,... [--scheduler ADDRESS] [--workers N] [--serial]
                   [--set KEY=VALUE ...] [--fmus DIR] [--out results]   Dask if installed, else one after the other
@@ -72,7 +73,19 @@ def _overrides(pairs):
 def cmd_build(args):
     from .build import build_all
 
-    for path in build_all(args.out):
+    if args.config:
+        from .configured import ConfigurationError, build_configured
+
+        try:
+            paths, notes = build_configured(args.config, args.out)
+        except ConfigurationError as exc:
+            print(f"spindle build: {exc}", file=sys.stderr)
+            return EXIT_ERROR
+        for note in notes:
+            print(note)
+    else:
+        paths = build_all(args.out)
+    for path in paths:
         print(f"built {path}")
     return 0
 
@@ -329,8 +342,14 @@ def main(argv=None):
     parser.add_argument("--version", action=_Version)
     sub = parser.add_subparsers(dest="command", required=True)
     raw = argparse.RawDescriptionHelpFormatter
-    p = sub.add_parser("build", help=f"build every FMU into {FMUS}")
+    p = sub.add_parser("build", help=f"build every FMU into {FMUS}, or the configured FMUs of --config")
     p.add_argument("--out", default=str(FMUS))
+    p.add_argument(
+        "--config",
+        metavar="FILE",
+        help="a configuration file (bearing, lubricant, race control, network): build the FMUs whose start values "
+        "they are, named <Name>_<name>.fmu (docs/parameters.md, configured FMUs)",
+    )
     p = sub.add_parser("run", help="run a run file; write CSV and PNG", epilog=EXIT_CODES, formatter_class=raw)
     p.add_argument("runfile")
     p.add_argument("--out", default="results")

@@ -82,3 +82,19 @@ def spindle_thermal_fmu():
 def spindle_thermal_fixed_fmu():
     """SpindleThermalFixed.fmu: the default network with the axial-float inputs (fixed preload)."""
     return _thermal_fmu("SpindleThermalFixed")
+
+
+CONFIGURED = ("BearingDEM", "Bearing", "SpindleThermal")  # the configured FMUs the tests build (of every kind)
+
+
+@pytest.fixture(scope="session")
+def configured_fmus(tmp_path_factory):
+    """The configured FMUs of configs/rabreau_rig.toml (`spindle build --config`), those of CONFIGURED, built
+    once per session into a temporary folder: name (e.g. BearingDEM_B7214C) -> path."""
+    from spindle.configured import build_configured
+
+    out = tmp_path_factory.mktemp("configured_fmus")
+    config = out / "rabreau_rig.toml"
+    config.write_text((ROOT / "configs" / "rabreau_rig.toml").read_text() + f"fmus = {list(CONFIGURED)!r}\n")
+    paths, _ = build_configured(config, out)
+    return {path.stem: path for path in map(Path, paths)}

@@ -28,6 +28,8 @@ from ..kernels import rating_life as rl
 from ..kernels import truncation as tk
 from ..kernels.ball_dynamics import state as ds
 from ..params import SUPPORT_DAMPING, SUPPORT_STIFFNESS, load_dem_constants
+from ..scene import RACE_CONTROLS
+from .file_parameters import bearing_parameters
 from .variables import (
     GROOVE_MAX,
     LOAD_LIMITS,
@@ -209,6 +211,7 @@ ANALYTIC_PARAMETERS = (
     Variable("lubricant", "", LUBRICANT_NAME, "string", start="guessasma_oil"),
     PD_FROM_FILE,
     PD,
+    *bearing_parameters("6208", "guessasma_oil"),  # the numeric bearing and lubricant (models.file_parameters)
 )
 
 # -- quasi-static fidelity --------------------------------------------------------------------------
@@ -451,7 +454,17 @@ QUASI_STATIC_PARAMETERS = (
         "ball race-control hypothesis: outer | inner | hybrid (Rabreau 2018)",
         "string",
         start=None,  # the scene's race_control
-        choices=("outer", "inner", "hybrid"),
+        choices=RACE_CONTROLS,
+    ),
+    Variable(
+        "race_control_mode",
+        "1",
+        "race control as a number, for masters without String parameters: -1 = the parameter race_control, "
+        + ", ".join(f"{code} = {name}" for code, name in enumerate(RACE_CONTROLS)),
+        "integer",
+        start=-1,
+        min=-1,
+        max=len(RACE_CONTROLS) - 1,
     ),
     Variable(
         "F_preload",
@@ -464,6 +477,7 @@ QUASI_STATIC_PARAMETERS = (
         max=LOAD_MAX,
         limits="below the bearing's material limit (p_max = 6 GPa with the load on all balls)",
     ),
+    *bearing_parameters("B7214C", "iso_vg68_mineral"),
 )
 
 # -- DEM fidelity (ball dynamics, docs/dem.md) ------------------------------------------------------
@@ -694,4 +708,5 @@ DEM_PARAMETERS = (
         max=SUPPORT_DAMPING.high,
         limits="0 = none; the automatic step follows the support",
     ),
+    *bearing_parameters("6208", "guessasma_oil"),
 )

@@ -16,7 +16,6 @@ millisecond (hysteretic damping); compare after a few milliseconds.
 """
 
 import math
-import tomllib
 
 import numpy as np
 
@@ -116,13 +115,10 @@ class DemUnstableError(InputError):
     """The monitor stopped the integration; the message names the cause and a time step that would work."""
 
 
-def _cage_material(path):
+def _cage_material(bearing):
     """(E, nu, rho) of the cage balls from the bearing file's [material.cage], else PA66 defaults."""
-    with open(path, "rb") as fh:
-        doc = tomllib.load(fh)
-    cage = doc.get("material", {}).get("cage", {})
-    get = lambda key, default: float(cage[key]["value"]) if key in cage else default  # noqa: E731
-    return get("E", CONSTANTS.cage_E), get("nu", CONSTANTS.cage_nu), get("rho", CONSTANTS.cage_rho)
+    cage = bearing.cage_material
+    return cage.get("E", CONSTANTS.cage_E), cage.get("nu", CONSTANTS.cage_nu), cage.get("rho", CONSTANTS.cage_rho)
 
 
 def _checked_support(name, value, default, spec):
@@ -137,10 +133,8 @@ def _ring_annulus(bearing):
     """(bore, groove bottom, width) in m of the annulus that estimates the inner ring: from the bore to the groove
     bottom over the ring width (shoulders and groove roughly cancel); without bore or width in the file,
     bore = d_m - 2 D, width = 1.5 D."""
-    with open(bearing.path, "rb") as fh:
-        geometry = tomllib.load(fh).get("geometry", {})
-    bore = float(geometry["bore"]["value"]) if "bore" in geometry else bearing.dm - 2.0 * bearing.D
-    width = float(geometry["width"]["value"]) if "width" in geometry else 1.5 * bearing.D
+    bore = bearing.dm - 2.0 * bearing.D if bearing.bore is None else bearing.bore
+    width = 1.5 * bearing.D if bearing.width is None else bearing.width
     return bore, bearing.dm - bearing.D, width
 
 
@@ -352,7 +346,7 @@ class DemModel:
         p[s.P_CT_SUPPORT] = lever * p[s.P_C_SUPPORT]
         p[s.P_V_REG] = V_REG
         # cage balls and their guide
-        E_c, nu_c, rho_c = _cage_material(b.path)
+        E_c, nu_c, rho_c = _cage_material(b)
         self.cage_radius_estimated = b.cage_ball_radius <= 0.0
         self._rest = self._ball_rest_position(p[s.P_KH_I], p[s.P_KH_O])
         pitch = self._rest[0]

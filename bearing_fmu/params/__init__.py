@@ -25,6 +25,7 @@ from bearing_fmu_common.bearing_file import (  # noqa: F401  (re-exported: the b
     Bearing,
     Material,
     angle_for_clearance,
+    bearing_from_document,
     clearance_for_angle,
     clearance_limits,
     groove_clearance,
@@ -55,7 +56,10 @@ def catalogue(kind):
 
 
 def load_bearing(name_or_path):
-    """Bearing set from a catalogue name ('6208', '6306', 'B7214C') or a TOML path; validated."""
+    """Bearing set from a catalogue name ('6208', '6306', 'B7214C') or a TOML path; validated. A Bearing
+    (e.g. made from the numeric FMU parameters, bearing_fmu_common.numeric) is returned as it is."""
+    if isinstance(name_or_path, Bearing):
+        return name_or_path
     return read_bearing(_resolve(name_or_path, "bearings"))
 
 
@@ -80,9 +84,17 @@ TRACTION_SLIP_DEFAULT = 0.001
 
 
 def load_lubricant(name_or_path):
-    """Lubricant set from a catalogue name or a TOML path; validated and packed for the kernels."""
+    """Lubricant set from a catalogue name or a TOML path; validated and packed for the kernels. A Lubricant
+    (e.g. made from the numeric FMU parameters) is returned as it is."""
+    if isinstance(name_or_path, Lubricant):
+        return name_or_path
     path = _resolve(name_or_path, "lubricants")
-    doc = read_toml(path, "lubricant")
+    return lubricant_from_document(read_toml(path, "lubricant"), path)
+
+
+def lubricant_from_document(doc, path):
+    """Lubricant set from a parsed lubricant file `doc` (nested dicts as tomllib gives them), validated and
+    packed; `path` names the file in messages (a Path or the text naming where the values came from)."""
     arr = np.zeros(lk.LUB_SIZE)
     visc = doc.get("viscosity", {}).get("model", "constant")
     piezo = doc.get("pressure_viscosity", {}).get("model", "constant")
@@ -150,7 +162,7 @@ def load_lubricant(name_or_path):
     if (T_low is None) != (T_high is None) or (T_low is not None and not T_low < T_high):
         raise ParameterError(f"{path}: [temperature_range] needs both T_low and T_high, T_low < T_high")
     return Lubricant(
-        name=str(doc.get("meta", {}).get("name", path.stem)),
+        name=str(doc.get("meta", {}).get("name", Path(path).stem)),
         path=str(path),
         array=arr,
         reference=reference,

@@ -24,8 +24,72 @@ K_AXIAL_MAX = 1e11  # N/m: 100 x the axial stiffness of the stiffest spindle bea
 AXIAL_FLOAT_MAX = 1e-3  # m: |axial float| of the shaft; a bearing FMU refuses |dz_thermal| beyond it
 
 
-def parameter_declarations(network=DEFAULT_SPINDLE):
-    """The FMU's parameters; `network` is the start value of `spindle` (the network it was built with)."""
+NETWORK_FROM_FILE = Variable(
+    "network_from_file",
+    "",
+    "true: the network's thermo-mechanical dimensions come from the file named by spindle (its bearings' files); "
+    "false: from the parameters bearing_<k>.*, expansion.* and axial.* (the nodes and links stay the file's)",
+    "boolean",
+    start=True,
+)
+# The network's main dimensions: what turns temperatures into the clearance and preload outputs. Per bearing k
+# (its [[bearing]] entry, the bearing file it names): (name, unit, key of the network's bearing entry,
+# description, min, max); then the [expansion] and [axial] values. Ranges: those of the files' readers, closed
+# where those are open (model.with_dimensions refuses a 0 that the file would refuse).
+RING_DIMENSIONS = (
+    ("D", "m", "D", "ball diameter (< d_m)", 0.0, 1.0),
+    ("d_m", "m", "dm", "pitch diameter", 0.0, 10.0),
+    ("Pd", "m", "Pd", "diametral clearance at assembly (negative = preload); grooves d_m -+ (D + Pd/2)", -1e-2, 1e-2),
+    ("bore", "m", "bore", "bore diameter (> 0, at most the inner groove diameter)", 0.0, 10.0),
+    ("E_ring", "Pa", "E", "Young's modulus of the rings (centrifugal growth)", 1e6, 1e13),
+    ("nu_ring", "1", "nu", "Poisson's ratio of the rings", 0.0, 0.5),
+    ("rho_ring", "kg/m^3", "rho", "density of the rings", 100.0, 30000.0),
+)  # fmt: skip
+EXPANSION = (
+    ("expansion.T_ref", "K", "T_ref", "assembly temperature: the dimensions are those at it", T_MIN, T_MAX),
+    ("expansion.alpha_bearing", "1/K", "alpha_bearing", "thermal expansion coefficient of rings and balls", 0.0, 1e-3),
+)  # fmt: skip
+AXIAL = (
+    ("axial.spacing", "m", "spacing", "distance between the bearing centres (> 0)", 0.0, 10.0),
+    ("axial.alpha_shaft", "1/K", "alpha_shaft", "thermal expansion coefficient of the shaft", 0.0, 1e-3),
+    ("axial.alpha_housing", "1/K", "alpha_housing", "thermal expansion coefficient of the housing", 0.0, 1e-3),
+)
+
+
+DIMENSION_LIMITS = (
+    "the range the network and bearing files accept; in use also 0 < D < d_m, 0 < bore <= d_m - D - Pd/2 and "
+    "spacing > 0 (spindle.thermal.model.with_dimensions)"
+)
+
+
+def dimension_rows(net):
+    """(FMI name, unit, description, min, max, value in `net`) of each main dimension of a network."""
+    rows = [
+        (f"bearing_{k}.{name}", unit, f"bearing {k} ({b['name']}): {text}", low, high, b[key])
+        for k, b in enumerate(net.bearings, start=1)
+        for name, unit, key, text, low, high in RING_DIMENSIONS
+    ]
+    rows += [(name, unit, text, low, high, getattr(net, key)) for name, unit, key, text, low, high in EXPANSION]
+    if net.axial:
+        rows += [(name, unit, text, low, high, net.axial[key]) for name, unit, key, text, low, high in AXIAL]
+    return rows
+
+
+def dimension_declarations(net):
+    """network_from_file and the main dimensions of `net` as parameters, their start values `net`'s."""
+    return (
+        NETWORK_FROM_FILE,
+        *(
+            Variable(name, unit, text, start=value, min=low, max=high, limits=DIMENSION_LIMITS)
+            for name, unit, text, low, high, value in dimension_rows(net)
+        ),
+    )
+
+
+def parameter_declarations(network=DEFAULT_SPINDLE, net=None):
+    """The FMU's parameters; `network` is the start value of `spindle` (the network it was built with), `net`
+    that network loaded (spindle.thermal.model.load_spindle): its main dimensions are the start values of
+    theirs."""
     return (
         Variable(
             "spindle", "", "spindle network: catalogue name or path of a spindle TOML file", "string", start=network
@@ -47,6 +111,7 @@ def parameter_declarations(network=DEFAULT_SPINDLE):
             max=T_MAX,
             limits=f"0 (= the ambient input) or [{T_MIN:g}, {T_MAX:g}] K: {T_LIMITS}",
         ),
+        *dimension_declarations(net),
     )
 
 

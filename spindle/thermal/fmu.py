@@ -18,7 +18,7 @@ from pythonfmu.enums import Fmi2Status
 from bearing_fmu_common.fmi import DeclaredSlave, check_parameters, declared_parameter
 
 from .declarations import parameter_declarations
-from .model import DEFAULT_SPINDLE, SpindleThermalModel
+from .model import DEFAULT_SPINDLE, SpindleThermalModel, load_spindle
 
 COMMUNICATION_DIGITS = 12  # the communication step is taken on a grid of 10^-12 s
 
@@ -38,10 +38,9 @@ class SpindleThermal(DeclaredSlave):
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
-        self._parameters = parameter_declarations(self.default_network)
+        self._parameters = parameter_declarations(self.default_network, load_spindle(self.default_network))
         for var in self._parameters:
-            setattr(self, var.name, var.start)
-            self.register_variable(declared_parameter(var))
+            self.register_variable(declared_parameter(var, self))
         self._model = SpindleThermalModel(self.spindle, axial_float=self.axial_float)
         self._ready = False  # parameters accepted (exit_initialization_mode)
         self._started = False  # network initialised from accepted inputs
@@ -68,7 +67,11 @@ class SpindleThermal(DeclaredSlave):
         check_parameters(self, self._parameters)
         T0 = None if self.T_initial == 0.0 else self.T_initial  # 0 = the ambient input; the model checks the rest
         model = SpindleThermalModel(
-            self.spindle, integrator=self.integrator, T_initial=T0, axial_float=self.axial_float
+            self.spindle,
+            integrator=self.integrator,
+            T_initial=T0,
+            axial_float=self.axial_float,
+            dimensions=None if self.network_from_file else self._dimensions(),
         )
         if [v.name for v in model.inputs] != [v.name for v in self._model.inputs] or [
             v.name for v in model.outputs
@@ -80,6 +83,11 @@ class SpindleThermal(DeclaredSlave):
             )
         self._model = model
         self._started = False
+
+    def _dimensions(self):
+        """The main dimensions' parameter values by name (network_from_file false): the structured names
+        bearing_<k>.*, expansion.*, axial.* (declarations.dimension_rows)."""
+        return {var.name: getattr(self, var.name) for var in self._parameters if "." in var.name}
 
     def _start(self):
         """Initialise the network from the current inputs (raises on a bad input, nothing changed)."""

@@ -10,8 +10,7 @@ first can make its host abort at exit, spindle.cosim.master): the eigendecomposi
 """
 
 import math
-import tomllib
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -22,11 +21,15 @@ from bearing_fmu_common.variables import InputError
 
 from . import network as nk
 from .declarations import (
+    AXIAL,
     AXIAL_FLOAT_MAX,
     DEFAULT_SPINDLE,
+    EXPANSION,
     INTEGRATORS,
+    RING_DIMENSIONS,
     T_MAX,
     T_MIN,
+    dimension_declarations,
     input_declarations,
     output_declarations,
 )
@@ -137,13 +140,23 @@ def _bearing_entry(entry, index, node_index, where):
             raise ParameterError(f"{where}: '{role}' = {name!r} is not a node ({', '.join(node_index)})")
         nodes[role] = node_index[name]
     b = load_ring_bearing(entry.get("bearing", ""))
-    d_i = b.dm - b.D - 0.5 * b.Pd  # groove diameters with P_d = d_o - d_i - 2 D (Harris)
-    d_o = b.dm + b.D + 0.5 * b.Pd
-    # the Bearing record does not carry the bore: read it from the bearing's own file
-    bore = _quantity(
-        tomllib.loads(Path(b.path).read_text()).get("geometry", {}), "bore", "m", f"{b.path} [geometry]", high=d_i
-    )
-    return dict(name=b.name, d_i=d_i, d_o=d_o, D=b.D, a=0.5 * bore, E=b.ring.E, nu=b.ring.nu, rho=b.ring.rho, **nodes)
+    if b.bore is None:
+        raise ParameterError(f"{b.path} [geometry]: missing key 'bore' (m)")
+    ring = ring_dimensions(b.D, b.dm, b.Pd, b.bore, b.ring.E, b.ring.nu, b.ring.rho)
+    if not b.bore <= ring["d_i"]:
+        raise ParameterError(
+            f"{b.path} [geometry]: 'bore' = {b.bore} m must not exceed the inner groove diameter {ring['d_i']} m"
+        )
+    return dict(name=b.name, **ring, **nodes)
+
+
+def ring_dimensions(D, dm, Pd, bore, E, nu, rho):
+    """A bearing's entries of Network.bearings from its ball diameter D, pitch diameter dm, diametral clearance Pd
+    and bore (m) and its rings' modulus E (Pa), Poisson ratio nu and density rho (kg/m^3): the groove diameters
+    d_i, d_o with P_d = d_o - d_i - 2 D (Harris) and the bore radius a."""
+    d_i = dm - D - 0.5 * Pd
+    d_o = dm + D + 0.5 * Pd
+    return dict(D=D, dm=dm, Pd=Pd, bore=bore, d_i=d_i, d_o=d_o, a=0.5 * bore, E=E, nu=nu, rho=rho)
 
 
 def load_spindle(name_or_path):
@@ -321,6 +334,34 @@ def _axial(section, node_index, n_bearings, where):
     return out
 
 
+def with_dimensions(net, values):
+    """`net` with its main dimensions (spindle.thermal.declarations.dimension_rows) replaced by `values` (FMI name
+    -> value; the parameter network_from_file false): each checked against its declared range, and the ring
+    geometry as a bearing file's (0 < D < d_m, 0 < bore <= inner groove diameter, spacing > 0). A refusal names
+    the parameter."""
+    for var in dimension_declarations(net)[1:]:
+        var.check(values[var.name])
+    bearings = []
+    for k, b in enumerate(net.bearings, start=1):
+        ring = {key: values[f"bearing_{k}.{name}"] for name, _, key, *_ in RING_DIMENSIONS}
+        geometry = ring_dimensions(ring["D"], ring["dm"], ring["Pd"], ring["bore"], ring["E"], ring["nu"], ring["rho"])
+        if not 0.0 < ring["D"] < ring["dm"]:
+            raise ParameterError(
+                f"bearing_{k}.D = {ring['D']} m must be > 0 and below bearing_{k}.d_m = {ring['dm']} m"
+            )
+        if not 0.0 < ring["bore"] <= geometry["d_i"]:
+            raise ParameterError(
+                f"bearing_{k}.bore = {ring['bore']} m must be > 0 and at most the inner groove diameter "
+                f"d_m - D - Pd/2 = {geometry['d_i']} m"
+            )
+        bearings.append({**b, **geometry})
+    axial = net.axial and {**net.axial, **{key: values[name] for name, _, key, *_ in AXIAL}}
+    if axial and not axial["spacing"] > 0.0:
+        raise ParameterError(f"axial.spacing = {axial['spacing']} m must be > 0")
+    expansion = {key: values[name] for name, _, key, *_ in EXPANSION}
+    return replace(net, bearings=tuple(bearings), axial=axial, **expansion)
+
+
 def _admissible(var):
     """(low, high, allowed range as text) of an input: its declared range (spindle.thermal.declarations);
     admissible means low <= x <= high, which also refuses NaN; the text is for messages."""
@@ -335,12 +376,22 @@ class SpindleThermalModel:
     (exact for inputs held over the step, default) | 'implicit_euler' (backward Euler, `substeps` >= 1
     equal sub-steps per step); T_initial (K): start temperature of every node (default: the T_ambient
     input, or the first boundary's input, at initialize()); axial_float: None = as the TOML's
-    [axial] section says, True/False overrides it (the fixed-preload FMU is built with True).
+    [axial] section says, True/False overrides it (the fixed-preload FMU is built with True);
+    dimensions: None = the network's main dimensions (its file and its bearings' files), else their values by
+    FMI name (with_dimensions; the FMU parameter network_from_file false).
     Inputs missing from a call keep their previous value (defaults: heats 0 W, omega 0, temperatures
     T_ref, forces 0 N, stiffnesses 0 N/m), like FMU inputs.
     """
 
-    def __init__(self, spindle=DEFAULT_SPINDLE, integrator="exponential", substeps=1, T_initial=None, axial_float=None):
+    def __init__(
+        self,
+        spindle=DEFAULT_SPINDLE,
+        integrator="exponential",
+        substeps=1,
+        T_initial=None,
+        axial_float=None,
+        dimensions=None,
+    ):
         if integrator not in INTEGRATORS:
             raise SpindleInputError(f"integrator = {integrator!r}: allowed {list(INTEGRATORS)}")
         if (
@@ -355,6 +406,8 @@ class SpindleThermalModel:
                 f"FMU, 0 = the ambient input)"
             )
         self.net = net = load_spindle(spindle)
+        if dimensions is not None:
+            self.net = net = with_dimensions(net, dimensions)
         self.integrator = integrator
         self.substeps = int(substeps)
         self.T_initial = None if T_initial is None else float(T_initial)

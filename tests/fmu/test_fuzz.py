@@ -155,6 +155,6 @@ def test_model_description_declares_the_checked_ranges(request, arguments):
     md = read_model_description(str(request.getfixturevalue(FIXTURES[name])))
     xml = {v.name: v for v in md.modelVariables if v.causality in ("input", "parameter")}
     for var in (*parameters, *inputs):
-        declared = (var.min, var.max) if var.kind == "real" else (None, None)
+        declared = (var.min, var.max) if var.kind in ("real", "integer") else (None, None)
         written = tuple(None if x is None else float(x) for x in (xml[var.name].min, xml[var.name].max))
         assert written == declared, var.name

@@ -31,7 +31,8 @@ from bearing_fmu.build import DEM_REFERENCE_STEP, REFERENCE_STEP, SCENES_DIR, de
 from bearing_fmu.scene import Scene
 from bearing_fmu_common.variables import TYPICAL_MAGNITUDE
 from spindle.check import NOT_COMPARED, compare
-from tests.conftest import FMU_DIR, ROOT, _fmu
+from tests.conftest import CONFIGURED as CONFIGURED_KINDS
+from tests.conftest import ROOT, _fmu
 
 BEARINGS = {
     "BearingAnalytic": "analytic.toml",
@@ -41,17 +42,22 @@ BEARINGS = {
     "BearingDEM": "dem.toml",
 }
 THERMAL = {"SpindleThermal": "spindle_thermal_fmu", "SpindleThermalFixed": "spindle_thermal_fixed_fmu"}
+CONFIGURED = [f"{name}_B7214C" for name in CONFIGURED_KINDS]  # `spindle build --config configs/rabreau_rig.toml`
 ALL = sorted(BEARINGS) + sorted(THERMAL)
 
 
 @pytest.fixture
 def fmu(request):
     name = request.param
+    if name in CONFIGURED:
+        return request.getfixturevalue("configured_fmus")[name]
     return _fmu(name, BEARINGS[name]) if name in BEARINGS else request.getfixturevalue(THERMAL[name])
 
 
 def expected_experiment(name):
-    """(stop time, step) of the reference experiment, from the build's definition of it."""
+    """(stop time, step) of the reference experiment, from the build's definition of it (a configured FMU,
+    <Name>_<configuration>, has its generic FMU's experiment)."""
+    name = name.split("_")[0]
     if name in THERMAL:
         return 3600.0, 60.0
     with open(SCENES_DIR / BEARINGS[name], "rb") as fh:
@@ -61,7 +67,7 @@ def expected_experiment(name):
     return len(reference_inputs(scene)) * REFERENCE_STEP, REFERENCE_STEP  # one step per point, from 0
 
 
-@pytest.mark.parametrize("fmu", ALL, indirect=True)
+@pytest.mark.parametrize("fmu", ALL + CONFIGURED, indirect=True)
 def test_model_description_as_tools_expect(fmu):
     assert validate_fmu(str(fmu)) == []
     root = ElementTree.fromstring(zipfile.ZipFile(fmu).read("modelDescription.xml"))
@@ -86,7 +92,7 @@ def test_model_description_as_tools_expect(fmu):
     assert root.get("copyright").startswith("Copyright")
 
 
-@pytest.mark.parametrize("fmu", ALL, indirect=True)
+@pytest.mark.parametrize("fmu", ALL + CONFIGURED, indirect=True)
 def test_documentation_and_reference_are_inside_the_fmu(fmu):
     name = fmu.name[:-4]
     with zipfile.ZipFile(fmu) as z:
@@ -95,7 +101,7 @@ def test_documentation_and_reference_are_inside_the_fmu(fmu):
         options = z.read(f"documentation/{name}_ref.opt").decode()
     assert {f"documentation/{name}_in.csv", f"documentation/{name}_ref.csv"} <= files
     assert f"<title>{name}</title>" in page
-    rows = [line for line in (FMU_DIR / f"{name}.md").read_text().splitlines() if line.startswith("| `")]
+    rows = [line for line in fmu.with_suffix(".md").read_text().splitlines() if line.startswith("| `")]
     for line in rows:  # every variable of fmus/<Name>.md, in a row of the page's table
         variable = line.split("`")[1]
         assert f"<tr><td><code>{variable}</code></td>" in page, variable
@@ -164,7 +170,7 @@ def replay(fmu, signal, stop, step):
     return {n: np.array([r[n] for r in rows]) for n in rows[0]}
 
 
-@pytest.mark.parametrize("fmu", ALL, indirect=True)
+@pytest.mark.parametrize("fmu", ALL + CONFIGURED, indirect=True)
 def test_the_fmu_reproduces_its_crosscheck_reference(fmu):
     """Every FMU, the DEM's event at t = 0 included (its experiment starts from the start values and its
     first step takes the first row: fmpy 0.3.32's simulate_fmu takes no event at the start time)."""
@@ -177,7 +183,7 @@ def test_the_fmu_reproduces_its_crosscheck_reference(fmu):
     assert differences == [], differences[:5]
 
 
-@pytest.mark.parametrize("fmu", ALL, indirect=True)
+@pytest.mark.parametrize("fmu", ALL + CONFIGURED, indirect=True)
 def test_fmpy_simulates_with_the_default_experiment(fmu):
     md = read_model_description(str(fmu))
     result = simulate_fmu(str(fmu))  # stop time and output interval from DefaultExperiment

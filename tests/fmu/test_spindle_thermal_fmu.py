@@ -63,7 +63,16 @@ def test_validate_fmu_and_model_description(fixture, request):
             assert v.unit in units, v.name
         if v.causality == "output":
             assert v.initial == "calculated", v.name  # computed at initialisation (ModelStructure declares it)
-    assert {v.name for v in md.modelVariables if v.causality == "parameter"} == {"spindle", "integrator", "T_initial"}
+    parameters = {v.name for v in md.modelVariables if v.causality == "parameter"}
+    assert {name for name in parameters if "." not in name} == {
+        "spindle",
+        "integrator",
+        "T_initial",
+        "network_from_file",
+    }
+    # the network's main dimensions (docs/parameters.md, numeric parameters)
+    groups = {name.split(".")[0] for name in parameters if "." in name}
+    assert groups == {"bearing_1", "bearing_2", "expansion", "axial"}
 
 
 @pytest.mark.parametrize("fixture", sorted(FMUS))
