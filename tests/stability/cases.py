@@ -197,6 +197,42 @@ CASES = (
         "test_218_dem_light_thrust_high_speed_is_truncated_and_warned_once",
     ),
     (
+        "cold oil start: the film turns full within a communication step",
+        "DEM",
+        "tests/validation/test_dem_full_film_damping.py",
+        "test_automatic_step_follows_the_film_into_full_film",
+    ),
+    (
+        "NaN, inf and out-of-range values on every input and parameter",
+        "every FMU",
+        "tests/fmu/test_fuzz.py",
+        "test_fuzz_fast",
+    ),
+    (
+        "native host: NULL instance or arguments",
+        "FMI layer",
+        "tests/fmu/test_native_runtime.py",
+        "test_every_entry_point_refuses_a_null_instance",
+    ),
+    (
+        "native host: calls out of the FMI call sequence",
+        "FMI layer",
+        "tests/fmu/test_native_runtime.py",
+        "test_calls_out_of_the_fmi_call_sequence_are_refused",
+    ),
+    (
+        "native host: a failed reset, then doStep",
+        "FMI layer",
+        "tests/fmu/test_native_runtime.py",
+        "test_calls_after_a_failed_reset_return_error",
+    ),
+    (
+        "native host: two FMUs set up from two threads at once",
+        "FMI layer",
+        "tests/fmu/test_native_runtime.py",
+        "test_a_native_host_sets_up_two_fmus_from_two_threads",
+    ),
+    (
         "cold oil outside the lubricant's data",
         "analytic, quasi-static, DEM",
         "tests/unit/test_oil_temperature_range.py",
