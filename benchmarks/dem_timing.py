@@ -24,7 +24,7 @@ from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.kernels.ball_dynamics.cage import ball_cage_contact, cage_guide_contact
 from bearing_fmu.kernels.ball_dynamics.contacts import ball_race_contact
 from bearing_fmu.kernels.ball_dynamics.tribology import TC_SIZE, race_circle, refresh_tribology, tribology_constants
-from bearing_fmu.kernels.lubricant import LUB_EPS_R0, clausius_mossotti_constant, lubricant_state
+from bearing_fmu.kernels.lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
 from bearing_fmu.models.dem import REFRESH_INTERVAL, DemModel
 
 from .common import machine, record, write_report
@@ -185,7 +185,7 @@ def _steps(n, balls, cage, ring, spring, trib, counters, par, work, acc, dt):
 @njit
 def _refreshes(n, balls, ring, par, trib, lub):
     eta, xi, rho0 = lubricant_state(313.15, lub)
-    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], rho0)
+    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF])
     tc = np.empty((TC_SIZE, 2))
     tribology_constants(par, eta, xi, tc)
     for _ in range(n):

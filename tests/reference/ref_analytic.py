@@ -57,7 +57,7 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
     h_floor = brg[ak.B_H_FLOOR]
 
     eta, xi, rho0 = ref_lubricant.lubricant_state(T_oil, lub)
-    K_cm = ref_lubricant.clausius_mossotti_constant(lub[lk.LUB_EPS_R0], rho0)
+    K_cm = ref_lubricant.clausius_mossotti_constant(lub[lk.LUB_EPS_R0], lub[lk.LUB_RHO_REF])
     omega_cage, omega_ball_cage, omega_ball, u = ref_geometry.rolling_kinematics(omega, D, dm, 0.0)
     F_c = ref_geometry.centrifugal_force(brg[ak.B_M_BALL], dm, omega_cage) if brg[ak.B_CENTRIFUGAL] > 0.5 else 0.0
 

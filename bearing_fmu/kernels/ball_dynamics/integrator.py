@@ -21,7 +21,7 @@ import numpy as np
 from bearing_fmu_common.jit import kernel
 
 from ..capacitance import ball_capacitance
-from ..lubricant import LUB_EPS_R0, clausius_mossotti_constant, lubricant_state
+from ..lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
 from .cage import ball_cage_contact, cage_guide_contact
 from .contacts import ball_race_contact
 from .monitor import damping_step_ratio, kinetic_energy
@@ -445,7 +445,7 @@ def initialise_accelerations(
     """Tribology and accelerations of a new state (the a_n that the first Verlet step needs), without
     moving anything: call once after the facade sets positions and velocities."""
     eta, xi, rho0 = lubricant_state(T_oil, lub)
-    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], rho0)
+    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF])
     tc = np.empty((TC_SIZE, 2))
     tribology_constants(par, eta, xi, tc)
     refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
@@ -494,7 +494,7 @@ def advance(
     loaded balls' capacitances at the last refresh, without a background term) integrated over the call (F.s).
     """
     eta, xi, rho0 = lubricant_state(T_oil, lub)
-    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], rho0)
+    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF])
     tc = np.empty((TC_SIZE, 2))
     tribology_constants(par, eta, xi, tc)
     Z = balls.shape[1]
