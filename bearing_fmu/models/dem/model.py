@@ -21,22 +21,22 @@ import numpy as np
 
 from bearing_fmu_common.variables import InputLimits, gather_plan, outputs_as_dict, select
 
-from ..kernels import truncation as tk
-from ..kernels.ball_dynamics import integrator as dyn
-from ..kernels.ball_dynamics import state as s
-from ..kernels.ball_dynamics.monitor import critical_time_step, damping_step_ratio, kinetic_energy
-from ..kernels.ball_dynamics.outputs import bearing_outputs, contact_angles, contact_loads, shoulder_truncation
-from ..kernels.ball_dynamics.stiffness import stiffness_matrix
-from ..kernels.ehl import friction_coefficient
-from ..kernels.geometry import (
+from ...kernels import truncation as tk
+from ...kernels.ball_dynamics import integrator as dyn
+from ...kernels.ball_dynamics import state as s
+from ...kernels.ball_dynamics.monitor import critical_time_step, damping_step_ratio, kinetic_energy
+from ...kernels.ball_dynamics.outputs import bearing_outputs, contact_angles, contact_loads, shoulder_truncation
+from ...kernels.ball_dynamics.stiffness import stiffness_matrix
+from ...kernels.ehl import friction_coefficient
+from ...kernels.geometry import (
     ball_direction,
     ball_mass,
     free_contact_angle,
     pass_frequencies,
     rolling_kinematics,
 )
-from ..kernels.hertz import hertz_contact, hertz_stiffness
-from ..params import (
+from ...kernels.hertz import hertz_contact, hertz_stiffness
+from ...params import (
     SUPPORT_DAMPING,
     SUPPORT_STIFFNESS,
     clearance_limits,
@@ -44,11 +44,11 @@ from ..params import (
     load_dem_constants,
     load_lubricant,
 )
-from ..scene import Scene
-from .contacts import contact_terms, pack, race_contacts, truncation_parameters, truncation_warnings
-from .declarations import DEM_DT_MAX, DEM_INPUTS, DEM_OUTPUTS, DEM_REFRESH_MAX
-from .declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
-from .variables import (
+from ...scene import Scene
+from ..contacts import contact_terms, pack, race_contacts, truncation_parameters, truncation_warnings
+from ..declarations import DEM_DT_MAX, DEM_INPUTS, DEM_OUTPUTS, DEM_REFRESH_MAX
+from ..declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
+from ..variables import (
     DM_N_LIMIT,
     MATERIAL_LIMIT,
     P_MAX_ERROR,
