@@ -17,10 +17,9 @@ from .monitor import CHATTER_STEPS, DAMPING_STOP
 from .placement import ball_rest_position
 
 # the contact model's constants with their units and sources (params/dem_model.toml): the cage elements' default
-# material (the papers' PA66), the hysteretic damping constant alpha_e, the tangential stiffness ratio
+# material (the papers' PA66) and pocket play, the hysteretic damping constant alpha_e, the tangential stiffness
+# ratio, the ring's support
 CONSTANTS = load_dem_constants()
-# pocket play of an estimated cage ball: the 6208 of Guessasma & Machado (2018) has 0.033 mm for D = 12.6 mm
-CAGE_GAP_OVER_D = 0.0026
 V_REG = 1e-3  # m/s, speed below which the resistances' directions are regularised
 # the film's traction is evaluated linearly implicitly in the slip: a force at the surface of a solid sphere
 # changes the surface's speed by 3.5/m per newton and second, and a ball has two contacts (docs/dem.md, Tangential)
@@ -121,7 +120,7 @@ def _pack_cage(p, bearing, rest):
     E_c, nu_c, rho_c = cage_material(b)
     pitch = rest[0]
     half_pocket = pitch * 2.0 * math.sin(0.5 * math.pi / b.Z)  # ball centre to the mid-angle point
-    R_z = b.cage_ball_radius if b.cage_ball_radius > 0.0 else half_pocket - 0.5 * D - CAGE_GAP_OVER_D * D
+    R_z = b.cage_ball_radius if b.cage_ball_radius > 0.0 else half_pocket - 0.5 * D - CONSTANTS.cage_pocket_play * D
     if R_z <= 0.0:
         raise InputError(
             f"bearing '{b.name}': no room for cage balls between {b.Z} balls of {D} m "
