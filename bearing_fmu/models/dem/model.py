@@ -306,12 +306,12 @@ class DemModel:
         capacitance C (F) and Hertz semi-axes a, b (m); the current contact angle alpha (rad)."""
         return outputs.contact_arrays(self.balls, self.ring, self.trib, self.par, self._Q, self._alpha)
 
-    def record(self, t_end, interval, omega=None, **inputs):
+    def record(self, t_end, interval, omega=None, **held):
         """Advance to t_end (s) in steps of `interval` (s), recording after each: returns a dict of numpy arrays,
         't' (n,) and every bearing output (n,), and under 'contacts' a dict of every per-ball/per-contact
         array of contacts() (n, Z).
         The speed goes linearly from its current value to omega (rad/s; None = hold) over the whole record;
-        the other inputs (F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal) are held."""
+        the other inputs, given by name (F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal), are held."""
         if not (math.isfinite(interval) and interval > 0.0):
             raise InputError(f"interval = {interval} s is outside the allowed range ]0, inf[ s")
         t0, omega0 = self.time, self.omega
@@ -320,7 +320,7 @@ class DemModel:
         rows = []
         for k in range(1, n + 1):
             t = min(t0 + k * interval, float(t_end))
-            out = self.advance(t, omega=omega0 + (omega - omega0) * (t - t0) / (float(t_end) - t0), **inputs)
+            out = self.advance(t, omega=omega0 + (omega - omega0) * (t - t0) / (float(t_end) - t0), **held)
             rows.append((t, out, self.contacts()))
         result = {"t": np.array([r[0] for r in rows])}
         for name in rows[0][1]:
