@@ -189,7 +189,10 @@ def sample_refresh(trib, acc):
     acc[A_SAMPLES] += 1.0
 
 
-@kernel
+# error_model="numpy": a division by zero gives inf or NaN, which the monitor stops as a non-finite force, instead
+# of a ZeroDivisionError; no division here can meet a zero divisor in a valid state (the contacts guard theirs), and
+# without a check and an exception path per division (26 of them) the step runs about 10 % faster
+@kernel(error_model="numpy")
 def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, M_x, M_y, dt, work, acc):
     """One velocity-Verlet step of every body (see the module docstring) at inner-ring speed omega (rad/s) and
     loads F_x, F_y, F_z (N), M_x, M_y (N.m, about its centre) on the inner ring.
