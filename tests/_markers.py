@@ -59,6 +59,8 @@ PYTHON_HOSTS = {
 SSP_MASTERS = {
     "tests/cosim/test_ssp_masters.py": {
         "test_ecos_runs_the_package_as_spindle_run",
+        "test_libcosim_runs_the_package_as_spindle_run",
+        "test_omsimulator_runs_the_package_as_spindle_run",
     },
 }
 

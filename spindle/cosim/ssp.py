@@ -1,5 +1,6 @@
 """A run file's coupled system as an SSP 1.0 package (System Structure and Parameterization, Modelica
-Association, SSP 1.0, 2019) for other co-simulation masters.
+Association, SSP 1.0, 2019) for other co-simulation masters: libcosim, ecos and OMSimulator run it as written
+(README, "The closed loop in other co-simulation masters").
 
 The package (.ssp, a zip archive) holds:
 - SystemStructure.ssd: one ssd:Component per instance (source resources/<FMU file>), its connectors
@@ -22,9 +23,11 @@ PARAMETER_SET). Any other String that differs from the FMU's start value is writ
 the export's notes: a master without String values runs the start value; a configured FMU (spindle build
 --config) makes it the start value.
 
-Which algorithm: SSP 1.0 describes the system, not the master algorithm. libcosim's fixed-step algorithm
-is a Jacobi exchange; the project's master with `algorithm = "jacobi"` gives the same result (to the bit,
-tests/cosim/test_ssp.py), Gauss-Seidel differs by O(step).
+Which algorithm: SSP 1.0 describes the system, not the master algorithm. libcosim's, ecos's and
+OMSimulator's fixed-step masters exchange Jacobi-style; the project's master with `algorithm = "jacobi"`
+gives the same result in each, to the bit (tests/cosim/test_ssp.py, tests/cosim/test_ssp_masters.py),
+Gauss-Seidel differs by O(step). fmpy's simulate_ssp cannot run a package (README, "The closed loop in other
+co-simulation masters").
 
 Refused parameters are found before anything is written: the export initialises every instance with its
 parameters and inputs through the project's master first (spindle.cosim.master.Master) and raises its

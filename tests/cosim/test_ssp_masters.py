@@ -1,4 +1,4 @@
-"""The exported SSP packages in other co-simulation masters: ecos (ecospy) and OMSimulator run
+"""The exported SSP packages in other co-simulation masters: libcosim, ecos (ecospy) and OMSimulator run
 `spindle export-ssp` of runs/closed_loop_spring.toml and runs/startup_dem.toml unchanged, and give what
 `spindle run` gives with the Jacobi exchange (README, "The closed loop in other co-simulation masters").
 
@@ -8,35 +8,39 @@ parameters (BearingDEM.fmu starts at the 6208 and another oil) or by their start
 at the B7214C pair's set): no String value is in the packages.
 
 Expectation: the same numbers. Every master steps the same FMU code on the same Python, numpy and numba, and
-each of these masters exchanges Jacobi-style with the initialisation-mode outputs handed to the connected
-inputs, as `spindle run --set run.algorithm=jacobi` does. The acceptance is 1e-9 relative for
-closed_loop_spring; for startup_dem it is the DEM's reproducibility, and that is exact: the DEM run twice (the
-project's master and ecos, two processes and two hosts) gives the same bits at every one of its 1000 steps, so
-the test asserts equality. ecos's clock adds the step to the time at each step (10 s after 1000 steps of
-0.01 s is 1.7e-13 s off the grid k h), which the FMUs' 1 ps communication grid absorbs.
+each of them exchanges Jacobi-style with the initialisation outputs handed to the connected inputs, as
+`spindle run --set run.algorithm=jacobi` does. The acceptance is 1e-9 relative for closed_loop_spring; for
+startup_dem it is the DEM's reproducibility, and that is exact: the DEM runs of the project's master and of
+each of the three masters (other processes, other hosts) give the same bits at every one of its 1000 steps,
+so the test asserts equality. ecos's and OMSimulator's clocks add the step at each step (10 s after 1000 steps
+of 0.01 s is 1.7e-13 s off the grid k h), which the FMUs' 1 ps communication grid absorbs; OMSimulator is
+given the stop time its clock reaches (omsimulator_stop_time).
 
-Measured here (2-core machine): ecos closed_loop_spring and startup_dem equal `spindle run` to the bit in every
-recorded variable at every step (largest relative difference 0), 6 s and 46 s of wall time.
+Measured here (2-core machine): libcosim, ecos and OMSimulator equal `spindle run` in every recorded variable
+at every step for both runs (largest relative difference 0); no error line in ecos's or OMSimulator's log, no
+algebraic loop reported by OMSimulator; the six tests take about 2 minutes with the environment made.
 
 Marked `ssp_masters` (tests/_markers.py): the first run makes a virtual environment under /tmp with pip
 (ecospy and the TBB runtime it needs, numpy, numba and scipy at this run's versions; a minute with pip's
-cache) and the two runs take about two minutes per master; `make test-ssp-masters`, left out of `make test`.
-OMSimulator is taken from the environment variable OMSIMULATOR or the PATH (its PyPI package downloads
-the binary from the OpenModelica build server at install time; README gives the commands that build it
-from source); without it its tests are skipped, saying so.
+cache), which also is the Python OMSimulator's FMUs start (BEARING_FMU_PYTHON); `make test-ssp-masters`,
+left out of `make test`. OMSimulator is taken from the environment variable OMSIMULATOR or the PATH (its
+PyPI package downloads the binary from the OpenModelica build server at install time; README gives the
+commands that build it from source); without it its tests are skipped, saying so.
 """
 
 import json
 import os
+import shutil
 import subprocess
 from importlib.metadata import version
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 from spindle.cosim.master import run
 from spindle.cosim.runfile import load_run
-from spindle.cosim.ssp import PARAMETER_SET, export_ssp
+from spindle.cosim.ssp import PARAMETER_SET, export_ssp, run_ssp_in_libcosim
 from tests.conftest import ROOT, _fmu, pip_environment
 
 SPEED = 1047.1975511965977  # rad/s: 10 000 rpm
@@ -106,7 +110,19 @@ def _largest_difference(rows, names, columns):
 
 
 def _error_lines(log):
-    return [line for line in log.splitlines() if "error" in line.lower() or "exception" in line.lower()]
+    """The error lines of a master's log: ecos's `[error]`/`[critical]`, OMSimulator's `error:`, an exception."""
+    marks = ("[error]", "[critical]", "error:", "exception")
+    return [line for line in log.splitlines() if any(mark in line.lower() for mark in marks)]
+
+
+def omsimulator_stop_time(spec):
+    """The stop time to give OMSimulator for the run's steps: its clock adds the step at each step (1000 steps of
+    0.01 s end at 9.99999999999983 s), so a stop time of 10 s asks for a last step of 1.7e-13 s, which the FMUs
+    refuse (their communication steps are on a 1 ps grid)."""
+    time = spec.start
+    for _ in range(round((spec.stop - spec.start) / spec.step)):
+        time += spec.step
+    return time
 
 
 @pytest.mark.parametrize("name", RUNS)
@@ -134,3 +150,79 @@ def test_ecos_runs_the_package_as_spindle_run(name, exported, ssp_python, tmp_pa
     assert max(worst.values()) <= TOLERANCE[name], {k: v for k, v in worst.items() if v > TOLERANCE[name]}
     # the loop did something: the inner ring warmed
     assert columns["spindle.T_inner_ring_1"][-1] > columns["spindle.T_inner_ring_1"][0] + 5.0
+
+
+@pytest.mark.parametrize("name", RUNS)
+def test_libcosim_runs_the_package_as_spindle_run(name, exported):
+    """libcosim (libcosimpy, in this process) loads the package with CosimExecution.from_ssp_file and steps it
+    to the stop time: every recorded variable equals `spindle run`'s (Jacobi) at every step."""
+    pytest.importorskip("libcosimpy", reason="libcosimpy not installed (optional extra 'cosim')")
+    spec, package, columns = exported[name]
+    names = [n for n in columns if n != "time"]
+    out = run_ssp_in_libcosim(package, spec.step, spec.stop, names)
+    rows = np.column_stack([out["time"], *(out[n] for n in names)])
+    np.testing.assert_allclose(rows[:, 0], columns["time"], rtol=1e-12, atol=0.0)
+    worst = _largest_difference(rows, names, columns)
+    assert max(worst.values()) <= TOLERANCE[name], {k: v for k, v in worst.items() if v > TOLERANCE[name]}
+
+
+def _omsimulator_rows(path, prefix, names):
+    """Rows (time, then `names`) of an OMSimulator result file (MATLAB v4, the Modelica result layout: names
+    and dataInfo per variable, constants in data_1, trajectories in data_2 with time first), one row per
+    communication point: OMSimulator writes a point twice (before and after its events), the last is kept."""
+    from scipy.io import loadmat
+
+    mat = loadmat(path, chars_as_strings=False)
+    listed = ["".join(mat["name"][:, j]).rstrip() for j in range(mat["name"].shape[1])]
+    info, data = mat["dataInfo"], {1: mat["data_1"], 2: mat["data_2"]}
+    columns = []
+    for name in ["time", *(prefix + n for n in names)]:
+        j = listed.index(name)
+        matrix, index = int(info[0, j]) or 2, int(info[1, j])
+        values = np.sign(index) * data[matrix][abs(index) - 1]
+        columns.append(np.broadcast_to(values, data[2][0].shape) if matrix == 1 else values)
+    table = np.column_stack(columns)
+    last = np.append(np.diff(table[:, 0]) > 0, True)
+    return table[last]
+
+
+def _omsimulator():
+    """The OMSimulator command-line program: $OMSIMULATOR, else OMSimulator on the PATH, else None."""
+    return os.environ.get("OMSIMULATOR") or shutil.which("OMSimulator")
+
+
+@pytest.mark.parametrize("name", RUNS)
+def test_omsimulator_runs_the_package_as_spindle_run(name, exported, ssp_python, tmp_path):
+    """OMSimulator (a native host: the FMUs start the environment's Python, BEARING_FMU_PYTHON) imports the
+    package with its fixed-step master at the package's step and runs it to the stop time given on its command
+    line: every recorded variable equals `spindle run`'s (Jacobi) at every step; no error line and no algebraic
+    loop in its log."""
+    program = _omsimulator()
+    if program is None:
+        pytest.skip("no OMSimulator program ($OMSIMULATOR or the PATH): README gives the commands that build it")
+    spec, package, columns = exported[name]
+    result = tmp_path / "result.mat"  # doubles (its .csv writes 12 digits)
+    env = {**_host_env(tmp_path / "cache"), "BEARING_FMU_PYTHON": str(ssp_python)}
+    proc = subprocess.run(
+        [
+            program,
+            f"--stopTime={omsimulator_stop_time(spec)!r}",
+            f"--resultFile={result}",
+            f"--tempDir={tmp_path}",
+            str(package),
+        ],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=tmp_path,
+        timeout=1800,
+    )
+    log = proc.stdout + proc.stderr
+    assert proc.returncode == 0, log[-3000:]
+    assert _error_lines(log) == [] and "warning" not in log and "Alg. loop" not in log, log[-3000:]
+    names = [n for n in columns if n != "time"]
+    rows = _omsimulator_rows(result, f"{Path(spec.path).stem}.system.", names)  # model: the SSD name
+    assert rows.shape == (len(columns["time"]), len(names) + 1)
+    np.testing.assert_allclose(rows[:, 0], columns["time"], rtol=1e-12, atol=0.0)
+    worst = _largest_difference(rows, names, columns)
+    assert max(worst.values()) <= TOLERANCE[name], {k: v for k, v in worst.items() if v > TOLERANCE[name]}
