@@ -12,7 +12,8 @@ host environment of their own with pip (a virtual environment with only fmpy, nu
 minute with pip's cache, and registry access): `make test` leaves them out, `make test-bare-host` runs
 them; likewise `python_hosts` (the FMUs in fmpy and native hosts on every supported Python, 3.10-3.13:
 a pip environment per Python, minutes) and `make test-python-hosts`, and `ehl_full` (the numerical EHL
-solver on all 55 Annexe D cases) and `make test-ehl-full`.
+solver on all 55 Annexe D cases) and `make test-ehl-full`, and `ssp_masters` (the exported SSP packages in
+ecos and OMSimulator: a pip environment with ecospy, minutes of runs) and `make test-ssp-masters`.
 The quick loop while editing kernels and models is `pytest -m "not slow and not fmu and not cosim"`
 (about a minute); `make test` runs everything else.
 """
@@ -53,6 +54,16 @@ PYTHON_HOSTS = {
     },
 }
 
+# the exported SSP packages in ecos and OMSimulator (tests/cosim/test_ssp_masters.py: a pip environment with
+# ecospy, both run files at full length in each master): `make test-ssp-masters`, outside `make test`
+SSP_MASTERS = {
+    "tests/cosim/test_ssp_masters.py": {
+        "test_ecos_runs_the_package_as_spindle_run",
+        "test_libcosim_runs_the_package_as_spindle_run",
+        "test_omsimulator_runs_the_package_as_spindle_run",
+    },
+}
+
 
 def pytest_collection_modifyitems(config, items):
     import pytest
@@ -76,3 +87,6 @@ def pytest_collection_modifyitems(config, items):
         if name in PYTHON_HOSTS.get(relative, ()):
             item.add_marker(pytest.mark.slow)
             item.add_marker(pytest.mark.python_hosts)
+        if name in SSP_MASTERS.get(relative, ()):
+            item.add_marker(pytest.mark.slow)
+            item.add_marker(pytest.mark.ssp_masters)
