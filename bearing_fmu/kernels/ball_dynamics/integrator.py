@@ -237,12 +237,14 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
     for i in range(2):
         ring[R_TH + i] += ring[R_VTH + i] * dt + ring[R_ATH + i] * h
         acc[A_WR + i] = ring[R_VTH + i] + ring[R_ATH + i] * dt
-    acc[A_FR] = F_x
-    acc[A_FR + 1] = F_y
-    acc[A_FR + 2] = F_z
-    acc[A_MR] = M_x
-    acc[A_MR + 1] = M_y
-    acc[A_MR + 2] = 0.0
+    # the ring's force and moment are summed in locals, not in acc: a store to an array that may alias the state
+    # arrays would be reloaded and stored again at every contact
+    fr_x = F_x
+    fr_y = F_y
+    fr_z = F_z
+    mr_x = M_x
+    mr_y = M_y
+    mr_z = 0.0
     # ---- ball-race contacts
     worst_pen = 0.0
     worst_pen_at = -1
@@ -323,17 +325,17 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
             work[W_MB + 1, j] += my
             work[W_MB + 2, j] += mz
             if race == 0:
-                acc[A_FR] -= fx
-                acc[A_FR + 1] -= fy
-                acc[A_FR + 2] -= fz
+                fr_x -= fx
+                fr_y -= fy
+                fr_z -= fz
                 # the ring takes the opposite of the contact's force and of its moment on the ball: about the ring's
                 # centre, -((p - c) x f + m) (the ball and the race touch through forces along common lines)
                 lx = balls[B_X, j] - cx
                 ly = balls[B_X + 1, j] - cy
                 lz = balls[B_X + 2, j] - cz
-                acc[A_MR] -= ly * fz - lz * fy + mx
-                acc[A_MR + 1] -= lz * fx - lx * fz + my
-                acc[A_MR + 2] -= lx * fy - ly * fx + mz
+                mr_x -= ly * fz - lz * fy + mx
+                mr_y -= lz * fx - lx * fz + my
+                mr_z -= lx * fy - ly * fx + mz
             power += p
             work[W_LOADED, j] += 1.0
             pen = delta * inv_lim
@@ -344,6 +346,12 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
                 worst_chat = counters[kc]
                 worst_chat_at = race * Z + j
         acc[A_POWER_I + race] = power
+    acc[A_FR] = fr_x
+    acc[A_FR + 1] = fr_y
+    acc[A_FR + 2] = fr_z
+    acc[A_MR] = mr_x
+    acc[A_MR + 1] = mr_y
+    acc[A_MR + 2] = mr_z
     # ---- cage balls
     R_sum = 0.5 * par[P_D] + par[P_R_CAGE]
     K_cb = par[P_K_CB]
