@@ -641,11 +641,9 @@ DEM_PARAMETERS = (
         "DEM time step, 0 = automatic (half the stability limit of the stiffest pair); <= 1e-4 s",
         min=0.0,
         max=DEM_DT_MAX,
-        limits="0 = automatic (follows the loads and the film); a fixed step above 1.3 x the automatic step at the "
-        "step's inputs is warned about once (fmi2Warning): there the outputs can be wrong, the torque by tens of "
-        "percent, without a monitor stop (docs/reports/dem_steps.md); above the stability limit the monitor stops it "
-        "(fmi2Discard) with a step that works there and dt = 0 suggested; above 1e-4 s it exceeds the limit of any "
-        "steel ball bearing",
+        limits="0 = automatic (follows the loads and the film); a fixed step above the stability limit of the "
+        "bearing at the step's loads is stopped by the monitor (fmi2Discard) with a step that works there and "
+        "dt = 0 suggested; above 1e-4 s it exceeds the limit of any steel ball bearing",
     ),
     Variable(
         "refresh_interval",

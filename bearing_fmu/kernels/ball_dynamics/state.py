@@ -199,7 +199,9 @@ W_VC = 15  # predicted cage-ball velocity (m/s), 3 rows
 W_ORBIT = 18  # orbital angular speed of each ball about z from the predicted velocity (rad/s)
 W_LOADED = 19  # races on which each ball is loaded in the current step (0, 1, 2)
 W_CAP_BALL = 20  # each ball's capacitance at the last refresh, inner and outer contact in series (F)
-W_SIZE = 21
+W_DISS = 21  # tangential force on each ball that dissipates at its contacts (N), 3 rows per race (inner 21-23)
+W_ARM = 27  # contact point from the ball's centre (m), 3 rows per race (inner 27-29)
+W_SIZE = 33
 
 # ---- scalar work of one step: float64[A_SIZE] -----------------------------------------------------
 A_FR = 0  # force on the inner ring (N), 3 entries

@@ -148,7 +148,6 @@ class DemModel:
         # restores it when the call fails
         self._start = self.get_state()
         self.step_halvings = 0  # times the last call's automatic step was halved after a monitor stop
-        self._step_warned = False  # the step-accuracy warning was given (once per model)
         self._gather()
 
     # -- set-up --------------------------------------------------------------------------------
@@ -223,7 +222,6 @@ class DemModel:
         automatic = dt is None
         if automatic:
             dt = self.automatic_time_step(F_x, F_y, F_z, max(abs(self.omega), abs(omega)), M_x, M_y)
-        step_warning = self._step_accuracy(dt, automatic, F_x, F_y, F_z, max(abs(self.omega), abs(omega)), M_x, M_y)
         n_steps = time_step.step_count(interval, dt)
         self.step_halvings = 0
         while True:
@@ -261,24 +259,11 @@ class DemModel:
         # monitor has already stopped the step (penetration), so only the warning can apply here
         self.warnings = pressure_warnings(min(self.out[s.O_PMAX], P_MAX_ERROR), "the loads")
         self.warnings += self._oil_watch.warnings(T_oil)
-        self.warnings += step_warning
         # the contact ellipses against the shoulders: an output of the interval's end state, not of every step
         self.warnings += outputs.truncation_outputs(
             self.balls, self.ring, self.par, self._truncation_parameters, self._Q, self._signed_alpha, self.trunc,
             self.truncated,
         )  # fmt: skip
-
-    def _step_accuracy(self, dt, automatic, F_x, F_y, F_z, omega, M_x, M_y):
-        """The step's accuracy warning (time_step.step_accuracy_warning), given once per model: a step chosen by the
-        user (fixed, or a safety factor above the default) that exceeds the accurate range. Checked only while no
-        such warning was given and the step is not the default's."""
-        if self._step_warned or (automatic and self.safety <= SAFETY):
-            return []
-        stable = self.stable_time_step(F_x, F_y, F_z, omega, M_x=M_x, M_y=M_y)
-        default_step = time_step.automatic_time_step(stable, SAFETY, self.par, self.trib)
-        warning = time_step.step_accuracy_warning(dt, default_step, not automatic)
-        self._step_warned = bool(warning)
-        return warning
 
     def _run(self, n_steps, dt, omega, loads, T_oil):
         """One kernel call of n_steps steps of dt (s) to the inner-ring speed omega; returns the speed and the sum

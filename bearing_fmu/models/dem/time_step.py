@@ -16,11 +16,6 @@ SAFETY = 0.5  # default time step over the stability limit of the stiffest pair 
 MU_BOUNDARY = friction_coefficient(0.0)  # mu(Lambda) of the boundary regime (0.1), before any contact
 # an automatic step that the monitor stops is halved and the call repeated, at most this often (16x smaller)
 AUTO_STEP_HALVINGS = 4
-# the largest multiple of the default automatic step at which every output was measured accurate (within 1e-3 of a
-# 10x finer step) at the three operating points of docs/reports/dem_steps.md; above it, up to the monitor's chatter
-# stop, a ball's tangential spring and its film traction (mixed film) can dissipate spuriously: the 6208 at 3 kN,
-# 500 rad/s ran with 1.6x this step without a monitor stop and a torque tens of percent too high
-ACCURATE_STEP_FACTOR = 1.3
 
 
 def stable_time_step(bearing, par, balls, ring, trib, Q, F_x, F_y, F_z, omega, include_state, M_x, M_y):
@@ -55,21 +50,6 @@ def automatic_time_step(stable, safety, par, trib):
     ratio = damping_step_ratio(trib, p, 1.0)[0]  # largest c / m (1/s)
     ratio = max(ratio, p[s.P_C_SUPPORT] / p[s.P_M_RING], p[s.P_CT_SUPPORT] / p[s.P_I_RING])
     return min(dt, DAMPING_PLAN / ratio) if ratio > 0.0 else dt
-
-
-def step_accuracy_warning(dt, default_step, fixed):
-    """The warning (a list of one message, or empty) for a step dt (s) beyond ACCURATE_STEP_FACTOR x the automatic
-    step at the default safety, default_step (s); fixed: dt was given by the user (else it follows from a safety
-    factor above the default)."""
-    if dt <= ACCURATE_STEP_FACTOR * default_step:
-        return []
-    cause = f"the fixed step dt = {dt:.3g} s" if fixed else f"the step {dt:.3g} s of a safety factor above {SAFETY:g}"
-    return [
-        f"{cause} is {dt / default_step:.2f} x the automatic step at these inputs ({default_step:.3g} s); beyond "
-        f"{ACCURATE_STEP_FACTOR:g} x it the DEM was measured to run without a monitor stop while its torque was "
-        f"tens of percent off (mixed film: the asperities' spring with the film's traction; docs/reports/dem_steps.md)."
-        f" Use dt = 0 (automatic) or a step <= {ACCURATE_STEP_FACTOR * default_step:.3g} s"
-    ]
 
 
 def step_count(interval, dt):
