@@ -48,6 +48,19 @@ def contact_capacitance(eps_r, a, b, h_c, h_floor):
 
 
 @kernel
+def lubricated_contact_capacitance(K_cm, rho0, p_max, pressure_choice, a, b, h_c, h_floor, E_red, h_oil):
+    """Capacitance (F) of one loaded contact: the Hertz zone (eps_r at the contact pressure, contact_capacitance)
+    plus, with h_oil > 0 (m, the oil-availability gap), the oil-filled gap around it (eps_r at ambient pressure,
+    outside_hertz_capacitance). h_oil = 0: the Hertz zone alone (the outside term is not computed)."""
+    eps = contact_permittivity(K_cm, rho0, p_max, pressure_choice)
+    C = contact_capacitance(eps, a, b, h_c, h_floor)
+    if h_oil > 0.0:
+        eps_ambient = contact_permittivity(K_cm, rho0, 0.0, PRESSURE_MAX)
+        C += outside_hertz_capacitance(eps_ambient, a, b, p_max, E_red, h_c, h_oil, h_floor)
+    return C
+
+
+@kernel
 def ball_capacitance(C_inner, C_outer):
     """Capacitance (F) of one ball: inner and outer contacts in series; 0 if either contact is open."""
     if C_inner <= 0.0 or C_outer <= 0.0:

@@ -125,6 +125,28 @@ def outside_hertz_capacitance(eps_r, a, b, p_max, E_red, h_c, h_oil, h_floor):
     return epsilon_0 * 2.0 * (inlet + outlet)
 
 
+def lubricated_contact_capacitance(
+    K_cm, rho0, p_max, pressure_choice, a, b, h_c, h_floor, E_red, h_oil, outside=outside_hertz_capacitance
+):
+    """The Hertz zone (eps_r at the contact pressure) plus, for h_oil > 0, the oil-filled gap around it (eps_r at
+    ambient pressure, p = 0). outside: the outside-Hertz term, by default this module's brute force (a fraction of
+    a second a contact); the assembly twins pass assembly_outside (see there)."""
+    C = contact_capacitance(contact_permittivity(K_cm, rho0, p_max, pressure_choice), a, b, h_c, h_floor)
+    if h_oil > 0.0:
+        C += outside(contact_permittivity(K_cm, rho0, 0.0, PRESSURE_MAX), a, b, p_max, E_red, h_c, h_oil, h_floor)
+    return C
+
+
+def assembly_outside(*args):
+    """The outside-Hertz term as the assembly twins (ref_analytic, ref_contacts, ref_ball_dynamics) take it: the
+    kernel's value. They twin which contacts count and how (series, parallel, the eps_r of each region); the
+    term itself is compared with outside_hertz_capacitance above in tests/unit/test_capacitance.py, and the
+    brute force, run for every contact of every refresh, would make the assembly comparisons minutes long."""
+    from bearing_fmu.kernels.capacitance import outside_hertz_capacitance as kernel
+
+    return kernel(*args)
+
+
 # the kernels this module twins, by name (tests/unit/test_every_kernel_has_a_twin.py)
 KERNEL_MODULE = "bearing_fmu.kernels.capacitance"
 TWINS = {
@@ -133,4 +155,5 @@ TWINS = {
     "ball_capacitance": ball_capacitance,
     "bearing_capacitance": bearing_capacitance,
     "outside_hertz_capacitance": outside_hertz_capacitance,
+    "lubricated_contact_capacitance": lubricated_contact_capacitance,
 }

@@ -193,3 +193,19 @@ def test_outside_hertz_capacitance_far_field(radii):
     # and it grows with the oil and with eps_r
     assert 0.0 < C(5e-6) < C(20e-6) < C(40e-6)
     assert ck.outside_hertz_capacitance(2.3, a, b, p, E_STEEL, h_c, 10e-6, H_FLOOR) > C(10e-6 - h_c)
+
+
+@pytest.mark.parametrize("h_oil", [0.0, 10e-6])
+@pytest.mark.parametrize("choice", [ck.PRESSURE_MAX, ck.PRESSURE_MEAN])
+def test_lubricated_contact_capacitance_against_twin(choice, h_oil):
+    a, b, _, p = _hertz(800.0, "outer")
+    args = (K_CM, 870.0, p, choice, a, b, 0.2e-6, H_FLOOR, E_STEEL, h_oil)
+    got = ck.lubricated_contact_capacitance(*args)
+    assert_close(got, rc.lubricated_contact_capacitance(*args), RTOL if h_oil == 0.0 else RTOL_OUTSIDE, str(args))
+    hertz = ck.contact_capacitance(ck.contact_permittivity(K_CM, 870.0, p, choice), a, b, 0.2e-6, H_FLOOR)
+    if h_oil == 0.0:  # the Hertz zone alone, bit for bit
+        assert got == hertz
+    else:  # plus the gap around it, at the ambient permittivity (2.2 at the calibration density)
+        assert got - hertz == pytest.approx(
+            ck.outside_hertz_capacitance(2.2, a, b, p, E_STEEL, 0.2e-6, h_oil, H_FLOOR), rel=1e-12, abs=0
+        )

@@ -41,6 +41,8 @@ CASES = [
     ("6208 radial 3k, unloaded balls, Chittenden, capacitance off", "6208", dict(film="chittenden", capacitance=False),
      dict(omega=3000 * RPM, F_x=3000.0)),
     ("6208 at rest", "6208", dict(), dict(omega=0.0, F_x=2000.0, F_z=300.0)),
+    ("6208 lubricated region", "6208", dict(capacitance_region="lubricated", oil_gap=5e-6),
+     dict(omega=3000 * RPM, F_x=3000.0, F_z=200.0)),
     ("6208 inner race control, Masjedi-Khonsari, hot", "6208", dict(race_control="inner", film="masjedi_khonsari"),
      dict(omega=-2000 * RPM, F_x=1500.0, T_oil=353.15)),
 ]  # fmt: skip
