@@ -116,8 +116,8 @@ class Scene:
             out.append(f"capacitance_region = {self.capacitance_region!r}: allowed {list(CAPACITANCE_REGIONS)}")
         elif self.capacitance_region != "hertz" and not self.capacitance:
             out.append(f"capacitance_region = {self.capacitance_region!r} needs capacitance = true")
-        if not 0.0 < self.oil_gap <= 100e-6:
-            out.append(f"oil_gap = {self.oil_gap} m: allowed ]0, 1e-4] m")
+        if not 0.0 < self.oil_gap <= 50e-6:  # the paraboloid gap: about 0.3 D across the groove at 50 um
+            out.append(f"oil_gap = {self.oil_gap} m: allowed ]0, 5e-5] m")
         if not 1e-15 <= self.tolerance <= 1e-3:
             out.append(f"tolerance = {self.tolerance}: allowed [1e-15, 1e-3]")
         if self.drive not in DRIVES:
