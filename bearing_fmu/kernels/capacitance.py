@@ -129,6 +129,41 @@ def _gap_coefficients(T0, q0, T, F0, k2, s):
 
 
 @kernel
+def _bound_crossing(T0, q0, F0, m0, T1, m1, H, k2, s, last):
+    """The T in [T0, T1] where m(T) = H, m = max(A, B) (last = 0: the first ring the oil bound cuts) or min(A, B)
+    (last = 1: the last ring in the oil), m0 <= H <= m1 its values at the ends; Illinois regula falsi, 8
+    iterations. Returns (T, A, B, gap integrals, integrands) at the final estimate."""
+    lo, m_lo, hi, m_hi = T0, m0 - H, T1, m1 - H
+    side = 0
+    T = T1
+    A = 0.0
+    B = 0.0
+    F = F0
+    q = q0
+    if m_lo >= 0.0 or T1 <= T0:  # the crossing is at T0 (a cell that starts on the bound)
+        T = T0
+        A, B, F, q = _gap_coefficients(T0, q0, T0, F0, k2, s)
+        return T, A, B, F, q
+    for _it in range(8):
+        if m_hi == m_lo:
+            break
+        T = (lo * m_hi - hi * m_lo) / (m_hi - m_lo)
+        A, B, F, q = _gap_coefficients(T0, q0, T, F0, k2, s)
+        m = (min(A, B) if last else max(A, B)) - H
+        if m >= 0.0:
+            hi, m_hi = T, m
+            if side == 1:
+                m_lo *= 0.5
+            side = 1
+        else:
+            lo, m_lo = T, m
+            if side == -1:
+                m_hi *= 0.5
+            side = -1
+    return T, A, B, F, q
+
+
+@kernel
 def _ring_integrals(T, k, A, B, h0, H):
     """Angular integrals (-, over theta in [0, pi/2]) of the ring of the confocal coordinate T whose gap is
     h0 + A cos^2 theta + B sin^2 theta (m): (sum of dA-weight / h, sum of h0 dA-weight / h^2), over the angles
@@ -230,26 +265,31 @@ def outside_hertz_capacitance(eps_r, a, b, p_max, E_red, h_c, h_oil, h_floor):
     T_prev = 0.0
     f1_prev = 0.0  # integrands (T x ring integrals) at T_prev
     f2_prev = 0.0
-    m_prev = 0.0  # min(A, B) at T_prev: the ring is wholly out of the oil once it reaches H
     F = (0.0, 0.0, 0.0, 0.0)  # int_0^T_prev of the four gap integrands
     q = _gap_integrands(0.0, k2)  # and the integrands at T_prev
+    A_prev = 0.0  # gap coefficients at T_prev
+    B_prev = 0.0
     i1 = 0.0
     i2 = 0.0
     T = OUTSIDE_START * T_e
     for _ in range(OUTSIDE_MAX_NODES):
         A, B, F_T, q_T = _gap_coefficients(T_prev, q, T, F, k2, s)
+        if max(A_prev, B_prev) <= H < max(A, B):
+            # the bound starts to cut the rings inside this cell: end the whole rings where max(A, B) = H (with the
+            # ring just inside), and go on from there, so that the trapezoid does not straddle the kink
+            T_a, A_a, B_a, F_a, q_a = _bound_crossing(T_prev, q, F, max(A_prev, B_prev), T, max(A, B), H, k2, s, 0)
+            r1, r2 = _ring_integrals(T_a, k, A_a, B_a, h0, max(H, max(A_a, B_a)))
+            i1 += 0.5 * (T_a - T_prev) * (f1_prev + T_a * r1)
+            i2 += 0.5 * (T_a - T_prev) * (f2_prev + T_a * r2)
+            T_prev, F, q, A_prev, B_prev = T_a, F_a, q_a, A_a, B_a
+            f1_prev = T_a * r1
+            f2_prev = T_a * r2
+            A, B, F_T, q_T = _gap_coefficients(T_prev, q, T, F, k2, s)
         if min(A, B) >= H:
-            # the last ring leaves the oil inside this cell: end the integral there (regula falsi on min(A, B) = H),
-            # with the ring just inside (for a circular contact the whole ring leaves at once)
-            lo, m_lo, hi, m_hi = T_prev, m_prev, T, min(A, B)
-            for _it in range(4):
-                T_x = lo + (H - m_lo) / (m_hi - m_lo) * (hi - lo)
-                A, B, _F, _q = _gap_coefficients(T_prev, q, T_x, F, k2, s)
-                if min(A, B) >= H:
-                    hi, m_hi = T_x, min(A, B)
-                else:
-                    lo, m_lo = T_x, min(A, B)
-            r1, r2 = _ring_integrals(T_x, k, A, B, h0, max(H, min(A, B)))
+            # the last ring leaves the oil inside this cell: end the integral where min(A, B) = H, with the ring just
+            # inside (for a circular contact the whole ring leaves at once)
+            T_x, A_x, B_x, _F, _q = _bound_crossing(T_prev, q, F, min(A_prev, B_prev), T, min(A, B), H, k2, s, 1)
+            r1, r2 = _ring_integrals(T_x, k, A_x, B_x, h0, max(H, min(A_x, B_x)))
             i1 += 0.5 * (T_x - T_prev) * (f1_prev + T_x * r1)
             i2 += 0.5 * (T_x - T_prev) * (f2_prev + T_x * r2)
             break
@@ -259,7 +299,8 @@ def outside_hertz_capacitance(eps_r, a, b, p_max, E_red, h_c, h_oil, h_floor):
         T_prev = T
         f1_prev = T * r1
         f2_prev = T * r2
-        m_prev = min(A, B)
+        A_prev = A
+        B_prev = B
         F = F_T
         q = q_T
         T *= ratio

@@ -53,6 +53,10 @@ COVERED_THROUGH = {
         "bearing_fmu.kernels.capacitance.outside_hertz_capacitance",
         "the gap around the contact (A, B of each ring), compared through the capacitance integrated over it",
     ),
+    "bearing_fmu.kernels.capacitance._bound_crossing": (
+        "bearing_fmu.kernels.capacitance.outside_hertz_capacitance",
+        "where the oil bound first cuts the rings and where it ends, the split points of the compared quadrature",
+    ),
     "bearing_fmu.kernels.capacitance._ring_integrals": (
         "bearing_fmu.kernels.capacitance.outside_hertz_capacitance",
         "the angular integral of one ring, summed into the compared capacitance",
