@@ -244,7 +244,8 @@ def outside_hertz_capacitance(eps_r, a, b, p_max, E_red, h_c, h_oil, h_floor):
     layer h_c thick, mass conservation) bridges the gap in streamers, a fraction h_c/h of it, air (eps = 1) in
     between: eps_0 (1 + (eps_r - 1) h_c/h) / h. Both up to g = h_oil - h_c:
       C = eps_0 [ (eps_r + 1)/2 I_1 + (eps_r - 1)/2 I_2 ],  I_1 = int dA/h,  I_2 = int h_c dA/h^2.
-    Quadrature: T on a geometric grid (OUTSIDE_NODES_PER_DECADE) from OUTSIDE_START of the edge-layer scale to
+    Quadrature: T on a geometric grid (OUTSIDE_NODES_PER_DECADE, twice finer for k < 1 or a thin oil ring
+    h_oil - h_c < 10 h_c, four times for both) from OUTSIDE_START of the edge-layer scale to
     where the whole ring is out of the oil, trapezoid in T, Simpson per cell for A and B; the angle in closed form
     (8-point Gauss for a ring the bound cuts whose alpha, beta are within 1 %). About 60-80 rings a contact.
     """
@@ -261,7 +262,14 @@ def outside_hertz_capacitance(eps_r, a, b, p_max, E_red, h_c, h_oil, h_floor):
     T_e = (1.5 * k * h0 / s) ** (1.0 / 3.0)
     if T_e > 1.0:
         T_e = 1.0
-    ratio = 10.0 ** (1.0 / OUTSIDE_NODES_PER_DECADE)
+    # twice finer for a contact elongated along x (k < 1: not a ball on a race) and for a thin oil ring (H < 10 h0:
+    # the edge layer, where 1/h turns from 1/h0 to its decay, is then all of the integral); few rings either way
+    per_decade = OUTSIDE_NODES_PER_DECADE
+    if k < 1.0:
+        per_decade *= 2
+    if H < 10.0 * h0:
+        per_decade *= 2
+    ratio = 10.0 ** (1.0 / per_decade)
     T_prev = 0.0
     f1_prev = 0.0  # integrands (T x ring integrals) at T_prev
     f2_prev = 0.0
