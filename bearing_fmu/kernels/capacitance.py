@@ -77,7 +77,8 @@ def bearing_capacitance(C_inner, C_outer, C_background):
     return total
 
 
-# Gauss-Legendre nodes and weights on [-1, 1], 8 points (the angular integral of the outside capacitance)
+# Gauss-Legendre nodes and weights on [-1, 1], 8 points (the angular integral of a nearly circular ring the oil
+# bound cuts, where the closed forms cancel)
 _GL_X = (
     -0.9602898564975363,
     -0.7966664774136267,
@@ -100,7 +101,7 @@ _GL_W = (
 )
 OUTSIDE_NODES_PER_DECADE = 16  # geometric grid of the confocal coordinate T (-): 10**(1/16) = 1.155 per node
 OUTSIDE_START = 1e-2  # first node of that grid, times the edge-layer scale T_e (-); trapezoid from 0 below
-OUTSIDE_MAX_NODES = 600  # cap of that grid (25 decades; the integral ends long before)
+OUTSIDE_MAX_NODES = 600  # cap of that grid (9 decades at its finest, 37 at 16 a decade; the integral ends long before)
 
 
 @kernel
