@@ -16,7 +16,7 @@ import math
 
 from bearing_fmu_common.jit import kernel
 
-from .capacitance import ball_capacitance, contact_capacitance, contact_permittivity
+from .capacitance import ball_capacitance, lubricated_contact_capacitance
 from .ehl import film_parameter, film_thickness, lubrication_regime
 from .geometry import centrifugal_force, pass_frequencies, rolling_kinematics
 from .hertz import hertz_contact, hertz_stiffness, series_stiffness
@@ -49,7 +49,8 @@ B_C_BACKGROUND = 21  # background capacitance (F)
 B_CENTRIFUGAL = 22  # 1 = centrifugal load on, 0 = off
 B_TOL = 23  # relative tolerance of the radial equilibrium (-)
 B_CAPACITANCE = 24  # 1 = capacitance submodel on; 0 = null submodel (O_C_BEARING and ball rows C_i, C_o not written)
-B_SIZE = 25
+B_OIL_GAP = 25  # oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
+B_SIZE = 26
 
 # layout of the output array
 O_LAMBDA_I = 0
@@ -144,16 +145,18 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
         if Q_i > 0.0:
             loaded_i = True
             if capacitance:
-                eps_i = contact_permittivity(K_cm, rho0, p_i, int(brg[B_PRESSURE]))
-                C_i = contact_capacitance(eps_i, a_i, b_i, hc_i, brg[B_H_FLOOR])
+                C_i = lubricated_contact_capacitance(
+                    K_cm, rho0, p_i, int(brg[B_PRESSURE]), a_i, b_i, hc_i, brg[B_H_FLOOR], E_red, brg[B_OIL_GAP]
+                )
             lam_i = min(lam_i, L_i)
             hmin_i = min(hmin_i, hm_i)
             hc_i_min = min(hc_i_min, hc_i)
         if Q_o > 0.0:
             loaded_o = True
             if capacitance:
-                eps_o = contact_permittivity(K_cm, rho0, p_o, int(brg[B_PRESSURE]))
-                C_o = contact_capacitance(eps_o, a_o, b_o, hc_o, brg[B_H_FLOOR])
+                C_o = lubricated_contact_capacitance(
+                    K_cm, rho0, p_o, int(brg[B_PRESSURE]), a_o, b_o, hc_o, brg[B_H_FLOOR], E_red, brg[B_OIL_GAP]
+                )
             lam_o = min(lam_o, L_o)
             hmin_o = min(hmin_o, hm_o)
             hc_o_min = min(hc_o_min, hc_o)

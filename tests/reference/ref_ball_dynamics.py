@@ -165,8 +165,19 @@ def refresh(st, par, lub, omega, T_oil):
             trib[s.T_H_C, race, j] = h_c
             trib[s.T_LAMBDA, race, j] = lam
             if par[s.P_CAPACITANCE]:
-                eps = ref_capacitance.contact_permittivity(K_cm, rho0, p_max, int(par[s.P_PRESSURE]))
-                trib[s.T_CAP, race, j] = ref_capacitance.contact_capacitance(eps, a, b, h_c, par[s.P_H_FLOOR])
+                trib[s.T_CAP, race, j] = ref_capacitance.lubricated_contact_capacitance(
+                    K_cm,
+                    rho0,
+                    p_max,
+                    int(par[s.P_PRESSURE]),
+                    a,
+                    b,
+                    h_c,
+                    par[s.P_H_FLOOR],
+                    par[s.P_E_RED],
+                    par[s.P_OIL_GAP],
+                    outside=ref_capacitance.assembly_outside,
+                )
 
 
 def damped_hertz(K, delta, zeta, m_eff, v_app):

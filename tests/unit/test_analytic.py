@@ -65,6 +65,7 @@ SCENES = {
     "approximate_hertz": Scene(hertz="approximate"),
     "no_centrifugal": Scene(centrifugal=False),
     "mean_pressure_background": Scene(permittivity_pressure="mean", background_capacitance=30e-12),
+    "lubricated_region": Scene(capacitance_region="lubricated", oil_gap=20e-6),
 }
 # (omega rad/s, F_r N, T_oil K, lubricant)
 POINTS = [

@@ -140,7 +140,8 @@ P_K_SUPPORT = 65  # stiffness of the inner ring's support across the axis (x, y)
 P_C_SUPPORT = 66  # viscous damping of the support in x, y (N.s/m); none along the axis
 P_KT_SUPPORT = 67  # the support's tilt stiffness (N.m/rad): P_K_SUPPORT spread over the pitch circle, k (d_m/2)^2/2
 P_CT_SUPPORT = 68  # and its tilt damping (N.m.s/rad), c (d_m/2)^2/2
-P_SIZE = 69
+P_OIL_GAP = 69  # oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
+P_SIZE = 70
 
 # a ball-race contact counts as loaded in the outputs (loads, pressure, films, angles, n_loaded) when its approach
 # exceeds this (m): the rounding of the positions (~1e-18 m) leaves approaches of 1e-18-1e-15 m on contacts that
