@@ -77,15 +77,22 @@ def forget(benchmark):
         METRICS.write_text(json.dumps(metrics, indent=1) + "\n")
 
 
-def record(benchmark, key, value, unit, *, kind, target=None, note=""):
+def record(benchmark, key, value, unit, *, kind, target=None, note="", side_by_side=False):
     """Keep a headline number of a benchmark for docs/report.md (benchmarks/report.py) in docs/reports/metrics.json.
 
-    kind: "error" (deterministic: a second run must reproduce it exactly), "timing" (a median, reproduced
+    kind: "error" (deterministic: a second run must reproduce it to 1e-12 relative), "timing" (a median, reproduced
     within the noise band the report states) or "count". target: the budget (value <= target is met), from
-    docs/architecture.md's performance budget or the issue's acceptance; None when the number has none."""
+    docs/architecture.md's performance budget or the acceptance criteria; None when the number has none.
+    side_by_side: a ratio of two timings measured interleaved in one run (judged without the run's noise factor,
+    benchmarks/verdicts.py)."""
     metrics = json.loads(METRICS.read_text()) if METRICS.exists() else {}
     metrics.setdefault(benchmark, {})[key] = dict(
-        value=float(value), unit=unit, kind=kind, target=None if target is None else float(target), note=note
+        value=float(value),
+        unit=unit,
+        kind=kind,
+        target=None if target is None else float(target),
+        note=note,
+        side_by_side=side_by_side,
     )
     REPORTS.mkdir(parents=True, exist_ok=True)
     METRICS.write_text(json.dumps(metrics, indent=1) + "\n")
