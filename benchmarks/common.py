@@ -81,7 +81,7 @@ def record(benchmark, key, value, unit, *, kind, target=None, note="", side_by_s
     """Keep a headline number of a benchmark for docs/report.md (benchmarks/report.py) in docs/reports/metrics.json.
 
     kind: "error" (deterministic: a second run must reproduce it to 1e-12 relative), "timing" (a median, reproduced
-    within the noise band the report states) or "count". target: the budget (value <= target is met), from
+    within the noise band the report states) or "count". target: the budget (judged with the run's noise, benchmarks/verdicts.py), from
     docs/architecture.md's performance budget or the acceptance criteria; None when the number has none.
     side_by_side: a ratio of two timings measured interleaved in one run (judged without the run's noise factor,
     benchmarks/verdicts.py)."""
