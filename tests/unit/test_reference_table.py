@@ -5,10 +5,11 @@ import ast
 import json
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from benchmarks import reference_table
-from benchmarks.reference_cases import CASES, Comparison, worst
+from benchmarks.reference_cases import CASES, Comparison, ReferenceCase, worst
 from benchmarks.reference_cases.comparison import half_unit, printed_comparison
 
 VALIDATION = Path(__file__).resolve().parents[1] / "validation"
@@ -64,3 +65,12 @@ def test_every_case_is_asserted_by_a_validation_test():
     imported = imported_case_modules()
     for case in CASES.values():
         assert case.compare.__module__.rsplit(".", 1)[1] in imported, case.name
+
+
+def test_a_measured_case_is_plain_json_even_from_numpy_values():
+    """What reference_table.main writes for the report: numpy results (a solver's film, a model's output) are
+    converted, and the cost is a median over repeats."""
+    comparisons = [Comparison("q", np.float64(1.001), 1.0, 0.001, np.float64(0.01))]
+    case = ReferenceCase("n", "analytic", "r", "Paper (2018)", lambda: comparisons, lambda: lambda: None)
+    row = json.loads(json.dumps(reference_table.measure(case)))
+    assert row["within"] == 1 and row["deviation"] == pytest.approx(0.001) and row["repeats"] >= 5
