@@ -398,7 +398,7 @@ def main():
     entries = ladder(rows)
     for (fidelity, quantity), values in table.items():
         key = f"{fidelity}: max relative difference of {quantity}"
-        record("fidelity_ladder", key, max(values), "1", kind="error")
+        record("fidelity_ladder", key, max(values), "1", kind="difference")
     for name, (cost, _) in entries.items():
         record("fidelity_ladder", f"{name}: wall time per operating point", cost, "s", kind="timing")
     fronts = plot(entries, REPORTS / "fidelity_ladder.png")

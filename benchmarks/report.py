@@ -34,13 +34,15 @@ import xml.etree.ElementTree as ElementTree
 from pathlib import Path
 
 from . import reference_table
-from .common import METRICS, REPORTS, forget, machine_speed, record
+from .common import METRICS, REPORTS, core_contention, forget, machine_speed, record
 from .verdicts import (
+    DETERMINISTIC,
     MET,
     MISSED,
     REPEAT_RTOL,
     TIMING_NOISE,
     WITHIN_NOISE,
+    largest_contention,
     noise_factor,
     repeated,
     speed_spread,
@@ -51,6 +53,7 @@ ROOT = REPORTS.parent.parent
 REPORT = ROOT / "docs" / "report.md"
 PREVIOUS = REPORTS / "metrics.previous.json"
 MACHINE = "machine"  # metrics entry: the reference workload's time before each benchmark (common.machine_speed)
+CONTENTION = "contention"  # metrics entry: wall / CPU time of the workload before each benchmark (core_contention)
 
 # The knobs, each with its benchmark, what it varies, the reference and the figure. Order = order of the report.
 KNOBS = (
@@ -181,9 +184,11 @@ def run_benchmarks(names):
     """Run each benchmark's main() (it writes its report and metrics); returns {name: wall seconds}."""
     seconds = {}
     forget(MACHINE)
+    forget(CONTENTION)
     for name in names:
         module = importlib.import_module(f"benchmarks.{name}")
         record(MACHINE, f"reference workload before {name}", machine_speed(), "s", kind="machine")
+        record(CONTENTION, f"wall / CPU before {name}", core_contention(), "1", kind="machine")
         t0 = time.perf_counter()
         print(f"== {name}", flush=True)
         forget(name)
@@ -274,12 +279,13 @@ def timing_rows(metrics, noise):
 
 
 def timing_section(metrics):
-    noise, spread = noise_factor(metrics, MACHINE)
+    noise, spread, contention = noise_factor(metrics, MACHINE, CONTENTION)
     rows = timing_rows(metrics, noise)
     lines = [
-        f"Noise factor of this run: x{noise:.2f}, the larger of x{TIMING_NOISE:.2f} (the scatter of a median between "
-        f"two runs in the same machine state) and x{spread:.2f} (the spread of the machine's own speed over this "
-        "run). A target is met when the median lies below target / noise factor, missed above target x noise "
+        f"Noise factor of this run: x{noise:.2f}, the largest of x{TIMING_NOISE:.2f} (the scatter of a median between "
+        f"two runs in the same machine state), x{spread:.2f} (the spread of the machine's own speed over this run) "
+        f"and x{contention:.2f} (the largest wall / CPU time of a reference workload before a benchmark: how far "
+        "other users' work on the shared cores slowed a process down). A target is met when the median lies below target / noise factor, missed above target x noise "
         "factor, and within noise between; a ratio of two timings measured side by side in one run is compared "
         "with its target directly (benchmarks/verdicts.py).",
         "",
@@ -340,7 +346,7 @@ def compare_runs(metrics, previous, rerun):
             old = previous.get(name, {}).get(key)
             if old is None:
                 continue
-            if m["kind"] in ("error", "count"):
+            if m["kind"] in DETERMINISTIC:
                 if repeated(old["value"], m["value"]):
                     same += 1
                     exact += old["value"] == m["value"]
@@ -365,15 +371,18 @@ def reproduction_section(metrics, previous, rerun):
         deviations = sorted(abs(r - 1.0) for r, _, _ in ratios)
         worst = max(ratios, key=lambda r: abs(math.log(r[0])))
         machine = speed_spread([metrics, previous], MACHINE)
-        band = max(TIMING_NOISE, machine)
+        contention = largest_contention([metrics, previous], CONTENTION)
+        band = max(TIMING_NOISE, machine, contention)
         outside = [r for r in ratios if not 1.0 / band <= r[0] <= band]
         lines += [
             f"Timings: {len(ratios)} medians compared; median deviation {100 * statistics.median(deviations):.1f} %, "
             f"largest x{worst[0]:.2f} ({worst[1]}: {worst[2]}).",
             "",
-            f"Noise band: within a factor {band:.2f} of the previous run, the larger of {TIMING_NOISE:.2f} (the "
-            f"same machine state) and {machine:.2f}, the spread of the machine's own speed over the two runs (a "
-            "fixed pure-Python workload timed before each benchmark, `benchmarks.common.machine_speed`). "
+            f"Noise band: within a factor {band:.2f} of the previous run, the largest of {TIMING_NOISE:.2f} (the "
+            f"same machine state), {machine:.2f}, the spread of the machine's own speed over the two runs (a "
+            "fixed pure-Python workload timed before each benchmark, `benchmarks.common.machine_speed`), and "
+            f"{contention:.2f}, the largest core contention measured in either run (`benchmarks.common."
+            "core_contention`). "
             + (
                 f"{len(outside)} outside: "
                 + "; ".join(f"{n}: {k} (x{r:.2f})" for r, n, k in sorted(outside, key=lambda o: -abs(math.log(o[0]))))

@@ -1,10 +1,11 @@
 """How docs/report.md judges its numbers: a timing against its target given the run's noise, and an error of one
 run against the same error of the previous run.
 
-Timing: a median measured on a shared machine varies from run to run. The run's noise factor is the larger of
-TIMING_NOISE (the scatter of a median between two runs in the same machine state) and the spread (largest over
+Timing: a median measured on a shared machine varies from run to run. The run's noise factor is the largest of
+TIMING_NOISE (the scatter of a median between two runs in the same machine state), the spread (largest over
 smallest) of the machine's own speed over the run (a fixed pure-Python workload timed before each benchmark,
-benchmarks.common.machine_speed). A target counts as met only when the median lies below target / noise factor,
+benchmarks.common.machine_speed) and the largest core contention measured before a benchmark (wall over CPU time
+of the same workload, benchmarks.common.core_contention: other users' processes sharing the cores). A target counts as met only when the median lies below target / noise factor,
 as missed above target x noise factor, and as within noise between. A ratio of two timings measured side by side
 in one run (interleaved, so both see the same machine state) is compared with its target directly.
 
@@ -17,6 +18,7 @@ TIMING_NOISE = 1.30  # a second run's timing medians are expected within this fa
 # state), or within the factor by which the machine's own speed varied over the two runs where that is larger
 REPEAT_RTOL = 1e-12
 MET, WITHIN_NOISE, MISSED = "met", "within noise", "missed"
+DETERMINISTIC = ("error", "difference", "count")  # kinds of metric a second run must repeat to REPEAT_RTOL
 
 
 def speed_spread(runs, machine_key):
@@ -25,10 +27,16 @@ def speed_spread(runs, machine_key):
     return max(speeds) / min(speeds) if speeds else 1.0
 
 
-def noise_factor(metrics, machine_key):
-    """(noise factor of the run, spread of the machine's speed over it)."""
+def largest_contention(runs, contention_key):
+    """Largest core contention (wall / CPU time of the reference workload) recorded in `runs` (1.0 without any)."""
+    return max((m["value"] for run in runs for m in run.get(contention_key, {}).values()), default=1.0)
+
+
+def noise_factor(metrics, machine_key, contention_key):
+    """(noise factor of the run, spread of the machine's speed over it, largest core contention measured in it)."""
     spread = speed_spread([metrics], machine_key)
-    return max(TIMING_NOISE, spread), spread
+    contention = largest_contention([metrics], contention_key)
+    return max(TIMING_NOISE, spread, contention), spread, contention
 
 
 def timing_verdict(m, noise):
