@@ -27,8 +27,8 @@ from bearing_fmu.build import SCENES_DIR
 from bearing_fmu.models.dem import DemModel
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
+from benchmarks.reference_cases.thrust_218 import BETA_F, D_E, F_CONF, NU, D, E, model, textbook_thrust
 from tests.reference import ref_hertz
-from tests.validation.test_worked_examples import BETA_F, D_E, F_CONF, NU, D, E, model, textbook_thrust
 
 BEARING = Path(__file__).parent / "data" / "angular_218_textbook.toml"
 LANDS = (114.70e-3, 135.90e-3)  # m, thrust-side land diameters of the inner and outer ring (the file's estimates)
