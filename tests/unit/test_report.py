@@ -30,7 +30,7 @@ def test_a_target_is_met_only_below_target_over_the_noise_factor(reports):
     common.record("closed_loop", "step / floor", 1.6, "1", kind="timing", target=1.5)
     common.record("closed_loop", "slow step", 3.0, "1", kind="timing", target=1.5)
     common.record("fmu_startup", "batched / kernels", 1.6, "1", kind="timing", target=1.5, side_by_side=True)
-    common.record("dem_error", "cage speed error", 0.001, "1", kind="error")
+    common.record("dem_steps", "cage speed error", 0.001, "1", kind="error")
     report.assemble({}, {}, {}, 1.0)
     text = (reports / "docs" / "report.md").read_text()
     assert "Noise factor of this run: x1.30" in text
