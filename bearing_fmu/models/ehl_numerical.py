@@ -129,15 +129,18 @@ def fluid_array(viscosity, density, eta0=0.0, alpha=0.0, T=0.0, wlf=None, murnag
 class SolverSettings:
     """Relaxation and multigrid parameters (docs/ehl_solver.md, Solver)."""
 
-    xi_switch: float = 0.3  # eps / dX^2 below which a node is relaxed by Jacobi distributive relaxation
+    xi_switch: float = 1.0  # eps / dX^2 below which a node is relaxed by Jacobi distributive relaxation
     omega_gs: float = 0.6  # Gauss-Seidel under-relaxation
     omega_jac: float = 0.2  # Jacobi distributive under-relaxation
     pre: int = 2  # sweeps before the coarse-grid correction
     post: int = 2  # sweeps after it
-    newton_coarse: int = 3  # Newton steps on the coarsest grid per visit of a cycle
+    newton_coarse: int = 1  # Newton steps on the coarsest grid per visit of a cycle
     newton_max: int = 40  # Newton steps of the first solve on the coarsest grid (nested iteration start)
-    tol: float = 1e-4  # converged: relative change of h_c and h_min over one cycle below tol
-    tol_residual: float = 1e-3  # and the rms Reynolds residual / rms Couette term (Solution.residual) below this
+    # converged: h_c and h_min each spread by less than tol (relative) over the last `window` cycles, a tenth of
+    # the 2 % discretisation error the default grid is chosen for, and the load error below tol_load
+    tol: float = 1e-3
+    window: int = 4
+    tol_load: float = 1e-4
     max_cycles: int = 60  # on the finest grid
     tol_nested: float = 1e-2  # a coarser grid of the nested iteration is left when h_c, h_min change less than this
     max_nested: int = 6  # or after this many cycles (its solution only starts the finer grid)
@@ -154,9 +157,9 @@ class Solution:
     p_max: float
     converged: bool
     cycles: int  # V-cycles on the finest grid
-    change: float  # last cycle's relative change of h_c or h_min, the larger
+    change: float  # relative spread of h_c or h_min over the last `window` cycles (SolverSettings), the larger
     load_error: float
-    residual: float  # rms Reynolds residual over pressurised nodes / rms Couette term there
+    residual: float  # rms complementarity residual over pressurised nodes / rms Couette term there (_residual)
     grid: "ContactGrid" = None
     P: np.ndarray = None
     H: np.ndarray = None
@@ -341,8 +344,13 @@ def solve_grids(grids, settings=None, h_c_guess=None):
     coarser, same box): Hertz start on the coarsest, solved there by Newton (`newton`, the load balance
     included); on each finer grid the interpolated solution (nested iteration) improved by FAS V-cycles
     down to the coarsest grid: on the intermediate grids until h_c and h_min change by less than tol_nested
-    over a cycle (at most max_nested cycles), on the finest until they change by less than tol, the load
-    error is below tol and the rms residual below tol_residual, or max_cycles. Returns a Solution."""
+    over a cycle (at most max_nested cycles), on the finest until their spread over the last `window` cycles
+    is below tol and the load error below tol_load, or max_cycles. Returns a Solution.
+
+    The criterion is on the films, not on the residual: the rms residual can sit in a limit cycle (case 6 of
+    Annexe D on level 3: 8.5e-4 and 2.7e-2 on alternate cycles, nodes at the cavitation boundary switching)
+    with h_c and h_min steady to 1e-4, and a slow mode of the side lobes moves h_min by a few tenths of a
+    percent per cycle at residuals ~1e-3 (case 28, level 2), which a spread over several cycles sees."""
     s = settings or SolverSettings()
     levels = [_Level(g, s) for g in grids]
     g0 = grids[0]
@@ -360,35 +368,50 @@ def solve_grids(grids, settings=None, h_c_guess=None):
         P = prolong_bilinear(P)
         F = np.zeros_like(P)
         L = levels[l]
-        films = _films(L, P, H0)
+        films = [_films(L, P, H0)]
         converged = False
         last = l == len(levels) - 1
         for cycle in range(1, (s.max_cycles if last else s.max_nested) + 1):
             H0 = _cycle(levels, l, P, F, LOAD, H0)
-            new = _films(L, P, H0)
-            change = max(abs(new[0] - films[0]) / abs(new[0]), abs(new[1] - films[1]) / abs(new[1]))
-            films = new
+            films.append(_films(L, P, H0))
             load_error = (L.load(P) - LOAD) / LOAD
+            if not last:
+                change = _spread(films[-2:])
+                history.append((l, cycle, change, load_error))
+                if change < s.tol_nested:
+                    break
+                continue
+            change = _spread(films[-s.window :]) if cycle >= s.window else _spread(films[-2:])
             history.append((l, cycle, change, load_error))
             if not np.all(np.isfinite(P)):
                 break
-            if not last and change < s.tol_nested:
-                break
-            if change < s.tol and abs(load_error) < s.tol and _residual(L, P, H0) < s.tol_residual:
+            if cycle >= s.window and change < s.tol and abs(load_error) < s.tol_load:
                 converged = True
                 break
     return _solution(levels[-1], P, H0, converged, cycle, change, load_error, history)
 
 
+def _spread(films):
+    """Largest relative spread (max - min) / |last| of h_c and of h_min over a list of (h_c, h_min)."""
+    return max(np.ptp([f[q] for f in films]) / abs(films[-1][q]) for q in (0, 1))
+
+
 def _residual(L, P, H0):
-    """rms Reynolds residual over the pressurised nodes / rms Couette term there (-)."""
+    """rms complementarity residual over the pressurised nodes / rms Couette term there (-): at each interior
+    node min(P d, -R) (d the node's own derivative, _ncp_scale), which is the Reynolds residual where the
+    pressure is well above 0, a positive residual where a cavitated node should carry pressure, and only
+    P d where a node at the cavitation boundary holds a residue of pressure (P ~ 1e-7 p_h) that the
+    complementarity will set to 0: the raw residual of such nodes kept the heavy loads' rms at 1.5e-3 with
+    the films steady to 5e-5."""
     g = L.g
     R = L.operator(P, H0)
+    ncp = np.minimum(P * _ncp_scale(L), -R)[1:-1, 1:-1]
     flux = L.rho * L.H
     couette = np.zeros_like(P)
     couette[1:] = (flux[1:] - flux[:-1]) / g.dX
     wet = P > 0.0
-    return math.sqrt(np.mean(R[wet] ** 2) / max(np.mean(couette[wet] ** 2), 1e-300))
+    n_wet = max(int(wet.sum()), 1)
+    return math.sqrt(np.sum(ncp**2) / n_wet / max(np.mean(couette[wet] ** 2), 1e-300))
 
 
 def _solution(L, P, H0, converged, cycles, change, load_error, history):
@@ -428,23 +451,42 @@ def alpha_star(fluid, p_h):
     return 1.0 / np.trapezoid(inv, p)
 
 
+def contact_box(H_c):
+    """Computational box (x_in, x_out, y_half) in Hertz units for a contact whose central film is about H_c (-).
+
+    The inlet must be long enough for the film to build fully: Hamrock and Dowson's starvation boundary puts
+    it at m* = 1 + 3.06 H_c^0.58 semi-axes from the centre; the box takes 2.4 (m* - 1) past the Hertz edge,
+    which is the margin of the box [-3.5, 1.5] x [-2, 2] that matches the thesis within 1 % at the light
+    loads (H_c ~ 0.16). Heavy loads (H_c ~ 0.02) need a much shorter inlet, so their box shrinks by a factor
+    s (down to 0.6) and the same node count resolves their inlet and exit constriction with spacing s times
+    smaller; the exit keeps at least 1.25 (the pressure ends just past X = 1). s = 1 is the box of the
+    light loads; X = 0 and Y = 0 stay nodes of every level (grid_hierarchy)."""
+    s = min(1.0, max(0.6, (2.5 + 2.4 * 3.06 * H_c**0.58) / 5.0))
+    spacing0 = s / 8.0  # node spacing of level 0 (41 nodes over 5 s)
+    x_out = max(12, math.ceil(1.25 / spacing0)) * spacing0
+    return (x_out - 5.0 * s, x_out, 2.0 * s)
+
+
 def grid_hierarchy(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=2, coarsest=0, box=(-3.5, 1.5, 2.0)):
     """Nested grids of the box X in [box[0], box[1]], |Y| <= box[2] (Hertz units): level l has
-    (40 2^l + 1) x (32 2^l + 1) nodes (level 2: 161 x 129, dX = 0.031, dY = 0.031), so X = 0 and Y = 0
-    are nodes of every level."""
+    (40 2^l + 1) x (32 2^l + 1) nodes (level 2 of the box [-3.5, 1.5] x [-2, 2]: 161 x 129, dX = dY = 0.031),
+    so X = 0 and Y = 0 are nodes of every level when box[0] is a multiple of the level-0 spacing."""
     return [
         ContactGrid(Rx, Ry, load, u_e, E_red, eta0, fluid, Domain(box[0], box[1], box[2], 40 * 2**l + 1, 32 * 2**l + 1))
         for l in range(coarsest, finest + 1)
     ]
 
 
-def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=2, coarsest=0, settings=None):
+def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=2, coarsest=0, settings=None, box=None):
     """Steady isothermal EHL film of one contact in SI: reduced radii Rx (along the entrainment), Ry (m),
     load (N), entrainment speed u_e = (u1 + u2) / 2 (m/s), reduced modulus E' (Pa), viscosity at p = 0
     eta0 (Pa.s), fluid array (fluid_array). Returns a Solution (h_c, h_min, hm_centre, hm_lateral in m,
-    p_max in Pa, convergence record, fields) on the grid of level `finest` (grid_hierarchy)."""
-    grids = grid_hierarchy(Rx, Ry, load, u_e, E_red, eta0, fluid, finest, coarsest)
-    g = grids[0]
-    U, G, Wd = ehl.dimensionless_groups(eta0, alpha_star(fluid, g.p_h), E_red, u_e, load, Rx)
-    h_c_guess = ehl.film_hamrock_dowson(U, G, Wd, g.k)[0] * Rx
+    p_max in Pa, convergence record, fields) on the grid of level `finest` (grid_hierarchy) of the box
+    (x_in, x_out, y_half), by default contact_box of the Hamrock-Dowson central film."""
+    k, ell_E, ell_K = hertz_coefficients_exact(Rx, Ry)
+    a, b, _, p_h = hertz_contact(load, Rx, Ry, E_red, k, ell_E, ell_K)
+    U, G, Wd = ehl.dimensionless_groups(eta0, alpha_star(fluid, p_h), E_red, u_e, load, Rx)
+    h_c_guess = ehl.film_hamrock_dowson(U, G, Wd, k)[0] * Rx
+    box = box or contact_box(h_c_guess * Rx / b**2)
+    grids = grid_hierarchy(Rx, Ry, load, u_e, E_red, eta0, fluid, finest, coarsest, box)
     return solve_grids(grids, settings, h_c_guess)
