@@ -3,6 +3,7 @@ viscosity and Murnaghan density) and its time per case; writes docs/reports/ehl_
 
     python -m benchmarks.ehl_solver [--level 3] [--cases 1,6,...] [--out docs/reports/ehl_solver.md]
     python -m benchmarks.ehl_solver --study 6,28 --levels 1,2,3,4 [--out docs/reports/ehl_grid_study.md]
+    python -m benchmarks.ehl_solver --pareto 1,2,3   (after a table run per level: docs/reports/ehl_pareto.png)
 
 Each row: the thesis' h_c, h_min, hm_centre, hm_lateral, the solver's, their relative differences, the
 convergence record and the wall time of the solve (one core: BLAS limited to one thread, compiled kernels
@@ -18,6 +19,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 import argparse  # noqa: E402
 import csv  # noqa: E402
+import json  # noqa: E402
 import math  # noqa: E402
 import statistics  # noqa: E402
 import time  # noqa: E402
@@ -74,7 +76,7 @@ def _within(c, sol):
 
 
 def table(chosen, level, out):
-    rows, times, loads, n_conv, n_within = [], [], [], 0, 0
+    rows, times, loads, n_conv, n_within, record = [], [], [], 0, 0, []
     for c in cases():
         if chosen and c["n"] not in chosen:
             continue
@@ -84,6 +86,10 @@ def table(chosen, level, out):
         n_conv += sol.converged
         n_within += _within(c, sol)
         rows.append(_row(c, sol, dt))
+        record.append(
+            {"n": c["n"], "k": c["k"], "converged": bool(sol.converged), "s": dt, "load": loads[-1]}
+            | {"h_c": _diff(sol.h_c, c["hc_nm"]), "h_min": _diff(sol.h_min, c["hm_nm"])}
+        )
         print(rows[-1], f"load {loads[-1]:.2f}", flush=True)
     g = en.grid_hierarchy(1.0, 1.0, 1.0, 1.0, 1.0, 1.0, FLUID, level, level)[0]
     head = [
@@ -106,6 +112,51 @@ def table(chosen, level, out):
         "|" + "---|" * 17,
     ]
     Path(out).write_text("\n".join(head + rows) + "\n")
+    Path(out).with_suffix(".json").write_text(json.dumps(record, indent=0) + "\n")
+
+
+def _table_path(level):
+    name = "ehl_solver.md" if level == LEVEL else f"ehl_solver_level{level}.md"
+    return ROOT / "docs" / "reports" / name
+
+
+def pareto(levels, out):
+    """Error against the thesis vs run time: the solver on each level (mean |error| over the cases of its
+    table run, median time per case) and the three closed-form film formulas (benchmarks.ehl_film_table)."""
+    import matplotlib
+    import numpy as np
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from benchmarks import ehl_film_table as ft
+
+    formula_cases = ft.load_cases()
+    wide = np.array([c["k"] >= 1.0 for c in formula_cases])
+    errs = ft.errors(formula_cases)
+    per_call = ft.times_per_call(n=2000, repeats=31)
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for ax, q, label in ((axes[0], 0, "h_c"), (axes[1], 1, "h_min")):
+        for group, mask, marker in (("k >= 1", wide, "s"), ("k < 1", ~wide, "o")):
+            for name in ft.FORMULAS:
+                e = 100 * np.mean(np.abs(errs[name][q][mask]))
+                ax.loglog(per_call[name], e, marker, mfc="none", label=f"{name}, {group}")
+            pts = []
+            for level in levels:
+                rec = json.loads(_table_path(level).with_suffix(".json").read_text())
+                sel = [r for r in rec if (r["k"] >= 1.0) == (group == "k >= 1")]
+                pts.append((statistics.median(r["s"] for r in sel), statistics.mean(abs(r[label]) for r in sel)))
+            ax.loglog(*zip(*pts), marker + "-", color="k", label=f"numerical, levels {levels[0]}-{levels[-1]}, {group}")
+            for level, (t, e) in zip(levels, pts):
+                ax.annotate(f"L{level}", (t, e), fontsize=8)
+        ax.set_xlabel("run time per contact (s)")
+        ax.set_ylabel(f"mean |{label} - thesis| / thesis (%)")
+        ax.set_title(f"{label}: error vs run time, Annexe D")
+    axes[1].legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+    print(f"wrote {out}")
 
 
 def richardson(h):
@@ -164,15 +215,19 @@ def main():
     ap.add_argument("--cases", default="")
     ap.add_argument("--study", default="", help="cases of a grid study (with --levels)")
     ap.add_argument("--levels", default="1,2,3,4")
+    ap.add_argument("--pareto", default="", help="levels whose table runs go into docs/reports/ehl_pareto.png")
     ap.add_argument("--out", default="")
     args = ap.parse_args()
+    if args.pareto:
+        pareto([int(v) for v in args.pareto.split(",")], args.out or str(ROOT / "docs" / "reports" / "ehl_pareto.png"))
+        return
     if args.study:
         chosen = {int(c) for c in args.study.split(",")}
         levels = [int(v) for v in args.levels.split(",")]
         study(chosen, levels, args.out or str(ROOT / "docs" / "reports" / "ehl_grid_study.md"))
         return
     chosen = {int(c) for c in args.cases.split(",") if c}
-    table(chosen, args.level, args.out or str(ROOT / "docs" / "reports" / "ehl_solver.md"))
+    table(chosen, args.level, args.out or str(_table_path(args.level)))
 
 
 if __name__ == "__main__":
