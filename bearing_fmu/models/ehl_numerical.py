@@ -523,12 +523,13 @@ def grid_hierarchy(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=2, coarsest=0, 
     ]
 
 
-def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=2, coarsest=0, settings=None, box=None):
+def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=3, coarsest=0, settings=None, box=None):
     """Steady isothermal EHL film of one contact in SI: reduced radii Rx (along the entrainment), Ry (m),
     load (N), entrainment speed u_e = (u1 + u2) / 2 (m/s), reduced modulus E' (Pa), viscosity at p = 0
     eta0 (Pa.s), fluid array (fluid_array). Returns a Solution (h_c, h_min, hm_centre, hm_lateral in m,
-    p_max in Pa, convergence record, fields) on the grid of level `finest` (grid_hierarchy) of the box
-    (x_in, x_out, y_half), by default contact_box of the Hamrock-Dowson central film."""
+    p_max in Pa, convergence record, fields) on the grid of level `finest` (grid_hierarchy; level 3, the default,
+    is the grid of the ~2 % discretisation error, docs/ehl_solver.md) of the box (x_in, x_out, y_half), by
+    default contact_box of the Hamrock-Dowson central film."""
     k, ell_E, ell_K = hertz_coefficients_exact(Rx, Ry)
     a, b, _, p_h = hertz_contact(load, Rx, Ry, E_red, k, ell_E, ell_K)
     U, G, Wd = ehl.dimensionless_groups(eta0, alpha_star(fluid, p_h), E_red, u_e, load, Rx)
