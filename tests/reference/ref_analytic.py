@@ -103,6 +103,7 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
                 loaded[s].append((lam, h_min, h_c))
             pressures.append(p_max)
             balls[f"h_min_{s}"].append(h_min)
+            balls.setdefault(f"h_c_{s}", []).append(h_c)  # (not a kernel row: the tests' bound of C needs it)
             balls[f"Lambda_{s}"].append(lam)
             balls[f"C_{s}"].append(C[s])
             balls[f"Q_{s}"].append(Q)

@@ -140,7 +140,7 @@ def check_against_twin(m, omega, F_r, T):
             t_film = RTOL + 0.13 * ball_load_tol(Qr) + 0.7 * tol_xi
             for row in (f"h_min_{s}", f"Lambda_{s}"):
                 assert_close(ball[ra.BALL_ROWS.index(row)][j], balls[row][j], t_film, f"{row}[{j}]")
-            t_cap = RTOL + 0.9 * ball_load_tol(Qr) + 0.6 * tol_xi
+            t_cap = RTOL + outside_gain(m, balls[f"h_c_{s}"][j]) * (0.9 * ball_load_tol(Qr) + 0.6 * tol_xi)
             assert_close(ball[ra.BALL_ROWS.index(f"C_{s}")][j], balls[f"C_{s}"][j], t_cap, f"C_{s}[{j}]")
     # bearing capacitance: sum of the balls' bounds (series ball: the larger of its two contacts' bounds)
     c_abs = 0.0
@@ -148,7 +148,8 @@ def check_against_twin(m, omega, F_r, T):
         Ci, Co = balls["C_i"][j], balls["C_o"][j]
         if Ci > 0.0 and Co > 0.0:
             t = max(0.9 * ball_load_tol(balls["Q_i"][j]), 0.9 * ball_load_tol(balls["Q_o"][j])) + 0.6 * tol_xi
-            c_abs += t * Ci * Co / (Ci + Co)
+            gain = max(outside_gain(m, balls["h_c_i"][j]), outside_gain(m, balls["h_c_o"][j]))
+            c_abs += gain * t * Ci * Co / (Ci + Co)
     assert abs(out[ak.O_C_BEARING] - ref["c_bearing"]) <= c_abs + RTOL * ref["c_bearing"], "C_bearing"
     for key, t in tol.items():
         assert_close(out[OUTPUTS[key]], ref[key], t, key)
@@ -169,6 +170,19 @@ def check_against_twin(m, omega, F_r, T):
     else:
         assert 1 <= out[ak.O_ITER] < 200
     return out, ref
+
+
+def outside_gain(m, h_c):
+    """How much more the capacitance of a contact moves than the Hertz plate's when its film moves (-): 1 for the
+    Hertz zone alone; with the oil-filled gap around the contact (scene capacitance_region = 'lubricated'), whose
+    region ends where the gap reaches oil_gap, d ln C / d ln h_c grows by up to h_c / (oil_gap - h_c) as the film
+    nears the oil's height (the region shrinks to nothing), so the plate's bound is scaled by 1 + that ratio.
+    Measured: a 6208 at 5 rad/s without load, thesis_turbine_oil at 234 K, h_c = 12.5 um of a 20 um oil gap, the
+    outer contacts' capacitance 1.6e-6 apart against the plate's bound of 1.4e-6 (the bound here: 3.7e-6)."""
+    h_oil = m.scene.oil_gap if m.scene.capacitance_region == "lubricated" else 0.0
+    if h_oil <= 0.0 or not 0.0 < h_c < h_oil:
+        return 1.0
+    return 1.0 + h_c / (h_oil - h_c)
 
 
 def test_twin_covers_every_output():
