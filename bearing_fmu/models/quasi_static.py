@@ -32,6 +32,7 @@ from .declarations import (
     QUASI_STATIC_OUTPUTS,
     QUASI_STATIC_PARAMETERS,
 )
+from .lubrication import Lubrication, pack_lubrication
 from .variables import (
     DM_N_LIMIT,
     MATERIAL_LIMIT,
@@ -226,6 +227,8 @@ class QuasiStaticModel:
         cp[ck.CP_D] = b.D
         cp[ck.CP_CAPACITANCE] = 1.0 if s.capacitance else 0.0
         cp[ck.CP_TORQUE] = 1.0 if s.torque else 0.0
+        pack_lubrication(cp, ck, "CP_", Lubrication(s, b.D, b.dm), s.torque)
+        cp[ck.CP_DM] = b.dm
         return qs, cp
 
     def _rating_parameters(self):
