@@ -181,6 +181,7 @@ class BearingQuasiStatic(_BearingSlave):
             Pd=self._clearance(),
             race_control=self._race_control(),
             F_preload=self.F_preload,
+            lubrication=self.lubrication,
         )
 
 

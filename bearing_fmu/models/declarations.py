@@ -28,7 +28,7 @@ from ..kernels import rating_life as rl
 from ..kernels import truncation as tk
 from ..kernels.ball_dynamics import state as ds
 from ..params import SUPPORT_DAMPING, SUPPORT_STIFFNESS, load_dem_constants
-from ..scene import RACE_CONTROLS
+from ..scene import LUBRICATION_METHODS, RACE_CONTROLS
 from .file_parameters import bearing_parameters
 from .variables import (
     GROOVE_MAX,
@@ -500,6 +500,16 @@ QUASI_STATIC_PARAMETERS = (
         "string",
         start=None,  # the scene's race_control
         choices=RACE_CONTROLS,
+    ),
+    Variable(
+        "lubrication",
+        "",
+        "lubrication method (docs/lubrication_method.md): " + " | ".join(LUBRICATION_METHODS) + ", at its default "
+        "settings; default: the scene's. Torque, heat and films follow it; its own outputs (phi_*, torque_drag, "
+        "P_drag) exist when the scene names a method other than flooded",
+        "string",
+        start=None,  # the scene's lubrication
+        choices=LUBRICATION_METHODS,
     ),
     Variable(
         "race_control_mode",

@@ -161,9 +161,11 @@ def test_fixed_10000_runs_away_and_stops_with_a_message(fixed_10000):
 
 def test_fixed_10000_stop_time_does_not_depend_on_the_step(fixed_10000):
     """Issue 4: the runaway is physics, not numerics: it happens at every H and stops at the same time
-    within 2 H of the H = 0.1 s run. Tolerance: the limit is checked at communication points only
-    (stop up to one H after the crossing) and the one-step coupling lag shifts the trajectory by about
-    one more H (measured: 705, 702 and 700.6 s for H = 5, 1, 0.1 s)."""
+    within 4 H of the H = 0.1 s run. Tolerance: the limit is checked at communication points only
+    (stop up to one H after the crossing) and the one-step coupling lag shifts the trajectory; with the rig's
+    oil-air lubrication (run file, docs/lubrication_method.md) the runaway is slower than with the flooded films
+    (stop at 960.6 s instead of 700.6 s for H = 0.1 s), and the lag of each step shifts the stop by more steps:
+    measured 980, 964 and 960.6 s for H = 5, 1, 0.1 s (3.9 H and 3.4 H; flooded it was 705, 702, 700.6 s)."""
     t_ref = fixed_10000[0.1].columns["time"][-1]
     for H in (1.0, 5.0):
-        assert abs(fixed_10000[H].columns["time"][-1] - t_ref) <= 2.0 * H, H
+        assert abs(fixed_10000[H].columns["time"][-1] - t_ref) <= 4.0 * H, H
