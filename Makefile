@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test test-bare-host test-python-hosts test-ehl-full lint fmus fmus-python-hosts bench report clean
+.PHONY: demo test test-bare-host test-python-hosts test-ssp-masters test-ehl-full lint fmus fmus-python-hosts bench report clean
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -38,7 +38,7 @@ lint: $(STAMP)
 
 # no cache cleaning needed: the numba cache directory is keyed on the kernel sources (bearing_fmu_common/jit.py)
 test: lint fmus
-	$(BIN)/python -m pytest -q -m "not bare_host and not python_hosts and not ehl_full"
+	$(BIN)/python -m pytest -q -m "not bare_host and not python_hosts and not ssp_masters and not ehl_full"
 
 # the FMUs in a host with only fmpy, numpy and numba (a virtual environment under /tmp, made with pip once)
 test-bare-host: fmus
@@ -48,6 +48,12 @@ test-bare-host: fmus
 # made with pip once; the tests build their own FMUs with kernels for each)
 test-python-hosts: $(STAMP)
 	$(BIN)/python -m pytest -q -m python_hosts
+
+# the exported SSP packages (closed_loop_spring, startup_dem) in ecos and OMSimulator against `spindle run`
+# (an environment with ecospy under /tmp, made with pip once; OMSimulator from $OMSIMULATOR or the PATH, else its
+# tests are skipped: README gives the commands that build it)
+test-ssp-masters: fmus
+	$(BIN)/python -m pytest -q -m ssp_masters
 
 # the numerical EHL solver on all 55 Annexe D cases (about 20 min)
 test-ehl-full: $(STAMP)

@@ -6,7 +6,10 @@ in <UnitDefinitions> by its SI base-unit exponents. pythonfmu lists the outputs 
 <ModelStructure><Outputs> without dependencies, which FMI reads as "depends on every input": a master
 that sorts a coupled system (OMSimulator) then finds algebraic loops that do not exist. The outputs of
 these FMUs change only in fmi2DoStep, so each declares `dependencies=""`, and they are computed at
-initialisation (initial="calculated", listed in <InitialUnknowns>).
+initialisation (initial="calculated", listed in <InitialUnknowns>). They are computed in
+fmi2ExitInitializationMode: in Initialization Mode an output reads the value it had when the instance was
+created, whatever input is set, so <InitialUnknowns> declares `dependencies=""` too (without it OMSimulator
+reported an algebraic loop of size 8/32 at the initialisation of the closed loop and iterated it).
 """
 
 from operator import itemgetter
@@ -148,8 +151,8 @@ def output_variable(name, unit, description, integer=False, getter=None, setter=
 
 def declare_structure(root: Element):
     """Rewrite <ModelStructure>: every output in <Outputs> with dependencies="" (it changes only in
-    fmi2DoStep: no direct feedthrough from an input) and in <InitialUnknowns> (computed at initialisation;
-    no dependencies attribute: it depends on the inputs and parameters, all of them)."""
+    fmi2DoStep: no direct feedthrough from an input) and in <InitialUnknowns> with dependencies="" (computed
+    from the inputs and parameters in fmi2ExitInitializationMode: in Initialization Mode it depends on none)."""
     variables = root.find("ModelVariables")
     outputs = [str(i + 1) for i, v in enumerate(variables) if v.get("causality") == "output"]
     structure = root.find("ModelStructure")
@@ -157,7 +160,7 @@ def declare_structure(root: Element):
         structure.remove(child)
     if outputs:
         SubElement(structure, "Outputs").extend(Element("Unknown", index=i, dependencies="") for i in outputs)
-        SubElement(structure, "InitialUnknowns").extend(Element("Unknown", index=i) for i in outputs)
+        SubElement(structure, "InitialUnknowns").extend(Element("Unknown", index=i, dependencies="") for i in outputs)
     return root
 
 

@@ -308,7 +308,10 @@ def cmd_export_ssp(args):
 
     spec = load_run(args.runfile, _overrides(args.set), fmu_dir=args.fmus)
     out = Path(args.out) if args.out else Path(args.runfile).with_suffix(".ssp").name
-    print(f"wrote {export_ssp(spec, out)}")
+    notes = []
+    print(f"wrote {export_ssp(spec, out, notes)}")
+    for note in notes:
+        print(f"note: {note}", file=sys.stderr)
     if spec.algorithm != "jacobi":
         print(
             f"note: the run file steps {spec.algorithm}; libcosim and most SSP masters exchange Jacobi-style, "

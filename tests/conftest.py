@@ -1,5 +1,7 @@
 """Shared fixtures: paths to the reference data and the built FMUs (built once if missing)."""
 
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -98,3 +100,22 @@ def configured_fmus(tmp_path_factory):
     config.write_text((ROOT / "configs" / "rabreau_rig.toml").read_text() + f"fmus = {list(CONFIGURED)!r}\n")
     paths, _ = build_configured(config, out)
     return {path.stem: path for path in map(Path, paths)}
+
+
+def pip_environment(name, pins):
+    """python of a virtual environment /tmp/bearing_fmu-<name>-py3X-<pins> with the packages `pins` ("pkg==1.2"),
+    made with pip on first use and kept between runs (a marker file says it is complete); the test is skipped
+    when pip cannot make it (no registry here: not a product failure)."""
+    tag = "-".join(pins).replace("==", "")
+    home = Path("/tmp") / f"bearing_fmu-{name}-py{sys.version_info.major}{sys.version_info.minor}-{tag}"
+    python = home / "bin" / "python"
+    if not (home / ".complete").is_file():
+        base = getattr(sys, "_base_executable", sys.executable)
+        subprocess.run([base, "-m", "venv", "--clear", str(home)], check=True, capture_output=True)
+        pip = subprocess.run(
+            [str(python), "-m", "pip", "install", "-q", *pins], capture_output=True, text=True, timeout=1800
+        )
+        if pip.returncode != 0:
+            pytest.skip(f"pip install {' '.join(pins)} failed: {pip.stderr[-500:]}")
+        (home / ".complete").write_text(" ".join(pins))
+    return python

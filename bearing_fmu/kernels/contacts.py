@@ -19,7 +19,7 @@ from .capacitance import ball_capacitance, contact_capacitance, contact_permitti
 from .ehl import film_parameter, film_thickness, friction_coefficient, lubrication_regime
 from .hertz import hertz_contact
 from .jones_harris import BQ_Q_I, BQ_Q_O, BQ_SPIN_I, BQ_SPIN_O, BQ_U_I, BQ_U_O, BQ_W_M
-from .lubricant import LUB_EPS_R0, clausius_mossotti_constant, lubricant_state
+from .lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
 from .lubrication import ball_drag_power, film_factors, mixture, rolling_force_factor, temperature_viscosity_coefficient
 from .torque import TL_EHL, TL_SIZE, contact_losses
 
@@ -123,7 +123,7 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
     phi_t = 1.0
     phi_c = 1.0
     phi_m = 1.0
-    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], rho0) if capacitance else 0.0
+    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF]) if capacitance else 0.0
     E_red = cp[CP_E_RED]
     film = int(cp[CP_FILM])
     lam_i = math.inf

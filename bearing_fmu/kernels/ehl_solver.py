@@ -165,8 +165,8 @@ def reynolds_residual(Phi, H, rho_r, eta_r, lam, k, dX, dY, R):
 
 @kernel
 def _eps(Phi, H, rho_r, eta_r, lam, i, j):
-    """Poiseuille coefficient eps = rho_r H^3 / (eta_r lam) (-) of node (i, j)."""
-    h = H[i, j]
+    """Poiseuille coefficient eps = rho_r H^3 / (eta_r lam) (-) of node (i, j); 0 where the gap is closed (H <= 0)."""
+    h = max(H[i, j], 0.0)
     return rho_r[i, j] * h * h * h / (eta_r[i, j] * lam)
 
 
@@ -291,3 +291,114 @@ def _poiseuille_diagonal(P, H, rho_r, eta_r, lam, kx, ky, i, j):
     eN = 0.5 * (e0 + _eps(P, H, rho_r, eta_r, lam, i, j + 1))
     eS = 0.5 * (e0 + _eps(P, H, rho_r, eta_r, lam, i, j - 1))
     return -(kx * (eE + eW) + ky * (eN + eS))
+
+
+@kernel
+def fluid_log_slopes(P, p_h, fluid, g_rho, g_eta):
+    """d ln(rho_r) / dP and d ln(eta_r) / dP (-) at every node of the pressure P (-): central differences of
+    the laws over +-d, d = 1e-6 (P + 1), second-order one-sided ones (0, d, 2 d) where P < d; 0 where the
+    viscosity reaches its cap within the stencil."""
+    nx, ny = P.shape
+    for i in range(nx):
+        for j in range(ny):
+            p = max(P[i, j], 0.0)
+            d = 1e-6 * (p + 1.0)
+            if p < d:
+                q = (0.0, d, 2.0 * d)
+                c = (-1.5 / d, 2.0 / d, -0.5 / d)
+            else:
+                q = (p - d, p, p + d)
+                c = (-0.5 / d, 0.0, 0.5 / d)
+            gr = 0.0
+            ge = 0.0
+            capped = False
+            for s in range(3):
+                gr += c[s] * math.log(density_ratio(q[s] * p_h, fluid))
+                e = viscosity_ratio(q[s] * p_h, fluid)
+                capped = capped or e >= ETA_RATIO_MAX
+                ge += c[s] * math.log(e)
+            g_rho[i, j] = gr
+            g_eta[i, j] = 0.0 if capped else ge
+
+
+@kernel
+def newton_jacobian(P, H, rho_r, eta_r, g_rho, g_eta, lam, k, dX, dY, Kc, wet_i, wet_j, widx, J):
+    """Jacobian (-) of the discrete Reynolds residual (reynolds_residual with theta = 1) at the wet nodes
+    (wet_i[n], wet_j[n]) with respect to their pressures and the rigid film H0 (last column): J[n, m] =
+    dR(wet n) / dP(wet m), J[n, len(wet)] = dR(wet n) / dH0. The pressure acts on a residual directly (the
+    5-point Poiseuille stencil), through rho_r and eta_r in eps and in the upwind Couette flux (log slopes
+    g_rho, g_eta of fluid_log_slopes), and through the film: every node of the residual's stencil sees the
+    deflection Kc[|di|, |dj|] of every wet node's pressure. widx[i, j] is the wet index of node (i, j), -1 if
+    it is not wet. Closed gaps (H <= 0) carry no Poiseuille flow (_eps)."""
+    nw = wet_i.shape[0]
+    kx = 1.0 / (dX * dX)
+    ky = 1.0 / (k * k * dY * dY)
+    di = np.array([0, 1, -1, 0, 0, -2])
+    dj = np.array([0, 0, 0, 1, -1, 0])
+    dp = np.zeros(6)  # dR / dP at the stencil nodes, direct and through the fluid
+    dh = np.zeros(6)  # dR / dH at the stencil nodes
+    eps = np.zeros(6)
+    for n in range(nw):
+        i = wet_i[n]
+        j = wet_j[n]
+        for s in range(5):
+            eps[s] = _eps(P, H, rho_r, eta_r, lam, i + di[s], j + dj[s])
+        p0 = P[i, j]
+        gE = P[i + 1, j] - p0
+        gW = p0 - P[i - 1, j]
+        gN = P[i, j + 1] - p0
+        gS = p0 - P[i, j - 1]
+        fE = 0.5 * (eps[0] + eps[1])
+        fW = 0.5 * (eps[0] + eps[2])
+        fN = 0.5 * (eps[0] + eps[3])
+        fS = 0.5 * (eps[0] + eps[4])
+        de = np.zeros(6)  # dR / d eps at the stencil nodes
+        de[0] = 0.5 * kx * (gE - gW) + 0.5 * ky * (gN - gS)
+        de[1] = 0.5 * kx * gE
+        de[2] = -0.5 * kx * gW
+        de[3] = 0.5 * ky * gN
+        de[4] = -0.5 * ky * gS
+        for s in range(6):
+            dp[s] = 0.0
+            dh[s] = 0.0
+        dp[0] = -(kx * (fE + fW) + ky * (fN + fS))
+        dp[1] = kx * fE
+        dp[2] = kx * fW
+        dp[3] = ky * fN
+        dp[4] = ky * fS
+        for s in range(5):
+            a = i + di[s]
+            b = j + dj[s]
+            dp[s] += de[s] * eps[s] * (g_rho[a, b] - g_eta[a, b])
+            if H[a, b] > 0.0:
+                dh[s] += de[s] * 3.0 * eps[s] / H[a, b]
+        if i >= 2:
+            c = (1.5 / dX, -2.0 / dX, 0.5 / dX)
+        else:
+            c = (1.0 / dX, -1.0 / dX, 0.0)
+        for q in range(3):
+            s = 0 if q == 0 else (2 if q == 1 else 5)
+            a = i + di[s]
+            b = j + dj[s]
+            if c[q] == 0.0:
+                continue
+            dp[s] -= c[q] * rho_r[a, b] * g_rho[a, b] * H[a, b]
+            dh[s] -= c[q] * rho_r[a, b]
+        h0 = 0.0
+        for s in range(6):
+            h0 += dh[s]
+        J[n, nw] = h0
+        for m in range(nw):
+            im = wet_i[m]
+            jm = wet_j[m]
+            v = 0.0
+            for s in range(6):
+                if dh[s] != 0.0:
+                    v += dh[s] * Kc[abs(i + di[s] - im), abs(j + dj[s] - jm)]
+            J[n, m] = v
+        for s in range(6):
+            a = i + di[s]
+            b = j + dj[s]
+            m = widx[a, b]
+            if m >= 0:
+                J[n, m] += dp[s]

@@ -21,7 +21,7 @@ from .ehl import film_parameter, film_thickness, lubrication_regime
 from .geometry import centrifugal_force, pass_frequencies, rolling_kinematics
 from .hertz import hertz_contact, hertz_stiffness, series_stiffness
 from .loaddist import load_parameter, solve_radial_shift
-from .lubricant import LUB_EPS_R0, clausius_mossotti_constant, lubricant_state
+from .lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
 from .lubrication import ball_drag_power, film_factors, mixture, temperature_viscosity_coefficient
 
 # layout of the bearing parameter array (built by bearing_fmu.models.analytic)
@@ -121,7 +121,7 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     beta = 0.0
     if lubricated and brg[B_THERMAL] > 0.5:
         beta = temperature_viscosity_coefficient(T_oil, lub)
-    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], rho0) if capacitance else 0.0
+    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF]) if capacitance else 0.0
     w_cage, w_ball_rel, w_ball_fixed, u = rolling_kinematics(omega, D, dm, 0.0)
     F_c = 0.0
     if brg[B_CENTRIFUGAL] > 0.5:

@@ -191,6 +191,7 @@ class DemConstants:
     cage_E: float  # Pa, the cage elements' default Young's modulus
     cage_nu: float  # -, their Poisson's ratio
     cage_rho: float  # kg/m^3, their density
+    cage_pocket_play: float  # -, pocket play of an estimated cage ball over the ball diameter
     alpha_e: float  # s/m, hysteretic damping constant (C_hyst = 1.5 alpha_e Q)
     kt_ratio: float  # -, tangential over secant normal stiffness of the asperities' spring
     support_stiffness: float  # N/m, the inner ring's support across the axis, x and y (0 = a free ring)
@@ -210,6 +211,7 @@ def load_dem_constants(path=CATALOGUE / "dem_model.toml"):
         cage_E=_value(doc, "cage_material.E", Spec("Pa", 0.0, 1e13, True), path),
         cage_nu=_value(doc, "cage_material.nu", Spec("-", 0.0, 0.5), path),
         cage_rho=_value(doc, "cage_material.rho", DENSITY, path),
+        cage_pocket_play=_value(doc, "cage.pocket_play", Spec("-", 0.0, 0.1), path),
         alpha_e=_value(doc, "contact.alpha_e", Spec("s/m", 0.0, 10.0), path),
         kt_ratio=_value(doc, "contact.kt_ratio", Spec("-", 0.1, 1.5), path),
         support_stiffness=_value(doc, "ring_support.stiffness", SUPPORT_STIFFNESS, path),

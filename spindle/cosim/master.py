@@ -175,6 +175,7 @@ class Instance:
         self._do_step = self._checked("fmi2DoStep")
         self.cache = {}  # output name -> last value read
         self._reads = []  # (getter, names, value references) read into the cache at each refresh
+        self.failed = False  # a call returned fmi2Error or worse: only fmi2FreeInstance (or fmi2Reset) is allowed
 
     def _logger(self, env, instance, status, category, message):
         text = message.decode("utf-8", "replace") if isinstance(message, bytes) else str(message)
@@ -195,6 +196,7 @@ class Instance:
         try:
             return fn(*args)
         except FMICallException as exc:
+            self.failed = self.failed or getattr(exc, "status", 3) >= 3
             status = STATUS_NAMES.get(getattr(exc, "status", None), "failure")
             lines = "; ".join(self.log[n_log:]) or "no message logged"
             what = what() if callable(what) else what
@@ -220,6 +222,7 @@ class Instance:
         def call(*args):
             status = raw(component, *args)
             if status > 1:
+                self.failed = self.failed or status >= 3
                 raise FMICallException(function=function, status=status)
 
         return call
@@ -290,10 +293,11 @@ class Instance:
         return self.call(f"get {name}", getter, [v.valueReference])[0]
 
     def close(self):
-        try:
-            self.slave.terminate()
-        except Exception:
-            pass
+        if not self.failed:  # after fmi2Error the FMI 2.0 call sequence allows no fmi2Terminate
+            try:
+                self.slave.terminate()
+            except Exception:
+                pass
         self.slave.freeInstance()
 
 
@@ -425,8 +429,9 @@ class Master:
         try:
             inst.slave.exitInitializationMode()
             refused = False
-        except FMICallException:
+        except FMICallException as exc:
             refused = True
+            inst.failed = getattr(exc, "status", 3) >= 3
         errors = [line for line in inst.log[n_log:] if line.startswith(("[Error]", "[Fatal]"))]
         if refused or errors:
             raise MasterError(f"{inst.name}: initialisation failed: {'; '.join(errors) or 'no message logged'}")

@@ -349,6 +349,23 @@ def test_initialisation_failure_raises_with_the_fmu_log(spindle_thermal_fmu):
         run(spec_of(doc))
 
 
+def test_after_an_fmi_error_the_master_frees_the_instance_without_terminate(spindle_thermal_fmu):
+    """FMI 2.0 allows only fmi2FreeInstance (or fmi2Reset) after a call returned fmi2Error: a master whose FMU
+    failed its initialisation frees it without fmi2Terminate, so the FMU logs no call-sequence error."""
+    doc = {
+        "run": {"stop": 2.0, "step": 1.0},
+        "fmus": {"spindle": str(spindle_thermal_fmu)},
+        "instances": {"spindle": {"fmu": "spindle", "parameters": {"spindle": "no_such_spindle"}}},
+    }
+    master = Master(spec_of(doc))
+    instance = master.instances["spindle"]
+    with pytest.raises(MasterError, match="initialisation failed"):
+        master.run()
+    master.close()
+    assert instance.failed
+    assert instance.log and not [line for line in instance.log if "fmi2Terminate" in line]
+
+
 def test_rollback_gives_up_after_max_halvings_with_the_reason(clock_fmu):
     doc = clock_doc(clock_fmu, rollback=True, max_halvings=2)
     doc["instances"]["c"]["parameters"] = {"fail_at": 0.5}

@@ -20,13 +20,13 @@ import subprocess
 import sys
 import zipfile
 from importlib.metadata import version
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 from spindle.build import reference_inputs
 from spindle.thermal.model import SpindleThermalModel
+from tests.conftest import pip_environment
 
 PACKAGES = ("fmpy", "numpy", "numba")
 STEP, STOP = 60.0, 1200.0  # s
@@ -58,20 +58,7 @@ print("RESULT " + json.dumps({"names": list(result.dtype.names), "rows": [list(m
 def bare_python():
     """python of a virtual environment with only fmpy, numpy and numba (this run's versions), kept under /tmp
     between runs (a marker file says it is complete)."""
-    pins = [f"{p}=={version(p)}" for p in PACKAGES]
-    tag = "-".join(pins).replace("==", "")
-    home = Path("/tmp") / f"bearing_fmu-bare-host-py{sys.version_info.major}{sys.version_info.minor}-{tag}"
-    python = home / "bin" / "python"
-    if not (home / ".complete").is_file():
-        base = getattr(sys, "_base_executable", sys.executable)
-        subprocess.run([base, "-m", "venv", "--clear", str(home)], check=True, capture_output=True)
-        pip = subprocess.run(
-            [str(python), "-m", "pip", "install", "-q", *pins], capture_output=True, text=True, timeout=900
-        )
-        if pip.returncode != 0:  # the environment cannot be made here (no registry): not a product failure
-            pytest.skip(f"pip install {' '.join(pins)} failed: {pip.stderr[-500:]}")
-        (home / ".complete").write_text(" ".join(pins))
-    return python
+    return pip_environment("bare-host", [f"{p}=={version(p)}" for p in PACKAGES])
 
 
 def _run(python, fmu, inputs, cache):

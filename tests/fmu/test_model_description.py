@@ -2,8 +2,9 @@
 
 - `fmpy.validate_fmu` finds no problem;
 - every output declares `dependencies=""` in ModelStructure/Outputs (it changes only in fmi2DoStep: no
-  algebraic loop through it) and is listed in InitialUnknowns, `initial="calculated"` without a start
-  value (computed at initialisation);
+  algebraic loop through it) and is listed in InitialUnknowns with `dependencies=""` (computed in
+  fmi2ExitInitializationMode: in Initialization Mode it depends on no input), `initial="calculated"` without
+  a start value;
 - a DefaultExperiment equal to the build's reference experiment, a `nominal` on every Real input, the
   product's version, licence and copyright;
 - documentation/index.html (the variable list of fmus/<Name>.md) and the reference result in the FMI
@@ -76,7 +77,9 @@ def test_model_description_as_tools_expect(fmu):
     assert outputs
     structure = root.find("ModelStructure")
     assert [(u.get("index"), u.get("dependencies")) for u in structure.find("Outputs")] == [(i, "") for i in outputs]
-    assert [u.get("index") for u in structure.find("InitialUnknowns")] == outputs
+    assert [(u.get("index"), u.get("dependencies")) for u in structure.find("InitialUnknowns")] == [
+        (i, "") for i in outputs
+    ]
     for v in variables:
         if v.get("causality") == "output":
             assert v.get("initial") == "calculated" and v[0].get("start") is None, v.get("name")

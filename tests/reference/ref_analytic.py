@@ -60,7 +60,7 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
     h_floor = brg[ak.B_H_FLOOR]
 
     eta, xi, rho0 = ref_lubricant.lubricant_state(T_oil, lub)
-    K_cm = ref_lubricant.clausius_mossotti_constant(lub[lk.LUB_EPS_R0], rho0)
+    K_cm = ref_lubricant.clausius_mossotti_constant(lub[lk.LUB_EPS_R0], lub[lk.LUB_RHO_REF])
     lubricated = brg[ak.B_LUBRICATED] > 0.5
     beta = ref_lubrication.temperature_viscosity_coefficient(T_oil, lub) if lubricated else 0.0
     phis = {"i": (1.0, 1.0), "o": (1.0, 1.0)}

@@ -40,7 +40,7 @@ from scipy.integrate import quad
 from scipy.optimize import brentq
 
 from bearing_fmu.kernels.ball_dynamics import state as s
-from bearing_fmu.kernels.lubricant import LUB_EPS_R0
+from bearing_fmu.kernels.lubricant import LUB_EPS_R0, LUB_RHO_REF
 from tests.reference import ref_capacitance, ref_ehl, ref_hertz, ref_lubricant, ref_torque
 
 Z_AXIS = np.array([0.0, 0.0, 1.0])
@@ -101,7 +101,7 @@ def orbit_speed(p, v):
 def refresh(st, par, lub, omega, T_oil):
     """Per-contact tribology from the state (the kernel's trib rows)."""
     eta, xi, rho0 = ref_lubricant.lubricant_state(T_oil, lub)
-    K_cm = ref_lubricant.clausius_mossotti_constant(lub[LUB_EPS_R0], rho0)
+    K_cm = ref_lubricant.clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF])
     balls, ring, trib = st["balls"], st["ring"], st["trib"]
     D = par[s.P_D]
     E_red = par[s.P_E_RED]

@@ -51,7 +51,7 @@ def contact(Q, u, spin, Rx, Ry, k, ell_E, ell_K, sigma, f, cp, eta, xi, rho0, lu
     C = 0.0
     losses = [0.0] * ref_torque.TL_SIZE
     if Q > 0.0 and capacitance:
-        K_cm = ref_lubricant.clausius_mossotti_constant(lub[lk.LUB_EPS_R0], rho0)
+        K_cm = ref_lubricant.clausius_mossotti_constant(lub[lk.LUB_EPS_R0], lub[lk.LUB_RHO_REF])
         eps_r = ref_capacitance.contact_permittivity(K_cm, rho0, p_max, int(cp[ck.CP_PRESSURE]))
         C = ref_capacitance.contact_capacitance(eps_r, a, b, h_c, cp[ck.CP_H_FLOOR])
     if Q > 0.0 and torque:

@@ -10,6 +10,9 @@ and the direct-summation deflection that the product computes by FFT.
   over a uniformly loaded 2c x 2d rectangle, written with its four logarithms.
 - Deflection by direct summation over every pressure cell (no FFT).
 - Reynolds residual written with whole-array flux differences (numpy slicing) instead of per-node loops.
+- Log slopes of the fluid ratios: Richardson-extrapolated central differences of the twin's laws.
+- Newton Jacobian: central differences of the twin's residual, each wet pressure moved with its film (direct
+  influence sums) and fluid ratios, and H0 moved.
 - Relaxation sweep: the same node updates, each node's residual and derivative taken from the twin's
   whole-array residual of the current pressure (recomputed after every Gauss-Seidel update) and the
   derivative of the residual written out from the 5-point stencil and the deflection of a point change
@@ -110,7 +113,7 @@ def film(H0, X, Y, curv_y, W, H):
 
 def reynolds_residual(Phi, H, rho_r, eta_r, lam, k, dX, dY, R):
     P = np.maximum(Phi, 0.0)
-    eps = rho_r * H**3 / (eta_r * lam)
+    eps = rho_r * np.maximum(H, 0.0) ** 3 / (eta_r * lam)
     flux = rho_r * H * (1.0 + np.minimum(Phi, 0.0))
     ex = 0.5 * (eps[1:, :] + eps[:-1, :])  # faces i + 1/2
     ey = 0.5 * (eps[:, 1:] + eps[:, :-1])  # faces j + 1/2
@@ -128,7 +131,7 @@ def reynolds_residual(Phi, H, rho_r, eta_r, lam, k, dX, dY, R):
 def relaxation_sweep(P, F, H, rho_r, eta_r, lam, k, dX, dY, Kc, xi_switch, omega_gs, omega_jac, delta):
     nx, ny = P.shape
     kx, ky = 1.0 / dX**2, 1.0 / (k * k * dY**2)
-    eps = rho_r * H**3 / (eta_r * lam)
+    eps = rho_r * np.maximum(H, 0.0) ** 3 / (eta_r * lam)
     R = np.zeros_like(P)
 
     def residual(i, j):
@@ -178,7 +181,57 @@ def relaxation_sweep(P, F, H, rho_r, eta_r, lam, k, dX, dY, Kc, xi_switch, omega
     return change
 
 
+def fluid_log_slopes(P, p_h, fluid, g_rho, g_eta):
+    """d ln(ratio) / dP by Richardson-extrapolated central differences (steps 1e-3 and 5e-4 of P + 1), second-
+    order one-sided differences at P = 0; 0 where the viscosity is at its cap."""
+
+    def slope(f, p):
+        def d(h):
+            if p - 2.0 * h < 0.0:
+                return (-3.0 * f(p) + 4.0 * f(p + h) - f(p + 2.0 * h)) / (2.0 * h)
+            return (f(p + h) - f(p - h)) / (2.0 * h)
+
+        h = 1e-3 * (p + 1.0)
+        return (4.0 * d(0.5 * h) - d(h)) / 3.0
+
+    for i, j in np.ndindex(P.shape):
+        p = max(P[i, j], 0.0)
+        g_rho[i, j] = slope(lambda q: math.log(density_ratio(q * p_h, fluid)), p)
+        if viscosity_ratio((p + 1e-6 * (p + 1.0)) * p_h, fluid) >= ETA_RATIO_MAX:
+            g_eta[i, j] = 0.0
+        else:
+            g_eta[i, j] = slope(lambda q: math.log(viscosity_ratio(q * p_h, fluid)), p)
+
+
+def newton_jacobian(P, H, rho_r, eta_r, g_rho, g_eta, lam, k, dX, dY, Kc, wet_i, wet_j, widx, J):
+    """Central differences of the twin's residual: a pressure change d at wet node m changes P there, the film
+    at every node by Kc[|di|, |dj|] d and rho_r, eta_r at m by their log slopes; H0 shifts the film."""
+    nw = len(wet_i)
+    R = np.zeros_like(P)
+
+    def rows(dP, dH, m):
+        Pm, Hm, rho, eta = P.copy(), H + dH, rho_r.copy(), eta_r.copy()
+        if m is not None:
+            a, b = wet_i[m], wet_j[m]
+            Pm[a, b] += dP
+            rho[a, b] *= math.exp(g_rho[a, b] * dP)
+            eta[a, b] *= math.exp(g_eta[a, b] * dP)
+        reynolds_residual(Pm, Hm, rho, eta, lam, k, dX, dY, R)
+        return R[wet_i, wet_j].copy()
+
+    ii = np.arange(P.shape[0])[:, None]
+    jj = np.arange(P.shape[1])[None, :]
+    for m in range(nw):
+        shape = Kc[np.abs(ii - wet_i[m]), np.abs(jj - wet_j[m])]
+        d = 1e-6 * max(P[wet_i[m], wet_j[m]], 1e-3)
+        J[:nw, m] = (rows(d, d * shape, m) - rows(-d, -d * shape, m)) / (2.0 * d)
+    d = 1e-6
+    J[:nw, nw] = (rows(0.0, d, None) - rows(0.0, -d, None)) / (2.0 * d)
+
+
 TWINS = {
+    "fluid_log_slopes": fluid_log_slopes,
+    "newton_jacobian": newton_jacobian,
     "relaxation_sweep": relaxation_sweep,
     "viscosity_ratio": viscosity_ratio,
     "density_ratio": density_ratio,

@@ -1,6 +1,7 @@
 """The DEM's contact-model constants live in a parameter file with units and sources (params/dem_model.toml), as
 the bearings and oils do: the papers' values (Farah et al. 2020: PA66 cage E = 3.3 GPa, nu = 0.41; Guessasma &
-Machado 2018: alpha_e = 0.08 s/m, K_t = 2/3 K_n) reach the model, and a bad value is refused naming the key."""
+Machado 2018: alpha_e = 0.08 s/m, K_t = 2/3 K_n, the cage balls' pocket play 0.0026 D) reach the model, and a bad
+value is refused naming the key."""
 
 import math
 
@@ -23,6 +24,11 @@ def test_the_papers_values_reach_the_model():
     R = model.par[s.P_R_CAGE]
     R_eq = 0.5 * b.D * R / (0.5 * b.D + R)
     assert model.par[s.P_K_CB] == pytest.approx(4.0 / 3.0 * E_star * math.sqrt(R_eq), rel=1e-14)
+    # its cage balls fill the pocket between two balls but for the 6208's play, 0.0026 D
+    assert constants.cage_pocket_play == 0.0026
+    pitch = model.par[s.P_R_GUIDE]
+    play = pitch * 2.0 * math.sin(0.5 * math.pi / b.Z) - 0.5 * b.D - R
+    assert play == pytest.approx(constants.cage_pocket_play * b.D, rel=1e-9)
     assert DemModel("6208", "guessasma_oil", kt_ratio=1.0).par[s.P_KT_RATIO] == 1.0  # the argument still wins
 
 

@@ -57,11 +57,20 @@ def groove_approach(px, py, pz, cx, cy, cz, ax, ay, az, rho, rg):
     dx = px - cx
     dy = py - cy
     dz = pz - cz
-    h = dx * ax + dy * ay + dz * az  # along the axis
-    ex = dx - h * ax  # in the circle's plane, toward the nearest point of the circle
-    ey = dy - h * ay
-    ez = dz - h * az
-    r = math.sqrt(ex * ex + ey * ey + ez * ez)
+    if ax == 0.0 and ay == 0.0 and az == 1.0:
+        # the circle's axis is z (the outer race; the inner one of an untilted ring): h and e below are dz and (dx,
+        # dy, 0) exactly, so this gives the same result to the bit with a shorter chain of operations to the root
+        h = dz
+        ex = dx
+        ey = dy
+        ez = 0.0
+        r = math.sqrt(dx * dx + dy * dy)
+    else:
+        h = dx * ax + dy * ay + dz * az  # along the axis
+        ex = dx - h * ax  # in the circle's plane, toward the nearest point of the circle
+        ey = dy - h * ay
+        ez = dz - h * az
+        r = math.sqrt(ex * ex + ey * ey + ez * ez)
     if r == 0.0:
         return -1.0, 0.0, 0.0, 0.0
     # s = e (r - rho)/r + h a: |s| = sqrt((r - rho)^2 + h^2), and n = s/|s| needs only 1/(r |s|) (one division

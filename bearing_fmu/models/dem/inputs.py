@@ -1,0 +1,106 @@
+"""Checks of the DEM's settings (constructor arguments) and inputs (each call's values and the FMU's communication
+step): every refusal is an InputError that names the value and its allowed range."""
+
+import math
+
+from bearing_fmu_common.variables import InputLimits
+
+from ...kernels.ehl import friction_coefficient
+from ...params import SUPPORT_DAMPING, SUPPORT_STIFFNESS, clearance_limits
+from ..declarations import DEM_DT_MAX, DEM_INPUTS, DEM_REFRESH_MAX, T_OIL_START
+from ..variables import DM_N_LIMIT, MATERIAL_LIMIT, InputError
+from .packing import CONSTANTS
+
+T_OIL_DEFAULT = T_OIL_START  # K, the oil temperature of a call that gives none
+TRACTION_LIMIT_MAX = friction_coefficient(0.0)  # a full film carries no more than the boundary regime (0.1)
+# update()'s communication step is rounded to this grid (s), far below any DEM time step (0.1-10 us)
+COMMUNICATION_DIGITS = 12
+COMMUNICATION_RESOLUTION = 10.0**-COMMUNICATION_DIGITS
+
+
+def checked_settings(
+    dt, refresh, safety, refresh_interval, traction_limit, support_stiffness, support_damping, kt_ratio, mass, inertia
+):
+    """Refuse a DemModel setting out of its range (the arguments of DemModel; mass and inertia are ring_mass and
+    ring_inertia); returns the ring's support (N/m, N.s/m) and kt_ratio, params/dem_model.toml's where None."""
+    if dt is not None and not (math.isfinite(dt) and 0.0 < dt <= DEM_DT_MAX):
+        raise InputError(f"dt = {dt} s is outside the allowed range ]0, {DEM_DT_MAX:g}] s")
+    if refresh is not None and not (float(refresh) == int(refresh) and 1 <= int(refresh) <= 100000):
+        raise InputError(f"refresh = {refresh} steps is outside the allowed range [1, 100000] (a whole number)")
+    if not (math.isfinite(safety) and 0.0 < safety <= 1.0):
+        raise InputError(f"safety = {safety} is outside the allowed range ]0, 1]")
+    # 0 (the declared minimum) refreshes at every step, as any interval below dt does (time_step.refresh_steps)
+    if not (math.isfinite(refresh_interval) and 0.0 <= refresh_interval <= DEM_REFRESH_MAX):
+        raise InputError(
+            f"refresh_interval = {refresh_interval} s is outside the allowed range [0, {DEM_REFRESH_MAX:g}] s "
+            "(0 = every DEM step)"
+        )
+    if not (math.isfinite(traction_limit) and 0.0 <= traction_limit <= TRACTION_LIMIT_MAX):
+        raise InputError(
+            f"traction_limit = {traction_limit} is outside the allowed range [0, {TRACTION_LIMIT_MAX:g}] "
+            "(0 = the lubricant's EHL traction curve; 0.01 = the papers' mu(Lambda))"
+        )
+    support = (
+        _checked_support("support_stiffness", support_stiffness, CONSTANTS.support_stiffness, SUPPORT_STIFFNESS),
+        _checked_support("support_damping", support_damping, CONSTANTS.support_damping, SUPPORT_DAMPING),
+    )
+    kt_ratio = CONSTANTS.kt_ratio if kt_ratio is None else kt_ratio
+    if not (math.isfinite(kt_ratio) and 0.1 <= kt_ratio <= 1.5):
+        raise InputError(f"kt_ratio = {kt_ratio} is outside the allowed range [0.1, 1.5]")
+    if mass is not None and not (math.isfinite(mass) and mass > 0.0):
+        raise InputError(f"ring_mass = {mass} kg is outside the allowed range ]0, inf[ kg")
+    if inertia is not None and not (math.isfinite(inertia) and inertia > 0.0):
+        raise InputError(f"ring_inertia = {inertia} kg.m^2 is outside the allowed range ]0, inf[ kg.m^2")
+    return support, kt_ratio
+
+
+def _checked_support(name, value, default, spec):
+    """A support constant (spec's unit) from the argument, or the constants file's when None; checked."""
+    value = default if value is None else float(value)
+    if not (math.isfinite(value) and spec.low <= value <= spec.high):
+        raise InputError(f"{name} = {value} {spec.unit} is outside the allowed range [{spec.low:g}, {spec.high:g}]")
+    return value
+
+
+def speed_limit(bearing):
+    """Largest inner-ring speed (rad/s): the bearing's d_m n limit."""
+    return DM_N_LIMIT / (bearing.dm * 1e3) * 2.0 * math.pi / 60.0
+
+
+def input_limits(bearing, Pd, load, omega_max):
+    """The InputLimits of DEM_INPUTS narrowed to a bearing of diametral clearance Pd (m) with the load limit `load`
+    (N) and the speed limit omega_max (rad/s)."""
+    narrowed = {name: (-load, load, MATERIAL_LIMIT) for name in ("F_x", "F_y", "F_z")}
+    # moments: the load limit at the pitch radius, as the quasi-static fidelity's
+    narrowed.update(
+        {name: (-load * 0.5 * bearing.dm, load * 0.5 * bearing.dm, MATERIAL_LIMIT) for name in ("M_x", "M_y")}
+    )
+    narrowed["omega"] = (-omega_max, omega_max, f"d_m n <= {DM_N_LIMIT:.0e} mm.rpm")
+    # the clearance in effect, P_d + dPd_thermal, keeps the geometric limits of P_d itself (|P_d| <= A:
+    # neither an interference beyond the groove clearance nor a free contact angle beyond 60 deg)
+    low, high = clearance_limits(bearing.D, bearing.f_i, bearing.f_o)
+    narrowed["dPd_thermal"] = (
+        low - Pd,
+        high - Pd,
+        f"Pd + dPd_thermal within [{low:.4g}, {high:.4g}] m (|Pd| <= (f_i + f_o - 1) D)",
+    )
+    return InputLimits(DEM_INPUTS, narrowed)
+
+
+def check_inputs(limits, t, t_end, omega, loads, T_oil, dPd_thermal):
+    """Refuse a call from time t (s) to t_end (s) that does not go forward, or an input outside limits
+    (input_limits)."""
+    if not (math.isfinite(t_end) and t_end > t):
+        raise InputError(f"t_end = {t_end} s is outside the allowed range ]{t:.9g}, inf[ s (after the current time)")
+    limits.check((omega, *loads, T_oil, dPd_thermal))  # the order of DEM_INPUTS
+
+
+def communication_interval(interval):
+    """The communication step interval (s) on the grid of COMMUNICATION_RESOLUTION; refused below it."""
+    if not (math.isfinite(interval) and interval >= COMMUNICATION_RESOLUTION):
+        raise InputError(
+            f"communication step = {interval} s is outside the allowed range [{COMMUNICATION_RESOLUTION:g}, inf[ s"
+        )
+    # on a grid of 1 ps: masters that hand the same nominal step in different roundings (libcosim counts
+    # integer nanoseconds, fmpy multiplies n H) then take the same DEM steps, bit for bit
+    return round(interval, COMMUNICATION_DIGITS)

@@ -1,0 +1,408 @@
+"""DemModel: the DEM facade's state arrays, its stepping (kernel calls, the automatic step's retries, rollback to the
+start of a call) and the FMU protocol (update, evaluate, get_state/set_state); the parts it draws on are its
+sibling modules (the package's docstring lists them)."""
+
+import math
+
+import numpy as np
+
+from bearing_fmu_common.variables import gather_plan, outputs_as_dict, select
+
+from ...kernels import truncation as tk
+from ...kernels.ball_dynamics import integrator as dyn
+from ...kernels.ball_dynamics import state as s
+from ...kernels.ball_dynamics.outputs import bearing_outputs
+from ...kernels.ball_dynamics.stiffness import stiffness_matrix
+from ...kernels.geometry import pass_frequencies
+from ...params import load_bearing, load_lubricant
+from ...scene import Scene
+from ..declarations import DEM_INPUTS, DEM_OUTPUTS
+from ..declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
+from ..variables import P_MAX_ERROR, InputError, OilTemperatureWatch, check_clearance, pressure_warnings
+from . import inputs, outputs, time_step
+from .inputs import T_OIL_DEFAULT
+from .monitor import DemUnstableError, energy_limit, unstable_error
+from .packing import load_limit, pack_parameters
+from .placement import place_bodies
+from .time_step import AUTO_STEP_HALVINGS, SAFETY
+
+
+class DemModel:
+    """DEM bearing: Z balls + Z cage balls + translating inner ring.
+
+    bearing, lubricant: catalogue name or TOML path (as the other fidelities). scene: Scene with fidelity
+    'dem' (film formula, Hertz solution, roughness factor, capacitance on/off, floor, background and
+    permittivity pressure). dt: fixed time step (s); None = safety x the
+    stability limit of the stiffest contact pair at the loads of each advance() call. refresh: tribology
+    refresh interval in steps (>= 1); None = every refresh_interval (s) of simulated time. The defaults
+    SAFETY and REFRESH_INTERVAL are chosen from the error-vs-run-time front (docs/reports/dem_error.md). Pd: diametral
+    clearance (m) overriding the file. ring_mass: inner-ring mass (kg); None = estimated from the bore.
+    ring_inertia: its moment of inertia about a diameter through its centre (kg.m^2), for the tilts; None =
+    estimated from the same annulus (the polar moment, for the ring's gyroscopic moment, is always the annulus's
+    for the ring's mass).
+    kt_ratio: tangential/normal stiffness (-) of the asperities' spring; None = params/dem_model.toml's.
+    support_stiffness (N/m), support_damping (N.s/m): the inner ring's support, a spring to its rest position and a
+    damper across the axis (x, y; none along z), the same spread over the pitch circle in the tilts (k (d_m/2)^2/2,
+    c (d_m/2)^2/2); None = params/dem_model.toml's (no spring; 1000 N.s/m, the shaft it sits on: docs/dem.md, Ring
+    support).
+    traction_limit: 0 (default) = the tangential force of the film is the lubricant's EHL traction curve
+    (kernels.ehl.film_traction_coefficient,
+    the film's share ehl.film_share(Lambda)), the asperities' share a spring capped at the boundary friction;
+    > 0 = override: a spring alone, capped at the ramp from 0.1 at Lambda = 1 to traction_limit in a full film
+    (kernels.ehl.traction_coefficient; 0.01 = the papers' mu(Lambda)) (docs/dem.md, Tangential force).
+    averaged: True (default) reports torque, P_loss, Q_inner_ring,
+    Q_outer_ring and C_bearing as means over each advance() interval (what a co-simulation partner integrates:
+    the energy of the step), False their values at the interval's last step (docs/dem.md, Outputs).
+    averaged_state: False (default) reports the loads, pressure, films and the ring's displacement at the end of
+    each interval; True as means over it (the displacement over its steps, the others over its tribology
+    refreshes): for masters that sample slower than the ball pass (docs/dem.md, Outputs).
+    """
+
+    def __init__(
+        self,
+        bearing="6208",
+        lubricant="guessasma_oil",
+        scene=None,
+        dt=None,
+        refresh=None,
+        Pd=None,
+        ring_mass=None,
+        kt_ratio=None,
+        ring_inertia=None,
+        support_stiffness=None,
+        support_damping=None,
+        safety=SAFETY,
+        refresh_interval=REFRESH_INTERVAL,
+        averaged=True,
+        traction_limit=0.0,
+        averaged_state=False,
+    ):
+        self.scene = (scene or Scene(name="dem", fidelity="dem")).validate()
+        if self.scene.fidelity != "dem":
+            raise InputError(f"scene '{self.scene.name}' has fidelity {self.scene.fidelity!r}: DemModel needs 'dem'")
+        self.bearing = b = load_bearing(bearing)
+        self.lubricant = load_lubricant(lubricant)
+        self.Pd = b.Pd if Pd is None else float(Pd)
+        check_clearance(self.Pd, b, Pd is not None)
+        self.support, kt_ratio = inputs.checked_settings(
+            dt, refresh, safety, refresh_interval, traction_limit, support_stiffness, support_damping, kt_ratio,
+            ring_mass, ring_inertia,
+        )  # fmt: skip
+        self.traction_limit = float(traction_limit)
+        self.averaged = bool(averaged)
+        self.averaged_state = bool(averaged_state)
+        self.safety = float(safety)
+        self.refresh_interval = float(refresh_interval)
+        self.ring_mass_estimated = ring_mass is None
+        self.ring_inertia_estimated = ring_inertia is None
+        self.cage_radius_estimated = b.cage_ball_radius <= 0.0
+        self.dt_fixed = dt
+        self.refresh_fixed = None if refresh is None else int(refresh)
+        self.omega_max = inputs.speed_limit(b)
+        self.par, self._truncation_parameters, self._rest = pack_parameters(
+            b, self.scene, self.lubricant, self.Pd, self.support, self.traction_limit, kt_ratio, ring_mass, ring_inertia
+        )
+        self.load_limit = load_limit(self.par, b.Z)
+        self._limits = inputs.input_limits(b, self.Pd, self.load_limit, self.omega_max)
+        self._rho_outer = float(self.par[s.P_RHO_O])  # at the nominal clearance
+        Z = b.Z
+        self.balls = np.zeros((s.B_SIZE, Z))
+        self.cage = np.zeros((s.C_SIZE, Z))
+        self.ring = np.zeros(s.R_SIZE)
+        self.spring = np.zeros((s.S_SIZE, Z))
+        self.trib = np.zeros((s.T_SIZE, 2, Z))
+        self.counters = np.zeros(s.K_SIZE + 2 * Z, dtype=np.int64)
+        self.omega = 0.0
+        self.out = np.zeros(s.O_SIZE)
+        self.status = np.zeros(s.ST_SIZE, dtype=np.int64)
+        self._work = np.zeros((s.W_SIZE, Z))
+        self._acc = np.zeros(s.A_SIZE)
+        self._Q = np.zeros((2, Z))
+        self._alpha = np.zeros((2, Z))
+        self._signed_alpha = np.zeros((2, Z))
+        self.trunc = np.zeros(tk.TR_SIZE)  # shoulder truncation of the last advance() (kernels.truncation TR_*)
+        self.truncated = np.zeros(2)  # 1 for a race truncated at the last advance() (its warning is logged on entry)
+        self.dt = math.nan  # time step of the last advance() call (s)
+        self.refresh = 0  # its tribology refresh interval (steps)
+        self._place_bodies()
+        self._initialise(0.0, 0.0, 0.0, 0.0, T_OIL_DEFAULT)
+        # the FMU interface (update): variables of the scene in declaration order, filled by one copy plan
+        self.inputs = select(DEM_INPUTS, self.scene)
+        self.outputs = select(DEM_OUTPUTS, self.scene)
+        self.output_names = tuple(v.name for v in self.outputs)
+        self.values = np.zeros(len(self.outputs))
+        self.warnings = []  # of the last advance(): p_max above the ISO 76 limit (pressure_warnings)
+        self._oil_watch = OilTemperatureWatch(self.lubricant)
+        self.K = np.zeros((5, 5))  # condensed stiffness of the last update (scene option stiffness)
+        self.frequencies = np.zeros(4)  # FTF, BPFO, BPFI, BSF (Hz) of the last update
+        arrays = {
+            "out": self.out,
+            "ring": self.ring,
+            "status": self.status,
+            "K": self.K.reshape(-1),
+            "freq": self.frequencies,
+            "trunc": self.trunc,
+        }
+        self._plan = gather_plan(self.outputs, arrays)
+        # state at the start of the last kernel call: an automatic-step call is repeated from it, and update()
+        # restores it when the call fails
+        self._start = self.get_state()
+        self.step_halvings = 0  # times the last call's automatic step was halved after a monitor stop
+        self._gather()
+
+    # -- set-up --------------------------------------------------------------------------------
+    def _bodies(self):
+        """The arrays every ball_dynamics kernel call takes first: the state, the parameters and the lubricant."""
+        return self.balls, self.cage, self.ring, self.spring, self.trib, self.counters, self.par, self.lubricant.array
+
+    def _place_bodies(self):
+        place_bodies(self.balls, self.cage, self.ring, self.spring, self.trib, self.counters, self.par, self._rest)
+        self.omega = 0.0
+
+    def _initialise(self, omega, F_x, F_y, F_z, T_oil, M_x=0.0, M_y=0.0):
+        dyn.initialise_accelerations(*self._bodies(), omega, F_x, F_y, F_z, M_x, M_y, T_oil, self._work, self._acc)
+
+    # -- time step -----------------------------------------------------------------------------
+    def stable_time_step(self, F_x=0.0, F_y=0.0, F_z=0.0, omega=None, include_state=True, M_x=0.0, M_y=0.0):
+        """Stability limit (s) of the stiffest contact pair for the given loads (N, N.m) and speed (rad/s): contact
+        loads are an estimate (Stribeck's 5 F_r/Z for the radial load, F_a/(Z sin alpha) for the axial one with alpha >=
+        5 deg, 2 M/(Z rho_i sin alpha) for a moment, plus the centrifugal force), or the current ones where larger
+        (include_state); the cage-ball load is bounded by the friction force mu Q a ball can transmit (the cage contacts
+        are frictionless: only the races' traction pushes a ball against a cage ball), mu the largest mu(Lambda) of the
+        loaded contacts at the last tribology refresh (0.1 in the boundary regime, 0.01 in a full film). The normal
+        damping C_n of each contact is also that of the last refresh (a cold full film at low speed is overdamped). A
+        film that changes within the call is caught by the monitor (the automatic step is then halved)."""
+        omega = self.omega if omega is None else omega
+        return time_step.stable_time_step(
+            self.bearing, self.par, self.balls, self.ring, self.trib, self._Q, F_x, F_y, F_z, omega, include_state,
+            M_x, M_y,
+        )  # fmt: skip
+
+    def automatic_time_step(self, F_x=0.0, F_y=0.0, F_z=0.0, omega=None, M_x=0.0, M_y=0.0):
+        """The automatic step (s) for the given loads (N, N.m) and speed (rad/s; the faster end of a call: the limit
+        falls with the centrifugal load): safety x stable_time_step(), and at most DAMPING_PLAN m / c of the ball
+        with the largest normal damping c (N.s/m, loaded contacts at the last refresh) or of the ring on its support;
+        with a support spring, at most safety x its stability limit 2 / omega_n."""
+        stable = self.stable_time_step(F_x, F_y, F_z, omega, M_x=M_x, M_y=M_y)
+        return time_step.automatic_time_step(stable, self.safety, self.par, self.trib)
+
+    @property
+    def time(self):
+        """Simulated time (s)."""
+        return float(self.ring[s.R_TIME])
+
+    # -- stepping ------------------------------------------------------------------------------
+    def advance(
+        self, t_end, omega=None, F_x=0.0, F_y=0.0, F_z=0.0, T_oil=T_OIL_DEFAULT, dPd_thermal=0.0, M_x=0.0, M_y=0.0
+    ):
+        """Integrate to t_end (s): inner-ring speed from its current value linearly to omega (rad/s; None =
+        hold), loads F_x, F_y, F_z (N) and moments M_x, M_y (N.m, about the ring's centre, that of its
+        groove-curvature-centre circle: the quasi-static fidelity's) on the inner ring, oil temperature T_oil (K),
+        change of diametral clearance dPd_thermal (m, added to Pd, negative = tighter: the outer groove circle
+        moves by half of it; the Hertz constants stay those of the nominal geometry, as in the quasi-static
+        fidelity). Returns outputs_dict().
+
+        Raises InputError for inputs out of range, DemUnstableError when the monitor stops the run (the
+        state is then left at the offending step: restore a saved state to retry)."""
+        omega = self.omega if omega is None else float(omega)
+        loads = (float(F_x), float(F_y), float(F_z), float(M_x), float(M_y))
+        self._advance(float(t_end), omega, loads, float(T_oil), float(dPd_thermal))
+        return self.outputs_dict()
+
+    def _advance(self, t_end, omega, loads, T_oil, dPd_thermal):
+        """advance() without building the output dict (floats in SI units, omega given; loads = (F_x, F_y, F_z,
+        M_x, M_y))."""
+        inputs.check_inputs(self._limits, self.time, t_end, omega, loads, T_oil, dPd_thermal)
+        F_x, F_y, F_z, M_x, M_y = loads
+        self.par[s.P_RHO_O] = self._rho_outer + 0.5 * dPd_thermal
+        interval = t_end - self.time
+        self._copy_state(self._start, self.__dict__)
+        self._start["omega"] = self.omega
+        dt = self.dt_fixed
+        automatic = dt is None
+        if automatic:
+            dt = self.automatic_time_step(F_x, F_y, F_z, max(abs(self.omega), abs(omega)), M_x, M_y)
+        n_steps = time_step.step_count(interval, dt)
+        self.step_halvings = 0
+        while True:
+            dt = interval / n_steps  # land exactly on t_end
+            omega0, orbit0 = self._run(n_steps, dt, omega, loads, T_oil)
+            if self.status[s.ST_CODE] == s.STATUS_OK:
+                break
+            if not automatic or self.step_halvings == AUTO_STEP_HALVINGS:
+                self._raise_unstable(dt, *loads)
+            # the step was chosen from the state at the start of the call; the film can change within it (a
+            # contact entering full film at low speed takes a squeeze damping that overdamps the ball): repeat
+            # the call from its start with half the step, or the step the stopped state's film needs if smaller
+            smaller = self.automatic_time_step(F_x, F_y, F_z, max(abs(omega0), abs(omega)), M_x, M_y)
+            self._restore_start()
+            self.step_halvings += 1
+            n_steps = time_step.retry_step_count(interval, n_steps, smaller)
+        bearing_outputs(
+            self.balls,
+            self.cage,
+            self.ring,
+            self.trib,
+            self.par,
+            self._acc,
+            self.omega,
+            interval,
+            orbit0,
+            self.scene.background_capacitance,
+            self.averaged,
+            self._Q,
+            self._alpha,
+            self.out,
+        )
+        outputs.state_outputs(self.out, self._acc, self.ring, interval, self.averaged_state)
+        # as the other fidelities: a warning above the ISO 76 limit; beyond the material limit (6 GPa) the
+        # monitor has already stopped the step (penetration), so only the warning can apply here
+        self.warnings = pressure_warnings(min(self.out[s.O_PMAX], P_MAX_ERROR), "the loads")
+        self.warnings += self._oil_watch.warnings(T_oil)
+        # the contact ellipses against the shoulders: an output of the interval's end state, not of every step
+        self.warnings += outputs.truncation_outputs(
+            self.balls, self.ring, self.par, self._truncation_parameters, self._Q, self._signed_alpha, self.trunc,
+            self.truncated,
+        )  # fmt: skip
+
+    def _run(self, n_steps, dt, omega, loads, T_oil):
+        """One kernel call of n_steps steps of dt (s) to the inner-ring speed omega; returns the speed and the sum
+        of the orbital angles at its start. self.status holds the monitor's verdict."""
+        refresh = time_step.refresh_steps(self.refresh_fixed, self.refresh_interval, dt)
+        self.par[s.P_REFRESH] = refresh
+        self.dt, self.refresh = dt, refresh
+        omega0 = self.omega
+        orbit0 = float(self.balls[s.B_ORBIT].sum())
+        limit = energy_limit(
+            self.bearing, self.par, self.balls, self.cage, self.ring, self._Q, max(abs(omega0), abs(omega)), loads
+        )
+        dyn.advance(
+            *self._bodies(), n_steps, dt, omega0, omega, *loads, T_oil, limit, self._work, self._acc, self.status
+        )
+        done = int(self.status[s.ST_STEP])
+        self.omega = omega0 + (omega - omega0) * done / n_steps
+        return omega0, orbit0
+
+    def _raise_unstable(self, dt, F_x, F_y, F_z, M_x=0.0, M_y=0.0):
+        """Raise the DemUnstableError of the monitor's stop (self.status) in a call of step dt (s) at these loads."""
+
+        def limit(include_state):
+            return self.stable_time_step(F_x, F_y, F_z, self.omega, include_state=include_state, M_x=M_x, M_y=M_y)
+
+        raise unstable_error(
+            self.status, self.time, dt, self.bearing.Z, self.trib, self.par[s.P_M_BALL], self.dt_fixed is not None,
+            self.safety, limit,
+        )  # fmt: skip
+
+    # -- outputs -------------------------------------------------------------------------------
+    def outputs_dict(self):
+        """Bearing-level outputs of the last advance() (names as the quasi-static fidelity), SI units."""
+        return outputs.outputs_dict(self.out, self.scene.capacitance)
+
+    def contacts(self):
+        """Per-ball arrays (Z,): azimuth psi (rad, in [0, 2 pi)), orbital and spin speeds (rad/s), and per race
+        ('_inner', '_outer') the current load Q (N) and approach delta (m), and the last refresh's film
+        h_min, h_c (m), Lambda, regime, mu, normal damping C_n (N.s/m), SRR, entrainment speed u (m/s),
+        capacitance C (F) and Hertz semi-axes a, b (m); the current contact angle alpha (rad)."""
+        return outputs.contact_arrays(self.balls, self.ring, self.trib, self.par, self._Q, self._alpha)
+
+    def record(self, t_end, interval, omega=None, **held):
+        """Advance to t_end (s) in steps of `interval` (s), recording after each: returns a dict of numpy arrays,
+        't' (n,) and every bearing output (n,), and under 'contacts' a dict of every per-ball/per-contact
+        array of contacts() (n, Z).
+        The speed goes linearly from its current value to omega (rad/s; None = hold) over the whole record;
+        the other inputs, given by name (F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal), are held."""
+        if not (math.isfinite(interval) and interval > 0.0):
+            raise InputError(f"interval = {interval} s is outside the allowed range ]0, inf[ s")
+        t0, omega0 = self.time, self.omega
+        omega = omega0 if omega is None else float(omega)
+        n = max(1, math.ceil((float(t_end) - t0) / interval - 1e-9))
+        rows = []
+        for k in range(1, n + 1):
+            t = min(t0 + k * interval, float(t_end))
+            out = self.advance(t, omega=omega0 + (omega - omega0) * (t - t0) / (float(t_end) - t0), **held)
+            rows.append((t, out, self.contacts()))
+        result = {"t": np.array([r[0] for r in rows])}
+        for name in rows[0][1]:
+            result[name] = np.array([r[1][name] for r in rows])
+        result["contacts"] = {name: np.array([r[2][name] for r in rows]) for name in rows[0][2]}
+        return result
+
+    def stiffness_matrix(self, K=None):
+        """5x5 stiffness dF_i/dd_j of the inner ring in the current state, (F) = (F_x, F_y, F_z, M_x, M_y) in N and
+        N.m, (d) = (x, y, z, theta_x, theta_y) in m and rad, the quasi-static fidelity's convention: each ball's
+        inner and outer contact tangent stiffnesses condensed in series (kernels.ball_dynamics.stiffness,
+        docs/dem.md, Stiffness). Written into K (float64[5, 5]) if given; returned."""
+        K = np.zeros((5, 5)) if K is None else K
+        stiffness_matrix(self.balls, self.ring, self.par, K)
+        return K
+
+    # -- FMU interface ---------------------------------------------------------------------------
+    def update(self, u, interval=0.0):
+        """Advance by `interval` (s; 0 = only report the current state) with the input values u in self.inputs
+        order (omega, F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal; SI) as advance() takes them, and fill self.values
+        (self.outputs order: the declarations of models.declarations.DEM_OUTPUTS); returns self.values.
+
+        Raises InputError for inputs out of range (nothing changed) and DemUnstableError when the monitor stops
+        the step: the state is then restored to the start of the step and self.status keeps the monitor's code."""
+        if interval != 0.0:
+            self._step_to(self.time + inputs.communication_interval(interval), u)
+        self._gather()
+        return self.values
+
+    def _step_to(self, t_end, u):
+        """update()'s step to t_end (s): advance, or on a monitor stop restore the state and raise."""
+        omega, F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal = (float(v) for v in u)
+        loads = (F_x, F_y, F_z, M_x, M_y)
+        self.status[s.ST_CODE] = s.STATUS_OK  # a refused input leaves no stale monitor code
+        self.warnings = []  # nor stale warnings
+        inputs.check_inputs(self._limits, self.time, t_end, omega, loads, T_oil, dPd_thermal)
+        try:
+            self._advance(t_end, omega, loads, T_oil, dPd_thermal)
+        except DemUnstableError:
+            self._restore_start()
+            raise
+
+    def _gather(self):
+        if self.scene.stiffness:
+            self.stiffness_matrix(self.K)
+        o = self.out
+        self.frequencies[:] = pass_frequencies(self.omega, o[s.O_OMEGA_CAGE], o[s.O_OMEGA_BALL_REL], self.bearing.Z)
+        for src, idx, dst in self._plan:
+            self.values[dst] = src[idx]
+
+    def evaluate(self, time, **values):
+        """Advance to `time` (s) with the named inputs (missing ones take their start values: 0, T_oil 313.15 K) as
+        update() does (update(u, H) is evaluate(self.time + H, ...)); the outputs as a dict name -> SI value
+        (integers for integer outputs)."""
+        self._step_to(float(time), [values.get(v.name, v.start) for v in self.inputs])
+        self._gather()
+        return self.as_dict()
+
+    def as_dict(self):
+        """The outputs of the last update() as a dict name -> SI value (integers for integer outputs)."""
+        return outputs_as_dict(self.outputs, self.values)
+
+    # -- state (FMU get/set state, rollback) ---------------------------------------------------
+    STATE_ARRAYS = ("balls", "cage", "ring", "spring", "trib", "counters", "truncated")
+
+    def get_state(self):
+        """Copy of the whole dynamic state (every array and the current inner-ring speed)."""
+        state = {name: getattr(self, name).copy() for name in self.STATE_ARRAYS}
+        state["omega"] = self.omega
+        return state
+
+    def set_state(self, state):
+        """Restore a state from get_state() (arrays are copied in place)."""
+        for name in self.STATE_ARRAYS:
+            getattr(self, name)[...] = state[name]
+        self.omega = float(state["omega"])
+
+    def _copy_state(self, target, source):
+        for name in self.STATE_ARRAYS:
+            np.copyto(target[name], source[name])
+
+    def _restore_start(self):
+        """Back to the state at the start of the last kernel call (_advance)."""
+        self._copy_state(self.__dict__, self._start)
+        self.omega = self._start["omega"]
