@@ -488,6 +488,22 @@ QUASI_STATIC_OUTPUTS = (
     *LIFE_OUTPUTS,
 )
 
+
+def mode_parameter(string, what, choices):
+    """The Integer <string>_mode that stands for the String parameter `string` in masters without String
+    parameters: -1 (default) = the String, 0 .. len(choices) - 1 = that choice, which then wins."""
+    return Variable(
+        f"{string}_mode",
+        "1",
+        f"{what} as a number, for masters without String parameters: -1 = the parameter {string}, "
+        + ", ".join(f"{code} = {name}" for code, name in enumerate(choices)),
+        "integer",
+        start=-1,
+        min=-1,
+        max=len(choices) - 1,
+    )
+
+
 QUASI_STATIC_PARAMETERS = (
     Variable("bearing", "", BEARING_NAME.format("6208, 6306, B7214C"), "string", start="B7214C"),
     Variable("lubricant", "", LUBRICANT_NAME, "string", start="iso_vg68_mineral"),
@@ -511,16 +527,8 @@ QUASI_STATIC_PARAMETERS = (
         start=None,  # the scene's lubrication
         choices=LUBRICATION_METHODS,
     ),
-    Variable(
-        "race_control_mode",
-        "1",
-        "race control as a number, for masters without String parameters: -1 = the parameter race_control, "
-        + ", ".join(f"{code} = {name}" for code, name in enumerate(RACE_CONTROLS)),
-        "integer",
-        start=-1,
-        min=-1,
-        max=len(RACE_CONTROLS) - 1,
-    ),
+    mode_parameter("race_control", "race control", RACE_CONTROLS),
+    mode_parameter("lubrication", "lubrication method", LUBRICATION_METHODS),
     Variable(
         "F_preload",
         "N",
