@@ -51,7 +51,10 @@ def relative_difference(a, b):
 
 
 def test_closed_loop_libcosim_equals_fmpy_master(closed_loop_fmus):
-    spec = load_run(SPRING, {"run.algorithm": "jacobi", "run.stop": 120.0})
+    # the bearings flooded: the test is of the masters, not of the lubrication method (whose torque need not fall
+    # as the oil warms: a thinner oil also relieves its starvation and inlet shear heating)
+    flooded = {"bearing_1.lubrication": "flooded", "bearing_2.lubrication": "flooded"}
+    spec = load_run(SPRING, {**flooded, "run.algorithm": "jacobi", "run.stop": 120.0})
     assert spec.step == 1.0 and spec.n_steps == 120
     fmpy_result = run(spec)
     system = system_of(spec)
@@ -67,13 +70,10 @@ def test_closed_loop_libcosim_equals_fmpy_master(closed_loop_fmus):
         assert worst[name] <= 1e-6, (name, worst[name])  # the acceptance
     for name in record:
         np.testing.assert_array_equal(libcosim_result[name], fmpy_result.columns[name], err_msg=name)
-    # the loop did something in 120 s: the oil warmed and the torque at full speed (from the step starting at
-    # t = 2 s, recorded at t = 3 s) changed with it. Its sign is not asserted: with the rig's oil-air lubrication
-    # (docs/lubrication_method.md) the falling viscosity also relieves the starvation and the inlet shear heating
-    # (films nearer flooded) and the thermal growth raises the contact loads; here it rose 3 % (0.382 -> 0.394 N.m)
+    # the loop did something in 120 s: the oil warmed and the torque at full speed (from the step
+    # starting at t = 2 s, recorded at t = 3 s) fell with the viscosity
     assert fmpy_result.columns["spindle.T_oil_1"][-1] > fmpy_result.columns["spindle.T_oil_1"][0] + 10.0
-    torque = fmpy_result.columns["bearing_1.torque"]
-    assert abs(torque[-1] / torque[3] - 1.0) > 0.01
+    assert fmpy_result.columns["bearing_1.torque"][-1] < fmpy_result.columns["bearing_1.torque"][3]
 
 
 # -- input schedules and DEM bearings ----------------------------------------------------------------
