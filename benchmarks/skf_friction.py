@@ -1,12 +1,21 @@
 """The SKF model for the frictional moment of a ball bearing: an independent reference implementation.
 
 Source: SKF General Catalogue 6000/I EN (2008), section 'Friction', 'The new SKF model for calculation of the
-frictional moment' (also SKF Rolling bearings 17000/1 EN, 2018, and skf.com 'The SKF model for calculating the
-frictional moment'). Read in full: the inlet-shear-heating page (skf.com) and Table 2a of the catalogue (G_rr,
-G_sl of radial ball bearings, yumpu copy of 'SKF - Rolling Bearings' p. 106) and the sliding-friction page (mu_sl,
-phi_bl, p. 105). The geometry constants R_i, S_i, K_rs, K_Z and the drag-loss equations are written from memory
-of the catalogue's tables (UNVERIFIED: docs/lubrication_method.md, section 5), and the drag-loss factor V_M is read
-from a diagram the catalogue does not tabulate: it is an input here, never a fitted number.
+frictional moment' (also SKF Rolling bearings, PUB BU/P1 10000 EN, and skf.com 'The SKF model for calculating the
+frictional moment'). What was read, and where:
+- verified against the catalogue's text (the yumpu copy of 'SKF - Rolling Bearings', document 55668573, p. 105
+  and p. 106): M_sl = G_sl mu_sl, mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL, phi_bl = exp(-2.6e-8 (n nu)^1.4 d_m),
+  mu_bl 'generally ~ 0.15', mu_EHL = 0.05 for mineral oils (p. 105); Table 2a, the forms of G_rr and G_sl for deep
+  groove ball bearings with F_a = 0 and for angular contact ball bearings with F_g = R3 d_m^4 n^2 and
+  F_g = S3 d_m^4 n^2 (p. 106). Later editions give mu_bl = 0.12 for n > 0 (not read here; 0.15 is kept).
+- not read in an SKF text (the pages' equations are images, Table 2b and the drag pages were not reachable):
+  phi_ish's constants (1.84e-9, 1.28, 0.64; skf.com's 'Inlet shear heating reduction factor' page names the
+  terms only), phi_rs with K_rs and K_Z, Table 2b's R_i, S_i and the drag-loss equations. Each value and equation
+  here equals its transcription in independent public implementations of the SKF model (GitHub code read for
+  this comparison: the 62 series constants and the drag equations in one, the 72 B constants, K_Z = 4.4 and
+  K_rs = 3e-8 in another, phi_ish's and phi_rs's forms in both); they stay UNVERIFIED against the catalogue
+  (docs/lubrication_method.md, section 5). The drag-loss factor V_M is read from a diagram the catalogue does not
+  tabulate: it is an input here, never a fitted number.
 
 Units as the catalogue: n r/min, nu mm^2/s (operating kinematic viscosity), d, D, d_m mm, loads N, moments N.mm.
 
@@ -28,8 +37,9 @@ Units as the catalogue: n r/min, nu mm^2/s (operating kinematic viscosity), d, D
 
 import math
 
-# Geometry constants (SKF catalogue table 'Geometry constants for rolling and sliding frictional moments';
-# memory, unverified): deep groove 62 series; single-row angular contact 72 B (40 deg contact angle).
+# Geometry constants (SKF catalogue Table 2b, 'Geometric constants for rolling and sliding frictional moments';
+# unverified against the catalogue, equal to independent public transcriptions, module docstring): deep groove
+# 62 series; single-row angular contact 72 B (40 deg contact angle).
 SERIES = {
     "62": {"kind": "deep_groove", "R1": 3.9e-7, "R2": 1.7, "S1": 3.23e-3, "S2": 36.5, "K_Z": 3.1},
     "72 B": {
@@ -43,9 +53,10 @@ SERIES = {
         "K_Z": 4.4,
     },
 }
+# K_rs: 3e-8 low-level oil bath and oil jet, 6e-8 grease and oil-air (unverified, module docstring)
 K_RS = {"oil_bath": 3e-8, "oil_jet": 3e-8, "oil_air": 6e-8, "grease": 6e-8}
-MU_BL = 0.15
-MU_EHL_MINERAL = 0.05
+MU_BL = 0.15  # catalogue p. 105 'generally ~ 0.15' (verified)
+MU_EHL_MINERAL = 0.05  # catalogue p. 105, mineral oils (verified)
 
 
 def phi_ish(n, dm, nu):
