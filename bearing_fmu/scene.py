@@ -21,6 +21,7 @@ FILM_FORMULAS = {
 HERTZ_SOLUTIONS = ("exact", "approximate")
 SPRING_CONSTANTS = ("hertz", "iso_ts_16281")  # contact load-deflection law of the quasi-static load distribution
 PERMITTIVITY_PRESSURES = {"max": PRESSURE_MAX, "mean": PRESSURE_MEAN}
+CAPACITANCE_REGIONS = ("hertz", "lubricated")  # the contact's capacitor: its Hertz ellipse, or the oil around it too
 # lubrication methods (docs/lubrication_method.md; their defaults in models.lubrication.METHODS)
 LUBRICATION_METHODS = ("flooded", "oil_bath", "oil_jet", "oil_air", "grease")
 DRAG_METHODS = ("oil_bath", "oil_jet", "oil_air")
@@ -57,6 +58,12 @@ class Scene:
         surface, Guessasma 2018 eq. 7).
     film_floor: film thickness (m) below which the capacitance is bounded (estimated, docs/decisions.md).
     background_capacitance: ring/background capacitance (F) added to the balls (Farah adds ~30 pF; off = 0).
+    capacitance_region: 'hertz' (default: each contact is a parallel plate over its Hertz ellipse at h_c) |
+        'lubricated' (plus the oil-filled gap around the ellipse up to oil_gap, kernels.capacitance.
+        outside_hertz_capacitance; docs/decisions.md).
+    oil_gap: the oil-availability gap (m) of capacitance_region = 'lubricated': oil fills the gap around a
+        contact where it is at most oil_gap (the meniscus). Recommended values per lubrication method in
+        docs/parameters.md (estimated).
     life (analytic, quasi_static): rating-life outputs L10, L10_h (ISO 281 basic rating life) and L10r, L10r_h
         (reference rating life from the contact loads, ISO/TS 16281 manner), docs/rating_life.md.
     spring_constant (quasi_static): contact load-deflection constants of the load distribution, 'hertz' (exact
@@ -88,6 +95,8 @@ class Scene:
     roughness_factor: float = 1.25
     film_floor: float = 10e-9
     background_capacitance: float = 0.0
+    capacitance_region: str = "hertz"
+    oil_gap: float = 10e-6
     tolerance: float = 1e-12
     drive: str = "load"
     race_control: str = "outer"
@@ -133,6 +142,12 @@ class Scene:
             out.append(f"film_floor = {self.film_floor} m: allowed ]0, 1e-6] m")
         if not 0.0 <= self.background_capacitance <= 1e-6:
             out.append(f"background_capacitance = {self.background_capacitance} F: allowed [0, 1e-6] F")
+        if self.capacitance_region not in CAPACITANCE_REGIONS:
+            out.append(f"capacitance_region = {self.capacitance_region!r}: allowed {list(CAPACITANCE_REGIONS)}")
+        elif self.capacitance_region != "hertz" and not self.capacitance:
+            out.append(f"capacitance_region = {self.capacitance_region!r} needs capacitance = true")
+        if not 0.0 < self.oil_gap <= 50e-6:  # the paraboloid gap: about 0.3 D across the groove at 50 um
+            out.append(f"oil_gap = {self.oil_gap} m: allowed ]0, 5e-5] m")
         if not 1e-15 <= self.tolerance <= 1e-3:
             out.append(f"tolerance = {self.tolerance}: allowed [1e-15, 1e-3]")
         if self.drive not in DRIVES:

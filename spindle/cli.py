@@ -321,6 +321,24 @@ def cmd_export_ssp(args):
     return EXIT_OK
 
 
+def cmd_film(args):
+    """The film at the most loaded inner and outer contacts of a quasi-static operating point: every film formula
+    against the numerical EHL solver (bearing_fmu.models.film_check)."""
+    import math
+
+    from bearing_fmu.models.film_check import film_check, format_film_check
+
+    loads = {name: value for name, value in (("F_x", args.Fx), ("F_y", args.Fy), ("F_z", args.Fz)) if value}
+    loads.update({name: value for name, value in (("M_x", args.Mx), ("M_y", args.My)) if value})
+    omega = args.speed * 2.0 * math.pi / 60.0
+    print(
+        f"{args.bearing} with {args.lubricant} at {args.speed:g} rpm ({omega:.2f} rad/s), oil at {args.T_oil:g} K, "
+        f"loads {loads or 'none'} (N, N.m); numerical solver on grid level {args.level}"
+    )
+    print(format_film_check(film_check(args.bearing, args.lubricant, omega, loads, args.T_oil, args.level)))
+    return EXIT_OK
+
+
 class _Version(argparse.Action):
     """--version: imports bearing_fmu (the one place of the version) only when asked, so that a command that
     runs FMUs leaves each bearing FMU its own bundled package (docs/fmu_runtime.md, "The master")."""
@@ -412,6 +430,17 @@ def main(argv=None):
     p.add_argument("--out", default=None, metavar="FILE", help="the .ssp file (default: <runfile stem>.ssp here)")
     p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override, e.g. bearing_1.F_z=1000")
     p.add_argument("--fmus", default=None, metavar="DIR", help="folder of the FMUs the run file names")
+    p = sub.add_parser(
+        "film",
+        help="film formulas against the numerical EHL solver at the most loaded contacts of an operating point",
+    )
+    p.add_argument("bearing", help="bearing name or file (e.g. 6208, B7214C)")
+    p.add_argument("--lubricant", required=True, help="lubricant name or file (e.g. iso_vg68_mineral)")
+    p.add_argument("--speed", type=float, required=True, metavar="RPM", help="inner-ring speed (rpm)")
+    for name, unit in (("Fx", "N"), ("Fy", "N"), ("Fz", "N"), ("Mx", "N.m"), ("My", "N.m")):
+        p.add_argument(f"--{name}", type=float, default=0.0, help=f"load on the inner ring ({unit})")
+    p.add_argument("--T-oil", dest="T_oil", type=float, default=313.15, metavar="K", help="oil temperature (K)")
+    p.add_argument("--level", type=int, default=2, help="grid level of the numerical solver (docs/ehl_solver.md)")
     p = sub.add_parser("report", help="error against run time, timing and stability report: docs/report.md")
     p.add_argument("--reuse", action="store_true", help="assemble from the reports already written")
     p.add_argument("--only", nargs="+", metavar="BENCHMARK", help="run only these benchmarks, then assemble")
@@ -426,6 +455,7 @@ def main(argv=None):
         "validate": cmd_validate,
         "check": cmd_check,
         "export-ssp": cmd_export_ssp,
+        "film": cmd_film,
     }
     try:
         return handler[args.command](args)

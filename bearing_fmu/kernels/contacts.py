@@ -15,7 +15,7 @@ import math
 
 from bearing_fmu_common.jit import kernel
 
-from .capacitance import ball_capacitance, contact_capacitance, contact_permittivity
+from .capacitance import ball_capacitance, lubricated_contact_capacitance
 from .ehl import film_parameter, film_thickness, friction_coefficient, lubrication_regime
 from .hertz import hertz_contact
 from .jones_harris import BQ_Q_I, BQ_Q_O, BQ_SPIN_I, BQ_SPIN_O, BQ_U_I, BQ_U_O, BQ_W_M
@@ -47,16 +47,17 @@ CP_F_O = 19
 CP_D = 20  # ball diameter (m)
 CP_CAPACITANCE = 21  # 1 = capacitance submodel on; 0 = null submodel (its slots are not written)
 CP_TORQUE = 22  # 1 = loss (torque and heat) submodel on; 0 = null submodel (its slots are not written)
+CP_OIL_GAP = 23  # oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
 # lubrication method (kernels.lubrication, models.lubrication); CP_LUBRICATED = 0 (flooded): none of it is read
-CP_LUBRICATED = 23  # 1 = film factors on (CO_PHI_* written); 0 = flooded, isothermal
-CP_THERMAL = 24  # 1 = inlet shear heating factor on
-CP_H_OIL = 25  # inlet oil layer (m; inf = no starvation)
-CP_K_OIL = 26  # oil thermal conductivity (W/(m K))
-CP_DRAG = 27  # 1 = drag of the balls on (with CP_TORQUE; CO_P_DRAG, CO_TORQUE_DRAG written)
-CP_DRAG_X = 28  # oil-volume fraction of the fluid the balls move through (-)
-CP_DRAG_AREA = 29  # time-mean part of a ball's frontal area in it (-)
-CP_DM = 30  # pitch diameter (m)
-CP_SIZE = 31
+CP_LUBRICATED = 24  # 1 = film factors on (CO_PHI_* written); 0 = flooded, isothermal
+CP_THERMAL = 25  # 1 = inlet shear heating factor on
+CP_H_OIL = 26  # inlet oil layer (m; inf = no starvation)
+CP_K_OIL = 27  # oil thermal conductivity (W/(m K))
+CP_DRAG = 28  # 1 = drag of the balls on (with CP_TORQUE; CO_P_DRAG, CO_TORQUE_DRAG written)
+CP_DRAG_X = 29  # oil-volume fraction of the fluid the balls move through (-)
+CP_DRAG_AREA = 30  # time-mean part of a ball's frontal area in it (-)
+CP_DM = 31  # pitch diameter (m)
+CP_SIZE = 32
 
 # layout of the output array
 CO_LAMBDA_I = 0
@@ -165,8 +166,9 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
             P = 0.0
             if Q > 0.0:
                 if capacitance:
-                    eps = contact_permittivity(K_cm, rho0, p, int(cp[CP_PRESSURE]))
-                    C = contact_capacitance(eps, a, b, hc, cp[CP_H_FLOOR])
+                    C = lubricated_contact_capacitance(
+                        K_cm, rho0, p, int(cp[CP_PRESSURE]), a, b, hc, cp[CP_H_FLOOR], E_red, cp[CP_OIL_GAP]
+                    )
                 if torque:
                     spin = balls[BQ_SPIN_I, j] if race == 0 else balls[BQ_SPIN_O, j]
                     mu = friction_coefficient(lam)

@@ -16,7 +16,7 @@ import math
 
 from bearing_fmu_common.jit import kernel
 
-from .capacitance import ball_capacitance, contact_capacitance, contact_permittivity
+from .capacitance import ball_capacitance, lubricated_contact_capacitance
 from .ehl import film_parameter, film_thickness, lubrication_regime
 from .geometry import centrifugal_force, pass_frequencies, rolling_kinematics
 from .hertz import hertz_contact, hertz_stiffness, series_stiffness
@@ -50,15 +50,16 @@ B_C_BACKGROUND = 21  # background capacitance (F)
 B_CENTRIFUGAL = 22  # 1 = centrifugal load on, 0 = off
 B_TOL = 23  # relative tolerance of the radial equilibrium (-)
 B_CAPACITANCE = 24  # 1 = capacitance submodel on; 0 = null submodel (O_C_BEARING and ball rows C_i, C_o not written)
+B_OIL_GAP = 25  # oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
 # lubrication method (kernels.lubrication, models.lubrication); B_LUBRICATED = 0 (flooded): none of it is read
-B_LUBRICATED = 25  # 1 = film factors on (O_PHI_* written)
-B_THERMAL = 26  # 1 = inlet shear heating factor on
-B_H_OIL = 27  # inlet oil layer (m; inf = no starvation)
-B_K_OIL = 28  # oil thermal conductivity (W/(m K))
-B_DRAG = 29  # 1 = drag of the balls on (O_P_DRAG, O_TORQUE_DRAG written)
-B_DRAG_X = 30  # oil-volume fraction of the fluid the balls move through (-)
-B_DRAG_AREA = 31  # time-mean part of a ball's frontal area in it (-)
-B_SIZE = 32
+B_LUBRICATED = 26  # 1 = film factors on (O_PHI_* written)
+B_THERMAL = 27  # 1 = inlet shear heating factor on
+B_H_OIL = 28  # inlet oil layer (m; inf = no starvation)
+B_K_OIL = 29  # oil thermal conductivity (W/(m K))
+B_DRAG = 30  # 1 = drag of the balls on (O_P_DRAG, O_TORQUE_DRAG written)
+B_DRAG_X = 31  # oil-volume fraction of the fluid the balls move through (-)
+B_DRAG_AREA = 32  # time-mean part of a ball's frontal area in it (-)
+B_SIZE = 33
 
 # layout of the output array
 O_LAMBDA_I = 0
@@ -180,16 +181,18 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
         if Q_i > 0.0:
             loaded_i = True
             if capacitance:
-                eps_i = contact_permittivity(K_cm, rho0, p_i, int(brg[B_PRESSURE]))
-                C_i = contact_capacitance(eps_i, a_i, b_i, hc_i, brg[B_H_FLOOR])
+                C_i = lubricated_contact_capacitance(
+                    K_cm, rho0, p_i, int(brg[B_PRESSURE]), a_i, b_i, hc_i, brg[B_H_FLOOR], E_red, brg[B_OIL_GAP]
+                )
             lam_i = min(lam_i, L_i)
             hmin_i = min(hmin_i, hm_i)
             hc_i_min = min(hc_i_min, hc_i)
         if Q_o > 0.0:
             loaded_o = True
             if capacitance:
-                eps_o = contact_permittivity(K_cm, rho0, p_o, int(brg[B_PRESSURE]))
-                C_o = contact_capacitance(eps_o, a_o, b_o, hc_o, brg[B_H_FLOOR])
+                C_o = lubricated_contact_capacitance(
+                    K_cm, rho0, p_o, int(brg[B_PRESSURE]), a_o, b_o, hc_o, brg[B_H_FLOOR], E_red, brg[B_OIL_GAP]
+                )
             lam_o = min(lam_o, L_o)
             hmin_o = min(hmin_o, hm_o)
             hc_o_min = min(hc_o_min, hc_o)

@@ -121,6 +121,7 @@ class AnalyticModel:
         brg[ak.B_PRESSURE] = PERMITTIVITY_PRESSURES[s.permittivity_pressure]
         brg[ak.B_H_FLOOR] = s.film_floor
         brg[ak.B_C_BACKGROUND] = s.background_capacitance
+        brg[ak.B_OIL_GAP] = s.oil_gap if s.capacitance_region == "lubricated" else 0.0
         brg[ak.B_CENTRIFUGAL] = 1.0 if s.centrifugal else 0.0
         brg[ak.B_TOL] = s.tolerance
         brg[ak.B_CAPACITANCE] = 1.0 if s.capacitance else 0.0

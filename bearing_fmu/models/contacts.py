@@ -40,7 +40,8 @@ def race_contacts(bearing, scene, Pd):
 def contact_terms(bearing, scene, rc):
     """Slot name (without its array's prefix) -> value of the contact terms both fidelities' arrays hold:
     radii (m), Hertz coefficients, reduced modulus (Pa), composite roughness (m), film and permittivity
-    options (codes), film floor (m), hysteresis factor, conformities."""
+    options (codes), film floor (m), oil-availability gap of the capacitance (m, 0: Hertz zones only), hysteresis
+    factor, conformities."""
     b = bearing
     return {
         "RX_I": rc.Rx_i,
@@ -59,6 +60,7 @@ def contact_terms(bearing, scene, rc):
         "FILM": FILM_FORMULAS[scene.film],
         "PRESSURE": PERMITTIVITY_PRESSURES[scene.permittivity_pressure],
         "H_FLOOR": scene.film_floor,
+        "OIL_GAP": scene.oil_gap if scene.capacitance_region == "lubricated" else 0.0,
         "ALPHA_H": ALPHA_HYSTERESIS_STEEL,
         "F_I": b.f_i,
         "F_O": b.f_o,

@@ -99,8 +99,19 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
             lam = ref_ehl.film_parameter(h_min, c["sigma"])
             C[s] = 0.0
             if Q > 0.0:
-                eps_r = ref_capacitance.contact_permittivity(K_cm, rho0, p_max, pressure_choice)
-                C[s] = ref_capacitance.contact_capacitance(eps_r, a_y, b_x, h_c, h_floor)
+                C[s] = ref_capacitance.lubricated_contact_capacitance(
+                    K_cm,
+                    rho0,
+                    p_max,
+                    pressure_choice,
+                    a_y,
+                    b_x,
+                    h_c,
+                    h_floor,
+                    E_red,
+                    brg[ak.B_OIL_GAP],
+                    outside=ref_capacitance.assembly_outside,
+                )
                 loaded[s].append((lam, h_min, h_c))
             pressures.append(p_max)
             balls[f"h_min_{s}"].append(h_min)

@@ -165,8 +165,19 @@ def refresh(st, par, lub, omega, T_oil):
             trib[s.T_H_C, race, j] = h_c
             trib[s.T_LAMBDA, race, j] = lam
             if par[s.P_CAPACITANCE]:
-                eps = ref_capacitance.contact_permittivity(K_cm, rho0, p_max, int(par[s.P_PRESSURE]))
-                trib[s.T_CAP, race, j] = ref_capacitance.contact_capacitance(eps, a, b, h_c, par[s.P_H_FLOOR])
+                trib[s.T_CAP, race, j] = ref_capacitance.lubricated_contact_capacitance(
+                    K_cm,
+                    rho0,
+                    p_max,
+                    int(par[s.P_PRESSURE]),
+                    a,
+                    b,
+                    h_c,
+                    par[s.P_H_FLOOR],
+                    par[s.P_E_RED],
+                    par[s.P_OIL_GAP],
+                    outside=ref_capacitance.assembly_outside,
+                )
 
 
 def damped_hertz(K, delta, zeta, m_eff, v_app):
@@ -178,8 +189,10 @@ def forces(st, par, omega, F_ring, vel, dt):
     """Forces (N) and moments (N.m) on every body at the current positions with the predicted velocities
     vel = (v_balls, w_balls, v_cage, v_ring, tilt rates of the ring); F_ring = (F_x, F_y, F_z, M_x, M_y) applied
     to the ring; updates springs, chatter counters and dissipation.
-    Returns (f_ball, m_ball, f_cage, f_ring, m_ring (about the ring's centre, 3 components), dissipated power
-    per race)."""
+    Returns (f_ball, m_ball, f_cage, f_ring, m_ring (about the ring's centre, 3 components), power dissipated per
+    race by the normal damping, [(race, ball, D, contact point from the ball's centre) of each contact whose
+    tangential force D dissipates (a slipping spring's and the film's traction)]: step() books D's power at the
+    velocities the step ends with)."""
     balls, cage, ring, spring, trib, counters = (st[k] for k in ("balls", "cage", "ring", "spring", "trib", "counters"))
     v_b, w_b, v_c, v_r, tilt_rates = vel
     Z = balls.shape[1]
@@ -190,6 +203,7 @@ def forces(st, par, omega, F_ring, vel, dt):
     f_ring = np.array(F_ring[:3], dtype=float)
     m_ring = np.array([F_ring[3], F_ring[4], 0.0])
     power = np.zeros(2)
+    slips = []
     w_reg = par[s.P_V_REG] / (0.5 * D)
     for race in range(2):
         centre, rho, axis = race_centre(race, ring, par)
@@ -240,7 +254,7 @@ def forces(st, par, omega, F_ring, vel, dt):
                 F_t = np.zeros(3)
                 counters[kc] = 0
             spring[rows, j] = xi
-            slip_power = -np.dot(F_t, v_t) if slipping else 0.0
+            dissipating = F_t.copy() if slipping else np.zeros(3)
             v = np.linalg.norm(v_t)
             if F_film > 0.0 and v > 0.0:
                 # EHL traction curve F_film (1 - exp(-v/v_s)), solved linearly implicitly: F / (1 + kappa dF/dv),
@@ -249,7 +263,9 @@ def forces(st, par, omega, F_ring, vel, dt):
                 kappa = par[s.P_FILM_RATE] * dt / par[s.P_M_BALL]
                 f = F_film * (1.0 - math.exp(-v * g)) / (1.0 + kappa * F_film * g * math.exp(-v * g))
                 F_t = F_t - f * v_t / v
-                slip_power += f * v
+                dissipating -= f * v_t / v
+            if dissipating.any():
+                slips.append((race, j, dissipating, r_c))
             force = -F_n * n + F_t
             f_ball[:, j] += force
             q = w_b[:, j] - orbit_speed(p, v_b[:, j]) * Z_AXIS
@@ -267,7 +283,7 @@ def forces(st, par, omega, F_ring, vel, dt):
             if race == 0:  # the race takes the opposite force at the contact point and the opposite moments
                 f_ring -= force
                 m_ring -= np.cross(p + r_c - centre, force) + resistances
-            power[race] += (c_n * v_n**2 if F_n > 0.0 else 0.0) + slip_power
+            power[race] += c_n * v_n**2 if F_n > 0.0 else 0.0
     R_sum = 0.5 * D + par[s.P_R_CAGE]
     m_b, m_c = par[s.P_M_BALL], par[s.P_M_CAGE]
     for k in range(Z):
@@ -300,7 +316,22 @@ def forces(st, par, omega, F_ring, vel, dt):
         tangent = np.cross(Z_AXIS, p)
         tangent[2] = 0.0
         f_cage[:, k] += (torque.mean() - torque[k]) / np.dot(tangent, tangent) * tangent
-    return f_ball, m_ball, f_cage, f_ring, m_ring, power
+    return f_ball, m_ball, f_cage, f_ring, m_ring, power, slips
+
+
+def slip_power(st, par, omega, slips):
+    """Power (W) per race of the dissipating tangential forces D at the velocities of the state (the end of a step):
+    -D . (velocity of the ball's surface - velocity of the race's surface) at each contact point."""
+    balls, ring = st["balls"], st["ring"]
+    power = np.zeros(2)
+    for race, j, D, r_c in slips:
+        point = balls[s.B_X : s.B_X + 3, j] + r_c
+        v_ball = balls[s.B_VX : s.B_VX + 3, j] + np.cross(balls[s.B_WX : s.B_WX + 3, j], r_c)
+        centre, _, _ = race_centre(race, ring, par)
+        W = race_rotation(race, ring, omega, ring[s.R_VTH : s.R_VTH + 2])
+        v_race = ring[s.R_VX : s.R_VX + 3] + np.cross(W, point - centre) if race == 0 else np.zeros(3)
+        power[race] -= np.dot(D, v_ball - v_race)
+    return power
 
 
 def tilt_acceleration(ring, par, omega, m_ring, tilt_rates):
@@ -337,7 +368,7 @@ def step(st, par, omega, F_ring, dt):
     th, vth, ath = (ring[r : r + 2] for r in (s.R_TH, s.R_VTH, s.R_ATH))
     th += vth * dt + 0.5 * ath * dt * dt
     vel = (v + a * dt, w + alpha * dt, vc + ac * dt, vr + ar * dt, vth + ath * dt)
-    f_b, m_b, f_c, f_r, m_r, power = forces(st, par, omega, F_ring, vel, dt)
+    f_b, m_b, f_c, f_r, m_r, power, slips = forces(st, par, omega, F_ring, vel, dt)
     new = (
         f_b / par[s.P_M_BALL],
         m_b / par[s.P_I_BALL],
@@ -351,7 +382,9 @@ def step(st, par, omega, F_ring, dt):
         acc_now[...] = acc_new
     ring[s.R_TIME] += dt
     st["counters"][s.K_STEP] += 1
-    return power
+    # velocity Verlet pairs the step's forces with the velocities it ends with (the kernel's
+    # integrator.slip_power_at_step_end says why the predicted ones are not used)
+    return power + slip_power(st, par, omega, slips)
 
 
 def initialise_accelerations(st, par, lub, omega, F_ring, T_oil):
@@ -362,7 +395,7 @@ def initialise_accelerations(st, par, lub, omega, F_ring, T_oil):
     saved = st["spring"].copy()
     vel = tuple(a[r : r + 3].copy() for a, r in ((balls, s.B_VX), (balls, s.B_WX), (cage, s.C_VX), (ring, s.R_VX)))
     vel += (ring[s.R_VTH : s.R_VTH + 2].copy(),)
-    f_b, m_b, f_c, f_r, m_r, _ = forces(st, par, omega, F_ring, vel, 0.0)
+    f_b, m_b, f_c, f_r, m_r, _, _ = forces(st, par, omega, F_ring, vel, 0.0)
     st["spring"][...] = saved
     balls[s.B_AX : s.B_AX + 3] = f_b / par[s.P_M_BALL]
     balls[s.B_ALX : s.B_ALX + 3] = m_b / par[s.P_I_BALL]

@@ -52,8 +52,19 @@ def contact(Q, u, spin, Rx, Ry, k, ell_E, ell_K, sigma, f, cp, eta, xi, rho0, lu
     losses = [0.0] * ref_torque.TL_SIZE
     if Q > 0.0 and capacitance:
         K_cm = ref_lubricant.clausius_mossotti_constant(lub[lk.LUB_EPS_R0], lub[lk.LUB_RHO_REF])
-        eps_r = ref_capacitance.contact_permittivity(K_cm, rho0, p_max, int(cp[ck.CP_PRESSURE]))
-        C = ref_capacitance.contact_capacitance(eps_r, a, b, h_c, cp[ck.CP_H_FLOOR])
+        C = ref_capacitance.lubricated_contact_capacitance(
+            K_cm,
+            rho0,
+            p_max,
+            int(cp[ck.CP_PRESSURE]),
+            a,
+            b,
+            h_c,
+            cp[ck.CP_H_FLOOR],
+            E_red,
+            cp[ck.CP_OIL_GAP],
+            outside=ref_capacitance.assembly_outside,
+        )
     if Q > 0.0 and torque:
         mu = ref_ehl.friction_coefficient(lam)
         args = (Q, u, spin, Rx, Ry, a, b, ell_E, f, cp[ck.CP_D], E_red, eta, xi, mu, cp[ck.CP_ALPHA_H])

@@ -197,6 +197,12 @@ CASES = (
         "test_218_dem_light_thrust_high_speed_is_truncated_and_warned_once",
     ),
     (
+        "stiff film traction (mixed film, 3-6 kN): the dissipated power does not depend on the step",
+        "DEM",
+        "tests/validation/test_dem_dissipation_step.py",
+        "test_torque_does_not_depend_on_the_step",
+    ),
+    (
         "cold oil start: the film turns full within a communication step",
         "DEM",
         "tests/validation/test_dem_full_film_damping.py",

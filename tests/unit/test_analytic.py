@@ -66,6 +66,7 @@ SCENES = {
     "approximate_hertz": Scene(hertz="approximate"),
     "no_centrifugal": Scene(centrifugal=False),
     "mean_pressure_background": Scene(permittivity_pressure="mean", background_capacitance=30e-12),
+    "lubricated_region": Scene(capacitance_region="lubricated", oil_gap=20e-6),
     "oil_bath": Scene(lubrication="oil_bath"),
     "oil_air": Scene(lubrication="oil_air"),
     "grease": Scene(lubrication="grease", inlet_oil_layer=3e-7),

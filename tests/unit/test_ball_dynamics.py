@@ -52,20 +52,22 @@ def _scale_err(a, b):
 
 
 @pytest.mark.parametrize(
-    "film, steps, traction, support",
+    "film, steps, traction, support, oil_gap",
     [
-        (0, STEPS, 0.0, None),
-        (1, STEPS // 3, 0.0, None),
-        (2, STEPS // 3, 0.0, None),
-        (0, STEPS // 3, 0.05, None),
-        (0, STEPS // 3, 0.0, (2e7, 2e3)),
+        (0, STEPS, 0.0, None, 0.0),
+        (1, STEPS // 3, 0.0, None, 0.0),
+        (2, STEPS // 3, 0.0, None, 0.0),
+        (0, STEPS // 3, 0.05, None, 0.0),
+        (0, STEPS // 3, 0.0, (2e7, 2e3), 0.0),
+        (0, STEPS // 3, 0.0, None, 10e-6),
     ],
 )
-def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction, support):
+def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction, support, oil_gap):
     """Film formulas: 0 Hamrock-Dowson (the kernel's fused fast path), 1 Masjedi-Khonsari and 2 Chittenden
     (through kernels.ehl.film_thickness); the papers' mu(Lambda) and a traction limit of 0.05 (mixed film here:
     the tangential limit differs from the Houpert terms' mu); a ring support with a spring and a damper far
-    above the defaults (N/m, N.s/m), so that their terms weigh in the ring's motion."""
+    above the defaults (N/m, N.s/m), so that their terms weigh in the ring's motion; the capacitance of the oil
+    around the contacts up to a 10 um gap (scene capacitance_region = 'lubricated')."""
     model = running_6208
     state = model.get_state()
     kernel_state = {k: (v.copy() if isinstance(v, np.ndarray) else v) for k, v in state.items()}
@@ -74,6 +76,7 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction, sup
     par[s.P_REFRESH] = 10
     par[s.P_FILM] = film
     par[s.P_TRACTION] = traction
+    par[s.P_OIL_GAP] = oil_gap
     if support is not None:
         lever = 0.5 * (0.5 * model.bearing.dm) ** 2
         par[[s.P_K_SUPPORT, s.P_C_SUPPORT]] = support

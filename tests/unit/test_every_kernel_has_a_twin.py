@@ -45,6 +45,22 @@ COVERED_THROUGH = {
         ES + "relaxation_sweep",
         "the derivative of a node's Poiseuille term in its own pressure, the Newton step's denominator",
     ),
+    "bearing_fmu.kernels.capacitance._gap_integrands": (
+        "bearing_fmu.kernels.capacitance._gap_coefficients",
+        "the four integrands of the Hertz gap coefficients, Simpson nodes of every cell",
+    ),
+    "bearing_fmu.kernels.capacitance._gap_coefficients": (
+        "bearing_fmu.kernels.capacitance.outside_hertz_capacitance",
+        "the gap around the contact (A, B of each ring), compared through the capacitance integrated over it",
+    ),
+    "bearing_fmu.kernels.capacitance._bound_crossing": (
+        "bearing_fmu.kernels.capacitance.outside_hertz_capacitance",
+        "where the oil bound first cuts the rings and where it ends, the split points of the compared quadrature",
+    ),
+    "bearing_fmu.kernels.capacitance._ring_integrals": (
+        "bearing_fmu.kernels.capacitance.outside_hertz_capacitance",
+        "the angular integral of one ring, summed into the compared capacitance",
+    ),
     "bearing_fmu.kernels.hertz._radius_ratio_of_ellipticity": (
         "bearing_fmu.kernels.hertz._ellipticity_exact_major",
         "the printed relation Ry/Rx(k) that the bisection inverts; compared on a grid of Ry/Rx through the exact "

@@ -21,6 +21,22 @@ def test_scene_reports_every_problem_at_once():
 
 
 @pytest.mark.parametrize(
+    "options, word",
+    [
+        ({"capacitance_region": "everywhere"}, "capacitance_region = 'everywhere': allowed"),
+        ({"capacitance_region": "lubricated", "capacitance": False}, "needs capacitance = true"),
+        ({"oil_gap": 0.0}, "oil_gap"),
+        ({"oil_gap": 60e-6}, "oil_gap"),
+    ],
+)
+def test_capacitance_region_options_are_checked(options, word):
+    with pytest.raises(SceneError, match=word):
+        Scene(**options).validate()
+    Scene(capacitance_region="lubricated", oil_gap=50e-6).validate()  # the largest oil gap, in every fidelity
+    Scene(name="d", fidelity="dem", capacitance_region="lubricated", oil_gap=1e-6).validate()
+
+
+@pytest.mark.parametrize(
     "option, word",
     [
         ({"gyroscopic": True}, "gyroscopic"),

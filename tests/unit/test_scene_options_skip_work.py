@@ -16,10 +16,13 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from bearing_fmu.kernels import capacitance as cap
 from bearing_fmu.kernels import contacts as ck
 from bearing_fmu.kernels import jones_harris as qk
 from bearing_fmu.kernels import radial_bearing as ak
+from bearing_fmu.kernels.ball_dynamics import state as ds
 from bearing_fmu.models.analytic import AnalyticModel
+from bearing_fmu.models.dem import DemModel
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
 
@@ -80,8 +83,13 @@ def with_code(array, slot, value):
 @pytest.mark.parametrize(
     "option, out_slots, rows, work",
     [
-        (ck.CP_CAPACITANCE, CAPACITANCE_OUT, (ck.PC_C_I, ck.PC_C_O), ("contact_permittivity", "contact_capacitance")),
-        (ck.CP_TORQUE, LOSS_OUT + DRAG_OUT, (ck.PC_P_I, ck.PC_P_O), ("contact_losses", "ball_drag_power")),
+        (ck.CP_CAPACITANCE, CAPACITANCE_OUT, (ck.PC_C_I, ck.PC_C_O), ("lubricated_contact_capacitance",)),
+        (
+            ck.CP_TORQUE,
+            LOSS_OUT + DRAG_OUT,
+            (ck.PC_P_I, ck.PC_P_O),
+            ("contact_losses", "friction_coefficient", "ball_drag_power"),
+        ),
     ],
     ids=["capacitance", "torque"],
 )
@@ -213,7 +221,7 @@ def test_analytic_capacitance_off_skips_its_work(monkeypatch):
     assert np.array_equal(off_out[others], on_out[others]) and np.array_equal(off_ball[:6], on_ball[:6])
     for m, expect_work in ((off, False), (on, True)):
         calls = Counter()
-        counting(monkeypatch, ak, ("contact_permittivity", "contact_capacitance", "ball_capacitance"), calls)
+        counting(monkeypatch, ak, ("lubricated_contact_capacitance", "ball_capacitance"), calls)
         run(m, ak.analytic_bearing.py_func)
         assert (sum(calls.values()) > 0) == expect_work, calls
         monkeypatch.undo()
@@ -225,3 +233,19 @@ def test_facade_packs_the_option_codes():
         scene = Scene(name="codes", fidelity="quasi_static", capacitance=cap, torque=tor, stiffness=stf)
         m = QuasiStaticModel("6208", "iso_vg68_mineral", scene)
         assert (m.cp[ck.CP_CAPACITANCE], m.cp[ck.CP_TORQUE], m.qs[qk.QS_STIFFNESS]) == tuple(map(float, flags))
+
+
+@pytest.mark.parametrize("region", ["hertz", "lubricated"])
+def test_capacitance_region_packs_the_oil_gap_and_hertz_skips_the_outside_term(monkeypatch, region):
+    """capacitance_region = 'hertz' packs oil gap 0 in every fidelity's array, and a 0 oil gap computes no
+    outside-Hertz term; 'lubricated' packs the scene's oil_gap (m) and computes it."""
+    scene = dict(capacitance_region=region, oil_gap=7e-6)
+    expect = 7e-6 if region == "lubricated" else 0.0
+    assert AnalyticModel("6208", "guessasma_oil", Scene(**scene)).brg[ak.B_OIL_GAP] == expect
+    qs = QuasiStaticModel("6208", "iso_vg68_mineral", Scene(name="q", fidelity="quasi_static", **scene))
+    assert qs.cp[ck.CP_OIL_GAP] == expect
+    assert DemModel("6208", "guessasma_oil", scene=Scene(name="d", fidelity="dem", **scene)).par[ds.P_OIL_GAP] == expect
+    calls = Counter()
+    counting(monkeypatch, cap, ("outside_hertz_capacitance",), calls)
+    C = cap.lubricated_contact_capacitance.py_func(1.5e-4, 870.0, 1.9e9, 0, 1.5e-3, 1.6e-4, 3e-7, 1e-8, 2.3e11, expect)
+    assert C > 0.0 and calls["outside_hertz_capacitance"] == (1 if expect else 0)

@@ -172,16 +172,19 @@ def ball_race_contact(
     rate of a regularised moment, w_reg = v_reg / (D/2) (rad/s), dt (s)). (Tuples keep the argument count
     within what numba's IR inliner takes.)
 
-    Returns (delta, fx, fy, fz, mx, my, mz, sx, sy, sz, slipping, reversed, power): approach (m, <= 0 open:
-    everything else 0, spring reset), force (N) and moment (N.m) on the ball, the new spring (m), the
-    spring's slip and reversal flags and the power (W) dissipated in the contact itself (normal damping,
-    tangential slip; the Houpert part is booked per step by the integrator).
+    Returns (delta, fx, fy, fz, mx, my, mz, sx, sy, sz, slipping, reversed, power, dtx, dty, dtz, rcx, rcy, rcz):
+    approach (m, <= 0 open: everything else 0, spring reset), force (N) and moment (N.m) on the ball, the new spring
+    (m), the spring's slip and reversal flags, the power (W) dissipated in the contact itself at the predicted
+    velocities (normal damping, tangential slip; the Houpert part is booked per step by the integrator), the
+    tangential force on the ball that dissipates (N: a slipping spring's and the film's traction) and the contact
+    point from the ball's centre (m): with them the integrator books the slip's power at the velocities the step
+    ends with (integrator.verlet_step says why).
     """
     omega, vrx0, vry0, vrz0, cx, cy, cz, rho, rg, K_h, ax, ay, az, wtx, wty = frame
     half_d, alpha_e, kt_ratio, rate_inv, w_reg, dt = steps
     delta, nx, ny, nz = groove_approach(px, py, pz, cx, cy, cz, ax, ay, az, rho, rg)
     if delta <= 0.0:  # open: the spring and the chatter count start again at the next touch
-        return delta, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, False, False, 0.0
+        return delta, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, False, False, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
     root = math.sqrt(delta)
     Q = K_h * delta * root
     # contact point relative to the ball centre and surface velocities there
@@ -233,8 +236,8 @@ def ball_race_contact(
     else:
         sx, sy, sz, ftx, fty, ftz, slipping, reversed_ = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, False, False
     power = c_n * vn * vn if F_n > 0.0 else 0.0
-    if slipping:
-        power -= ftx * vtx + fty * vty + ftz * vtz
+    # the tangential forces that dissipate: a slipping spring's and the film's traction (a sticking spring stores)
+    dtx, dty, dtz = (ftx, fty, ftz) if slipping else (0.0, 0.0, 0.0)
     if film_force > 0.0:
         v = math.sqrt(vtx * vtx + vty * vty + vtz * vtz)
         if v > 0.0:
@@ -242,13 +245,15 @@ def ball_race_contact(
             # at the surface of a solid sphere removes per newton in a step (3.5 dt / m) for both contacts of the
             # ball. Where the curve is steep (low speed, dF/dv dt >> m) the film stops at most half the slip in a
             # step (no overshoot, no chatter) and holds what rolling needs, as a stick; elsewhere F = F(v)
-            e = math.expm1(-v * slip)
-            f = -film_force * e / (1.0 + kappa * film_force * slip * (1.0 + e))
-            scale = f / v
+            g = math.exp(-v * slip)  # 1 - g rather than expm1 (twice as fast): its error, 1e-16 film_force, is no force
+            scale = film_force * (1.0 - g) / ((1.0 + kappa * film_force * slip * g) * v)  # F(v) / v, one division
             ftx -= scale * vtx
             fty -= scale * vty
             ftz -= scale * vtz
-            power += f * v
+            dtx -= scale * vtx
+            dty -= scale * vty
+            dtz -= scale * vtz
+    power -= dtx * vtx + dty * vty + dtz * vtz
     # force on the ball: normal push back towards the curvature centre, tangential traction
     fx = -F_n * nx + ftx
     fy = -F_n * ny + fty
@@ -276,4 +281,4 @@ def ball_race_contact(
     mx = mx - m_roll * qx - m_spin * spin * nx
     my = my - m_roll * qy - m_spin * spin * ny
     mz = mz - m_roll * qz - m_spin * spin * nz
-    return delta, fx, fy, fz, mx, my, mz, sx, sy, sz, slipping, reversed_, power
+    return delta, fx, fy, fz, mx, my, mz, sx, sy, sz, slipping, reversed_, power, dtx, dty, dtz, rcx, rcy, rcz

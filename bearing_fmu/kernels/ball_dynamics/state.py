@@ -140,7 +140,8 @@ P_K_SUPPORT = 65  # stiffness of the inner ring's support across the axis (x, y)
 P_C_SUPPORT = 66  # viscous damping of the support in x, y (N.s/m); none along the axis
 P_KT_SUPPORT = 67  # the support's tilt stiffness (N.m/rad): P_K_SUPPORT spread over the pitch circle, k (d_m/2)^2/2
 P_CT_SUPPORT = 68  # and its tilt damping (N.m.s/rad), c (d_m/2)^2/2
-P_SIZE = 69
+P_OIL_GAP = 69  # oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
+P_SIZE = 70
 
 # a ball-race contact counts as loaded in the outputs (loads, pressure, films, angles, n_loaded) when its approach
 # exceeds this (m): the rounding of the positions (~1e-18 m) leaves approaches of 1e-18-1e-15 m on contacts that
@@ -199,7 +200,9 @@ W_VC = 15  # predicted cage-ball velocity (m/s), 3 rows
 W_ORBIT = 18  # orbital angular speed of each ball about z from the predicted velocity (rad/s)
 W_LOADED = 19  # races on which each ball is loaded in the current step (0, 1, 2)
 W_CAP_BALL = 20  # each ball's capacitance at the last refresh, inner and outer contact in series (F)
-W_SIZE = 21
+W_DISS = 21  # tangential force on each ball that dissipates at its contacts (N), 3 rows per race (inner 21-23)
+W_ARM = 27  # contact point from the ball's centre (m), 3 rows per race (inner 27-29)
+W_SIZE = 33
 
 # ---- scalar work of one step: float64[A_SIZE] -----------------------------------------------------
 A_FR = 0  # force on the inner ring (N), 3 entries

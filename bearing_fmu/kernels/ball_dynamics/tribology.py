@@ -25,7 +25,7 @@ import math
 
 from bearing_fmu_common.jit import kernel
 
-from ..capacitance import contact_capacitance, contact_permittivity
+from ..capacitance import lubricated_contact_capacitance
 from ..ehl import (
     FILM_HAMROCK_DOWSON,
     film_parameter,
@@ -59,6 +59,7 @@ from .state import (
     P_K_I,
     P_KH_I,
     P_MU_LIM,
+    P_OIL_GAP,
     P_PRESSURE,
     P_RG_I,
     P_RHO_I,
@@ -314,7 +315,8 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
             trib[T_H_C, race, j] = h_c
             trib[T_LAMBDA, race, j] = lam
             if capacitance:
-                eps = contact_permittivity(K_cm, rho0, p_max, pressure)
-                trib[T_CAP, race, j] = contact_capacitance(eps, a, b, h_c, par[P_H_FLOOR])
+                trib[T_CAP, race, j] = lubricated_contact_capacitance(
+                    K_cm, rho0, p_max, pressure, a, b, h_c, par[P_H_FLOOR], E_red, par[P_OIL_GAP]
+                )
             else:
                 trib[T_CAP, race, j] = 0.0
