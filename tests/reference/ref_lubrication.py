@@ -8,6 +8,7 @@ coefficient is the derivative of ln(eta) by a five-point difference of the twin 
 """
 
 import math
+from decimal import Decimal
 
 from scipy.integrate import quad
 from scipy.optimize import brentq
@@ -88,18 +89,19 @@ def rolling_force_factor(phi_ish, phi_rs_c):
     return (phi_ish * phi_rs_c) ** (0.656 / 0.67)
 
 
-def sphere_drag_coefficient(Re):
-    """Schiller & Naumann 24/Re (1 + 0.15 Re^0.687) up to Re = 1000, 0.44 above."""
-    return 24.0 / Re * (1.0 + 0.15 * Re**0.687) if Re <= 1000.0 else 0.44
-
-
 def ball_drag_power(v, D, rho_e, eta_e, area_fraction):
-    """F |v|, F = (1/2) C_D(Re) rho_e (pi D^2/4) area_fraction v^2."""
+    """F |v|, F = (1/2) C_D(Re) rho_e (pi D^2/4) area_fraction v^2, C_D = Schiller & Naumann's 24/Re (1 + 0.15
+    Re^0.687) up to Re = 1000, 0.44 above, evaluated in
+    decimal arithmetic (28 significant digits, exponents far beyond float64's): at Re -> 0 the float C_D = 24/Re
+    overflows to inf while v^2 underflows to 0 (their product NaN); the result is rounded to a float once
+    (0.0 where the power is below the smallest float)."""
     if v == 0.0 or area_fraction <= 0.0 or rho_e <= 0.0:
         return 0.0
-    Re = rho_e * abs(v) * D / eta_e
-    F = 0.5 * sphere_drag_coefficient(Re) * rho_e * math.pi * D**2 / 4.0 * area_fraction * v**2
-    return F * abs(v)
+    s, D, rho, eta, f = (Decimal(x) for x in (abs(v), D, rho_e, eta_e, area_fraction))
+    Re = rho * s * D / eta
+    C_D = Decimal(24) / Re * (1 + Decimal("0.15") * Re ** Decimal("0.687")) if Re <= 1000 else Decimal("0.44")
+    F = C_D * rho * Decimal(math.pi) * D * D / 8 * f * s * s
+    return float(F * s)
 
 
 def mixture(X, rho_oil, eta_oil):
