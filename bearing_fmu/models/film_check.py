@@ -59,7 +59,7 @@ class ContactFilm:
     p_h: float  # Hertz maximum pressure (Pa)
     sigma: float  # composite roughness (m)
     formulas: dict = field(default_factory=dict)  # formula name -> Film
-    numerical: Film = None
+    numerical: Film = None  # None: the solver found no positive film on its grid (a finer level is needed)
     converged: bool = False
     seconds: float = 0.0  # wall time of the numerical solve (s)
 
@@ -99,8 +99,10 @@ def film_check(bearing, lubricant, omega, loads, T_oil=313.15, finest=2):
         solution = en.solve_contact(Rx, Ry, Q, u, E_red, eta, fluid, finest=finest)
         check.seconds = time.perf_counter() - start
         check.p_h = solution.grid.p_h
-        check.numerical = _film(solution.h_c, solution.h_min, sigma)
-        check.converged = solution.converged
+        # a film that closes (h <= 0) is no solution: the grid does not resolve this contact's film
+        resolved = 0.0 < solution.h_min <= solution.h_c < math.inf
+        check.numerical = _film(solution.h_c, solution.h_min, sigma) if resolved else None
+        check.converged = solution.converged and resolved
         checks.append(check)
     return checks
 
@@ -118,10 +120,12 @@ def format_film_check(checks):
             f"  {'method':<18} {'h_c nm':>9} {'vs num.':>8} {'h_min nm':>9} {'vs num.':>8} {'Lambda':>7}  regime"
         )
         n = c.numerical
-        rows = [("numerical", n)] + list(c.formulas.items())
+        if n is None:
+            lines.append("  numerical          no positive film on this grid: solve on a finer level")
+        rows = ([] if n is None else [("numerical", n)]) + list(c.formulas.items())
         for method, f in rows:
-            d_c = "" if f is n else f"{100.0 * (f.h_c / n.h_c - 1.0):+.1f} %"
-            d_m = "" if f is n else f"{100.0 * (f.h_min / n.h_min - 1.0):+.1f} %"
+            d_c = "" if f is n or n is None else f"{100.0 * (f.h_c / n.h_c - 1.0):+.1f} %"
+            d_m = "" if f is n or n is None else f"{100.0 * (f.h_min / n.h_min - 1.0):+.1f} %"
             lam = f"{f.lam:.2f}" if math.isfinite(f.lam) else "inf"
             lines.append(
                 f"  {method:<18} {f.h_c * 1e9:>9.1f} {d_c:>8} {f.h_min * 1e9:>9.1f} {d_m:>8} {lam:>7}  {f.regime}"

@@ -203,6 +203,12 @@ CASES = (
         "test_torque_does_not_depend_on_the_step",
     ),
     (
+        "angular-contact bearing, thrust and combined load, 3 000-15 000 rpm",
+        "quasi-static, DEM",
+        S + "test_angular_contact_speed_range.py",
+        "test_angular_contact_bearing_runs_stable_from_3000_to_15000_rpm",
+    ),
+    (
         "cold oil start: the film turns full within a communication step",
         "DEM",
         "tests/validation/test_dem_full_film_damping.py",

@@ -128,12 +128,12 @@ COVERED_THROUGH = {
     BD + "cage.cage_guide_contact": (BD + "integrator.verlet_step", "cage ball - channel contacts of a step"),
     BD + "cage.damped_hertz": (BD + "cage.ball_cage_contact", "the damped Hertz law of both cage contacts"),
     BD + "integrator.rigid_cage_torque": (BD + "integrator.verlet_step", "the cage's torque shared by its elements"),
-    BD + "integrator.sample_refresh": (BD + "integrator.advance", "the averaged state outputs' refresh samples"),
     BD + "integrator.slip_power_at_step_end": (
         BD + "integrator.verlet_step",
-        "the contacts' slip power at the velocities the step ends with: the twin's step books its slip power at"
-        " those velocities, and advance's comparison includes the power",
+        "the slip power at the velocities a step ends with, in the dissipated energy compared every step (the twin "
+        "evaluates it from the end velocities directly, ref_ball_dynamics.slip_power)",
     ),
+    BD + "integrator.sample_refresh": (BD + "integrator.advance", "the averaged state outputs' refresh samples"),
 }
 
 
