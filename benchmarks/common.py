@@ -47,11 +47,26 @@ def machine_speed(seconds=0.5):
     t_end = time.perf_counter() + seconds
     while not samples or time.perf_counter() < t_end:
         t0 = time.perf_counter()
-        acc = 0.0
-        for i in range(1, 5001):
-            acc += math.sqrt(i) * math.exp(-1e-5 * i) + math.log(i)
+        reference_workload()
         samples.append(time.perf_counter() - t0)
     return statistics.median(samples)
+
+
+def reference_workload():
+    acc = 0.0
+    for i in range(1, 5001):
+        acc += math.sqrt(i) * math.exp(-1e-5 * i) + math.log(i)
+    return acc
+
+
+def core_contention(seconds=0.5):
+    """Wall time over this process's CPU time while it runs the reference workload for `seconds`: about 1 when it
+    has a core to itself, about n when n runnable processes share its core. machine_speed's median of short
+    samples does not see this (a sample fits between two preemptions); a timing taken meanwhile can."""
+    w0, c0 = time.perf_counter(), time.process_time()
+    while time.perf_counter() - w0 < seconds:
+        reference_workload()
+    return (time.perf_counter() - w0) / max(time.process_time() - c0, 1e-9)
 
 
 def machine():
@@ -77,15 +92,23 @@ def forget(benchmark):
         METRICS.write_text(json.dumps(metrics, indent=1) + "\n")
 
 
-def record(benchmark, key, value, unit, *, kind, target=None, note=""):
+def record(benchmark, key, value, unit, *, kind, target=None, note="", side_by_side=False):
     """Keep a headline number of a benchmark for docs/report.md (benchmarks/report.py) in docs/reports/metrics.json.
 
-    kind: "error" (deterministic: a second run must reproduce it exactly), "timing" (a median, reproduced
-    within the noise band the report states) or "count". target: the budget (value <= target is met), from
-    docs/architecture.md's performance budget or the issue's acceptance; None when the number has none."""
+    kind: "error" (against a reference; deterministic: a second run must reproduce it to 1e-12 relative),
+    "difference" (between two solutions of the product, e.g. two fidelities; deterministic too), "timing" (a median,
+    reproduced within the noise band the report states) or "count". target: the budget (judged with the run's noise, benchmarks/verdicts.py), from
+    docs/architecture.md's performance budget or the acceptance criteria; None when the number has none.
+    side_by_side: a ratio of two timings measured interleaved in one run (judged without the run's noise factor,
+    benchmarks/verdicts.py)."""
     metrics = json.loads(METRICS.read_text()) if METRICS.exists() else {}
     metrics.setdefault(benchmark, {})[key] = dict(
-        value=float(value), unit=unit, kind=kind, target=None if target is None else float(target), note=note
+        value=float(value),
+        unit=unit,
+        kind=kind,
+        target=None if target is None else float(target),
+        note=note,
+        side_by_side=side_by_side,
     )
     REPORTS.mkdir(parents=True, exist_ok=True)
     METRICS.write_text(json.dumps(metrics, indent=1) + "\n")

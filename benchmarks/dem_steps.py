@@ -30,7 +30,7 @@ from bearing_fmu.models.dem import REFRESH_INTERVAL, SAFETY, DemModel, DemUnstab
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
 
-from .common import REPORTS, machine, write_report
+from .common import REPORTS, forget, machine, record, write_report
 
 POINTS = {
     "6208, 3 kN, 500 rad/s": dict(
@@ -345,8 +345,31 @@ def _figure(data):
     return fig
 
 
+def record_headlines(data):
+    """The report's numbers (docs/report.md) in docs/reports/metrics.json: per operating point the default's largest
+    steady error and cost and the largest stable step; per transient the default's error of the dissipated energy
+    and of the worst sample, and the quasi-static fidelity's difference from the DEM reference."""
+    forget("dem_steps")
+    for p in data["points"]:
+        default = next(r for r in p["rows"] if r["factor"] == 1.0 and r["refresh"] == "every 40 us")
+        record("dem_steps", f"{p['name']}, default: largest steady error", max(default["errors"].values()), "1",
+               kind="error")  # fmt: skip
+        record("dem_steps", f"{p['name']}, default: CPU ms per simulated ms", default["cpu"], "1", kind="timing")
+        stable = [r["factor"] for r in p["rows"] if r["errors"] is not None]
+        record("dem_steps", f"{p['name']}: largest step run without a monitor stop (x automatic)", max(stable), "1",
+               kind="count")  # fmt: skip
+    for t in data["transients"]:
+        default = t["rows"][0]["errors"]["torque"]
+        record("dem_steps", f"{t['kind']}, default: energy (mean torque) error", default[1], "1", kind="error")
+        record("dem_steps", f"{t['kind']}, default: torque error at the worst sample", default[0], "1", kind="error")
+        record("dem_steps", f"{t['kind']}, quasi-static driven in time: torque at the worst sample",
+               t["quasi_static"]["torque"][0], "1", kind="difference")  # fmt: skip
+
+
 def main():
-    render(measure())
+    data = measure()
+    render(data)
+    record_headlines(data)
 
 
 if __name__ == "__main__":

@@ -15,7 +15,7 @@ import os
 
 from bearing_fmu.models.film_check import FORMULAS, film_check
 
-from .common import machine, write_report
+from .common import forget, machine, record, write_report
 
 POINTS = (
     ("6208", "guessasma_oil", 313.15, 100.0, {"F_y": 3000.0}),
@@ -92,8 +92,23 @@ def render(data):
     write_report("film_check.md", "\n".join(lines) + "\n")
 
 
+def record_headlines(data):
+    """The report's numbers (docs/report.md): each formula's error of h_c and h_min against the numerical solution
+    at every contact."""
+    forget("film_check")
+    for r in data["rows"]:
+        n = r["numerical"]
+        if n is None:
+            continue
+        for name, f in r["formulas"].items():
+            for film in ("h_c", "h_min"):
+                record("film_check", f"{_point(r)}: {name} {film}", f[film] / n[film] - 1.0, "1", kind="error")
+
+
 def main():
-    render(measure())
+    data = measure()
+    render(data)
+    record_headlines(data)
 
 
 if __name__ == "__main__":

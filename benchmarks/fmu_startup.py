@@ -211,6 +211,7 @@ def main(warm_runs=7):
             kind="timing",
             target=KERNEL_RATIO_TARGET.get(name),
             note="the master's preallocated FMI calls",
+            side_by_side=True,
         )
         line = f"- {name}: warm start-up {med['startup']:.3f} s (target <= {STARTUP_TARGET_S:g} s)"
         if target:

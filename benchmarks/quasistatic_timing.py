@@ -278,6 +278,7 @@ def main():
         kind="timing",
         target=TARGET_JACOBIAN,
         note=j_worst[0].label,
+        side_by_side=True,
     )
     lines += [
         f"| Jacobian <= 50 % extra | {100 * j_worst[4][0]:+.1f} % ({100 * j_worst[4][1]:+.1f} %), "

@@ -99,10 +99,10 @@ def build_thermal_fmu(name, network, axial_float, out_dir=DEFAULT_OUT):
         experiment=(REFERENCE_STOP, REFERENCE_STEP),
     )
     rows, inputs = reference_rows(network, axial_float)
-    reference = bearing_build.csv_text(rows, lambda v: repr(float(v)))
+    computed = bearing_build.csv_text(rows, lambda v: repr(float(v)))
     markdown = bearing_build.variables_markdown(*thermal_variables(name, (network, axial_float)))
     bearing_build.write_if_changed(Path(out_dir) / f"{name}_network.toml", network_path(network).read_text())
-    bearing_build.write_if_changed(Path(out_dir) / f"{name}_ref.csv", reference)
+    reference = bearing_build.write_reference_if_changed(Path(out_dir) / f"{name}_ref.csv", computed)
     bearing_build.write_if_changed(Path(out_dir) / f"{name}.md", markdown)
     held = [{"time": 0.0, **inputs}, {"time": REFERENCE_STOP, **inputs}]  # constant over the experiment
     in_csv = bearing_build.csv_text(held, lambda v: repr(float(v)))

@@ -551,7 +551,7 @@ QUASI_STATIC_PARAMETERS = (
 # the power outputs and the capacitance are means over the step (the energy dissipated in the contacts
 # divided by H; the capacitance integrated over the DEM steps divided by H) or, with the parameter
 # average_outputs false, their values at the step's last DEM step.
-DEM_REFRESH_INTERVAL = 40e-6  # s, default simulated time between two tribology refreshes (docs/reports/dem_error.md)
+DEM_REFRESH_INTERVAL = 40e-6  # s, default simulated time between two tribology refreshes (docs/reports/dem_steps.md)
 DEM_REFRESH_MAX = 1e-3  # s, longest refresh interval (models.dem.DemModel checks it)
 DEM_DT_MAX = 1e-4  # s, longest fixed DEM time step (models.dem.DemModel checks it)
 _BY_NAME = {v.name: v for v in QUASI_STATIC_INPUTS + QUASI_STATIC_OUTPUTS if not v.drives or "load" in v.drives}
@@ -717,7 +717,7 @@ DEM_PARAMETERS = (
         min=0.0,
         max=DEM_REFRESH_MAX,
         limits="0 = every DEM step (as any interval shorter than the step); beyond 1 ms the film and friction lag "
-        "the ball motion (docs/reports/dem_error.md)",
+        "the ball motion (docs/reports/dem_steps.md)",
     ),
     Variable(
         "traction_limit",

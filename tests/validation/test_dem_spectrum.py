@@ -26,7 +26,7 @@ import pytest
 
 from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.models.dem import DemModel
-from tests.validation.test_cwru_defect_frequencies import bearing_file, rows
+from benchmarks.reference_cases.cwru import bearing_file, rows
 
 SPEED = 1797.0 * 2.0 * math.pi / 60.0  # rad/s
 SAMPLE_RATE = 10000.0  # Hz: the lines up to 2 kHz, the content above it well below 5 % (measured at 20 kHz)

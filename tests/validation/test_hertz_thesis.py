@@ -1,71 +1,15 @@
 """Exact Hertz solution against the contact sizes and pressures published in Wheeler (2016).
 
-Source rows: tests/validation/data/thesis_hertz_cases.csv, extracted from the thesis tables
-(Jerotrib samples Tables 1.1-1, 2.1-1, 2.1-6, 2.1-7; ellipticity study Tables 2.2-1 x 2.2-2;
-torus-on-plane Tables 3.3-x, 4.x); provenance and extraction damage in docs/thesis_hertz_cases.md.
-
-Tolerance: 0.5 % (the thesis computes its sizes from inputs it prints rounded, e.g. E and
-radii to 2-3 digits) on top of the rounding of the printed value (half a unit
-in its last printed digit, e.g. 0.091 mm -> +-0.55 %): a value printed with two digits cannot be
-checked closer than its rounding. Rows the thesis marks as finite-element or measured values, and
-Table 3.3-1's a, b (inconsistent with its own load and pressure, see the md), are excluded.
-Torus-on-plane rows do not print Rx: it follows from the thesis' definition of the equivalent
-ellipse, Rx = |R_t cos(2 lambda) / sin(lambda)| + r_t (Equation 3.1-9, R_t = 0.011 m, r_t = 0.040 m,
-spin angle lambda from the row), which is geometry input, not a published result.
-
+The case, its source rows, exclusions and tolerance (0.5 % on top of the rounding of the printed value):
+benchmarks/reference_cases/hertz_thesis.py, which the report's reference table renders as well.
 The Hamrock-Brewe approximation is not validated here: its error against the exact solution is
 measured and reported by benchmarks/hertz_approximation.py (docs/reports/hertz_approximation.md).
 """
 
-import csv
-import math
-import re
-from pathlib import Path
-
 import pytest
 
-from bearing_fmu.kernels.hertz import hertz_coefficients_exact, hertz_contact, reduced_modulus
-
-DATA = Path(__file__).parent / "data" / "thesis_hertz_cases.csv"
-REL_TOL = 0.005
-
-
-def _rows():
-    with open(DATA) as fh:
-        return [r for r in csv.DictReader(fh)]
-
-
-def _half_ulp(text):
-    """Half a unit in the last printed digit of a number written as in the CSV (e.g. '0.0910e-3')."""
-    mantissa, _, exponent = text.lower().partition("e")
-    decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
-    return 0.5 * 10.0 ** (-decimals) * 10.0 ** (int(exponent) if exponent else 0)
-
-
-TORUS = "R_t = 0.011 m, r_t = 0.040 m"
-
-
-def _rx(row):
-    """Rx of the row (m): printed, or the torus-on-plane equivalent ellipse (thesis Eq. 3.1-9)."""
-    if row["Rx_m"]:
-        return float(row["Rx_m"])
-    lam = math.radians(float(re.search(r"lambda = (-?[0-9.]+) deg", row["notes"]).group(1)))
-    return abs(0.011 * math.cos(2.0 * lam) / math.sin(lam)) + 0.040
-
-
-def _usable(row):
-    return "NOT A HERTZ VALUE" not in row["notes"] and row["Ry_m"] and (row["Rx_m"] or TORUS in row["notes"])
-
-
-CASES = [r for r in _rows() if _usable(r)]
-
-
-def _solve(row, coefficients):
-    E_red = reduced_modulus(float(row["E1_Pa"]), float(row["nu1"]), float(row["E2_Pa"]), float(row["nu2"]))
-    Rx, Ry = _rx(row), float(row["Ry_m"])
-    k, e, K = coefficients(Rx, Ry)
-    a, b, _, p = hertz_contact(float(row["w_N"]), Rx, Ry, E_red, k, e, K)
-    return {"a_y_m": a, "b_x_m": b, "k": k, "p_h_Pa": p, "area_m2": math.pi * a * b}
+from benchmarks.reference_cases import hertz_thesis, outside
+from benchmarks.reference_cases.hertz_thesis import CASES, TORUS
 
 
 def test_enough_cases():
@@ -76,15 +20,6 @@ def test_enough_cases():
 
 @pytest.mark.parametrize("row", CASES, ids=[r["case_id"] for r in CASES])
 def test_exact_hertz_matches_thesis(row):
-    ours = _solve(row, hertz_coefficients_exact)
-    checked = 0
-    for key in ("a_y_m", "b_x_m", "k", "p_h_Pa", "area_m2"):
-        if not row[key]:
-            continue
-        if key in ("a_y_m", "b_x_m", "area_m2") and "do not use" in row["notes"].lower():
-            continue  # Table 3.3-1: a, b inconsistent with the table's own load and pressure
-        published = float(row[key])
-        tol = REL_TOL * abs(published) + _half_ulp(row[key])
-        assert abs(ours[key] - published) <= tol, (key, ours[key], published)
-        checked += 1
-    assert checked >= 1
+    comparisons = hertz_thesis.row_comparisons(row)
+    assert comparisons  # every usable row is checked on at least one published quantity
+    assert not outside(comparisons), outside(comparisons)

@@ -2,7 +2,7 @@
 
 Explicit integration of stiff contacts is stable below 2/omega_n of the stiffest oscillator; the
 tangential spring, lengthened by the predicted velocity, only below sqrt(2)/omega_t (critical_time_step),
-beyond which it chatters against its Coulomb limit (docs/reports/dem_error.md). critical_time_step
+beyond which it chatters against its Coulomb limit (docs/reports/dem_steps.md). critical_time_step
 estimates the limit from the contact loads; the monitor stops a run on a non-finite force, a
 penetration beyond the physical limit, kinetic energy beyond the bound of the inputs, or chatter.
 """

@@ -35,7 +35,7 @@ class DemModel:
     permittivity pressure). dt: fixed time step (s); None = safety x the
     stability limit of the stiffest contact pair at the loads of each advance() call. refresh: tribology
     refresh interval in steps (>= 1); None = every refresh_interval (s) of simulated time. The defaults
-    SAFETY and REFRESH_INTERVAL are chosen from the error-vs-run-time front (docs/reports/dem_error.md). Pd: diametral
+    SAFETY and REFRESH_INTERVAL are chosen from the step study (docs/reports/dem_steps.md, docs/dem.md). Pd: diametral
     clearance (m) overriding the file. ring_mass: inner-ring mass (kg); None = estimated from the bore.
     ring_inertia: its moment of inertia about a diameter through its centre (kg.m^2), for the tilts; None =
     estimated from the same annulus (the polar moment, for the ring's gyroscopic moment, is always the annulus's

@@ -12,7 +12,7 @@ from ...kernels.ehl import friction_coefficient
 from ...kernels.geometry import rolling_kinematics
 from .monitor import DAMPING_PLAN
 
-SAFETY = 0.5  # default time step over the stability limit of the stiffest pair (docs/reports/dem_error.md)
+SAFETY = 0.5  # default time step over the stability limit of the stiffest pair (docs/reports/dem_steps.md)
 MU_BOUNDARY = friction_coefficient(0.0)  # mu(Lambda) of the boundary regime (0.1), before any contact
 # an automatic step that the monitor stops is halved and the call repeated, at most this often (16x smaller)
 AUTO_STEP_HALVINGS = 4

@@ -1,0 +1,17 @@
+"""Every reference case, in the order of the report's table: what every fidelity shares, then the fidelities
+from the cheapest, then the numerical EHL solver (the films' reference)."""
+
+from . import cwru, dem_6208, ehl_annexe_d, guessasma_6208, hertz_thesis, lubricant_and_rating, thrust_218
+
+ORDERED = (
+    hertz_thesis.CASE,
+    *lubricant_and_rating.CASES,
+    *guessasma_6208.CASES[:3],
+    cwru.CASES[0],
+    *guessasma_6208.CASES[3:],
+    cwru.CASES[1],
+    thrust_218.CASE,
+    *dem_6208.CASES,
+    ehl_annexe_d.CASE,
+)
+CASES = {case.name: case for case in ORDERED}
