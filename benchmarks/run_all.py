@@ -9,6 +9,7 @@ from . import (
     dem_fmu,
     dem_steps,
     dem_timing,
+    ehl_fields,
     ehl_film_table,
     fidelity_ladder,
     film_check,
@@ -33,6 +34,7 @@ def main():
     for module in (
         kernel_timing,
         hertz_approximation,
+        ehl_fields,
         ehl_film_table,
         fmu_startup,
         first_start,

@@ -3,8 +3,9 @@ Wheeler (2016), Annexe D (tests/validation/data/thesis_annexe_d_ehl.csv: ellipti
 modified WLF viscosity, Murnaghan density, E' = 230.77 GPa): the subset the default test suite runs.
 
 Tolerances (docs/ehl_solver.md, Validation): h_c and h_min within 5 % of the thesis for k >= 1 and 10 % for k < 1,
-on the grid of level 2 (161 x 129 nodes), whose discretisation error is about 1 %. The thesis prints the films to
-the nanometre: its uncertainty is half a nanometre.
+on the solver's default grid (level 3), whose discretisation error is within 2 % at these light loads
+(docs/reports/ehl_grid_study.md). The thesis prints the films to the nanometre: its uncertainty is half a
+nanometre.
 """
 
 import csv
@@ -25,9 +26,9 @@ def printed_films(n):
 
 
 def case_comparisons(n):
-    """(solution, [h_c, h_min comparisons]) of Annexe D case n on the grid of level 2."""
+    """(solution, [h_c, h_min comparisons]) of Annexe D case n on the solver's default grid."""
     case = CASES[n]
-    solution, _ = solve(case, level=2)
+    solution, _ = solve(case)
     tolerance = 0.05 if case["k"] >= 1.0 else 0.10
     printed_hc, printed_hm = printed_films(n)
     return solution, [
@@ -46,5 +47,5 @@ CASE = ReferenceCase(
     "central and minimum film of full EHL solutions",
     "Wheeler (2016) thesis, Annexe D (cases 4 and 6)",
     compare,
-    lambda: lambda: solve(CASES[SUBSET[-1]], level=2),
+    lambda: lambda: solve(CASES[SUBSET[-1]]),
 )
