@@ -23,7 +23,7 @@ from .models.file_parameters import BEARING_PREFIX, LUBRICANT_PREFIX, bearing_fr
 from .models.quasi_static import QuasiStaticModel
 from .models.variables import InputError
 from .params import ParameterError
-from .scene import RACE_CONTROLS, Scene, SceneError
+from .scene import LUBRICATION_METHODS, RACE_CONTROLS, Scene, SceneError
 
 # appended to an input refused at initialisation: the call succeeds (parameters are fine), the step would not
 INPUT_NOTE = " (refused at the first doStep unless the input is corrected)"
@@ -173,6 +173,10 @@ class BearingQuasiStatic(_BearingSlave):
         """The race control in effect: race_control_mode's unless it is -1, then the String race_control's."""
         return self.race_control if self.race_control_mode < 0 else RACE_CONTROLS[self.race_control_mode]
 
+    def _lubrication(self):
+        """The lubrication method in effect: lubrication_mode's unless it is -1, then the String lubrication's."""
+        return self.lubrication if self.lubrication_mode < 0 else LUBRICATION_METHODS[self.lubrication_mode]
+
     def _make_model(self):
         return QuasiStaticModel(
             self._bearing(),
@@ -181,6 +185,7 @@ class BearingQuasiStatic(_BearingSlave):
             Pd=self._clearance(),
             race_control=self._race_control(),
             F_preload=self.F_preload,
+            lubrication=self._lubrication(),
         )
 
 

@@ -22,6 +22,9 @@ HERTZ_SOLUTIONS = ("exact", "approximate")
 SPRING_CONSTANTS = ("hertz", "iso_ts_16281")  # contact load-deflection law of the quasi-static load distribution
 PERMITTIVITY_PRESSURES = {"max": PRESSURE_MAX, "mean": PRESSURE_MEAN}
 CAPACITANCE_REGIONS = ("hertz", "lubricated")  # the contact's capacitor: its Hertz ellipse, or the oil around it too
+# lubrication methods (docs/lubrication_method.md; their defaults in models.lubrication.METHODS)
+LUBRICATION_METHODS = ("flooded", "oil_bath", "oil_jet", "oil_air", "grease")
+DRAG_METHODS = ("oil_bath", "oil_jet", "oil_air")
 
 
 class SceneError(ValueError):
@@ -66,6 +69,18 @@ class Scene:
     spring_constant (quasi_static): contact load-deflection constants of the load distribution, 'hertz' (exact
         Hertz with the bearing file's materials, default) | 'iso_ts_16281' (the standard's point-contact form,
         for comparison with tools that use it; kernels.rating_life.iso16281_spring_constant).
+    lubrication (analytic, quasi_static): the lubrication method, docs/lubrication_method.md: 'flooded' (default:
+        isothermal, fully flooded contacts without drag, the results of the model before the option bit for bit)
+        | 'oil_bath' | 'oil_jet' | 'oil_air' | 'grease'. Every other method reduces the film by inlet shear heating
+        and by starvation of the inlet (outputs phi_ish_*, phi_rs_*; Lambda, regime, mu, capacitance and the EHL
+        rolling force follow), and bath, jet and oil-air add the drag of the balls in the oil (torque_drag, P_drag;
+        quasi-static: with torque on). The DEM has the hook, not yet the method (flooded only).
+    oil_level (oil_bath): oil level above the lowest point of the outer raceway, in ball diameters (default 0.5:
+        the centre of the lowest ball at rest).
+    inlet_oil_layer: oil layer (m, both surfaces) on the track ahead of a contact, from which the starvation
+        follows (default by method: bath and jet 20e-6, oil-air 2e-6, grease 1e-6; estimated).
+    cavity_oil_fraction (oil_jet, oil_air): oil-volume fraction of the oil-air mixture the balls move through
+        (default: jet 0.01, oil-air 1e-4; estimated).
     tolerance: relative tolerance of the load equilibrium (-).
     max_iterations: iteration cap of the quasi-static Newton solver (never a hang).
     """
@@ -92,6 +107,21 @@ class Scene:
     max_iterations: int = 100
     life: bool = False
     spring_constant: str = "hertz"
+    lubrication: str = "flooded"
+    oil_level: float = None
+    inlet_oil_layer: float = None
+    cavity_oil_fraction: float = None
+
+    @property
+    def lubricated(self):
+        """A lubrication method other than flooded: the film factors phi_ish_*, phi_rs_* exist."""
+        return self.lubrication != "flooded"
+
+    @property
+    def drag(self):
+        """The drag of the balls is computed and exposed (torque_drag, P_drag): a bath, jet or oil-air method, in
+        the analytic fidelity or with the quasi-static torque."""
+        return self.lubrication in DRAG_METHODS and (self.fidelity == "analytic" or self.torque)
 
     def problems(self):
         """List of human-readable problems (empty when the scene is valid)."""
@@ -149,8 +179,33 @@ class Scene:
                 out.append(f"drive = {self.drive!r} needs fidelity = 'quasi_static' (the DEM is load-driven)")
             if not self.centrifugal:
                 out.append("centrifugal = false is not possible with fidelity = 'dem' (the balls' orbit makes it)")
+        out += self._lubrication_problems()
         if self.background_capacitance > 0.0 and not self.capacitance:
             out.append("background_capacitance > 0 needs capacitance = true")
+        return out
+
+    def _lubrication_problems(self):
+        out = []
+        if self.lubrication not in LUBRICATION_METHODS:
+            return [f"lubrication = {self.lubrication!r}: allowed {list(LUBRICATION_METHODS)}"]
+        if self.lubrication != "flooded" and self.fidelity == "dem":
+            out.append(
+                f"lubrication = {self.lubrication!r} is not in the DEM yet (docs/lubrication_method.md, the DEM hook): "
+                "allowed 'flooded' with fidelity = 'dem'"
+            )
+        checks = (
+            ("oil_level", "", 0.0, 20.0, ("oil_bath",)),
+            ("inlet_oil_layer", " m", 1e-8, 1e-2, LUBRICATION_METHODS[1:]),
+            ("cavity_oil_fraction", "", 0.0, 1.0, ("oil_jet", "oil_air")),
+        )
+        for name, unit, low, high, methods in checks:
+            value = getattr(self, name)
+            if value is None:
+                continue
+            if self.lubrication not in methods:
+                out.append(f"{name} = {value} needs lubrication in {list(methods)}")
+            elif not (isinstance(value, (int, float)) and low <= value <= high):
+                out.append(f"{name} = {value}{unit}: allowed [{low:g}, {high:g}]{unit}")
         return out
 
     def validate(self):

@@ -18,9 +18,10 @@ from bearing_fmu_common.jit import kernel
 from .capacitance import ball_capacitance, lubricated_contact_capacitance
 from .ehl import film_parameter, film_thickness, friction_coefficient, lubrication_regime
 from .hertz import hertz_contact
-from .jones_harris import BQ_Q_I, BQ_Q_O, BQ_SPIN_I, BQ_SPIN_O, BQ_U_I, BQ_U_O
+from .jones_harris import BQ_Q_I, BQ_Q_O, BQ_SPIN_I, BQ_SPIN_O, BQ_U_I, BQ_U_O, BQ_W_M
 from .lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
-from .torque import TL_SIZE, contact_losses
+from .lubrication import ball_drag_power, film_factors, mixture, rolling_force_factor, temperature_viscosity_coefficient
+from .torque import TL_EHL, TL_SIZE, contact_losses
 
 # layout of the contact parameter array (built by the model)
 CP_RX_I = 0
@@ -47,7 +48,16 @@ CP_D = 20  # ball diameter (m)
 CP_CAPACITANCE = 21  # 1 = capacitance submodel on; 0 = null submodel (its slots are not written)
 CP_TORQUE = 22  # 1 = loss (torque and heat) submodel on; 0 = null submodel (its slots are not written)
 CP_OIL_GAP = 23  # oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
-CP_SIZE = 24
+# lubrication method (kernels.lubrication, models.lubrication); CP_LUBRICATED = 0 (flooded): none of it is read
+CP_LUBRICATED = 24  # 1 = film factors on (CO_PHI_* written); 0 = flooded, isothermal
+CP_THERMAL = 25  # 1 = inlet shear heating factor on
+CP_H_OIL = 26  # inlet oil layer (m; inf = no starvation)
+CP_K_OIL = 27  # oil thermal conductivity (W/(m K))
+CP_DRAG = 28  # 1 = drag of the balls on (with CP_TORQUE; CO_P_DRAG, CO_TORQUE_DRAG written)
+CP_DRAG_X = 29  # oil-volume fraction of the fluid the balls move through (-)
+CP_DRAG_AREA = 30  # time-mean part of a ball's frontal area in it (-)
+CP_DM = 31  # pitch diameter (m)
+CP_SIZE = 32
 
 # layout of the output array
 CO_LAMBDA_I = 0
@@ -69,7 +79,13 @@ CO_ETA = 18
 CO_XI = 19
 CO_HC_I = 20  # central film thickness of the most loaded inner contact (m; 0 if none)
 CO_HC_O = 21  # ... outer contact
-CO_SIZE = 22
+CO_P_DRAG = 22  # drag power of the balls (W), part of CO_P_LOSS, half to each ring
+CO_TORQUE_DRAG = 23  # its torque CO_P_DRAG/|omega| (N.m)
+CO_PHI_ISH_I = 24  # film factors of the most loaded inner contact (-): inlet shear heating ...
+CO_PHI_ISH_O = 25  # ... outer contact
+CO_PHI_RS_I = 26  # ... starvation (central film), inner
+CO_PHI_RS_O = 27  # ... outer
+CO_SIZE = 28
 # sums started at 0 whatever the options, and those of the loss submodel (with its TL_SIZE components at CO_P_EHL)
 _SUMS = (CO_QMAX_I, CO_QMAX_O, CO_PMAX, CO_N_LOADED, CO_HC_I, CO_HC_O)
 _LOSS_SUMS = (CO_Q_INNER_RING, CO_Q_OUTER_RING)
@@ -100,7 +116,14 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
     Z = balls.shape[1]
     capacitance = cp[CP_CAPACITANCE] > 0.5
     torque = cp[CP_TORQUE] > 0.5
+    lubricated = cp[CP_LUBRICATED] > 0.5
     eta, xi, rho0 = lubricant_state(T_oil, lub)
+    beta = 0.0
+    if lubricated and cp[CP_THERMAL] > 0.5:
+        beta = temperature_viscosity_coefficient(T_oil, lub)
+    phi_t = 1.0
+    phi_c = 1.0
+    phi_m = 1.0
     K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF]) if capacitance else 0.0
     E_red = cp[CP_E_RED]
     film = int(cp[CP_FILM])
@@ -119,6 +142,9 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
             out[CO_P_EHL + t] = 0.0
     if capacitance:
         out[CO_C_BEARING] = cp[CP_C_BACKGROUND]
+    if lubricated:
+        for k in range(CO_PHI_ISH_I, CO_PHI_RS_O + 1):
+            out[k] = 1.0
     for j in range(Z):
         for race in range(2):
             o = 5 * race  # inner at CP_RX_I.., outer at CP_RX_O..
@@ -129,6 +155,12 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
             k = cp[CP_K_I + o]
             a, b, _, p = hertz_contact(Q, Rx, Ry, E_red, k, cp[CP_EE_I + o], cp[CP_KK_I + o])
             hc, hm = film_thickness(film, eta, xi, E_red, u, Q, Rx, Ry, k)
+            if lubricated and Q > 0.0:
+                phi_t, phi_c, phi_m = film_factors(
+                    hc, hm, abs(u), p, b, Rx, E_red, eta, beta, cp[CP_K_OIL], cp[CP_THERMAL], cp[CP_H_OIL]
+                )
+                hc *= phi_t * phi_c
+                hm *= phi_t * phi_m
             lam = film_parameter(hm, cp[CP_SIGMA_I + race])
             C = 0.0
             P = 0.0
@@ -159,6 +191,10 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
                         cp[CP_ALPHA_H],
                         losses,
                     )
+                    if lubricated:  # the EHL rolling force follows the central film (kernels.lubrication)
+                        f_R = rolling_force_factor(phi_t, phi_c)
+                        P -= (1.0 - f_R) * losses[TL_EHL]
+                        losses[TL_EHL] *= f_R
                     for t in range(TL_SIZE):
                         out[CO_P_EHL + t] += losses[t]
                     out[CO_Q_INNER_RING + race] += P
@@ -166,6 +202,9 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
                 if Q > out[CO_QMAX_I + race]:  # the central film of the most loaded contact (first of equals)
                     out[CO_QMAX_I + race] = Q
                     out[CO_HC_I + race] = hc
+                    if lubricated:
+                        out[CO_PHI_ISH_I + race] = phi_t
+                        out[CO_PHI_RS_I + race] = phi_c
                 if race == 0:
                     loaded_i = True
                     lam_i = min(lam_i, lam)
@@ -190,6 +229,16 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
     out[CO_HMIN_I] = hmin_i if loaded_i else 0.0
     out[CO_HMIN_O] = hmin_o if loaded_o else 0.0
     out[CO_REGIME] = lubrication_regime(min(out[CO_LAMBDA_I], out[CO_LAMBDA_O]))
+    if torque and cp[CP_DRAG] > 0.5:  # the drag heats the oil, which passes it to both rings: half each
+        rho_e, eta_e = mixture(cp[CP_DRAG_X], rho0, eta)
+        P_drag = 0.0
+        for j in range(Z):
+            v = 0.5 * cp[CP_DM] * balls[BQ_W_M, j]
+            P_drag += ball_drag_power(v, cp[CP_D], rho_e, eta_e, cp[CP_DRAG_AREA])
+        out[CO_P_DRAG] = P_drag
+        out[CO_TORQUE_DRAG] = P_drag / abs(omega) if omega != 0.0 else 0.0
+        out[CO_Q_INNER_RING] += 0.5 * P_drag
+        out[CO_Q_OUTER_RING] += 0.5 * P_drag
     if torque:
         out[CO_P_LOSS] = out[CO_Q_INNER_RING] + out[CO_Q_OUTER_RING]
         out[CO_TORQUE] = out[CO_P_LOSS] / abs(omega) if omega != 0.0 else 0.0

@@ -22,6 +22,7 @@ from .geometry import centrifugal_force, pass_frequencies, rolling_kinematics
 from .hertz import hertz_contact, hertz_stiffness, series_stiffness
 from .loaddist import load_parameter, solve_radial_shift
 from .lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
+from .lubrication import ball_drag_power, film_factors, mixture, temperature_viscosity_coefficient
 
 # layout of the bearing parameter array (built by bearing_fmu.models.analytic)
 B_Z = 0  # number of balls (-)
@@ -50,7 +51,15 @@ B_CENTRIFUGAL = 22  # 1 = centrifugal load on, 0 = off
 B_TOL = 23  # relative tolerance of the radial equilibrium (-)
 B_CAPACITANCE = 24  # 1 = capacitance submodel on; 0 = null submodel (O_C_BEARING and ball rows C_i, C_o not written)
 B_OIL_GAP = 25  # oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
-B_SIZE = 26
+# lubrication method (kernels.lubrication, models.lubrication); B_LUBRICATED = 0 (flooded): none of it is read
+B_LUBRICATED = 26  # 1 = film factors on (O_PHI_* written)
+B_THERMAL = 27  # 1 = inlet shear heating factor on
+B_H_OIL = 28  # inlet oil layer (m; inf = no starvation)
+B_K_OIL = 29  # oil thermal conductivity (W/(m K))
+B_DRAG = 30  # 1 = drag of the balls on (O_P_DRAG, O_TORQUE_DRAG written)
+B_DRAG_X = 31  # oil-volume fraction of the fluid the balls move through (-)
+B_DRAG_AREA = 32  # time-mean part of a ball's frontal area in it (-)
+B_SIZE = 33
 
 # layout of the output array
 O_LAMBDA_I = 0
@@ -77,7 +86,13 @@ O_FTF = 20  # defect frequencies (Hz): fundamental train (cage)
 O_BPFO = 21  # ball pass, outer race
 O_BPFI = 22  # ball pass, inner race
 O_BSF = 23  # ball spin
-O_SIZE = 24
+O_P_DRAG = 24  # drag power of the balls (W)
+O_TORQUE_DRAG = 25  # its torque O_P_DRAG/|omega| (N.m)
+O_PHI_ISH_I = 26  # film factors of the most loaded inner contact (ball 1, -): inlet shear heating ...
+O_PHI_ISH_O = 27  # ... outer contact
+O_PHI_RS_I = 28  # ... starvation (central film), inner
+O_PHI_RS_O = 29  # ... outer
+O_SIZE = 30
 
 
 @kernel
@@ -102,7 +117,11 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     Ry_o = brg[B_RY_O]
 
     capacitance = brg[B_CAPACITANCE] > 0.5
+    lubricated = brg[B_LUBRICATED] > 0.5
     eta, xi, rho0 = lubricant_state(T_oil, lub)
+    beta = 0.0
+    if lubricated and brg[B_THERMAL] > 0.5:
+        beta = temperature_viscosity_coefficient(T_oil, lub)
     K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF]) if capacitance else 0.0
     w_cage, w_ball_rel, w_ball_fixed, u = rolling_kinematics(omega, D, dm, 0.0)
     F_c = 0.0
@@ -114,6 +133,9 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     K = series_stiffness(K_i, K_o)
     delta_r, iters = solve_radial_shift(F_r, Pd, K, Z, nodes, weights, brg[B_TOL])
 
+    if lubricated:
+        for k in range(O_PHI_ISH_I, O_PHI_RS_O + 1):
+            out[k] = 1.0
     loaded_i = False
     loaded_o = False
     # cos(2 pi j / Z) is not exactly 0 at 90 deg: a compression below this is rounding, not contact
@@ -138,6 +160,20 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
         a_o, b_o, _, p_o = hertz_contact(Q_o, Rx_o, Ry_o, E_red, brg[B_K_O], brg[B_EE_O], brg[B_KK_O])
         hc_i, hm_i = film_thickness(int(brg[B_FILM]), eta, xi, E_red, u, Q_i, Rx_i, Ry_i, brg[B_K_I])
         hc_o, hm_o = film_thickness(int(brg[B_FILM]), eta, xi, E_red, u, Q_o, Rx_o, Ry_o, brg[B_K_O])
+        if lubricated:  # the method's film factors (kernels.lubrication); ball 0 is the most loaded
+            k_f, thermal, h_oil = brg[B_K_OIL], brg[B_THERMAL], brg[B_H_OIL]
+            if Q_i > 0.0:
+                t_i, c_i, m_i = film_factors(hc_i, hm_i, abs(u), p_i, b_i, Rx_i, E_red, eta, beta, k_f, thermal, h_oil)
+                hc_i *= t_i * c_i
+                hm_i *= t_i * m_i
+                if j == 0:
+                    out[O_PHI_ISH_I], out[O_PHI_RS_I] = t_i, c_i
+            if Q_o > 0.0:
+                t_o, c_o, m_o = film_factors(hc_o, hm_o, abs(u), p_o, b_o, Rx_o, E_red, eta, beta, k_f, thermal, h_oil)
+                hc_o *= t_o * c_o
+                hm_o *= t_o * m_o
+                if j == 0:
+                    out[O_PHI_ISH_O], out[O_PHI_RS_O] = t_o, c_o
         L_i = film_parameter(hm_i, brg[B_SIGMA_I])
         L_o = film_parameter(hm_o, brg[B_SIGMA_O])
         C_i = 0.0
@@ -207,3 +243,8 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     out[O_ITER] = iters
     out[O_OMEGA_BALL_CAGE] = abs(w_ball_rel)
     out[O_FTF], out[O_BPFO], out[O_BPFI], out[O_BSF] = pass_frequencies(omega, w_cage, w_ball_rel, Z)
+    if brg[B_DRAG] > 0.5:  # every ball orbits at the cage speed
+        rho_e, eta_e = mixture(brg[B_DRAG_X], rho0, eta)
+        P_drag = Z * ball_drag_power(0.5 * dm * w_cage, D, rho_e, eta_e, brg[B_DRAG_AREA])
+        out[O_P_DRAG] = P_drag
+        out[O_TORQUE_DRAG] = P_drag / abs(omega) if omega != 0.0 else 0.0

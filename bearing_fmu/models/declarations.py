@@ -28,7 +28,7 @@ from ..kernels import rating_life as rl
 from ..kernels import truncation as tk
 from ..kernels.ball_dynamics import state as ds
 from ..params import SUPPORT_DAMPING, SUPPORT_STIFFNESS, load_dem_constants
-from ..scene import RACE_CONTROLS
+from ..scene import LUBRICATION_METHODS, RACE_CONTROLS
 from .file_parameters import bearing_parameters
 from .variables import (
     GROOVE_MAX,
@@ -133,6 +133,36 @@ def truncation_outputs(source, words=""):
     )
 
 
+# lubrication method (scene option `lubrication`, docs/lubrication_method.md)
+PHI_ISH = (
+    "inlet-shear-heating film factor of the most loaded {} contact (Gupta et al. 1992 thermal reduction; 1 = "
+    "isothermal): h_c, h_min (and Lambda, regime, mu) are the flooded films times it"
+)
+PHI_RS = (
+    "starvation (kinematic replenishment) factor of the central film of the most loaded {} contact (Hamrock & "
+    "Dowson 1977, inlet meniscus from the method's inlet oil layer; 1 = fully flooded)"
+)
+TORQUE_DRAG = (
+    "drag torque of the balls in the oil or oil-air mixture = P_drag/|omega| (Harris ball drag, sphere C_D(Re))"
+)
+P_DRAG = "drag power of the balls in the oil or oil-air mixture (heats the oil{})"
+
+
+def lubrication_outputs(source, phi_slots, drag_slots, words=""):
+    """phi_ish_inner, phi_ish_outer, phi_rs_inner, phi_rs_outer (option lubricated) and torque_drag, P_drag
+    (option drag) from the array named `source`."""
+    phis = tuple(
+        Variable(f"{name}_{race}", "1", text.format(race), option="lubricated", source=(source, slot))
+        for (name, text), slots in zip((("phi_ish", PHI_ISH), ("phi_rs", PHI_RS)), phi_slots)
+        for race, slot in zip(("inner", "outer"), slots)
+    )
+    torque_slot, power_slot = drag_slots
+    return phis + (
+        Variable("torque_drag", "N.m", TORQUE_DRAG, option="drag", source=(source, torque_slot)),
+        Variable("P_drag", "W", P_DRAG.format(words), option="drag", source=(source, power_slot)),
+    )
+
+
 H_C = "central film thickness of the most loaded {} contact (0 if none; what capacitance film measurements report)"
 # speeds: every angular speed is about the bearing axis in the fixed frame (outer ring) unless it says otherwise
 BALL_CAGE = (
@@ -201,6 +231,9 @@ ANALYTIC_OUTPUTS = (
     Variable("h_c_inner", "m", H_C.format("inner"), source=("out", ak.O_HC_I)),
     Variable("h_c_outer", "m", H_C.format("outer"), source=("out", ak.O_HC_O)),
     Variable("n_loaded", "1", "number of balls loaded on both races", "integer", source=("out", ak.O_N_LOADED)),
+    *lubrication_outputs(
+        "out", ((ak.O_PHI_ISH_I, ak.O_PHI_ISH_O), (ak.O_PHI_RS_I, ak.O_PHI_RS_O)), (ak.O_TORQUE_DRAG, ak.O_P_DRAG)
+    ),
     Variable("y", "m", "radial displacement of the inner ring along F_y"),  # signed radial approach
     Variable("epsilon", "1", "load parameter eps = (1 - P_d/(2 delta_r))/2, capped at 1e6 (centred preloaded ring)"),
     *LIFE_OUTPUTS,
@@ -374,24 +407,36 @@ QUASI_STATIC_OUTPUTS = (
     Variable(
         "torque",
         "N.m",
-        "friction torque = P_loss/|omega| (0 at rest), Houpert components",
+        "friction torque = P_loss/|omega| (0 at rest): Houpert components and the drag of the lubrication method",
         option="torque",
         source=("out", ck.CO_TORQUE),
     ),
-    Variable("P_loss", "W", "total power loss of the contacts", option="torque", source=("out", ck.CO_P_LOSS)),
+    Variable(
+        "P_loss",
+        "W",
+        "total power loss of the contacts and of the drag of the balls",
+        option="torque",
+        source=("out", ck.CO_P_LOSS),
+    ),
     Variable(
         "Q_inner_ring",
         "W",
-        "heat to the inner ring (losses of the inner contacts)",
+        "heat to the inner ring (losses of the inner contacts, half the drag)",
         option="torque",
         source=("out", ck.CO_Q_INNER_RING),
     ),
     Variable(
         "Q_outer_ring",
         "W",
-        "heat to the outer ring (losses of the outer contacts)",
+        "heat to the outer ring (losses of the outer contacts, half the drag)",
         option="torque",
         source=("out", ck.CO_Q_OUTER_RING),
+    ),
+    *lubrication_outputs(
+        "out",
+        ((ck.CO_PHI_ISH_I, ck.CO_PHI_ISH_O), (ck.CO_PHI_RS_I, ck.CO_PHI_RS_O)),
+        (ck.CO_TORQUE_DRAG, ck.CO_P_DRAG),
+        ": half to each ring, in Q_inner_ring and Q_outer_ring",
     ),
     Variable("Lambda_inner", "1", LAMBDA.format("inner"), source=("out", ck.CO_LAMBDA_I)),
     Variable("Lambda_outer", "1", LAMBDA.format("outer"), source=("out", ck.CO_LAMBDA_O)),
@@ -443,6 +488,22 @@ QUASI_STATIC_OUTPUTS = (
     *LIFE_OUTPUTS,
 )
 
+
+def mode_parameter(string, what, choices):
+    """The Integer <string>_mode that stands for the String parameter `string` in masters without String
+    parameters: -1 (default) = the String, 0 .. len(choices) - 1 = that choice, which then wins."""
+    return Variable(
+        f"{string}_mode",
+        "1",
+        f"{what} as a number, for masters without String parameters: -1 = the parameter {string}, "
+        + ", ".join(f"{code} = {name}" for code, name in enumerate(choices)),
+        "integer",
+        start=-1,
+        min=-1,
+        max=len(choices) - 1,
+    )
+
+
 QUASI_STATIC_PARAMETERS = (
     Variable("bearing", "", BEARING_NAME.format("6208, 6306, B7214C"), "string", start="B7214C"),
     Variable("lubricant", "", LUBRICANT_NAME, "string", start="iso_vg68_mineral"),
@@ -457,15 +518,17 @@ QUASI_STATIC_PARAMETERS = (
         choices=RACE_CONTROLS,
     ),
     Variable(
-        "race_control_mode",
-        "1",
-        "race control as a number, for masters without String parameters: -1 = the parameter race_control, "
-        + ", ".join(f"{code} = {name}" for code, name in enumerate(RACE_CONTROLS)),
-        "integer",
-        start=-1,
-        min=-1,
-        max=len(RACE_CONTROLS) - 1,
+        "lubrication",
+        "",
+        "lubrication method (docs/lubrication_method.md): " + " | ".join(LUBRICATION_METHODS) + ", at its default "
+        "settings; default: the scene's. Torque, heat and films follow it; its own outputs (phi_*, torque_drag, "
+        "P_drag) exist when the scene names a method other than flooded",
+        "string",
+        start=None,  # the scene's lubrication
+        choices=LUBRICATION_METHODS,
     ),
+    mode_parameter("race_control", "race control", RACE_CONTROLS),
+    mode_parameter("lubrication", "lubrication method", LUBRICATION_METHODS),
     Variable(
         "F_preload",
         "N",

@@ -7,6 +7,7 @@ displacements and ball positions) is kept between calls for warm starts and is p
 """
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -21,7 +22,7 @@ from ..kernels.geometry import ball_mass, free_contact_angle
 from ..kernels.hertz import hertz_contact, hertz_stiffness
 from ..kernels.torque import TL_SIZE
 from ..params import load_bearing, load_lubricant
-from ..scene import RACE_CONTROLS, Scene
+from ..scene import LUBRICATION_METHODS, RACE_CONTROLS, Scene
 from .contacts import contact_terms, pack, race_contacts, truncation_parameters, truncation_warnings
 from .declarations import (
     DISPLACEMENT_LIMIT,
@@ -32,6 +33,7 @@ from .declarations import (
     QUASI_STATIC_OUTPUTS,
     QUASI_STATIC_PARAMETERS,
 )
+from .lubrication import Lubrication, pack_lubrication
 from .variables import (
     DM_N_LIMIT,
     MATERIAL_LIMIT,
@@ -75,6 +77,9 @@ class QuasiStaticModel:
     hybrid_split: with race_control 'hybrid', how the gyroscopic moment is shared between the races:
         'spin_moments' (default, lam_i = 2C/(1+C)); 'outer', 'inner', 'equal' and 'controlling_race'
         are the other readings of Rabreau's lost Table 1, kept for sensitivity studies (HYBRID_SPLITS);
+    lubrication: the lubrication method (docs/lubrication_method.md) at its default settings, overriding the scene's
+        for the physics (None: the scene's, with its settings); the outputs stay those of the scene (a flooded
+        scene has no phi_* or drag outputs; a method's scene run flooded reports the factors 1 and no drag);
     F_preload: fixed_axial drive only, axial preload (N, >= 0) set at assembly (at rest, no thermal
         change): the model holds the axial approach z0 (m) that carries it, and the input z (and
         dz_thermal) is added to z0. 0 (default) = z is the axial approach itself.
@@ -89,6 +94,7 @@ class QuasiStaticModel:
         race_control=None,
         F_preload=0.0,
         hybrid_split="spin_moments",
+        lubrication=None,
     ):
         self.scene = (scene or Scene(name="quasi_static", fidelity="quasi_static")).validate()
         if self.scene.fidelity != "quasi_static":
@@ -100,6 +106,9 @@ class QuasiStaticModel:
         b = self.bearing
         self.Pd = b.Pd if Pd is None else float(Pd)
         check_clearance(self.Pd, b, Pd is not None)
+        self.lubrication = self.scene.lubrication if lubrication is None else lubrication
+        if self.lubrication not in LUBRICATION_METHODS:
+            raise InputError(f"lubrication = {self.lubrication!r} is not allowed: allowed {list(LUBRICATION_METHODS)}")
         self.race_control = self.scene.race_control if race_control is None else race_control
         if self.race_control not in RACE_CONTROLS:
             raise InputError(f"race_control = {self.race_control!r} is not allowed: allowed {list(RACE_CONTROLS)}")
@@ -121,6 +130,7 @@ class QuasiStaticModel:
         self.balls = np.zeros((qk.BQ_SIZE, Z))
         self.per_contact = np.zeros((ck.PC_SIZE, Z))
         self.out = np.zeros(ck.CO_SIZE)
+        self.out[ck.CO_PHI_ISH_I : ck.CO_PHI_RS_O + 1] = 1.0  # a flooded run of a method's scene: factors 1
         self._losses = np.zeros(TL_SIZE)
         self.status = (qk.QS_OK, 0, 0.0)
         self.warnings = []
@@ -226,6 +236,10 @@ class QuasiStaticModel:
         cp[ck.CP_D] = b.D
         cp[ck.CP_CAPACITANCE] = 1.0 if s.capacitance else 0.0
         cp[ck.CP_TORQUE] = 1.0 if s.torque else 0.0
+        if self.lubrication != s.lubrication:  # the parameter's method at its defaults
+            s = replace(s, lubrication=self.lubrication, oil_level=None, inlet_oil_layer=None, cavity_oil_fraction=None)
+        pack_lubrication(cp, ck, "CP_", Lubrication(s, b.D, b.dm), s.torque)
+        cp[ck.CP_DM] = b.dm
         return qs, cp
 
     def _rating_parameters(self):

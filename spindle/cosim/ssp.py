@@ -14,9 +14,10 @@ The package (.ssp, a zip archive) holds:
 - resources/<FMU file>: each FMU file once, whatever the number of its instances.
 
 Parameter values: numeric only where the FMU allows it. A String parameter set to the FMU's start value is
-not written (the FMU runs it anyway); the bearing, lubricant and race control (Strings) are written as the
-numeric parameters that carry them (bearing_from_file = false and bearing_data.*, lubricant_from_file = false
-and lubricant_data.*, race_control_mode; docs/parameters.md, "Numeric parameters"), which give the same
+not written (the FMU runs it anyway); the bearing, lubricant, race control and lubrication method (Strings)
+are written as the numeric parameters that carry them (bearing_from_file = false and bearing_data.*,
+lubricant_from_file = false and lubricant_data.*, race_control_mode, lubrication_mode; docs/parameters.md,
+"Numeric parameters"), which give the same
 results bit for bit. OMSimulator imports no String value (it logs an error for each ssv:String and runs the
 FMU's start value), ecos applies a parameter set by its name across all components (one name for all:
 PARAMETER_SET). Any other String that differs from the FMU's start value is written as a String and named in
@@ -71,10 +72,10 @@ def _value_text(kind, value):
 
 def component_values(spec, variables, notes=None):
     """instance -> {variable: value} that the package carries: the run file's parameters and constant inputs,
-    a String parameter at the FMU's start value left out, the bearing, lubricant and race control (Strings)
-    replaced by the numeric parameters that carry them where the FMU has these and the run file does not set
-    their switch itself (module docstring). variables[instance][name]: the FMI variable. A String that stays
-    is named in `notes` (a list, appended to)."""
+    a String parameter at the FMU's start value left out, the bearing, lubricant, race control and lubrication
+    method (Strings) replaced by the numeric parameters that carry them where the FMU has these and the run
+    file does not set their switch itself (module docstring). variables[instance][name]: the FMI variable. A
+    String that stays is named in `notes` (a list, appended to)."""
     out = {}
     for name in spec.order:
         inst, declared = spec.instances[name], variables[name]

@@ -24,6 +24,7 @@ SPRING = ROOT / "runs" / "closed_loop_spring.toml"
 FIXED = ROOT / "runs" / "closed_loop_fixed.toml"
 OMEGA_6000 = 628.3185307179587  # rad/s
 AT_6000 = {"bearing_1.omega": OMEGA_6000, "bearing_2.omega": OMEGA_6000, "spindle.omega": OMEGA_6000}
+FLOODED = {"bearing_1.lubrication": "flooded", "bearing_2.lubrication": "flooded"}
 STEPS = (0.1, 1.0, 5.0)  # s, the communication steps of the issue; 0.1 s is the reference
 TEMPERATURES = [
     "spindle.T_shaft",
@@ -54,7 +55,14 @@ def fixed_6000(closed_loop_fmus):
 
 @pytest.fixture(scope="module")
 def fixed_10000(closed_loop_fmus):
-    return {H: run(load_run(FIXED, {"run.step": H})) for H in STEPS}
+    """The runaway at each step H, the bearings flooded: these runs test the communication step."""
+    return {H: run(load_run(FIXED, {**FLOODED, "run.step": H})) for H in STEPS}
+
+
+@pytest.fixture(scope="module")
+def fixed_10000_oil_air(closed_loop_fmus):
+    """The runaway as the run file states it (oil-air), H = 1 s."""
+    return run(load_run(FIXED, {"run.step": 1.0}))
 
 
 # -- spring preload --------------------------------------------------------------------------------
@@ -163,7 +171,25 @@ def test_fixed_10000_stop_time_does_not_depend_on_the_step(fixed_10000):
     """Issue 4: the runaway is physics, not numerics: it happens at every H and stops at the same time
     within 2 H of the H = 0.1 s run. Tolerance: the limit is checked at communication points only
     (stop up to one H after the crossing) and the one-step coupling lag shifts the trajectory by about
-    one more H (measured: 705, 702 and 700.6 s for H = 5, 1, 0.1 s)."""
+    one more H (measured: 705, 702 and 700.6 s for H = 5, 1, 0.1 s). The bearings run flooded here
+    (fixture fixed_10000): the case is the communication step, not the lubrication method."""
     t_ref = fixed_10000[0.1].columns["time"][-1]
     for H in (1.0, 5.0):
         assert abs(fixed_10000[H].columns["time"][-1] - t_ref) <= 2.0 * H, H
+
+
+def test_fixed_10000_oil_air_runs_away_later_than_flooded(fixed_10000, fixed_10000_oil_air):
+    """The run file's oil-air lubrication (the Rabreau rig's; docs/lubrication_method.md) starves the films and
+    thins them by inlet shear heating, which lowers the contacts' viscous rolling loss (Houpert's EHL rolling
+    force falls with the film), while the drag of the balls in the oil-air mixture is small: the heat that
+    drives the runaway is lower at the same preload and temperatures, so the loop needs longer to reach the
+    limit. Asserted, at the same H = 1 s: the oil-air run still runs away (the fixed-preload loop at 10 000 rpm
+    is unstable with either method), its heat after the first step is lower than the flooded run's, and it
+    stops later by more than the 2 H that the step alone can shift the stop (test above). Measured: first-step
+    P_loss of bearing_1 540 W against 4205 W (the same preload, 2.02 kN, after the first step); stop at 964 s
+    against 702 s."""
+    H = 1.0
+    flooded, oil_air = fixed_10000[H], fixed_10000_oil_air
+    assert oil_air.status == "limit" and "spindle.T_inner_ring_" in oil_air.message
+    assert oil_air.columns["bearing_1.P_loss"][1] < flooded.columns["bearing_1.P_loss"][1]
+    assert oil_air.columns["time"][-1] > flooded.columns["time"][-1] + 2.0 * H

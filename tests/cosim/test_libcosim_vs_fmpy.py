@@ -51,7 +51,10 @@ def relative_difference(a, b):
 
 
 def test_closed_loop_libcosim_equals_fmpy_master(closed_loop_fmus):
-    spec = load_run(SPRING, {"run.algorithm": "jacobi", "run.stop": 120.0})
+    # the bearings flooded: the test is of the masters, not of the lubrication method (whose torque need not fall
+    # as the oil warms: a thinner oil also relieves its starvation and inlet shear heating)
+    flooded = {"bearing_1.lubrication": "flooded", "bearing_2.lubrication": "flooded"}
+    spec = load_run(SPRING, {**flooded, "run.algorithm": "jacobi", "run.stop": 120.0})
     assert spec.step == 1.0 and spec.n_steps == 120
     fmpy_result = run(spec)
     system = system_of(spec)

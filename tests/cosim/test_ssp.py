@@ -113,7 +113,8 @@ def _parameters(root, component):
 
 
 def test_strings_travel_as_numeric_parameters_or_stay_with_a_note(closed_loop_fmus, tmp_path):
-    """A String at the FMU's start value is left out; the bearing, lubricant and race control become the numeric
+    """A String at the FMU's start value is left out; the bearing, lubricant, race control and lubrication method
+    become the numeric
     parameters that carry them (a master without String values, OMSimulator, gets the same set); a String
     without a numeric counterpart stays, named in the notes."""
     from bearing_fmu.models.file_parameters import lubricant_values
@@ -123,10 +124,16 @@ def test_strings_travel_as_numeric_parameters_or_stay_with_a_note(closed_loop_fm
     notes = []
     with zipfile.ZipFile(export_ssp(spec, tmp_path / "loop.ssp", notes)) as archive:
         root = ET.fromstring(archive.read("SystemStructure.ssd"))
-    # Bearing.fmu starts at the run file's B7214C, iso_vg68_mineral, outer: nothing to carry
-    assert _parameters(root, "bearing_1") == {"F_z": ("Real", "800.0"), "omega": ("Real", "1047.1975511965977")}
+    # Bearing.fmu starts at the run file's B7214C, iso_vg68_mineral, outer, and at flooded: the run file's
+    # oil_air travels as lubrication_mode 3 (LUBRICATION_METHODS order)
+    assert _parameters(root, "bearing_1") == {
+        "F_z": ("Real", "800.0"),
+        "omega": ("Real", "1047.1975511965977"),
+        "lubrication_mode": ("Integer", "3"),
+    }
     second = _parameters(root, "bearing_2")
     assert second.pop("race_control_mode") == ("Integer", "1")
+    assert second.pop("lubrication_mode") == ("Integer", "3")
     assert second.pop("lubricant_from_file") == ("Boolean", "false")
     assert {name: float(value) for name, (_, value) in second.items() if name.startswith("lubricant_data.")} == (
         lubricant_values("pao_vg48")
@@ -184,9 +191,12 @@ def test_fmpy_simulate_ssp_cannot_run_the_package(closed_loop_fmus, tmp_path, ca
             if connector.get("kind") == "input" and (component.get("name"), connector.get("name")) not in connected:
                 connectors.remove(connector)
         for p in component.iter(f"{{{SSV}}}Parameter"):
-            assert p[0].tag == f"{{{SSV}}}Real"  # this package carries Real values only
+            # this package carries Real values and the Integer lubrication_mode (the run file's oil_air)
+            kind = p[0].tag.split("}")[1]
+            assert kind in ("Real", "Integer")
             name = f"{component.get('name')}.{p.get('name')}"
-            parameter_set.parameters.append(Parameter(name=name, type="Real", value=float(p[0].get("value"))))
+            value = float(p[0].get("value")) if kind == "Real" else int(p[0].get("value"))
+            parameter_set.parameters.append(Parameter(name=name, type=kind, value=value))
     files["SystemStructure.ssd"] = ET.tostring(root, encoding="utf-8", xml_declaration=True)
     with zipfile.ZipFile(tmp_path / "connected.ssp", "w") as archive:
         for name, data in files.items():

@@ -3,7 +3,8 @@
 - A generic FMU with bearing_from_file (lubricant_from_file) false and the numeric parameters set to the
   B7214C's (the VG68 oil's) file values gives the same outputs, bit for bit, as the same FMU given the file by
   name, whatever the String then says (the switch decides): Bearing.fmu (quasi-static) and a short
-  BearingDEM.fmu run; race_control_mode against the String race_control; SpindleThermal.fmu with the network's
+  BearingDEM.fmu run; race_control_mode against the String race_control, lubrication_mode against the String
+  lubrication; SpindleThermal.fmu with the network's
   main dimensions of another bearing against a network file naming that bearing.
 - A configured FMU (`spindle build --config configs/rabreau_rig.toml`) run with no parameter set gives the
   outputs of the generic FMU given the configuration's Strings, and so does it with the switches false.
@@ -65,12 +66,21 @@ def test_numeric_bearing_changes_the_result_when_it_differs_from_the_file(bearin
     assert wider["alpha_inner"][-1] != by_file["alpha_inner"][-1]
 
 
-def test_race_control_mode_equals_the_race_control_string(bearing_fmu):
-    by_string = run(bearing_fmu, {"race_control": "hybrid", **QS_INPUTS}, 0.2, 0.1)
-    by_number = run(bearing_fmu, {"race_control": "inner", "race_control_mode": 2, **QS_INPUTS}, 0.2, 0.1)
+@pytest.mark.parametrize(
+    ("string", "value", "decoy", "code", "other_code", "output"),
+    [
+        ("race_control", "hybrid", "inner", 2, 0, "omega_ball_cage"),
+        ("lubrication", "oil_air", "grease", 3, 0, "torque"),
+    ],
+)
+def test_mode_integer_equals_its_string(bearing_fmu, string, value, decoy, code, other_code, output):
+    """race_control_mode, lubrication_mode: the Integer wins over the String (set to another choice) and gives
+    the outputs of the String naming its choice; another code changes the result."""
+    by_string = run(bearing_fmu, {string: value, **QS_INPUTS}, 0.2, 0.1)
+    by_number = run(bearing_fmu, {string: decoy, f"{string}_mode": code, **QS_INPUTS}, 0.2, 0.1)
     assert_same_outputs(by_string, by_number)
-    outer = run(bearing_fmu, {"race_control_mode": 0, **QS_INPUTS}, 0.2, 0.1)
-    assert outer["omega_ball_cage"][-1] != by_number["omega_ball_cage"][-1]
+    other = run(bearing_fmu, {f"{string}_mode": other_code, **QS_INPUTS}, 0.2, 0.1)
+    assert other[output][-1] != by_number[output][-1]
 
 
 def test_numeric_b7214c_and_vg68_equal_their_files_in_the_dem_fmu(dem_fmu):
@@ -181,6 +191,7 @@ def refusal(path, parameters):
             "bearing_data.alpha0 = 0.2618 rad (15.000 deg) and bearing_data.Pd = 0.0001 m",
         ),
         ("bearing_fmu", {"race_control_mode": 3}, "race_control_mode = 3 is outside the allowed range [-1, 2]"),
+        ("bearing_fmu", {"lubrication_mode": 5}, "lubrication_mode = 5 is outside the allowed range [-1, 4]"),
         (
             "bearing_fmu",
             {"lubricant_from_file": False, "lubricant_data.nu_1": 0.0},

@@ -12,6 +12,9 @@ fixed, radial load along psi = 0 (docs/decisions.md):
 4. race summaries over the loaded contacts (minimum film parameter and film thickness; 0 when a
    race has no loaded contact), worst regime, largest loads and pressure, count of balls loaded
    on both races.
+Lubrication method (brg[B_LUBRICATED] set; ref_lubrication): the flooded films of each loaded contact times
+its inlet-shear-heating and starvation factors (those of ball 1, the most loaded, are outputs); the drag of the
+Z balls at the cage's orbital speed. Flooded: the factors are 1 and the drag 0 here (the kernel writes neither).
 The brg and lub arrays are read through the kernels' layout constants (B_*, LUB_*) only; the Hertz
 coefficients (k, E, K) are taken from brg as the kernel does (they are its inputs; the unit test
 checks them separately against ref_hertz).
@@ -22,7 +25,7 @@ import math
 from bearing_fmu.kernels import lubricant as lk  # layout constants (LUB_*) only
 from bearing_fmu.kernels import radial_bearing as ak  # layout constants (B_*) only
 
-from . import ref_capacitance, ref_ehl, ref_geometry, ref_hertz, ref_loaddist, ref_lubricant
+from . import ref_capacitance, ref_ehl, ref_geometry, ref_hertz, ref_loaddist, ref_lubricant, ref_lubrication
 
 BALL_ROWS = ("Q_i", "Q_o", "h_min_i", "h_min_o", "Lambda_i", "Lambda_o", "C_i", "C_o")
 
@@ -58,6 +61,9 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
 
     eta, xi, rho0 = ref_lubricant.lubricant_state(T_oil, lub)
     K_cm = ref_lubricant.clausius_mossotti_constant(lub[lk.LUB_EPS_R0], lub[lk.LUB_RHO_REF])
+    lubricated = brg[ak.B_LUBRICATED] > 0.5
+    beta = ref_lubrication.temperature_viscosity_coefficient(T_oil, lub) if lubricated else 0.0
+    phis = {"i": (1.0, 1.0), "o": (1.0, 1.0)}
     omega_cage, omega_ball_cage, omega_ball, u = ref_geometry.rolling_kinematics(omega, D, dm, 0.0)
     F_c = ref_geometry.centrifugal_force(brg[ak.B_M_BALL], dm, omega_cage) if brg[ak.B_CENTRIFUGAL] > 0.5 else 0.0
 
@@ -84,6 +90,12 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
             Q = loads[s]
             a_y, b_x, _, p_max = ref_hertz.hertz_contact(Q, c["Rx"], c["Ry"], E_red, c["k"], c["E"], c["K"])
             h_c, h_min = ref_ehl.film_thickness(film_code, eta, xi, E_red, u, Q, c["Rx"], c["Ry"], c["k"])
+            if lubricated and Q > 0.0:
+                method = (brg[ak.B_K_OIL], brg[ak.B_THERMAL], brg[ak.B_H_OIL])
+                phi = ref_lubrication.film_factors(h_c, h_min, abs(u), p_max, b_x, c["Rx"], E_red, eta, beta, *method)
+                h_c, h_min = h_c * phi[0] * phi[1], h_min * phi[0] * phi[2]
+                if j == 0:
+                    phis[s] = phi[:2]
             lam = ref_ehl.film_parameter(h_min, c["sigma"])
             C[s] = 0.0
             if Q > 0.0:
@@ -142,6 +154,13 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
     }
     frequencies = ref_geometry.pass_frequencies(omega, omega_cage, omega_ball_cage, Z)
     out["ftf"], out["bpfo"], out["bpfi"], out["bsf"] = frequencies
+    (out["phi_ish_i"], out["phi_rs_i"]), (out["phi_ish_o"], out["phi_rs_o"]) = phis["i"], phis["o"]
+    P = 0.0
+    if brg[ak.B_DRAG] > 0.5:
+        rho_e, eta_e = ref_lubrication.mixture(brg[ak.B_DRAG_X], rho0, eta)
+        P = Z * ref_lubrication.ball_drag_power(omega_cage * dm / 2.0, D, rho_e, eta_e, brg[ak.B_DRAG_AREA])
+    out["p_drag"] = P
+    out["torque_drag"] = P / abs(omega) if omega != 0.0 else 0.0
     return out, balls
 
 

@@ -12,6 +12,10 @@ Summaries (docs/quasistatic.md): minimum Lambda and h_min over the loaded contac
 central film h_c of its most loaded contact (0 when a race has none), regime of the worse race, largest
 loads and pressure, balls loaded on both races, bearing capacitance = background + balls (inner and outer
 contacts in series) in parallel, power loss = both rings' heats, torque = power / |omega| (0 at rest).
+Lubrication method (cp[CP_LUBRICATED] set; ref_lubrication): the flooded films of a loaded contact times the
+inlet-shear-heating and starvation factors before Lambda, mu, capacitance; the EHL loss times the rolling-force
+factor; the factors of the most loaded contact of each race; with the losses, the drag of every ball at its
+orbital speed, half its heat to each ring.
 The cp, lub and balls arrays are read through the kernels' layout constants only. A submodel that is
 off is a null submodel: its outputs are NaN here (the kernel does not write them).
 """
@@ -22,7 +26,7 @@ from bearing_fmu.kernels import contacts as ck  # layout constants (CP_*, CO_*, 
 from bearing_fmu.kernels import jones_harris as qk  # layout constants (BQ_*) only
 from bearing_fmu.kernels import lubricant as lk  # layout constants (LUB_*) only
 
-from . import ref_capacitance, ref_ehl, ref_hertz, ref_lubricant, ref_torque
+from . import ref_capacitance, ref_ehl, ref_hertz, ref_lubricant, ref_lubrication, ref_torque
 
 RACES = (  # (name, cp offsets of Rx, Ry, k, E, K; sigma; conformity; load, rolling, spin rows; ring heat)
     ("inner", (ck.CP_RX_I, ck.CP_RY_I, ck.CP_K_I, ck.CP_EE_I, ck.CP_KK_I), ck.CP_SIGMA_I, ck.CP_F_I,
@@ -32,11 +36,17 @@ RACES = (  # (name, cp offsets of Rx, Ry, k, E, K; sigma; conformity; load, roll
 )  # fmt: skip
 
 
-def contact(Q, u, spin, Rx, Ry, k, ell_E, ell_K, sigma, f, cp, eta, xi, rho0, lub, capacitance, torque):
-    """One contact: dict with p_max, h_min, Lambda, C (F) and the loss components (W, ref_torque TL_* order)."""
+def contact(Q, u, spin, Rx, Ry, k, ell_E, ell_K, sigma, f, cp, eta, xi, rho0, lub, capacitance, torque, beta):
+    """One contact: dict with p_max, h_min, Lambda, C (F), the loss components (W, ref_torque TL_* order) and the
+    lubrication method's factors phi (ish, rs_c)."""
     E_red = cp[ck.CP_E_RED]
     a, b, _, p_max = ref_hertz.hertz_contact(Q, Rx, Ry, E_red, k, ell_E, ell_K)
     h_c, h_min = ref_ehl.film_thickness(int(cp[ck.CP_FILM]), eta, xi, E_red, u, Q, Rx, Ry, k)
+    phi = (1.0, 1.0, 1.0)
+    if cp[ck.CP_LUBRICATED] > 0.5 and Q > 0.0:
+        args = (abs(u), p_max, b, Rx, E_red, eta, beta, cp[ck.CP_K_OIL], cp[ck.CP_THERMAL], cp[ck.CP_H_OIL])
+        phi = ref_lubrication.film_factors(h_c, h_min, *args)
+        h_c, h_min = h_c * phi[0] * phi[1], h_min * phi[0] * phi[2]
     lam = ref_ehl.film_parameter(h_min, sigma)
     C = 0.0
     losses = [0.0] * ref_torque.TL_SIZE
@@ -59,7 +69,9 @@ def contact(Q, u, spin, Rx, Ry, k, ell_E, ell_K, sigma, f, cp, eta, xi, rho0, lu
         mu = ref_ehl.friction_coefficient(lam)
         args = (Q, u, spin, Rx, Ry, a, b, ell_E, f, cp[ck.CP_D], E_red, eta, xi, mu, cp[ck.CP_ALPHA_H])
         ref_torque.contact_losses(*args, losses)
-    return {"p_max": p_max, "h_c": h_c, "h_min": h_min, "Lambda": lam, "C": C, "losses": losses}
+        if cp[ck.CP_LUBRICATED] > 0.5:
+            losses[ref_torque.TL_EHL] *= ref_lubrication.rolling_force_factor(phi[0], phi[1])
+    return {"p_max": p_max, "h_c": h_c, "h_min": h_min, "Lambda": lam, "C": C, "losses": losses, "phi": phi[:2]}
 
 
 def contact_outputs(omega, T_oil, cp, lub, balls):
@@ -67,13 +79,15 @@ def contact_outputs(omega, T_oil, cp, lub, balls):
     capacitance = cp[ck.CP_CAPACITANCE] > 0.5
     torque = cp[ck.CP_TORQUE] > 0.5
     eta, xi, rho0 = ref_lubricant.lubricant_state(T_oil, lub)
+    lubricated = cp[ck.CP_LUBRICATED] > 0.5
+    beta = ref_lubrication.temperature_viscosity_coefficient(T_oil, lub) if lubricated else 0.0
     Z = balls.shape[1]
     res = {}  # (race name, j) -> contact dict
     for j in range(Z):
         for name, geo, sigma, f, q_row, u_row, spin_row in RACES:
             Rx, Ry, k, ell_E, ell_K = (cp[i] for i in geo)
             Q, u, spin = balls[q_row, j], balls[u_row, j], balls[spin_row, j]
-            state = (eta, xi, rho0, lub, capacitance, torque)
+            state = (eta, xi, rho0, lub, capacitance, torque, beta)
             res[name, j] = dict(contact(Q, u, spin, Rx, Ry, k, ell_E, ell_K, cp[sigma], cp[f], cp, *state), Q=Q)
 
     out = np.full(ck.CO_SIZE, np.nan)
@@ -85,6 +99,9 @@ def contact_outputs(omega, T_oil, cp, lub, balls):
         out[ck.CO_QMAX_I + race] = max((c["Q"] for c in loaded), default=0.0)
         # central film of the most loaded contact: the first ball of the largest load
         out[ck.CO_HC_I + race] = max(loaded, key=lambda c: c["Q"])["h_c"] if loaded else 0.0
+        if lubricated:
+            phi = max(loaded, key=lambda c: c["Q"])["phi"] if loaded else (1.0, 1.0)
+            out[ck.CO_PHI_ISH_I + race], out[ck.CO_PHI_RS_I + race] = phi
         for j in range(Z):
             per_contact[ck.PC_HMIN_I + race, j] = res[name, j]["h_min"]
             per_contact[ck.PC_LAMBDA_I + race, j] = res[name, j]["Lambda"]
@@ -105,6 +122,18 @@ def contact_outputs(omega, T_oil, cp, lub, balls):
             out[ck.CO_P_EHL + t] = sum(c["losses"][t] for c in everything)
         out[ck.CO_Q_INNER_RING] = sum(sum(res["inner", j]["losses"]) for j in range(Z))
         out[ck.CO_Q_OUTER_RING] = sum(sum(res["outer", j]["losses"]) for j in range(Z))
+        if cp[ck.CP_DRAG] > 0.5:
+            rho_e, eta_e = ref_lubrication.mixture(cp[ck.CP_DRAG_X], rho0, eta)
+            P = sum(
+                ref_lubrication.ball_drag_power(
+                    balls[qk.BQ_W_M, j] * cp[ck.CP_DM] / 2.0, cp[ck.CP_D], rho_e, eta_e, cp[ck.CP_DRAG_AREA]
+                )
+                for j in range(Z)
+            )
+            out[ck.CO_P_DRAG] = P
+            out[ck.CO_TORQUE_DRAG] = P / abs(omega) if omega != 0.0 else 0.0
+            out[ck.CO_Q_INNER_RING] += P / 2.0
+            out[ck.CO_Q_OUTER_RING] += P / 2.0
         out[ck.CO_P_LOSS] = out[ck.CO_Q_INNER_RING] + out[ck.CO_Q_OUTER_RING]
         out[ck.CO_TORQUE] = out[ck.CO_P_LOSS] / abs(omega) if omega != 0.0 else 0.0
     out[ck.CO_ETA] = eta

@@ -11,6 +11,7 @@ QS_STIFFNESS, B_CAPACITANCE). Each test
 
 import math
 from collections import Counter
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -33,6 +34,8 @@ CAPACITANCE_OUT = (ck.CO_C_BEARING,)
 LOSS_OUT = (ck.CO_P_LOSS, ck.CO_Q_INNER_RING, ck.CO_Q_OUTER_RING, ck.CO_TORQUE) + tuple(
     ck.CO_P_EHL + t for t in range(4)
 )
+DRAG_OUT = (ck.CO_P_DRAG, ck.CO_TORQUE_DRAG)  # the lubrication method's drag: part of the loss submodel
+LUBRICATION_OUT = (ck.CO_PHI_ISH_I, ck.CO_PHI_ISH_O, ck.CO_PHI_RS_I, ck.CO_PHI_RS_O)
 
 
 def counting(monkeypatch, module, names, calls):
@@ -49,9 +52,15 @@ def counting(monkeypatch, module, names, calls):
 
 @pytest.fixture(scope="module")
 def solved():
-    """A solved B7214C at 10 000 rpm with every option on: (model, balls)."""
+    """A solved B7214C at 10 000 rpm with every option on (an oil bath: film factors and drag): (model, balls)."""
     scene = Scene(
-        name="all_on", fidelity="quasi_static", gyroscopic=True, torque=True, stiffness=True, capacitance=True
+        name="all_on",
+        fidelity="quasi_static",
+        gyroscopic=True,
+        torque=True,
+        stiffness=True,
+        capacitance=True,
+        lubrication="oil_bath",
     )
     m = QuasiStaticModel("B7214C", "iso_vg68_mineral", scene)
     m.evaluate(omega=OMEGA, T_oil=T_OIL, **dict(zip(("F_x", "F_y", "F_z", "M_x", "M_y"), LOADS)))
@@ -75,7 +84,12 @@ def with_code(array, slot, value):
     "option, out_slots, rows, work",
     [
         (ck.CP_CAPACITANCE, CAPACITANCE_OUT, (ck.PC_C_I, ck.PC_C_O), ("lubricated_contact_capacitance",)),
-        (ck.CP_TORQUE, LOSS_OUT, (ck.PC_P_I, ck.PC_P_O), ("contact_losses", "friction_coefficient")),
+        (
+            ck.CP_TORQUE,
+            LOSS_OUT + DRAG_OUT,
+            (ck.PC_P_I, ck.PC_P_O),
+            ("contact_losses", "friction_coefficient", "ball_drag_power"),
+        ),
     ],
     ids=["capacitance", "torque"],
 )
@@ -95,6 +109,26 @@ def test_contact_submodel_off_skips_its_work(solved, monkeypatch, option, out_sl
         assert (sum(calls.values()) > 0) == expect_work, (code, calls)
         if expect_work:
             assert np.array_equal(out, on_out)  # the Python run of the source computes what the kernel does
+        monkeypatch.undo()
+
+
+def test_flooded_method_skips_its_work(solved, monkeypatch):
+    """The flooded method (CP_LUBRICATED = CP_DRAG = 0) is the former model bit for bit: the oil bath's contact
+    array with both codes 0 gives exactly the flooded model's outputs, leaves the method's slots unwritten and
+    calls none of its kernels."""
+    m, balls = solved
+    flooded = QuasiStaticModel("B7214C", "iso_vg68_mineral", replace(m.scene, lubrication="flooded"))
+    off_cp = with_code(with_code(m.cp, ck.CP_LUBRICATED, 0.0), ck.CP_DRAG, 0.0)
+    off_out, off_pc = contacts_run(m, balls, off_cp)
+    ref_out, ref_pc = contacts_run(flooded, balls, flooded.cp)
+    assert np.array_equal(off_out, ref_out, equal_nan=True) and np.array_equal(off_pc, ref_pc)
+    assert np.all(np.isnan(off_out[list(LUBRICATION_OUT + DRAG_OUT)]))
+    work = ("film_factors", "rolling_force_factor", "temperature_viscosity_coefficient", "ball_drag_power")
+    for cp, expect_work in ((off_cp, False), (m.cp, True)):
+        calls = Counter()
+        counting(monkeypatch, ck, work, calls)
+        contacts_run(m, balls, cp, ck.contact_outputs.py_func)
+        assert (sum(calls.values()) > 0) == expect_work, calls
         monkeypatch.undo()
 
 
@@ -169,8 +203,8 @@ def test_per_ball_outputs_computed_once_after_convergence(solved, python_newton)
 
 
 def test_analytic_capacitance_off_skips_its_work(monkeypatch):
-    on = AnalyticModel("6208", "guessasma_oil", Scene(capacitance=True))
-    off = AnalyticModel("6208", "guessasma_oil", Scene(capacitance=False))
+    on = AnalyticModel("6208", "guessasma_oil", Scene(capacitance=True, lubrication="oil_bath"))
+    off = AnalyticModel("6208", "guessasma_oil", Scene(capacitance=False, lubrication="oil_bath"))
     assert on.brg[ak.B_CAPACITANCE] == 1.0 and off.brg[ak.B_CAPACITANCE] == 0.0
 
     def run(m, kernel=ak.analytic_bearing):
