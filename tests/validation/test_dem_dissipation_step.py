@@ -15,18 +15,14 @@ the default within 7.1e-5 of its reference at 3 kN; ten times that, far below th
 
 import pytest
 
-from bearing_fmu.models.dem import DemModel
+from benchmarks.dem_steps import POINTS, warm
 
 OMEGA = 500.0
 
 
 def _steady(F_y):
-    model = DemModel("6208", "guessasma_oil")
-    model.advance(2e-3, omega=0.0, F_y=F_y)
-    for k in range(1, 21):
-        model.advance(2e-3 + 5e-3 * k / 20, omega=OMEGA * k / 20, F_y=F_y)
-    model.advance(0.03, omega=OMEGA, F_y=F_y)
-    return model
+    """The 6208 in steady rolling at OMEGA under F_y: the step study's start-up (benchmarks.dem_steps.warm)."""
+    return warm(dict(POINTS["6208, 3 kN, 500 rad/s"], loads={"F_y": F_y}))
 
 
 def _torque(model, state, F_y, dt):
