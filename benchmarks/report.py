@@ -33,7 +33,7 @@ import time
 import xml.etree.ElementTree as ElementTree
 from pathlib import Path
 
-from . import reference_table
+from . import reference_table, render
 from .common import METRICS, REPORTS, core_contention, forget, machine_speed, record
 from .verdicts import (
     DETERMINISTIC,
@@ -115,6 +115,7 @@ TIMINGS = (
 )
 # Arguments of the benchmarks that take a command line (defaults otherwise)
 BENCHMARK_ARGS = {"dem_closed_loop": ["--runs", "1"]}
+BENCHMARK_OPTIONS = {}  # keyword arguments of the measure() of a benchmark, where not its defaults
 # Why a target is missed, where it is: keyed by (benchmark, metric). Written from the profiles in the reports.
 CAUSES = {
     ("dem_timing", "step, tribology every step (CPU median)"): (
@@ -206,7 +207,9 @@ def run_benchmarks(names):
         t0 = time.perf_counter()
         print(f"== {name}", flush=True)
         forget(name)
-        if "argv" in inspect.signature(module.main).parameters:  # a command-line main: its arguments, never sys.argv
+        if hasattr(module, "measure"):
+            render.cli(module.measure, name, **BENCHMARK_OPTIONS.get(name, {}))
+        elif "argv" in inspect.signature(module.main).parameters:  # a command-line main: its arguments, never sys.argv
             module.main(BENCHMARK_ARGS.get(name, []))
         else:
             module.main()
