@@ -3,16 +3,18 @@
 viscosity, Murnaghan density, E' = 230.77 GPa), and its grid convergence.
 
 Tolerances (docs/ehl_solver.md, Validation): h_c and h_min within 5 % of the thesis for k >= 1 and 10 % for
-k < 1, on the grid of level 2 (161 x 129 nodes), whose discretisation error is about 1 % (grid study below).
+k < 1, on the default grid (level 3, 321 x 257 nodes of the contact's box), whose discretisation error is
+2 % for the light and moderate loads and 2-3 % at M > 1000 (grid study below and docs/reports/
+ehl_grid_study.md). The thesis' values carry their own mesh's error (spacing 0.02) of the same order; 5 %
+covers both; slender contacts (k < 1) have their minimum film in a side constriction a few nodes wide
+on either mesh, hence 10 %. Cases outside are explained by grid studies in docs/ehl_solver.md, Validation.
 The default suite runs a subset of the light-load series; the whole table is marked slow (tests/_markers.py).
 """
-
-import math
 
 import pytest
 
 from bearing_fmu.models import ehl_numerical as en
-from benchmarks.ehl_solver import E_RED, ETA0, FLUID, cases, solve
+from benchmarks.ehl_solver import E_RED, ETA0, FLUID, cases, richardson, solve
 
 CASES = {c["n"]: c for c in cases()}
 SUBSET = (4, 6)  # w = 120 N, u_e = 2 m/s, k = 1.98 and 1.00
@@ -20,7 +22,7 @@ SUBSET = (4, 6)  # w = 120 N, u_e = 2 m/s, k = 1.98 and 1.00
 
 def _check(n):
     c = CASES[n]
-    sol, _ = solve(c, level=2)
+    sol, _ = solve(c)
     assert sol.converged, f"case {n}: not converged (last change {sol.change:.1e} after {sol.cycles} cycles)"
     tol = 0.05 if c["k"] >= 1.0 else 0.10
     for name, got, want in (("h_c", sol.h_c, c["hc_nm"]), ("h_min", sol.h_min, c["hm_nm"])):
@@ -38,24 +40,22 @@ def test_every_case_matches_annexe_d(n):
     _check(n)
 
 
-def test_grid_convergence_is_second_order_and_level_2_within_2_percent():
-    """Case 6 (k = 1, 120 N, 2 m/s) on the grids of levels 0, 1, 2 (dX = 0.125, 0.0625, 0.03125): measured
-    h_c 268.9, 305.5, 314.9 nm and h_min 156.4, 174.7, 179.6 nm, observed orders 1.95 and 1.91, Richardson
-    estimates 318.2 and 181.4 nm, so level 2 is 1.0 % thin on both. The test asserts an order between 1.5 and
-    2.5, level 2 within 2 % of the Richardson estimate, and that estimate within 5 % of the thesis."""
-    c = CASES[6]
+@pytest.mark.parametrize("n", (6, 28))
+def test_grid_convergence_is_second_order_and_level_3_within_2_percent(n):
+    """Cases 6 (k = 1, 120 N, 2 m/s, M = 54) and 28 (k = 1, 800 N, 2 m/s, M = 360) on the grids of levels 1, 2,
+    3 of their boxes (docs/reports/ehl_grid_study.md gives the numbers). The test asserts an observed order
+    between 1.5 and 2.5 (the discretisation is second order), level 3 within 2 % of the Richardson estimate
+    (the default grid's discretisation error), and that estimate within 5 % of the thesis, whose own mesh
+    error is of that order."""
+    c = CASES[n]
     sols = [
-        en.solve_contact(
-            c["Rx_mm"] * 1e-3, c["Ry_mm"] * 1e-3, c["w_N"], c["ue_m_s"], E_RED, ETA0, FLUID, finest=l, coarsest=0
-        )
-        for l in (0, 1, 2)
+        en.solve_contact(c["Rx_mm"] * 1e-3, c["Ry_mm"] * 1e-3, c["w_N"], c["ue_m_s"], E_RED, ETA0, FLUID, finest=l)
+        for l in (1, 2, 3)
     ]
     assert all(s.converged for s in sols)
     for attr, want in (("h_c", c["hc_nm"]), ("h_min", c["hm_nm"])):
         h = [getattr(s, attr) * 1e9 for s in sols]
-        ratio = (h[1] - h[0]) / (h[2] - h[1])
-        order = math.log2(ratio)
+        order, extrapolated = richardson(h)
         assert 1.5 <= order <= 2.5, f"{attr}: {h}, order {order:.2f}"
-        extrapolated = h[2] + (h[2] - h[1]) / (ratio - 1.0)
         assert abs(h[2] - extrapolated) <= 0.02 * extrapolated, f"{attr}: {h}, Richardson {extrapolated:.1f}"
         assert abs(extrapolated - want) <= 0.05 * want, f"{attr}: Richardson {extrapolated:.1f} vs thesis {want}"
