@@ -16,7 +16,8 @@ import math
 from bearing_fmu_common.jit import kernel
 
 from .capacitance import ball_capacitance, lubricated_contact_capacitance
-from .ehl import film_parameter, film_thickness, friction_coefficient, lubrication_regime
+from .ehl import film_parameter, friction_coefficient, lubrication_regime
+from .film_correction import FT_SIZE, corrected_film_thickness
 from .hertz import hertz_contact
 from .jones_harris import BQ_Q_I, BQ_Q_O, BQ_SPIN_I, BQ_SPIN_O, BQ_U_I, BQ_U_O
 from .lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
@@ -47,7 +48,8 @@ CP_D = 20  # ball diameter (m)
 CP_CAPACITANCE = 21  # 1 = capacitance submodel on; 0 = null submodel (its slots are not written)
 CP_TORQUE = 22  # 1 = loss (torque and heat) submodel on; 0 = null submodel (its slots are not written)
 CP_OIL_GAP = 23  # oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
-CP_SIZE = 24
+CP_FILM_TABLE = 24  # film correction table (kernels.film_correction layout, FT_SIZE slots; its FT_ON 0 = off)
+CP_SIZE = CP_FILM_TABLE + FT_SIZE
 
 # layout of the output array
 CO_LAMBDA_I = 0
@@ -104,6 +106,7 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
     K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF]) if capacitance else 0.0
     E_red = cp[CP_E_RED]
     film = int(cp[CP_FILM])
+    film_table = cp[CP_FILM_TABLE:]
     lam_i = math.inf
     lam_o = math.inf
     hmin_i = math.inf
@@ -128,7 +131,7 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
             Ry = cp[CP_RY_I + o]
             k = cp[CP_K_I + o]
             a, b, _, p = hertz_contact(Q, Rx, Ry, E_red, k, cp[CP_EE_I + o], cp[CP_KK_I + o])
-            hc, hm = film_thickness(film, eta, xi, E_red, u, Q, Rx, Ry, k)
+            hc, hm = corrected_film_thickness(film, eta, xi, E_red, u, Q, Rx, Ry, k, film_table, race)
             lam = film_parameter(hm, cp[CP_SIGMA_I + race])
             C = 0.0
             P = 0.0

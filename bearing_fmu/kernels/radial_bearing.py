@@ -17,7 +17,8 @@ import math
 from bearing_fmu_common.jit import kernel
 
 from .capacitance import ball_capacitance, lubricated_contact_capacitance
-from .ehl import film_parameter, film_thickness, lubrication_regime
+from .ehl import film_parameter, lubrication_regime
+from .film_correction import FT_SIZE, corrected_film_thickness
 from .geometry import centrifugal_force, pass_frequencies, rolling_kinematics
 from .hertz import hertz_contact, hertz_stiffness, series_stiffness
 from .loaddist import load_parameter, solve_radial_shift
@@ -50,7 +51,8 @@ B_CENTRIFUGAL = 22  # 1 = centrifugal load on, 0 = off
 B_TOL = 23  # relative tolerance of the radial equilibrium (-)
 B_CAPACITANCE = 24  # 1 = capacitance submodel on; 0 = null submodel (O_C_BEARING and ball rows C_i, C_o not written)
 B_OIL_GAP = 25  # oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
-B_SIZE = 26
+B_FILM_TABLE = 26  # film correction table (kernels.film_correction layout, FT_SIZE slots; its FT_ON 0 = off)
+B_SIZE = B_FILM_TABLE + FT_SIZE
 
 # layout of the output array
 O_LAMBDA_I = 0
@@ -102,6 +104,8 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     Ry_o = brg[B_RY_O]
 
     capacitance = brg[B_CAPACITANCE] > 0.5
+    film = int(brg[B_FILM])
+    film_table = brg[B_FILM_TABLE:]
     eta, xi, rho0 = lubricant_state(T_oil, lub)
     K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF]) if capacitance else 0.0
     w_cage, w_ball_rel, w_ball_fixed, u = rolling_kinematics(omega, D, dm, 0.0)
@@ -136,8 +140,8 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
         Q_o = Q_i + F_c
         a_i, b_i, _, p_i = hertz_contact(Q_i, Rx_i, Ry_i, E_red, brg[B_K_I], brg[B_EE_I], brg[B_KK_I])
         a_o, b_o, _, p_o = hertz_contact(Q_o, Rx_o, Ry_o, E_red, brg[B_K_O], brg[B_EE_O], brg[B_KK_O])
-        hc_i, hm_i = film_thickness(int(brg[B_FILM]), eta, xi, E_red, u, Q_i, Rx_i, Ry_i, brg[B_K_I])
-        hc_o, hm_o = film_thickness(int(brg[B_FILM]), eta, xi, E_red, u, Q_o, Rx_o, Ry_o, brg[B_K_O])
+        hc_i, hm_i = corrected_film_thickness(film, eta, xi, E_red, u, Q_i, Rx_i, Ry_i, brg[B_K_I], film_table, 0)
+        hc_o, hm_o = corrected_film_thickness(film, eta, xi, E_red, u, Q_o, Rx_o, Ry_o, brg[B_K_O], film_table, 1)
         L_i = film_parameter(hm_i, brg[B_SIGMA_I])
         L_o = film_parameter(hm_o, brg[B_SIGMA_O])
         C_i = 0.0

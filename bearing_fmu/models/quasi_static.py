@@ -32,6 +32,7 @@ from .declarations import (
     QUASI_STATIC_OUTPUTS,
     QUASI_STATIC_PARAMETERS,
 )
+from .film_table import film_table_array
 from .variables import (
     DM_N_LIMIT,
     MATERIAL_LIMIT,
@@ -226,6 +227,7 @@ class QuasiStaticModel:
         cp[ck.CP_D] = b.D
         cp[ck.CP_CAPACITANCE] = 1.0 if s.capacitance else 0.0
         cp[ck.CP_TORQUE] = 1.0 if s.torque else 0.0
+        cp[ck.CP_FILM_TABLE :] = film_table_array(b, self.lubricant, s.film_correction)
         return qs, cp
 
     def _rating_parameters(self):

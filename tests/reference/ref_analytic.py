@@ -22,7 +22,7 @@ import math
 from bearing_fmu.kernels import lubricant as lk  # layout constants (LUB_*) only
 from bearing_fmu.kernels import radial_bearing as ak  # layout constants (B_*) only
 
-from . import ref_capacitance, ref_ehl, ref_geometry, ref_hertz, ref_loaddist, ref_lubricant
+from . import ref_capacitance, ref_ehl, ref_film_correction, ref_geometry, ref_hertz, ref_loaddist, ref_lubricant
 
 BALL_ROWS = ("Q_i", "Q_o", "h_min_i", "h_min_o", "Lambda_i", "Lambda_o", "C_i", "C_o")
 
@@ -83,7 +83,9 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
         for s, c in race.items():
             Q = loads[s]
             a_y, b_x, _, p_max = ref_hertz.hertz_contact(Q, c["Rx"], c["Ry"], E_red, c["k"], c["E"], c["K"])
-            h_c, h_min = ref_ehl.film_thickness(film_code, eta, xi, E_red, u, Q, c["Rx"], c["Ry"], c["k"])
+            h_c, h_min = ref_film_correction.corrected_film_thickness(
+                film_code, eta, xi, E_red, u, Q, c["Rx"], c["Ry"], c["k"], brg[ak.B_FILM_TABLE :], "io".index(s)
+            )
             lam = ref_ehl.film_parameter(h_min, c["sigma"])
             C[s] = 0.0
             if Q > 0.0:
