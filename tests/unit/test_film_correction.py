@@ -10,11 +10,18 @@ import math
 import numpy as np
 import pytest
 
+from bearing_fmu.kernels import contacts as ck
 from bearing_fmu.kernels import ehl
 from bearing_fmu.kernels import film_correction as fc
+from bearing_fmu.kernels import radial_bearing as ak
+from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.kernels.lubricant import lubricant_state
 from bearing_fmu.models import film_table as ft
+from bearing_fmu.models.analytic import AnalyticModel
+from bearing_fmu.models.dem import DemModel
+from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.params import load_bearing, load_lubricant
+from bearing_fmu.scene import Scene
 from tests.reference import ref_film_correction as rf
 from tests.unit._compare import assert_close
 
@@ -97,12 +104,8 @@ def test_node_point_gives_the_node_moes_parameters():
         assert ft.temperature_range(lub)[0] <= T <= ft.temperature_range(lub)[1]
 
 
-def test_table_is_read_back_from_the_cache_and_missing_one_names_the_command(tmp_path, monkeypatch):
-    monkeypatch.setenv("BEARING_FMU_CACHE", str(tmp_path))
-    b, lub = load_bearing("6208"), load_lubricant("iso_vg68_mineral")
-    with pytest.raises(ft.FilmTableMissing, match="spindle film-table 6208 --lubricant iso_vg68_mineral"):
-        ft.film_table_array(b, lub, "table")
-    assert not ft.film_table_array(b, lub, "none").any()
+def write_made_up_table(b, lub):
+    """Cache made-up_table() as the table of bearing b with lubricant lub; returns its array."""
     array = made_up_table()
     races = []
     for race in range(2):
@@ -114,4 +117,35 @@ def test_table_is_read_back_from_the_cache_and_missing_one_names_the_command(tmp
     path = ft.table_path(b, lub)
     path.parent.mkdir(parents=True)
     path.write_text(json.dumps(dataclasses.asdict(table)))
+    return array
+
+
+def test_table_is_read_back_from_the_cache_and_missing_one_names_the_command(tmp_path, monkeypatch):
+    monkeypatch.setenv("BEARING_FMU_CACHE", str(tmp_path))
+    b, lub = load_bearing("6208"), load_lubricant("iso_vg68_mineral")
+    with pytest.raises(ft.FilmTableMissing, match="spindle film-table 6208 --lubricant iso_vg68_mineral"):
+        ft.film_table_array(b, lub, "table")
+    assert not ft.film_table_array(b, lub, "none").any()
+    array = write_made_up_table(b, lub)
     assert np.array_equal(ft.film_table_array(b, lub, "table"), array)
+
+
+FIDELITIES = (
+    (AnalyticModel, "analytic", lambda m: m.brg[ak.B_FILM_TABLE :]),
+    (QuasiStaticModel, "quasi_static", lambda m: m.cp[ck.CP_FILM_TABLE :]),
+    (DemModel, "dem", lambda m: m.par[s.P_FILM_TABLE :]),
+)
+
+
+@pytest.mark.parametrize("model, fidelity, table_of", FIDELITIES, ids=[f[1] for f in FIDELITIES])
+def test_every_fidelity_reads_the_table_of_its_scene(model, fidelity, table_of, tmp_path, monkeypatch):
+    """The scene option on: the model's kernel array carries the cached table, or the model is refused naming the
+    command; off (the default): the table slots are off and no table is looked for."""
+    monkeypatch.setenv("BEARING_FMU_CACHE", str(tmp_path))
+    b, lub = load_bearing("6208"), load_lubricant("iso_vg68_mineral")
+    on = Scene(name="corrected", fidelity=fidelity, film_correction="table")
+    with pytest.raises(ft.FilmTableMissing, match="spindle film-table 6208"):
+        model(b, lub, on)
+    assert not table_of(model(b, lub, Scene(name="plain", fidelity=fidelity))).any()
+    array = write_made_up_table(b, lub)
+    assert np.array_equal(table_of(model(b, lub, on)), array)
