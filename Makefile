@@ -55,7 +55,7 @@ test-python-hosts: $(STAMP)
 test-ssp-masters: fmus
 	$(BIN)/python -m pytest -q -m ssp_masters
 
-# the numerical EHL solver on all 55 Annexe D cases on its default grid (about 9 min on the shared machine)
+# the numerical EHL solver on all 55 Annexe D cases on its default grid (about 12 min on the shared machine)
 test-ehl-full: $(STAMP)
 	$(BIN)/python -m pytest -q -m ehl_full
 
