@@ -22,6 +22,7 @@ from bearing_fmu.models.dem import DemModel
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.params import load_bearing, load_lubricant
 from bearing_fmu.scene import Scene
+from spindle.cli import main
 from tests.reference import ref_film_correction as rf
 from tests.unit._compare import assert_close
 
@@ -149,3 +150,22 @@ def test_every_fidelity_reads_the_table_of_its_scene(model, fidelity, table_of, 
     assert not table_of(model(b, lub, Scene(name="plain", fidelity=fidelity))).any()
     array = write_made_up_table(b, lub)
     assert np.array_equal(table_of(model(b, lub, on)), array)
+
+
+def test_film_table_command_builds_and_names_the_file(tmp_path, monkeypatch, capsys):
+    """`spindle film-table` passes bearing, lubricant and --jobs to the build (here one that writes the made-up
+    table instead of solving) and prints where the table went."""
+    monkeypatch.setenv("BEARING_FMU_CACHE", str(tmp_path))
+    calls = []
+
+    def build(bearing, lubricant, jobs, log):
+        calls.append((bearing, lubricant, jobs, log))
+        b, lub = load_bearing(bearing), load_lubricant(lubricant)
+        write_made_up_table(b, lub)
+        return ft.load_film_table(b, lub)
+
+    monkeypatch.setattr(ft, "build_film_table", build)
+    assert main(["film-table", "6208", "--lubricant", "iso_vg68_mineral", "--jobs", "2"]) == 0
+    assert calls == [("6208", "iso_vg68_mineral", 2, True)]
+    path = ft.table_path(load_bearing("6208"), load_lubricant("iso_vg68_mineral"))
+    assert str(path) in capsys.readouterr().out and path.is_file()
