@@ -37,7 +37,7 @@ class Scene:
         'quasi_static' (Jones/Harris 5-DOF ball equilibrium, docs/quasistatic.md) |
         'dem' (ball dynamics, docs/dem.md: load-driven; the gyroscopic and centrifugal effects, the friction
         torque and the thermal clearance input come from the dynamics, so the options that switch them are
-        quasi-static ones; film, hertz, roughness_factor and the capacitance options apply).
+        quasi-static ones; film, film_correction, hertz, roughness_factor and the capacitance options apply).
     drive (quasi_static): 'load' (loads in, displacements out), 'displacement' (displacements in,
         reaction loads out) or 'fixed_axial' (radial loads and tilting moments in, axial position in:
         a fixed-preload bearing).
