@@ -19,6 +19,7 @@ FILM_FORMULAS = {
     "chittenden": FILM_CHITTENDEN,
 }
 HERTZ_SOLUTIONS = ("exact", "approximate")
+FILM_CORRECTIONS = ("none", "table")  # the film formula as it is, or times the numerical / formula table
 SPRING_CONSTANTS = ("hertz", "iso_ts_16281")  # contact load-deflection law of the quasi-static load distribution
 PERMITTIVITY_PRESSURES = {"max": PRESSURE_MAX, "mean": PRESSURE_MEAN}
 CAPACITANCE_REGIONS = ("hertz", "lubricated")  # the contact's capacitor: its Hertz ellipse, or the oil around it too
@@ -39,7 +40,7 @@ class Scene:
         'quasi_static' (Jones/Harris 5-DOF ball equilibrium, docs/quasistatic.md) |
         'dem' (ball dynamics, docs/dem.md: load-driven; the gyroscopic and centrifugal effects, the friction
         torque and the thermal clearance input come from the dynamics, so the options that switch them are
-        quasi-static ones; film, hertz, roughness_factor and the capacitance options apply).
+        quasi-static ones; film, film_correction, hertz, roughness_factor and the capacitance options apply).
     drive (quasi_static): 'load' (loads in, displacements out), 'displacement' (displacements in,
         reaction loads out) or 'fixed_axial' (radial loads and tilting moments in, axial position in:
         a fixed-preload bearing).
@@ -50,6 +51,9 @@ class Scene:
     thermal_inputs (quasi_static): inputs dPd_thermal (and dz_thermal when z is imposed).
     film: EHL film formula, 'hamrock_dowson' (default, as Guessasma 2018 and Farah 2020) | 'masjedi_khonsari' |
         'chittenden'.
+    film_correction: 'none' (default: the formula's film) | 'table' (the formula's h_c and h_min times the ratios of
+        the numerical EHL solution to it, interpolated in the bearing and lubricant's film table, which
+        `spindle film-table BEARING --lubricant OIL` builds once; docs/film_correction.md).
     hertz: 'exact' (complete elliptic integrals, default) | 'approximate' (Hamrock-Brewe).
     centrifugal: ball centrifugal force on the outer contacts.
     capacitance: compute and expose the bearing capacitance C_bearing.
@@ -88,6 +92,7 @@ class Scene:
     name: str = "analytic"
     fidelity: str = "analytic"
     film: str = "hamrock_dowson"
+    film_correction: str = "none"
     hertz: str = "exact"
     centrifugal: bool = True
     capacitance: bool = True
@@ -130,6 +135,8 @@ class Scene:
             out.append(f"fidelity = {self.fidelity!r}: available {list(FIDELITIES)}")
         if self.film not in FILM_FORMULAS:
             out.append(f"film = {self.film!r}: allowed {sorted(FILM_FORMULAS)}")
+        if self.film_correction not in FILM_CORRECTIONS:
+            out.append(f"film_correction = {self.film_correction!r}: allowed {list(FILM_CORRECTIONS)}")
         if self.hertz not in HERTZ_SOLUTIONS:
             out.append(f"hertz = {self.hertz!r}: allowed {list(HERTZ_SOLUTIONS)}")
         if self.permittivity_pressure not in PERMITTIVITY_PRESSURES:

@@ -339,6 +339,23 @@ def cmd_film(args):
     return EXIT_OK
 
 
+def cmd_film_table(args):
+    """Build the film correction table of a bearing and lubricant into the cache (bearing_fmu.models.film_table)."""
+    from bearing_fmu.models.film_table import LEVEL, build_film_table, table_path
+    from bearing_fmu.params import load_bearing, load_lubricant
+
+    print(
+        f"film table of {args.bearing} with {args.lubricant}: solving its nodes on grid level {LEVEL} with "
+        f"{args.jobs} process(es)"
+    )
+    table = build_film_table(args.bearing, args.lubricant, jobs=args.jobs, log=True)
+    nodes = [node for race in table.races for node in race.nodes]
+    late = sum(not node["converged"] for node in nodes)
+    path = table_path(load_bearing(args.bearing), load_lubricant(args.lubricant))
+    print(f"built in {table.seconds:.0f} s ({len(nodes)} nodes, {late} not converged): {path}")
+    return EXIT_OK
+
+
 class _Version(argparse.Action):
     """--version: imports bearing_fmu (the one place of the version) only when asked, so that a command that
     runs FMUs leaves each bearing FMU its own bundled package (docs/fmu_runtime.md, "The master")."""
@@ -441,6 +458,13 @@ def main(argv=None):
         p.add_argument(f"--{name}", type=float, default=0.0, help=f"load on the inner ring ({unit})")
     p.add_argument("--T-oil", dest="T_oil", type=float, default=313.15, metavar="K", help="oil temperature (K)")
     p.add_argument("--level", type=int, default=2, help="grid level of the numerical solver (docs/ehl_solver.md)")
+    p = sub.add_parser(
+        "film-table",
+        help="build the film correction table of a bearing and lubricant (scene option film_correction = 'table')",
+    )
+    p.add_argument("bearing", help="bearing name or file (e.g. 6208, B7214C)")
+    p.add_argument("--lubricant", required=True, help="lubricant name or file (e.g. iso_vg68_mineral)")
+    p.add_argument("--jobs", type=int, default=1, help="processes solving the nodes (default 1)")
     p = sub.add_parser("report", help="error against run time, timing and stability report: docs/report.md")
     p.add_argument("--reuse", action="store_true", help="assemble from the reports already written")
     p.add_argument("--only", nargs="+", metavar="BENCHMARK", help="run only these benchmarks, then assemble")
@@ -456,6 +480,7 @@ def main(argv=None):
         "check": cmd_check,
         "export-ssp": cmd_export_ssp,
         "film": cmd_film,
+        "film-table": cmd_film_table,
     }
     try:
         return handler[args.command](args)

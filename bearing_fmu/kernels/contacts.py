@@ -16,7 +16,8 @@ import math
 from bearing_fmu_common.jit import kernel
 
 from .capacitance import ball_capacitance, lubricated_contact_capacitance
-from .ehl import film_parameter, film_thickness, friction_coefficient, lubrication_regime
+from .ehl import film_parameter, friction_coefficient, lubrication_regime
+from .film_correction import FT_SIZE, corrected_film_thickness
 from .hertz import hertz_contact
 from .jones_harris import BQ_Q_I, BQ_Q_O, BQ_SPIN_I, BQ_SPIN_O, BQ_U_I, BQ_U_O, BQ_W_M
 from .lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
@@ -57,7 +58,8 @@ CP_DRAG = 28  # 1 = drag of the balls on (with CP_TORQUE; CO_P_DRAG, CO_TORQUE_D
 CP_DRAG_X = 29  # oil-volume fraction of the fluid the balls move through (-)
 CP_DRAG_AREA = 30  # time-mean part of a ball's frontal area in it (-)
 CP_DM = 31  # pitch diameter (m)
-CP_SIZE = 32
+CP_FILM_TABLE = 32  # film correction table (kernels.film_correction layout, FT_SIZE slots; its FT_ON 0 = off)
+CP_SIZE = CP_FILM_TABLE + FT_SIZE
 
 # layout of the output array
 CO_LAMBDA_I = 0
@@ -127,6 +129,7 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
     K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF]) if capacitance else 0.0
     E_red = cp[CP_E_RED]
     film = int(cp[CP_FILM])
+    film_table = cp[CP_FILM_TABLE:]
     lam_i = math.inf
     lam_o = math.inf
     hmin_i = math.inf
@@ -154,7 +157,9 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
             Ry = cp[CP_RY_I + o]
             k = cp[CP_K_I + o]
             a, b, _, p = hertz_contact(Q, Rx, Ry, E_red, k, cp[CP_EE_I + o], cp[CP_KK_I + o])
-            hc, hm = film_thickness(film, eta, xi, E_red, u, Q, Rx, Ry, k)
+            # the fully flooded isothermal film (the formula, times the numerical solver's ratio where the film
+            # table is on), then the lubrication method's inlet heating and starvation factors
+            hc, hm = corrected_film_thickness(film, eta, xi, E_red, u, Q, Rx, Ry, k, film_table, race)
             if lubricated and Q > 0.0:
                 phi_t, phi_c, phi_m = film_factors(
                     hc, hm, abs(u), p, b, Rx, E_red, eta, beta, cp[CP_K_OIL], cp[CP_THERMAL], cp[CP_H_OIL]

@@ -17,7 +17,8 @@ import math
 from bearing_fmu_common.jit import kernel
 
 from .capacitance import ball_capacitance, lubricated_contact_capacitance
-from .ehl import film_parameter, film_thickness, lubrication_regime
+from .ehl import film_parameter, lubrication_regime
+from .film_correction import FT_SIZE, corrected_film_thickness
 from .geometry import centrifugal_force, pass_frequencies, rolling_kinematics
 from .hertz import hertz_contact, hertz_stiffness, series_stiffness
 from .loaddist import load_parameter, solve_radial_shift
@@ -59,7 +60,8 @@ B_K_OIL = 29  # oil thermal conductivity (W/(m K))
 B_DRAG = 30  # 1 = drag of the balls on (O_P_DRAG, O_TORQUE_DRAG written)
 B_DRAG_X = 31  # oil-volume fraction of the fluid the balls move through (-)
 B_DRAG_AREA = 32  # time-mean part of a ball's frontal area in it (-)
-B_SIZE = 33
+B_FILM_TABLE = 33  # film correction table (kernels.film_correction layout, FT_SIZE slots; its FT_ON 0 = off)
+B_SIZE = B_FILM_TABLE + FT_SIZE
 
 # layout of the output array
 O_LAMBDA_I = 0
@@ -118,6 +120,8 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
 
     capacitance = brg[B_CAPACITANCE] > 0.5
     lubricated = brg[B_LUBRICATED] > 0.5
+    film = int(brg[B_FILM])
+    film_table = brg[B_FILM_TABLE:]
     eta, xi, rho0 = lubricant_state(T_oil, lub)
     beta = 0.0
     if lubricated and brg[B_THERMAL] > 0.5:
@@ -158,8 +162,8 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
         Q_o = Q_i + F_c
         a_i, b_i, _, p_i = hertz_contact(Q_i, Rx_i, Ry_i, E_red, brg[B_K_I], brg[B_EE_I], brg[B_KK_I])
         a_o, b_o, _, p_o = hertz_contact(Q_o, Rx_o, Ry_o, E_red, brg[B_K_O], brg[B_EE_O], brg[B_KK_O])
-        hc_i, hm_i = film_thickness(int(brg[B_FILM]), eta, xi, E_red, u, Q_i, Rx_i, Ry_i, brg[B_K_I])
-        hc_o, hm_o = film_thickness(int(brg[B_FILM]), eta, xi, E_red, u, Q_o, Rx_o, Ry_o, brg[B_K_O])
+        hc_i, hm_i = corrected_film_thickness(film, eta, xi, E_red, u, Q_i, Rx_i, Ry_i, brg[B_K_I], film_table, 0)
+        hc_o, hm_o = corrected_film_thickness(film, eta, xi, E_red, u, Q_o, Rx_o, Ry_o, brg[B_K_O], film_table, 1)
         if lubricated:  # the method's film factors (kernels.lubrication); ball 0 is the most loaded
             k_f, thermal, h_oil = brg[B_K_OIL], brg[B_THERMAL], brg[B_H_OIL]
             if Q_i > 0.0:

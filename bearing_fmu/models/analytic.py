@@ -21,6 +21,7 @@ from ..params import load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
 from .contacts import RaceContacts, truncation_parameters, truncation_warnings
 from .declarations import ANALYTIC_INPUTS, ANALYTIC_OUTPUTS
+from .film_table import film_table_array
 from .lubrication import Lubrication, pack_lubrication
 from .variables import (
     DM_N_LIMIT,
@@ -126,6 +127,7 @@ class AnalyticModel:
         brg[ak.B_TOL] = s.tolerance
         brg[ak.B_CAPACITANCE] = 1.0 if s.capacitance else 0.0
         pack_lubrication(brg, ak, "B_", Lubrication(s, b.D, b.dm))
+        brg[ak.B_FILM_TABLE :] = film_table_array(b, self.lubricant, s.film_correction)
         return brg
 
     def _race_contacts(self):

@@ -33,6 +33,7 @@ from .declarations import (
     QUASI_STATIC_OUTPUTS,
     QUASI_STATIC_PARAMETERS,
 )
+from .film_table import film_table_array
 from .lubrication import Lubrication, pack_lubrication
 from .variables import (
     DM_N_LIMIT,
@@ -240,6 +241,7 @@ class QuasiStaticModel:
             s = replace(s, lubrication=self.lubrication, oil_level=None, inlet_oil_layer=None, cavity_oil_fraction=None)
         pack_lubrication(cp, ck, "CP_", Lubrication(s, b.D, b.dm), s.torque)
         cp[ck.CP_DM] = b.dm
+        cp[ck.CP_FILM_TABLE :] = film_table_array(b, self.lubricant, s.film_correction)
         return qs, cp
 
     def _rating_parameters(self):

@@ -25,7 +25,16 @@ import math
 from bearing_fmu.kernels import lubricant as lk  # layout constants (LUB_*) only
 from bearing_fmu.kernels import radial_bearing as ak  # layout constants (B_*) only
 
-from . import ref_capacitance, ref_ehl, ref_geometry, ref_hertz, ref_loaddist, ref_lubricant, ref_lubrication
+from . import (
+    ref_capacitance,
+    ref_ehl,
+    ref_film_correction,
+    ref_geometry,
+    ref_hertz,
+    ref_loaddist,
+    ref_lubricant,
+    ref_lubrication,
+)
 
 BALL_ROWS = ("Q_i", "Q_o", "h_min_i", "h_min_o", "Lambda_i", "Lambda_o", "C_i", "C_o")
 
@@ -89,7 +98,9 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
         for s, c in race.items():
             Q = loads[s]
             a_y, b_x, _, p_max = ref_hertz.hertz_contact(Q, c["Rx"], c["Ry"], E_red, c["k"], c["E"], c["K"])
-            h_c, h_min = ref_ehl.film_thickness(film_code, eta, xi, E_red, u, Q, c["Rx"], c["Ry"], c["k"])
+            h_c, h_min = ref_film_correction.corrected_film_thickness(
+                film_code, eta, xi, E_red, u, Q, c["Rx"], c["Ry"], c["k"], brg[ak.B_FILM_TABLE :], "io".index(s)
+            )
             if lubricated and Q > 0.0:
                 method = (brg[ak.B_K_OIL], brg[ak.B_THERMAL], brg[ak.B_H_OIL])
                 phi = ref_lubrication.film_factors(h_c, h_min, abs(u), p_max, b_x, c["Rx"], E_red, eta, beta, *method)

@@ -41,7 +41,7 @@ from scipy.optimize import brentq
 
 from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.kernels.lubricant import LUB_EPS_R0, LUB_RHO_REF
-from tests.reference import ref_capacitance, ref_ehl, ref_hertz, ref_lubricant, ref_torque
+from tests.reference import ref_capacitance, ref_ehl, ref_film_correction, ref_hertz, ref_lubricant, ref_torque
 
 Z_AXIS = np.array([0.0, 0.0, 1.0])
 
@@ -132,7 +132,9 @@ def refresh(st, par, lub, omega, T_oil):
             u_r = u_r - np.dot(u_r, n) * n
             u = 0.5 * np.linalg.norm(u_b + u_r)
             spin = np.dot(w - W, n)
-            h_c, h_min = ref_ehl.film_thickness(int(par[s.P_FILM]), eta, xi, E_red, u, Q, Rx, Ry, k)
+            h_c, h_min = ref_film_correction.corrected_film_thickness(
+                int(par[s.P_FILM]), eta, xi, E_red, u, Q, Rx, Ry, k, par[s.P_FILM_TABLE :], race
+            )
             lam = ref_ehl.film_parameter(h_min, par[s.P_SIGMA_I + race])
             mu = ref_ehl.friction_coefficient(lam)
             f = par[s.P_F_I + race]

@@ -26,7 +26,7 @@ from bearing_fmu.kernels import contacts as ck  # layout constants (CP_*, CO_*, 
 from bearing_fmu.kernels import jones_harris as qk  # layout constants (BQ_*) only
 from bearing_fmu.kernels import lubricant as lk  # layout constants (LUB_*) only
 
-from . import ref_capacitance, ref_ehl, ref_hertz, ref_lubricant, ref_lubrication, ref_torque
+from . import ref_capacitance, ref_ehl, ref_film_correction, ref_hertz, ref_lubricant, ref_lubrication, ref_torque
 
 RACES = (  # (name, cp offsets of Rx, Ry, k, E, K; sigma; conformity; load, rolling, spin rows; ring heat)
     ("inner", (ck.CP_RX_I, ck.CP_RY_I, ck.CP_K_I, ck.CP_EE_I, ck.CP_KK_I), ck.CP_SIGMA_I, ck.CP_F_I,
@@ -36,12 +36,14 @@ RACES = (  # (name, cp offsets of Rx, Ry, k, E, K; sigma; conformity; load, roll
 )  # fmt: skip
 
 
-def contact(Q, u, spin, Rx, Ry, k, ell_E, ell_K, sigma, f, cp, eta, xi, rho0, lub, capacitance, torque, beta):
-    """One contact: dict with p_max, h_min, Lambda, C (F), the loss components (W, ref_torque TL_* order) and the
-    lubrication method's factors phi (ish, rs_c)."""
+def contact(Q, u, spin, Rx, Ry, k, ell_E, ell_K, sigma, f, cp, race, eta, xi, rho0, lub, capacitance, torque, beta):
+    """One contact of race 0 (inner) or 1 (outer): dict with p_max, h_min, Lambda, C (F), the loss components (W,
+    ref_torque TL_* order) and the lubrication method's factors phi (ish, rs_c)."""
     E_red = cp[ck.CP_E_RED]
     a, b, _, p_max = ref_hertz.hertz_contact(Q, Rx, Ry, E_red, k, ell_E, ell_K)
-    h_c, h_min = ref_ehl.film_thickness(int(cp[ck.CP_FILM]), eta, xi, E_red, u, Q, Rx, Ry, k)
+    h_c, h_min = ref_film_correction.corrected_film_thickness(
+        int(cp[ck.CP_FILM]), eta, xi, E_red, u, Q, Rx, Ry, k, cp[ck.CP_FILM_TABLE :], race
+    )
     phi = (1.0, 1.0, 1.0)
     if cp[ck.CP_LUBRICATED] > 0.5 and Q > 0.0:
         args = (abs(u), p_max, b, Rx, E_red, eta, beta, cp[ck.CP_K_OIL], cp[ck.CP_THERMAL], cp[ck.CP_H_OIL])
@@ -84,11 +86,11 @@ def contact_outputs(omega, T_oil, cp, lub, balls):
     Z = balls.shape[1]
     res = {}  # (race name, j) -> contact dict
     for j in range(Z):
-        for name, geo, sigma, f, q_row, u_row, spin_row in RACES:
+        for race, (name, geo, sigma, f, q_row, u_row, spin_row) in enumerate(RACES):
             Rx, Ry, k, ell_E, ell_K = (cp[i] for i in geo)
             Q, u, spin = balls[q_row, j], balls[u_row, j], balls[spin_row, j]
             state = (eta, xi, rho0, lub, capacitance, torque, beta)
-            res[name, j] = dict(contact(Q, u, spin, Rx, Ry, k, ell_E, ell_K, cp[sigma], cp[f], cp, *state), Q=Q)
+            res[name, j] = dict(contact(Q, u, spin, Rx, Ry, k, ell_E, ell_K, cp[sigma], cp[f], cp, race, *state), Q=Q)
 
     out = np.full(ck.CO_SIZE, np.nan)
     per_contact = np.full((ck.PC_SIZE, Z), np.nan)

@@ -41,6 +41,7 @@ from bearing_fmu.scene import Scene
 from tests.reference import ref_analytic as ra
 from tests.reference import ref_lubricant as rlub
 from tests.unit._compare import assert_close, rel_err
+from tests.unit.test_film_correction import made_up_table
 
 RTOL = 1e-12
 RTOL_GL = 2.5 * 48**-5.0
@@ -351,3 +352,25 @@ def test_smooth_surfaces_keep_their_film():
     assert ref["hmin_i"] > 0.0 and ref["lambda_i"] == math.inf and ref["regime"] == ek.REGIME_FULL_FILM
     assert out[ak.O_HMIN_I] == pytest.approx(ref["hmin_i"], rel=1e-6, abs=0)
     assert out[ak.O_LAMBDA_I] == math.inf and out[ak.O_REGIME] == ek.REGIME_FULL_FILM
+
+
+@pytest.mark.parametrize(
+    "omega, F_r, T, scene",
+    [
+        (500.0, 3000.0, 313.0, "default"),
+        (1700.0, 8000.0, 353.0, "default"),
+        (0.0, 3000.0, 313.0, "default"),
+        (1700.0, 3000.0, 313.0, "oil_air"),
+        (500.0, 3000.0, 313.0, "grease"),
+    ],
+)
+def test_analytic_with_a_film_table_matches_twin(omega, F_r, T, scene):
+    """The film correction on (a table of made-up ratios in the bearing array): films and what depends on them as
+    the twin corrects them; with a lubrication method the method's factors multiply the corrected film (the
+    correction is the flooded isothermal film's, the factors scale that film)."""
+    m = AnalyticModel("6208", "iso_vg68_mineral", SCENES[scene])
+    plain = run_kernel(m, omega, F_r, T)[0][ak.O_HMIN_I]
+    m.brg[ak.B_FILM_TABLE :] = made_up_table()
+    check_against_twin(m, omega, F_r, T)
+    if omega != 0.0:
+        assert run_kernel(m, omega, F_r, T)[0][ak.O_HMIN_I] != plain  # the table is read

@@ -27,6 +27,7 @@ from bearing_fmu.kernels.hertz import hertz_contact
 from bearing_fmu.models.dem import DemModel, DemUnstableError
 from bearing_fmu.models.variables import InputError
 from tests.reference import ref_ball_dynamics as ref
+from tests.unit.test_film_correction import made_up_table
 
 STEPS = 300
 DT = 3e-6
@@ -52,22 +53,25 @@ def _scale_err(a, b):
 
 
 @pytest.mark.parametrize(
-    "film, steps, traction, support, oil_gap",
+    "film, steps, traction, support, oil_gap, film_table",
     [
-        (0, STEPS, 0.0, None, 0.0),
-        (1, STEPS // 3, 0.0, None, 0.0),
-        (2, STEPS // 3, 0.0, None, 0.0),
-        (0, STEPS // 3, 0.05, None, 0.0),
-        (0, STEPS // 3, 0.0, (2e7, 2e3), 0.0),
-        (0, STEPS // 3, 0.0, None, 10e-6),
+        (0, STEPS, 0.0, None, 0.0, False),
+        (1, STEPS // 3, 0.0, None, 0.0, False),
+        (2, STEPS // 3, 0.0, None, 0.0, False),
+        (0, STEPS // 3, 0.05, None, 0.0, False),
+        (0, STEPS // 3, 0.0, (2e7, 2e3), 0.0, False),
+        (0, STEPS // 3, 0.0, None, 10e-6, False),
+        (0, STEPS // 3, 0.0, None, 0.0, True),
+        (2, STEPS // 3, 0.0, None, 0.0, True),
     ],
 )
-def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction, support, oil_gap):
+def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction, support, oil_gap, film_table):
     """Film formulas: 0 Hamrock-Dowson (the kernel's fused fast path), 1 Masjedi-Khonsari and 2 Chittenden
     (through kernels.ehl.film_thickness); the papers' mu(Lambda) and a traction limit of 0.05 (mixed film here:
     the tangential limit differs from the Houpert terms' mu); a ring support with a spring and a damper far
     above the defaults (N/m, N.s/m), so that their terms weigh in the ring's motion; the capacitance of the oil
-    around the contacts up to a 10 um gap (scene capacitance_region = 'lubricated')."""
+    around the contacts up to a 10 um gap (scene capacitance_region = 'lubricated'); the film correction on (a
+    table of made-up ratios) on the fused and on the general film path."""
     model = running_6208
     state = model.get_state()
     kernel_state = {k: (v.copy() if isinstance(v, np.ndarray) else v) for k, v in state.items()}
@@ -77,6 +81,8 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction, sup
     par[s.P_FILM] = film
     par[s.P_TRACTION] = traction
     par[s.P_OIL_GAP] = oil_gap
+    if film_table:
+        par[s.P_FILM_TABLE :] = made_up_table()
     if support is not None:
         lever = 0.5 * (0.5 * model.bearing.dm) ** 2
         par[[s.P_K_SUPPORT, s.P_C_SUPPORT]] = support

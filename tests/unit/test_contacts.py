@@ -31,6 +31,7 @@ from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
 from tests.reference import ref_contacts as rc
 from tests.unit._compare import assert_close
+from tests.unit.test_film_correction import made_up_table
 
 RTOL = 1e-12
 QUAD_RTOL = 1e-9
@@ -69,6 +70,32 @@ def test_contact_outputs_match_twin(label, bearing, options, inputs):
     m = QuasiStaticModel(bearing, "iso_vg68_mineral", scene)
     inputs = {"T_oil": 323.15, **inputs}
     m.evaluate(**inputs)
+    compare_with_twin(label, m, scene, inputs)
+
+
+FILM_TABLE_CASES = CASES[:3] + CASES[6:8]  # with the lubrication method flooded, oil bath and oil-air
+
+
+@pytest.mark.parametrize("label, bearing, options, inputs", FILM_TABLE_CASES, ids=[c[0] for c in FILM_TABLE_CASES])
+def test_contact_outputs_with_a_film_table_match_twin(label, bearing, options, inputs):
+    """The film correction on (a table of made-up ratios in the contact array): films, and what depends on them
+    (Lambda, regime, capacitance, the losses through mu(Lambda)), as the twin corrects them; with a lubrication
+    method its inlet-heating and starvation factors multiply the corrected film."""
+    scene = Scene(name="contacts", fidelity="quasi_static", **{"torque": True, **options})
+    m = QuasiStaticModel(bearing, "iso_vg68_mineral", scene)
+    inputs = {"T_oil": 323.15, **inputs}
+    m.evaluate(**inputs)
+    plain = m.out[ck.CO_HC_I]
+    m.cp[ck.CP_FILM_TABLE :] = made_up_table()
+    compare_with_twin(label + ", film table", m, scene, inputs)
+    out = np.zeros(ck.CO_SIZE)
+    ck.contact_outputs(inputs["omega"], inputs["T_oil"], m.cp, m.lubricant.array, m.balls, out,
+                       np.zeros((ck.PC_SIZE, m.bearing.Z)), np.zeros(4))  # fmt: skip
+    assert out[ck.CO_HC_I] != plain  # the table is read
+
+
+def compare_with_twin(label, m, scene, inputs):
+    """contact_outputs of the solved model m against the twin, slot by slot."""
     Z = m.bearing.Z
     out = np.full(ck.CO_SIZE, np.nan)
     per_contact = np.full((ck.PC_SIZE, Z), np.nan)

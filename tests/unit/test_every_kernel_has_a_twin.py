@@ -45,6 +45,10 @@ COVERED_THROUGH = {
         ES + "relaxation_sweep",
         "the derivative of a node's Poiseuille term in its own pressure, the Newton step's denominator",
     ),
+    "bearing_fmu.kernels.film_correction._cell": (
+        "bearing_fmu.kernels.film_correction.film_ratios",
+        "the cell and fraction of one axis of the interpolation, compared inside and beyond every edge of the nodes",
+    ),
     "bearing_fmu.kernels.capacitance._gap_integrands": (
         "bearing_fmu.kernels.capacitance._gap_coefficients",
         "the four integrands of the Hertz gap coefficients, Simpson nodes of every cell",

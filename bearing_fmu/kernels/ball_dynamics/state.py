@@ -12,6 +12,8 @@ a load F_x > 0 on the inner ring loads the ball at psi = 0. Ball 1 (index 0) sta
 (docs/conventions.md).
 """
 
+from ..film_correction import FT_SIZE
+
 # ---- steel balls: float64[B_SIZE, Z] ------------------------------------------------------------
 B_X = 0  # centre position x, y, z (m)
 B_VX = 3  # centre velocity (m/s)
@@ -141,7 +143,8 @@ P_C_SUPPORT = 66  # viscous damping of the support in x, y (N.s/m); none along t
 P_KT_SUPPORT = 67  # the support's tilt stiffness (N.m/rad): P_K_SUPPORT spread over the pitch circle, k (d_m/2)^2/2
 P_CT_SUPPORT = 68  # and its tilt damping (N.m.s/rad), c (d_m/2)^2/2
 P_OIL_GAP = 69  # oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
-P_SIZE = 70
+P_FILM_TABLE = 70  # film correction table (kernels.film_correction layout, FT_SIZE slots; its FT_ON 0 = off)
+P_SIZE = P_FILM_TABLE + FT_SIZE
 
 # a ball-race contact counts as loaded in the outputs (loads, pressure, films, angles, n_loaded) when its approach
 # exceeds this (m): the rounding of the positions (~1e-18 m) leaves approaches of 1e-18-1e-15 m on contacts that

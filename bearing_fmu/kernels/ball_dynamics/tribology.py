@@ -28,6 +28,7 @@ from bearing_fmu_common.jit import kernel
 from ..capacitance import lubricated_contact_capacitance
 from ..ehl import (
     FILM_HAMROCK_DOWSON,
+    dimensionless_groups,
     film_parameter,
     film_share,
     film_slip_speed,
@@ -37,6 +38,7 @@ from ..ehl import (
     normal_damping,
     traction_coefficient,
 )
+from ..film_correction import FT_ON, film_ratios
 from ..torque import heathcote_force, hysteresis_force, spin_moment
 from .contacts import groove_approach
 from .state import (
@@ -51,6 +53,7 @@ from .state import (
     P_EE_I,
     P_F_I,
     P_FILM,
+    P_FILM_TABLE,
     P_H_FLOOR,
     P_HA_I,
     P_HB_I,
@@ -178,6 +181,8 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
     D = par[P_D]
     half_d = 0.5 * D
     film = int(par[P_FILM])
+    film_table = par[P_FILM_TABLE:]
+    corrected = film_table[FT_ON] > 0.5
     capacitance = par[P_CAPACITANCE] > 0.5
     pressure = int(par[P_PRESSURE])
     traction = par[P_TRACTION]
@@ -273,6 +278,11 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
                     h_c = math.exp(ln_hc + 0.67 * ln_u - 0.1005 * ln_d)
                 else:
                     h_c, h_min = film_thickness(film, eta, xi, E_red, u, Q, Rx, Ry, k)
+                if corrected:  # the scene's film correction: the numerical / formula ratios of the film table
+                    U, G, W = dimensionless_groups(eta, xi, E_red, u, Q, Rx)
+                    r_c, r_min = film_ratios(film_table, race, film, U, G, W)
+                    h_c *= r_c
+                    h_min *= r_min
             else:  # no entrainment: no film, no EHL rolling force (as the kernels of ehl and torque)
                 h_c = 0.0
                 h_min = 0.0

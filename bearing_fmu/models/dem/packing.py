@@ -12,6 +12,7 @@ from ...kernels.geometry import ball_mass
 from ...kernels.hertz import hertz_contact, hertz_stiffness
 from ...params import load_dem_constants
 from ..contacts import contact_terms, pack, race_contacts, truncation_parameters
+from ..film_table import film_table_array
 from ..variables import P_MAX_ERROR, InputError
 from .monitor import CHATTER_STEPS, DAMPING_STOP
 from .placement import ball_rest_position
@@ -104,6 +105,7 @@ def pack_parameters(bearing, scene, lubricant, Pd, support, traction_limit, kt_r
     p[s.P_CHATTER] = CHATTER_STEPS
     p[s.P_DAMPING_STOP] = DAMPING_STOP
     p[s.P_TRACTION] = traction_limit
+    p[s.P_FILM_TABLE :] = film_table_array(b, lubricant, sc.film_correction)
     p[s.P_MU_LIM] = lubricant.traction_limit
     p[s.P_S_TRACTION] = lubricant.traction_slip
     p[s.P_FILM_RATE] = FILM_RATE
