@@ -4,7 +4,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test test-bare-host test-python-hosts test-ssp-masters test-ehl-full lint fmus fmus-python-hosts bench report clean
+.PHONY: demo test test-bare-host test-python-hosts test-ssp-masters test-ehl-full lint fmus fmus-python-hosts report clean
 
 $(STAMP): pyproject.toml
 	$(PY) -m venv $(VENV)
@@ -59,11 +59,9 @@ test-ssp-masters: fmus
 test-ehl-full: $(STAMP)
 	$(BIN)/python -m pytest -q -m ehl_full
 
-bench: fmus
-	$(BIN)/python -m benchmarks.run_all
-
+# every benchmark, the stability suite and docs/report.md (benchmarks/report.py)
 report: fmus
-	$(BIN)/python -m spindle.cli report
+	$(BIN)/python -m benchmarks.report
 
 clean:
 	rm -rf $(VENV) fmus/*.fmu results .pytest_cache

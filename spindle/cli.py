@@ -10,7 +10,6 @@
     spindle validate [FMU|RUNFILE ...]            fmpy's validator on the FMUs; run files (.toml) checked
     spindle check [FMU ...] [--ref CSV]           simulate each FMU's reference experiment, compare with <Name>_ref.csv
     spindle export-ssp RUNFILE [--out FILE.ssp]   the run's FMUs, connections and parameters as an SSP 1.0 package
-    spindle report [--reuse] [--only NAME ...]    error against run time, timing, stability: docs/report.md
     spindle --version
 
 Exit codes: 0 done; 1 error (message on stderr); 2 usage error or an FMU with validation problems;
@@ -227,22 +226,6 @@ def cmd_demo(args):
     args.runfile = str(DEMO_RUN)
     args.set, args.no_plot, args.progress, args.fmus, args.record_interval = [], False, False, None, None
     return cmd_run(args)
-
-
-def cmd_report(args):
-    """Run the accuracy, timing and stability suites and write docs/report.md (benchmarks/report.py)."""
-    if not IN_CHECKOUT or not (ROOT / "benchmarks" / "report.py").is_file():
-        print(
-            "spindle report: the benchmarks and tests it runs are part of the source tree; run it from a clone "
-            "(`make report`)",
-            file=sys.stderr,
-        )
-        return EXIT_ERROR
-    sys.path.insert(0, str(ROOT))
-    from benchmarks.report import main as report
-
-    report((["--reuse"] if args.reuse else []) + (["--only", *args.only] if args.only else []))
-    return EXIT_OK
 
 
 def cmd_validate(args):
@@ -465,15 +448,11 @@ def main(argv=None):
     p.add_argument("bearing", help="bearing name or file (e.g. 6208, B7214C)")
     p.add_argument("--lubricant", required=True, help="lubricant name or file (e.g. iso_vg68_mineral)")
     p.add_argument("--jobs", type=int, default=1, help="processes solving the nodes (default 1)")
-    p = sub.add_parser("report", help="error against run time, timing and stability report: docs/report.md")
-    p.add_argument("--reuse", action="store_true", help="assemble from the reports already written")
-    p.add_argument("--only", nargs="+", metavar="BENCHMARK", help="run only these benchmarks, then assemble")
     args = parser.parse_args(argv)
     handler = {
         "build": cmd_build,
         "run": cmd_run,
         "sweep": cmd_sweep,
-        "report": cmd_report,
         "info": cmd_info,
         "demo": cmd_demo,
         "validate": cmd_validate,

@@ -1,10 +1,10 @@
 """Fresh processes that load the FMUs leave through the normal interpreter teardown with exit code 0: the
 `spindle run` command (no os._exit) and a Python host stepping two FMUs on two threads. The loops are
-benchmarks/teardown.py's; it runs 100 of each for docs/reports/teardown.md, this test 5 (slow)."""
+tests/cosim/teardown_loops.py's; 5 processes of each (slow)."""
 
 import pytest
 
-from benchmarks.teardown import demo_command, exit_codes, two_thread_command
+from tests.cosim.teardown_loops import demo_command, exit_codes, two_thread_command
 
 
 @pytest.mark.parametrize("which", ["spindle_run", "two_threads"])
