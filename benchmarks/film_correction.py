@@ -10,8 +10,8 @@ of the table's nodes (level 3), with the fluid of models.film_check. The errors 
 (M, L) reduction and the interpolation) against that solver, not the solver's own discretisation (about 2 % on
 level 3, docs/ehl_solver.md).
 
-measure() returns the data as a dict (also written to docs/reports/film_correction.json); render() writes the table.
-Run: python -m benchmarks.film_correction [--points 12] [--jobs 2] [--render-only]
+A table not yet in the cache is built first (its build time is then this run's).
+Run: python -m benchmarks.film_correction [--points 16] [--clamped 4] [--jobs 2]
 """
 
 import os
@@ -19,9 +19,7 @@ import os
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # one core per solve (the coarse Newton's LU)
 
 import argparse  # noqa: E402
-import json  # noqa: E402
 import math  # noqa: E402
-import statistics  # noqa: E402
 import time  # noqa: E402
 from concurrent.futures import ProcessPoolExecutor  # noqa: E402
 
@@ -36,14 +34,13 @@ from bearing_fmu.models import ehl_numerical as en  # noqa: E402
 from bearing_fmu.models import film_table as ft  # noqa: E402
 from bearing_fmu.params import load_bearing, load_lubricant  # noqa: E402
 
-from .common import REPORTS, machine, write_report  # noqa: E402
+from .render import cli, metric  # noqa: E402
 
 BEARINGS = ("6208", "B7214C")
 LUBRICANT = "iso_vg68_mineral"
 TARGET = 0.03  # |error| of h_c and h_min for k >= 1
 STUDIED_M = 3000.0  # heaviest M of the solver's grid study (docs/ehl_solver.md)
 CLAMPED = 3.0  # the contacts beyond the table are drawn with M_CAP < M <= CLAMPED M_CAP
-DATA = REPORTS / "film_correction.json"
 
 
 def _draw(rng, races, E_red, lubricant):
@@ -104,27 +101,92 @@ def evaluate(args):
                 seconds=time.perf_counter() - start)  # fmt: skip
 
 
-def measure(n_points=16, n_clamped=4, jobs=2, seed=2026):
-    """Every bearing's table record and its random contacts, as plain data."""
-    load = os.getloadavg()[0]
-    lubricant = load_lubricant(LUBRICANT)
-    tables, jobs_list = {}, []
-    for i, name in enumerate(BEARINGS):
+def table_record(name, lubricant, n_points, n_clamped, seed):
+    """A bearing's table (built if not cached) as plain data, and its random contacts."""
+    try:
         table = ft.load_film_table(name, LUBRICANT)
-        tables[name] = dict(seconds=table.seconds, level=table.level, T_range=table.T_range,
-                            nodes=sum(len(r.nodes) for r in table.races),
-                            distinct=sum(len({(n["M"], n["L"]) for n in r.nodes}) for r in table.races),
-                            late=sum(not n["converged"] for r in table.races for n in r.nodes),
-                            races=[dict(k=r.k, M=(min(n["M"] for n in r.nodes), max(n["M"] for n in r.nodes)),
-                                        L=(min(n["L"] for n in r.nodes), max(n["L"] for n in r.nodes)))
-                                   for r in table.races])  # fmt: skip
-        array = table.array()
-        points, tables[name]["box"] = random_points(load_bearing(name), lubricant, n_points, n_clamped, seed + i)
-        jobs_list += [(name, *point, array) for point in points]
+    except ft.FilmTableMissing:
+        table = ft.build_film_table(name, LUBRICANT, jobs=2)
+    record = dict(
+        seconds=table.seconds,
+        nodes=sum(len(r.nodes) for r in table.races),
+        distinct=sum(len({(n["M"], n["L"]) for n in r.nodes}) for r in table.races),
+        late=sum(not n["converged"] for r in table.races for n in r.nodes),
+        races=[dict(k=r.k, M=[n["M"] for n in r.nodes], L=[n["L"] for n in r.nodes]) for r in table.races],
+    )
+    points, record["box"] = random_points(load_bearing(name), lubricant, n_points, n_clamped, seed)
+    return record, [(name, *point, table.array()) for point in points]
+
+
+def measure(n_points=16, n_clamped=4, jobs=2, seed=2026):
+    lubricant = load_lubricant(LUBRICANT)
+    tables, contacts = {}, []
+    for i, name in enumerate(BEARINGS):
+        tables[name], points = table_record(name, lubricant, n_points, n_clamped, seed + i)
+        contacts += points
     with ProcessPoolExecutor(jobs) as pool:
-        rows = list(pool.map(evaluate, jobs_list))
-    return dict(machine=machine(), load=(load, os.getloadavg()[0]), tables=tables, rows=rows, m_cap=ft.M_CAP,
-                l_cap=ft.L_CAP, clamped=CLAMPED, p_h=ft.P_H_RANGE, u_e=ft.U_E_RANGE)  # fmt: skip
+        rows = list(pool.map(evaluate, contacts))
+    ranges = (
+        ("M <= {studied:g}", lambda M: M <= STUDIED_M),
+        ("{studied:g} < M <= {cap:g}", lambda M: STUDIED_M < M <= ft.M_CAP),
+        ("M > {cap:g} (clamped)", lambda M: M > ft.M_CAP),
+    )
+    labels = dict(studied=STUDIED_M, cap=ft.M_CAP)
+    return dict(
+        name="film_correction",
+        title="Corrected film against fresh numerical EHL solutions",
+        about=__doc__.split("\n\n", 1)[1].split("Run:")[0],
+        blocks=[
+            box_text(),
+            dict(table=tables_table(tables)),
+            dict(text="Errors against the numerical film, max / mean |error| in %."),
+            dict(table=summary_table(rows, tables, ranges, labels)),
+            *target_texts(rows, ranges[:2], labels),
+            dict(table=contacts_table(rows)),
+            dict(
+                text="Numerical solves: median {median:.1f} s, worst {worst:.1f} s.",
+                values=dict(
+                    median=float(np.median([r["seconds"] for r in rows])), worst=max(r["seconds"] for r in rows)
+                ),
+            ),
+        ],
+        metrics=[m for label, within in ranges[:2] for m in range_metrics(rows, label.format(**labels), within)],
+    )
+
+
+def box_text():
+    return dict(
+        text="Lubricant {lubricant}; film formula Hamrock-Dowson. Random contacts per race: oil temperature uniform "
+        "over the lubricant's range, u_e log-uniform in {u0:g}-{u1:g} m/s, Hertz pressure log-uniform in "
+        "{p0:g}-{p1:g} GPa (the operating box), kept within the table's range (M <= {cap:g}, L <= {lcap:g}) and, "
+        "listed apart, with {cap:g} < M <= {clamp:g} (the table clamps them to its ratios at M = {cap:g}); beyond "
+        "L = {lcap:g} the solver diverges and gives no reference. Reference: the numerical solver on the grid level "
+        "of the table's nodes ({level}); its own discretisation error (docs/ehl_solver.md, grid study) is not in "
+        "these numbers.",
+        values=dict(
+            lubricant=LUBRICANT, u0=ft.U_E_RANGE[0], u1=ft.U_E_RANGE[1], p0=ft.P_H_RANGE[0] / 1e9,
+            p1=ft.P_H_RANGE[1] / 1e9, cap=ft.M_CAP, lcap=ft.L_CAP, clamp=CLAMPED * ft.M_CAP, level=ft.LEVEL,
+        ),
+    )  # fmt: skip
+
+
+def tables_table(tables):
+    rows = []
+    for name, t in tables.items():
+        races = "; ".join(
+            f"{('inner', 'outer')[i]}: k = {r['k']:.2f}, M {min(r['M']):.3g}-{max(r['M']):.4g}, "
+            f"L {min(r['L']):.3g}-{max(r['L']):.3g}"
+            for i, r in enumerate(t["races"])
+        )
+        box = t["box"]
+        shares = f"{100 * box['inside']:.0f} % / {100 * box['beyond_M']:.0f} % / {100 * box['beyond_L']:.0f} %"
+        rows.append([name, t["seconds"], f"{t['nodes']} ({t['distinct']})", t["late"], races, shares])
+    return dict(
+        columns=["bearing", "build (s)", "nodes (distinct solves)", "not converged", "race: k, M and L of the nodes",
+                 "operating box: within the table / M beyond / L beyond"],
+        formats=[None, "{:.0f}", None, "{:d}", None, None],
+        rows=rows,
+    )  # fmt: skip
 
 
 def _errors(row, which):
@@ -133,123 +195,76 @@ def _errors(row, which):
 
 
 def _summary(rows, which):
-    """(max |e_c|, mean |e_c|, max |e_min|, mean |e_min|) over rows."""
-    if not rows:
-        return None
-    e = np.abs([_errors(r, which) for r in rows])
-    return e[:, 0].max(), e[:, 0].mean(), e[:, 1].max(), e[:, 1].mean()
+    """[max |e_c|, mean |e_c|, max |e_min|, mean |e_min|] over rows, in %."""
+    e = 100.0 * np.abs([_errors(r, which) for r in rows])
+    return [f"{e[:, 0].max():.1f} / {e[:, 0].mean():.1f}", f"{e[:, 1].max():.1f} / {e[:, 1].mean():.1f}"]
 
 
-def _summary_line(label, rows):
-    cells = [label, str(len(rows))]
-    for which in ("formula", "corrected"):
-        s = _summary(rows, which)
-        cells += (
-            ["" for _ in range(2)]
-            if s is None
-            else [f"{100 * s[0]:.1f} / {100 * s[1]:.1f}", f"{100 * s[2]:.1f} / {100 * s[3]:.1f}"]
-        )
-    return "| " + " | ".join(cells) + " |"
-
-
-def render(data):
-    """docs/reports/film_correction.md from measure()'s dict."""
-    cap = data["m_cap"]
-    lines = [
-        "# Corrected film against fresh numerical EHL solutions",
-        "",
-        f"Generated by `python -m benchmarks.film_correction` on {data['machine']} (load average {data['load'][0]:.1f} "
-        f"before, {data['load'][1]:.1f} after). Lubricant {LUBRICANT}; film formula Hamrock-Dowson; random contacts "
-        f"per race with the oil temperature uniform over the lubricant's range, u_e log-uniform in "
-        f"{data['u_e'][0]:g}-{data['u_e'][1]:g} m/s and the Hertz pressure log-uniform in "
-        f"{data['p_h'][0] / 1e9:g}-{data['p_h'][1] / 1e9:g} GPa (the operating box), kept within the table's range "
-        f"(M <= {cap:g}, L <= {data['l_cap']:g}) and, listed apart, with {cap:g} < M <= {data['clamped'] * cap:g} (the table "
-        f"clamps them to its ratios at M = {cap:g}); beyond L = {data['l_cap']:g} the solver diverges and gives no "
-        "reference. Reference: the numerical solver on grid level 3 (the level of the table's nodes; its own "
-        f"discretisation error, about 2 % up to M ~ {STUDIED_M:g} and not measured beyond, is not in these numbers).",
-        "",
-        "## Tables",
-        "",
-        "| bearing | build (s) | nodes (distinct solves) | not converged | race: k, M range, L range of the nodes "
-        "| operating box: within the table / M beyond / L beyond |",
-        "|---|---|---|---|---|---|",
-    ]
-    for name, t in data["tables"].items():
-        races = "; ".join(
-            f"{'inner' if i == 0 else 'outer'}: k = {r['k']:.2f}, M {r['M'][0]:.3g}-{r['M'][1]:.4g}, "
-            f"L {r['L'][0]:.3g}-{r['L'][1]:.3g}"
-            for i, r in enumerate(t["races"])
-        )
-        box = t["box"]
-        shares = f"{100 * box['inside']:.0f} % / {100 * box['beyond_M']:.0f} % / {100 * box['beyond_L']:.0f} %"
-        lines.append(
-            f"| {name} | {t['seconds']:.0f} | {t['nodes']} ({t['distinct']}) | {t['late']} | {races} | {shares} |"
-        )
-    rows = data["rows"]
-    # the solver's grid study reaches M ~ 3000 (docs/ehl_solver.md): the heavier contacts are reported apart
-    ranges = [
-        (f"M <= {STUDIED_M:g}", lambda M: M <= STUDIED_M),
-        (f"{STUDIED_M:g} < M <= {cap:g}", lambda M: STUDIED_M < M <= cap),
-        (f"M > {cap:g} (clamped)", lambda M: M > cap),
-    ]
-    lines += [
-        "",
-        "## Summary",
-        "",
-        "Errors against the numerical film, max / mean |error| in %.",
-        "",
-        "| contacts | n | formula h_c | formula h_min | corrected h_c | corrected h_min |",
-        "|---|---|---|---|---|---|",
-    ]
+def summary_table(rows, tables, ranges, labels):
+    lines = []
     for label, within in ranges:
-        for name in data["tables"]:
-            lines.append(
-                _summary_line(f"{name}, {label}", [r for r in rows if r["bearing"] == name and within(r["M"])])
+        for name in (*tables, "both"):
+            chosen = [r for r in rows if within(r["M"]) and name in (r["bearing"], "both")]
+            cells = _summary(chosen, "formula") + _summary(chosen, "corrected") if chosen else [None] * 4
+            lines.append([f"{name}, {label.format(**labels)}", len(chosen), *cells])
+    return dict(
+        columns=["contacts", "n", "formula h_c", "formula h_min", "corrected h_c", "corrected h_min"],
+        formats=[None, "{:d}", None, None, None, None],
+        rows=lines,
+    )
+
+
+def largest_corrected_error(rows, within):
+    """(largest |error| of the corrected h_c and h_min over the contacts with k >= 1 in the range, their number)."""
+    chosen = [r for r in rows if within(r["M"]) and r["k"] >= 1.0]
+    return max((max(abs(e) for e in _errors(r, "corrected")) for r in chosen), default=math.nan), len(chosen)
+
+
+def target_texts(rows, ranges, labels):
+    texts = []
+    for label, within in ranges:
+        worst, n = largest_corrected_error(rows, within)
+        texts.append(
+            dict(
+                text="Target |error| <= {target:g} % on h_c and h_min for k >= 1, {label}: **{verdict}** (largest "
+                "corrected error {worst:.1f} % over {n} contacts).",
+                values=dict(target=100 * TARGET, label=label.format(**labels), worst=100 * worst, n=n,
+                            verdict="met" if worst <= TARGET else "not met"),
             )
-        lines.append(_summary_line(f"both, {label}", [r for r in rows if within(r["M"])]))
-    lines.append("")
-    for label, within in ranges[:2]:
-        met = [r for r in rows if within(r["M"]) and r["k"] >= 1.0]
-        worst = max((max(abs(e) for e in _errors(r, "corrected")) for r in met), default=math.nan)
-        verdict = "met" if worst <= TARGET else "not met"
-        lines.append(
-            f"Target |error| <= {100 * TARGET:g} % on h_c and h_min for k >= 1, {label}: **{verdict}** (largest "
-            f"corrected error {100 * worst:.1f} % over {len(met)} contacts)."
-        )
-    lines += [
-        "",
-        "## Every contact",
-        "",
-        "| bearing | race | T (K) | u_e (m/s) | Q (N) | M | L | numerical h_c / h_min (nm) | formula h_c, h_min (%) "
-        "| corrected h_c, h_min (%) | solve (s) |",
-        "|---|---|---|---|---|---|---|---|---|---|---|",
-    ]
+        )  # fmt: skip
+    return texts
+
+
+def range_metrics(rows, label, within):
+    worst, _ = largest_corrected_error(rows, within)
+    return [metric(f"corrected film, {label}: largest |error| (k >= 1)", worst, "1", "error")]
+
+
+def contacts_table(rows):
+    lines = []
     for r in sorted(rows, key=lambda r: (r["bearing"], r["race"], r["M"])):
-        n = r["numerical"]
-        f, c = _errors(r, "formula"), _errors(r, "corrected")
-        flag = "" if r["converged"] else " (not converged)"
-        lines.append(
-            f"| {r['bearing']} | {'inner' if r['race'] == 0 else 'outer'} | {r['T']:.0f} | {r['u']:.2f} | "
-            f"{r['Q']:.0f} | {r['M']:.4g}{' (clamped)' if r['M'] > cap else ''} | {r['L']:.3g} | "
-            f"{n[0] * 1e9:.1f} / {n[1] * 1e9:.1f}{flag} | {100 * f[0]:+.1f}, {100 * f[1]:+.1f} | "
-            f"{100 * c[0]:+.1f}, {100 * c[1]:+.1f} | {r['seconds']:.1f} |"
-        )
-    seconds = [r["seconds"] for r in rows]
-    lines += ["", f"Numerical solves: median {statistics.median(seconds):.1f} s, worst {max(seconds):.1f} s."]
-    write_report("film_correction.md", "\n".join(lines) + "\n")
+        n, f, c = r["numerical"], _errors(r, "formula"), _errors(r, "corrected")
+        lines.append([
+            r["bearing"], ("inner", "outer")[r["race"]], r["T"], r["u"], r["Q"],
+            f"{r['M']:.4g}" + (" (clamped)" if r["M"] > ft.M_CAP else ""), r["L"],
+            f"{n[0] * 1e9:.1f} / {n[1] * 1e9:.1f}" + ("" if r["converged"] else " (not converged)"),
+            f"{100 * f[0]:+.1f}, {100 * f[1]:+.1f}", f"{100 * c[0]:+.1f}, {100 * c[1]:+.1f}", r["seconds"],
+        ])  # fmt: skip
+    return dict(
+        columns=["bearing", "race", "T (K)", "u_e (m/s)", "Q (N)", "M", "L", "numerical h_c / h_min (nm)",
+                 "formula h_c, h_min (%)", "corrected h_c, h_min (%)", "solve (s)"],
+        formats=[None, None, "{:.0f}", "{:.2f}", "{:.0f}", None, "{:.3g}", None, None, None, "{:.1f}"],
+        rows=lines,
+    )  # fmt: skip
 
 
-def main():
+def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--points", type=int, default=16, help="random contacts per bearing within the table")
     parser.add_argument("--clamped", type=int, default=4, help="and beyond M_CAP (clamped)")
     parser.add_argument("--jobs", type=int, default=2)
-    parser.add_argument("--render-only", action="store_true", help="render the table from the saved data")
-    args = parser.parse_args()
-    if not args.render_only:
-        data = measure(args.points, args.clamped, args.jobs)
-        DATA.write_text(json.dumps(data, indent=1) + "\n")
-    render(json.loads(DATA.read_text()))
+    args = parser.parse_args(argv)
+    cli(measure, "film_correction", n_points=args.points, n_clamped=args.clamped, jobs=args.jobs)
 
 
 if __name__ == "__main__":
