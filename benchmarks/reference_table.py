@@ -3,22 +3,21 @@
 Each reference case of benchmarks/reference_cases (the literature and standard cases the validation tests assert
 on) is compared here once more, by the same function, and its cost per evaluation is measured: the median wall
 time of one evaluation of the fidelity at the case's point, repeated (at least 5 repeats and 0.5 s for a fast
-evaluation, 3 for one of a second or more), with the machine's load average at the time. Writes
-docs/reports/reference_table.json (what the report renders) and docs/reports/reference_table.md, and records each
-case's worst deviation (an error: a second run must repeat it) and its cost in docs/reports/metrics.json.
+evaluation, 3 for one of a second or more), with the machine's load average at the time. Each case's worst
+deviation is an error (a second run must repeat it), its cost a timing.
 
-    python -m benchmarks.reference_table
+Run: python -m benchmarks.reference_table: docs/reports/reference_table.md and .json (what the report renders).
 """
 
-import json
 import os
 import statistics
 import time
 
-from .common import REPORTS, machine, record, write_report
+from .common import REPORTS
 from .reference_cases import CASES, worst
+from .render import cli, metric, page
 
-TABLE = REPORTS / "reference_table.json"
+TABLE = REPORTS / "reference_table.json"  # the result as render.write writes it
 MIN_REPEATS, MIN_SECONDS, SLOW_REPEATS, SLOW = 5, 0.5, 3, 1.0  # -, s, -, s
 
 
@@ -26,66 +25,26 @@ def cost_per_evaluation(evaluate):
     """(median wall time s, repeats) of evaluate() after one warm-up call."""
     t0 = time.perf_counter()
     evaluate()  # warm-up: compilation, caches
-    if time.perf_counter() - t0 >= SLOW:
-        samples = []
-        for _ in range(SLOW_REPEATS):
-            t0 = time.perf_counter()
-            evaluate()
-            samples.append(time.perf_counter() - t0)
-        return statistics.median(samples), len(samples)
+    repeats, least = (SLOW_REPEATS, 0.0) if time.perf_counter() - t0 >= SLOW else (MIN_REPEATS, MIN_SECONDS)
     samples, start = [], time.perf_counter()
-    while len(samples) < MIN_REPEATS or time.perf_counter() - start < MIN_SECONDS:
+    while len(samples) < repeats or time.perf_counter() - start < least:
         t0 = time.perf_counter()
         evaluate()
         samples.append(time.perf_counter() - t0)
     return statistics.median(samples), len(samples)
 
 
-def measure(case):
+def measure_case(case):
     """The case's comparisons summarised by the worst one (closest to or beyond its tolerance), and its cost."""
+    print(f"-- {case.name}", flush=True)
     comparisons = case.compare()
     w = worst(comparisons)
     seconds, repeats = cost_per_evaluation(case.evaluation())
-    return dict(
-        name=case.name,
-        fidelity=case.fidelity,
-        reference=case.reference,
-        source=case.source,
-        points=len(comparisons),
-        within=int(sum(bool(c.within) for c in comparisons)),
-        worst=w.quantity,
-        deviation=float(w.deviation),
-        uncertainty=float(w.uncertainty),
-        tolerance=float(w.tolerance),
-        largest_deviation=float(max(abs(c.deviation) for c in comparisons)),
-        cost=seconds,
-        repeats=repeats,
-        load=os.getloadavg()[0],
-    )
-
-
-def render(rows):
-    """Markdown lines of the table (rows: measure() of each case)."""
-    lines = [
-        "| fidelity | reference | source | points | worst point | deviation | reference's uncertainty | tolerance "
-        "| within | cost per evaluation |",
-        "|---|---|---|---|---|---|---|---|---|---|",
-    ]
-    for r in rows:
-        lines.append(
-            f"| {r['fidelity']} | {r['reference']} | {r['source']} | {r['points']} | {r['worst']} | "
-            f"{r['deviation']:+.2e} | {r['uncertainty']:.2e} | {r['tolerance']:.2e} | {r['within']} of {r['points']} "
-            f"| {seconds(r['cost'])} (median of {r['repeats']}, load {r['load']:.1f}) |"
-        )
-    return lines + [
-        "",
-        "Deviation: (product - reference) / |reference| at the case's worst point, the one closest to (or beyond) "
-        "its tolerance; the reference's uncertainty and the tolerance are those of that point, relative. Cost: one "
-        "evaluation of the fidelity at the case's point (the DEM: the whole run the case compares, from a fresh "
-        "model). Cases and sources: `benchmarks/reference_cases/`; the validation tests assert on the same "
-        "functions.",
-        "",
-    ]
+    row = {key: getattr(case, key) for key in ("name", "fidelity", "reference", "source")}
+    row.update(points=len(comparisons), within=int(sum(bool(c.within) for c in comparisons)), worst=w.quantity)
+    row.update({key: float(getattr(w, key)) for key in ("deviation", "uncertainty", "tolerance")})
+    row.update(largest_deviation=float(max(abs(c.deviation) for c in comparisons)), cost=seconds, repeats=repeats)
+    return dict(row, load=os.getloadavg()[0])
 
 
 def seconds(value):
@@ -95,21 +54,44 @@ def seconds(value):
     return f"{value / 1e-9:.3g} ns"
 
 
-def main():
-    t0 = time.perf_counter()
-    rows = []
-    for case in CASES.values():
-        print(f"-- {case.name}", flush=True)
-        rows.append(measure(case))
-    TABLE.write_text(json.dumps(rows, indent=1) + "\n")
-    for r in rows:
-        record("reference_table", f"{r['name']}: largest relative deviation", r["largest_deviation"], "1", kind="error")
-        record("reference_table", f"{r['name']}: cost per evaluation", r["cost"], "s", kind="timing")
-    title = "# Error against independent references, per fidelity"
-    made = f"Generated by `python -m benchmarks.reference_table` on {machine()}; {time.perf_counter() - t0:.0f} s in total."
-    head = [title, "", made, ""]
-    write_report("reference_table.md", "\n".join(head + render(rows)) + "\n")
-    return rows
+def result(rows):
+    """The result dict (benchmarks/render.py) of the cases' rows (measure_case of each)."""
+    table = dict(
+        columns=["fidelity", "reference", "source", "points", "worst point", "deviation", "reference's uncertainty"]
+        + ["tolerance", "within", "cost per evaluation"],
+        formats=[None, None, None, "{:d}", None, "{:+.2e}", "{:.2e}", "{:.2e}", None, None],
+        rows=[
+            [r[k] for k in ("fidelity", "reference", "source", "points", "worst", "deviation", "uncertainty")]
+            + [r["tolerance"], f"{r['within']} of {r['points']}"]
+            + [f"{seconds(r['cost'])} (median of {r['repeats']}, load {r['load']:.1f})"]
+            for r in rows
+        ],
+    )
+    metrics = [metric(f"{r['name']}: largest relative deviation", r["largest_deviation"], "1", "error") for r in rows]
+    metrics += [metric(f"{r['name']}: cost per evaluation", r["cost"], "s", "timing") for r in rows]
+    note = (
+        "Deviation: (product - reference) / |reference| at the case's worst point, the one closest to (or beyond) "
+        "its tolerance; the reference's uncertainty and the tolerance are those of that point, relative. Cost: one "
+        "evaluation of the fidelity at the case's point (the DEM: the whole run the case compares, from a fresh "
+        "model). Cases and sources: `benchmarks/reference_cases/`; the validation tests assert on the same functions."
+    )
+    title, about = "Error against independent references, per fidelity", __doc__.split("\n", 2)[2].split("Run:")[0]
+    blocks = [dict(table=table), dict(text=note)]
+    return dict(name="reference_table", title=title, about=about, blocks=blocks, metrics=metrics, cases=rows)
+
+
+def measure(cases=None):
+    return result([measure_case(case) for case in (CASES if cases is None else cases).values()])
+
+
+def render(data):
+    """Markdown lines of the table and its note: data = a result (docs/reports/reference_table.json) or, as
+    earlier runs wrote that file, the list of the cases' rows."""
+    return page(data if isinstance(data, dict) else result(data))
+
+
+def main(argv=None):
+    cli(measure, "reference_table")
 
 
 if __name__ == "__main__":

@@ -46,7 +46,7 @@ def test_render_gives_one_row_per_case_with_its_measured_numbers(tmp_path):
         "| analytic | Q_max | Paper (2018) Table 1 | 7 | Q at 3 kN | -2.07e-04 | 3.43e-04 | 3.43e-04 | 7 of 7 | "
         "9.24 us (median of 40, load 2.0) |"
     )
-    json.dumps(row)  # what reference_table.main writes for the report
+    json.dumps(row)  # a case's row, as the result keeps it for the report
 
 
 def imported_case_modules():
@@ -68,9 +68,13 @@ def test_every_case_is_asserted_by_a_validation_test():
 
 
 def test_a_measured_case_is_plain_json_even_from_numpy_values():
-    """What reference_table.main writes for the report: numpy results (a solver's film, a model's output) are
-    converted, and the cost is a median over repeats."""
+    """What reference_table.measure returns for the report (docs/reports/reference_table.json): numpy results (a
+    solver's film, a model's output) are converted, the cost is a median over repeats, and the report renders the
+    result as written or as the list of rows an earlier run wrote."""
     comparisons = [Comparison("q", np.float64(1.001), 1.0, 0.001, np.float64(0.01))]
     case = ReferenceCase("n", "analytic", "r", "Paper (2018)", lambda: comparisons, lambda: lambda: None)
-    row = json.loads(json.dumps(reference_table.measure(case)))
+    result = json.loads(json.dumps(reference_table.measure({"n": case})))
+    row = result["cases"][0]
     assert row["within"] == 1 and row["deviation"] == pytest.approx(0.001) and row["repeats"] >= 5
+    assert [m["key"] for m in result["metrics"]] == ["n: largest relative deviation", "n: cost per evaluation"]
+    assert reference_table.render(result) == reference_table.render([row])
