@@ -60,9 +60,10 @@ KNOBS = (
     (
         "fidelity_ladder",
         "Fidelities: difference between analytic, quasi-static and DEM",
-        "the quasi-static solution with the ring's tilts held, the DEM's boundary condition (static quantities), "
-        "the DEM at dt/4 (dynamics); each row states its own ring's boundary condition, and the rows of Bearing.fmu's "
-        "free ring (five DOF) are a difference of boundary condition, not an error",
+        "the quasi-static solution with the boundary condition of the fidelity compared (static quantities): the "
+        "ring free in five DOF for the DEM (as Bearing.fmu's; under a fixed preload BearingFixed.fmu's), its tilts "
+        "held for the analytic fidelity; the DEM at dt/4 (dynamics). Each row states its ring's boundary condition; "
+        "the rows of the free ring against the tilt-held one are a difference of boundary condition, not an error",
         "fidelity_ladder.png",
     ),
     (
