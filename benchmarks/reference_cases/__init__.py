@@ -1,6 +1,6 @@
 """Reference cases: the product's outputs against independent references (literature, standards, published
 tables), one function per case returning what it measured. The validation tests (tests/validation) assert on
-these functions and `spindle report` renders them as its first table (benchmarks/reference_table.py): the
+these functions and `make report` renders them as its first table (benchmarks/reference_table.py): the
 report shows the very numbers the tests check and cannot drift from them.
 
 The cases live in benchmarks/, beside the report that renders them, not in the installed package: the report
