@@ -172,7 +172,7 @@ def reference_blocks(refs, rows):
         previous = da
     dT = ref_difference(refs[-2], refs[-1])[0]
     transient = (
-        "In the reference, T_oil_1 rises by {rise:.3g} K in the first {every:g} s and torque_1 falls to {fall:.2f} of "
+        "In the reference, T_oil_1 rises by {rise:.3g} K in the first {every:g} s, and torque_1 is then {fall:.2f} x "
         "its value at t = 0. Reference: `benchmarks.monolithic.reference(stop={stop:g}, h={h:g}, every={rec:g})`, "
         "checked by halving h against the smallest co-simulation temperature error ({smallest:.2e} K):"
     )

@@ -137,7 +137,7 @@ def figure(rows):
             sel = [r for r in rows if r[0] == algorithm]
             series.append(dict(x=[r[3] for r in sel], y=[max(r[column], 1e-16) for r in sel], style=style,
                                label=algorithm, annotate=[f"{r[1]:g} ms" for r in sel]))  # fmt: skip
-        panels.append(dict(xlabel="CPU time of the run (s)", ylabel=label, xscale="log", yscale="log", series=series))
+        panels.append(dict(xlabel="CPU time of the run (s)", ylabel=label, yscale="log", series=series))
     title = f"startup_dem.toml, first {WINDOW:g} s: error vs cost for H in {[h * 1e3 for h in STEPS]} ms"
     return dict(file="dem_closed_loop_steps.png", caption="error against CPU time", title=title, panels=panels,
                 columns=3, size=(13, 4))  # fmt: skip
