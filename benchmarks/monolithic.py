@@ -12,7 +12,7 @@ This is Heun's method on the coupling with the network integrated exactly; its e
 of their own beyond the solver's warm start), so nothing else needs integrating.
 
 Same physics and parameters as runs/closed_loop_spring.toml: Bearing.fmu's scene, B7214C,
-iso_vg68_mineral, outer race control, F_z = 800 N each, 10 000 rpm, network b7214c_x_pair.
+iso_vg68_mineral, oil-air lubrication, outer race control, F_z = 800 N each, 10 000 rpm, network b7214c_x_pair.
 """
 
 import math
@@ -37,10 +37,13 @@ TRACKED = tuple(f"T_{node}_{k}" for k in (1, 2) for node in ("inner_ring", "oute
 class Monolithic:
     """The two bearings and the spindle network advanced together (spring preload, constant speed)."""
 
-    def __init__(self, spindle="b7214c_x_pair", race_control="outer", omega=OMEGA, F_z=F_PRELOAD):
+    def __init__(
+        self, spindle="b7214c_x_pair", race_control="outer", omega=OMEGA, F_z=F_PRELOAD, lubrication="oil_air"
+    ):
         scene = Scene.from_toml(SCENES_DIR / "quasi_static.toml")
         self.bearings = [
-            QuasiStaticModel("B7214C", "iso_vg68_mineral", scene, race_control=race_control) for _ in range(2)
+            QuasiStaticModel("B7214C", "iso_vg68_mineral", scene, race_control=race_control, lubrication=lubrication)
+            for _ in range(2)
         ]
         self.spindle = SpindleThermalModel(spindle)
         self.omega, self.F_z = omega, F_z
