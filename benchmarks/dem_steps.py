@@ -80,12 +80,9 @@ def monitor_cause(exc):
 
 
 def refresh_steps(label, dt):
-    """The refresh interval in steps of a REFRESHES label at step dt (s)."""
-    if label == "every step":
-        return 1
-    if label == "every 100 steps":
-        return 100
-    return max(1, math.floor(REFRESH_INTERVAL / dt * (1.0 + 1e-9)))
+    """The refresh interval in steps of a REFRESHES label at step dt (s); every 40 us by DemModel's own rule."""
+    fixed = {"every step": 1, "every 100 steps": 100}
+    return fixed.get(label) or max(1, math.floor(REFRESH_INTERVAL / dt * (1.0 + 1e-9)))
 
 
 def steady_run(model, start, point, dt, refresh):

@@ -50,8 +50,7 @@ WORKER = Path(__file__).resolve().parent / "dem_timing_worker.py"
 def per_simulated_ms(model, repeats=REPEATS, dt=None):
     """(CPU, wall) medians (ms) to advance 1 ms of simulated time in one call, default refresh, at dt (s;
     None = the default time step)."""
-    model.refresh_fixed = None
-    model.dt_fixed = dt
+    model.refresh_fixed, model.dt_fixed = None, dt
     cpu, wall = [], []
     for _ in range(repeats):
         c0, t0 = time.thread_time(), time.perf_counter()
@@ -68,14 +67,8 @@ class TreeWorker:
     def __init__(self, tree):
         env = dict(os.environ, PYTHONPATH=str(tree))
         # -c with the tree as the working directory: sys.path[0] is the tree, nothing of this one
-        self.process = subprocess.Popen(
-            [sys.executable, "-c", WORKER.read_text()],
-            cwd=tree,
-            env=env,
-            stdin=subprocess.PIPE,
-            stdout=subprocess.PIPE,
-            text=True,
-        )
+        self.process = subprocess.Popen([sys.executable, "-c", WORKER.read_text()], cwd=tree, env=env,
+                                        stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)  # fmt: skip
 
     def ready(self):
         """The worker's default time step (s), once its model is in steady rolling."""
@@ -100,11 +93,8 @@ class TreeWorker:
 def materialise(rev, into):
     """Extract the DEM's packages (bearing_fmu, bearing_fmu_common) of git revision rev of this repository into
     the directory into; returns it."""
-    archive = subprocess.run(
-        ["git", "-C", str(ROOT), "archive", "--format=tar", rev, "bearing_fmu", "bearing_fmu_common"],
-        capture_output=True,
-        check=True,
-    ).stdout
+    command = ["git", "-C", str(ROOT), "archive", "--format=tar", rev, "bearing_fmu", "bearing_fmu_common"]
+    archive = subprocess.run(command, capture_output=True, check=True).stdout
     with tarfile.open(fileobj=io.BytesIO(archive)) as tar:
         if hasattr(tarfile, "data_filter"):
             tar.extractall(into, filter="data")
