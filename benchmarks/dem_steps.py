@@ -15,12 +15,10 @@ against the fine-step reference: max |x - x_ref| over the samples / max |x_ref|;
 driven in time through the same inputs (what a model without dynamics answers). Cost: CPU time of the thread per
 simulated ms (time.thread_time; the machine is shared, its load average is recorded).
 
-measure() returns everything as a dict; render() writes docs/reports/dem_steps.md and .png from it.
-Run: python -m benchmarks.dem_steps
+Run: python -m benchmarks.dem_steps -> docs/reports/dem_steps.md and .png
 """
 
 import math
-import os
 import re
 import time
 
@@ -30,7 +28,7 @@ from bearing_fmu.models.dem import REFRESH_INTERVAL, SAFETY, DemModel, DemUnstab
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
 
-from .common import REPORTS, forget, machine, record, write_report
+from .render import cli, metric
 
 POINTS = {
     "6208, 3 kN, 500 rad/s": dict(
@@ -82,12 +80,9 @@ def monitor_cause(exc):
 
 
 def refresh_steps(label, dt):
-    """The refresh interval in steps of a REFRESHES label at step dt (s)."""
-    if label == "every step":
-        return 1
-    if label == "every 100 steps":
-        return 100
-    return max(1, math.floor(REFRESH_INTERVAL / dt * (1.0 + 1e-9)))
+    """The refresh interval in steps of a REFRESHES label at step dt (s); every 40 us by DemModel's own rule."""
+    fixed = {"every step": 1, "every 100 steps": 100}
+    return fixed.get(label) or max(1, math.floor(REFRESH_INTERVAL / dt * (1.0 + 1e-9)))
 
 
 def steady_run(model, start, point, dt, refresh):
@@ -96,11 +91,9 @@ def steady_run(model, start, point, dt, refresh):
     model.set_state(start)
     model.dt_fixed, model.refresh_fixed = dt, refresh
     held = dict(point["loads"], T_oil=point["T_oil"], omega=point["omega"])
-    t0, n = model.time, round(RUN_TIME / 1e-3)
-    samples = []
-    c0 = time.thread_time()
+    samples, t0, c0 = [], model.time, time.thread_time()
     try:
-        for k in range(1, n + 1):
+        for k in range(1, round(RUN_TIME / 1e-3) + 1):
             samples.append(model.advance(t0 + k * 1e-3, **held))
     except DemUnstableError as exc:
         return None, monitor_cause(exc)
@@ -109,9 +102,13 @@ def steady_run(model, start, point, dt, refresh):
     return {q: float(np.mean([s[q] for s in last])) for q in STEADY}, cpu
 
 
+def stopped(cause, cells):
+    return [f"stopped by the monitor: {cause}"] + [None] * cells
+
+
 def steady_point(name, point):
-    """The step study of one operating point: its automatic step and stiffness limit, the reference and every
-    (factor, refresh) run."""
+    """The step study of one operating point: its automatic step and stiffness limit, the reference's cost and
+    a table row per (factor, refresh): factor, dt (us), refresh, CPU, largest error, the error of each of STEADY."""
     model = warm(point)
     start = model.get_state()
     automatic = model.automatic_time_step(omega=point["omega"], **point["loads"])
@@ -122,11 +119,12 @@ def steady_point(name, point):
         for label in REFRESHES:
             dt = factor * automatic
             means, cpu = steady_run(model, start, point, dt, refresh_steps(label, dt))
-            errors = None if means is None else {q: abs(means[q] / reference[q] - 1.0) for q in STEADY}
-            rows.append(dict(factor=factor, refresh=label, dt=dt, cpu=cpu if means else None, errors=errors,
-                             stopped=None if means else cpu))  # fmt: skip
-    return dict(name=name, automatic=automatic, stiffness_limit=stiffness, reference=reference, reference_cpu=ref_cpu,
-                rows=rows)  # fmt: skip
+            if means is None:
+                rows.append([factor, dt * 1e6, label, *stopped(cpu, len(STEADY) + 1)])
+                continue
+            errors = [abs(means[q] / reference[q] - 1.0) for q in STEADY]
+            rows.append([factor, dt * 1e6, label, cpu, max(errors), *errors])
+    return dict(name=name, automatic=automatic, stiffness_limit=stiffness, reference_cpu=ref_cpu, rows=rows)
 
 
 def transient_inputs(kind, t):
@@ -141,235 +139,193 @@ def transient_inputs(kind, t):
 TRANSIENTS = {"start-up from rest": 15e-3, "load step 3 -> 6 kN": 5e-3, "speed step 500 -> 1000 rad/s in 1 ms": 5e-3}
 
 
+def sampled(kind, evaluate):
+    """evaluate(t, omega, F_y) at each sample time t (s from the start) of the transient: arrays of TRAJECTORY."""
+    rows = []
+    for k in range(1, round(TRANSIENTS[kind] / SAMPLE) + 1):
+        rows.append(evaluate(k * SAMPLE, *transient_inputs(kind, k * SAMPLE)))
+    return {q: np.array([r[q] for r in rows]) for q in TRAJECTORY}
+
+
 def trajectory(kind, start, settings):
     """Samples of TRAJECTORY every SAMPLE over the transient from the state `start` (None: from rest) with the
     DemModel settings; returns (dict of arrays, CPU ms per simulated ms) or (None, cause) if the monitor stops."""
     model = DemModel("6208", "guessasma_oil", **settings)
     if start is not None:
         model.set_state(start)
-    t0, duration = model.time, TRANSIENTS[kind]
-    n = round(duration / SAMPLE)
-    rows = []
-    c0 = time.thread_time()
+    t0, c0 = model.time, time.thread_time()
     try:
-        for k in range(1, n + 1):
-            omega, F_y = transient_inputs(kind, k * SAMPLE)
-            rows.append(model.advance(t0 + k * SAMPLE, omega=omega, F_y=F_y))
+        x = sampled(kind, lambda t, omega, F_y: model.advance(t0 + t, omega=omega, F_y=F_y))
     except DemUnstableError as exc:
         return None, monitor_cause(exc)
-    cpu = (time.thread_time() - c0) / (duration * 1e3) * 1e3
-    return {q: np.array([r[q] for r in rows]) for q in TRAJECTORY}, cpu
+    return x, (time.thread_time() - c0) / (TRANSIENTS[kind] * 1e3) * 1e3
 
 
 def quasi_static_trajectory(kind):
     """The quasi-static fidelity (torque on) at the transient's inputs at every sample time."""
-    model = QuasiStaticModel(
-        "6208", "guessasma_oil", scene=Scene(name="qs", fidelity="quasi_static", centrifugal=True, gyroscopic=True,
-                                             torque=True, stiffness=False),
-    )  # fmt: skip
-    n = round(TRANSIENTS[kind] / SAMPLE)
-    rows = []
-    for k in range(1, n + 1):
-        omega, F_y = transient_inputs(kind, k * SAMPLE)
-        rows.append(model.evaluate(omega=omega, F_y=F_y))
-    return {q: np.array([r[q] for r in rows]) for q in TRAJECTORY}
+    scene = Scene(name="qs", fidelity="quasi_static", centrifugal=True, gyroscopic=True, torque=True, stiffness=False)
+    model = QuasiStaticModel("6208", "guessasma_oil", scene=scene)
+    return sampled(kind, lambda t, omega, F_y: model.evaluate(omega=omega, F_y=F_y))
 
 
 def trajectory_errors(x, ref):
     """Per quantity (largest, mean): max |x - x_ref| / max |x_ref| over the samples, and |mean x - mean x_ref| /
     max |x_ref| (for the torque: the error of the energy dissipated over the transient); None for a reference that
     stays 0."""
-    errors = {}
-    for q in TRAJECTORY:
-        scale = float(np.max(np.abs(ref[q])))
-        if scale == 0.0:
-            errors[q] = None
-            continue
-        errors[q] = (float(np.max(np.abs(x[q] - ref[q]))) / scale, abs(float(np.mean(x[q]) - np.mean(ref[q]))) / scale)
-    return errors
+    scales = {q: float(np.max(np.abs(ref[q]))) for q in TRAJECTORY}
+    return {
+        q: (float(np.max(np.abs(x[q] - ref[q]))) / scale, abs(float(np.mean(x[q]) - np.mean(ref[q]))) / scale)
+        if scale > 0.0
+        else None
+        for q, scale in scales.items()
+    }
+
+
+def pair(errors):
+    return None if errors is None else f"{errors[0]:.1e} / {errors[1]:.1e}"
 
 
 def transient(kind, steady_state):
-    """One transient: the reference, every TRANSIENT_SETTINGS run and the quasi-static fidelity against it."""
+    """One transient: the reference's cost, a table row per TRANSIENT_SETTINGS run and one of the quasi-static
+    fidelity (setting, CPU, the errors of each of TRAJECTORY), the default's and the quasi-static fidelity's
+    torque errors, and the torque trajectories of the reference and of the quasi-static fidelity."""
     start = None if kind == "start-up from rest" else steady_state
     reference, ref_cpu = trajectory(kind, start, TRANSIENT_REFERENCE)
-    rows = []
+    rows, torque = [], {}
     for label, settings in TRANSIENT_SETTINGS:
         x, cpu = trajectory(kind, start, settings)
-        rows.append(dict(setting=label, cpu=cpu if x else None, errors=trajectory_errors(x, reference) if x else None,
-                         stopped=None if x else cpu))  # fmt: skip
+        if x is None:
+            rows.append([label, *stopped(cpu, len(TRAJECTORY))])
+            continue
+        errors = trajectory_errors(x, reference)
+        rows.append([label, cpu, *map(pair, errors.values())])
+        torque[label] = errors["torque"]
     qs = quasi_static_trajectory(kind)
-    return dict(kind=kind, reference_cpu=ref_cpu, rows=rows, quasi_static=trajectory_errors(qs, reference),
-                reference={q: reference[q].tolist() for q in TRAJECTORY}, qs={q: qs[q].tolist() for q in TRAJECTORY})  # fmt: skip
+    qs_errors = trajectory_errors(qs, reference)
+    rows.append(["quasi-static fidelity driven in time", None, *map(pair, qs_errors.values())])
+    default = torque[TRANSIENT_SETTINGS[0][0]]
+    return dict(kind=kind, reference_cpu=ref_cpu, rows=rows, default=default, quasi_static=qs_errors["torque"],
+                reference=reference["torque"].tolist(), qs=qs["torque"].tolist())  # fmt: skip
 
 
 def measure():
-    """Everything the report shows, as plain data."""
-    load_before = os.getloadavg()[0]
     points = [steady_point(name, point) for name, point in POINTS.items()]
     steady_6208 = warm(POINTS["6208, 3 kN, 500 rad/s"]).get_state()
     transients = [transient(kind, steady_6208) for kind in TRANSIENTS]
-    return dict(machine=machine(), load=(load_before, os.getloadavg()[0]), default_safety=SAFETY, points=points,
-                transients=transients)  # fmt: skip
-
-
-def _fmt(value):
-    return "" if value is None else f"{value:.1e}"
-
-
-def _pair(errors):
-    return "" if errors is None else f"{errors[0]:.1e} / {errors[1]:.1e}"
-
-
-def _point_table(p):
-    lines = [
-        f"### {p['name']}",
-        "",
-        f"Automatic step {p['automatic'] * 1e6:.3g} us (stability limit of the stiffest pair {p['stiffness_limit'] * 1e6:.3g}"
-        f" us); reference {REF_FACTOR * p['automatic'] * 1e6:.3g} us with tribology every step ({p['reference_cpu']:.3g}"
-        " ms CPU per simulated ms).",
-        "",
-        "| dt (x automatic) | dt (us) | refresh | CPU (ms/ms) | largest error | " + " | ".join(STEADY) + " |",
-        "|---|---|---|---|---|" + "---|" * len(STEADY),
+    intro = (
+        "CPU = the thread's CPU time per simulated ms. Steps are fractions of each point's own automatic step (safety "
+        "{safety:g} x the stability limit, or less where the film's damping asks); errors are relative to a reference "
+        "at {ref:g} x that step with tribology every step. Step factors (FACTORS): {factors}; means over the last "
+        "{average:g} ms of {run:g} ms."
+    )
+    values = dict(safety=SAFETY, ref=REF_FACTOR, factors=", ".join(f"{f:g}" for f in FACTORS),
+                  average=AVERAGE_OVER * 1e3, run=RUN_TIME * 1e3)  # fmt: skip
+    blocks = [
+        dict(text=intro, values=values),
+        dict(text="## Larger steps than the automatic one"),
+        dict(table=summary_table(points)),
+        dict(text="## Steady operating points"),
     ]
-    for r in p["rows"]:
-        head = f"| {r['factor']:g} | {r['dt'] * 1e6:.3g} | {r['refresh']} |"
-        if r["errors"] is None:
-            lines.append(head + f" stopped by the monitor: {r['stopped']} |" + " |" * (len(STEADY) + 1))
-            continue
-        errors = r["errors"]
-        cells = " | ".join(_fmt(errors[q]) for q in STEADY)
-        lines.append(head + f" {r['cpu']:.3g} | {_fmt(max(errors.values()))} | {cells} |")
-    return lines + [""]
+    for p in points:
+        blocks += point_blocks(p)
+    blocks.append(dict(text="## Transients (6208, guessasma_oil, 313 K)"))
+    for t in transients:
+        blocks += transient_blocks(t)
+    blocks.append(dict(figure=figure(points, transients[0])))
+    return dict(
+        name="dem_steps",
+        title="DEM time step and tribology refresh: three operating points and three transients",
+        about=__doc__.split("\n", 2)[2].split("Run:")[0],
+        blocks=blocks,
+        metrics=headlines(points, transients),
+    )
 
 
-def _transient_table(t):
-    lines = [
-        f"### {t['kind']}",
-        "",
-        f"Reference: dt = {TRANSIENT_REFERENCE['dt'] * 1e6:g} us, tribology every step ({t['reference_cpu']:.3g} ms CPU "
-        f"per simulated ms); samples every {SAMPLE * 1e3:g} ms (outputs averaged over each). Errors: largest over the "
-        "samples of |x - x_ref| / max |x_ref|, then (after the slash) the error of the mean over the transient, "
-        "|mean x - mean x_ref| / max |x_ref| (for the torque, of the energy dissipated).",
-        "",
-        "| setting | CPU (ms/ms) | " + " | ".join(TRAJECTORY) + " |",
-        "|---|---|" + "---|" * len(TRAJECTORY),
-    ]
-    for r in t["rows"]:
-        if r["errors"] is None:
-            lines.append(f"| {r['setting']} | stopped by the monitor: {r['stopped']} |" + " |" * len(TRAJECTORY))
-            continue
-        lines.append(
-            f"| {r['setting']} | {r['cpu']:.3g} | " + " | ".join(_pair(r["errors"][q]) for q in TRAJECTORY) + " |"
-        )
-    qs = t["quasi_static"]
-    lines.append("| quasi-static fidelity driven in time | | " + " | ".join(_pair(qs[q]) for q in TRAJECTORY) + " |")
-    return lines + [""]
-
-
-def stable_factors(data):
+def summary_table(points):
     """Per step factor: stable at every point with every refresh, and the largest steady error there."""
-    verdict = {}
+    rows = []
     for factor in FACTORS:
-        rows = [r for p in data["points"] for r in p["rows"] if r["factor"] == factor]
-        stable = all(r["errors"] is not None for r in rows)
-        worst = max((max(r["errors"].values()) for r in rows if r["errors"]), default=None)
-        verdict[factor] = (stable, worst)
-    return verdict
+        runs = [r for p in points for r in p["rows"] if r[0] == factor]
+        worst = max((r[4] for r in runs if r[4] is not None), default=None)
+        stable = "yes" if all(r[4] is not None for r in runs) else "no"
+        rows.append([f"{factor:g}" + (" (the default)" if factor == 1.0 else ""), stable, worst])
+    columns = ["dt (x automatic)", "stable at the three points, every refresh", "largest steady error"]
+    return dict(columns=columns, formats=[None, None, "{:.1e}"], rows=rows)
 
 
-def _summary(data):
-    verdict = stable_factors(data)
-    lines = ["| dt (x automatic) | stable at the three points, every refresh | largest steady error |", "|---|---|---|"]
-    for factor, (stable, worst) in verdict.items():
-        mark = " (the default)" if factor == 1.0 else ""
-        lines.append(f"| {factor:g}{mark} | {'yes' if stable else 'no'} | {_fmt(worst)} |")
-    return lines + [""]
+def section(heading, text, values, columns, formats, rows):
+    table = dict(columns=columns, formats=formats, rows=rows)
+    return [dict(text="### {heading}", values=dict(heading=heading)), dict(text=text, values=values), dict(table=table)]
 
 
-def render(data):
-    """docs/reports/dem_steps.md and .png from measure()'s dict."""
-    lines = [
-        "# DEM time step and tribology refresh: three operating points and three transients",
-        "",
-        f"Generated by `python -m benchmarks.dem_steps` on {data['machine']} (load average {data['load'][0]:.1f} "
-        f"before, {data['load'][1]:.1f} after; CPU = the thread's CPU time per simulated ms). Steps are fractions of "
-        f"each point's own automatic step (safety {data['default_safety']:g} x the stability limit, or less where the"
-        f" film's damping asks); errors are relative to a reference at {REF_FACTOR:g} x that step with tribology every "
-        "step (benchmarks/dem_steps.py says how each is measured).",
-        "",
-        "## Larger steps than the automatic one",
-        "",
-        *_summary(data),
-        "## Steady operating points",
-        "",
-    ]
-    for p in data["points"]:
-        lines += _point_table(p)
-    lines += ["## Transients (6208, guessasma_oil, 313 K)", ""]
-    for t in data["transients"]:
-        lines += _transient_table(t)
-    write_report("dem_steps.md", "\n".join(lines) + "\n")
-    _figure(data).savefig(REPORTS / "dem_steps.png", dpi=110)
+def point_blocks(p):
+    text = (
+        "Automatic step {automatic:.3g} us (stability limit of the stiffest pair {limit:.3g} us); reference "
+        "{reference:.3g} us with tribology every step ({cpu:.3g} ms CPU per simulated ms)."
+    )
+    values = dict(automatic=p["automatic"] * 1e6, limit=p["stiffness_limit"] * 1e6,
+                  reference=REF_FACTOR * p["automatic"] * 1e6, cpu=p["reference_cpu"])  # fmt: skip
+    columns = ["dt (x automatic)", "dt (us)", "refresh", "CPU (ms/ms)", "largest error", *STEADY]
+    formats = ["{:g}", "{:.3g}", None, "{:.3g}"] + ["{:.1e}"] * (len(STEADY) + 1)
+    return section(p["name"], text, values, columns, formats, p["rows"])
 
 
-def _figure(data):
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, axes = plt.subplots(1, len(data["points"]) + 1, figsize=(5 * (len(data["points"]) + 1), 4.2))
-    markers = dict(zip(REFRESHES, ("o", "s", "^")))
-    for ax, p in zip(axes, data["points"]):
-        for label in REFRESHES:
-            rows = [r for r in p["rows"] if r["refresh"] == label and r["errors"]]
-            ax.loglog([r["cpu"] for r in rows], [max(r["errors"].values()) for r in rows], markers[label] + "-",
-                      label=f"refresh {label}")  # fmt: skip
-            for r in rows:
-                ax.annotate(f"{r['factor']:g}", (r["cpu"], max(r["errors"].values())), fontsize=7)
-        ax.set_title(p["name"], fontsize=9)
-        ax.set_xlabel("CPU per simulated ms (ms)")
-        ax.set_ylabel("largest relative error of the steady outputs")
-        ax.legend(fontsize=7)
-    ax = axes[-1]
-    start = data["transients"][0]
-    t = np.arange(1, len(start["reference"]["torque"]) + 1) * SAMPLE * 1e3
-    ax.plot(t, start["reference"]["torque"], "k-", label="DEM, fine-step reference")
-    ax.plot(t, start["qs"]["torque"], "r--", label="quasi-static driven in time")
-    ax.set_title("start-up from rest (6208): torque", fontsize=9)
-    ax.set_xlabel("time (ms)")
-    ax.set_ylabel("torque (N.m)")
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    return fig
+def transient_blocks(t):
+    text = (
+        "Reference: dt = {dt:g} us, tribology every step ({cpu:.3g} ms CPU per simulated ms); samples every "
+        "{sample:g} ms (outputs averaged over each). Errors: largest over the samples of |x - x_ref| / max |x_ref|, "
+        "then (after the slash) the error of the mean over the transient, |mean x - mean x_ref| / max |x_ref| (for "
+        "the torque, of the energy dissipated)."
+    )
+    values = dict(dt=TRANSIENT_REFERENCE["dt"] * 1e6, cpu=t["reference_cpu"], sample=SAMPLE * 1e3)
+    formats = [None, "{:.3g}"] + [None] * len(TRAJECTORY)
+    return section(t["kind"], text, values, ["setting", "CPU (ms/ms)", *TRAJECTORY], formats, t["rows"])
 
 
-def record_headlines(data):
-    """The report's numbers (docs/report.md) in docs/reports/metrics.json: per operating point the default's largest
-    steady error and cost and the largest stable step; per transient the default's error of the dissipated energy
-    and of the worst sample, and the quasi-static fidelity's difference from the DEM reference."""
-    forget("dem_steps")
-    for p in data["points"]:
-        default = next(r for r in p["rows"] if r["factor"] == 1.0 and r["refresh"] == "every 40 us")
-        record("dem_steps", f"{p['name']}, default: largest steady error", max(default["errors"].values()), "1",
-               kind="error")  # fmt: skip
-        record("dem_steps", f"{p['name']}, default: CPU ms per simulated ms", default["cpu"], "1", kind="timing")
-        stable = [r["factor"] for r in p["rows"] if r["errors"] is not None]
-        record("dem_steps", f"{p['name']}: largest step run without a monitor stop (x automatic)", max(stable), "1",
-               kind="count")  # fmt: skip
-    for t in data["transients"]:
-        default = t["rows"][0]["errors"]["torque"]
-        record("dem_steps", f"{t['kind']}, default: energy (mean torque) error", default[1], "1", kind="error")
-        record("dem_steps", f"{t['kind']}, default: torque error at the worst sample", default[0], "1", kind="error")
-        record("dem_steps", f"{t['kind']}, quasi-static driven in time: torque at the worst sample",
-               t["quasi_static"]["torque"][0], "1", kind="difference")  # fmt: skip
+def figure(points, start):
+    panels = []
+    for p in points:
+        series = []
+        for label, style in zip(REFRESHES, ("o-", "s-", "^-")):
+            rows = [r for r in p["rows"] if r[2] == label and r[4] is not None]
+            series.append(dict(x=[r[3] for r in rows], y=[r[4] for r in rows], style=style, label=f"refresh {label}",
+                               annotate=[f"{r[0]:g}" for r in rows]))  # fmt: skip
+        panels.append(dict(title=p["name"], xlabel="CPU per simulated ms (ms)", xscale="log", yscale="log",
+                           ylabel="largest relative error of the steady outputs", series=series))  # fmt: skip
+    t = [(k + 1) * SAMPLE * 1e3 for k in range(len(start["reference"]))]
+    series = [dict(x=t, y=start["reference"], style="k-", label="DEM, fine-step reference"),
+              dict(x=t, y=start["qs"], style="r--", label="quasi-static driven in time")]  # fmt: skip
+    panels.append(dict(title="start-up from rest (6208): torque", xlabel="time (ms)", ylabel="torque (N.m)",
+                       series=series))  # fmt: skip
+    return dict(file="dem_steps.png", caption="error against cost; start-up torque", panels=panels,
+                columns=len(panels), size=(5.0 * len(panels), 4.2))  # fmt: skip
 
 
-def main():
-    data = measure()
-    render(data)
-    record_headlines(data)
+def headlines(points, transients):
+    """Per operating point the default's largest steady error and cost and the largest stable step; per transient
+    the default's error of the dissipated energy and of the worst sample, and the quasi-static fidelity's
+    difference from the DEM reference."""
+    metrics = []
+    for p in points:
+        default = next(r for r in p["rows"] if r[0] == 1.0 and r[2] == "every 40 us")
+        stable = max(r[0] for r in p["rows"] if r[4] is not None)
+        metrics += [
+            metric(f"{p['name']}, default: largest steady error", default[4], "1", "error"),
+            metric(f"{p['name']}, default: CPU ms per simulated ms", default[3], "1", "timing"),
+            metric(f"{p['name']}: largest step run without a monitor stop (x automatic)", stable, "1", "count"),
+        ]
+    for t in transients:
+        qs = t["quasi_static"]
+        metrics += [
+            metric(f"{t['kind']}, default: energy (mean torque) error", t["default"][1], "1", "error"),
+            metric(f"{t['kind']}, default: torque error at the worst sample", t["default"][0], "1", "error"),
+            metric(f"{t['kind']}, quasi-static driven in time: torque at the worst sample", qs[0], "1", "difference"),
+        ]
+    return metrics
+
+
+def main(argv=None):
+    cli(measure, "dem_steps")
 
 
 if __name__ == "__main__":

@@ -8,7 +8,7 @@ REPEATS calls of advance() of STEPS steps each: one Python call per interval, so
 (input checks, outputs) is spread over STEPS steps. The machine is shared by several users: the CPU
 time of the benchmark's thread (time.thread_time) measures the kernel's own cost; the wall time, which
 includes the waits for a core, is reported beside it with the load average.
-Run: python -m benchmarks.dem_timing -> docs/reports/dem_timing.md
+Run: python -m benchmarks.dem_timing [--base REV | --base-tree DIR] -> docs/reports/dem_timing.md
 """
 
 import argparse
@@ -34,12 +34,11 @@ from bearing_fmu.kernels.ball_dynamics.tribology import TC_SIZE, race_circle, re
 from bearing_fmu.kernels.lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
 from bearing_fmu.models.dem import REFRESH_INTERVAL, DemModel
 
-from .common import machine, record, write_report
+from .dem_timing_worker import F_R, OMEGA, steady_model
+from .render import cli, metric
 
 STEPS = 2000
 REPEATS = 41
-OMEGA = 500.0
-F_R = 3000.0
 NEVER = 10**9  # a refresh interval longer than any run: contact law only
 # the reference kernel timed beside this tree's: the DEM before the EHL traction curve, the rigid cage, the ring's
 # tilts and its support (the state whose cost the product's targets were first measured on)
@@ -48,33 +47,10 @@ ROOT = Path(__file__).resolve().parent.parent
 WORKER = Path(__file__).resolve().parent / "dem_timing_worker.py"
 
 
-def steady_model(dt=None):
-    model = DemModel("6208", "guessasma_oil", dt=dt)
-    model.advance(2e-3, omega=0.0, F_y=F_R)
-    for k in range(1, 21):
-        model.advance(2e-3 + 5e-3 * k / 20, omega=OMEGA * k / 20, F_y=F_R)
-    model.advance(0.03, omega=OMEGA, F_y=F_R)
-    return model
-
-
-def per_step(model, refresh, steps=STEPS, repeats=REPEATS):
-    """(CPU median, CPU minimum, wall median) per step (us) of advance() over `steps` steps at the model's dt."""
-    model.refresh_fixed = refresh
-    dt = model.dt
-    cpu, wall = [], []
-    for _ in range(repeats):
-        c0, t0 = time.thread_time(), time.perf_counter()
-        model.advance(model.time + steps * dt, omega=OMEGA, F_y=F_R)
-        cpu.append((time.thread_time() - c0) / steps * 1e6)
-        wall.append((time.perf_counter() - t0) / steps * 1e6)
-    return statistics.median(cpu), min(cpu), statistics.median(wall)
-
-
 def per_simulated_ms(model, repeats=REPEATS, dt=None):
     """(CPU, wall) medians (ms) to advance 1 ms of simulated time in one call, default refresh, at dt (s;
     None = the default time step)."""
-    model.refresh_fixed = None
-    model.dt_fixed = dt
+    model.refresh_fixed, model.dt_fixed = None, dt
     cpu, wall = [], []
     for _ in range(repeats):
         c0, t0 = time.thread_time(), time.perf_counter()
@@ -91,14 +67,8 @@ class TreeWorker:
     def __init__(self, tree):
         env = dict(os.environ, PYTHONPATH=str(tree))
         # -c with the tree as the working directory: sys.path[0] is the tree, nothing of this one
-        self.process = subprocess.Popen(
-            [sys.executable, "-c", WORKER.read_text()],
-            cwd=tree,
-            env=env,
-            stdin=subprocess.PIPE,
-            stdout=subprocess.PIPE,
-            text=True,
-        )
+        self.process = subprocess.Popen([sys.executable, "-c", WORKER.read_text()], cwd=tree, env=env,
+                                        stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)  # fmt: skip
 
     def ready(self):
         """The worker's default time step (s), once its model is in steady rolling."""
@@ -123,11 +93,8 @@ class TreeWorker:
 def materialise(rev, into):
     """Extract the DEM's packages (bearing_fmu, bearing_fmu_common) of git revision rev of this repository into
     the directory into; returns it."""
-    archive = subprocess.run(
-        ["git", "-C", str(ROOT), "archive", "--format=tar", rev, "bearing_fmu", "bearing_fmu_common"],
-        capture_output=True,
-        check=True,
-    ).stdout
+    command = ["git", "-C", str(ROOT), "archive", "--format=tar", rev, "bearing_fmu", "bearing_fmu_common"]
+    archive = subprocess.run(command, capture_output=True, check=True).stdout
     with tarfile.open(fileobj=io.BytesIO(archive)) as tar:
         if hasattr(tarfile, "data_filter"):
             tar.extractall(into, filter="data")
@@ -171,61 +138,24 @@ def _race_contacts(n, balls, ring, spring, trib, par, work, acc, dt):
     """n passes of the 18 ball-race contact laws (contacts.ball_race_contact) on one state, results summed
     (the state is not written: every pass sees the same contacts)."""
     total = 0.0
-    steps = (
-        0.5 * par[s.P_D],
-        par[s.P_ALPHA_E],
-        par[s.P_KT_RATIO],
-        4.0 * dt / par[s.P_I_BALL],
-        2.0 * par[s.P_V_REG] / par[s.P_D],
-        dt,
-    )
+    steps = (0.5 * par[s.P_D], par[s.P_ALPHA_E], par[s.P_KT_RATIO], 4.0 * dt / par[s.P_I_BALL],
+             2.0 * par[s.P_V_REG] / par[s.P_D], dt)  # fmt: skip
     kappa = par[s.P_FILM_RATE] * dt / par[s.P_M_BALL]
     for _ in range(n):
         for race in range(2):
             cx, cy, cz, ax, ay, az, rho = race_circle(race, ring, par)
-            frame = (
-                OMEGA,
-                acc[s.A_VR],
-                acc[s.A_VR + 1],
-                acc[s.A_VR + 2],
-                cx,
-                cy,
-                cz,
-                rho,
-                par[s.P_RG_I + race],
-                par[s.P_KH_I + race],
-                ax,
-                ay,
-                az,
-                acc[s.A_WR],
-                acc[s.A_WR + 1],
-            )
+            frame = (OMEGA, acc[s.A_VR], acc[s.A_VR + 1], acc[s.A_VR + 2], cx, cy, cz, rho, par[s.P_RG_I + race],
+                     par[s.P_KH_I + race], ax, ay, az, acc[s.A_WR], acc[s.A_WR + 1])  # fmt: skip
             row = 3 * race
             for j in range(balls.shape[1]):
                 result = ball_race_contact(
-                    race,
-                    balls[s.B_X, j],
-                    balls[s.B_X + 1, j],
-                    balls[s.B_X + 2, j],
-                    work[s.W_VB, j],
-                    work[s.W_VB + 1, j],
-                    work[s.W_VB + 2, j],
-                    work[s.W_WB, j],
-                    work[s.W_WB + 1, j],
-                    work[s.W_WB + 2, j],
-                    work[s.W_ORBIT, j],
-                    spring[row, j],
-                    spring[row + 1, j],
-                    spring[row + 2, j],
-                    trib[s.T_MU, race, j],
-                    int(trib[s.T_REGIME, race, j]),
-                    trib[s.T_C_N, race, j],
-                    trib[s.T_F_ROLL, race, j],
-                    trib[s.T_M_SPIN, race, j],
-                    (trib[s.T_PHI, race, j], trib[s.T_SLIP, race, j], par[s.P_MU_LIM], kappa),
-                    frame,
-                    steps,
-                )
+                    race, balls[s.B_X, j], balls[s.B_X + 1, j], balls[s.B_X + 2, j], work[s.W_VB, j],
+                    work[s.W_VB + 1, j], work[s.W_VB + 2, j], work[s.W_WB, j], work[s.W_WB + 1, j],
+                    work[s.W_WB + 2, j], work[s.W_ORBIT, j], spring[row, j], spring[row + 1, j], spring[row + 2, j],
+                    trib[s.T_MU, race, j], int(trib[s.T_REGIME, race, j]), trib[s.T_C_N, race, j],
+                    trib[s.T_F_ROLL, race, j], trib[s.T_M_SPIN, race, j],
+                    (trib[s.T_PHI, race, j], trib[s.T_SLIP, race, j], par[s.P_MU_LIM], kappa), frame, steps,
+                )  # fmt: skip
                 total += result[1] + result[4] + result[12]
     return total
 
@@ -241,30 +171,17 @@ def _cage_contacts(n, balls, cage, par, work):
             for side in range(2):
                 j = (k + side) % Z
                 f = ball_cage_contact(
-                    cage[s.C_X, k] - balls[s.B_X, j],
-                    cage[s.C_X + 1, k] - balls[s.B_X + 1, j],
-                    cage[s.C_X + 2, k] - balls[s.B_X + 2, j],
-                    work[s.W_VB, j] - work[s.W_VC, k],
-                    work[s.W_VB + 1, j] - work[s.W_VC + 1, k],
-                    work[s.W_VB + 2, j] - work[s.W_VC + 2, k],
-                    R_sum,
-                    par[s.P_K_CB],
-                    par[s.P_C_CB],
-                )
+                    cage[s.C_X, k] - balls[s.B_X, j], cage[s.C_X + 1, k] - balls[s.B_X + 1, j],
+                    cage[s.C_X + 2, k] - balls[s.B_X + 2, j], work[s.W_VB, j] - work[s.W_VC, k],
+                    work[s.W_VB + 1, j] - work[s.W_VC + 1, k], work[s.W_VB + 2, j] - work[s.W_VC + 2, k],
+                    R_sum, par[s.P_K_CB], par[s.P_C_CB],
+                )  # fmt: skip
                 total += f[0]
             f = cage_guide_contact(
-                cage[s.C_X, k],
-                cage[s.C_X + 1, k],
-                cage[s.C_X + 2, k],
-                work[s.W_VC, k],
-                work[s.W_VC + 1, k],
-                work[s.W_VC + 2, k],
-                par[s.P_R_GUIDE],
-                par[s.P_Z_GUIDE],
-                par[s.P_GUIDE_GAP],
-                par[s.P_K_GUIDE],
+                cage[s.C_X, k], cage[s.C_X + 1, k], cage[s.C_X + 2, k], work[s.W_VC, k], work[s.W_VC + 1, k],
+                work[s.W_VC + 2, k], par[s.P_R_GUIDE], par[s.P_Z_GUIDE], par[s.P_GUIDE_GAP], par[s.P_K_GUIDE],
                 par[s.P_C_GUIDE],
-            )
+            )  # fmt: skip
             total += f[0]
     return total
 
@@ -291,24 +208,17 @@ def profile(model, n=20000):
     m = {k: v.copy() for k, v in model.get_state().items() if isinstance(v, np.ndarray)}
     work, acc, par = model._work.copy(), model._acc.copy(), model.par
     dt = model.dt
+    state = (m["balls"], m["cage"], m["ring"], m["spring"], m["trib"], m["counters"], par, work, acc, dt)
     parts = {
         "one Verlet step (predictor, 18 ball-race and 27 cage contacts, corrector; the function advance calls)": (
-            _steps,
-            (m["balls"], m["cage"], m["ring"], m["spring"], m["trib"], m["counters"], par, work, acc, dt),
-        ),
+            _steps, state),
         "of which the 18 ball-race contact laws (normal, damping, tangential spring, resistances)": (
-            _race_contacts,
-            (m["balls"], m["ring"], m["spring"], m["trib"], par, work, acc, dt),
-        ),
+            _race_contacts, (m["balls"], m["ring"], m["spring"], m["trib"], par, work, acc, dt)),
         "of which the 9 cage balls (18 ball - cage-ball pairs, 9 guide contacts)": (
-            _cage_contacts,
-            (m["balls"], m["cage"], par, work),
-        ),
+            _cage_contacts, (m["balls"], m["cage"], par, work)),
         "tribology refresh of 18 contacts (Hertz, film, Lambda, mu, C_n, Houpert, capacitance)": (
-            _refreshes,
-            (m["balls"], m["ring"], par, m["trib"], model.lubricant.array),
-        ),
-    }
+            _refreshes, (m["balls"], m["ring"], par, m["trib"], model.lubricant.array)),
+    }  # fmt: skip
     rows = []
     for name, (fn, args) in parts.items():
         fn(1, *args)
@@ -321,38 +231,16 @@ def profile(model, n=20000):
     return rows
 
 
-def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--base", default=BASE_REV, help="git revision of the reference kernel (default %(default)s)")
-    parser.add_argument("--base-tree", help="a source tree of the reference instead (its bearing_fmu is timed)")
-    args = parser.parse_args(argv)
-    load_before = os.getloadavg()[0]
+def measure(base=BASE_REV, base_tree=None):
     with tempfile.TemporaryDirectory(prefix="dem-timing-base-") as scratch:
-        base_tree = Path(args.base_tree) if args.base_tree else materialise(args.base, scratch)
+        tree = Path(base_tree) if base_tree else materialise(base, scratch)
         dt_probe = DemModel("6208", "guessasma_oil").automatic_time_step(F_y=F_R, omega=OMEGA)
         default_refresh = max(1, math.floor(REFRESH_INTERVAL / dt_probe * (1.0 + 1e-9)))  # DemModel's own rule
         configurations = (1, 10, default_refresh, NEVER)
-        default_dt, timings = side_by_side(base_tree, configurations)
+        default_dt, timings = side_by_side(tree, configurations)
     model = steady_model()
-    real_time = per_simulated_ms(model)
-    real_time_4us = per_simulated_ms(model, dt=4e-6)
+    real_time, real_time_4us = per_simulated_ms(model), per_simulated_ms(model, dt=4e-6)
     model.dt_fixed = None
-    rows = profile(model)
-    load_after = os.getloadavg()[0]
-    steps_per_ms = 1e-3 / default_dt
-    every, multirate = timings[1]["current"], timings[10]["current"]
-    record("dem_timing", "step, tribology every step (CPU median)", 1e-6 * every[0], "s", kind="timing", target=2e-6)
-    record(
-        "dem_timing",
-        "step, multirate tribology every 10 steps (CPU median)",
-        1e-6 * multirate[0],
-        "s",
-        kind="timing",
-        target=1.2e-6,
-    )
-    record(
-        "dem_timing", "1 ms simulated at the default dt (wall)", 1e-3 * real_time[1], "s", kind="timing", target=0.5e-3
-    )
     names = {
         1: ("tribology every step", "<= 2"),
         10: ("tribology every 10 steps (multirate)", "<= 1.2"),
@@ -362,55 +250,76 @@ def main(argv=None):
         ),
         NEVER: ("contact law only (no refresh during the run)", ""),
     }
-    base_name = args.base_tree or args.base
-    lines = [
-        "# DEM timing (6208, 9 balls + 9 cage balls)",
-        "",
-        f"Generated by `python -m benchmarks.dem_timing` on {machine()} (2 cores shared by several users: load "
-        f"average {load_before:.1f} before, {load_after:.1f} after the run). Steady rolling at 500 rad/s, "
-        f"F_r = 3 kN, default time step {default_dt * 1e6:.2f} us (half the stability limit of the stiffest "
-        f"pair). Medians over {REPEATS} calls of advance() of {STEPS} steps each; CPU = the thread's CPU time "
-        "(the kernel's own cost; its minimum is the best estimate of an uncontended core, the median still "
-        "carries the other users' cache and hyper-thread pressure), wall = elapsed time (includes waiting "
-        "for a core).",
-        "",
-        f"Beside it, in the same run, the reference kernel ({base_name}: the DEM before the EHL traction curve, "
-        "the rigid cage, the ring's tilts and its support) at the same operating point and time step: each "
-        "tree runs in a process of its own (benchmarks/dem_timing_worker.py) and the two take turns call by "
-        "call, so that both medians draw on the same stretch of the machine's time.",
-        "",
-        "| configuration | CPU median (us/step) | CPU min (us/step) | wall median (us/step) | reference CPU median "
-        "(us/step) | ratio (CPU medians) | target |",
-        "|---|---|---|---|---|---|---|",
-    ]
+    rows = []
     for refresh in configurations:
-        name, target = names[refresh]
-        cur, base = timings[refresh]["current"], timings[refresh]["base"]
-        lines.append(
-            f"| {name} | {cur[0]:.2f} | {cur[1]:.2f} | {cur[2]:.2f} | {base[0]:.2f} | {cur[0] / base[0]:.2f} | {target} |"
-        )
-    lines += [
-        "",
-        f"1 ms simulated at the default dt ({steps_per_ms:.0f} steps, default refresh) in one call: "
-        f"CPU {real_time[0]:.3f} ms, wall {real_time[1]:.3f} ms (target <= 0.5 ms). At dt = 4 us (250 steps, "
-        f"below the chatter onset of about 7 us): CPU {real_time_4us[0]:.3f} ms, "
-        f"wall {real_time_4us[1]:.3f} ms.",
-        "",
-        "## Where the time goes (CPU time of one pass each, jitted loops over copies of the steady state)",
-        "",
-        "| part | CPU (us) |",
-        "|---|---|",
+        cur, ref = timings[refresh]["current"], timings[refresh]["base"]
+        rows.append([names[refresh][0], *cur, ref[0], cur[0] / ref[0], names[refresh][1]])
+    real = dict(steps_per_ms=1e-3 / default_dt, cpu=real_time[0], wall=real_time[1], target=0.5, steps_4us=1e-3 / 4e-6,
+                cpu_4us=real_time_4us[0], wall_4us=real_time_4us[1])  # fmt: skip
+    every, multirate = timings[1]["current"], timings[10]["current"]
+    return dict(
+        name="dem_timing",
+        title="DEM timing (6208, 9 balls + 9 cage balls)",
+        about=__doc__.split("Run:")[0],
+        blocks=page(base_tree or base, default_dt, rows, real, profile(model), default_refresh),
+        metrics=[
+            metric("step, tribology every step (CPU median)", 1e-6 * every[0], "s", "timing", target=2e-6),
+            metric(
+                "step, multirate tribology every 10 steps (CPU median)",
+                1e-6 * multirate[0],
+                "s",
+                "timing",
+                target=1.2e-6,
+            ),
+            metric("1 ms simulated at the default dt (wall)", 1e-3 * real_time[1], "s", "timing", target=0.5e-3),
+        ],  # fmt: skip
+    )
+
+
+def page(base, dt, rows, real, parts, refresh):
+    columns = ["configuration", "CPU median (us/step)", "CPU min (us/step)", "wall median (us/step)",
+               "reference CPU median (us/step)", "ratio (CPU medians)", "target"]  # fmt: skip
+    return [
+        dict(
+            text="Steady rolling at {omega:g} rad/s, F_r = {F_r:g} N, default time step {dt:.2f} us. Medians over "
+            "{repeats} calls of advance() of {steps} steps each; CPU = the thread's CPU time (the kernel's own cost; "
+            "its minimum is the best estimate of an uncontended core, the median still carries the other users' "
+            "cache and hyper-thread pressure), wall = elapsed time (includes waiting for a core).",
+            values=dict(omega=OMEGA, F_r=F_R, dt=dt * 1e6, repeats=REPEATS, steps=STEPS),
+        ),
+        dict(
+            text="Beside it, in the same run, the reference kernel ({base}: the DEM before the EHL traction curve, "
+            "the rigid cage, the ring's tilts and its support) at the same operating point and time step: each tree "
+            "runs in a process of its own (benchmarks/dem_timing_worker.py) and the two take turns call by call, so "
+            "that both medians draw on the same stretch of the machine's time.",
+            values=dict(base=base),
+        ),
+        dict(table=dict(columns=columns, formats=[None] + ["{:.2f}"] * 5 + [None], rows=rows)),
+        dict(
+            text="1 ms simulated at the default dt ({steps_per_ms:.0f} steps, default refresh) in one call: CPU "
+            "{cpu:.3f} ms, wall {wall:.3f} ms (target <= {target:g} ms). At dt = 4 us ({steps_4us:.0f} steps): CPU "
+            "{cpu_4us:.3f} ms, wall {wall_4us:.3f} ms.",
+            values=real,
+        ),
+        dict(text="## Where the time goes (CPU time of one pass each, jitted loops over copies of the steady state)"),
+        dict(table=dict(columns=["part", "CPU (us)"], formats=[None, "{:.3f}"], rows=parts)),
+        dict(
+            text="The Verlet step is the function advance() calls once per step (run here with the tribology frozen); "
+            "the two contact rows are the contact laws alone, called on one state from a jitted loop (what the step "
+            "adds to them: reading and writing the state arrays, the predictor and corrector of the bodies, the "
+            "orbital-angle bookkeeping and the monitor's checks). A refresh at the default interval costs "
+            "1/{refresh} of its row per step.",
+            values=dict(refresh=refresh),
+        ),
     ]
-    lines += [f"| {name} | {t:.3f} |" for name, t in rows]
-    lines += [
-        "",
-        "The Verlet step is the function advance() calls once per step (run here with the tribology frozen); "
-        "the two contact rows are the contact laws alone, called on one state from a jitted loop (what the "
-        "step adds to them: reading and writing the state arrays, the predictor and corrector of 9 + 9 + 1 "
-        "bodies, the orbital-angle bookkeeping and the monitor's checks). A refresh at the default interval "
-        f"costs 1/{default_refresh} of its row per step.",
-    ]
-    write_report("dem_timing.md", "\n".join(lines) + "\n")
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--base", default=BASE_REV, help="git revision of the reference kernel (default %(default)s)")
+    parser.add_argument("--base-tree", help="a source tree of the reference instead (its bearing_fmu is timed)")
+    args = parser.parse_args(argv)
+    cli(measure, "dem_timing", base=args.base, base_tree=args.base_tree)
 
 
 if __name__ == "__main__":

@@ -1,10 +1,10 @@
-"""One source tree's DEM in a process of its own, timed on command (benchmarks.dem_timing_side_by_side).
+"""One source tree's DEM in a process of its own, timed on command (benchmarks.dem_timing.side_by_side).
 
 Run with the tree's root as the working directory and on PYTHONPATH (so `bearing_fmu` is that tree's): it builds
-the 6208 in steady rolling (benchmarks.dem_timing's operating point) and answers each line on stdin,
-`<refresh> <steps> <dt>`, with the thread's CPU time and the wall time (s) of one advance() over `steps` steps of
-dt (s) with the tribology refreshed every `refresh` steps; a blank line ends it. Only the model's public API
-(DemModel, advance, dt_fixed, refresh_fixed) is used, so it runs on any tree that has them.
+the 6208 in steady rolling and answers each line on stdin, `<refresh> <steps> <dt>`, with the thread's CPU time and
+the wall time (s) of one advance() over `steps` steps of dt (s) with the tribology refreshed every `refresh` steps;
+a blank line ends it. Only the model's public API (DemModel, advance, dt_fixed, refresh_fixed) is used, so it runs
+on any tree that has them; it imports nothing of the driver's tree (benchmarks.dem_timing imports steady_model).
 """
 
 import sys
@@ -17,7 +17,7 @@ F_R = 3000.0
 
 
 def steady_model():
-    """As benchmarks.dem_timing.steady_model (kept here: this file must not import the driver's tree)."""
+    """The 6208 at 3 kN after the validation's start-up: 2 ms at rest, 5 ms ramp to 500 rad/s, run to 30 ms."""
     model = DemModel("6208", "guessasma_oil")
     model.advance(2e-3, omega=0.0, F_y=F_R)
     for k in range(1, 21):
@@ -33,10 +33,8 @@ def main():
         if not line.strip():
             break
         refresh, steps, dt = line.split()
-        model.refresh_fixed = int(refresh)
-        model.dt_fixed = float(dt)
-        steps = int(steps)
-        t_end = model.time + steps * float(dt)
+        model.refresh_fixed, model.dt_fixed = int(refresh), float(dt)
+        t_end = model.time + int(steps) * float(dt)
         c0, t0 = time.thread_time(), time.perf_counter()
         model.advance(t_end, omega=OMEGA, F_y=F_R)
         c1, t1 = time.thread_time(), time.perf_counter()

@@ -7,12 +7,12 @@ small step h, iterating the coupling inside the step:
      with P_n held (exact exponential integration of the linear network);
   2. heat P* from the bearings at T* (oil temperature and clearance change of T*);
   3. corrector: the thermal step from T_n again with the mean heat (P_n + P*)/2 held.
-This is Heun's method on the coupling with the network integrated exactly; its error is O(h^2),
-checked by halving h (the report gives the difference). The quasi-static bearings are algebraic
-(no state of their own beyond the solver's warm start), so nothing else needs integrating.
+This is Heun's method on the coupling with the network integrated exactly; its error is O(h^2)
+(benchmarks/cosim_error.py checks it by halving h). The quasi-static bearings are algebraic (no state
+of their own beyond the solver's warm start), so nothing else needs integrating.
 
 Same physics and parameters as runs/closed_loop_spring.toml: Bearing.fmu's scene, B7214C,
-iso_vg68_mineral, outer race control, F_z = 800 N each, 10 000 rpm, network b7214c_x_pair.
+iso_vg68_mineral, oil-air lubrication, outer race control, F_z = 800 N each, 10 000 rpm, network b7214c_x_pair.
 """
 
 import math
@@ -28,13 +28,7 @@ from spindle.thermal.model import SpindleThermalModel
 OMEGA = 10000.0 * 2.0 * math.pi / 60.0  # rad/s
 F_PRELOAD = 800.0  # N, spring preload (each bearing)
 T_AMBIENT = 293.15  # K (also the coolant)
-TRACKED = (
-    "T_inner_ring_1",
-    "T_outer_ring_1",
-    "T_oil_1",
-    "T_inner_ring_2",
-    "T_outer_ring_2",
-    "T_oil_2",
+TRACKED = tuple(f"T_{node}_{k}" for k in (1, 2) for node in ("inner_ring", "outer_ring", "oil")) + (
     "T_shaft",
     "T_housing",
 )
@@ -43,10 +37,13 @@ TRACKED = (
 class Monolithic:
     """The two bearings and the spindle network advanced together (spring preload, constant speed)."""
 
-    def __init__(self, spindle="b7214c_x_pair", race_control="outer", omega=OMEGA, F_z=F_PRELOAD):
+    def __init__(
+        self, spindle="b7214c_x_pair", race_control="outer", omega=OMEGA, F_z=F_PRELOAD, lubrication="oil_air"
+    ):
         scene = Scene.from_toml(SCENES_DIR / "quasi_static.toml")
         self.bearings = [
-            QuasiStaticModel("B7214C", "iso_vg68_mineral", scene, race_control=race_control) for _ in range(2)
+            QuasiStaticModel("B7214C", "iso_vg68_mineral", scene, race_control=race_control, lubrication=lubrication)
+            for _ in range(2)
         ]
         self.spindle = SpindleThermalModel(spindle)
         self.omega, self.F_z = omega, F_z
