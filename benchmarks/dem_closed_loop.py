@@ -2,7 +2,8 @@
 of the DEM run.
 
 Runs: runs/startup_dem.toml (two B7214C at the DEM fidelity, BearingDEM.fmu) and runs/startup_qs.toml (the
-same at the quasi-static fidelity, Bearing.fmu): 800 N spring preload, iso_vg68_mineral, thermal spindle
+same at the quasi-static fidelity, Bearing.fmu, with the DEM's flooded contacts instead of the file's oil-air):
+800 N spring preload, iso_vg68_mineral, thermal spindle
 b7214c_x_pair, 0 -> 10 000 rpm in 2 s (input schedule), 10 s, H = 10 ms Gauss-Seidel (step study:
 docs/reports/dem_closed_loop_steps.md). Each is run `runs` times in this process through
 spindle.cosim.master.run(load_run(path)); wall time = the master's stepping time (set-up excluded), CPU
@@ -28,6 +29,9 @@ from .render import cli, metric
 
 DEM_RUN = REPORTS.parent.parent / "runs" / "startup_dem.toml"
 QS_RUN = REPORTS.parent.parent / "runs" / "startup_qs.toml"
+# the quasi-static run with the DEM's lubrication: the DEM's contacts are flooded (it has no other method), while the
+# run file states the rig's oil-air; compared as they are, the difference would be the method's, not the fidelity's
+FLOODED = {"bearing_1.lubrication": "flooded", "bearing_2.lubrication": "flooded"}
 TIMES = (0.1, 0.5, 1.0, 2.0, 5.0, 10.0)  # s
 QUANTITIES = [  # (column, label, unit, scale to the unit)
     ("bearing_1.torque", "torque, bearing 1", "N.m", 1.0),
@@ -56,7 +60,7 @@ def measure(runs=3, stop=None):
     """stop (s): shorter runs, a smoke test (no metrics recorded)."""
     overrides = {} if stop is None else {"run.stop": stop}
     dem, dem_load = timed_runs(DEM_RUN, runs, overrides)
-    qs, qs_load = timed_runs(QS_RUN, runs, overrides)
+    qs, qs_load = timed_runs(QS_RUN, runs, {**overrides, **FLOODED})
     d, q = dem[-1], qs[-1]
     assert d.status == q.status == "ok", (d.message, q.message)
     spec = load_run(DEM_RUN, overrides)
