@@ -127,7 +127,7 @@ SUMMARY_COLUMNS = ["level", "grid", "cases", "n", "converged", "within tolerance
                    "mean abs h_min diff %", "median s", "worst s"]  # fmt: skip
 SUMMARY_FORMATS = ["{}"] * 6 + ["{:.2f}"] * 2 + ["{:.1f}"] * 2
 INTRO = (
-    "Grids: levels {levels} on the box of each contact (`contact_box`: X in [-3.5, 1.5], |Y| <= 2 in Hertz units for "
+    "Grid levels: {levels}, on the box of each contact (`contact_box`: X in [-3.5, 1.5], |Y| <= 2 in Hertz units for "
     "the light loads, shrunk down to 0.6 of it where the inlet the film needs is short); FAS V-cycles with a "
     "semismooth Newton solve on level 0 (docs/ehl_solver.md); level {default} is the default. Differences are "
     "(solver - thesis) / thesis; last change is the spread of h_c, h_min over the last cycles; residual the rms "
@@ -186,8 +186,9 @@ def grid_study(chosen, levels):
     columns = ["case", "k", "M"] + [f"{q} {c}" for q in ("h_c", "h_min") for c in films] + ["converged"]
     formats = "{} {:g} {:g}".split() + "{} {:.2f} {:.1f} {:+.1f} {:g} {:+.1f}".split() * 2 + ["{}"]
     rows = [study_row(c, list(levels)) for c in cases() if c["n"] in chosen]
-    values = dict(levels=", ".join(map(str, levels)), default=LEVEL)
-    blocks = [{"text": "Levels {levels}; default level {default}.", "values": values},
+    values = dict(cases=",".join(map(str, chosen)), levels=",".join(map(str, levels)), default=LEVEL)
+    text = "`python -m benchmarks.ehl_solver --study {cases} --study-levels {levels}`; the default level is {default}."
+    blocks = [{"text": text, "values": values},
               {"table": {"columns": columns, "formats": formats, "rows": rows}}]  # fmt: skip
     title = "Grid convergence of the numerical EHL solver (Annexe D cases)"
     about = (

@@ -55,8 +55,8 @@ COLUMNS = [
     "numerical h_c / h_min (nm), Lambda, regime",
 ]
 TEXT = (
-    "The most loaded inner and outer contact of each quasi-static operating point (`spindle film`, "
-    "docs/ehl_solver.md). Load average {before:.1f} before the run, {after:.1f} after."
+    "`spindle film` gives the same comparison at any operating point (docs/ehl_solver.md). Load average "
+    "{before:.1f} before the run, {after:.1f} after."
 )
 
 

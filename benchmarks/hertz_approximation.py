@@ -6,12 +6,9 @@ tests/validation/test_hertz_thesis.py). Steel on steel, Q = 1000 N, Rx = 5 mm.
 Run: python -m benchmarks.hertz_approximation -> docs/reports/hertz_approximation.md
 """
 
-from bearing_fmu.kernels.hertz import (
-    hertz_coefficients_approx,
-    hertz_coefficients_exact,
-    hertz_contact,
-    reduced_modulus,
-)
+from bearing_fmu.kernels.hertz import hertz_coefficients_approx as approx
+from bearing_fmu.kernels.hertz import hertz_coefficients_exact as exact
+from bearing_fmu.kernels.hertz import hertz_contact, reduced_modulus
 
 from .common import interleaved_medians
 from .render import cli, metric
@@ -23,16 +20,16 @@ Q, RX, RY = 1000.0, 5e-3, 0.05  # RY: the geometry timed
 E = reduced_modulus(210e9, 0.3, 210e9, 0.3)
 COLUMNS = ["Ry/Rx", "k error %", "a_y error %", "b_x error %", "delta error %", "p_max error %"]
 STEPS = {  # what is timed: label, function, arguments
-    "exact": ("exact coefficients (k, E, K by bisection + AGM)", hertz_coefficients_exact, (RX, RY)),
-    "approx": ("approximate coefficients (Hamrock-Brewe)", hertz_coefficients_approx, (RX, RY)),
+    "exact": ("exact coefficients (k, E, K by bisection + AGM)", exact, (RX, RY)),
+    "approx": ("approximate coefficients (Hamrock-Brewe)", approx, (RX, RY)),
     "contact": ("contact size/deflection/pressure given coefficients", hertz_contact,
-                (Q, RX, RY, E, *hertz_coefficients_exact(RX, RY))),
+                (Q, RX, RY, E, *exact(RX, RY))),
 }  # fmt: skip
 
 
 def errors(r):
     """Relative errors of k, a_y, b_x, delta and p_max at Ry/Rx = r."""
-    ce, ca = hertz_coefficients_exact(RX, RX * r), hertz_coefficients_approx(RX, RX * r)
+    ce, ca = exact(RX, RX * r), approx(RX, RX * r)
     ex, ap = hertz_contact(Q, RX, RX * r, E, *ce), hertz_contact(Q, RX, RX * r, E, *ca)
     return [ca[0] / ce[0] - 1] + [y / x - 1 for x, y in zip(ex, ap)]
 
@@ -52,13 +49,10 @@ def measure():
                  "the exact solution costs nothing per step and is the default. The approximation errs by up to "
                  "{worst:.1f} %: use it only where the geometry changes every call.", "values": values},
     ]  # fmt: skip
-    metrics = [
-        metric("largest relative error of the approximation", worst, "1", "error"),
-        metric("exact coefficients per call", t["exact"], "s", "timing"),
-        metric("approximate coefficients per call", t["approx"], "s", "timing"),
-    ]
+    metrics = [metric("largest relative error of the approximation", worst, "1", "error")]
+    metrics += [metric(f"{k} coefficients per call", t[k[:6]], "s", "timing") for k in ("exact", "approximate")]
+    about = __doc__.split("\n\n")[1].split("Run:")[0]
     title = "Hertz contact: Hamrock-Brewe approximation vs exact solution"
-    about = __doc__.split("\n", 2)[2].split("Run:")[0]
     return dict(name="hertz_approximation", title=title, about=about, blocks=blocks, metrics=metrics)
 
 
