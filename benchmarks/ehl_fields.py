@@ -4,90 +4,64 @@ horseshoe of the side lobes).
 
 Cases (tests/validation/data/thesis_annexe_d_ehl.csv): 6 (k = 1, 120 N, 2 m/s: a light circular contact), 28 (k = 1,
 800 N, 2 m/s: heavier, M = 360) and 12 (k = 5.03, 800 N, 0.5 m/s: a wide contact, M = 3635), each on the solver's
-default grid. measure() returns the fields' profiles and the films as a dict; render() writes
-docs/reports/ehl_fields.md and .png.
-Run: python -m benchmarks.ehl_fields
+default grid.
+Run: python -m benchmarks.ehl_fields -> docs/reports/ehl_fields.md and .png
 """
 
 import numpy as np
 
-from .common import REPORTS, machine, write_report
 from .ehl_solver import cases, solve
+from .render import cli
 
 CASES = (6, 28, 12)
+SPAN = 2.5  # the film map is coloured from the minimum film up to SPAN times it
+
+
+def solved(case):
+    """The case on the default grid: its table row and its three panels (pressure and film on the centre line,
+    film over the contact)."""
+    solution, seconds = solve(case)
+    grid = solution.grid
+    X, Y, H = grid.X.tolist(), grid.Y.tolist(), solution.H
+    centre = int(np.argmin(np.abs(grid.Y)))
+    h_line = solution.H[:, centre].tolist()
+    title = f"case {case['n']}: k = {case['k']:g}, {case['w_N']:g} N, {case['ue_m_s']:g} m/s"
+    row = [case["n"], case["k"], case["w_N"], case["ue_m_s"], solution.h_c * 1e9, case["hc_nm"], solution.h_min * 1e9]
+    row += [case["hm_nm"], "yes" if solution.converged else "no", seconds]
+    panels = [
+        dict(title=title, xlabel="X = x / b (entrainment along +X)", ylabel="P = p / p_h (centre line)",
+             series=[dict(x=X, y=solution.P[:, centre].tolist(), style="k-")]),
+        dict(title="film on the centre line", xlabel="X", ylabel="H = h R_x / b^2 (centre line)",
+             ylim=[0.0, 3.0 * min(h_line) + 1e-12], series=[dict(x=X, y=h_line, style="b-")]),
+        dict(title="film over the contact: the horseshoe", xlabel="X", ylabel="Y = y / a", aspect="equal",
+             contour=dict(x=X, y=Y, z=H.T.tolist(), levels=np.linspace(H.min(), SPAN * H.min(), 12).tolist(),
+                          label="H")),
+    ]  # fmt: skip
+    return row, panels
+
+
+COLUMNS = ["case", "k", "load (N)", "u_e (m/s)", "h_c nm", "thesis", "h_min nm", "thesis", "converged", "solve (s)"]
+TEXT = (
+    "Figure, one column per case: the pressure and the film on the centre line, and the film over the contact "
+    "coloured up to {span:g} times its minimum."
+)
 
 
 def measure():
-    """Per case: the grid (X, Y in Hertz units), P on the centre line and H over the contact (both dimensionless),
-    with the films the solver reports (nm) and the thesis' (nm)."""
     table = {c["n"]: c for c in cases()}
-    out = []
-    for n in CASES:
-        solution, seconds = solve(table[n])
-        grid = solution.grid
-        centre = int(np.argmin(np.abs(grid.Y)))
-        out.append(
-            dict(n=n, k=table[n]["k"], w=table[n]["w_N"], u=table[n]["ue_m_s"], X=grid.X.tolist(), Y=grid.Y.tolist(),
-                 P_centre=solution.P[:, centre].tolist(), H_centre=solution.H[:, centre].tolist(), H=solution.H.tolist(),
-                 h_c=solution.h_c * 1e9, h_min=solution.h_min * 1e9, thesis=(table[n]["hc_nm"], table[n]["hm_nm"]),
-                 converged=solution.converged, seconds=seconds)
-        )  # fmt: skip
-    return dict(machine=machine(), cases=out)
+    rows, columns = zip(*(solved(table[n]) for n in CASES))
+    panels = [column[i] for i in range(3) for column in columns]  # row by row: one column per case
+    figure = dict(file="ehl_fields.png", caption="centre-line pressure and film, film map", panels=panels,
+                  columns=len(CASES), size=(5.0 * len(CASES), 11.0), dpi=100)  # fmt: skip
+    formats = "{} {:g} {:g} {:g} {:.1f} {:g} {:.1f} {:g} {} {:.1f}".split()
+    blocks = [{"text": TEXT, "values": dict(span=SPAN)}, {"table": dict(columns=COLUMNS, formats=formats, rows=rows)}]
+    title = "Pressure spike and horseshoe of three Annexe D cases"
+    about = __doc__.split("\nRun:")[0]
+    return dict(name="ehl_fields", title=title, about=about, blocks=blocks + [{"figure": figure}], metrics=[])
 
 
-def _figure(data):
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, axes = plt.subplots(2, len(data["cases"]), figsize=(5 * len(data["cases"]), 8))
-    for col, c in enumerate(data["cases"]):
-        X, Y, H = np.array(c["X"]), np.array(c["Y"]), np.array(c["H"])
-        ax = axes[0, col]
-        ax.plot(X, c["P_centre"], "k-", label="P = p / p_h")
-        ax.set_xlabel("X = x / b (entrainment along +X)")
-        ax.set_ylabel("P (centre line)")
-        twin = ax.twinx()
-        twin.plot(X, c["H_centre"], "b-", label="H")
-        twin.set_ylabel("H = h R_x / b^2 (centre line)", color="b")
-        twin.set_ylim(0.0, 3.0 * min(c["H_centre"]) + 1e-12)
-        ax.set_title(f"case {c['n']}: k = {c['k']:g}, {c['w']:g} N, {c['u']:g} m/s", fontsize=9)
-        ax = axes[1, col]
-        levels = np.linspace(H.min(), H.min() * 2.5, 12)
-        contour = ax.contourf(X, Y, H.T, levels=levels, extend="max", cmap="viridis")
-        fig.colorbar(contour, ax=ax, label="H")
-        ax.set_aspect("equal")
-        ax.set_xlabel("X")
-        ax.set_ylabel("Y = y / a")
-        ax.set_title("film over the contact: the horseshoe", fontsize=9)
-    fig.tight_layout()
-    return fig
-
-
-def render(data):
-    """docs/reports/ehl_fields.md and .png from measure()'s dict."""
-    lines = [
-        "# Pressure spike and horseshoe of three Annexe D cases",
-        "",
-        f"Generated by `python -m benchmarks.ehl_fields` on {data['machine']}; the solver's default grid. Top: "
-        "pressure and film on the centre line; bottom: the film over the contact, coloured up to 2.5 times its "
-        "minimum. Figure: [ehl_fields.png](ehl_fields.png).",
-        "",
-        "| case | k | load (N) | u_e (m/s) | h_c nm (thesis) | h_min nm (thesis) | converged | solve (s) |",
-        "|---|---|---|---|---|---|---|---|",
-    ]
-    for c in data["cases"]:
-        lines.append(
-            f"| {c['n']} | {c['k']:g} | {c['w']:g} | {c['u']:g} | {c['h_c']:.1f} ({c['thesis'][0]:g}) | "
-            f"{c['h_min']:.1f} ({c['thesis'][1]:g}) | {'yes' if c['converged'] else 'no'} | {c['seconds']:.1f} |"
-        )
-    write_report("ehl_fields.md", "\n".join(lines) + "\n")
-    _figure(data).savefig(REPORTS / "ehl_fields.png", dpi=100)
-
-
-def main():
-    render(measure())
+def main(argv=None):
+    cli(measure, "ehl_fields")
 
 
 if __name__ == "__main__":

@@ -1,14 +1,14 @@
 """Numerical EHL solver against the thesis' Annexe D (55 elliptical cases, lubricant 2 at 313 K, modified WLF
-viscosity and Murnaghan density) and its time per case; writes docs/reports/ehl_solver.md.
+viscosity and Murnaghan density), on each grid level asked for, beside the closed-form film formulas
+(benchmarks.ehl_film_table) as error against run time.
 
-    python -m benchmarks.ehl_solver [--level 3] [--cases 1,6,...] [--out docs/reports/ehl_solver.md]
-    python -m benchmarks.ehl_solver --study 6,28 --levels 1,2,3,4 [--out docs/reports/ehl_grid_study.md]
-    python -m benchmarks.ehl_solver --pareto 1,2,3   (after a table run per level: docs/reports/ehl_pareto.png)
-
-Each row: the thesis' h_c, h_min, hm_centre, hm_lateral, the solver's, their relative differences, the
+Each case: the thesis' h_c, h_min, hm_centre, hm_lateral, the solver's, their relative differences, the
 convergence record and the wall time of the solve (one core: BLAS limited to one thread, compiled kernels
-cached), with the load average of the machine over the run. `--study` solves each case on every level and
-gives the observed order and the Richardson estimate of h_c and h_min from the three finest levels.
+cached). A grid study (`--study`) solves each chosen case on every level of `--study-levels` instead, with the
+observed order and the Richardson estimate of h_c and h_min from the three finest levels.
+
+    python -m benchmarks.ehl_solver [--levels 1,2,3] [--cases 1,6,...]      -> docs/reports/ehl_solver.md, .png
+    python -m benchmarks.ehl_solver --study 6,28 [--study-levels 1,2,3,4]   -> docs/reports/ehl_grid_study.md
 """
 
 import os
@@ -19,14 +19,17 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 import argparse  # noqa: E402
 import csv  # noqa: E402
-import json  # noqa: E402
 import math  # noqa: E402
 import statistics  # noqa: E402
 import time  # noqa: E402
 from pathlib import Path  # noqa: E402
 
+import numpy as np  # noqa: E402
+
 from bearing_fmu.kernels import ehl_solver as es  # noqa: E402
 from bearing_fmu.models import ehl_numerical as en  # noqa: E402
+
+from .render import cli  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 DATA = ROOT / "tests" / "validation" / "data" / "thesis_annexe_d_ehl.csv"
@@ -38,6 +41,8 @@ WLF_2 = (1e12, 189.95, 188.86, 0.7190e-9, 8.2e-9, -0.5278, 16.09, 17.38)
 MURN = (298.0, 7.734e-4, 6.090e-3, 9.234e9, 10.545)
 FLUID = en.fluid_array(es.VISC_WLF, es.DENS_MURNAGHAN, ETA0, 0.0, 313.0, WLF_2, MURN)
 LEVEL = 3  # the default grid (docs/ehl_solver.md, Grid convergence)
+TOLERANCE = {True: 5.0, False: 10.0}  # % of the validation (tests/validation/test_ehl_annexe_d.py), k >= 1 / k < 1
+GROUPS = (("k >= 1", True, "s"), ("k < 1", False, "o"))  # (label, wide, marker)
 
 
 def cases():
@@ -59,104 +64,98 @@ def _diff(got_m, want_nm):
     return 100.0 * (got_m * 1e9 - want_nm) / want_nm
 
 
-def _row(c, sol, dt):
-    return (
-        f"| {c['n']} | {c['w_N']:.0f} | {c['ue_m_s']:g} | {c['k']:g} | {c['M']:g} | {c['hc_nm']:g} | "
-        f"{sol.h_c * 1e9:.1f} | {_diff(sol.h_c, c['hc_nm']):+.1f} | {c['hm_nm']:g} | {sol.h_min * 1e9:.1f} | "
-        f"{_diff(sol.h_min, c['hm_nm']):+.1f} | {c['hm_centre_nm']:g} / {c['hm_lateral_nm']:g} | "
-        f"{sol.hm_centre * 1e9:.1f} / {sol.hm_lateral * 1e9:.1f} | {'yes' if sol.converged else 'NO'} {sol.cycles} | "
-        f"{sol.change:.1e} | {sol.residual:.1e} | {dt:.1f} |"
-    )
-
-
-def _within(c, sol):
-    """The validation tolerance of tests/validation/test_ehl_annexe_d.py: 5 % for k >= 1, 10 % for k < 1."""
-    tol = 5.0 if c["k"] >= 1.0 else 10.0
-    return abs(_diff(sol.h_c, c["hc_nm"])) <= tol and abs(_diff(sol.h_min, c["hm_nm"])) <= tol
-
-
-def table(chosen, level, out):
-    rows, times, loads, n_conv, n_within, record = [], [], [], 0, 0, []
-    for c in cases():
-        if chosen and c["n"] not in chosen:
-            continue
-        loads.append(os.getloadavg()[0])
-        sol, dt = solve(c, level)
-        times.append(dt)
-        n_conv += sol.converged
-        n_within += _within(c, sol)
-        rows.append(_row(c, sol, dt))
-        record.append(
-            {"n": c["n"], "k": c["k"], "converged": bool(sol.converged), "s": dt, "load": loads[-1]}
-            | {"h_c": _diff(sol.h_c, c["hc_nm"]), "h_min": _diff(sol.h_min, c["hm_nm"])}
-        )
-        print(rows[-1], f"load {loads[-1]:.2f}", flush=True)
+def grid_size(level):
     g = en.grid_hierarchy(1.0, 1.0, 1.0, 1.0, 1.0, 1.0, FLUID, level, level)[0]
-    head = [
-        "# Numerical EHL solver against the thesis' Annexe D",
-        "",
-        f"`python -m benchmarks.ehl_solver --level {level}`: grid {g.nx} x {g.ny} of level {level} on the box of "
-        "each contact (`contact_box`: X in [-3.5, 1.5], |Y| <= 2 in Hertz units for the light loads, shrunk down "
-        "to 0.6 of it where the inlet the film needs is short); FAS V-cycles with a semismooth Newton solve on "
-        "level 0 (docs/ehl_solver.md). Differences are (solver - thesis) / thesis; last change is the spread of "
-        "h_c, h_min over the last 4 cycles; residual the rms complementarity residual / rms Couette term. "
-        "Times: wall clock per solve on one core (BLAS on one thread) of the shared 2-core machine, kernels "
-        "compiled and cached.",
-        "",
-        f"{len(times)} cases: {n_conv} converged, {n_within} with h_c and h_min within the validation tolerance "
-        f"(5 % for k >= 1, 10 % for k < 1). Median {statistics.median(times):.1f} s, worst {max(times):.1f} s; "
-        f"1-minute load average {min(loads):.2f}-{max(loads):.2f} over the run (2 cores).",
-        "",
-        "| case | w N | u_e m/s | k | M | h_c thesis nm | h_c nm | diff % | h_min thesis nm | h_min nm | diff % | "
-        "hm centre / lateral thesis nm | solver nm | converged, cycles | last change | residual | s |",
-        "|" + "---|" * 17,
-    ]
-    Path(out).write_text("\n".join(head + rows) + "\n")
-    Path(out).with_suffix(".json").write_text(json.dumps(record, indent=0) + "\n")
+    return f"{g.nx} x {g.ny}"
 
 
-def _table_path(level):
-    name = "ehl_solver.md" if level == LEVEL else f"ehl_solver_level{level}.md"
-    return ROOT / "docs" / "reports" / name
+def run_case(c, level):
+    """A case solved on the level: its row of the level's table (the differences at 7 and 10, the time last)."""
+    load = os.getloadavg()[0]
+    sol, dt = solve(c, level)
+    print(f"level {level} case {c['n']}: {sol.h_c * 1e9:.1f} nm {sol.h_min * 1e9:.1f} nm {dt:.1f} s", flush=True)
+    return load, [c["n"], c["w_N"], c["ue_m_s"], c["k"], c["M"], c["hc_nm"], sol.h_c * 1e9, _diff(sol.h_c, c["hc_nm"]),
+                  c["hm_nm"], sol.h_min * 1e9, _diff(sol.h_min, c["hm_nm"]),
+                  f"{c['hm_centre_nm']:g} / {c['hm_lateral_nm']:g}", f"{sol.hm_centre * 1e9:.1f} / "
+                  f"{sol.hm_lateral * 1e9:.1f}", f"{'yes' if sol.converged else 'NO'} {sol.cycles}", sol.change,
+                  sol.residual, dt]  # fmt: skip
 
 
-def pareto(levels, out):
-    """Error against the thesis vs run time: the solver on each level (mean |error| over the cases of its
-    table run, median time per case) and the three closed-form film formulas (benchmarks.ehl_film_table)."""
-    import matplotlib
-    import numpy as np
+def summary_rows(runs):
+    """Per level and group of k: cases, converged, within tolerance, mean |difference| of h_c and h_min, times."""
+    rows = []
+    for level, table in runs.items():
+        for label, wide, _ in GROUPS:
+            sel = [r for r in table if (r[3] >= 1.0) == wide]
+            if sel:
+                within = sum(max(abs(r[7]), abs(r[10])) <= TOLERANCE[wide] for r in sel)
+                counts = [len(sel), sum(r[13].startswith("yes") for r in sel), within]
+                mean = [statistics.mean(abs(r[q]) for r in sel) for q in (7, 10)]
+                times = [r[-1] for r in sel]
+                rows.append([level, grid_size(level), label, *counts, *mean, statistics.median(times), max(times)])
+    return rows
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
 
-    from benchmarks import ehl_film_table as ft
+def pareto(rows):
+    """Error against run time: the solver per level (the summary rows) and the film formulas."""
+    from . import ehl_film_table as ft
 
     formula_cases = ft.load_cases()
     wide = np.array([c["k"] >= 1.0 for c in formula_cases])
-    errs = ft.errors(formula_cases)
-    per_call = ft.times_per_call(n=2000, repeats=31)
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
-    for ax, q, label in ((axes[0], 0, "h_c"), (axes[1], 1, "h_min")):
-        for group, mask, marker in (("k >= 1", wide, "s"), ("k < 1", ~wide, "o")):
-            for name in ft.FORMULAS:
-                e = 100 * np.mean(np.abs(errs[name][q][mask]))
-                ax.loglog(per_call[name], e, marker, mfc="none", label=f"{name}, {group}")
-            pts = []
-            for level in levels:
-                rec = json.loads(_table_path(level).with_suffix(".json").read_text())
-                sel = [r for r in rec if (r["k"] >= 1.0) == (group == "k >= 1")]
-                pts.append((statistics.median(r["s"] for r in sel), statistics.mean(abs(r[label]) for r in sel)))
-            ax.loglog(*zip(*pts), marker + "-", color="k", label=f"numerical, levels {levels[0]}-{levels[-1]}, {group}")
-            for level, (t, e) in zip(levels, pts):
-                ax.annotate(f"L{level}", (t, e), fontsize=8)
-        ax.set_xlabel("run time per contact (s)")
-        ax.set_ylabel(f"mean |{label} - thesis| / thesis (%)")
-        ax.set_title(f"{label}: error vs run time, Annexe D")
-    axes[1].legend(fontsize=6)
-    fig.tight_layout()
-    fig.savefig(out, dpi=110)
-    plt.close(fig)
-    print(f"wrote {out}")
+    errs, per_call = ft.errors(formula_cases), ft.times_per_call(n=2000, repeats=31)
+    panels = []
+    for q, label in ((0, "h_c"), (1, "h_min")):
+        series = [dict(x=[per_call[name]], y=[100 * float(np.mean(np.abs(errs[name][q][wide == is_wide])))],
+                       style=marker, label=f"{name}, {group}")
+                  for group, is_wide, marker in GROUPS for name in ft.FORMULAS]  # fmt: skip
+        for group, _, marker in GROUPS:
+            if sel := [r for r in rows if r[2] == group]:
+                series.append(dict(x=[r[8] for r in sel], y=[r[6 + q] for r in sel], style="k" + marker + "-",
+                                   label=f"numerical, {group}", annotate=[f"L{r[0]}" for r in sel]))  # fmt: skip
+        panels.append(dict(title=f"{label}: error vs run time, Annexe D", xlabel="run time per contact (s)",
+                           ylabel=f"mean |{label} - thesis| / thesis (%)", xscale="log", yscale="log",
+                           series=series))  # fmt: skip
+    return dict(file="ehl_pareto.png", caption="error against run time: solver levels and film formulas",
+                size=(11, 4.6), panels=panels)  # fmt: skip
+
+
+CASE_COLUMNS = ["case", "w N", "u_e m/s", "k", "M", "h_c thesis nm", "h_c nm", "diff %", "h_min thesis nm", "h_min nm",
+                "diff %", "hm centre / lateral thesis nm", "solver nm", "converged, cycles", "last change", "residual",
+                "s"]  # fmt: skip
+CASE_FORMATS = "{} {:.0f} {:g} {:g} {:g} {:g} {:.1f} {:+.1f} {:g} {:.1f} {:+.1f} {} {} {} {:.1e} {:.1e} {:.1f}".split()
+SUMMARY_COLUMNS = ["level", "grid", "cases", "n", "converged", "within tolerance", "mean abs h_c diff %",
+                   "mean abs h_min diff %", "median s", "worst s"]  # fmt: skip
+SUMMARY_FORMATS = ["{}"] * 6 + ["{:.2f}"] * 2 + ["{:.1f}"] * 2
+INTRO = (
+    "Grid levels: {levels}, on the box of each contact (`contact_box`: X in [-3.5, 1.5], |Y| <= 2 in Hertz units for "
+    "the light loads, shrunk down to 0.6 of it where the inlet the film needs is short); FAS V-cycles with a "
+    "semismooth Newton solve on level 0 (docs/ehl_solver.md); level {default} is the default. Differences are "
+    "(solver - thesis) / thesis; last change is the spread of h_c, h_min over the last cycles; residual the rms "
+    "complementarity residual / rms Couette term. Within tolerance: h_c and h_min within {tol_wide:g} % for k >= 1, "
+    "{tol_slender:g} % for k < 1 (the validation's). Times: wall clock per solve on one core (BLAS on one thread), "
+    "kernels compiled and cached; 1-minute load average {lo:.2f}-{hi:.2f} at the starts of the solves."
+)
+
+
+def measure(levels=(LEVEL,), chosen=(), study=(), study_levels=(1, 2, 3, 4)):
+    """The solver on the levels (all cases, or those chosen); with study, the grid study of those cases instead."""
+    if study:
+        return grid_study(study, study_levels)
+    runs, loads = {}, []
+    for level in levels:
+        solved = [run_case(c, level) for c in cases() if not chosen or c["n"] in chosen]
+        loads += [load for load, _ in solved]
+        runs[level] = [row for _, row in solved]
+    rows = summary_rows(runs)
+    values = dict(levels=", ".join(map(str, levels)), default=LEVEL, tol_wide=TOLERANCE[True],
+                  tol_slender=TOLERANCE[False], lo=min(loads), hi=max(loads))  # fmt: skip
+    caption = "Error against run time per level and group of cases."
+    summary = dict(caption=caption, columns=SUMMARY_COLUMNS, formats=SUMMARY_FORMATS, rows=rows)
+    blocks = [{"text": INTRO, "values": values}, {"table": summary}, {"figure": pareto(rows)}]
+    blocks += [{"table": {"caption": f"Level {level}, grid {grid_size(level)}, per case.", "columns": CASE_COLUMNS,
+                          "formats": CASE_FORMATS, "rows": table}} for level, table in runs.items()]  # fmt: skip
+    title = "Numerical EHL solver against the thesis' Annexe D"
+    return dict(name="ehl_solver", title=title, about=__doc__.split("\n\n")[1], blocks=blocks, metrics=[])
 
 
 def richardson(h):
@@ -169,65 +168,46 @@ def richardson(h):
     return order, h[-1] + d2 / (2.0**p - 1.0)
 
 
-def study(chosen, levels, out):
-    rows = []
-    for c in cases():
-        if c["n"] not in chosen:
-            continue
-        sols = []
-        for level in levels:
-            load = os.getloadavg()[0]
-            sol, dt = solve(c, level)
-            sols.append(sol)
-            print(
-                c["n"], level, f"{sol.h_c * 1e9:.1f} {sol.h_min * 1e9:.1f} {sol.converged} {dt:.1f} s load {load:.2f}"
-            )
-        cells = []
-        for attr, want in (("h_c", c["hc_nm"]), ("h_min", c["hm_nm"])):
-            h = [getattr(s, attr) * 1e9 for s in sols]
-            order, est = richardson(h)
-            default = h[levels.index(LEVEL)] if LEVEL in levels else math.nan
-            cells.append(
-                f"{' / '.join(f'{v:.1f}' for v in h)} | {order:.2f} | {est:.1f} | {100.0 * (default - est) / est:+.1f} | "
-                f"{want:g} | {100.0 * (est - want) / want:+.1f}"
-            )
-        conv = " ".join("y" if s.converged else "n" for s in sols)
-        rows.append(f"| {c['n']} | {c['k']:g} | {c['M']:g} | " + " | ".join(cells) + f" | {conv} |")
-    head = [
-        "# Grid convergence of the numerical EHL solver (Annexe D cases)",
-        "",
-        f"`python -m benchmarks.ehl_solver --study {','.join(str(n) for n in sorted(chosen))} --levels "
-        f"{','.join(str(v) for v in levels)}`: each case on the grids of levels {levels[0]}-{levels[-1]} of its box "
-        "(each level halves the spacing). Order: observed from the three finest; Richardson: the finest "
-        f"extrapolated with it (2 where it is outside 1-3); level {LEVEL} error: the default grid against that estimate.",
-        "",
-        f"| case | k | M | h_c nm per level | order | Richardson nm | level {LEVEL} error % | thesis nm | Richardson vs thesis "
-        f"% | h_min nm per level | order | Richardson nm | level {LEVEL} error % | thesis nm | Richardson vs thesis % "
-        "| converged |",
-        "|" + "---|" * 16,
-    ]
-    Path(out).write_text("\n".join(head + rows) + "\n")
+def study_row(c, levels):
+    sols = [solve(c, level)[0] for level in levels]
+    row = [c["n"], c["k"], c["M"]]
+    for attr, want in (("h_c", c["hc_nm"]), ("h_min", c["hm_nm"])):
+        h = [getattr(s, attr) * 1e9 for s in sols]
+        order, est = richardson(h)
+        default = h[levels.index(LEVEL)] if LEVEL in levels else math.nan
+        row += [" / ".join(f"{v:.1f}" for v in h), order, est, 100.0 * (default - est) / est, want]
+        row.append(100.0 * (est - want) / want)
+    print(row, flush=True)
+    return row + [" ".join("y" if s.converged else "n" for s in sols)]
 
 
-def main():
+def grid_study(chosen, levels):
+    films = f"per level nm|order|Richardson nm|level {LEVEL} error %|thesis nm|Richardson vs thesis %".split("|")
+    columns = ["case", "k", "M"] + [f"{q} {c}" for q in ("h_c", "h_min") for c in films] + ["converged"]
+    formats = "{} {:g} {:g}".split() + "{} {:.2f} {:.1f} {:+.1f} {:g} {:+.1f}".split() * 2 + ["{}"]
+    rows = [study_row(c, list(levels)) for c in cases() if c["n"] in chosen]
+    values = dict(cases=",".join(map(str, chosen)), levels=",".join(map(str, levels)), default=LEVEL)
+    text = "`python -m benchmarks.ehl_solver --study {cases} --study-levels {levels}`; the default level is {default}."
+    blocks = [{"text": text, "values": values},
+              {"table": {"columns": columns, "formats": formats, "rows": rows}}]  # fmt: skip
+    title = "Grid convergence of the numerical EHL solver (Annexe D cases)"
+    about = (
+        "Each case on the grids of several levels of its box (each level halves the spacing). Order: observed from "
+        "the three finest; Richardson: the finest extrapolated with it (with order 2 where the observed one is "
+        "outside 1-3); the default level's error: the default grid against that estimate."
+    )
+    return dict(name="ehl_grid_study", title=title, about=about, blocks=blocks, metrics=[])
+
+
+def main(argv=None):
     ap = argparse.ArgumentParser()
-    ap.add_argument("--level", type=int, default=LEVEL)
-    ap.add_argument("--cases", default="")
-    ap.add_argument("--study", default="", help="cases of a grid study (with --levels)")
-    ap.add_argument("--levels", default="1,2,3,4")
-    ap.add_argument("--pareto", default="", help="levels whose table runs go into docs/reports/ehl_pareto.png")
-    ap.add_argument("--out", default="")
-    args = ap.parse_args()
-    if args.pareto:
-        pareto([int(v) for v in args.pareto.split(",")], args.out or str(ROOT / "docs" / "reports" / "ehl_pareto.png"))
-        return
-    if args.study:
-        chosen = {int(c) for c in args.study.split(",")}
-        levels = [int(v) for v in args.levels.split(",")]
-        study(chosen, levels, args.out or str(ROOT / "docs" / "reports" / "ehl_grid_study.md"))
-        return
-    chosen = {int(c) for c in args.cases.split(",") if c}
-    table(chosen, args.level, args.out or str(_table_path(args.level)))
+    ap.add_argument("--levels", default=str(LEVEL), help="grid levels of the table runs, e.g. 1,2,3")
+    ap.add_argument("--cases", default="", help="cases (1..55) to solve; all by default")
+    ap.add_argument("--study", default="", help="cases of a grid study (on --study-levels)")
+    ap.add_argument("--study-levels", default="1,2,3,4")
+    args = {k: tuple(int(v) for v in text.split(",") if v) for k, text in vars(ap.parse_args(argv)).items()}
+    cli(measure, "ehl_solver", levels=args["levels"], chosen=args["cases"], study=args["study"],
+        study_levels=args["study_levels"])  # fmt: skip
 
 
 if __name__ == "__main__":

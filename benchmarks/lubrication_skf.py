@@ -2,12 +2,15 @@
 
 Product: QuasiStaticModel with the shipped quasi-static scene (centrifugal, gyroscopic, torque on, outer race
 control) and the scene option `lubrication` = flooded | oil_bath | oil_jet | oil_air | grease at its documented
-defaults (models.lubrication.METHODS; none fitted to SKF). SKF: benchmarks.skf_friction (independent reference:
-bare model for flooded; phi_ish, phi_rs with the method's K_rs for the others; its drag only for the bath).
+defaults (models.lubrication.METHODS, docs/lubrication_method.md; none fitted to SKF). SKF: benchmarks.skf_friction
+(independent reference, its sources and unverified constants there: bare model for flooded; phi_ish, phi_rs with
+the method's K_rs for the others; its drag only for the bath).
 Cases: 6208 (SKF 62 series) radial F_r = 3000 N, 955-9549 rpm; B7214C (72 series, SKF's 72 B constants: see the
 caveat in the report) axial F_a = 800 N (the Rabreau rig's preload), 1000-15000 rpm (d_m n = 1.46e6 mm/min, the
 oil-lubricated speed range of a 72-series spindle bearing). Oil iso_vg68_mineral at 40 C; the SKF model gets
-the same operating viscosity nu = eta/rho. Exponents: least-squares slope of ln M over ln n on the whole range.
+the same operating viscosity nu = eta/rho. 'product' is the contact torque (Houpert components with the method's
+film factors) without the drag; 'SKF' is phi_ish phi_rs M_rr + M_sl (bare M_rr + M_sl for flooded); ratio =
+product / SKF. Exponents: least-squares slope of ln M over ln n on the whole range. Torques in mN.m.
 Run: python -m benchmarks.lubrication_skf -> docs/reports/lubrication_skf.md and .png
 """
 
@@ -23,7 +26,7 @@ from bearing_fmu.params import load_bearing, load_lubricant
 from bearing_fmu.scene import Scene
 
 from . import skf_friction as skf
-from .common import REPORTS, machine, write_report
+from .render import cli
 
 LUBRICANT = "iso_vg68_mineral"
 T_OIL = 313.15
@@ -36,6 +39,10 @@ CASES = (
      "speeds": (1000.0, 2000.0, 4000.0, 6000.0, 8000.0, 10000.0, 12000.0, 15000.0)},
 )  # fmt: skip
 RPM = math.pi / 30.0
+CAVEAT = (
+    "Caveat: SKF's general catalogue gives constants for the 72 B series (40 deg contact angle); the B7214C has "
+    "15 deg. The SKF column is that series' model at the same size and load, not a model of this bearing."
+)
 
 
 def exponent(n, M):
@@ -54,107 +61,76 @@ def product(case, method):
 
 
 def skf_rows(case, method, nu_cSt, level_mm):
+    """Per speed: (phi_ish phi_rs M_rr + M_sl, drag R_s term, drag per unit V_M (N.m), phi_ish, phi_rs)."""
     b = load_bearing(case["bearing"])
-    d, D = b.bore * 1e3, b.outer_diameter * 1e3
+    args = (nu_cSt, b.bore * 1e3, b.outer_diameter * 1e3, case["F_r"], case["F_a"])
+    terms = [skf.frictional_moment(case["series"], n, *args, None if method == "flooded" else method, level_mm)
+             for n in case["speeds"]]  # fmt: skip
+    return np.array([(1e-3 * (s["rolling"] + s["sl"]), 1e-3 * s["drag_rs"], 1e-3 * s["drag_per_VM"], s["phi_ish"],
+                      s["phi_rs"]) for s in terms])  # fmt: skip
+
+
+def compare(case, method, nu):
+    """Table rows of one bearing and method over speed, its summary row and its two plotted series."""
+    n = np.array(case["speeds"])
+    level_mm = 0.5 * load_bearing(case["bearing"]).D * 1e3  # the bath's default level: centre of the lowest ball
+    p, s = product(case, method), skf_rows(case, method, nu, level_mm)
+    contact = p[:, 0] - p[:, 1]
+    ratio = contact / s[:, 0]
     rows = []
-    for n in case["speeds"]:
-        s = skf.frictional_moment(
-            case["series"], n, nu_cSt, d, D, case["F_r"], case["F_a"], None if method == "flooded" else method, level_mm
-        )
-        rows.append((1e-3 * (s["rolling"] + s["sl"]), 1e-3 * s["drag_rs"], 1e-3 * s["drag_per_VM"], s["phi_ish"],
-                     s["phi_rs"]))  # fmt: skip
-    return np.array(rows)
+    for k, speed in enumerate(n):
+        if method == "oil_bath":
+            drag = [1e3 * p[k, 1], 1e3 * s[k, 1], (p[k, 1] - s[k, 1]) / s[k, 2]]
+        else:
+            drag = [1e3 * p[k, 1] if p[k, 1] > 0.0 else None, None, None]
+        rows.append([method, speed, 1e3 * contact[k], 1e3 * s[k, 0], ratio[k], f"{p[k, 2]:.3f} / {s[k, 3]:.3f}",
+                     f"{p[k, 3]:.3f} / {s[k, 4]:.3f}"] + drag)  # fmt: skip
+    e_d = exponent(n, p[:, 1]) if p[-1, 1] > 0.0 else None
+    summary = [case["bearing"], method, ratio.min(), ratio.max(), ratio[-1], exponent(n, contact)]
+    summary += [exponent(n, s[:, 0]), e_d]
+    color = f"C{METHODS.index(method)}"
+    series = [dict(x=n.tolist(), y=(1e3 * m).tolist(), style=color + style, label=f"{who} {method}")
+              for m, style, who in ((contact, "--", "product"), (s[:, 0], "-", "SKF"))]  # fmt: skip
+    return rows, summary, series
 
 
-def main():
+COLUMNS = ["method", "n (rpm)", "product", "SKF", "ratio", "phi_ish product / SKF", "phi_rs product / SKF",
+           "drag product", "SKF drag R_s term", "V_M equivalent"]  # fmt: skip
+SUMMARY = ["bearing", "method", "ratio min", "ratio max", "ratio at top speed", "exponent product", "exponent SKF",
+           "exponent of the product's drag"]  # fmt: skip
+DRAG = (
+    "The drag: SKF's V_M term needs the drag-loss factor V_M of a catalogue diagram (not read here), so the table "
+    "gives the V_M at which SKF's drag equals the product's (Harris ball drag at the default level, the centre of the "
+    "lowest ball): compare it with the diagram's V_M at H/d_m of the case. SKF's R_s term alone is listed beside it."
+)
+
+
+def measure():
     eta, _, rho = lubricant_state(T_OIL, load_lubricant(LUBRICANT).array)
     nu = eta / rho * 1e6
-    lines = [
-        "# Lubrication methods against the SKF friction model",
-        "",
-        "Generated by `python -m benchmarks.lubrication_skf` on " + machine() + ". Product: quasi-static fidelity, "
-        f"shipped scene, lubrication method at its defaults (docs/lubrication_method.md; none fitted to SKF). "
-        f"SKF: `benchmarks/skf_friction.py` (its sources and the unverified constants there). Oil {LUBRICANT} at "
-        f"{T_OIL - 273.15:.0f} C, nu = {nu:.1f} mm^2/s for both. Torques in mN.m. 'product' is the contact torque "
-        "(Houpert components with the method's film factors) without the drag; 'SKF' is phi_ish phi_rs M_rr + M_sl "
-        "(bare M_rr + M_sl for flooded); ratio = product / SKF. Exponent: slope of ln M over ln n.",
-        "",
-    ]
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, axes = plt.subplots(1, 2, figsize=(12, 4.8))
-    summary = []
-    for case, ax in zip(CASES, axes):
-        b = load_bearing(case["bearing"])
-        n = np.array(case["speeds"])
-        level_mm = 0.5 * b.D * 1e3  # the bath's default level: centre of the lowest ball (0.5 D)
-        lines += [f"## {case['bearing']} (SKF {case['series']}), {case['load'][0]} = {case['load'][1]:.0f} N", ""]
-        if case["series"] == "72 B":
-            lines += [
-                "Caveat: SKF's general catalogue gives constants for the 72 B series (40 deg contact angle); the "
-                "B7214C has 15 deg. The SKF column is that series' model at the same size and load, not a model of "
-                "this bearing.",
-                "",
-            ]
-        lines += [
-            "| method | n (rpm) | product | SKF | ratio | phi_ish product / SKF | phi_rs product / SKF | "
-            "drag product | SKF drag R_s term | V_M equivalent |",
-            "|---|---|---|---|---|---|---|---|---|---|",
-        ]
+    blocks = [{"text": "Operating viscosity nu = {nu:.1f} mm^2/s for both.", "values": {"nu": nu}}]
+    summaries, panels = [], []
+    formats = ["{}", "{:.0f}", "{:.1f}", "{:.1f}", "{:.2f}", "{}", "{}", "{:.3f}", "{:.3f}", "{:.2e}"]
+    for case in CASES:
+        rows, series = [], []
         for method in METHODS:
-            p = product(case, method)
-            s = skf_rows(case, method, nu, level_mm)
-            contact = p[:, 0] - p[:, 1]
-            ratio = contact / s[:, 0]
-            for k, speed in enumerate(n):
-                drag = (
-                    f"{1e3 * p[k, 1]:.2f} | {1e3 * s[k, 1]:.3f} | {(p[k, 1] - s[k, 1]) / s[k, 2]:.2e}"
-                    if method == "oil_bath"
-                    else (f"{1e3 * p[k, 1]:.3f} | - | -" if p[k, 1] > 0.0 else "- | - | -")
-                )
-                lines.append(
-                    f"| {method} | {speed:.0f} | {1e3 * contact[k]:.1f} | {1e3 * s[k, 0]:.1f} | {ratio[k]:.2f} | "
-                    f"{p[k, 2]:.3f} / {s[k, 3]:.3f} | {p[k, 3]:.3f} / {s[k, 4]:.3f} | {drag} |"
-                )
-            e_p, e_s = exponent(n, contact), exponent(n, s[:, 0])
-            e_d = exponent(n, p[:, 1]) if p[-1, 1] > 0.0 else float("nan")
-            summary.append((case["bearing"], method, ratio.min(), ratio.max(), ratio[-1], e_p, e_s, e_d))
-            line = ax.loglog(n, 1e3 * contact, "--", label=f"product {method}")[0]
-            ax.loglog(n, 1e3 * s[:, 0], "-", color=line.get_color(), label=f"SKF {method}")
-        lines.append("")
-        ax.set_title(f"{case['bearing']}: contact torque, product (--) vs SKF (-)")
-        ax.set_xlabel("n (rpm)")
-        ax.set_ylabel("M (mN.m)")
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7, ncol=2)
-    lines += [
-        "## Summary: ratios product / SKF (without drag) and speed exponents",
-        "",
-        "| bearing | method | ratio min | ratio max | ratio at top speed | exponent product | exponent SKF | "
-        "exponent of the product's drag |",
-        "|---|---|---|---|---|---|---|---|",
-    ]
-    for row in summary:
-        lines.append(
-            f"| {row[0]} | {row[1]} | {row[2]:.2f} | {row[3]:.2f} | {row[4]:.2f} | {row[5]:.2f} | {row[6]:.2f} | "
-            + ("-" if math.isnan(row[7]) else f"{row[7]:.2f}")
-            + " |"
-        )
-    lines += [
-        "",
-        "The drag: SKF's V_M term needs the drag-loss factor V_M of a catalogue diagram (not read here), so the "
-        "table gives the V_M at which SKF's drag equals the product's (Harris ball drag at the default level, the "
-        "centre of the lowest ball): compare it with the diagram's V_M at H/d_m of the case. SKF's R_s term alone "
-        "is listed beside it.",
-        "",
-    ]
-    fig.tight_layout()
-    fig.savefig(REPORTS / "lubrication_skf.png", dpi=110)
-    lines.append("![torque over speed](lubrication_skf.png)")
-    write_report("lubrication_skf.md", "\n".join(lines) + "\n")
+            r, summary, s = compare(case, method, nu)
+            rows, series, summaries = rows + r, series + s, summaries + [summary]
+        caption = f"{case['bearing']} (SKF {case['series']}), {case['load'][0]} = {case['load'][1]:.0f} N."
+        caption += " " + CAVEAT if case["series"] == "72 B" else ""
+        blocks.append({"table": dict(caption=caption, columns=COLUMNS, formats=formats, rows=rows)})
+        panels.append(dict(title=f"{case['bearing']}: contact torque, product (--) vs SKF (-)", xlabel="n (rpm)",
+                           ylabel="M (mN.m)", xscale="log", yscale="log", series=series))  # fmt: skip
+    caption = "Summary: ratios product / SKF (without drag) and speed exponents."
+    blocks += [{"table": dict(caption=caption, columns=SUMMARY, formats=["{}"] * 2 + ["{:.2f}"] * 6, rows=summaries)},
+               {"text": DRAG}, {"figure": dict(file="lubrication_skf.png", caption="torque over speed", panels=panels,
+                                               size=(12, 4.8))}]  # fmt: skip
+    title, about = "Lubrication methods against the SKF friction model", __doc__.split("\n\n")[1].split("Run:")[0]
+    return dict(name="lubrication_skf", title=title, about=about, blocks=blocks, metrics=[])
+
+
+def main(argv=None):
+    cli(measure, "lubrication_skf")
 
 
 if __name__ == "__main__":

@@ -22,7 +22,9 @@ A benchmark only measures. Its measure() returns a result:
 
 Numbers reach prose only through a text block's "values" (formatted here), never written into the text.
 A PANEL is {"title", "xlabel", "ylabel", "xscale", "yscale", "series": [{"x", "y", "label", "style",
-"annotate"}], "hlines": [{"y", "label", "style"}]}; "annotate" labels each point of a series.
+"annotate"}], "hlines": [{"y", "label", "style"}]}; "annotate" labels each point of a series. Optional panel keys:
+"contour" {"x", "y", "z" (z[j][i] at y[j], x[i]), "levels", "label"} (filled, with a colour bar), "aspect"
+(e.g. "equal"), "ylim" [low, high].
 
 write(result) writes docs/reports/<name>.md, its figures and <name>.json (the result, for `--reuse` and for
 the report) and records its metrics in docs/reports/metrics.json (benchmarks.common.record).
@@ -92,6 +94,14 @@ def draw_panel(ax, panel):
             ax.annotate(text, (x, y), fontsize=7, xytext=(4, 2), textcoords="offset points")
     for line in panel.get("hlines", []):
         ax.axhline(line["y"], ls=line.get("style", "--"), color="grey", lw=0.8, label=line.get("label"))
+    if "contour" in panel:
+        c = panel["contour"]
+        filled = ax.contourf(c["x"], c["y"], c["z"], levels=c.get("levels", 12), extend="max", cmap="viridis")
+        ax.figure.colorbar(filled, ax=ax, label=c.get("label", ""))
+    if "aspect" in panel:
+        ax.set_aspect(panel["aspect"])
+    if "ylim" in panel:
+        ax.set_ylim(*panel["ylim"])
     ax.set_xscale(panel.get("xscale", "linear"))
     ax.set_yscale(panel.get("yscale", "linear"))
     ax.set_xlabel(panel.get("xlabel", ""))
