@@ -29,7 +29,7 @@ import numpy as np  # noqa: E402
 from bearing_fmu.kernels import ehl_solver as es  # noqa: E402
 from bearing_fmu.models import ehl_numerical as en  # noqa: E402
 
-from .render import cli  # noqa: E402
+from .render import cli, metric  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 DATA = ROOT / "tests" / "validation" / "data" / "thesis_annexe_d_ehl.csv"
@@ -88,8 +88,7 @@ def summary_rows(runs):
         for label, wide, _ in GROUPS:
             sel = [r for r in table if (r[3] >= 1.0) == wide]
             if sel:
-                within = sum(max(abs(r[7]), abs(r[10])) <= TOLERANCE[wide] for r in sel)
-                counts = [len(sel), sum(r[13].startswith("yes") for r in sel), within]
+                counts = [len(sel), sum(r[13].startswith("yes") for r in sel), sum(within(r) for r in sel)]
                 mean = [statistics.mean(abs(r[q]) for r in sel) for q in (7, 10)]
                 times = [r[-1] for r in sel]
                 rows.append([level, grid_size(level), label, *counts, *mean, statistics.median(times), max(times)])
@@ -155,7 +154,35 @@ def measure(levels=(LEVEL,), chosen=(), study=(), study_levels=(1, 2, 3, 4)):
     blocks += [{"table": {"caption": f"Level {level}, grid {grid_size(level)}, per case.", "columns": CASE_COLUMNS,
                           "formats": CASE_FORMATS, "rows": table}} for level, table in runs.items()]  # fmt: skip
     title = "Numerical EHL solver against the thesis' Annexe D"
-    return dict(name="ehl_solver", title=title, about=__doc__.split("\n\n")[1], blocks=blocks, metrics=[])
+    return dict(name="ehl_solver", title=title, about=__doc__.split("\n\n")[1], blocks=blocks, metrics=metrics(runs))
+
+
+MEDIAN_TARGET, WORST_TARGET = 5.0, 30.0  # s per Annexe D case on one core at the default level (docs/ehl_solver.md)
+
+
+def metrics(runs):
+    """Per level: cases converged and within tolerance (counts), median and worst time per case (the default level's
+    against its targets)."""
+    out = []
+    for level, table in runs.items():
+        times = [r[-1] for r in table]
+        wide = [r for r in table if r[3] >= 1.0]
+        default = level == LEVEL and len(table) == len(cases())
+        out += [
+            metric(f"level {level}: cases converged", sum(r[13].startswith("yes") for r in table), "1", "count"),
+            metric(f"level {level}: cases within tolerance", sum(within(r) for r in table), "1", "count"),
+            metric(f"level {level}: wide contacts within tolerance", sum(within(r) for r in wide), "1", "count"),
+            metric(f"level {level}: median time per case", statistics.median(times), "s", "timing",
+                   target=MEDIAN_TARGET if default else None),
+            metric(f"level {level}: worst time per case", max(times), "s", "timing",
+                   target=WORST_TARGET if default else None),
+        ]  # fmt: skip
+    return out
+
+
+def within(row):
+    """A case's h_c and h_min both within the validation's tolerance of the thesis'."""
+    return max(abs(row[7]), abs(row[10])) <= TOLERANCE[row[3] >= 1.0]
 
 
 def richardson(h):
@@ -196,7 +223,10 @@ def grid_study(chosen, levels):
         "the three finest; Richardson: the finest extrapolated with it (with order 2 where the observed one is "
         "outside 1-3); the default level's error: the default grid against that estimate."
     )
-    return dict(name="ehl_grid_study", title=title, about=about, blocks=blocks, metrics=[])
+    # the default grid's discretisation error of each case against its Richardson estimate (columns 6 and 12)
+    found = [metric(f"case {r[0]}: level {LEVEL} {q} error vs Richardson", r[i] / 100.0, "1", "error")
+             for r in rows for q, i in (("h_c", 6), ("h_min", 12)) if LEVEL in levels]  # fmt: skip
+    return dict(name="ehl_grid_study", title=title, about=about, blocks=blocks, metrics=found)
 
 
 def main(argv=None):

@@ -141,12 +141,13 @@ def markdown(result):
     return "\n".join(lines).rstrip() + "\n"
 
 
-def measured(measure, name, **options):
-    """Call measure(**options) and stamp the result with how it was run."""
+def measured(measure, name, command=None, **options):
+    """Call measure(**options) and stamp the result with how it was run (command: the command line that makes the
+    same result, where it is not `python -m benchmarks.<name>`)."""
     load_average, t0 = os.getloadavg()[0], time.perf_counter()
     result = measure(**options)
     result["run"] = dict(
-        command=f"python -m benchmarks.{name}",
+        command=command or f"python -m benchmarks.{name}",
         machine=f"{platform.processor() or platform.machine()}, Python {platform.python_version()}",
         cores=os.cpu_count(),
         load=load_average,
@@ -187,9 +188,9 @@ def last_result(name):
     return json.loads(path.read_text()) if path.exists() else None
 
 
-def cli(measure, name, **options):
+def cli(measure, name, command=None, **options):
     """A benchmark's command line: measure, write, done."""
-    return write(measured(measure, name, **options))
+    return write(measured(measure, name, command, **options))
 
 
 def metric(key, value, unit, kind, target=None, side_by_side=False, note=""):

@@ -70,7 +70,7 @@ KNOBS = (
         "ehl_film_table",
         "EHL film formula: Hamrock-Dowson, Masjedi-Khonsari, Chittenden",
         "the 55 full numerical EHL solutions of Wheeler (2016), Annexe D",
-        "ehl_film_errors.png",
+        "ehl_film_table.png",
     ),
     ("hertz_approximation", "Hertz: exact vs Hamrock-Brewe approximation", "exact Hertz (elliptic integrals)", None),
     ("solver_tolerance", "Quasi-static solver tolerance", "the same solve at tolerance 1e-14", "solver_tolerance.png"),
@@ -93,6 +93,12 @@ KNOBS = (
         "Numerical EHL solver: grid level against run time",
         "the 55 full numerical EHL solutions of Wheeler (2016), Annexe D, and the solver's own finer grids",
         "ehl_pareto.png",
+    ),
+    (
+        "ehl_grid_study",
+        "Numerical EHL solver: grid convergence of nine Annexe D cases",
+        "the Richardson estimate from the solver's three finest grids, and the thesis' values",
+        None,
     ),
     (
         "ehl_fields",
@@ -190,7 +196,18 @@ DEFAULTS = (
     ),
 )
 # A benchmark whose report file is named otherwise than the benchmark
-REPORT_FILES = {"ehl_film_table": "ehl_film_errors"}
+REPORT_FILES = {}
+
+
+# results made by another module's measure(): name -> (module, its options, the command that makes it alone)
+GRID_STUDY_CASES = (6, 11, 14, 17, 20, 28, 33, 44, 47)  # a light, a heavy and a slender case of each kind
+VARIANTS = {
+    "ehl_grid_study": (
+        "ehl_solver",
+        dict(study=GRID_STUDY_CASES),
+        "python -m benchmarks.ehl_solver --study " + ",".join(map(str, GRID_STUDY_CASES)),
+    ),
+}
 
 
 def run_benchmarks(names):
@@ -199,14 +216,15 @@ def run_benchmarks(names):
     forget(MACHINE)
     forget(CONTENTION)
     for name in names:
-        module = importlib.import_module(f"benchmarks.{name}")
+        module_name, options, command = VARIANTS.get(name, (name, BENCHMARK_OPTIONS.get(name, {}), None))
+        module = importlib.import_module(f"benchmarks.{module_name}")
         record(MACHINE, f"reference workload before {name}", machine_speed(), "s", kind="machine")
         record(CONTENTION, f"wall / CPU before {name}", core_contention(), "1", kind="machine")
         t0 = time.perf_counter()
         print(f"== {name}", flush=True)
         forget(name)
         if hasattr(module, "measure"):
-            render.cli(module.measure, name, **BENCHMARK_OPTIONS.get(name, {}))
+            render.cli(module.measure, name, command, **options)
         elif "argv" in inspect.signature(module.main).parameters:  # a command-line main: its arguments, never sys.argv
             module.main(BENCHMARK_ARGS.get(name, []))
         else:
@@ -487,7 +505,7 @@ def main(argv=None):
             shutil.copy(METRICS, PREVIOUS)
         everything = [REFERENCES] + [k[0] for k in KNOBS] + [t for t in TIMINGS if t not in [k[0] for k in KNOBS]]
         names = args.only or everything
-        available = [n for n in names if (Path(__file__).parent / f"{n}.py").exists()]
+        available = [n for n in names if (Path(__file__).parent / f"{VARIANTS.get(n, (n,))[0]}.py").exists()]
         seconds = run_benchmarks(available)
     elif PREVIOUS.exists():
         previous = json.loads(PREVIOUS.read_text())
