@@ -22,7 +22,8 @@ A benchmark only measures. Its measure() returns a result:
 
 Numbers reach prose only through a text block's "values" (formatted here), never written into the text.
 A PANEL is {"title", "xlabel", "ylabel", "xscale", "yscale", "series": [{"x", "y", "label", "style",
-"annotate"}], "hlines": [{"y", "label", "style"}]}; "annotate" labels each point of a series.
+"annotate"}], "hlines": [{"y", "label", "style"}], "ylim": [low, high] (optional)}; "annotate" labels each point
+of a series.
 
 write(result) writes docs/reports/<name>.md, its figures and <name>.json (the result, for `--reuse` and for
 the report) and records its metrics in docs/reports/metrics.json (benchmarks.common.record).
@@ -92,6 +93,8 @@ def draw_panel(ax, panel):
             ax.annotate(text, (x, y), fontsize=7, xytext=(4, 2), textcoords="offset points")
     for line in panel.get("hlines", []):
         ax.axhline(line["y"], ls=line.get("style", "--"), color="grey", lw=0.8, label=line.get("label"))
+    if panel.get("ylim"):
+        ax.set_ylim(*panel["ylim"])
     ax.set_xscale(panel.get("xscale", "linear"))
     ax.set_yscale(panel.get("yscale", "linear"))
     ax.set_xlabel(panel.get("xlabel", ""))
