@@ -82,11 +82,13 @@ def measure(repeats=REPEATS, fmu_dir=FMU_DIR, python=sys.executable, names=tuple
     for name in names:
         rows.append(starts(name, fmu_dir, repeats, python))
         print(*rows[-1], flush=True)
-    runs = ", ".join(f"{n} {c['stop_time']:g} s at {c['output_interval']:g} s steps" for n, c in CASES.items())
+    runs = ", ".join(
+        f"{n} {c['stop_time']:g} s at {c['output_interval']:g} s steps" for n, c in CASES.items() if n in names
+    )
     return dict(
         name="first_start",
         title="First start of the FMUs",
-        about=__doc__.split("\n", 2)[2].split("Run:")[0],
+        about=__doc__.split("Run:")[0],
         blocks=[
             dict(text=METHOD, values=dict(repeats=repeats, runs=runs)),
             dict(
@@ -110,11 +112,8 @@ def measure(repeats=REPEATS, fmu_dir=FMU_DIR, python=sys.executable, names=tuple
     )
 
 
-METHOD = """First `fmpy.simulate_fmu` of each FMU in a new process whose user cache is empty (`HOME`, \
-`XDG_CACHE_HOME` and `BEARING_FMU_CACHE` in a new temporary directory), then a later start: a second new process \
-on the cache the first left. Medians of {repeats} fresh caches. Process = interpreter start, `import fmpy`, \
-extraction, instantiation and the run; its CPU time (user + system, all threads) is about the wall time on an \
-idle machine; simulate = `simulate_fmu` alone (wall). Runs: {runs}."""
+METHOD = """Medians of {repeats} fresh caches; a later start is a second new process on the cache the first \
+left. The process's CPU time is user + system, all threads; simulate = `simulate_fmu` alone (wall). Runs: {runs}."""
 
 READING = """Nothing is compiled at a first start (the FMU's compiled code is loaded): a start is importing numba \
 and numpy, numba's target initialisation and loading the compiled code. The target (<= {target:g} s for \

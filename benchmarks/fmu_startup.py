@@ -3,8 +3,8 @@ instantiate + first doStep <= 2 s; quasi-static doStep <= 1 ms; doStep with ever
 the compiled kernels of the same solve).
 
 Each start-up run is a fresh process with its own numba cache directory (BEARING_FMU_CACHE):
-the first run in an empty directory pays the first-ever compilation; the following runs hit the
-cache. Reported: medians of instantiate + first doStep inside the process, whole-process wall, the
+the first run starts on an empty directory (the FMU's compiled code is loaded); the following runs
+find it filled. Reported: medians of instantiate + first doStep inside the process, whole-process wall, the
 cost of a doStep with every output read, and the kernel calls of those same steps replayed alone
 (benchmarks/kernel_replay.py).
 Run: python -m benchmarks.fmu_startup -> docs/reports/fmu_startup.md
@@ -144,7 +144,7 @@ def measure(warm_runs=7):
     return dict(
         name="fmu_startup",
         title="FMU start-up and step cost",
-        about=__doc__.split("\n", 2)[2].split("Run:")[0],
+        about=__doc__.split("Run:")[0],
         blocks=[
             dict(text=METHOD),
             dict(
@@ -172,18 +172,17 @@ def measure(warm_runs=7):
 
 
 COLUMNS = ("step_all_outputs", "step_cpu", "step_cpu_batched", "kernels")
-METHOD = """Fresh process per run, fmpy FMU2Slave; 'start-up' = instantiate + initialise + first doStep; numba \
-cache in a fresh directory. Step cost: 2000 doSteps, each with one input changed by up to 2 % (the solver \
-warm-starts), reading every output. Kernels: the same 2000 steps from the same FMU state with every kernel call \
-recorded, those calls replayed alone on fresh copies of their arguments (`benchmarks/kernel_replay.py`): the \
-compiled cost of the same solves. Five rounds of (steps, batched steps, replay), each from the same state, so that \
-the three share the machine's state; medians over the rounds, ratios per round. Two hosts: fmpy's convenience \
-calls (`setReal`, `doStep`, `getReal`, `getInteger`: each builds its ctypes arrays from Python lists) and the way \
-`spindle.cosim.master` calls the FMU once its variables are resolved (the same four FMI functions on preallocated \
-ctypes arrays: 'batched'). The ratios are of CPU times measured in the same process (`time.process_time`, which \
-other processes on the shared cores do not lengthen); the wall times are given for the step target. For the \
-analytic kernel, which takes a few microseconds, the fixed cost of four FMI calls per step (fmpy ctypes, the FMI \
-layer's C-to-Python dispatch) is a large part of a step."""
+METHOD = """Host: fmpy FMU2Slave; 'start-up' = instantiate + initialise + first doStep. Step cost: 2000 doSteps, each \
+with one input changed by up to 2 % (the solver warm-starts), reading every output. Kernels: the same 2000 steps from \
+the same FMU state with every kernel call recorded, those calls replayed alone on fresh copies of their arguments \
+(`benchmarks/kernel_replay.py`): the compiled cost of the same solves. Five rounds of (steps, batched steps, replay), \
+each from the same state, so that the three share the machine's state; medians over the rounds, ratios per round. Two \
+hosts: fmpy's convenience calls (`setReal`, `doStep`, `getReal`, `getInteger`: each builds its ctypes arrays from \
+Python lists) and the way `spindle.cosim.master` calls the FMU once its variables are resolved (the same four FMI \
+functions on preallocated ctypes arrays: 'batched'). The ratios are of CPU times measured in the same process \
+(`time.process_time`, which other processes on the shared cores do not lengthen); the wall times are given for the \
+step target. For the analytic kernel, which takes a few microseconds, the fixed cost of four FMI calls per step (fmpy \
+ctypes, the FMI layer's C-to-Python dispatch) is a large part of a step."""
 
 
 def main(argv=None):

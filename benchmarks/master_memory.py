@@ -35,6 +35,7 @@ BEARING_FMU = ROOT / "fmus" / "Bearing.fmu"
 STEP = 0.01  # s, communication step of the projected run
 DAY = 86400.0  # s, length of the projected run
 PAGE = os.sysconf("SC_PAGE_SIZE")
+WARM_UP = 20  # create/free cycles before the first RSS sample
 
 
 def rss_mb():
@@ -79,8 +80,7 @@ def child_cycles(cycles, blocks=3):
     from fmpy import extract, read_model_description
     from fmpy.fmi2 import FMU2Slave
 
-    md = read_model_description(str(BEARING_FMU))
-    unzip = extract(str(BEARING_FMU))
+    md, unzip = read_model_description(str(BEARING_FMU)), extract(str(BEARING_FMU))
 
     def cycle(k):
         slave = FMU2Slave(
@@ -94,14 +94,12 @@ def child_cycles(cycles, blocks=3):
         slave.terminate()
         slave.freeInstance()
 
-    warm_up = 20
-    for k in range(warm_up):
+    for k in range(WARM_UP):
         cycle(k)
-    rss = [rss_mb()]
-    t0 = time.perf_counter()
+    rss, t0 = [rss_mb()], time.perf_counter()
     for block in range(blocks):
         for k in range(cycles):
-            cycle(warm_up + block * cycles + k)
+            cycle(WARM_UP + block * cycles + k)
         rss.append(rss_mb())
     print(json.dumps({"rss": rss, "seconds": (time.perf_counter() - t0) / (blocks * cycles)}))
 
@@ -131,31 +129,18 @@ def measure(seconds=600.0, cycles=1000):
     blocks = in_child("cycles", cycles)
     rss = blocks["rss"]
     growth = [b - a for a, b in zip(rss, rss[1:])]
+    cycle_rows = [[k + 1, f"{k * cycles + 1}-{(k + 1) * cycles}", rss[k + 1], g] for k, g in enumerate(growth)]
     values = dict(seconds=seconds, steps=round(seconds / STEP), step=1e3 * STEP, day_steps=DAY / STEP, cycles=cycles,
-                  warm_rss=rss[0], per_cycle=blocks["seconds"])  # fmt: skip
+                  warm_up=WARM_UP, warm_rss=rss[0], per_cycle=blocks["seconds"])  # fmt: skip
     return dict(
         name="master_memory",
         title="Master memory: flat in run length and in instance count",
         about=__doc__.split("\n", 2)[2].split("    python -m")[0],
         blocks=[
             dict(text=RUN_LENGTH, values=values),
-            dict(
-                table=dict(
-                    columns="recording|RSS at start (MB)|peak (MB)|end (MB)|slope (MB per simulated hour)|projected "
-                    "24 h growth (MB)|rows".split("|"),
-                    formats=[None, "{:.1f}", "{:.1f}", "{:.1f}", "{:.2f}", "{:.1f}", "{}"],
-                    rows=runs,
-                )
-            ),
+            dict(table=dict(columns=RUN_COLUMNS, formats=[None, *["{:.1f}"] * 3, "{:.2f}", "{:.1f}", None], rows=runs)),
             dict(text=INSTANCES, values=values),
-            dict(
-                table=dict(
-                    columns=["block", "cycles", "RSS after the block (MB)", "growth in the block (MB)"],
-                    formats=[None, None, "{:.1f}", "{:.2f}"],
-                    rows=[[k + 1, f"{k * cycles + 1}-{(k + 1) * cycles}", rss[k + 1], g] for k, g in enumerate(growth)],
-                )
-            ),
-            dict(text=INSTANCES_READING, values=values),
+            dict(table=dict(columns=CYCLE_COLUMNS, formats=[None, None, "{:.1f}", "{:.2f}"], rows=cycle_rows)),
         ],
         metrics=[
             *(metric(f"{r[0]}: RSS growth projected to 24 h at 10 ms", r[5], "MB", "resource", 200.0) for r in runs),
@@ -164,23 +149,19 @@ def measure(seconds=600.0, cycles=1000):
     )
 
 
+RUN_COLUMNS = "recording|RSS at start (MB)|peak (MB)|end (MB)|slope (MB per simulated hour)|projected 24 h growth \
+(MB)|rows".split("|")
+CYCLE_COLUMNS = ["block", "cycles", "RSS after the block (MB)", "growth in the block (MB)"]
 RUN_LENGTH = """## Run length: closed-loop demo at {step:g} ms, {seconds:g} s simulated ({steps} steps)
 
-RSS sampled every 0.5 s in a fresh process per mode, from just before `Master.run` (the FMUs instantiated) to its \
-end. The slope is a least-squares fit over the second half of the run; the projection adds slope x (24 h - run \
-length) to the last sample. Target: within 200 MB of the start. Arrays are preallocated for the recorded rows \
-(8 bytes per recorded value): every step of a day in memory would be {day_steps:.3g} rows, so a day at every step \
-is streamed to CSV (`spindle run` always streams) or recorded at an interval."""
+RSS from just before `Master.run` (the FMUs instantiated) to its end; the projection adds slope x (24 h - run \
+length) to the last sample. Arrays are preallocated for the recorded rows (8 bytes per recorded value): every step \
+of a day would be {day_steps:.3g} rows, so a day at every step is streamed to CSV or recorded at an interval."""
 
 INSTANCES = """## Instances: create/free cycles of Bearing.fmu in one fmpy host
 
-Each cycle: instantiate, setupExperiment, enter/exit initialisation, one doStep, terminate, freeInstance (the FMU \
-extracted once). Three blocks one after the other, after 20 warm-up cycles (RSS {warm_rss:.1f} MB); \
-{per_cycle:.3f} s per cycle:"""
-
-INSTANCES_READING = """Target: {cycles} cycles grow RSS by < 5 MB. The first block carries the one-time growth of a \
-process that starts creating instances (allocator arenas and caches filled on first use); the blocks after it show \
-what each further {cycles} instances cost, i.e. the leak per instance."""
+Each cycle: instantiate, setupExperiment, enter/exit initialisation, one doStep, terminate, freeInstance. RSS \
+after {warm_up} warm-up cycles: {warm_rss:.1f} MB; {per_cycle:.3f} s per cycle."""
 
 
 def main(argv=None):

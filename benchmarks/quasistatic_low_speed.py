@@ -75,7 +75,7 @@ def measure():
     return dict(
         name="quasistatic_low_speed",
         title="Quasi-static model from rest and at low speed",
-        about=__doc__.split("\n", 2)[2].split("Run:")[0],
+        about=__doc__.split("Run:")[0],
         blocks=[
             dict(
                 text="Grid: {rpm} rpm x loads {loads}. Work = largest `iterations` output (bearing evaluations after "

@@ -181,12 +181,13 @@ def measure():
     return dict(
         name="quasistatic_timing",
         title="Quasi-static solver timing (medians)",
-        about=__doc__.split("\n", 2)[2].split("Run:")[0],
+        about=__doc__.split("Run:")[0],
         blocks=[
             dict(text=SETUP, values=dict(n_solve=N_SOLVE, n_loads=N_LOADS, tolerance=scene(False).tolerance)),
             table(
-                "target|measured median, worst case of the tables below|minimum of the batches|case|median / target",
-                "|{:.1f}|{:.1f}||{:.3f}",
+                "target|measured median, worst case of the tables below|minimum of the batches|unit|case"
+                "|median / target",
+                "|{:.1f}|{:.1f}|||{:.3f}",
                 target_rows,
                 "## Targets (performance budget, docs/architecture.md) against the measured medians",
             ),
@@ -236,10 +237,10 @@ def targets(solves, loads):
         ("warm solve at 10 000 rpm, centrifugal + gyroscopic <= 500 us", True, TARGET_SPEED),
     ):
         c, _, warm = max((r for r in solves if (r[0].rpm > 0.0) == moving), key=lambda r: r[2][0])
-        rows.append([what + " (us)", 1e6 * warm[0], 1e6 * warm[1], c.label, warm[0] / budget])
+        rows.append([what, 1e6 * warm[0], 1e6 * warm[1], "us", c.label, warm[0] / budget])
         metrics.append(metric(what, warm[0], "s", "timing", target=budget, note=c.label))
     c, *_, extra = max(loads, key=lambda x: x[4][0])
-    rows.append(["Jacobian <= 50 % extra (%)", 100 * extra[0], 100 * extra[1], c.label, extra[0] / TARGET_JACOBIAN])
+    rows.append(["Jacobian <= 50 % extra", 100 * extra[0], 100 * extra[1], "%", c.label, extra[0] / TARGET_JACOBIAN])
     metrics.append(metric("Jacobian extra", extra[0], "1", "timing", TARGET_JACOBIAN, side_by_side=True, note=c.label))
     return rows, metrics
 
