@@ -91,14 +91,7 @@ def measure(repeats=REPEATS, fmu_dir=FMU_DIR, python=sys.executable, names=tuple
         about=__doc__.split("Run:")[0],
         blocks=[
             dict(text=METHOD, values=dict(repeats=repeats, runs=runs)),
-            dict(
-                table=dict(
-                    columns="FMU|first start: process wall (s)|its CPU time (s)|simulate_fmu (s)|later start: process "
-                    "wall (s)|its CPU time (s)|simulate_fmu (s)|first starts, wall (s)|target (s)".split("|"),
-                    formats=[None, *["{:.2f}"] * 6, None, "<= {:g}"],
-                    rows=rows,
-                )
-            ),
+            dict(table=dict(columns=COLUMNS, formats=[None, *["{:.2f}"] * 6, None, "<= {:g}"], rows=rows)),
             dict(text=READING, values=dict(target=TARGET_S["Bearing"])),
         ],
         metrics=[
@@ -112,6 +105,10 @@ def measure(repeats=REPEATS, fmu_dir=FMU_DIR, python=sys.executable, names=tuple
     )
 
 
+COLUMNS = (
+    "FMU|first start: process wall (s)|its CPU time (s)|simulate_fmu (s)|later start: process wall (s)"
+    "|its CPU time (s)|simulate_fmu (s)|first starts, wall (s)|target (s)"
+).split("|")
 METHOD = """Medians of {repeats} fresh caches; a later start is a second new process on the cache the first \
 left. The process's CPU time is user + system, all threads; simulate = `simulate_fmu` alone (wall). Runs: {runs}."""
 
@@ -132,10 +129,7 @@ def main(argv=None):
     parser.add_argument("names", nargs="*", default=list(CASES))
     args = parser.parse_args(argv)
     options = dict(repeats=args.repeats, fmu_dir=args.fmu_dir, python=args.python, names=args.names)
-    if args.no_report:
-        measure(**options)
-    else:
-        cli(measure, "first_start", **options)
+    measure(**options) if args.no_report else cli(measure, "first_start", **options)
 
 
 if __name__ == "__main__":

@@ -108,12 +108,10 @@ print(json.dumps({"startup": t2 - t1, "imports": t1 - t0, "step_all_outputs": me
 def run_once(name, cache_dir):
     varied, base, held = CASES[name]
     env = dict(os.environ, BEARING_FMU_CACHE=str(cache_dir))
+    command = [sys.executable, "-c", CHILD, str(ROOT / "fmus" / f"{name}.fmu"), varied, str(base), json.dumps(held)]
     t0 = time.perf_counter()
-    fmu = str(ROOT / "fmus" / f"{name}.fmu")
-    command = [sys.executable, "-c", CHILD, fmu, varied, str(base), json.dumps(held), str(ROOT)]
-    proc = subprocess.run(command, capture_output=True, text=True, env=env, check=True)
-    wall = time.perf_counter() - t0
-    return json.loads(proc.stdout.strip().splitlines()[-1]) | {"wall": wall}
+    proc = subprocess.run([*command, str(ROOT)], capture_output=True, text=True, env=env, check=True)
+    return json.loads(proc.stdout.strip().splitlines()[-1]) | {"wall": time.perf_counter() - t0}
 
 
 def measure(warm_runs=7):
@@ -147,31 +145,26 @@ def measure(warm_runs=7):
         about=__doc__.split("Run:")[0],
         blocks=[
             dict(text=METHOD),
-            dict(
-                table=dict(
-                    columns="FMU|run|start-up (s)|whole process (s)|doStep + read all outputs, wall (us)|the same, "
-                    "CPU (us)|batched, CPU (us)|kernels alone, CPU (us)|ratio (CPU)|ratio batched (CPU)|step "
-                    "target (us)".split("|"),
-                    formats=[None, None, "{:.3f}", "{:.2f}", *["{:.0f}"] * 4, "{:.2f}", "{:.2f}", "{:.0f}"],
-                    rows=rows,
-                )
-            ),
-            dict(
-                table=dict(
-                    caption="Warm medians against the targets (doStep: wall time; the ratios: CPU time, median "
-                    "over the warm runs of each run's own ratio):",
-                    columns="FMU|warm start-up (s)|target (s)|doStep + all outputs (us)|target (us)|batched / "
-                    "kernels|fmpy convenience calls / kernels|target".split("|"),
-                    formats=[None, "{:.3f}", "{:g}", "{:.0f}", "{:.0f}", "{:.2f}", "{:.2f}", "{:g}"],
-                    rows=summary,
-                )
-            ),
+            dict(table=dict(columns=RUN_COLUMNS, formats=RUN_FORMATS, rows=rows)),
+            dict(table=dict(caption=SUMMARY, columns=SUMMARY_COLUMNS, formats=SUMMARY_FORMATS, rows=summary)),
         ],
         metrics=metrics,
     )
 
 
 COLUMNS = ("step_all_outputs", "step_cpu", "step_cpu_batched", "kernels")
+RUN_COLUMNS = (
+    "FMU|run|start-up (s)|whole process (s)|doStep + read all outputs, wall (us)|the same, CPU (us)|batched, CPU (us)"
+    "|kernels alone, CPU (us)|ratio (CPU)|ratio batched (CPU)|step target (us)"
+).split("|")
+RUN_FORMATS = [None, None, "{:.3f}", "{:.2f}", *["{:.0f}"] * 4, "{:.2f}", "{:.2f}", "{:.0f}"]
+SUMMARY = "Warm medians against the targets (doStep: wall time; the ratios: CPU time, median over the warm runs of \
+each run's own ratio):"
+SUMMARY_COLUMNS = (
+    "FMU|warm start-up (s)|target (s)|doStep + all outputs (us)|target (us)|batched / kernels"
+    "|fmpy convenience calls / kernels|target"
+).split("|")
+SUMMARY_FORMATS = [None, "{:.3f}", "{:g}", "{:.0f}", "{:.0f}", "{:.2f}", "{:.2f}", "{:g}"]
 METHOD = """Host: fmpy FMU2Slave; 'start-up' = instantiate + initialise + first doStep. Step cost: 2000 doSteps, each \
 with one input changed by up to 2 % (the solver warm-starts), reading every output. Kernels: the same 2000 steps from \
 the same FMU state with every kernel call recorded, those calls replayed alone on fresh copies of their arguments \

@@ -71,29 +71,26 @@ def measure():
         rows += [case(f"{bearing} low-speed grid, warm", bearing, grid)]
         rows += [case(f"{bearing} low-speed grid, cold", bearing, grid, fresh=True)]
     refused, slowest = sum(r[2] for r in rows), 1e-3 * max(r[4] for r in rows)
-    verdict = "met" if slowest <= TARGET else "NOT met"
+    values = dict(rpm=", ".join(f"{r:g}" for r in GRID_RPM), loads=GRID_LOADS, refused=refused,
+                  slowest=1e3 * slowest, target=1e3 * TARGET, verdict="met" if slowest <= TARGET else "NOT met")  # fmt: skip
     return dict(
         name="quasistatic_low_speed",
         title="Quasi-static model from rest and at low speed",
         about=__doc__.split("Run:")[0],
         blocks=[
-            dict(
-                text="Grid: {rpm} rpm x loads {loads}. Work = largest `iterations` output (bearing evaluations after "
-                "the first).",
-                values=dict(rpm=", ".join(f"{r:g}" for r in GRID_RPM), loads=GRID_LOADS),
-            ),
             dict(table=dict(columns=COLUMNS, formats=[None, "{}", "{}", "{:.2f}", "{:.2f}", "{}"], rows=rows)),
-            dict(
-                text="Refused steps in all: {refused}. Slowest step (median of its repeats): {slowest:.2f} ms "
-                "against the target {target:.0f} ms: {verdict}.",
-                values=dict(refused=refused, slowest=1e3 * slowest, target=1e3 * TARGET, verdict=verdict),
-            ),
+            dict(text=SUMMARY, values=values),
         ],
         metrics=[
             metric("refused steps", refused, "1", "count", target=0),
             metric("slowest step (median of its repeats)", slowest, "s", "timing", target=TARGET),
         ],
     )
+
+
+SUMMARY = """Grid: {rpm} rpm x loads {loads}. Work = largest `iterations` output (bearing evaluations after the \
+first). Refused steps in all: {refused}. Slowest step (median of its repeats): {slowest:.2f} ms against the target \
+{target:.0f} ms: {verdict}."""
 
 
 def main(argv=None):

@@ -125,27 +125,23 @@ class Case:
 
 
 def cases():
-    axial, combined = {"F_z": 800.0}, {"F_z": 800.0, "F_y": 1000.0}
+    axial, combined, speed = {"F_z": 800.0}, {"F_z": 800.0, "F_y": 1000.0}, 10000.0
     return [
         Case("6208 (Z = 9), rest, F_y = 3 kN", "6208", {"F_y": 3000.0}, 0.0),
         Case("6208 (Z = 9), rest, F_y = 3 kN + F_z = 1 kN", "6208", {"F_y": 3000.0, "F_z": 1000.0}, 0.0),
         Case("B7214C (Z = 17), rest, F_z = 800 N", "B7214C", axial, 0.0),
         Case("B7214C (Z = 17), rest, F_z = 800 N + F_y = 1 kN", "B7214C", combined, 0.0),
-        Case("B7214C, 10 000 rpm, ORCG (outer + gyro), F_z = 800 N", "B7214C", axial, 10000.0, "outer", True),
-        Case("B7214C, 10 000 rpm, ORCG, F_z = 800 N + F_y = 1 kN", "B7214C", combined, 10000.0, "outer", True),
-        Case("B7214C, 10 000 rpm, hybrid + gyro, F_z = 800 N", "B7214C", axial, 10000.0, "hybrid", True),
-        Case(
-            "B7214C, 10 000 rpm, hybrid + gyro, F_z = 800 N + F_y = 1 kN", "B7214C", combined, 10000.0, "hybrid", True
-        ),
+        Case("B7214C, 10 000 rpm, ORCG (outer + gyro), F_z = 800 N", "B7214C", axial, speed, "outer", True),
+        Case("B7214C, 10 000 rpm, ORCG, F_z = 800 N + F_y = 1 kN", "B7214C", combined, speed, "outer", True),
+        Case("B7214C, 10 000 rpm, hybrid + gyro, F_z = 800 N", "B7214C", axial, speed, "hybrid", True),
+        Case("B7214C, 10 000 rpm, hybrid + gyro, F_z = 800 N + F_y = 1 kN", "B7214C", combined, speed, "hybrid", True),
     ]
 
 
 def facade_times(case):
     """QuasiStaticModel.evaluate at the case's inputs: state at the solution (repeat of the same step)
     and state reset to the 1 % neighbour before each call (a co-simulation step)."""
-    m = case.model
-    inputs = {n: float(v) for n, v in zip(LOAD_NAMES, case.F) if v}
-    inputs.update(omega=case.omega, T_oil=T_OIL)
+    m, inputs = case.model, {n: float(v) for n, v in zip(LOAD_NAMES, case.F) if v} | dict(omega=case.omega, T_oil=T_OIL)
 
     def reset_only():
         m.d[:], m.X[:] = case.d_near, case.X_near
@@ -154,16 +150,13 @@ def facade_times(case):
         reset_only()
         return m.evaluate(**inputs)
 
-    t_step = median_time(step, number=300)
-    t_reset = median_time(reset_only, number=300)
+    t_step, t_reset = median_time(step, number=300), median_time(reset_only, number=300)
     step()
     iters_step = m.status[1]
     t_same = median_time(lambda: m.evaluate(**inputs), number=300)
     iters_same = m.status[1]
-    cp, lub = m.cp, m.lubricant.array
-    t_contacts = median_time(
-        ck.contact_outputs, case.omega, T_OIL, cp, lub, m.balls, m.out, m.per_contact, m._losses, number=2000
-    )
+    contacts = (case.omega, T_OIL, m.cp, m.lubricant.array, m.balls, m.out, m.per_contact, m._losses)
+    t_contacts = median_time(ck.contact_outputs, *contacts, number=2000)
     return t_step - t_reset, iters_step, t_same, iters_same, t_contacts, t_reset
 
 
