@@ -112,3 +112,18 @@ def record(benchmark, key, value, unit, *, kind, target=None, note="", side_by_s
     )
     REPORTS.mkdir(parents=True, exist_ok=True)
     METRICS.write_text(json.dumps(metrics, indent=1) + "\n")
+
+
+def rotated_batches(calls, repeats):
+    """Wall times (s) of `repeats` calls of each zero-argument callable in the list `calls`, one list per callable,
+    after a warm-up call of each. Every repeat calls each once, the order rotated by one each repeat, so a slow
+    phase of the shared machine hits all of them alike."""
+    for fn in calls:
+        fn()  # warm-up (compilation, caches)
+    times = [[] for _ in calls]
+    for r in range(repeats):
+        for k in [*range(r % len(calls), len(calls)), *range(r % len(calls))]:
+            t0 = time.perf_counter()
+            calls[k]()
+            times[k].append(time.perf_counter() - t0)
+    return times

@@ -1,15 +1,15 @@
 """The compiled-kernel floor of a run: record every kernel call a run makes, then replay the calls alone.
 
-CPU time of this process (time.process_time) is the default clock: on cores shared with other
-processes it is not lengthened by their work, so a ratio of two such times measured minutes apart
-stays meaningful. `KernelRecorder(modules)` wraps each numba dispatcher found in the given modules for the duration of a
-`with` block and records every call with copies of its array arguments taken before the call (the
-warm-start state a kernel reads is part of its work). `replay_time(calls)` then repeats exactly those
-calls, in order, on fresh copies and returns the median wall time: what the run would cost with no
-Python between the kernels (no facade, no FMI, no master). Facades call kernels through their module
-(``qk.solve_quasistatic``), so wrapping the module attribute sees every call they make.
+`KernelRecorder(modules)` wraps each numba dispatcher of the given modules for the duration of a `with` block and
+records every call with copies of its array arguments taken before the call (the warm-start state a kernel reads
+is part of its work); facades call kernels through their module (``qk.solve_quasistatic``), so wrapping the
+module attribute sees every call they make. `replay_time(calls)` repeats exactly those calls, in order, on fresh
+copies: what the run would cost with no Python between the kernels (no facade, no FMI, no master). Its default
+clock is this process's CPU time, which other processes on shared cores do not lengthen.
 """
 
+import collections
+import importlib
 import statistics
 import time
 
@@ -17,11 +17,8 @@ import numpy as np
 from numba.core.dispatcher import Dispatcher
 
 # modules whose kernels a co-simulation step calls (the facades' and the thermal model's entry points)
-BEARING_KERNEL_MODULES = (
-    "bearing_fmu.kernels.jones_harris",
-    "bearing_fmu.kernels.contacts",
-    "bearing_fmu.kernels.bearing_outputs",
-    "bearing_fmu.kernels.radial_bearing",
+BEARING_KERNEL_MODULES = tuple(
+    f"bearing_fmu.kernels.{m}" for m in ("jones_harris", "contacts", "bearing_outputs", "radial_bearing")
 )
 KERNEL_MODULES = (*BEARING_KERNEL_MODULES, "spindle.thermal.network")
 
@@ -31,40 +28,28 @@ def _snapshot(args):
 
 
 class KernelRecorder:
-    """Context manager recording (dispatcher, argument copies) of every call to a kernel of `modules`
-    (module names; those not imported yet are imported)."""
+    """Context manager recording (dispatcher, argument copies) of every call to a kernel of `modules`."""
 
     def __init__(self, modules=KERNEL_MODULES):
-        self.modules = [__import__(name, fromlist=["_"]) for name in modules]
-        self.calls = []
-        self._saved = []
+        self.modules, self.calls, self._saved = [importlib.import_module(name) for name in modules], [], []
 
     def __enter__(self):
+        calls = self.calls
         for module in self.modules:
-            for name, obj in list(vars(module).items()):
-                if isinstance(obj, Dispatcher):
-                    self._saved.append((module, name, obj))
-                    setattr(module, name, self._wrap(obj))
+            for name, fn in list(vars(module).items()):
+                if isinstance(fn, Dispatcher):
+                    self._saved.append((module, name, fn))
+                    setattr(module, name, lambda *args, fn=fn: calls.append((fn, _snapshot(args))) or fn(*args))
         return self
 
-    def _wrap(self, dispatcher):
-        calls = self.calls
-
-        def recorded(*args):
-            calls.append((dispatcher, _snapshot(args)))
-            return dispatcher(*args)
-
-        return recorded
-
     def __exit__(self, *exc):
-        for module, name, obj in self._saved:
-            setattr(module, name, obj)
+        for module, name, fn in self._saved:
+            setattr(module, name, fn)
         self._saved = []
 
 
 def replay_time(calls, repeats=5, clock=time.process_time):
-    """Median time (s, by `clock`: this process's CPU time unless told otherwise) of replaying `calls` in
-    order, each repeat on fresh argument copies."""
+    """Median time (s, by `clock`) of replaying `calls` in order, each repeat on fresh argument copies."""
     samples = []
     for _ in range(repeats):
         work = [(fn, _snapshot(args)) for fn, args in calls]
@@ -76,8 +61,5 @@ def replay_time(calls, repeats=5, clock=time.process_time):
 
 
 def kernel_names(calls):
-    """Number of calls per kernel name (for the report)."""
-    counts = {}
-    for fn, _ in calls:
-        counts[fn.py_func.__name__] = counts.get(fn.py_func.__name__, 0) + 1
-    return counts
+    """Number of calls per kernel name."""
+    return dict(collections.Counter(fn.py_func.__name__ for fn, _ in calls))

@@ -27,7 +27,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .common import machine, record, write_report
+from .render import cli, metric
 
 ROOT = Path(__file__).resolve().parent.parent
 DEMO = ROOT / "runs" / "closed_loop_spring.toml"
@@ -35,6 +35,7 @@ BEARING_FMU = ROOT / "fmus" / "Bearing.fmu"
 STEP = 0.01  # s, communication step of the projected run
 DAY = 86400.0  # s, length of the projected run
 PAGE = os.sysconf("SC_PAGE_SIZE")
+WARM_UP = 20  # create/free cycles before the first RSS sample
 
 
 def rss_mb():
@@ -43,26 +44,12 @@ def rss_mb():
         return int(fh.read().split()[1]) * PAGE / 1e6
 
 
-def load():
-    return " ".join(Path("/proc/loadavg").read_text().split()[:3])
-
-
-class RssSampler(threading.Thread):
-    """Samples (wall time s, RSS MB) every `interval` seconds until stop()."""
-
-    def __init__(self, interval=0.5):
-        super().__init__(daemon=True)
-        self.interval, self.samples, self._done = interval, [], threading.Event()
-
-    def run(self):
-        t0 = time.perf_counter()
-        while not self._done.is_set():
-            self.samples.append((time.perf_counter() - t0, rss_mb()))
-            self._done.wait(self.interval)
-
-    def stop(self):
-        self._done.set()
-        self.join()
+def sample_rss(samples, done, interval=0.5):
+    """Append (wall time s, RSS MB) to samples every `interval` seconds until `done` is set."""
+    t0 = time.perf_counter()
+    while not done.is_set():
+        samples.append((time.perf_counter() - t0, rss_mb()))
+        done.wait(interval)
 
 
 def child_run(mode, seconds):
@@ -72,19 +59,18 @@ def child_run(mode, seconds):
 
     spec = load_run(str(DEMO), {"run.stop": seconds, "run.step": STEP})
     with tempfile.TemporaryDirectory(prefix="master_memory_") as tmp, Master(spec) as master:
-        sampler = RssSampler()
+        samples, done = [], threading.Event()
+        sampler = threading.Thread(target=sample_rss, args=(samples, done), daemon=True)
         start_rss = rss_mb()
         sampler.start()
         t0 = time.perf_counter()
-        if mode == "csv":
-            result = master.run(csv_path=Path(tmp) / "run.csv")
-        else:
-            result = master.run(record_interval=1.0)
+        result = master.run(csv_path=Path(tmp) / "run.csv") if mode == "csv" else master.run(record_interval=1.0)
         wall = time.perf_counter() - t0
-        sampler.stop()
+        done.set()
+        sampler.join()
     # wall time -> simulated time: the stepping is uniform, so scale by the stepping share of the call
     setup = wall - result.wall_time
-    samples = [(max(0.0, (w - setup) / result.wall_time) * seconds, r) for w, r in sampler.samples]
+    samples = [(max(0.0, (w - setup) / result.wall_time) * seconds, r) for w, r in samples]
     print(json.dumps({"start_rss": start_rss, "samples": samples, "rows": result.n_rows, "steps": result.n_steps}))
 
 
@@ -94,8 +80,7 @@ def child_cycles(cycles, blocks=3):
     from fmpy import extract, read_model_description
     from fmpy.fmi2 import FMU2Slave
 
-    md = read_model_description(str(BEARING_FMU))
-    unzip = extract(str(BEARING_FMU))
+    md, unzip = read_model_description(str(BEARING_FMU)), extract(str(BEARING_FMU))
 
     def cycle(k):
         slave = FMU2Slave(
@@ -109,25 +94,19 @@ def child_cycles(cycles, blocks=3):
         slave.terminate()
         slave.freeInstance()
 
-    warm_up = 20
-    for k in range(warm_up):
+    for k in range(WARM_UP):
         cycle(k)
-    rss = [rss_mb()]
-    t0 = time.perf_counter()
+    rss, t0 = [rss_mb()], time.perf_counter()
     for block in range(blocks):
         for k in range(cycles):
-            cycle(warm_up + block * cycles + k)
+            cycle(WARM_UP + block * cycles + k)
         rss.append(rss_mb())
     print(json.dumps({"rss": rss, "seconds": (time.perf_counter() - t0) / (blocks * cycles)}))
 
 
 def in_child(*args):
-    proc = subprocess.run(
-        [sys.executable, "-m", "benchmarks.master_memory", "--child", *map(str, args)],
-        cwd=ROOT,
-        capture_output=True,
-        text=True,
-    )
+    command = [sys.executable, "-m", "benchmarks.master_memory", "--child", *map(str, args)]
+    proc = subprocess.run(command, cwd=ROOT, capture_output=True, text=True)
     if proc.returncode != 0:
         raise RuntimeError(f"{args} exited {proc.returncode}: {proc.stderr[-2000:]}")
     return json.loads(proc.stdout.strip().splitlines()[-1])
@@ -140,101 +119,63 @@ def slope_per_hour(samples):
     return float(np.polyfit(t[half], r[half], 1)[0]) * 3600.0
 
 
+def measure(seconds=600.0, cycles=1000):
+    runs = []
+    for mode, label in (("csv", "every step streamed to CSV"), ("arrays", "every 1 s into preallocated arrays")):
+        out = in_child(mode, seconds)
+        rss, slope = [r for _, r in out["samples"]], slope_per_hour(out["samples"])
+        projected = rss[-1] + slope * (DAY - seconds) / 3600.0 - out["start_rss"]
+        runs.append([label, out["start_rss"], max(rss), rss[-1], slope, projected, out["rows"]])
+    blocks = in_child("cycles", cycles)
+    rss = blocks["rss"]
+    growth = [b - a for a, b in zip(rss, rss[1:])]
+    cycle_rows = [[k + 1, f"{k * cycles + 1}-{(k + 1) * cycles}", rss[k + 1], g] for k, g in enumerate(growth)]
+    values = dict(seconds=seconds, steps=round(seconds / STEP), step=1e3 * STEP, day_steps=DAY / STEP, cycles=cycles,
+                  warm_up=WARM_UP, warm_rss=rss[0], per_cycle=blocks["seconds"])  # fmt: skip
+    return dict(
+        name="master_memory",
+        title="Master memory: flat in run length and in instance count",
+        about=__doc__.split("\n", 2)[2].split("    python -m")[0],
+        blocks=[
+            dict(text=RUN_LENGTH, values=values),
+            dict(table=dict(columns=RUN_COLUMNS, formats=[None, *["{:.1f}"] * 3, "{:.2f}", "{:.1f}", None], rows=runs)),
+            dict(text=INSTANCES, values=values),
+            dict(table=dict(columns=CYCLE_COLUMNS, formats=[None, None, "{:.1f}", "{:.2f}"], rows=cycle_rows)),
+        ],
+        metrics=[
+            *(metric(f"{r[0]}: RSS growth projected to 24 h at 10 ms", r[5], "MB", "resource", 200.0) for r in runs),
+            metric(f"first {cycles} create/free cycles: RSS growth", growth[0], "MB", "resource", target=5.0),
+        ],
+    )
+
+
+RUN_COLUMNS = "recording|RSS at start (MB)|peak (MB)|end (MB)|slope (MB per simulated hour)|projected 24 h growth \
+(MB)|rows".split("|")
+CYCLE_COLUMNS = ["block", "cycles", "RSS after the block (MB)", "growth in the block (MB)"]
+RUN_LENGTH = """## Run length: closed-loop demo at {step:g} ms, {seconds:g} s simulated ({steps} steps)
+
+RSS from just before `Master.run` (the FMUs instantiated) to its end; the projection adds slope x (24 h - run \
+length) to the last sample. Arrays are preallocated for the recorded rows (8 bytes per recorded value): every step \
+of a day would be {day_steps:.3g} rows, so a day at every step is streamed to CSV or recorded at an interval."""
+
+INSTANCES = """## Instances: create/free cycles of Bearing.fmu in one fmpy host
+
+Each cycle: instantiate, setupExperiment, enter/exit initialisation, one doStep, terminate, freeInstance. RSS \
+after {warm_up} warm-up cycles: {warm_rss:.1f} MB; {per_cycle:.3f} s per cycle."""
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seconds", type=float, default=600.0, help="simulated seconds per run at 10 ms")
     parser.add_argument("--cycles", type=int, default=1000)
     parser.add_argument("--child", nargs="+", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
-    if args.child:
-        if args.child[0] == "cycles":
-            child_cycles(int(args.child[1]))
-        else:
-            child_run(args.child[0], float(args.child[1]))
-        return 0
-    load_before = load()
-    rows = []
-    for mode, label in (("csv", "every step streamed to CSV"), ("arrays", "every 1 s into preallocated arrays")):
-        out = in_child(mode, args.seconds)
-        rss = [r for _, r in out["samples"]]
-        slope = slope_per_hour(out["samples"])
-        projected = rss[-1] + slope * (DAY - args.seconds) / 3600.0 - out["start_rss"]
-        rows.append((label, out["start_rss"], max(rss), rss[-1], slope, projected, out["rows"]))
-        print(f"{label}: start {out['start_rss']:.1f} MB, end {rss[-1]:.1f} MB, slope {slope:.2f} MB/h", flush=True)
-    cycles = in_child("cycles", args.cycles)
-    rss = cycles["rss"]
-    growth = [b - a for a, b in zip(rss, rss[1:])]
-    for label, *_, projected, _ in rows:
-        record(
-            "master_memory",
-            f"{label}: RSS growth projected to 24 h at 10 ms",
-            projected,
-            "MB",
-            kind="resource",
-            target=200.0,
-        )
-    record(
-        "master_memory",
-        f"first {args.cycles} create/free cycles: RSS growth",
-        growth[0],
-        "MB",
-        kind="resource",
-        target=5.0,
-    )
-    print(f"blocks of {args.cycles} create/free cycles: RSS {rss} MB", flush=True)
-    lines = [
-        "# Master memory: flat in run length and in instance count",
-        "",
-        f"Generated by `python -m benchmarks.master_memory --seconds {args.seconds:g} --cycles {args.cycles}` "
-        f"on {machine()} (load average {load_before} before, {load()} after).",
-        "",
-        f"## Run length: closed-loop demo at {STEP * 1e3:g} ms, {args.seconds:g} s simulated "
-        f"({round(args.seconds / STEP)} steps)",
-        "",
-        "RSS sampled every 0.5 s in a fresh process per mode, from just before `Master.run` (the FMUs",
-        "instantiated) to its end. The slope is a least-squares fit over the second half of the run;",
-        "the projection adds slope x (24 h - run length) to the last sample.",
-        "",
-        "| recording | RSS at start (MB) | peak (MB) | end (MB) | slope (MB per simulated hour) "
-        "| projected 24 h growth (MB) | rows |",
-        "|---|---|---|---|---|---|---|",
-    ]
-    lines += [
-        f"| {label} | {start:.1f} | {peak:.1f} | {end:.1f} | {slope:.2f} | {proj:.1f} | {n} |"
-        for label, start, peak, end, slope, proj, n in rows
-    ]
-    lines += [
-        "",
-        "Target: within 200 MB of the start. Before, the master kept one Python dict per step",
-        "(about 1.9 KB per step: a 3600 s run at 10 ms rose from 177 to 844 MB). Arrays are preallocated",
-        "for the recorded rows (8 bytes per recorded value): every 10 ms step of a day in memory would",
-        "be 8.64 million rows x 26 columns = 1.8 GB, so a day at every step is streamed to CSV",
-        "(`spindle run` always streams) or recorded at an interval.",
-        "",
-        "## Instances: create/free cycles of Bearing.fmu in one fmpy host",
-        "",
-        "Each cycle: instantiate, setupExperiment, enter/exit initialisation, one doStep, terminate,",
-        "freeInstance (the FMU extracted once). Three blocks one after the other, after 20 warm-up cycles",
-        f"(RSS {rss[0]:.1f} MB); {cycles['seconds']:.3f} s per cycle:",
-        "",
-        "| block | cycles | RSS after the block (MB) | growth in the block (MB) |",
-        "|---|---|---|---|",
-    ]
-    lines += [
-        f"| {k + 1} | {k * args.cycles + 1}-{(k + 1) * args.cycles} | {rss[k + 1]:.1f} | {g:.2f} |"
-        for k, g in enumerate(growth)
-    ]
-    lines += [
-        "",
-        "Target: 1000 cycles grow RSS by < 5 MB. The first block carries the one-time growth of a",
-        "process that starts creating instances (allocator arenas and caches filled on first use, 5.0-5.1 MB",
-        "in each of three block-1 measurements: the target is missed there by up to 0.07 MB); the blocks",
-        "after it show what each further 1000 instances cost,",
-        "i.e. the leak per instance. The entry script no longer keeps each execution's module namespace",
-        "(a work-around for pythonfmu's binary, which the own FMI layer replaced: it imports the entry",
-        "module once per process).",
-    ]
-    write_report("master_memory.md", "\n".join(lines) + "\n")
+    if not args.child:
+        cli(measure, "master_memory", seconds=args.seconds, cycles=args.cycles)
+    elif args.child[0] == "cycles":
+        child_cycles(int(args.child[1]))
+    else:
+        child_run(args.child[0], float(args.child[1]))
     return 0
 
 

@@ -6,9 +6,8 @@ the slowest step and the solver's work (target: no refused step, slowest step <=
 - a grid of low speeds (0.1-600 rpm) x loads, visited in order with warm starts (a sweep) and each
   case again from a fresh model (cold).
 Each step is timed around QuasiStaticModel.evaluate (checks + solve + film, capacitance, torque +
-outputs); the slowest of all steps is repeated on a fresh model warmed to the step before it, and its
-median over 15 repeats is reported beside the single worst wall time (which includes scheduler noise
-on a shared machine).
+outputs); the slowest step of each run is repeated on fresh models warmed to the step before it, and the
+median of the repeats is reported beside the single worst wall time (which includes scheduler noise).
 Run: python -m benchmarks.quasistatic_low_speed -> docs/reports/quasistatic_low_speed.md
 """
 
@@ -20,102 +19,82 @@ from bearing_fmu.build import SCENES_DIR
 from bearing_fmu.models.quasi_static import QuasiStaticModel, SolverError
 from bearing_fmu.scene import Scene
 
-from .common import machine, record, write_report
+from .render import cli, metric
 
 RPM = 2.0 * math.pi / 60.0
 SCENE = Scene.from_toml(SCENES_DIR / "quasi_static.toml")
 TARGET = 5e-3
+REPEATS = 15
 RUN_UP_LOADS = {
     "B7214C": (dict(F_y=5000.0, F_z=500.0), dict(F_x=-2000.0, F_y=5000.0, F_z=2000.0, M_y=60.0), dict(F_z=2000.0)),
     "6208": (dict(F_x=-2000.0, F_y=5000.0, M_y=60.0), dict(F_y=5000.0, F_z=500.0), dict(F_y=3000.0, M_x=40.0)),
 }
 # with thrust enough to keep the angular-contact B7214C on its shoulder (a single-row bearing refuses the rest)
 GRID_LOADS = ({}, dict(F_y=5000.0, F_z=500.0), dict(F_x=-2000.0, F_y=5000.0, F_z=2000.0, M_y=60.0), dict(F_z=2000.0))
+COLUMNS = ["case", "steps", "refused", "worst (ms)", "median of worst (ms)", "work"]
 GRID_RPM = (0.1, 0.3, 1.0, 3.0, 10.0, 25.0, 79.0, 116.0, 200.0, 300.0, 537.0, 600.0)
 
 
-def run(bearing, sequence):
-    """Evaluate the sequence of input dicts on one model: (refused, worst time s, index of the worst step,
-    largest `iterations`)."""
-    m = QuasiStaticModel(bearing, scene=SCENE)
-    refused, worst, at, work = 0, 0.0, 0, 0
-    for k, inputs in enumerate(sequence):
+def case(label, bearing, sequence, fresh=False):
+    """A table row: the sequence of inputs evaluated on one model (a fresh model per step if `fresh`), then its
+    slowest step again REPEATS times, each on a fresh model warmed to it (unless `fresh`), median."""
+    refused, times, work, m = 0, [], 0, None
+    for inputs in sequence:
+        m = QuasiStaticModel(bearing, scene=SCENE) if fresh or m is None else m
         t0 = time.perf_counter()
         try:
             m.evaluate(**inputs)
             work = max(work, m.status[1])
         except SolverError:
             refused += 1
-        dt = time.perf_counter() - t0
-        if dt > worst:
-            worst, at = dt, k
-    return refused, worst, at, work
-
-
-def repeat_step(bearing, sequence, k, repeats=15):
-    """Median time (s) of step k of the sequence, each time on a fresh model warmed through steps 0..k-1."""
-    samples = []
-    for _ in range(repeats):
+        times.append(time.perf_counter() - t0)
+    k, samples = max(range(len(times)), key=times.__getitem__), []
+    for _ in range(REPEATS):
         m = QuasiStaticModel(bearing, scene=SCENE)
-        for inputs in sequence[:k]:
+        for inputs in [] if fresh else sequence[:k]:
             m.evaluate(**inputs)
         t0 = time.perf_counter()
         m.evaluate(**sequence[k])
         samples.append(time.perf_counter() - t0)
-    return statistics.median(samples)
+    return [label, len(sequence), refused, 1e3 * times[k], 1e3 * statistics.median(samples), work]
 
 
-def main():
+def measure():
     QuasiStaticModel("B7214C", scene=SCENE).evaluate(omega=1.0)  # load the compiled kernels
     rows = []
     for bearing, loads in RUN_UP_LOADS.items():
         for load in loads:
-            seq = [dict(omega=10000.0 * RPM * k / 1000, **load) for k in range(1001)]
-            refused, worst, at, work = run(bearing, seq)
-            rows.append((f"{bearing} run-up, {load}", len(seq), refused, worst, repeat_step(bearing, seq, at), work))
+            run_up = [dict(omega=10000.0 * RPM * k / 1000, **load) for k in range(1001)]
+            rows.append(case(f"{bearing} run-up, {load}", bearing, run_up))
     for bearing in RUN_UP_LOADS:
-        seq = [dict(omega=r * RPM, **load) for r in GRID_RPM for load in GRID_LOADS]
-        refused, worst, at, work = run(bearing, seq)
-        rows.append((f"{bearing} low-speed grid, warm", len(seq), refused, worst, repeat_step(bearing, seq, at), work))
-        cold = [run(bearing, [inputs]) for inputs in seq]
-        worst_cold = max(cold, key=lambda c: c[1])
-        k = cold.index(worst_cold)
-        rows.append(
-            (
-                f"{bearing} low-speed grid, cold",
-                len(seq),
-                sum(c[0] for c in cold),
-                worst_cold[1],
-                repeat_step(bearing, seq[k : k + 1], 0),
-                max(c[3] for c in cold),
-            )
-        )
-    lines = [
-        "# Quasi-static model from rest and at low speed",
-        "",
-        f"Machine: {machine()}. Scene of `Bearing.fmu` (centrifugal and gyroscopic effects, outer-race control,",
-        "stiffness, film, capacitance, torque). Generated by `python -m benchmarks.quasistatic_low_speed`.",
-        "Run-ups: 0 -> 10 000 rpm in 1 s at 1 ms steps. Grid: "
-        f"{', '.join(f'{r:g}' for r in GRID_RPM)} rpm x loads {GRID_LOADS}.",
-        "Worst = the single slowest `evaluate` of the run (wall time, includes scheduler noise); median of",
-        "worst = that step repeated 15 times on fresh models warmed to it. Work = largest `iterations`",
-        "output (bearing evaluations after the first).",
-        "",
-        "| case | steps | refused | worst (ms) | median of worst (ms) | work |",
-        "|---|---|---|---|---|---|",
-    ]
-    for name, n, refused, worst, median, work in rows:
-        lines.append(f"| {name} | {n} | {refused} | {worst * 1e3:.2f} | {median * 1e3:.2f} | {work} |")
-    slowest = max(r[4] for r in rows)
-    record("quasistatic_low_speed", "refused steps", sum(r[2] for r in rows), "1", kind="count", target=0)
-    record("quasistatic_low_speed", "slowest step (median of its repeats)", slowest, "s", kind="timing", target=TARGET)
-    lines += [
-        "",
-        f"Refused steps in all: {sum(r[2] for r in rows)}. Slowest step (median of its repeats): "
-        f"{slowest * 1e3:.2f} ms against the target {TARGET * 1e3:.0f} ms: {'met' if slowest <= TARGET else 'NOT met'}.",
-        "",
-    ]
-    write_report("quasistatic_low_speed.md", "\n".join(lines))
+        grid = [dict(omega=r * RPM, **load) for r in GRID_RPM for load in GRID_LOADS]
+        rows += [case(f"{bearing} low-speed grid, warm", bearing, grid)]
+        rows += [case(f"{bearing} low-speed grid, cold", bearing, grid, fresh=True)]
+    refused, slowest = sum(r[2] for r in rows), 1e-3 * max(r[4] for r in rows)
+    values = dict(rpm=", ".join(f"{r:g}" for r in GRID_RPM), loads=GRID_LOADS, refused=refused,
+                  slowest=1e3 * slowest, target=1e3 * TARGET, verdict="met" if slowest <= TARGET else "NOT met")  # fmt: skip
+    return dict(
+        name="quasistatic_low_speed",
+        title="Quasi-static model from rest and at low speed",
+        about=__doc__.split("Run:")[0],
+        blocks=[
+            dict(table=dict(columns=COLUMNS, formats=[None, "{}", "{}", "{:.2f}", "{:.2f}", "{}"], rows=rows)),
+            dict(text=SUMMARY, values=values),
+        ],
+        metrics=[
+            metric("refused steps", refused, "1", "count", target=0),
+            metric("slowest step (median of its repeats)", slowest, "s", "timing", target=TARGET),
+        ],
+    )
+
+
+SUMMARY = """Grid: {rpm} rpm x loads {loads}. Work = largest `iterations` output (bearing evaluations after the \
+first). Refused steps in all: {refused}. Slowest step (median of its repeats): {slowest:.2f} ms against the target \
+{target:.0f} ms: {verdict}."""
+
+
+def main(argv=None):
+    cli(measure, "quasistatic_low_speed")
 
 
 if __name__ == "__main__":

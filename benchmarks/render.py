@@ -100,7 +100,7 @@ def draw_panel(ax, panel):
         ax.figure.colorbar(filled, ax=ax, label=c.get("label", ""))
     if "aspect" in panel:
         ax.set_aspect(panel["aspect"])
-    if "ylim" in panel:
+    if panel.get("ylim"):
         ax.set_ylim(*panel["ylim"])
     ax.set_xscale(panel.get("xscale", "linear"))
     ax.set_yscale(panel.get("yscale", "linear"))
