@@ -2,7 +2,6 @@
 
 import json
 import math
-import platform
 import statistics
 import time
 from pathlib import Path
@@ -67,18 +66,6 @@ def core_contention(seconds=0.5):
     while time.perf_counter() - w0 < seconds:
         reference_workload()
     return (time.perf_counter() - w0) / max(time.process_time() - c0, 1e-9)
-
-
-def machine():
-    return f"{platform.processor() or platform.machine()}, Python {platform.python_version()}"
-
-
-def write_report(name, text):
-    REPORTS.mkdir(parents=True, exist_ok=True)
-    path = REPORTS / name
-    path.write_text(text)
-    print(f"wrote {path}")
-    return path
 
 
 METRICS = REPORTS / "metrics.json"

@@ -19,7 +19,6 @@ stability cases are run, they take a few minutes);
 
 import argparse
 import importlib
-import inspect
 import json
 import math
 import os
@@ -55,88 +54,34 @@ PREVIOUS = REPORTS / "metrics.previous.json"
 MACHINE = "machine"  # metrics entry: the reference workload's time before each benchmark (common.machine_speed)
 CONTENTION = "contention"  # metrics entry: wall / CPU time of the workload before each benchmark (core_contention)
 
-# The knobs, each with its benchmark, what it varies, the reference and the figure. Order = order of the report.
-KNOBS = (
+# The knobs in the order of the report.
+KNOBS = (  # (benchmark, its reference); the title and figures come from the benchmark's result
     (
         "fidelity_ladder",
-        "Fidelities: difference between analytic, quasi-static and DEM",
-        "the quasi-static solution with the boundary condition of the fidelity compared (static quantities): the "
-        "ring free in five DOF for the DEM (as Bearing.fmu's; under a fixed preload BearingFixed.fmu's), its tilts "
-        "held for the analytic fidelity; the DEM at dt/4 (dynamics). Each row states its ring's boundary condition; "
-        "the rows of the free ring against the tilt-held one are a difference of boundary condition, not an error",
-        "fidelity_ladder.png",
+        "the quasi-static solution with the boundary condition of the fidelity compared (static quantities): the ring free in five DOF for the DEM (as Bearing.fmu's; under a fixed preload BearingFixed.fmu's), its tilts held for the analytic fidelity; the DEM at dt/4 (dynamics). Each row states its ring's boundary condition; the rows of the free ring against the tilt-held one are a difference of boundary condition, not an error",
     ),
-    (
-        "ehl_film_table",
-        "EHL film formula: Hamrock-Dowson, Masjedi-Khonsari, Chittenden",
-        "the 55 full numerical EHL solutions of Wheeler (2016), Annexe D",
-        "ehl_film_table.png",
-    ),
-    ("hertz_approximation", "Hertz: exact vs Hamrock-Brewe approximation", "exact Hertz (elliptic integrals)", None),
-    ("solver_tolerance", "Quasi-static solver tolerance", "the same solve at tolerance 1e-14", "solver_tolerance.png"),
+    ("ehl_film_table", "the 55 full numerical EHL solutions of Wheeler (2016), Annexe D"),
+    ("hertz_approximation", "exact Hertz (elliptic integrals)"),
+    ("solver_tolerance", "the same solve at tolerance 1e-14"),
     (
         "dem_steps",
-        "DEM time step and tribology refresh: three operating points and three transients",
-        "the DEM at a tenth of each point's automatic step with every quantity refreshed every step (steady "
-        "points), at 0.1 us (transients); the quasi-static fidelity driven in time beside it",
-        "dem_steps.png",
+        "the DEM at a tenth of each point's automatic step with every quantity refreshed every step (steady points), at 0.1 us (transients); the quasi-static fidelity driven in time beside it",
     ),
     (
         "film_check",
-        "Film formulas against the numerical EHL solver at the product's contacts",
-        "the numerical EHL solver (docs/ehl_solver.md) at the most loaded inner and outer contact of each operating "
-        "point: the 6208 at the seeds' points and the B7214C at 10 000 rpm",
-        None,
+        "the numerical EHL solver (docs/ehl_solver.md) at the most loaded inner and outer contact of each operating point: the 6208 at the seeds' points and the B7214C at 10 000 rpm",
     ),
-    (
-        "ehl_solver",
-        "Numerical EHL solver: grid level against run time",
-        "the 55 full numerical EHL solutions of Wheeler (2016), Annexe D, and the solver's own finer grids",
-        "ehl_pareto.png",
-    ),
-    (
-        "ehl_grid_study",
-        "Numerical EHL solver: grid convergence of nine Annexe D cases",
-        "the Richardson estimate from the solver's three finest grids, and the thesis' values",
-        None,
-    ),
-    (
-        "ehl_fields",
-        "Numerical EHL solver: pressure spike and horseshoe of three Annexe D cases",
-        "the thesis' figures of the same cases (shape)",
-        "ehl_fields.png",
-    ),
-    (
-        "film_correction",
-        "Corrected film (scene option film_correction) against fresh numerical solutions",
-        "the numerical EHL solver at random contacts of the 6208 and the B7214C",
-        None,
-    ),
+    ("ehl_solver", "the 55 full numerical EHL solutions of Wheeler (2016), Annexe D, and the solver's own finer grids"),
+    ("ehl_grid_study", "the Richardson estimate from the solver's three finest grids, and the thesis' values"),
+    ("ehl_fields", "the thesis' figures of the same cases (shape)"),
+    ("film_correction", "the numerical EHL solver at random contacts of the 6208 and the B7214C"),
     (
         "lubrication_skf",
-        "Lubrication methods: torque against the SKF friction model over speed",
-        "the SKF friction model (benchmarks/skf_friction.py: rolling, sliding, inlet shear heating, "
-        "replenishment and drag terms), trends and ratios, not fitted",
-        "lubrication_skf.png",
+        "the SKF friction model (benchmarks/skf_friction.py: rolling, sliding, inlet shear heating, replenishment and drag terms), trends and ratios, not fitted",
     ),
-    (
-        "outside_hertz_capacitance",
-        "Capacitance of the oil around the Hertz zones (scene option capacitance_region)",
-        "the Hertz-zone plate capacitance of the same contacts",
-        None,
-    ),
-    (
-        "cosim_error",
-        "Co-simulation step H and Gauss-Seidel / Jacobi, quasi-static closed loop",
-        "a monolithic Heun integration of the same loop at a fine step (its refinement check on the page)",
-        "cosim_error.png",
-    ),
-    (
-        "dem_closed_loop_steps",
-        "Co-simulation step H and Gauss-Seidel / Jacobi, DEM closed loop",
-        "the same coupled start-up at H = 0.05 ms, Gauss-Seidel",
-        "dem_closed_loop_steps.png",
-    ),
+    ("outside_hertz_capacitance", "the Hertz-zone plate capacitance of the same contacts"),
+    ("cosim_error", "a monolithic Heun integration of the same loop at a fine step (its refinement check on the page)"),
+    ("dem_closed_loop_steps", "the same coupled start-up at H = 0.05 ms, Gauss-Seidel"),
 )
 REFERENCES = "reference_table"  # run first: the report's first table
 # The timing benchmarks (their targets are recorded with the metrics).
@@ -153,11 +98,7 @@ TIMINGS = (
     "first_start",
     "master_memory",
 )
-# Arguments of the benchmarks that take a command line (defaults otherwise)
-BENCHMARK_ARGS = {"dem_closed_loop": ["--runs", "1"]}
-BENCHMARK_OPTIONS = {
-    "dem_closed_loop": {"runs": 1}
-}  # keyword arguments of the measure() of a benchmark, where not its defaults
+BENCHMARK_OPTIONS = {"dem_closed_loop": {"runs": 1}}  # keyword arguments of a measure(), where not its defaults
 # The product's defaults and the benchmark each was chosen from, where that benchmark's result does not state the
 # default itself (a result's "defaults" entries, benchmarks/render.py, come first). No measured number here: the
 # benchmark's page has them.
@@ -211,7 +152,7 @@ VARIANTS = {
 
 
 def run_benchmarks(names):
-    """Run each benchmark's main() (it writes its report and metrics); returns {name: wall seconds}."""
+    """Run each benchmark's measure() and write its result (page, figures, metrics); returns {name: wall seconds}."""
     seconds = {}
     forget(MACHINE)
     forget(CONTENTION)
@@ -223,12 +164,7 @@ def run_benchmarks(names):
         t0 = time.perf_counter()
         print(f"== {name}", flush=True)
         forget(name)
-        if hasattr(module, "measure"):
-            render.cli(module.measure, name, command, **options)
-        elif "argv" in inspect.signature(module.main).parameters:  # a command-line main: its arguments, never sys.argv
-            module.main(BENCHMARK_ARGS.get(name, []))
-        else:
-            module.main()
+        render.cli(module.measure, name, command, **options)
         seconds[name] = time.perf_counter() - t0
     return seconds
 
@@ -284,19 +220,16 @@ def fmt(value, unit):
     return f"{value:.3g} {unit}"
 
 
-def knob_section(metrics, name, title, reference, figure):
-    file = REPORT_FILES.get(name, name)
-    lines = [f"### {title}", "", f"Reference: {reference}. Full report: [reports/{file}.md](reports/{file}.md).", ""]
+def knob_section(metrics, name, reference):
+    result = render.last_result(name) or {}
+    lines = [f"### {result.get('title', name)}", "", f"Reference: {reference}. Full report: {link(name)}.", ""]
     entries = metrics.get(name)
     if not entries:
         return lines + ["**Not measured in this run.**", ""]
-    lines += ["| measure | value | kind |", "|---|---|---|"]
-    for key, m in entries.items():
-        lines.append(f"| {key} | {fmt(m['value'], m['unit'])} | {m['kind']} |")
-    lines.append("")
-    if figure and (REPORTS / figure).exists():
-        lines += [f"![{title}](reports/{figure})", ""]
-    return lines
+    rows = [[key, fmt(m["value"], m["unit"]), m["kind"]] for key, m in entries.items()]
+    lines += render.table(dict(columns=["measure", "value", "kind"], rows=rows)) + [""]
+    figures = [b["figure"] for b in result.get("blocks", []) if "figure" in b]
+    return lines + [f"![{f.get('caption', f['file'])}](reports/{f['file']})\n" for f in figures]
 
 
 def timing_rows(metrics, noise):
