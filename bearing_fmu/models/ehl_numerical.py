@@ -166,6 +166,7 @@ class Solution:
     H: np.ndarray = None
     H0: float = 0.0
     history: list = None
+    reason: str = ""  # why the solve is not converged ("" when it is): _solution, _finest_cycles
 
 
 class _Level:
@@ -357,7 +358,7 @@ def solve_grids(grids, settings=None, h_c_guess=None):
     P, H0, merit = _coarsest_start(levels[0], h_c_guess)
     history = [(0, 0, merit, (levels[0].load(P) - LOAD) / LOAD)]
     if len(levels) == 1:
-        return _solution(levels[0], P, H0, merit < 1e-8, 0, merit, history[0][3], history)
+        return _solution(levels[0], P, H0, merit < 1e-8, 0, merit, history[0][3], history, "Newton not converged")
     for l in range(1, len(levels) - 1):
         P = prolong_bilinear(P)
         H0 = _nested_cycles(levels, l, P, H0, history)
@@ -411,6 +412,7 @@ def _finest_cycles(levels, P, H0, history):
     cuts = 0
     converged = False
     change = load_error = math.nan
+    reason = f"{s.max_cycles} cycles without meeting the criterion"
     for cycle in range(1, s.max_cycles + 1):
         H0 = _cycle(levels, l, P, F, LOAD, H0)
         films.append(_films(L, P, H0))
@@ -422,6 +424,7 @@ def _finest_cycles(levels, P, H0, history):
             P[...] = calmest[1]
             H0 = calmest[2]
             if cuts == s.max_damping_cuts:
+                reason = f"diverged after {s.max_damping_cuts} cuts of the damping; the calmest state returned"
                 break
             cuts += 1
             films = [_films(L, P, H0)]
@@ -433,7 +436,7 @@ def _finest_cycles(levels, P, H0, history):
         if len(films) > s.window and change < s.tol and abs(load_error) < s.tol_load:
             converged = True
             break
-    return _solution(L, P, H0, converged, cycle, change, load_error, history)
+    return _solution(L, P, H0, converged, cycle, change, load_error, history, reason)
 
 
 def _spread(films, quantities=(0, 1)):
@@ -460,7 +463,11 @@ def _residual(L, P, H0):
     return math.sqrt(np.sum(ncp**2) / n_wet / max(np.mean(couette[wet] ** 2), 1e-300))
 
 
-def _solution(L, P, H0, converged, cycles, change, load_error, history):
+def _solution(L, P, H0, converged, cycles, change, load_error, history, reason="not converged"):
+    """The Solution of the state (P, H0) on the finest level L. A state whose film is negative anywhere inside
+    the box is never converged: a negative gap is not a lubricated contact, and the discrete Reynolds equation
+    admits it (the closed gap carries no Poiseuille flow, its Couette flux turns negative), so the grid is too
+    coarse for the film or the iteration has not lifted it yet (docs/ehl_solver.md, Solver)."""
     g = L.g
     residual = _residual(L, P, H0)
     H = L.H.copy()
@@ -470,6 +477,9 @@ def _solution(L, P, H0, converged, cycles, change, load_error, history):
     off = np.abs(g.Y) >= 0.5
     off[0] = off[-1] = False
     scale = g.scale_h
+    if inner.min() <= 0.0:
+        converged = False
+        reason = f"negative film: h_min = {inner.min() * scale * 1e9:.1f} nm (the gap closes on this grid)"
     return Solution(
         h_c=H[ic, jc] * scale,
         h_min=inner.min() * scale,
@@ -486,6 +496,7 @@ def _solution(L, P, H0, converged, cycles, change, load_error, history):
         H=H,
         H0=H0,
         history=history,
+        reason="" if converged else reason,
     )
 
 

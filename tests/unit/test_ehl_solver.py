@@ -224,3 +224,17 @@ def test_newton_solves_the_coarsest_grid_up_to_the_heaviest_annexe_d_load(load, 
     H0, merit = en.newton(L, P, np.zeros_like(P), en.LOAD, H0, 12)
     assert merit < 1e-10
     assert abs(g.dX * g.dY * P.sum() - en.LOAD) < 1e-9 and np.all(P >= 0.0)
+
+
+def test_a_solution_with_a_negative_film_is_not_converged():
+    """A ball of Rx = Ry = 12.7 mm at 2 kN (p_H = 3.2 GPa), 2 m/s, lubricant 2 at 313 K, solved on the 41 x 33
+    grid of level 0 alone: Newton meets its merit (below 1e-8, the single-grid criterion) on a film closed over
+    most of the contact (h_min about -485 nm: the grid's spacing is 20 times the inlet layer of this ~0.1 um
+    film), which the discrete Reynolds equation admits (a closed gap carries no Poiseuille flow and a negative
+    Couette flux). A negative gap is not a lubricated contact: the Solution must say not converged, and why."""
+    fluid = FLUIDS["wlf_murnaghan"]
+    sol = en.solve_contact(12.7e-3, 12.7e-3, 2000.0, 2.0, E_RED, 0.00795, fluid, finest=0)
+    assert sol.history[0][2] < 1e-8  # Newton itself converged
+    assert sol.h_min < 0.0
+    assert not sol.converged
+    assert sol.reason.startswith("negative film")
