@@ -141,7 +141,9 @@ class SolverSettings:
     tol: float = 1e-3
     window: int = 4
     tol_load: float = 1e-4
-    max_cycles: int = 80  # on the finest grid (the heavy slender cases 22, 52, 53, 55 of Annexe D need 63-68)
+    # on the finest grid: the heavy slender cases 22, 52, 53, 55 of Annexe D need 63-68, the thin films at p_H 1.3-3.2
+    # GPa whose coarse grids close the gap 89 (level 2) and 100 (level 3) (docs/ehl_solver.md, Thin films)
+    max_cycles: int = 120
     max_damping_cuts: int = 2  # halvings of omega_jac after a diverging cycle on the finest grid (_finest_cycles)
     tol_nested: float = 1e-2  # a coarser grid of the nested iteration is left when h_c, h_min change less than this
     max_nested: int = 6  # or after this many cycles (its solution only starts the finer grid)
