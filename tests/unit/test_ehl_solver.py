@@ -224,3 +224,32 @@ def test_newton_solves_the_coarsest_grid_up_to_the_heaviest_annexe_d_load(load, 
     H0, merit = en.newton(L, P, np.zeros_like(P), en.LOAD, H0, 12)
     assert merit < 1e-10
     assert abs(g.dX * g.dY * P.sum() - en.LOAD) < 1e-9 and np.all(P >= 0.0)
+
+
+def test_contact_box_grows_only_beyond_the_annexe_d_films():
+    """contact_box: films up to H_c = 0.35 (Hertz units; Annexe D reaches 0.27) keep the boxes of s <= 1 (the
+    formula the Annexe D validation was made with), thicker films get an inlet of at least 1.5 (m* - 1) past the
+    Hertz edge (Hamrock and Dowson's starvation boundary m* = 1 + 3.06 H_c^0.58), up to BOX_GROWTH_MAX."""
+    for H_c in (0.02, 0.1, 0.16, 0.27, 0.35):
+        assert en.contact_box(H_c)[0] >= -3.5 - 1e-12
+    for H_c in (0.5, 1.0, 2.3, 5.0):
+        x_in = en.contact_box(H_c)[0]
+        assert -1.0 - x_in >= 1.5 * 3.06 * H_c**0.58 - 1e-9, (H_c, x_in)
+    assert en.contact_box(100.0)[0] == en.contact_box(1000.0)[0]
+
+
+def test_film_estimate_is_hamrock_dowson_or_the_rigid_regimes_film():
+    """film_estimate: Hamrock-Dowson's central film where it is the largest (an Annexe D contact), the rigid
+    regimes' (Hamrock and Dowson 1981) at a light, fast contact (M = 5, L = 20, k = 9), where it is larger."""
+    from bearing_fmu.kernels import ehl
+
+    Rx, Ry = 0.08, 0.08
+    U, G, W = 8.6e-12, 5000.0, 1e-7
+    k = 1.0
+    assert en.film_estimate(U, G, W, k, Rx, Ry) == ehl.film_hamrock_dowson(U, G, W, k)[0]
+    U, G, W = 1e-9, 4000.0, 1e-7  # M = W (2U)^-3/4 = 3.3, L = G (2U)^1/4 = 27
+    a_r = Ry / Rx
+    phi = 1.0 / (1.0 + 2.0 / (3.0 * a_r))
+    rigid_iso = 128.0 * a_r * phi**2 * (0.131 * math.atan(0.5 * a_r) + 1.683) ** 2 * (U / W) ** 2
+    assert en.film_estimate(U, G, W, k, Rx, Ry) >= rigid_iso
+    assert en.film_estimate(U, G, W, k, Rx, Ry) > ehl.film_hamrock_dowson(U, G, W, k)[0]
