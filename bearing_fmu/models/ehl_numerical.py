@@ -149,6 +149,12 @@ class SolverSettings:
     # nearly rigid contact (M = 10, L = 30, k = 9, level 3: h_c spread 7.5e-3 with 1, 2.9e-4 with 0.5, where
     # the film and the load error alternated from cycle to cycle), but its load error still alternates by 4e-4
     h0_relax: float = 1.0
+    # the relaxation's local derivative includes the density's part of the Couette term (relaxation_sweep);
+    # solve_contact turns it on for the thick films whose box grows (contact_box, H_c > 0.35), where it is
+    # several times the elastic part on levels 3-4 and the relaxation diverged without it. Off, the solver is the
+    # one the Annexe D validation was made with (on, their h_min moved by up to 0.96 %, cases 18 and 21, within
+    # the convergence criterion's reach on those slow heavy slender cases, and M = 1000, L = 25 no longer met it)
+    density_jac: bool = False
 
 
 @dataclass
@@ -185,6 +191,7 @@ class _Level:
         self.eta = np.empty(shape)
         self.delta = np.empty(shape)
         self.R = np.empty(shape)
+        self.g_rho = np.zeros(shape)  # d ln(rho_r) / dP for the relaxation (stays 0 unless settings.density_jac)
 
     def fields(self, P, H0):
         """Film (closed gaps carry no Poiseuille flow, kernels.ehl_solver._eps) and fluid ratios of the pressure P."""
@@ -201,8 +208,10 @@ class _Level:
     def sweep(self, P, F, H0):
         g, s = self.g, self.s
         self.fields(P, H0)
+        if s.density_jac:
+            es.density_log_slopes(P, g.p_h, g.fluid, self.g_rho)
         return es.relaxation_sweep(
-            P, F, self.H, self.rho, self.eta, g.lam, g.k, g.dX, g.dY, self.Kc, s.xi_switch, s.omega_gs,
+            P, F, self.H, self.rho, self.eta, self.g_rho, g.lam, g.k, g.dX, g.dY, self.Kc, s.xi_switch, s.omega_gs,
             s.omega_jac, self.delta,
         )  # fmt: skip
 
@@ -565,11 +574,15 @@ def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=3, coarsest=0, s
     p_max in Pa, convergence record, fields) on the grid of level `finest` (grid_hierarchy; level 3, the default,
     is the grid of the ~2 % discretisation error, docs/ehl_solver.md) of the box (x_in, x_out, y_half), by
     default contact_box of the film estimate (film_estimate: Hamrock-Dowson's central film, or the rigid
-    regimes' where larger)."""
+    regimes' where larger). Without settings, the relaxation takes the density's derivative where that box
+    grows (SolverSettings.density_jac)."""
     k, ell_E, ell_K = hertz_coefficients_exact(Rx, Ry)
     a, b, _, p_h = hertz_contact(load, Rx, Ry, E_red, k, ell_E, ell_K)
     U, G, Wd = ehl.dimensionless_groups(eta0, alpha_star(fluid, p_h), E_red, u_e, load, Rx)
     h_c_guess = film_estimate(U, G, Wd, k, Rx, Ry) * Rx
+    thick = contact_box(h_c_guess * Rx / b**2)[2] > 2.0  # the box grows: a thick film in Hertz units
     box = box or contact_box(h_c_guess * Rx / b**2)
+    if settings is None:
+        settings = SolverSettings(density_jac=thick)
     grids = grid_hierarchy(Rx, Ry, load, u_e, E_red, eta0, fluid, finest, coarsest, box)
     return solve_grids(grids, settings, h_c_guess)

@@ -154,7 +154,9 @@ def test_relaxation_sweep_matches_twin():
     Kc = g.c_w * g.kern
     got, want = P0.copy(), P0.copy()
     delta = np.empty_like(P0)
-    args = (H, rho_r, eta_r, g.lam, g.k, g.dX, g.dY, Kc, 0.3, 0.6, 0.2)
+    g_rho = np.empty_like(P0)
+    es.density_log_slopes(P0, g.p_h, g.fluid, g_rho)
+    args = (H, rho_r, eta_r, g_rho, g.lam, g.k, g.dX, g.dY, Kc, 0.3, 0.6, 0.2)
     c_got = es.relaxation_sweep(got, F, *args, delta)
     c_want = rs.relaxation_sweep(want, F, *args, np.empty_like(P0))
     jacobi = int(np.count_nonzero(delta))
@@ -179,6 +181,21 @@ def test_fluid_log_slopes_match_twin(name):
     rs.fluid_log_slopes(P, 0.5e9, fluid, *want)
     for a, b, what in ((got[0], want[0], "rho"), (got[1], want[1], "eta")):
         assert np.max(np.abs(a - b)) <= 1e-6 * max(np.max(np.abs(b)), 1e-300), what
+
+
+@pytest.mark.parametrize("name", sorted(FLUIDS))
+def test_density_log_slopes_match_twin(name):
+    """The kernel's closed-form d ln(rho_r)/dP against the twin's Richardson-extrapolated differences of its own
+    law (about 1e-9 of the slope's size, test_fluid_log_slopes_match_twin): tolerance 1e-6 relative to the
+    largest slope of the field; incompressible: exactly 0."""
+    fluid = FLUIDS[name]
+    P = np.concatenate([[0.0, 1e-4], np.linspace(0.05, 3.0, 46)]).reshape(6, 8)
+    got, want = np.empty_like(P), np.empty_like(P)
+    es.density_log_slopes(P, 0.5e9, fluid, got)
+    rs.density_log_slopes(P, 0.5e9, fluid, want)
+    assert np.max(np.abs(got - want)) <= 1e-6 * max(np.max(np.abs(want)), 1e-300)
+    if name.endswith("incompressible"):
+        assert not np.any(got)
 
 
 @pytest.mark.parametrize("Rx, Ry", [(0.08, 0.08), (0.02892, 0.345), (0.345, 0.02892)])
