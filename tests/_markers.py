@@ -36,6 +36,9 @@ SLOW = {  # test file -> test function names (every parametrisation of them)
     "tests/validation/test_ehl_annexe_d.py": {"test_grid_convergence_is_second_order_and_level_3_within_2_percent"},
     "tests/validation/test_ehl_hertz_limit.py": {"test_pressure_tends_to_hertz_as_the_speed_vanishes"},
     "tests/validation/test_ehl_thin_films.py": {"test_thin_film_converges_on_the_default_grid_with_a_positive_film"},
+    "tests/validation/test_ehl_light_contact.py": {
+        "test_light_fast_contact_converges_on_levels_2_to_4_and_level_3_is_within_1_percent"
+    },
     "tests/stability/test_large_free_angle_grid.py": {
         "test_every_grid_point_converges_or_is_refused_for_a_physical_reason"
     },

@@ -10,13 +10,15 @@ and the direct-summation deflection that the product computes by FFT.
   over a uniformly loaded 2c x 2d rectangle, written with its four logarithms.
 - Deflection by direct summation over every pressure cell (no FFT).
 - Reynolds residual written with whole-array flux differences (numpy slicing) instead of per-node loops.
-- Log slopes of the fluid ratios: Richardson-extrapolated central differences of the twin's laws.
+- Log slopes of the fluid ratios: Richardson-extrapolated central differences of the twin's laws (also for
+  the kernel's closed-form density slope).
 - Newton Jacobian: central differences of the twin's residual, each wet pressure moved with its film (direct
   influence sums) and fluid ratios, and H0 moved.
 - Relaxation sweep: the same node updates, each node's residual and derivative taken from the twin's
   whole-array residual of the current pressure (recomputed after every Gauss-Seidel update) and the
   derivative of the residual written out from the 5-point stencil and the deflection of a point change
-  (Gauss-Seidel) or of the distributed change +d at the node, -d/4 at its four neighbours (Jacobi).
+  (Gauss-Seidel) or of the distributed change +d at the node, -d/4 at its four neighbours (Jacobi), and the
+  density's part of the Couette derivative, rho_r g_rho H of every stencil node whose pressure moves.
 """
 
 import math
@@ -128,7 +130,7 @@ def reynolds_residual(Phi, H, rho_r, eta_r, lam, k, dX, dY, R):
     R[...] = out
 
 
-def relaxation_sweep(P, F, H, rho_r, eta_r, lam, k, dX, dY, Kc, xi_switch, omega_gs, omega_jac, delta):
+def relaxation_sweep(P, F, H, rho_r, eta_r, g_rho, lam, k, dX, dY, Kc, xi_switch, omega_gs, omega_jac, delta):
     nx, ny = P.shape
     kx, ky = 1.0 / dX**2, 1.0 / (k * k * dY**2)
     eps = rho_r * np.maximum(H, 0.0) ** 3 / (eta_r * lam)
@@ -142,10 +144,15 @@ def relaxation_sweep(P, F, H, rho_r, eta_r, lam, k, dX, dY, Kc, xi_switch, omega
         faces = [0.5 * (eps[i, j] + eps[i + a, j + b]) for a, b in ((1, 0), (-1, 0), (0, 1), (0, -1))]
         return -(kx * (faces[0] + faces[1]) + ky * (faces[2] + faces[3]))
 
-    def couette_diag(i, j, K):
+    drho = rho_r * g_rho * H  # d(rho_r H) / dP through the density, H held
+
+    def couette_diag(i, j, K, upstream=0.0):
+        # upstream: the change of the upstream neighbour's pressure per unit change of the node's (-1/4 for the
+        # distributed change when that neighbour is interior, else 0)
         if i >= 2:
-            return (1.5 * rho_r[i, j] * K(0) - 2.0 * rho_r[i - 1, j] * K(1) + 0.5 * rho_r[i - 2, j] * K(2)) / dX
-        return (rho_r[i, j] * K(0) - rho_r[i - 1, j] * K(1)) / dX
+            elastic = 1.5 * rho_r[i, j] * K(0) - 2.0 * rho_r[i - 1, j] * K(1) + 0.5 * rho_r[i - 2, j] * K(2)
+            return (elastic + 1.5 * drho[i, j] - 2.0 * upstream * drho[i - 1, j]) / dX
+        return (rho_r[i, j] * K(0) - rho_r[i - 1, j] * K(1) + drho[i, j]) / dX
 
     def point(m):
         return Kc[m, 0]
@@ -169,7 +176,9 @@ def relaxation_sweep(P, F, H, rho_r, eta_r, lam, k, dX, dY, Kc, xi_switch, omega
     steps = {}
     for i, j in jacobi:
         steps[i, j] = (
-            -omega_jac * (R[i, j] - F[i, j]) / (1.25 * poiseuille_diag(i, j) - couette_diag(i, j, distributed))
+            -omega_jac
+            * (R[i, j] - F[i, j])
+            / (1.25 * poiseuille_diag(i, j) - couette_diag(i, j, distributed, -0.25 if i > 1 else 0.0))
         )
     for (i, j), d in steps.items():
         P[i, j] += d
@@ -179,6 +188,13 @@ def relaxation_sweep(P, F, H, rho_r, eta_r, lam, k, dX, dY, Kc, xi_switch, omega
         change = max(change, abs(d))
     P[1:-1, 1:-1] = np.maximum(P[1:-1, 1:-1], 0.0)
     return change
+
+
+def density_log_slopes(P, p_h, fluid, g_rho):
+    """d ln(rho_r) / dP: the twin's Richardson-extrapolated central differences of its density law
+    (fluid_log_slopes), not the kernel's closed form."""
+    g_eta = np.empty_like(P)
+    fluid_log_slopes(P, p_h, fluid, g_rho, g_eta)
 
 
 def fluid_log_slopes(P, p_h, fluid, g_rho, g_eta):
@@ -231,6 +247,7 @@ def newton_jacobian(P, H, rho_r, eta_r, g_rho, g_eta, lam, k, dX, dY, Kc, wet_i,
 
 TWINS = {
     "fluid_log_slopes": fluid_log_slopes,
+    "density_log_slopes": density_log_slopes,
     "newton_jacobian": newton_jacobian,
     "relaxation_sweep": relaxation_sweep,
     "viscosity_ratio": viscosity_ratio,

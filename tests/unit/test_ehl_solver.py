@@ -154,7 +154,9 @@ def test_relaxation_sweep_matches_twin():
     Kc = g.c_w * g.kern
     got, want = P0.copy(), P0.copy()
     delta = np.empty_like(P0)
-    args = (H, rho_r, eta_r, g.lam, g.k, g.dX, g.dY, Kc, 0.3, 0.6, 0.2)
+    g_rho = np.empty_like(P0)
+    es.density_log_slopes(P0, g.p_h, g.fluid, g_rho)
+    args = (H, rho_r, eta_r, g_rho, g.lam, g.k, g.dX, g.dY, Kc, 0.3, 0.6, 0.2)
     c_got = es.relaxation_sweep(got, F, *args, delta)
     c_want = rs.relaxation_sweep(want, F, *args, np.empty_like(P0))
     jacobi = int(np.count_nonzero(delta))
@@ -179,6 +181,21 @@ def test_fluid_log_slopes_match_twin(name):
     rs.fluid_log_slopes(P, 0.5e9, fluid, *want)
     for a, b, what in ((got[0], want[0], "rho"), (got[1], want[1], "eta")):
         assert np.max(np.abs(a - b)) <= 1e-6 * max(np.max(np.abs(b)), 1e-300), what
+
+
+@pytest.mark.parametrize("name", sorted(FLUIDS))
+def test_density_log_slopes_match_twin(name):
+    """The kernel's closed-form d ln(rho_r)/dP against the twin's Richardson-extrapolated differences of its own
+    law (about 1e-9 of the slope's size, test_fluid_log_slopes_match_twin): tolerance 1e-6 relative to the
+    largest slope of the field; incompressible: exactly 0."""
+    fluid = FLUIDS[name]
+    P = np.concatenate([[0.0, 1e-4], np.linspace(0.05, 3.0, 46)]).reshape(6, 8)
+    got, want = np.empty_like(P), np.empty_like(P)
+    es.density_log_slopes(P, 0.5e9, fluid, got)
+    rs.density_log_slopes(P, 0.5e9, fluid, want)
+    assert np.max(np.abs(got - want)) <= 1e-6 * max(np.max(np.abs(want)), 1e-300)
+    if name.endswith("incompressible"):
+        assert not np.any(got)
 
 
 @pytest.mark.parametrize("Rx, Ry", [(0.08, 0.08), (0.02892, 0.345), (0.345, 0.02892)])
@@ -238,3 +255,32 @@ def test_a_solution_with_a_negative_film_is_not_converged():
     assert sol.h_min < 0.0
     assert not sol.converged
     assert sol.reason.startswith("negative film")
+
+
+def test_contact_box_grows_only_beyond_the_annexe_d_films():
+    """contact_box: films up to H_c = 0.35 (Hertz units; Annexe D reaches 0.27) keep the boxes of s <= 1 (the
+    formula the Annexe D validation was made with), thicker films get an inlet of at least 1.5 (m* - 1) past the
+    Hertz edge (Hamrock and Dowson's starvation boundary m* = 1 + 3.06 H_c^0.58), up to BOX_GROWTH_MAX."""
+    for H_c in (0.02, 0.1, 0.16, 0.27, 0.35):
+        assert en.contact_box(H_c)[0] >= -3.5 - 1e-12
+    for H_c in (0.5, 1.0, 2.3, 5.0):
+        x_in = en.contact_box(H_c)[0]
+        assert -1.0 - x_in >= 1.5 * 3.06 * H_c**0.58 - 1e-9, (H_c, x_in)
+    assert en.contact_box(100.0)[0] == en.contact_box(1000.0)[0]
+
+
+def test_film_estimate_is_hamrock_dowson_or_the_rigid_regimes_film():
+    """film_estimate: Hamrock-Dowson's central film where it is the largest (an Annexe D contact), the rigid
+    regimes' (Hamrock and Dowson 1981) at a light, fast contact (M = 5, L = 20, k = 9), where it is larger."""
+    from bearing_fmu.kernels import ehl
+
+    Rx, Ry = 0.08, 0.08
+    U, G, W = 8.6e-12, 5000.0, 1e-7
+    k = 1.0
+    assert en.film_estimate(U, G, W, k, Rx, Ry) == ehl.film_hamrock_dowson(U, G, W, k)[0]
+    U, G, W = 1e-9, 4000.0, 1e-7  # M = W (2U)^-3/4 = 3.3, L = G (2U)^1/4 = 27
+    a_r = Ry / Rx
+    phi = 1.0 / (1.0 + 2.0 / (3.0 * a_r))
+    rigid_iso = 128.0 * a_r * phi**2 * (0.131 * math.atan(0.5 * a_r) + 1.683) ** 2 * (U / W) ** 2
+    assert en.film_estimate(U, G, W, k, Rx, Ry) >= rigid_iso
+    assert en.film_estimate(U, G, W, k, Rx, Ry) > ehl.film_hamrock_dowson(U, G, W, k)[0]
