@@ -62,7 +62,7 @@ RACE_OUTER = 0
 RACE_INNER = 1
 RACE_HYBRID = 2  # hybrid pitch angle, gyroscopic moment shared in proportion to the spin moments
 # Other readings of the hybrid model's moment share (Rabreau's Table 1 is lost), for sensitivity
-# studies only (docs/reports/rabreau_torque_sensitivity.md); every code >= RACE_HYBRID is hybrid:
+# studies only (tests/validation/test_quasistatic_literature.py); every code >= RACE_HYBRID is hybrid:
 RACE_HYBRID_OUTER_SPLIT = 3  # lam_i = 0, lam_o = 2 (the outer race takes it all, as in ORC)
 RACE_HYBRID_INNER_SPLIT = 4  # lam_i = 2, lam_o = 0 (the inner race takes it all, as in IRC)
 RACE_HYBRID_EQUAL_SPLIT = 5  # lam_i = lam_o = 1 (Harris without race control; unverified, docs/decisions.md)
@@ -221,7 +221,7 @@ def hybrid_inner_share(C, race):
     RACE_HYBRID shares the moment in proportion to the spin moments, lam_i = 2C/(1+C): continuous, and
     the same blend of outer (C -> 0) and inner (C -> inf) control that the hybrid pitch-angle law makes.
     The other codes are sensitivity readings; RACE_HYBRID_CONTROLLING jumps at C = 1, where the loads
-    jump and Newton can fail (docs/reports/rabreau_torque_sensitivity.md).
+    jump and Newton can fail (tests/validation/test_quasistatic_literature.py).
     """
     if race == RACE_HYBRID_OUTER_SPLIT:
         return 0.0 * C

@@ -53,7 +53,7 @@ RACE_CODES = {"outer": qk.RACE_OUTER, "inner": qk.RACE_INNER, "hybrid": qk.RACE_
 # to tilt: refused every time, not by the sign of a rounding error. Any thrust lifts the angles far above it.
 SHOULDER_ANGLE_TOL = 1e-8
 # readings of the hybrid model's gyroscopic-moment share (Python API only, for sensitivity studies;
-# the FMUs use 'spin_moments'): docs/quasistatic.md section 2, docs/reports/rabreau_torque_sensitivity.md
+# the FMUs use 'spin_moments'): docs/quasistatic.md section 2, tests/validation/test_quasistatic_literature.py
 HYBRID_SPLITS = {
     "spin_moments": qk.RACE_HYBRID,
     "outer": qk.RACE_HYBRID_OUTER_SPLIT,

@@ -84,7 +84,7 @@ def test_rabreau_models_differ_at_speed():
 def test_rabreau_torque_spread_of_the_three_models():
     """Rabreau 2018 section 6: at 10 000 rpm and 800 N 'all of the BB torque models predict almost
     the same level of the friction torque (matching within 2 %)'. NOT reproduced: ORC vs ORCG agree
-    within 1 %, but HT is 3.7 % below ORC. docs/reports/rabreau_torque_sensitivity.md finds the cause:
+    within 1 %, but HT is 3.7 % below ORC. the test below finds the cause:
     the share of the gyroscopic moment HT gives the inner race (lam_i = 2C/(1+C) = 0.52, our choice,
     Rabreau's Table 1 missing from our copy of the paper), not the estimated geometry (8 geometries:
     2.9-4.0 %). This test pins the measured spread (2-5 %) so that a change is noticed; it does not claim
@@ -96,7 +96,7 @@ def test_rabreau_torque_spread_of_the_three_models():
 
 
 def test_rabreau_two_percent_needs_the_moment_on_the_outer_race():
-    """The sensitivity behind the test above (docs/reports/rabreau_torque_sensitivity.md): with the
+    """The sensitivity behind the test above: with the
     hybrid pitch angle but the whole gyroscopic moment on the outer race (hybrid_split 'outer',
     lam_i = 0) the three torques agree within Rabreau's 2 % (we get 1.6 %); with Harris' equal
     split (lam_i = 1) they spread further (5.8 %). The spread grows with lam_i, so the default
