@@ -41,9 +41,7 @@ from ..kernels import ehl_solver as es
 from ..kernels import film_correction as fc
 from ..kernels.hertz import hertz_contact
 from ..kernels.lubricant import lubricant_state
-from ..params import load_bearing, load_lubricant
 from ..scene import Scene
-from . import ehl_numerical as en
 from .contacts import race_contacts
 
 TABLE_VERSION = 1
@@ -184,6 +182,10 @@ def solve_node(args):
     M, L, Rx, Ry, k, E_red, lubricant, T_range, level, log = args
     T, u, Q = node_point(M, L, Rx, E_red, lubricant, T_range)
     eta, xi, _ = lubricant_state(T, lubricant.array)
+    # imported here, not with this module: the numerical solver needs scipy, which an FMU's host need not have
+    # (the facades import this module for film_table_array, whose correction 'none' needs no solver)
+    from . import ehl_numerical as en
+
     fluid = en.fluid_array(es.VISC_ROELANDS, es.DENS_DOWSON_HIGGINSON, eta, xi)
     start = time.perf_counter()
     solution = en.solve_contact(Rx, Ry, Q, u, E_red, eta, fluid, finest=level)
@@ -225,10 +227,17 @@ def _race_table(Rx, Ry, c, E_red, lubricant, T_range, level, pool, log):
     return RaceTable(Rx, Ry, c[0], x0, d_x, y0, d_y, ratios.tolist(), nodes)
 
 
+def loaded(bearing, lubricant):
+    """The bearing and lubricant of names, files or objects."""
+    from ..params import load_bearing, load_lubricant
+
+    return load_bearing(bearing), load_lubricant(lubricant)
+
+
 def build_film_table(bearing, lubricant, level=LEVEL, jobs=1, log=False):
     """Solve every node of both races (jobs processes; log: print each node as it is solved), write the table into
     the cache and return it."""
-    b, lub = load_bearing(bearing), load_lubricant(lubricant)
+    b, lub = loaded(bearing, lubricant)
     T_range = temperature_range(lub)
     races, E_red = race_geometry(b)
     start = time.perf_counter()
@@ -245,7 +254,7 @@ def build_film_table(bearing, lubricant, level=LEVEL, jobs=1, log=False):
 
 def load_film_table(bearing, lubricant):
     """The cached table of bearing and lubricant (names, files or objects); FilmTableMissing if not built."""
-    b, lub = load_bearing(bearing), load_lubricant(lubricant)
+    b, lub = loaded(bearing, lubricant)
     path = table_path(b, lub)
     if not path.is_file():
         raise FilmTableMissing(
