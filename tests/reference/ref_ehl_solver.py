@@ -130,7 +130,7 @@ def reynolds_residual(Phi, H, rho_r, eta_r, lam, k, dX, dY, R):
     R[...] = out
 
 
-def relaxation_sweep(P, F, H, rho_r, eta_r, g_rho, lam, k, dX, dY, Kc, xi_switch, omega_gs, omega_jac, delta):
+def relaxation_sweep(P, F, H, rho_r, eta_r, g_rho, lam, k, dX, dY, Kc, xi_switch, omega_gs, omega_jac, xi_lines, delta):
     nx, ny = P.shape
     kx, ky = 1.0 / dX**2, 1.0 / (k * k * dY**2)
     eps = rho_r * np.maximum(H, 0.0) ** 3 / (eta_r * lam)
@@ -169,6 +169,8 @@ def relaxation_sweep(P, F, H, rho_r, eta_r, g_rho, lam, k, dX, dY, Kc, xi_switch
             if eps[i, j] * max(kx, ky) < xi_switch and min(star) > 0.0:
                 jacobi.append((i, j))
                 continue
+            if eps[i, j] * max(kx, ky) >= xi_lines and min(star) > 0.0:
+                continue  # line_gauss_seidel's node
             new = max(P[i, j] - omega_gs * residual(i, j) / (poiseuille_diag(i, j) - couette_diag(i, j, point)), 0.0)
             change = max(change, abs(new - P[i, j]))
             P[i, j] = new
@@ -187,6 +189,53 @@ def relaxation_sweep(P, F, H, rho_r, eta_r, g_rho, lam, k, dX, dY, Kc, xi_switch
                 P[a, b] -= 0.25 * d
         change = max(change, abs(d))
     P[1:-1, 1:-1] = np.maximum(P[1:-1, 1:-1], 0.0)
+    return change
+
+
+def line_gauss_seidel(P, F, H, rho_r, eta_r, lam, k, dX, dY, Kc, g_rho, xi_lines, omega_gs, work):
+    """Row by row: the line nodes (eps large, the five-point star pressurised) in runs of consecutive i, each
+    run's Newton system written as a dense matrix (own derivative as relaxation_sweep's point step, the
+    Poiseuille face coefficients to the neighbours along X) and solved by numpy."""
+    nx, ny = P.shape
+    kx, ky = 1.0 / dX**2, 1.0 / (k * k * dY**2)
+    eps = rho_r * np.maximum(H, 0.0) ** 3 / (eta_r * lam)
+    R = np.zeros_like(P)
+    drho = rho_r * g_rho * H
+
+    def own_derivative(i, j):
+        faces = [0.5 * (eps[i, j] + eps[i + a, j + b]) for a, b in ((1, 0), (-1, 0), (0, 1), (0, -1))]
+        poiseuille = -(kx * (faces[0] + faces[1]) + ky * (faces[2] + faces[3]))
+        if i >= 2:
+            elastic = 1.5 * rho_r[i, j] * Kc[0, 0] - 2.0 * rho_r[i - 1, j] * Kc[1, 0] + 0.5 * rho_r[i - 2, j] * Kc[2, 0]
+            return poiseuille - (elastic + 1.5 * drho[i, j]) / dX
+        return poiseuille - (rho_r[i, j] * Kc[0, 0] - rho_r[i - 1, j] * Kc[1, 0] + drho[i, j]) / dX
+
+    change = 0.0
+    for j in range(1, ny - 1):
+        line = [
+            i for i in range(1, nx - 1)
+            if eps[i, j] * max(kx, ky) >= xi_lines and min(P[i - 1 : i + 2, j].min(), P[i, j - 1], P[i, j + 1]) > 0.0
+        ]  # fmt: skip
+        runs = [[i] for i in line[:1]]
+        for i in line[1:]:
+            if i == runs[-1][-1] + 1:
+                runs[-1].append(i)
+            else:
+                runs.append([i])
+        reynolds_residual(P, H, rho_r, eta_r, lam, k, dX, dY, R)
+        for run in runs:
+            A = np.zeros((len(run), len(run)))
+            for n, i in enumerate(run):
+                A[n, n] = own_derivative(i, j)
+                if n > 0:
+                    A[n, n - 1] = kx * 0.5 * (eps[i, j] + eps[i - 1, j])
+                if n < len(run) - 1:
+                    A[n, n + 1] = kx * 0.5 * (eps[i, j] + eps[i + 1, j])
+            step = np.linalg.solve(A, np.array([F[i, j] - R[i, j] for i in run]))
+            for n, i in enumerate(run):
+                new = max(P[i, j] + omega_gs * step[n], 0.0)
+                change = max(change, abs(new - P[i, j]))
+                P[i, j] = new
     return change
 
 
@@ -250,6 +299,7 @@ TWINS = {
     "density_log_slopes": density_log_slopes,
     "newton_jacobian": newton_jacobian,
     "relaxation_sweep": relaxation_sweep,
+    "line_gauss_seidel": line_gauss_seidel,
     "viscosity_ratio": viscosity_ratio,
     "density_ratio": density_ratio,
     "fluid_fields": fluid_fields,

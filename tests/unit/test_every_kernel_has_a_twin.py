@@ -45,6 +45,11 @@ COVERED_THROUGH = {
         ES + "relaxation_sweep",
         "the derivative of a node's Poiseuille term in its own pressure, the Newton step's denominator",
     ),
+    ES + "_point_derivative": (
+        ES + "relaxation_sweep",
+        "a node's derivative in its own pressure, the point step's denominator and the line system's diagonal",
+    ),
+    ES + "_line_node": (ES + "line_gauss_seidel", "which nodes a row's line system takes, every row compared"),
     "bearing_fmu.kernels.film_correction._cell": (
         "bearing_fmu.kernels.film_correction.film_ratios",
         "the cell and fraction of one axis of the interpolation, compared inside and beyond every edge of the nodes",
