@@ -160,7 +160,7 @@ def box_text():
         "over the lubricant's range, u_e log-uniform in {u0:g}-{u1:g} m/s, Hertz pressure log-uniform in "
         "{p0:g}-{p1:g} GPa (the operating box), kept within the table's range (M <= {cap:g}, L <= {lcap:g}) and, "
         "listed apart, with {cap:g} < M <= {clamp:g} (the table clamps them to its ratios at M = {cap:g}); beyond "
-        "L = {lcap:g} the solver diverges and gives no reference. Reference: the numerical solver on the grid level "
+        "L = {lcap:g} the table has no nodes (the solver diverges at the heavy contacts there). Reference: the numerical solver on the grid level "
         "of the table's nodes ({level}); its own discretisation error (docs/ehl_solver.md, grid study) is not in "
         "these numbers.",
         values=dict(

@@ -53,7 +53,9 @@ TEMPERATURE_RANGE = (293.15, 373.15)  # K: oil temperatures when the lubricant f
 # M = 2.8e4 (level 3, 6-19 s); its grid study (docs/ehl_solver.md) reaches M ~ 3000 only, so beyond that the
 # discretisation error of level 3 is not measured
 M_CAP = 30000.0
-# largest L of the nodes: Annexe D spans L ~ 6-20; at L = 30 (a VG68 at 290 K, 3 m/s) the solver's cycles diverge
+# largest L of the nodes: Annexe D spans L ~ 6-20; beyond it the solver converges at the light contacts (lines,
+# docs/ehl_solver.md) but its cycles diverge at the heavy ones (M >= 15000 at L = 25, p_h >= 4.5 GPa), which
+# the rectangle of nodes would reach
 L_CAP = 20.0
 FORMULAS = (ehl.FILM_HAMROCK_DOWSON, ehl.FILM_MASJEDI_KHONSARI, ehl.FILM_CHITTENDEN)
 SOURCES = ("kernels/ehl_solver.py", "models/ehl_numerical.py", "kernels/ehl.py", "kernels/film_correction.py")
