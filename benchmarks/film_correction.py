@@ -5,8 +5,9 @@ Each bearing's table must have been built (`spindle film-table BEARING --lubrica
 is the one the table records. Random points, per bearing and race (seeded): oil temperature uniform over the
 lubricant's range, entrainment speed and Hertz pressure log-uniform over the table's U_E_RANGE and P_H_RANGE
 (models.film_table), the load from the pressure. At each, the Hamrock-Dowson film as the fidelities compute it,
-uncorrected and corrected (kernels.film_correction, the kernel the fidelities call), against the solver on the grid
-of the table's nodes (level 3), with the fluid of models.film_check. The errors are those of the table (the
+uncorrected and corrected (kernels.film_correction, the kernel the fidelities call), against the solver as the
+table's nodes are solved (models.film_table.solve_numerical: level 3, level 4 where level 3 does not converge), with
+the fluid of models.film_check. The errors are those of the table (the
 (M, L) reduction and the interpolation) against that solver, not the solver's own discretisation (about 2 % on
 level 3, docs/ehl_solver.md).
 
@@ -26,11 +27,9 @@ from concurrent.futures import ProcessPoolExecutor  # noqa: E402
 import numpy as np  # noqa: E402
 
 from bearing_fmu.kernels import ehl  # noqa: E402
-from bearing_fmu.kernels import ehl_solver as es  # noqa: E402
 from bearing_fmu.kernels.film_correction import corrected_film_thickness  # noqa: E402
 from bearing_fmu.kernels.hertz import hertz_contact  # noqa: E402
 from bearing_fmu.kernels.lubricant import lubricant_state  # noqa: E402
-from bearing_fmu.models import ehl_numerical as en  # noqa: E402
 from bearing_fmu.models import film_table as ft  # noqa: E402
 from bearing_fmu.params import load_bearing, load_lubricant  # noqa: E402
 
@@ -92,12 +91,11 @@ def evaluate(args):
     film = (ehl.FILM_HAMROCK_DOWSON, eta, xi, E_red, u, Q, Rx, Ry, c[0])
     formula = ehl.film_thickness(*film)
     corrected = corrected_film_thickness(*film, table, race)
-    fluid = en.fluid_array(es.VISC_ROELANDS, es.DENS_DOWSON_HIGGINSON, eta, xi)
     start = time.perf_counter()
-    solution = en.solve_contact(Rx, Ry, Q, u, E_red, eta, fluid, finest=ft.LEVEL)
+    solution, level = ft.solve_numerical(Rx, Ry, Q, u, E_red, eta, xi)
     return dict(bearing=bearing_name, race=race, T=T, u=u, Q=Q, k=c[0], M=W * (2.0 * U) ** -0.75,
                 L=G * (2.0 * U) ** 0.25, formula=formula, corrected=corrected,
-                numerical=(solution.h_c, solution.h_min), converged=bool(solution.converged),
+                numerical=(solution.h_c, solution.h_min), converged=bool(solution.converged), level=level,
                 seconds=time.perf_counter() - start)  # fmt: skip
 
 
@@ -112,6 +110,7 @@ def table_record(name, lubricant, n_points, n_clamped, seed):
         nodes=sum(len(r.nodes) for r in table.races),
         distinct=sum(len({(n["M"], n["L"]) for n in r.nodes}) for r in table.races),
         late=sum(not n["converged"] for r in table.races for n in r.nodes),
+        finer=sum(n.get("level", ft.LEVEL) > ft.LEVEL for r in table.races for n in r.nodes),
         races=[dict(k=r.k, M=[n["M"] for n in r.nodes], L=[n["L"] for n in r.nodes]) for r in table.races],
     )
     points, record["box"] = random_points(load_bearing(name), lubricant, n_points, n_clamped, seed)
@@ -160,9 +159,9 @@ def box_text():
         "over the lubricant's range, u_e log-uniform in {u0:g}-{u1:g} m/s, Hertz pressure log-uniform in "
         "{p0:g}-{p1:g} GPa (the operating box), kept within the table's range (M <= {cap:g}, L <= {lcap:g}) and, "
         "listed apart, with {cap:g} < M <= {clamp:g} (the table clamps them to its ratios at M = {cap:g}); beyond "
-        "L = {lcap:g} the table has no nodes (the solver diverges at the heavy contacts there). Reference: the numerical solver on the grid level "
-        "of the table's nodes ({level}); its own discretisation error (docs/ehl_solver.md, grid study) is not in "
-        "these numbers.",
+        "L = {lcap:g} the table has no nodes (the solver diverges at the heavy contacts there). Reference: the "
+        "numerical solver as the table's nodes are solved (grid level {level}, the next finer where that one does not "
+        "converge); its own discretisation error (docs/ehl_solver.md, grid study) is not in these numbers.",
         values=dict(
             lubricant=LUBRICANT, u0=ft.U_E_RANGE[0], u1=ft.U_E_RANGE[1], p0=ft.P_H_RANGE[0] / 1e9,
             p1=ft.P_H_RANGE[1] / 1e9, cap=ft.M_CAP, lcap=ft.L_CAP, clamp=CLAMPED * ft.M_CAP, level=ft.LEVEL,
@@ -180,11 +179,11 @@ def tables_table(tables):
         )
         box = t["box"]
         shares = f"{100 * box['inside']:.0f} % / {100 * box['beyond_M']:.0f} % / {100 * box['beyond_L']:.0f} %"
-        rows.append([name, t["seconds"], f"{t['nodes']} ({t['distinct']})", t["late"], races, shares])
+        rows.append([name, t["seconds"], f"{t['nodes']} ({t['distinct']})", t["finer"], t["late"], races, shares])
     return dict(
-        columns=["bearing", "build (s)", "nodes (distinct solves)", "not converged", "race: k, M and L of the nodes",
-                 "operating box: within the table / M beyond / L beyond"],
-        formats=[None, "{:.0f}", None, "{:d}", None, None],
+        columns=["bearing", "build (s)", "nodes (distinct solves)", f"on level {ft.LEVEL + 1}", "not converged",
+                 "race: k, M and L of the nodes", "operating box: within the table / M beyond / L beyond"],
+        formats=[None, "{:.0f}", None, "{:d}", "{:d}", None, None],
         rows=rows,
     )  # fmt: skip
 
@@ -247,7 +246,8 @@ def contacts_table(rows):
         lines.append([
             r["bearing"], ("inner", "outer")[r["race"]], r["T"], r["u"], r["Q"],
             f"{r['M']:.4g}" + (" (clamped)" if r["M"] > ft.M_CAP else ""), r["L"],
-            f"{n[0] * 1e9:.1f} / {n[1] * 1e9:.1f}" + ("" if r["converged"] else " (not converged)"),
+            f"{n[0] * 1e9:.1f} / {n[1] * 1e9:.1f}" + (f" (level {r['level']})" if r["level"] > ft.LEVEL else "")
+            + ("" if r["converged"] else " (not converged)"),
             f"{100 * f[0]:+.1f}, {100 * f[1]:+.1f}", f"{100 * c[0]:+.1f}, {100 * c[1]:+.1f}", r["seconds"],
         ])  # fmt: skip
     return dict(

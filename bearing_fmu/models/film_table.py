@@ -44,7 +44,7 @@ from ..kernels.lubricant import lubricant_state
 from ..scene import Scene
 from .contacts import race_contacts
 
-TABLE_VERSION = 1
+TABLE_VERSION = 2  # 2: a node the default grid does not converge is solved on the next finer one
 LEVEL = 3  # solver grid level of the nodes: the default grid, ~2 % discretisation error (docs/ehl_solver.md)
 P_H_RANGE = (1.0e9, 4.2e9)  # Pa: contact loads from a light contact to the ISO 76 static limit
 U_E_RANGE = (0.5, 20.0)  # m/s: entrainment speeds
@@ -179,25 +179,37 @@ def node_point(M, L, Rx, E_red, lubricant, T_range):
     return T, U * E_red * Rx / eta, W * E_red * Rx * Rx
 
 
-def solve_node(args):
-    """One node: the numerical films and each formula's, as a dict (a top-level function for process pools)."""
-    M, L, Rx, Ry, k, E_red, lubricant, T_range, level, log = args
-    T, u, Q = node_point(M, L, Rx, E_red, lubricant, T_range)
-    eta, xi, _ = lubricant_state(T, lubricant.array)
+def solve_numerical(Rx, Ry, Q, u, E_red, eta, xi, level=LEVEL):
+    """(Solution, grid level) of the numerical solver for a contact (SI, the fluid of models.film_check: Roelands
+    and Dowson-Higginson through eta (Pa.s) and xi (1/Pa)) on `level`, or on the next finer grid where that one
+    does not converge: the heavy contacts whose inlet layer is a few nodes of level 3 wide can close the gap or
+    keep cycling there (B7214C's outer race at M = 30000, L = 11.2: h_min 0.3 nm, not converged), which the finer
+    grid cures (docs/ehl_solver.md, Thin films)."""
     # imported here, not with this module: the numerical solver needs scipy, which an FMU's host need not have
     # (the facades import this module for film_table_array, whose correction 'none' needs no solver)
     from . import ehl_numerical as en
 
     fluid = en.fluid_array(es.VISC_ROELANDS, es.DENS_DOWSON_HIGGINSON, eta, xi)
-    start = time.perf_counter()
     solution = en.solve_contact(Rx, Ry, Q, u, E_red, eta, fluid, finest=level)
+    if solution.converged:
+        return solution, level
+    return en.solve_contact(Rx, Ry, Q, u, E_red, eta, fluid, finest=level + 1), level + 1
+
+
+def solve_node(args):
+    """One node: the numerical films and each formula's, as a dict (a top-level function for process pools)."""
+    M, L, Rx, Ry, k, E_red, lubricant, T_range, level, log = args
+    T, u, Q = node_point(M, L, Rx, E_red, lubricant, T_range)
+    eta, xi, _ = lubricant_state(T, lubricant.array)
+    start = time.perf_counter()
+    solution, solved_on = solve_numerical(Rx, Ry, Q, u, E_red, eta, xi, level)
     seconds = time.perf_counter() - start
     formulas = [ehl.film_thickness(code, eta, xi, E_red, u, Q, Rx, Ry, k) for code in FORMULAS]
     node = dict(M=M, L=L, T=T, u=u, Q=Q, h_c=solution.h_c, h_min=solution.h_min, converged=bool(solution.converged),
-                seconds=seconds, formulas=formulas)  # fmt: skip
+                level=solved_on, seconds=seconds, formulas=formulas)  # fmt: skip
     if log:
         print(f"  node M = {M:.4g}, L = {L:.4g} (T = {T:.1f} K, u = {u:.3g} m/s, Q = {Q:.4g} N): h_c = "
-              f"{solution.h_c * 1e9:.1f} nm, h_min = {solution.h_min * 1e9:.1f} nm, "
+              f"{solution.h_c * 1e9:.1f} nm, h_min = {solution.h_min * 1e9:.1f} nm, level {solved_on}, "
               f"{'converged' if solution.converged else 'NOT converged'}, {seconds:.1f} s", flush=True)  # fmt: skip
     return node
 
