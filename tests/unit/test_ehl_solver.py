@@ -135,23 +135,26 @@ def test_reynolds_residual_matches_twin(Rx, Ry):
     assert abs(load_error) < 0.2 and math.isfinite(load_error)
 
 
+def _sweep_state(Ry):
+    """A relaxation test's state on a 21 x 17 grid of the thesis' oil at 800 N, Rx = 0.08 m and Ry (m): a
+    perturbed Hertz pressure with an inlet bump and a cavitated exit, its film (closed gaps at 0) and fluid
+    ratios, a non-zero FAS right-hand side and the deflection kernel. Returns (grid, P, H, rho_r, eta_r, F, Kc)."""
+    g = en.ContactGrid(0.08, Ry, 800.0, 2.0, E_RED, 0.00795, FLUIDS["wlf_murnaghan"], en.Domain(-2.0, 1.5, 1.6, 21, 17))
+    Xg, Yg = np.meshgrid(g.X, g.Y, indexing="ij")
+    P0 = g.hertz_pressure() * (1.0 + 0.05 * np.sin(5.0 * Xg) * np.cos(3.0 * Yg)) + 0.02 * np.exp(-((Xg + 1.4) ** 2))
+    P0[(Xg > 0.9)] = 0.0
+    P0[0, :] = P0[-1, :] = P0[:, 0] = P0[:, -1] = 0.0
+    _, _, H, rho_r, eta_r = g.residual(P0, -g.delta / g.scale_h + 0.03)
+    F = 1e-3 * np.cos(2.0 * Xg) * np.sin(Yg)
+    return g, P0, np.maximum(H, 0.0), rho_r, eta_r, F, g.c_w * g.kern
+
+
 def test_relaxation_sweep_matches_twin():
     """One sweep on a 21 x 17 grid of the thesis' oil at 800 N: Gauss-Seidel nodes (inlet, sides), Jacobi
     distributive nodes (high pressure, eps small), cavitated nodes and a non-zero FAS right-hand side.
     Both update the same nodes in the same order; the twin's residuals are whole-array sums in another
     order: P agrees to 1e-12 of max P (measured <= 1e-15)."""
-    g = en.ContactGrid(
-        0.08, 0.08, 800.0, 2.0, E_RED, 0.00795, FLUIDS["wlf_murnaghan"], en.Domain(-2.0, 1.5, 1.6, 21, 17)
-    )
-    Xg, Yg = np.meshgrid(g.X, g.Y, indexing="ij")
-    P0 = g.hertz_pressure() * (1.0 + 0.05 * np.sin(5.0 * Xg) * np.cos(3.0 * Yg)) + 0.02 * np.exp(-((Xg + 1.4) ** 2))
-    P0[(Xg > 0.9)] = 0.0
-    P0[0, :] = P0[-1, :] = P0[:, 0] = P0[:, -1] = 0.0
-    H0 = -g.delta / g.scale_h + 0.03
-    _, _, H, rho_r, eta_r = g.residual(P0, H0)
-    H = np.maximum(H, 0.0)
-    F = 1e-3 * np.cos(2.0 * Xg) * np.sin(Yg)
-    Kc = g.c_w * g.kern
+    g, P0, H, rho_r, eta_r, F, Kc = _sweep_state(0.08)
     got, want = P0.copy(), P0.copy()
     delta = np.empty_like(P0)
     g_rho = np.empty_like(P0)
@@ -175,18 +178,7 @@ def test_line_relaxation_matches_twin(density):
     kernel solves each run by the Thomas algorithm, the twin by a dense numpy solve, both with the same
     residuals in the same row order: P agrees to 1e-12 of max P (measured <= 1e-15). With and without the
     density's part of the derivative."""
-    g = en.ContactGrid(
-        0.08, 0.08 * 9.0, 800.0, 2.0, E_RED, 0.00795, FLUIDS["wlf_murnaghan"], en.Domain(-2.0, 1.5, 1.6, 21, 17)
-    )
-    Xg, Yg = np.meshgrid(g.X, g.Y, indexing="ij")
-    P0 = g.hertz_pressure() * (1.0 + 0.05 * np.sin(5.0 * Xg) * np.cos(3.0 * Yg)) + 0.02 * np.exp(-((Xg + 1.4) ** 2))
-    P0[(Xg > 0.9)] = 0.0
-    P0[0, :] = P0[-1, :] = P0[:, 0] = P0[:, -1] = 0.0
-    H0 = -g.delta / g.scale_h + 0.03
-    _, _, H, rho_r, eta_r = g.residual(P0, H0)
-    H = np.maximum(H, 0.0)
-    F = 1e-3 * np.cos(2.0 * Xg) * np.sin(Yg)
-    Kc = g.c_w * g.kern
+    g, P0, H, rho_r, eta_r, F, Kc = _sweep_state(0.08 * 9.0)
     g_rho = np.zeros_like(P0)
     if density:
         es.density_log_slopes(P0, g.p_h, g.fluid, g_rho)
