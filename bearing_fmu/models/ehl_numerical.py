@@ -629,8 +629,9 @@ def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=3, coarsest=0, s
     p_max in Pa, convergence record, fields) on the grid of level `finest` (grid_hierarchy; level 3, the default,
     is the grid of the ~2 % discretisation error, docs/ehl_solver.md) of the box (x_in, x_out, y_half), by
     default contact_box of the film estimate (film_estimate: Hamrock-Dowson's central film, or the rigid
-    regimes' where larger). Without settings, the relaxation takes the density's derivative where that box
-    grows (SolverSettings.density_jac)."""
+    regimes' where larger). Without settings, the relaxation runs along lines and takes the density's
+    derivative where that box grows or the film is thick at large Moes L (LINES_MIN_L; SolverSettings.xi_lines,
+    density_jac), and by points elsewhere."""
     k, ell_E, ell_K = hertz_coefficients_exact(Rx, Ry)
     a, b, _, p_h = hertz_contact(load, Rx, Ry, E_red, k, ell_E, ell_K)
     U, G, Wd = ehl.dimensionless_groups(eta0, alpha_star(fluid, p_h), E_red, u_e, load, Rx)
