@@ -110,7 +110,7 @@ def table_record(name, lubricant, n_points, n_clamped, seed):
         nodes=sum(len(r.nodes) for r in table.races),
         distinct=sum(len({(n["M"], n["L"]) for n in r.nodes}) for r in table.races),
         late=sum(not n["converged"] for r in table.races for n in r.nodes),
-        finer=sum(n.get("level", ft.LEVEL) > ft.LEVEL for r in table.races for n in r.nodes),
+        finer=sum(n["level"] > ft.LEVEL for r in table.races for n in r.nodes),
         races=[dict(k=r.k, M=[n["M"] for n in r.nodes], L=[n["L"] for n in r.nodes]) for r in table.races],
     )
     points, record["box"] = random_points(load_bearing(name), lubricant, n_points, n_clamped, seed)
