@@ -4,7 +4,8 @@ Operating points: the 6208 of Guessasma & Machado (2018) and Farah et al. (2020)
 and 1700 rad/s, the ends and the middle of Guessasma's speed range; 5 kN at 500 rad/s, Farah's second load) and
 the B7214C of the Rabreau et al. (2018) spindle rig under its 800 N preload at 10 000 rpm with iso_vg68_mineral at
 313 K. At each, the most loaded inner and outer contacts of the quasi-static fidelity, solved numerically on the
-solver's default grid; the three film formulas' h_c and h_min against it, with Lambda and the regime each implies.
+grid level each contact's film needs (models.ehl_numerical.film_level: within about 2 % of the grid-converged
+film); the three film formulas' h_c and h_min against it, with Lambda and the regime each implies.
 The numerical solution is isothermal and Newtonian with Roelands' viscosity and Dowson and Higginson's density
 through the oil's viscosity and pressure-viscosity coefficient at the oil temperature, as the formulas are.
 Run: python -m benchmarks.film_check -> docs/reports/film_check.md
@@ -37,7 +38,7 @@ def row(point, c):
     n = c.numerical
     if n is None:
         return [point, c.load, None, None, None, "no positive film on the solver's grid"] + [None] * 4, []
-    numerical = f"{n.h_c * 1e9:.1f} / {n.h_min * 1e9:.1f}, {n.lam:.2f}, {n.regime}"
+    numerical = f"{n.h_c * 1e9:.1f} / {n.h_min * 1e9:.1f}, {n.lam:.2f}, {n.regime} (level {c.level})"
     cells = [point, c.load, c.u_e, c.k, c.p_h / 1e9, numerical + ("" if c.converged else " (not converged)")]
     metrics = []
     for name, f in c.formulas.items():

@@ -316,7 +316,8 @@ def cmd_film(args):
     omega = args.speed * 2.0 * math.pi / 60.0
     print(
         f"{args.bearing} with {args.lubricant} at {args.speed:g} rpm ({omega:.2f} rad/s), oil at {args.T_oil:g} K, "
-        f"loads {loads or 'none'} (N, N.m); numerical solver on grid level {args.level}"
+        f"loads {loads or 'none'} (N, N.m); numerical solver on "
+        + (f"grid level {args.level}" if args.level is not None else "the grid level each contact's film needs")
     )
     print(format_film_check(film_check(args.bearing, args.lubricant, omega, loads, args.T_oil, args.level)))
     return EXIT_OK
@@ -324,12 +325,12 @@ def cmd_film(args):
 
 def cmd_film_table(args):
     """Build the film correction table of a bearing and lubricant into the cache (bearing_fmu.models.film_table)."""
-    from bearing_fmu.models.film_table import LEVEL, build_film_table, table_path
+    from bearing_fmu.models.film_table import build_film_table, table_path
     from bearing_fmu.params import load_bearing, load_lubricant
 
     print(
-        f"film table of {args.bearing} with {args.lubricant}: solving its nodes on grid level {LEVEL} with "
-        f"{args.jobs} process(es)"
+        f"film table of {args.bearing} with {args.lubricant}: solving each node on the grid level its film needs "
+        f"with {args.jobs} process(es)"
     )
     table = build_film_table(args.bearing, args.lubricant, jobs=args.jobs, log=True)
     nodes = [node for race in table.races for node in race.nodes]
@@ -440,7 +441,13 @@ def main(argv=None):
     for name, unit in (("Fx", "N"), ("Fy", "N"), ("Fz", "N"), ("Mx", "N.m"), ("My", "N.m")):
         p.add_argument(f"--{name}", type=float, default=0.0, help=f"load on the inner ring ({unit})")
     p.add_argument("--T-oil", dest="T_oil", type=float, default=313.15, metavar="K", help="oil temperature (K)")
-    p.add_argument("--level", type=int, default=2, help="grid level of the numerical solver (docs/ehl_solver.md)")
+    p.add_argument(
+        "--level",
+        type=int,
+        default=None,
+        help="grid level of the numerical solver (default: the level each contact's film needs, 3-5, within ~2 %% "
+        "of the grid-converged film; docs/ehl_solver.md)",
+    )
     p = sub.add_parser(
         "film-table",
         help="build the film correction table of a bearing and lubricant (scene option film_correction = 'table')",

@@ -570,6 +570,12 @@ LINES_MIN_H = 0.1
 # heavy contacts at L = 18 diverged; 10 and 100 converge them and the light ones alike (k = 9, M = 30000 and
 # 100-1000 at L = 20-40: 16 / 27 cycles and 10-37 / 8-28)
 XI_LINES = 10.0
+# Gauss-Seidel under-relaxation where the lines run (not the nearly rigid contacts, RIGID_OMEGA_GS): with 0.6 the
+# minimum film of M ~ 1000 at L = 32-40 (k = 9.4, level 3: the 6208's inner contact at 1700 rad/s, 3 kN) cycled
+# between 1470 and 1770 nm in a slow relaxation oscillation and never met the criterion, and M = 1000, L = 40
+# diverged; with 0.4 every contact of the k = 9 grid M = 5-1000 x L = 20-40 converges (M = 1000, L = 40 in 94
+# cycles, the others in 4-25), within 0.4 % of the films of 0.6 where both converge
+LINES_OMEGA_GS = 0.4
 
 
 def contact_box(H_c):
@@ -622,30 +628,69 @@ def film_estimate(U, G, W, k, Rx, Ry):
     return max(h_c, max(rigid_iso, rigid_piezo) * (U / W) ** 2)
 
 
+# The grid level a contact's film needs (resolving_level; solve_contact with finest=None): the coarsest level from 3
+# whose node spacing along X is at most RESOLVING_SPACING times the estimated central film, both in Hertz units.
+# The heavy contacts' inlet layer, pressure spike and side constrictions narrow with their film, so a fixed level
+# loses them: on level 3 (spacing 0.0094 b at the heavy loads' box) the B7214C's outer race (k = 5.86) is 2.7 / 3.4 %
+# thin in h_c / h_min at M = 1.05e4 and 9 / 30 % at M = 3.6e4 against the Richardson estimate of levels 3-5. Every
+# level at a spacing of at most 0.38 film was within 2 % of the estimate at the nine contacts measured, M = 3000-36000
+# at k = 5.9 and 9 (docs/ehl_solver.md, Heavy contacts); 0.35 keeps a margin. FINEST_LEVEL bounds the choice:
+# 1281 x 1025 nodes, 20-60 s a heavy contact on one core.
+RESOLVING_SPACING = 0.35
+COARSEST_RESOLVING_LEVEL = 3  # level 2 is 1-8 % off on h_c even at light loads (docs/ehl_solver.md, Grid convergence)
+FINEST_LEVEL = 5
+
+
+def film_level(H_c):
+    """The grid level (COARSEST_RESOLVING_LEVEL to FINEST_LEVEL) for a contact whose central film is about H_c
+    (Hertz units, -) on its box contact_box(H_c): the coarsest whose X spacing is at most RESOLVING_SPACING H_c."""
+    x_in, x_out, _ = contact_box(H_c)
+    for level in range(COARSEST_RESOLVING_LEVEL, FINEST_LEVEL):
+        if (x_out - x_in) / (40 * 2**level) <= RESOLVING_SPACING * H_c:
+            return level
+    return FINEST_LEVEL
+
+
+def contact_estimate(Rx, Ry, load, u_e, E_red, eta0, fluid):
+    """(k, U, G, W, b, h_c) of a contact in SI: ellipticity k, the dimensionless groups of kernels.ehl with the
+    fluid's asymptotic pressure-viscosity coefficient, the Hertz semi-axis b along the entrainment (m) and the film
+    estimate h_c (m) that sizes the box and starts the solve (film_estimate)."""
+    k, ell_E, ell_K = hertz_coefficients_exact(Rx, Ry)
+    _, b, _, p_h = hertz_contact(load, Rx, Ry, E_red, k, ell_E, ell_K)
+    U, G, W = ehl.dimensionless_groups(eta0, alpha_star(fluid, p_h), E_red, u_e, load, Rx)
+    return k, U, G, W, b, film_estimate(U, G, W, k, Rx, Ry) * Rx
+
+
+def resolving_level(Rx, Ry, load, u_e, E_red, eta0, fluid):
+    """The grid level a contact's film needs (film_level of its film estimate; arguments as solve_contact's)."""
+    *_, b, h_c = contact_estimate(Rx, Ry, load, u_e, E_red, eta0, fluid)
+    return film_level(h_c * Rx / b**2)
+
+
 def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=3, coarsest=0, settings=None, box=None):
     """Steady isothermal EHL film of one contact in SI: reduced radii Rx (along the entrainment), Ry (m),
     load (N), entrainment speed u_e = (u1 + u2) / 2 (m/s), reduced modulus E' (Pa), viscosity at p = 0
     eta0 (Pa.s), fluid array (fluid_array). Returns a Solution (h_c, h_min, hm_centre, hm_lateral in m,
     p_max in Pa, convergence record, fields) on the grid of level `finest` (grid_hierarchy; level 3, the default,
-    is the grid of the ~2 % discretisation error, docs/ehl_solver.md) of the box (x_in, x_out, y_half), by
+    is within ~2 % of the grid-converged film up to Moes M ~ 5000 at ball-bearing ellipticities, docs/ehl_solver.md;
+    None: the level the contact's film needs, film_level, up to FINEST_LEVEL) of the box (x_in, x_out, y_half), by
     default contact_box of the film estimate (film_estimate: Hamrock-Dowson's central film, or the rigid
     regimes' where larger). Without settings, the relaxation runs along lines and takes the density's
     derivative where that box grows or the film is thick at large Moes L (LINES_MIN_L; SolverSettings.xi_lines,
     density_jac), and by points elsewhere."""
-    k, ell_E, ell_K = hertz_coefficients_exact(Rx, Ry)
-    a, b, _, p_h = hertz_contact(load, Rx, Ry, E_red, k, ell_E, ell_K)
-    U, G, Wd = ehl.dimensionless_groups(eta0, alpha_star(fluid, p_h), E_red, u_e, load, Rx)
-    h_c_guess = film_estimate(U, G, Wd, k, Rx, Ry) * Rx
-    own_box = contact_box(h_c_guess * Rx / b**2)
+    _, U, G, _, b, h_c_guess = contact_estimate(Rx, Ry, load, u_e, E_red, eta0, fluid)
+    H_c = h_c_guess * Rx / b**2  # in Hertz units
+    own_box = contact_box(H_c)
+    finest = film_level(H_c) if finest is None else finest
     thick = own_box[2] > 2.0  # the box grows: a thick film in Hertz units
     rigid = own_box[2] >= 2.0 * BOX_GROWTH_MAX  # the largest box: a nearly rigid contact
     box = box or own_box
     if settings is None:
-        lines = thick or (G * (2.0 * U) ** 0.25 >= LINES_MIN_L and h_c_guess * Rx / b**2 >= LINES_MIN_H)
+        lines = thick or (G * (2.0 * U) ** 0.25 >= LINES_MIN_L and H_c >= LINES_MIN_H)
         settings = SolverSettings(
             density_jac=lines,
             xi_lines=XI_LINES if lines else math.inf,
-            omega_gs=RIGID_OMEGA_GS if rigid else SolverSettings.omega_gs,
+            omega_gs=RIGID_OMEGA_GS if rigid else (LINES_OMEGA_GS if lines else SolverSettings.omega_gs),
         )
     grids = grid_hierarchy(Rx, Ry, load, u_e, E_red, eta0, fluid, finest, coarsest, box)
     return solve_grids(grids, settings, h_c_guess)

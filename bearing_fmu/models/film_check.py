@@ -61,6 +61,7 @@ class ContactFilm:
     formulas: dict = field(default_factory=dict)  # formula name -> Film
     numerical: Film = None  # None: the solver found no positive film on its grid (a finer level is needed)
     converged: bool = False
+    level: int = 0  # grid level of the numerical solve (models.ehl_numerical.grid_hierarchy)
     seconds: float = 0.0  # wall time of the numerical solve (s)
 
 
@@ -69,12 +70,13 @@ def _film(h_c, h_min, sigma):
     return Film(h_c, h_min, lam, REGIMES[ehl.lubrication_regime(lam)])
 
 
-def film_check(bearing, lubricant, omega, loads, T_oil=313.15, finest=2):
+def film_check(bearing, lubricant, omega, loads, T_oil=313.15, finest=None):
     """The most loaded inner and outer contacts of `bearing` (name or file) with `lubricant` at inner-ring speed
     omega (rad/s), loads = dict of the quasi-static inputs (F_x, F_y, F_z in N, M_x, M_y in N.m) and oil
-    temperature T_oil (K), each with its film by every formula and by the numerical solver on grid level `finest`
-    (docs/ehl_solver.md). Returns [ContactFilm inner, ContactFilm outer]; a race without a loaded contact is left
-    out."""
+    temperature T_oil (K), each with its film by every formula and by the numerical solver on grid level `finest`,
+    by default the level each contact's film needs (models.ehl_numerical.film_level, docs/ehl_solver.md: within
+    ~2 % of the grid-converged film). Returns [ContactFilm inner, ContactFilm outer]; a race without a loaded
+    contact is left out."""
     model = QuasiStaticModel(bearing, lubricant)
     model.evaluate(omega=omega, T_oil=T_oil, **loads)
     eta, xi, _ = lubricant_state(T_oil, model.lubricant.array)
@@ -95,8 +97,9 @@ def film_check(bearing, lubricant, omega, loads, T_oil=313.15, finest=2):
         check = ContactFilm(name, ball, Q, u, Rx, Ry, k, 0.0, sigma)
         for formula, code in FORMULAS.items():
             check.formulas[formula] = _film(*ehl.film_thickness(code, eta, xi, E_red, u, Q, Rx, Ry, k), sigma)
+        check.level = en.resolving_level(Rx, Ry, Q, u, E_red, eta, fluid) if finest is None else finest
         start = time.perf_counter()
-        solution = en.solve_contact(Rx, Ry, Q, u, E_red, eta, fluid, finest=finest)
+        solution = en.solve_contact(Rx, Ry, Q, u, E_red, eta, fluid, finest=check.level)
         check.seconds = time.perf_counter() - start
         check.p_h = solution.grid.p_h
         # a film that closes (h <= 0) is no solution: the grid does not resolve this contact's film
@@ -114,7 +117,7 @@ def format_film_check(checks):
         lines.append(
             f"{c.race} contact, ball {c.ball}: Q = {c.load:.1f} N, u_e = {c.u_e:.3f} m/s, k = {c.k:.3f}, "
             f"p_h = {c.p_h / 1e9:.3f} GPa, sigma = {c.sigma * 1e9:.1f} nm; numerical solve "
-            f"{'converged' if c.converged else 'NOT converged'} in {c.seconds:.1f} s"
+            f"on grid level {c.level} {'converged' if c.converged else 'NOT converged'} in {c.seconds:.1f} s"
         )
         lines.append(
             f"  {'method':<18} {'h_c nm':>9} {'vs num.':>8} {'h_min nm':>9} {'vs num.':>8} {'Lambda':>7}  regime"

@@ -323,3 +323,25 @@ def test_film_estimate_is_hamrock_dowson_or_the_rigid_regimes_film():
     rigid_iso = 128.0 * a_r * phi**2 * (0.131 * math.atan(0.5 * a_r) + 1.683) ** 2 * (U / W) ** 2
     assert en.film_estimate(U, G, W, k, Rx, Ry) >= rigid_iso
     assert en.film_estimate(U, G, W, k, Rx, Ry) > ehl.film_hamrock_dowson(U, G, W, k)[0]
+
+
+def test_film_level_is_the_coarsest_level_that_resolves_the_film():
+    """film_level (docs/ehl_solver.md, Heavy contacts): the films of the light and moderate contacts stay on level 3,
+    the default the Annexe D validation was made with; a thinner film gets the coarsest level whose X spacing on its
+    box is at most RESOLVING_SPACING times the film, the next coarser level's being larger; below what the finest
+    level resolves, the finest. The level never rises with the film."""
+
+    def spacing(H_c, level):
+        x_in, x_out, _ = en.contact_box(H_c)
+        return (x_out - x_in) / (40 * 2**level)
+
+    films = np.geomspace(1e-4, 10.0, 200)
+    levels = [en.film_level(H_c) for H_c in films]
+    assert all(a >= b for a, b in zip(levels, levels[1:])), "a thicker film got a finer level"
+    assert levels[-1] == en.COARSEST_RESOLVING_LEVEL and levels[0] == en.FINEST_LEVEL
+    for H_c, level in zip(films, levels):
+        if level < en.FINEST_LEVEL:
+            assert spacing(H_c, level) <= en.RESOLVING_SPACING * H_c
+        if level > en.COARSEST_RESOLVING_LEVEL:
+            assert spacing(H_c, level - 1) > en.RESOLVING_SPACING * H_c
+    assert en.film_level(0.16) == 3  # Annexe D's light loads (H_c ~ 0.16, case 6)
