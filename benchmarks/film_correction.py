@@ -6,10 +6,10 @@ is the one the table records. Random points, per bearing and race (seeded): oil 
 lubricant's range, entrainment speed and Hertz pressure log-uniform over the table's U_E_RANGE and P_H_RANGE
 (models.film_table), the load from the pressure. At each, the Hamrock-Dowson film as the fidelities compute it,
 uncorrected and corrected (kernels.film_correction, the kernel the fidelities call), against the solver as the
-table's nodes are solved (models.film_table.solve_numerical: level 3, level 4 where level 3 does not converge), with
-the fluid of models.film_check. The errors are those of the table (the
-(M, L) reduction and the interpolation) against that solver, not the solver's own discretisation (about 2 % on
-level 3, docs/ehl_solver.md).
+table's nodes are solved (models.film_table.solve_numerical: on the grid level the contact's film needs, 3 to 5,
+the next finer where that one does not converge), with the fluid of models.film_check. The errors are those of the
+table (the (M, L) reduction and the interpolation) against that solver, not the solver's own discretisation (within
+about 2 % on the level chosen, docs/ehl_solver.md, Heavy contacts).
 
 A table not yet in the cache is built first (its build time is then this run's).
 Run: python -m benchmarks.film_correction [--points 16] [--clamped 4] [--jobs 2]
@@ -22,6 +22,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # one core per solve (the co
 import argparse  # noqa: E402
 import math  # noqa: E402
 import time  # noqa: E402
+from collections import Counter  # noqa: E402
 from concurrent.futures import ProcessPoolExecutor  # noqa: E402
 
 import numpy as np  # noqa: E402
@@ -30,6 +31,7 @@ from bearing_fmu.kernels import ehl  # noqa: E402
 from bearing_fmu.kernels.film_correction import corrected_film_thickness  # noqa: E402
 from bearing_fmu.kernels.hertz import hertz_contact  # noqa: E402
 from bearing_fmu.kernels.lubricant import lubricant_state  # noqa: E402
+from bearing_fmu.models import ehl_numerical as en  # noqa: E402
 from bearing_fmu.models import film_table as ft  # noqa: E402
 from bearing_fmu.params import load_bearing, load_lubricant  # noqa: E402
 
@@ -38,7 +40,8 @@ from .render import cli, metric  # noqa: E402
 BEARINGS = ("6208", "B7214C")
 LUBRICANT = "iso_vg68_mineral"
 TARGET = 0.03  # |error| of h_c and h_min for k >= 1
-STUDIED_M = 3000.0  # heaviest M of the solver's grid study (docs/ehl_solver.md)
+STUDIED_M = 3000.0  # the results' split: the heaviest M of the Annexe D grid study (docs/ehl_solver.md)
+LEVELS = tuple(range(en.COARSEST_RESOLVING_LEVEL, en.FINEST_LEVEL + 1))  # the grid levels film_level chooses from
 CLAMPED = 3.0  # the contacts beyond the table are drawn with M_CAP < M <= CLAMPED M_CAP
 
 
@@ -110,7 +113,7 @@ def table_record(name, lubricant, n_points, n_clamped, seed):
         nodes=sum(len(r.nodes) for r in table.races),
         distinct=sum(len({(n["M"], n["L"]) for n in r.nodes}) for r in table.races),
         late=sum(not n["converged"] for r in table.races for n in r.nodes),
-        finer=sum(n["level"] > ft.LEVEL for r in table.races for n in r.nodes),
+        levels=Counter(n["level"] for r in table.races for n in {(n["M"], n["L"]): n for n in r.nodes}.values()),
         races=[dict(k=r.k, M=[n["M"] for n in r.nodes], L=[n["L"] for n in r.nodes]) for r in table.races],
     )
     points, record["box"] = random_points(load_bearing(name), lubricant, n_points, n_clamped, seed)
@@ -160,11 +163,12 @@ def box_text():
         "{p0:g}-{p1:g} GPa (the operating box), kept within the table's range (M <= {cap:g}, L <= {lcap:g}) and, "
         "listed apart, with {cap:g} < M <= {clamp:g} (the table clamps them to its ratios at M = {cap:g}); beyond "
         "L = {lcap:g} the table has no nodes (the solver diverges at the heavy contacts there). Reference: the "
-        "numerical solver as the table's nodes are solved (grid level {level}, the next finer where that one does not "
-        "converge); its own discretisation error (docs/ehl_solver.md, grid study) is not in these numbers.",
+        "numerical solver as the table's nodes are solved (on the grid level the contact's film needs, 3 to 5, the "
+        "next finer where that one does not converge); its own discretisation error, within about 2 % on the level "
+        "chosen (docs/ehl_solver.md, Heavy contacts), is not in these numbers.",
         values=dict(
             lubricant=LUBRICANT, u0=ft.U_E_RANGE[0], u1=ft.U_E_RANGE[1], p0=ft.P_H_RANGE[0] / 1e9,
-            p1=ft.P_H_RANGE[1] / 1e9, cap=ft.M_CAP, lcap=ft.L_CAP, clamp=CLAMPED * ft.M_CAP, level=ft.LEVEL,
+            p1=ft.P_H_RANGE[1] / 1e9, cap=ft.M_CAP, lcap=ft.L_CAP, clamp=CLAMPED * ft.M_CAP,
         ),
     )  # fmt: skip
 
@@ -179,11 +183,13 @@ def tables_table(tables):
         )
         box = t["box"]
         shares = f"{100 * box['inside']:.0f} % / {100 * box['beyond_M']:.0f} % / {100 * box['beyond_L']:.0f} %"
-        rows.append([name, t["seconds"], f"{t['nodes']} ({t['distinct']})", t["finer"], t["late"], races, shares])
+        levels = " / ".join(str(t["levels"].get(level, 0)) for level in LEVELS)
+        rows.append([name, t["seconds"], f"{t['nodes']} ({t['distinct']})", levels, t["late"], races, shares])
     return dict(
-        columns=["bearing", "build (s)", "nodes (distinct solves)", f"on level {ft.LEVEL + 1}", "not converged",
+        columns=["bearing", "build (s)", "nodes (distinct solves)",
+                 "distinct solves on level " + " / ".join(map(str, LEVELS)), "not converged",
                  "race: k, M and L of the nodes", "operating box: within the table / M beyond / L beyond"],
-        formats=[None, "{:.0f}", None, "{:d}", "{:d}", None, None],
+        formats=[None, "{:.0f}", None, None, "{:d}", None, None],
         rows=rows,
     )  # fmt: skip
 
@@ -246,14 +252,13 @@ def contacts_table(rows):
         lines.append([
             r["bearing"], ("inner", "outer")[r["race"]], r["T"], r["u"], r["Q"],
             f"{r['M']:.4g}" + (" (clamped)" if r["M"] > ft.M_CAP else ""), r["L"],
-            f"{n[0] * 1e9:.1f} / {n[1] * 1e9:.1f}" + (f" (level {r['level']})" if r["level"] > ft.LEVEL else "")
-            + ("" if r["converged"] else " (not converged)"),
+            f"{n[0] * 1e9:.1f} / {n[1] * 1e9:.1f}" + ("" if r["converged"] else " (not converged)"), r["level"],
             f"{100 * f[0]:+.1f}, {100 * f[1]:+.1f}", f"{100 * c[0]:+.1f}, {100 * c[1]:+.1f}", r["seconds"],
         ])  # fmt: skip
     return dict(
-        columns=["bearing", "race", "T (K)", "u_e (m/s)", "Q (N)", "M", "L", "numerical h_c / h_min (nm)",
+        columns=["bearing", "race", "T (K)", "u_e (m/s)", "Q (N)", "M", "L", "numerical h_c / h_min (nm)", "level",
                  "formula h_c, h_min (%)", "corrected h_c, h_min (%)", "solve (s)"],
-        formats=[None, None, "{:.0f}", "{:.2f}", "{:.0f}", None, "{:.3g}", None, None, None, "{:.1f}"],
+        formats=[None, None, "{:.0f}", "{:.2f}", "{:.0f}", None, "{:.3g}", None, "{:d}", None, None, "{:.1f}"],
         rows=lines,
     )  # fmt: skip
 

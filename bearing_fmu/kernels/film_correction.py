@@ -21,7 +21,7 @@ from bearing_fmu_common.jit import kernel
 
 from .ehl import dimensionless_groups, film_thickness
 
-FT_NM = 7  # nodes in ln(W G^3)
+FT_NM = 9  # nodes in ln(W G^3)
 FT_NL = 4  # nodes in ln L
 FT_N_FORMULAS = 3  # FILM_HAMROCK_DOWSON, FILM_MASJEDI_KHONSARI, FILM_CHITTENDEN
 FT_ON = 0

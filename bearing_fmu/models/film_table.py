@@ -12,7 +12,8 @@ ratios of that edge. A node is solved at a physical point of the oil: the temper
 middle speed (clamped to the range), the speed giving L at that temperature, the load giving its M; a node whose
 load would exceed the range's largest Hertz pressure (the rectangle's heavy, cold and fast corner, outside the
 operating box) is solved at that load and its L (at M = 30000, L = 20 the solver did not converge, h_min half the
-neighbours').
+neighbours'). Each node is solved on the grid level its film needs (solve_numerical), so the ratios carry about the
+same discretisation error, ~2 %, from the light nodes to the heavy ones.
 
 `build_film_table(bearing, lubricant)` solves the nodes (`spindle film-table BEARING --lubricant OIL`) and writes
 the table as JSON into the cache directory of the compiled kernels (bearing_fmu_common.jit.cache_base()/film_tables),
@@ -44,14 +45,15 @@ from ..kernels.lubricant import lubricant_state
 from ..scene import Scene
 from .contacts import race_contacts
 
-TABLE_VERSION = 2  # 2: a node the default grid does not converge is solved on the next finer one
-LEVEL = 3  # solver grid level of the nodes: the default grid, ~2 % discretisation error (docs/ehl_solver.md)
+# 2: a node the default grid does not converge is solved on the next finer one; 3: each node on the level its film
+# needs (models.ehl_numerical.film_level), not on level 3 throughout
+TABLE_VERSION = 3
 P_H_RANGE = (1.0e9, 4.2e9)  # Pa: contact loads from a light contact to the ISO 76 static limit
 U_E_RANGE = (0.5, 20.0)  # m/s: entrainment speeds
 TEMPERATURE_RANGE = (293.15, 373.15)  # K: oil temperatures when the lubricant file gives no range
-# largest M of the nodes: the solver converged at the random contacts of docs/reports/film_correction.md up to
-# M = 2.8e4 (level 3, 6-19 s); its grid study (docs/ehl_solver.md) reaches M ~ 3000 only, so beyond that the
-# discretisation error of level 3 is not measured
+# largest M of the nodes: the heaviest of them (M = 30000 at the smallest L, p_h ~ 1.5 GPa, H_c ~ 0.005 Hertz
+# units) already ask for a grid finer than ehl_numerical.FINEST_LEVEL by its spacing rule, and are solved on that
+# finest level (docs/ehl_solver.md, Heavy contacts)
 M_CAP = 30000.0
 # largest L of the nodes: Annexe D spans L ~ 6-20; beyond it the solver converges at the light contacts (lines,
 # docs/ehl_solver.md) but its cycles diverge at the heavy ones (M >= 15000 at L = 25, p_h >= 4.5 GPa), which
@@ -90,7 +92,6 @@ class FilmTable:
     bearing: str
     lubricant: str
     key: str
-    level: int
     T_range: tuple
     seconds: float
     races: list
@@ -129,7 +130,7 @@ def table_key(bearing, lubricant):
         "E_red": E_red,
         "lubricant": list(lubricant.array),
         "T_range": temperature_range(lubricant),
-        "settings": (LEVEL, P_H_RANGE, U_E_RANGE, M_CAP, L_CAP, fc.FT_NM, fc.FT_NL),
+        "settings": (P_H_RANGE, U_E_RANGE, M_CAP, L_CAP, fc.FT_NM, fc.FT_NL),
     }
     digest = hashlib.sha256(json.dumps(content).encode())
     for name in SOURCES:
@@ -179,30 +180,33 @@ def node_point(M, L, Rx, E_red, lubricant, T_range):
     return T, U * E_red * Rx / eta, W * E_red * Rx * Rx
 
 
-def solve_numerical(Rx, Ry, Q, u, E_red, eta, xi, level=LEVEL):
+def solve_numerical(Rx, Ry, Q, u, E_red, eta, xi, level=None):
     """(Solution, grid level) of the numerical solver for a contact (SI, the fluid of models.film_check: Roelands
-    and Dowson-Higginson through eta (Pa.s) and xi (1/Pa)) on `level`, or on the next finer grid where that one
-    does not converge: the heavy contacts whose inlet layer is a few nodes of level 3 wide can close the gap or
-    keep cycling there (B7214C's outer race at M = 30000, L = 11.2: h_min 0.3 nm, not converged), which the finer
-    grid cures (docs/ehl_solver.md, Thin films)."""
+    and Dowson-Higginson through eta (Pa.s) and xi (1/Pa)) on `level`, by default the level its film needs
+    (models.ehl_numerical.film_level: level 3 at light and moderate loads, 4-5 at heavy ones, whose films level 3
+    leaves up to 30 % thin), or on the next finer grid where that one does not converge (B7214C's outer race at
+    M = 30000, L = 11.2 on level 3: h_min 0.3 nm, not converged; docs/ehl_solver.md, Thin films), up to
+    ehl_numerical.FINEST_LEVEL."""
     # imported here, not with this module: the numerical solver needs scipy, which an FMU's host need not have
     # (the facades import this module for film_table_array, whose correction 'none' needs no solver)
     from . import ehl_numerical as en
 
     fluid = en.fluid_array(es.VISC_ROELANDS, es.DENS_DOWSON_HIGGINSON, eta, xi)
+    if level is None:
+        level = en.resolving_level(Rx, Ry, Q, u, E_red, eta, fluid)
     solution = en.solve_contact(Rx, Ry, Q, u, E_red, eta, fluid, finest=level)
-    if solution.converged:
+    if solution.converged or level >= en.FINEST_LEVEL:
         return solution, level
     return en.solve_contact(Rx, Ry, Q, u, E_red, eta, fluid, finest=level + 1), level + 1
 
 
 def solve_node(args):
     """One node: the numerical films and each formula's, as a dict (a top-level function for process pools)."""
-    M, L, Rx, Ry, k, E_red, lubricant, T_range, level, log = args
+    M, L, Rx, Ry, k, E_red, lubricant, T_range, log = args
     T, u, Q = node_point(M, L, Rx, E_red, lubricant, T_range)
     eta, xi, _ = lubricant_state(T, lubricant.array)
     start = time.perf_counter()
-    solution, solved_on = solve_numerical(Rx, Ry, Q, u, E_red, eta, xi, level)
+    solution, solved_on = solve_numerical(Rx, Ry, Q, u, E_red, eta, xi)
     seconds = time.perf_counter() - start
     formulas = [ehl.film_thickness(code, eta, xi, E_red, u, Q, Rx, Ry, k) for code in FORMULAS]
     node = dict(M=M, L=L, T=T, u=u, Q=Q, h_c=solution.h_c, h_min=solution.h_min, converged=bool(solution.converged),
@@ -214,7 +218,7 @@ def solve_node(args):
     return node
 
 
-def _race_table(Rx, Ry, c, E_red, lubricant, T_range, level, pool, log):
+def _race_table(Rx, Ry, c, E_red, lubricant, T_range, pool, log):
     (x0, x1), (y0, y1) = node_ranges(Rx, Ry, c, E_red, lubricant, T_range)
     d_x = (x1 - x0) / (fc.FT_NM - 1)
     d_y = (y1 - y0) / (fc.FT_NL - 1)
@@ -226,7 +230,7 @@ def _race_table(Rx, Ry, c, E_red, lubricant, T_range, level, pool, log):
             M = min(math.exp(x - 3.0 * y), M_CAP)  # M L^3 = W G^3
             Q = node_point(M, math.exp(y), Rx, E_red, lubricant, T_range)[2]
             M *= min(1.0, Q_max / Q)  # at the node's L (and so its T and u), Q ~ M
-            jobs.append((M, math.exp(y), Rx, Ry, c[0], E_red, lubricant, T_range, level, log))
+            jobs.append((M, math.exp(y), Rx, Ry, c[0], E_red, lubricant, T_range, log))
     # nodes capped at M_CAP or the load limit repeat the same (M, L): each distinct one is solved once
     distinct = {job[:2]: job for job in jobs}
     solved = dict(zip(distinct, pool.map(solve_node, distinct.values()), strict=True))
@@ -248,7 +252,7 @@ def loaded(bearing, lubricant):
     return load_bearing(bearing), load_lubricant(lubricant)
 
 
-def build_film_table(bearing, lubricant, level=LEVEL, jobs=1, log=False):
+def build_film_table(bearing, lubricant, jobs=1, log=False):
     """Solve every node of both races (jobs processes; log: print each node as it is solved), write the table into
     the cache and return it."""
     b, lub = loaded(bearing, lubricant)
@@ -256,8 +260,8 @@ def build_film_table(bearing, lubricant, level=LEVEL, jobs=1, log=False):
     races, E_red = race_geometry(b)
     start = time.perf_counter()
     with ProcessPoolExecutor(jobs) as pool:
-        tables = [_race_table(Rx, Ry, c, E_red, lub, T_range, level, pool, log) for Rx, Ry, c in races]
-    table = FilmTable(b.name, lub.name, table_key(b, lub), level, T_range, time.perf_counter() - start, tables)
+        tables = [_race_table(Rx, Ry, c, E_red, lub, T_range, pool, log) for Rx, Ry, c in races]
+    table = FilmTable(b.name, lub.name, table_key(b, lub), T_range, time.perf_counter() - start, tables)
     path = table_path(b, lub)
     path.parent.mkdir(parents=True, exist_ok=True)
     partial = path.with_suffix(f".{os.getpid()}.tmp")

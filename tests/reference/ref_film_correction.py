@@ -11,7 +11,7 @@ import numpy as np
 
 from tests.reference import ref_ehl
 
-NM = 7  # nodes along ln(M L^3), as kernels.film_correction.FT_NM (checked by the unit test)
+NM = 9  # nodes along ln(M L^3), as kernels.film_correction.FT_NM (checked by the unit test)
 NL = 4
 N_FORMULAS = 3
 

@@ -114,7 +114,7 @@ def write_made_up_table(b, lub):
         head = array[base : base + fc.FT_RATIOS]
         ratios = array[base + fc.FT_RATIOS : base + fc.FT_RACE_STRIDE].reshape(3, 2, fc.FT_NM, fc.FT_NL)
         races.append(ft.RaceTable(1e-3, 1e-1, 9.0, *head, ratios.tolist(), []))
-    table = ft.FilmTable(b.name, lub.name, ft.table_key(b, lub), ft.LEVEL, (273.15, 393.15), 1.0, races)
+    table = ft.FilmTable(b.name, lub.name, ft.table_key(b, lub), (273.15, 393.15), 1.0, races)
     path = ft.table_path(b, lub)
     path.parent.mkdir(parents=True)
     path.write_text(json.dumps(dataclasses.asdict(table)))

@@ -21,6 +21,7 @@ still enters the estimate as the discrete solution of that grid. Each solve take
 
 import pytest
 
+from bearing_fmu.kernels import ehl_solver as es
 from bearing_fmu.models import ehl_numerical as en
 from benchmarks.ehl_solver import E_RED, ETA0, FLUID
 
@@ -41,15 +42,16 @@ def test_thin_film_converges_on_the_default_grid_with_a_positive_film(name):
     assert abs(h_c - h_c_estimate) <= tolerance * h_c_estimate, f"{name}: h_c {h_c:.1f} nm, estimate {h_c_estimate}"
 
 
-def test_a_table_node_the_default_grid_cannot_carry_is_solved_on_the_next_finer_one():
+def test_a_table_node_whose_level_does_not_converge_is_solved_on_the_next_finer_one():
     """The film table's heaviest node of the B7214C's outer race (k = 5.86, iso_vg68_mineral at 329.6 K, 3.16 m/s,
     16.17 kN: M = 30000, L = 11.2, p_h ~ 4.2 GPa): on level 3 the side film closes (measured h_min 0.3 nm after 120
     cycles, not converged), which as a table ratio would have made the corrected h_min ~0.001 of the formula's
-    around that node. models.film_table.solve_numerical then solves it on level 4, where it converges (measured
-    46 cycles, h_c 266.1 nm, h_min 234.0 nm, ~60-80 s). Asserted: level 3 alone does not converge, the fallback
-    is level 4 and converges with 0 < h_min < h_c, and its h_min is within the 30 % the formulas' h_min ratios
-    span at the table's converged heavy nodes (0.7-1.0) of Hamrock-Dowson's (a positive film that is a solution,
-    not a closed gap)."""
+    around that node. models.film_table.solve_numerical asked for level 3 then solves it on level 4, where it
+    converges (measured 46 cycles, h_c 266.1 nm, h_min 234.0 nm, ~60-80 s). Asserted: level 3 alone does not
+    converge, the fallback is level 4 and converges with 0 < h_min < h_c, and its h_min is within the 30 % the
+    formulas' h_min ratios span at the table's converged heavy nodes (0.7-1.0) of Hamrock-Dowson's (a positive film
+    that is a solution, not a closed gap). Without a level the table solves this node on level 5, the level its film
+    needs (models.ehl_numerical.film_level: estimated film 0.011 Hertz units), which is asserted too."""
     from bearing_fmu.kernels import ehl
     from bearing_fmu.kernels.lubricant import lubricant_state
     from bearing_fmu.models import film_table as ft
@@ -59,8 +61,10 @@ def test_a_table_node_the_default_grid_cannot_carry_is_solved_on_the_next_finer_
     Rx, Ry, c = races[1]
     eta, xi, _ = lubricant_state(329.6, load_lubricant("iso_vg68_mineral").array)
     Q, u = 1.617e4, 3.16
-    solution, level = ft.solve_numerical(Rx, Ry, Q, u, E_red, eta, xi)
-    assert level == ft.LEVEL + 1, "level 3 converged: the fallback is not exercised by this contact any more"
+    fluid = en.fluid_array(es.VISC_ROELANDS, es.DENS_DOWSON_HIGGINSON, eta, xi)
+    assert en.resolving_level(Rx, Ry, Q, u, E_red, eta, fluid) == 5
+    solution, level = ft.solve_numerical(Rx, Ry, Q, u, E_red, eta, xi, level=3)
+    assert level == 4, "level 3 converged: the fallback is not exercised by this contact any more"
     assert solution.converged, solution.reason
     assert 0.0 < solution.h_min < solution.h_c
     h_min_formula = ehl.film_thickness(ehl.FILM_HAMROCK_DOWSON, eta, xi, E_red, u, Q, Rx, Ry, c[0])[1]
