@@ -15,8 +15,6 @@ that choice to the heavy contacts. The level-5 solve takes 1-3 minutes, so the t
 studies (`make test-ehl-full`).
 """
 
-import math
-
 import pytest
 
 from bearing_fmu.kernels import ehl_solver as es
@@ -24,14 +22,9 @@ from bearing_fmu.kernels.lubricant import lubricant_state
 from bearing_fmu.models import ehl_numerical as en
 from bearing_fmu.models import film_table as ft
 from bearing_fmu.params import load_bearing, load_lubricant
+from benchmarks.ehl_solver import richardson
 
 TOLERANCE = 0.02  # the discretisation error the default grid was chosen for (docs/ehl_solver.md)
-
-
-def _richardson(h3, h4, h5):
-    """Richardson estimate of three levels (spacing halved each), with the order they show."""
-    order = math.log((h4 - h3) / (h5 - h4)) / math.log(2.0)
-    return h5 + (h5 - h4) / (2.0**order - 1.0)
 
 
 @pytest.fixture(scope="module")
@@ -49,6 +42,6 @@ def test_a_heavy_contact_is_solved_on_the_level_its_film_needs(contact):
     assert all(s.converged for s in solutions.values()), {level: s.reason for level, s in solutions.items()}
     for film in ("h_c", "h_min"):
         h3, h4, h5 = (getattr(solutions[level], film) for level in (3, 4, 5))
-        estimate = _richardson(h3, h4, h5)
+        _, estimate = richardson([h3, h4, h5])
         assert abs(h4 / estimate - 1.0) <= TOLERANCE, f"{film}: level 4 {h4 / estimate - 1.0:+.2%} off the estimate"
         assert abs(h3 / estimate - 1.0) > TOLERANCE, f"{film}: level 3 {h3 / estimate - 1.0:+.2%} off, within 2 % now"
