@@ -12,7 +12,7 @@ from .kernels.ehl import FILM_CHITTENDEN, FILM_HAMROCK_DOWSON, FILM_MASJEDI_KHON
 
 FIDELITIES = ("analytic", "quasi_static", "dem")
 DRIVES = ("load", "displacement", "fixed_axial")  # which DOFs are load- or displacement-controlled
-RACE_CONTROLS = ("outer", "inner", "hybrid")
+RACE_CONTROLS = ("outer", "inner", "hybrid", "traction")
 FILM_FORMULAS = {
     "hamrock_dowson": FILM_HAMROCK_DOWSON,
     "masjedi_khonsari": FILM_MASJEDI_KHONSARI,
@@ -44,7 +44,7 @@ class Scene:
     drive (quasi_static): 'load' (loads in, displacements out), 'displacement' (displacements in,
         reaction loads out) or 'fixed_axial' (radial loads and tilting moments in, axial position in:
         a fixed-preload bearing).
-    race_control (quasi_static): default of the FMU parameter race_control, 'outer' | 'inner' | 'hybrid'.
+    race_control (quasi_static): default of the FMU parameter race_control, 'outer' | 'inner' | 'hybrid' | 'traction'.
     gyroscopic (quasi_static): ball gyroscopic moment on.
     torque (quasi_static): friction torque, power loss and ring heat outputs (Houpert components).
     stiffness (quasi_static, dem): the 5x5 stiffness outputs K[i,j].

@@ -19,7 +19,7 @@ from .capacitance import ball_capacitance, lubricated_contact_capacitance
 from .ehl import film_parameter, friction_coefficient, lubrication_regime
 from .film_correction import FT_SIZE, corrected_film_thickness
 from .hertz import hertz_contact
-from .jones_harris import BQ_Q_I, BQ_Q_O, BQ_SPIN_I, BQ_SPIN_O, BQ_U_I, BQ_U_O, BQ_W_M
+from .jones_harris import BQ_P_SLIP_I, BQ_Q_I, BQ_Q_O, BQ_SPIN_I, BQ_SPIN_O, BQ_U_I, BQ_U_O, BQ_W_M
 from .lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
 from .lubrication import ball_drag_power, film_factors, mixture, rolling_force_factor, temperature_viscosity_coefficient
 from .torque import TL_EHL, TL_SIZE, contact_losses
@@ -202,6 +202,9 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
                         losses[TL_EHL] *= f_R
                     for t in range(TL_SIZE):
                         out[CO_P_EHL + t] += losses[t]
+                    # the film's traction against the balls' sliding (race control "traction"; 0 under a
+                    # hypothesis, whose kinematics roll without slip): in the contact's loss, not in a component
+                    P += balls[BQ_P_SLIP_I + race, j]
                     out[CO_Q_INNER_RING + race] += P
                 out[CO_PMAX] = max(out[CO_PMAX], p)
                 if Q > out[CO_QMAX_I + race]:  # the central film of the most loaded contact (first of equals)

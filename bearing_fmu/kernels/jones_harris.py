@@ -36,6 +36,21 @@ import numpy as np
 
 from bearing_fmu_common.jit import kernel
 
+from .ball_traction import (
+    TE_FTAU_I,
+    TE_FTAU_O,
+    TE_P_I,
+    TE_P_O,
+    TE_R,
+    TE_SIZE,
+    TE_U_I,
+    TE_U_O,
+    TR_SIZE,
+    parameter_derivatives,
+    rolling_start,
+    solve_traction,
+    traction_eval,
+)
 from .geometry import ball_direction
 
 # layout of the quasi-static bearing array (built by bearing_fmu.models.analytic)
@@ -56,7 +71,8 @@ QS_C_HYB = 13  # hybrid law: a_i E_i / (a_o E_o) at equal loads (-), C = this (Q
 QS_TOL = 14  # relative tolerance of the global equilibrium (-)
 QS_MAXIT = 15  # iteration cap of the global Newton (-)
 QS_STIFFNESS = 16  # 1 = fill the stiffness output K; 0 = null submodel: K untouched, assembled only as Newton matrix
-QS_SIZE = 17
+QS_TRACTION = 17  # start of the traction block (kernels.ball_traction TR_*), read by RACE_TRACTION only
+QS_SIZE = QS_TRACTION + TR_SIZE
 
 RACE_OUTER = 0
 RACE_INNER = 1
@@ -67,6 +83,12 @@ RACE_HYBRID_OUTER_SPLIT = 3  # lam_i = 0, lam_o = 2 (the outer race takes it all
 RACE_HYBRID_INNER_SPLIT = 4  # lam_i = 2, lam_o = 0 (the inner race takes it all, as in IRC)
 RACE_HYBRID_EQUAL_SPLIT = 5  # lam_i = lam_o = 1 (Harris without race control; unverified, docs/decisions.md)
 RACE_HYBRID_CONTROLLING = 6  # all of it on the race with the larger spin moment (Jones' criterion)
+RACE_TRACTION = 7  # no hypothesis: kinematics from the balls' force and moment balance with the film's traction
+
+# rows of the ball state X (X_SIZE, Z): the ball centre seen from the outer groove-curvature centre, then the
+# kinematics y = (w_m, W_a, W_r, W_t) (rad/s) of RACE_TRACTION (kernels.ball_traction), warm start and solution
+X_SIZE = 6
+X_Y = 2
 
 # rows of the per-ball output array
 BQ_Q_I = 0  # inner contact load (N)
@@ -85,7 +107,9 @@ BQ_SPIN_I = 12  # spin speed at the inner contact (rad/s)
 BQ_SPIN_O = 13  # spin speed at the outer contact (rad/s)
 BQ_U_I = 14  # rolling (entrainment) speed at the inner contact (m/s)
 BQ_U_O = 15  # rolling (entrainment) speed at the outer contact (m/s)
-BQ_SIZE = 16
+BQ_P_SLIP_I = 16  # power of the traction against the sliding at the inner contact (W; RACE_TRACTION, else 0)
+BQ_P_SLIP_O = 17
+BQ_SIZE = 18
 
 # rows of the per-ball contact state that the load evaluation keeps for the per-ball outputs
 CS_Q_I = 0  # inner contact load (N)
@@ -161,7 +185,9 @@ KG_MGI = 2  # lam_i M_g / D (N)
 KG_VALUE = 0
 KG_DAI = 1  # d/da_i
 KG_DAO = 2  # d/da_o
-KG_DC = 3  # d/dC
+KG_DC = 3  # d/dC (RACE_TRACTION: d/dQ_i)
+KG_DQO = 4  # d/dQ_o (RACE_TRACTION only; 0 for the hypotheses)
+KG_SIZE = 5
 
 _H_CSTEP = 1e-30  # complex-step increment: exact derivatives, no subtraction error
 _BALL_MAXIT = 60
@@ -290,16 +316,45 @@ def _kin_grad(a_i, a_o, C, omega, gp, dm, D, m_ball, race, cen, gyro, g):
     else:
         for k in range(3):
             g[k, KG_DC] = 0.0
+    for k in range(3):
+        g[k, KG_DQO] = 0.0
+
+
+@kernel
+def _traction_grad(a_i, a_o, Q_i, Q_o, omega, dm, D, m_ball, cen, gyro, tr, tw, g):
+    """RACE_TRACTION's kinematic terms (F_c, Mg_o, Mg_i) as _kin_grad gives a hypothesis' (rows KG_*), solved from
+    the film's traction for the contacts (a_i, a_o, Q_i, Q_o) (kernels.ball_traction), with their partials in a_i,
+    a_o, Q_i (column KG_DC) and Q_o (KG_DQO). Mg_o, Mg_i are minus the in-plane traction forces (this kernel's sign
+    of lam M_g / D). tw = (y, out, Dy, dout): y (4, rad/s) the ball's kinematics, warm start and solution, and the
+    solver's work. A solve that does not converge gives NaN, which the ball's Newton refuses."""
+    y, out, Dy, dout = tw
+    J = 0.1 * m_ball * D * D  # the ball's own balance: its gyroscopic moment whatever the hypotheses' option
+    if not solve_traction(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, out, Dy):
+        for k in range(3):
+            for c in range(KG_SIZE):
+                g[k, c] = math.nan
+        return
+    parameter_derivatives(y, np.array([a_i, a_o, Q_i, Q_o]), omega, D, dm, J, tr, out, Dy, dout)
+    cols = (KG_DAI, KG_DAO, KG_DC, KG_DQO)
+    fc = 0.5 * m_ball * dm if cen else 0.0
+    g[KG_FC, KG_VALUE] = fc * y[0] * y[0]
+    g[KG_MGO, KG_VALUE] = -out[TE_FTAU_O]
+    g[KG_MGI, KG_VALUE] = -out[TE_FTAU_I]
+    for c in range(4):
+        g[KG_FC, cols[c]] = 2.0 * fc * y[0] * dout[TE_R, c]
+        g[KG_MGO, cols[c]] = -dout[TE_FTAU_O, c]
+        g[KG_MGI, cols[c]] = -dout[TE_FTAU_I, c]
 
 
 @kernel
 def _ball_eval(X1, X2, ball, kg, w):
     """Ball residual, ring load and their derivatives at ball position X = (X1, X2) (m) into w (EV_*).
 
-    ball = (A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb): the
-    curvature-centre offset A (m) and the ball's constants (ball_equilibrium); kg: float64[3, 4] work.
+    ball = (A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb, tr, tw): the
+    curvature-centre offset A (m) and the ball's constants (ball_equilibrium), with RACE_TRACTION's block tr and
+    work tw (_traction_grad); kg: float64[3, KG_SIZE] work.
     """
-    A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb = ball
+    A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb, tr, tw = ball
     L_o = math.hypot(X1, X2)
     so = X1 / L_o
     co = X2 / L_o
@@ -354,7 +409,18 @@ def _ball_eval(X1, X2, ball, kg, w):
     dC_X2 = -dC_Qi * dQi_A2 + dC_Qo * dQo_X2
     dC_A1 = dC_Qi * dQi_A1
     dC_A2 = dC_Qi * dQi_A2
-    _kin_grad(a_k, a_o, C, omega, gp, dm, D, m_ball, race, cen, gyro, kg)
+    if race == RACE_TRACTION and Q_i > 0.0 and Q_o > 0.0:
+        # the kinematics of the film's traction depend on both loads: C stands for Q_i, KG_DQO carries Q_o
+        _traction_grad(a_i, a_o, Q_i, Q_o, omega, dm, D, m_ball, cen, gyro, tr, tw, kg)
+        dC_X1 = -dQi_A1
+        dC_X2 = -dQi_A2
+        dC_A1 = dQi_A1
+        dC_A2 = dQi_A2
+    else:
+        # a ball that touches one race only has no traction to roll it: it keeps outer-race kinematics
+        _kin_grad(a_k, a_o, C, omega, gp, dm, D, m_ball, RACE_OUTER if race == RACE_TRACTION else race, cen, gyro, kg)
+        if race == RACE_TRACTION:
+            rolling_start(a_k, a_o, omega, D, dm, tw[0])
     F_c = kg[KG_FC, KG_VALUE]
     Mgo = kg[KG_MGO, KG_VALUE]
     Mgi = kg[KG_MGI, KG_VALUE]
@@ -363,6 +429,13 @@ def _ball_eval(X1, X2, ball, kg, w):
     dFc_X1, dFc_X2, dFc_A1, dFc_A2 = _chain(kg, KG_FC, dak, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2)
     dMo_X1, dMo_X2, dMo_A1, dMo_A2 = _chain(kg, KG_MGO, dak, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2)
     dMi_X1, dMi_X2, dMi_A1, dMi_A2 = _chain(kg, KG_MGI, dak, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2)
+    # the outer load's part (RACE_TRACTION; X only)
+    dFc_X1 += kg[KG_FC, KG_DQO] * dQo_X1
+    dFc_X2 += kg[KG_FC, KG_DQO] * dQo_X2
+    dMo_X1 += kg[KG_MGO, KG_DQO] * dQo_X1
+    dMo_X2 += kg[KG_MGO, KG_DQO] * dQo_X2
+    dMi_X1 += kg[KG_MGI, KG_DQO] * dQo_X1
+    dMi_X2 += kg[KG_MGI, KG_DQO] * dQo_X2
     # n = (sin a, cos a), t = (cos a, -sin a); dn/da = t, dt/da = -n
     # ring load g = Q_i n_i - Mgi t_i;  dg = n_i dQ_i + (Q_i t_i + Mgi n_i) da_i - t_i dMgi
     gz = Q_i * si - Mgi * ci
@@ -432,15 +505,17 @@ def _chain(kg, row, dak, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2):
 def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond):
     """Solve one ball's equilibrium for curvature-centre offset (A1, A2) (m); warm start from X[:, j].
 
-    geo = (r_i, r_o, K_series, f_ball) with K_series the Hertz constant of both contacts in series and
-    f_ball (N) the bearing-level load per ball of the convergence test (_ball_newton).
+    geo = (r_i, r_o, K_series, f_ball, tw) with K_series the Hertz constant of both contacts in series,
+    f_ball (N) the bearing-level load per ball of the convergence test (_ball_newton) and tw RACE_TRACTION's work
+    (traction_work()); that race control keeps the ball's kinematics over omega in X[X_Y:, j].
     Fills X[:, j] and cond (BE_*): ring load, friction couple, their derivatives w.r.t. A with the ball
     position condensed, contact loads, angles and the hybrid ratio; kg, w: work arrays of _ball_eval.
     Returns 0 (converged), 1 (unloaded ball), 2 (not converged).
     """
-    r_i, r_o, K_s, f_ball = geo
+    r_i, r_o, K_s, f_ball, tw = geo
+    race = int(qs[QS_RACE])
     cen = qs[QS_CENTRIFUGAL] > 0.5 and omega != 0.0
-    gyro = qs[QS_GYROSCOPIC] > 0.5 and omega != 0.0
+    gyro = (qs[QS_GYROSCOPIC] > 0.5 or race == RACE_TRACTION) and omega != 0.0
     for k in range(BE_SIZE):
         cond[k] = 0.0
     if not (cen or gyro):
@@ -455,8 +530,15 @@ def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond):
     _ball_start(A1, A2, x, r_i, r_o, qs[QS_K_I], qs[QS_K_O], F_c0)
     D = qs[QS_D]
     dm = qs[QS_DM]
+    if race == RACE_TRACTION:  # the kinematics' warm start: the last solution at this speed, or rolling
+        y = tw[0]
+        if 0.0 < X[X_Y, j] < 1.0:
+            for k in range(4):
+                y[k] = X[X_Y + k, j] * omega
+        else:
+            rolling_start(math.atan2(A1, A2), math.atan2(A1, A2), omega, D, dm, y)
     ball = (A1, A2, r_i, r_o, qs[QS_K_I], qs[QS_K_O], qs[QS_FI], omega, D / dm, dm, D, qs[QS_M_BALL],
-            int(qs[QS_RACE]), cen, gyro, qs[QS_C_HYB])  # fmt: skip
+            race, cen, gyro, qs[QS_C_HYB], qs[QS_TRACTION:], tw)  # fmt: skip
     status = _ball_newton(x, ball, F_c0, f_ball, kg, w)
     if status == 2 and (x[0] != 0.0 or x[1] != 0.0):
         # a warm start far from this solution (the ball floated in its clearance at the last solve and sits
@@ -465,11 +547,20 @@ def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond):
         x[1] = 0.0
         _ball_start(A1, A2, x, r_i, r_o, qs[QS_K_I], qs[QS_K_O], F_c0)
         status = _ball_newton(x, ball, F_c0, f_ball, kg, w)
+    if race == RACE_TRACTION:
+        for k in range(4):
+            X[X_Y + k, j] = tw[0][k] / omega
     if not _condense(w, cond):
         return 2
     if w[EV_Q_I] <= 0.0 and w[EV_Q_O] <= 0.0:
         return 1
     return status
+
+
+@kernel
+def traction_work():
+    """Work arrays of RACE_TRACTION's ball kinematics (y, out, Dy, dout: kernels.ball_traction), geo's last item."""
+    return np.zeros(4), np.zeros(TE_SIZE), np.zeros((TE_SIZE, 4)), np.zeros((TE_SIZE, 4))
 
 
 @kernel
@@ -642,8 +733,8 @@ def ring_loads(d, qs, dPd, omega, X, F, K, contact, jacobian, f_load=0.0):
     Z = int(qs[QS_Z])
     A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
     K_s = (qs[QS_K_I] ** (-2.0 / 3.0) + qs[QS_K_O] ** (-2.0 / 3.0)) ** -1.5
-    geo = (r_i, r_o, K_s, max(f_load, _F_FLOOR) / Z)
-    kg = np.empty((3, 4))
+    geo = (r_i, r_o, K_s, max(f_load, _F_FLOOR) / Z, traction_work())
+    kg = np.empty((3, KG_SIZE))
     w = np.empty(EV_SIZE)
     cond = np.empty(BE_SIZE)
     for i in range(5):
@@ -699,17 +790,42 @@ def ball_outputs(omega, qs, X, contact, balls):
     race = int(qs[QS_RACE])
     cen = qs[QS_CENTRIFUGAL] > 0.5 and omega != 0.0
     gyro = qs[QS_GYROSCOPIC] > 0.5 and omega != 0.0
+    te = np.empty(TE_SIZE)
     for j in range(contact.shape[1]):
         a_i = contact[CS_A_I, j]
         a_o = contact[CS_A_O, j]
         C = contact[CS_C, j]
         a_k = a_o if contact[CS_Q_I, j] <= 0.0 and math.cos(a_i) <= 0.0 else a_i  # as in _ball_eval
         F_c, Mgo, Mgi, w_m, w_R, beta = kinematics(
-            complex(a_k, 0.0), complex(a_o, 0.0), complex(C, 0.0), omega, gp, dm, D, qs[QS_M_BALL], race, cen, gyro
+            complex(a_k, 0.0),
+            complex(a_o, 0.0),
+            complex(C, 0.0),
+            omega,
+            gp,
+            dm,
+            D,
+            qs[QS_M_BALL],
+            RACE_OUTER if race == RACE_TRACTION else race,
+            cen,
+            gyro,
         )
+        F_c = F_c.real
         w_m = w_m.real
         w_R = w_R.real
         beta = beta.real
+        Mg = (Mgo.real + Mgi.real) * D * 0.5  # lam_o + lam_i = 2
+        lam_i = 0.0
+        if race == RACE_INNER:
+            lam_i = 2.0
+        elif race >= RACE_HYBRID:
+            lam_i = hybrid_inner_share(C, race)
+        u_i = abs(omega - w_m) * 0.5 * dm * (1.0 - gp * math.cos(a_i))
+        u_o = abs(w_m) * 0.5 * dm * (1.0 + gp * math.cos(a_o))
+        p_i = 0.0
+        p_o = 0.0
+        if race == RACE_TRACTION and omega != 0.0:
+            w_m, w_R, beta, Mg, lam_i, u_i, u_o, p_i, p_o = _traction_ball(omega, qs, X, contact, j, te)
+            F_c = 0.5 * qs[QS_M_BALL] * dm * w_m * w_m if cen else 0.0
         balls[BQ_Q_I, j] = contact[CS_Q_I, j]
         balls[BQ_Q_O, j] = contact[CS_Q_O, j]
         balls[BQ_A_I, j] = a_i
@@ -717,21 +833,52 @@ def ball_outputs(omega, qs, X, contact, balls):
         balls[BQ_BETA, j] = beta
         balls[BQ_W_M, j] = w_m
         balls[BQ_W_R, j] = w_R
-        balls[BQ_F_C, j] = F_c.real
-        balls[BQ_M_G, j] = (Mgo.real + Mgi.real) * D * 0.5  # lam_o + lam_i = 2
+        balls[BQ_F_C, j] = F_c
+        balls[BQ_M_G, j] = Mg
         balls[BQ_X1, j] = X[0, j]
         balls[BQ_X2, j] = X[1, j]
-        lam_i = 0.0
-        if race == RACE_INNER:
-            lam_i = 2.0
-        elif race >= RACE_HYBRID:
-            lam_i = hybrid_inner_share(C, race)
         balls[BQ_LAM_I, j] = lam_i
         # spin = (ball - race) angular velocity along the contact normal, in the cage frame (docs/quasistatic.md)
         balls[BQ_SPIN_O, j] = w_R * math.sin(a_o - beta) + w_m * math.sin(a_o)
         balls[BQ_SPIN_I, j] = -w_R * math.sin(a_i - beta) + (omega - w_m) * math.sin(a_i)
-        balls[BQ_U_O, j] = abs(w_m) * 0.5 * dm * (1.0 + gp * math.cos(a_o))
-        balls[BQ_U_I, j] = abs(omega - w_m) * 0.5 * dm * (1.0 - gp * math.cos(a_i))
+        balls[BQ_U_O, j] = u_o
+        balls[BQ_U_I, j] = u_i
+        balls[BQ_P_SLIP_I, j] = p_i
+        balls[BQ_P_SLIP_O, j] = p_o
+
+
+@kernel
+def _traction_ball(omega, qs, X, contact, j, te):
+    """Per-ball outputs of RACE_TRACTION from the kinematics y = X[X_Y:, j] omega (rad/s) of the solution:
+    (w_m, w_R, beta, M_g, lam_i, u_i, u_o, P_slip_i, P_slip_o) in ball_outputs' units and signs (w_R the spin
+    relative to the cage about the axis (cos beta, -sin beta), negative for omega > 0). te: TE_SIZE work."""
+    D = qs[QS_D]
+    dm = qs[QS_DM]
+    w_m = X[X_Y, j] * omega
+    rel_a = X[X_Y + 1, j] * omega - w_m
+    rel_r = X[X_Y + 2, j] * omega
+    w_R = -math.copysign(math.hypot(rel_a, rel_r), omega)
+    beta = math.atan2(-rel_r / w_R, rel_a / w_R) if w_R != 0.0 else 0.0
+    Mg = 0.1 * qs[QS_M_BALL] * D * D * w_R * w_m * math.sin(beta)
+    Q_i = contact[CS_Q_I, j]
+    Q_o = contact[CS_Q_O, j]
+    a_i = contact[CS_A_I, j]
+    a_o = contact[CS_A_O, j]
+    if Q_i <= 0.0 or Q_o <= 0.0:  # outer-race kinematics (_ball_eval): the pure-rolling speeds, no traction
+        gp = D / dm
+        u_i = abs(omega - w_m) * 0.5 * dm * (1.0 - gp * math.cos(a_i))
+        u_o = abs(w_m) * 0.5 * dm * (1.0 + gp * math.cos(a_o))
+        return w_m, w_R, beta, Mg, 0.0, u_i, u_o, 0.0, 0.0
+    y = np.empty(4)
+    for k in range(4):
+        y[k] = X[X_Y + k, j] * omega
+    J = 0.1 * qs[QS_M_BALL] * D * D
+    traction_eval(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, qs[QS_TRACTION:], te)
+    # the inner race's share of the in-plane traction (lam_i + lam_o = 2)
+    f_i = -te[TE_FTAU_I]
+    f_sum = f_i - te[TE_FTAU_O]
+    lam_i = 2.0 * f_i / f_sum if f_sum != 0.0 else 0.0
+    return w_m, w_R, beta, Mg, lam_i, te[TE_U_I], te[TE_U_O], te[TE_P_I], te[TE_P_O]
 
 
 @kernel

@@ -8,6 +8,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from ..kernels import ball_traction as bt
 from ..kernels import truncation as tk
 from ..kernels.geometry import curvature_radii, free_contact_angle
 from ..kernels.hertz import hertz_coefficients_approx, hertz_coefficients_exact, hertz_contact, reduced_modulus
@@ -65,6 +66,35 @@ def contact_terms(bearing, scene, rc):
         "F_I": b.f_i,
         "F_O": b.f_o,
     }
+
+
+def traction_block(bearing, scene, rc, lubricant):
+    """kernels.ball_traction TR_* block of the quasi-static race control "traction": per race the Hertz ellipse at
+    1 N, its elliptic integral, radii, ellipticity, conformity and composite roughness, then the lubricant's traction
+    curve (the DEM's: limiting coefficient and knee), the reduced modulus, the hysteresis factor and the film formula.
+    The viscosity and pressure-viscosity slots are the facade's to set at each evaluation's oil temperature."""
+    b = bearing
+    terms = contact_terms(b, scene, rc)
+    tr = np.zeros(bt.TR_SIZE)
+    for race, (Rx, Ry, c, f, sigma) in enumerate(
+        ((rc.Rx_i, rc.Ry_i, rc.ci, b.f_i, terms["SIGMA_I"]), (rc.Rx_o, rc.Ry_o, rc.co, b.f_o, terms["SIGMA_O"]))
+    ):
+        o = bt.TR_STRIDE * race
+        a1, b1 = hertz_contact(1.0, Rx, Ry, rc.E_red, *c)[:2]
+        tr[o + bt.TR_A1] = a1
+        tr[o + bt.TR_B1] = b1
+        tr[o + bt.TR_EE] = c[1]
+        tr[o + bt.TR_RX] = Rx
+        tr[o + bt.TR_RY] = Ry
+        tr[o + bt.TR_K] = c[0]
+        tr[o + bt.TR_F] = f
+        tr[o + bt.TR_SIGMA] = sigma
+    tr[bt.TR_MU_LIM] = lubricant.traction_limit
+    tr[bt.TR_S0] = lubricant.traction_slip
+    tr[bt.TR_E_RED] = rc.E_red
+    tr[bt.TR_ALPHA_H] = terms["ALPHA_H"]
+    tr[bt.TR_FILM] = terms["FILM"]
+    return tr
 
 
 def pack(array, slots, prefix, terms):

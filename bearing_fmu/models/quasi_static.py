@@ -13,6 +13,7 @@ import numpy as np
 
 from bearing_fmu_common.variables import InputLimits, outputs_as_dict, select
 
+from ..kernels import ball_traction as bt
 from ..kernels import bearing_outputs as bo
 from ..kernels import contacts as ck
 from ..kernels import jones_harris as qk
@@ -20,10 +21,11 @@ from ..kernels import rating_life as rl
 from ..kernels import truncation as tk
 from ..kernels.geometry import ball_mass, free_contact_angle
 from ..kernels.hertz import hertz_contact, hertz_stiffness
+from ..kernels.lubricant import lubricant_state
 from ..kernels.torque import TL_SIZE
 from ..params import load_bearing, load_lubricant
 from ..scene import LUBRICATION_METHODS, RACE_CONTROLS, Scene
-from .contacts import contact_terms, pack, race_contacts, truncation_parameters, truncation_warnings
+from .contacts import contact_terms, pack, race_contacts, traction_block, truncation_parameters, truncation_warnings
 from .declarations import (
     DISPLACEMENT_LIMIT,
     DOF_NAMES,
@@ -46,7 +48,7 @@ from .variables import (
     pressure_warnings,
 )
 
-RACE_CODES = {"outer": qk.RACE_OUTER, "inner": qk.RACE_INNER, "hybrid": qk.RACE_HYBRID}
+RACE_CODES = {"outer": qk.RACE_OUTER, "inner": qk.RACE_INNER, "hybrid": qk.RACE_HYBRID, "traction": qk.RACE_TRACTION}
 # rad: the thrust-side check refuses loaded inner contacts below +1e-8 rad. A radial load without thrust puts
 # the loaded balls of a free single angular-contact bearing at the groove bottom (angle 0, returned to the
 # solver's rounding, ~1e-12 rad of either sign), where nothing locates the ring axially and it is nearly free
@@ -74,7 +76,8 @@ class QuasiStaticModel:
     bearing, lubricant: catalogue name or TOML path; scene: Scene with fidelity 'quasi_static';
     Pd: diametral clearance (m) overriding the bearing file (None: the file's), within
         -(f_i + f_o - 1) D <= Pd <= (f_i + f_o - 1) D (free contact angle up to 60 deg);
-    race_control: 'outer' | 'inner' | 'hybrid' (default: the scene's);
+    race_control: 'outer' | 'inner' | 'hybrid' | 'traction' (default: the scene's); 'traction' takes no hypothesis:
+        each ball's kinematics follow from its balance with the lubricant's traction curve (kernels.ball_traction);
     hybrid_split: with race_control 'hybrid', how the gyroscopic moment is shared between the races:
         'spin_moments' (default, lam_i = 2C/(1+C)); 'outer', 'inner', 'equal' and 'controlling_race'
         are the other readings of Rabreau's lost Table 1, kept for sensitivity studies (HYBRID_SPLITS);
@@ -125,7 +128,7 @@ class QuasiStaticModel:
         self.load_limit = self._load_limit()
         Z = b.Z
         self.d = np.zeros(5)
-        self.X = np.zeros((2, Z))
+        self.X = np.zeros((qk.X_SIZE, Z))
         self.F = np.zeros(5)
         self.K = np.zeros((5, 5))
         self.balls = np.zeros((qk.BQ_SIZE, Z))
@@ -231,6 +234,9 @@ class QuasiStaticModel:
         qs[qk.QS_TOL] = s.tolerance
         qs[qk.QS_MAXIT] = s.max_iterations
         qs[qk.QS_STIFFNESS] = 1.0 if s.stiffness else 0.0
+        self._traction = self.race_control == "traction"
+        if self._traction:
+            qs[qk.QS_TRACTION :] = traction_block(b, s, rc, self.lubricant)
         cp = np.zeros(ck.CP_SIZE)
         pack(cp, ck, "CP_", contact_terms(b, s, rc))
         cp[ck.CP_C_BACKGROUND] = s.background_capacitance
@@ -322,6 +328,10 @@ class QuasiStaticModel:
         if not self.control[2]:
             self.d[2] += self.z0 + (0.0 if self._u_dz is None else float(u[self._u_dz]))
         dPd = 0.0 if self._u_dPd is None else float(u[self._u_dPd])
+        if self._traction:  # the film's traction at the oil temperature
+            eta, xi, _ = lubricant_state(float(u[self._u_T_oil]), self.lubricant.array)
+            self.qs[qk.QS_TRACTION + bt.TR_ETA] = eta
+            self.qs[qk.QS_TRACTION + bt.TR_XI] = xi
         self._solve(applied, dPd, omega, u)
         ck.contact_outputs(
             omega,
@@ -354,6 +364,24 @@ class QuasiStaticModel:
                 applied, self.control, self.d, self.qs, dPd, omega, self.X, self.F, self.K, self.balls
             )
             iters += more
+        if status != qk.QS_OK and self._traction:
+            # the film's traction from cold can stall where the balls' kinematics are far from rolling: solve the
+            # outer-race-controlled bearing first and start the traction solution from it
+            self.d[:] = np.where(self.control > 0.5, 0.0, d_start)
+            self.X[:] = 0.0
+            self.qs[qk.QS_RACE] = qk.RACE_OUTER
+            try:
+                status, more, res = qk.solve_quasistatic(
+                    applied, self.control, self.d, self.qs, dPd, omega, self.X, self.F, self.K, self.balls
+                )
+            finally:
+                self.qs[qk.QS_RACE] = qk.RACE_TRACTION
+            iters += more
+            if status == qk.QS_OK:
+                status, more, res = qk.solve_quasistatic(
+                    applied, self.control, self.d, self.qs, dPd, omega, self.X, self.F, self.K, self.balls
+                )
+                iters += more
         self.status = (status, iters, res)
         if status != qk.QS_OK:
             self.d[:] = d_start

@@ -190,7 +190,7 @@ def refusal(path, parameters):
             {"bearing_from_file": False, "bearing_data.Pd": 1e-4},
             "bearing_data.alpha0 = 0.2618 rad (15.000 deg) and bearing_data.Pd = 0.0001 m",
         ),
-        ("bearing_fmu", {"race_control_mode": 3}, "race_control_mode = 3 is outside the allowed range [-1, 2]"),
+        ("bearing_fmu", {"race_control_mode": 4}, "race_control_mode = 4 is outside the allowed range [-1, 3]"),
         ("bearing_fmu", {"lubrication_mode": 5}, "lubrication_mode = 5 is outside the allowed range [-1, 4]"),
         (
             "bearing_fmu",
