@@ -37,7 +37,16 @@ JH = "bearing_fmu.kernels.jones_harris."
 ES = "bearing_fmu.kernels.ehl_solver."
 BD = "bearing_fmu.kernels.ball_dynamics."
 # helper -> (twinned caller, why the caller's comparison covers it)
+BT = "bearing_fmu.kernels.ball_traction."
 COVERED_THROUGH = {
+    BT + "_contact": (BT + "traction_eval", "one contact's forces and moments, both contacts compared"),
+    BT + "_jacobian": (BT + "solve_traction", "the Newton matrix of the compared kinematics"),
+    BT + "_solve4": (BT + "solve_traction", "the Newton step of the compared kinematics"),
+    BT + "_norm": (BT + "solve_traction", "the residual norm of the line search"),
+    BT + "_marquardt": (BT + "solve_traction", "the damped step where Newton's does not descend"),
+    JH + "_traction_grad": (JH + "_ball_eval", "the traction kinematics' terms, as _kin_grad's for a hypothesis"),
+    JH + "traction_work": (JH + "ring_loads", "the work arrays of the traction kinematics"),
+    JH + "_traction_ball": (JH + "ball_outputs", "the per-ball outputs of the traction kinematics"),
     ES + "_node_residual": (ES + "reynolds_residual", "the residual of one interior node, every node compared"),
     ES + "_eps": (ES + "_node_residual", "the Poiseuille coefficient of a node, four face means per residual"),
     ES + "_flux": (ES + "_node_residual", "the Couette flux of a node, three per upwind difference"),
