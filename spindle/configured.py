@@ -24,7 +24,7 @@ import tomllib
 from pathlib import Path
 
 from bearing_fmu import build as bearing_build
-from bearing_fmu.params import ParameterError, catalogue, load_bearing, load_lubricant
+from bearing_fmu.params import ParameterError, catalogue, catalogue_files, load_bearing, load_lubricant
 from bearing_fmu.scene import RACE_CONTROLS, Scene
 from bearing_fmu_common.variables import InputError
 
@@ -115,11 +115,13 @@ def build_configured(config_path, out_dir):
     config_path = Path(config_path)
     table = read_configuration(config_path)
     suffix, wanted = table["name"], table.get("fmus", [])
-    choices, files = {}, ()
+    choices, files, carried = {}, (), {}
     for key, kind in (("bearing", "bearings"), ("lubricant", "lubricants")):
         if key in table:
             choices[key], bundled = _choice(kind, table[key], config_path)
             files += bundled
+            if bundled:  # a file: the FMU carries it in its catalogue under its name
+                carried[(kind, choices[key][0])] = choices[key][1]
     if "race_control" in table:
         choices["race_control"] = (table["race_control"], table["race_control"])
     paths, notes = [], []
@@ -133,7 +135,8 @@ def build_configured(config_path, out_dir):
                 raise ConfigurationError(f"{config_path}: {fmu_name} refuses the configuration: {exc}") from None
             notes.append(f"{fmu_name}_{suffix}.fmu not built: {exc}")
             continue
-        paths.append(bearing_build.build_fmu(scene_file, out_dir, (suffix, choices, files)))
+        with catalogue_files(carried):  # the build constructs the FMU's model with the files it carries
+            paths.append(bearing_build.build_fmu(scene_file, out_dir, (suffix, choices, files)))
     if "spindle" in table:
         for fmu_name, (_, axial_float) in THERMAL_FMUS.items():
             if not wanted or fmu_name in wanted:

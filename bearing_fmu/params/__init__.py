@@ -9,6 +9,7 @@ itself, live in bearing_fmu_common (the thermal FMU reads bearing files too); th
 re-exported here.
 """
 
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -45,8 +46,29 @@ from ..kernels import lubricant as lk
 CATALOGUE = Path(__file__).resolve().parent
 
 
+# entries (kind, name) -> file that a configured FMU carries in its catalogue, known to the building process while
+# it builds that FMU (catalogue_files): the build constructs the FMU's model with them, as the FMU does from its own
+# catalogue
+_CARRIED = {}
+
+
+@contextmanager
+def catalogue_files(files):
+    """Within the block, the catalogue also has the entries `files` ((kind, name) -> path of a TOML file, kind
+    'bearings' or 'lubricants'): those a configured FMU carries under their names."""
+    _CARRIED.update(files)
+    try:
+        yield
+    finally:
+        for key in files:
+            _CARRIED.pop(key, None)
+
+
 def _resolve(name_or_path, kind):
     """Path of a catalogue entry (by name) or of a user TOML file (by path)."""
+    carried = _CARRIED.get((kind, str(name_or_path)))
+    if carried is not None:
+        return carried
     return resolve_toml(name_or_path, CATALOGUE / kind, kind[:-1])
 
 

@@ -176,3 +176,51 @@ def test_a_runs_overrides_are_recorded_beside_its_csv_and_in_its_plot_title(clos
     assert len(titles) == 1
     assert "10 000 rpm" in titles[0]  # the run file's description, then what this run changed
     assert "run.stop = 3" in titles[0] and "spindle.T_coolant = 300.0" in titles[0]
+
+
+def test_build_config_with_bearing_and_lubricant_files(tmp_path, capsys):
+    """`spindle build --config` with the bearing given as a TOML file relative to the configuration file and the
+    lubricant as an absolute path (docs/parameters.md, configured FMUs): exit 0, the FMU carries both files in its
+    catalogue under their names, and run without any parameter set it computes the bearing of the file with the
+    oil of the file (one step of 8.9 kN at 8 000 rpm: the Python model on the same files, to rounding)."""
+    import math
+
+    from fmpy import read_model_description
+
+    from bearing_fmu.build import SCENES_DIR
+    from bearing_fmu.models.quasi_static import QuasiStaticModel
+    from bearing_fmu.params import CATALOGUE
+    from bearing_fmu.scene import Scene
+
+    folder = tmp_path / "config"
+    folder.mkdir()
+    shutil.copy(cli.ROOT / "tests/validation/data/angular_218_textbook.toml", folder / "my_218.toml")
+    oil = tmp_path / "my_oil.toml"
+    shutil.copy(CATALOGUE / "lubricants" / "guessasma_oil.toml", oil)
+    config = folder / "rig.toml"
+    config.write_text(
+        f'[configuration]\nname = "mine"\nbearing = "my_218.toml"\nlubricant = "{oil}"\nfmus = ["Bearing"]\n'
+    )
+    assert cli.main(["build", "--config", str(config), "--out", str(tmp_path / "out")]) == cli.EXIT_OK
+    fmu = tmp_path / "out" / "Bearing_mine.fmu"
+    starts = {v.name: v.start for v in read_model_description(str(fmu)).modelVariables}
+    assert (starts["bearing"], starts["lubricant"]) == ("my_218", "my_oil")
+    omega = 8000.0 * math.pi / 30.0
+    # in a fresh process, as a master runs it: this one has imported the package, whose catalogue the FMU would use
+    script = (
+        "import sys, numpy as np; from fmpy import simulate_fmu\n"
+        "inputs = np.array([(0.0, float(sys.argv[2]), 8900.0)], dtype=[('time', float), ('omega', float), "
+        "('F_z', float)])\n"
+        "r = simulate_fmu(sys.argv[1], stop_time=1.0, output_interval=1.0, input=inputs, output=['omega_cage', 'z'])\n"
+        "print(repr(float(r['omega_cage'][-1])), repr(float(r['z'][-1])))\n"
+    )
+    run = subprocess.run(
+        [sys.executable, "-c", script, str(fmu), repr(omega)], capture_output=True, text=True, cwd=tmp_path, timeout=600
+    )
+    assert run.returncode == 0, run.stderr[-2000:]
+    omega_cage, z = map(float, run.stdout.split()[-2:])
+    scene = Scene.from_toml(SCENES_DIR / "quasi_static.toml")
+    model = QuasiStaticModel(str(folder / "my_218.toml"), str(oil), scene=scene)
+    expected = model.evaluate(omega=omega, F_z=8900.0)
+    assert omega_cage == pytest.approx(expected["omega_cage"], rel=1e-8)
+    assert z == pytest.approx(expected["z"], rel=1e-6, abs=1e-12)
