@@ -98,7 +98,7 @@ class AnalyticModel:
         self._truncation_parameters = truncation_parameters(b, self._race_contacts(), self.Pd)
         self._angles = np.zeros((2, b.Z))
         self._trunc = np.zeros(tk.TR_SIZE)
-        self._truncated = [False, False]  # races truncated at the last evaluation (warned on entry only)
+        self._truncated = [0.0, 0.0]  # per race the truncated fraction at its last warning (0: not truncated)
         self._gather = gather_plan(self.outputs, {"out": self._out, "life": self._life, "trunc": self._trunc})
         self._slot = {name: k for k, name in enumerate(self.output_names)}
 
@@ -152,7 +152,7 @@ class AnalyticModel:
         return {"truncated": list(self._truncated)}
 
     def set_state(self, state):
-        self._truncated[:] = state.get("truncated", (False, False))
+        self._truncated[:] = state.get("truncated", (0.0, 0.0))
 
     def check_inputs(self, omega, F_y, T_oil):
         """Raise InputError naming the first input outside its allowed range."""

@@ -136,20 +136,23 @@ def truncation_parameters(bearing, rc, Pd):
 
 
 RACES = ("inner", "outer")
+TRUNCATION_GROWTH = 2.0  # a truncated race is warned again each time its truncated fraction has doubled
 
 
 def truncation_warnings(tp, tr, loads, load_row, angles, angle_row, truncated):
     """Warnings for the races whose contact ellipse has just become truncated by a shoulder (kernels.truncation:
     tr[TR_*] filled by race_truncation from the same loads and signed angles): one per entry, naming the race,
-    the ball, its contact angle, where its ellipse reaches and the shoulder it passes. truncated: list of two
-    booleans, the races truncated at the previous evaluation, updated in place (a race leaving truncation is
+    the ball, its contact angle, where its ellipse reaches and the shoulder it passes, and again each time the
+    truncated fraction has grown TRUNCATION_GROWTH times since the race's last warning. truncated: the two races'
+    truncated fractions at their last warning (0: not truncated), updated in place (a race leaving truncation is
     warned again at its next entry)."""
     inner, outer = float(tr[tk.TR_INNER]), float(tr[tk.TR_OUTER])
     if inner == 0.0 and outer == 0.0 and not (truncated[0] or truncated[1]):  # the usual case, at every step
         return []
     warnings = []
     for race, t in enumerate((inner, outer)):
-        if t > 0.0 and not truncated[race]:
+        warned = float(truncated[race])
+        if t > 0.0 and (warned == 0.0 or t >= TRUNCATION_GROWTH * warned):
             o = tk.TP_STRIDE * race
             j = int(tr[tk.TR_BALL_INNER + race])
             alpha = float(angles[angle_row + race, j])
@@ -165,6 +168,9 @@ def truncation_warnings(tp, tr, loads, load_row, angles, angle_row, truncated):
                 f"contact at {math.degrees(alpha):.1f} deg reaches {math.degrees(edge):.1f} deg, past the shoulder "
                 f"edge at {math.degrees(limit):.1f} deg ({100.0 * t:.3g} % of the semi-major axis beyond it); its "
                 f"load, stresses and film are computed as if the groove went on (output truncation_{RACES[race]})"
+                + (f"; grown from {100.0 * warned:.3g} % at the last warning" if warned > 0.0 else "")
             )
-        truncated[race] = t > 0.0
+            truncated[race] = t
+        elif t == 0.0:
+            truncated[race] = 0.0
     return warnings

@@ -194,7 +194,7 @@ CASES = (
         "contacts at the shoulder (light thrust, high speed)",
         "quasi-static, DEM",
         "tests/validation/test_shoulder_truncation.py",
-        "test_218_dem_light_thrust_high_speed_is_truncated_and_warned_once",
+        "test_218_dem_light_thrust_high_speed_is_truncated_and_warned_at_entry_and_each_doubling",
     ),
     (
         "stiff film traction (mixed film, 3-6 kN): the dissipated power does not depend on the step",

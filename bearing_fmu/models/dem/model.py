@@ -121,7 +121,7 @@ class DemModel:
         self._alpha = np.zeros((2, Z))
         self._signed_alpha = np.zeros((2, Z))
         self.trunc = np.zeros(tk.TR_SIZE)  # shoulder truncation of the last advance() (kernels.truncation TR_*)
-        self.truncated = np.zeros(2)  # 1 for a race truncated at the last advance() (its warning is logged on entry)
+        self.truncated = np.zeros(2)  # per race the truncated fraction at its last warning (0: not truncated)
         self.dt = math.nan  # time step of the last advance() call (s)
         self.refresh = 0  # its tribology refresh interval (steps)
         self._place_bodies()

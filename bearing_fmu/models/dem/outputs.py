@@ -97,11 +97,12 @@ def state_outputs(out, acc, ring, interval, averaged_state):
 def truncation_outputs(balls, ring, par, truncation, Q, signed_alpha, trunc, truncated):
     """The contact ellipses against the shoulders in the end state (balls, ring) into trunc (kernels.truncation
     TR_*), with the shoulders' parameters `truncation` and the scratch arrays Q, signed_alpha (2, Z); returns the
-    warnings of a race newly truncated, truncated (2,) keeping 1 for a race truncated now."""
+    warnings of a race newly truncated or whose truncation has doubled since its last warning, truncated (2,) keeping
+    each race's truncated fraction at its last warning (0: not truncated)."""
     shoulder_truncation(balls, ring, par, truncation, Q, signed_alpha, trunc)
-    flags = [bool(v) for v in truncated]
-    warnings = truncation_warnings(truncation, trunc, Q, 0, signed_alpha, 0, flags)
-    truncated[:] = flags
+    fractions = [float(v) for v in truncated]
+    warnings = truncation_warnings(truncation, trunc, Q, 0, signed_alpha, 0, fractions)
+    truncated[:] = fractions
     return warnings
 
 
