@@ -13,7 +13,8 @@ ball set:
   (Harris and Kotzalas 2007, ball kinematics), of the most loaded ball, with the sign of omega; 0 at rest;
 - the ball's angular speed relative to the cage: |w_R| of the most loaded ball (rad/s);
 - the defect frequencies FTF, BPFO, BPFI, BSF (Hz, kernels.geometry.pass_frequencies) from the cage speed
-  and that relative ball speed: the operating contact angles and the race-control hypothesis are in them.
+  and that relative ball speed: the operating contact angles and the race-control hypothesis are in them;
+- the largest traction coefficient the race control asks of an inner and of an outer contact (-).
 """
 
 import math
@@ -21,7 +22,7 @@ import math
 from bearing_fmu_common.jit import kernel
 
 from .geometry import pass_frequencies
-from .jones_harris import BQ_A_I, BQ_A_O, BQ_BETA, BQ_Q_I, BQ_Q_O, BQ_W_M, BQ_W_R
+from .jones_harris import BQ_A_I, BQ_A_O, BQ_BETA, BQ_MU_REQ_I, BQ_MU_REQ_O, BQ_Q_I, BQ_Q_O, BQ_W_M, BQ_W_R
 
 # source codes of an output slot (models.declarations `source` arrays)
 SRC_OUT = 0  # the contact kernel's output array (kernels.contacts CO_*)
@@ -41,7 +42,9 @@ BS_FTF = 6  # defect frequencies (Hz) from the cage speed and BS_BALL_CAGE: fund
 BS_BPFO = 7  # ... ball pass outer race
 BS_BPFI = 8  # ... ball pass inner race
 BS_BSF = 9  # ... ball spin
-BS_SIZE = 10
+BS_MU_REQ_I = 10  # largest traction coefficient the race control asks of an inner contact (-)
+BS_MU_REQ_O = 11  # ... of an outer contact (-)
+BS_SIZE = 12
 
 
 @kernel
@@ -52,12 +55,18 @@ def ball_set_summary(balls, omega, iterations, summary):
     total = 0.0
     weighted = 0.0
     j = 0
+    mu_i = 0.0
+    mu_o = 0.0
     for k in range(Z):
         q = balls[BQ_Q_I, k]
         total += q
         weighted += q * balls[BQ_W_M, k]
         if q > balls[BQ_Q_I, j]:
             j = k
+        mu_i = max(mu_i, balls[BQ_MU_REQ_I, k])
+        mu_o = max(mu_o, balls[BQ_MU_REQ_O, k])
+    summary[BS_MU_REQ_I] = mu_i
+    summary[BS_MU_REQ_O] = mu_o
     if total > 0.0:
         cage = weighted / total
     else:  # no ball on the inner race: most loaded on the outer race, plain mean orbital speed

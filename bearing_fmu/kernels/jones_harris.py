@@ -46,8 +46,10 @@ from .ball_traction import (
     TE_U_I,
     TE_U_O,
     TR_SIZE,
+    TT_SIZE,
     parameter_derivatives,
     rolling_start,
+    solve_from_rolling,
     solve_traction,
     traction_eval,
 )
@@ -109,7 +111,9 @@ BQ_U_I = 14  # rolling (entrainment) speed at the inner contact (m/s)
 BQ_U_O = 15  # rolling (entrainment) speed at the outer contact (m/s)
 BQ_P_SLIP_I = 16  # power of the traction against the sliding at the inner contact (W; RACE_TRACTION, else 0)
 BQ_P_SLIP_O = 17
-BQ_SIZE = 18
+BQ_MU_REQ_I = 18  # traction coefficient a race-control hypothesis asks of the inner contact, |lam_i M_g/D| / Q_i (-)
+BQ_MU_REQ_O = 19  # ... of the outer contact (-); 0 under RACE_TRACTION (its forces are the traction curve's)
+BQ_SIZE = 20
 
 # rows of the per-ball contact state that the load evaluation keeps for the per-ball outputs
 CS_Q_I = 0  # inner contact load (N)
@@ -321,20 +325,40 @@ def _kin_grad(a_i, a_o, C, omega, gp, dm, D, m_ball, race, cen, gyro, g):
 
 
 @kernel
-def _traction_grad(a_i, a_o, Q_i, Q_o, omega, dm, D, m_ball, cen, gyro, tr, tw, g):
+def _traction_grad(a_i, a_o, Q_i, Q_o, omega, dm, D, m_ball, cen, tw, g):
     """RACE_TRACTION's kinematic terms (F_c, Mg_o, Mg_i) as _kin_grad gives a hypothesis' (rows KG_*), solved from
     the film's traction for the contacts (a_i, a_o, Q_i, Q_o) (kernels.ball_traction), with their partials in a_i,
     a_o, Q_i (column KG_DC) and Q_o (KG_DQO). Mg_o, Mg_i are minus the in-plane traction forces (this kernel's sign
-    of lam M_g / D). tw = (y, out, Dy, dout): y (4, rad/s) the ball's kinematics, warm start and solution, and the
-    solver's work. A solve that does not converge gives NaN, which the ball's Newton refuses."""
-    y, out, Dy, dout = tw
+    of lam M_g / D). tw = (tr, y, out, Dy, dout, terms, dydp, p) (traction_work): the traction block, y (4, rad/s)
+    the ball's kinematics, warm start and solution, the solver's work, and the derivatives dy/dp at the last
+    contacts p of the same ball (p[2] = 0: none), from which the next solve of the ball starts. A solve that does
+    not converge gives NaN."""
+    tr, y, out, Dy, dout, terms, dydp, p = tw
     J = 0.1 * m_ball * D * D  # the ball's own balance: its gyroscopic moment whatever the hypotheses' option
-    if not solve_traction(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, out, Dy):
+    y0, y1, y2, y3 = y[0], y[1], y[2], y[3]
+    predicted = p[2] > 0.0
+    if predicted:  # the ball's last solution moved along its derivatives to these contacts (first order)
+        dp = (a_i - p[0], a_o - p[1], Q_i - p[2], Q_o - p[3])
+        for k in range(4):
+            y[k] += dydp[k, 0] * dp[0] + dydp[k, 1] * dp[1] + dydp[k, 2] * dp[2] + dydp[k, 3] * dp[3]
+    p[0] = a_i
+    p[1] = a_o
+    p[2] = Q_i
+    p[3] = Q_o
+    solved = solve_traction(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy)
+    if not solved and predicted:  # a prediction over a long step can land where Newton stalls: from the last solution
+        y[0], y[1], y[2], y[3] = y0, y1, y2, y3
+        solved = solve_traction(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy)
+    if not solved:
+        solved = solve_from_rolling(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy)
+    if not solved:  # NaN, which the ball's Newton refuses; the next solve of the ball starts from its last solution
+        y[0], y[1], y[2], y[3] = y0, y1, y2, y3
+        p[2] = 0.0
         for k in range(3):
             for c in range(KG_SIZE):
                 g[k, c] = math.nan
         return
-    parameter_derivatives(y, np.array([a_i, a_o, Q_i, Q_o]), omega, D, dm, J, tr, out, Dy, dout)
+    parameter_derivatives(y, p, omega, D, dm, J, tr, terms, out, Dy, dout, dydp)
     cols = (KG_DAI, KG_DAO, KG_DC, KG_DQO)
     fc = 0.5 * m_ball * dm if cen else 0.0
     g[KG_FC, KG_VALUE] = fc * y[0] * y[0]
@@ -347,14 +371,15 @@ def _traction_grad(a_i, a_o, Q_i, Q_o, omega, dm, D, m_ball, cen, gyro, tr, tw, 
 
 
 @kernel
-def _ball_eval(X1, X2, ball, kg, w):
+def _ball_eval(X1, X2, ball, kg, w, tw):
     """Ball residual, ring load and their derivatives at ball position X = (X1, X2) (m) into w (EV_*).
 
-    ball = (A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb, tr, tw): the
-    curvature-centre offset A (m) and the ball's constants (ball_equilibrium), with RACE_TRACTION's block tr and
-    work tw (_traction_grad); kg: float64[3, KG_SIZE] work.
+    ball = (A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb): the
+    curvature-centre offset A (m) and the ball's constants (ball_equilibrium); kg: float64[3, KG_SIZE] work;
+    tw: RACE_TRACTION's block and work (traction_work), None for a hypothesis (numba then compiles this function
+    without the traction branch).
     """
-    A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb, tr, tw = ball
+    A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb = ball
     L_o = math.hypot(X1, X2)
     so = X1 / L_o
     co = X2 / L_o
@@ -409,18 +434,19 @@ def _ball_eval(X1, X2, ball, kg, w):
     dC_X2 = -dC_Qi * dQi_A2 + dC_Qo * dQo_X2
     dC_A1 = dC_Qi * dQi_A1
     dC_A2 = dC_Qi * dQi_A2
-    if race == RACE_TRACTION and Q_i > 0.0 and Q_o > 0.0:
-        # the kinematics of the film's traction depend on both loads: C stands for Q_i, KG_DQO carries Q_o
-        _traction_grad(a_i, a_o, Q_i, Q_o, omega, dm, D, m_ball, cen, gyro, tr, tw, kg)
-        dC_X1 = -dQi_A1
-        dC_X2 = -dQi_A2
-        dC_A1 = dQi_A1
-        dC_A2 = dQi_A2
-    else:
+    traction = False
+    if tw is not None:
+        if Q_i > 0.0 and Q_o > 0.0:
+            # the kinematics of the film's traction depend on both loads: C stands for Q_i, KG_DQO carries Q_o
+            _traction_grad(a_i, a_o, Q_i, Q_o, omega, dm, D, m_ball, cen, tw, kg)
+            dC_X1 = -dQi_A1
+            dC_X2 = -dQi_A2
+            dC_A1 = dQi_A1
+            dC_A2 = dQi_A2
+            traction = True
+    if not traction:
         # a ball that touches one race only has no traction to roll it: it keeps outer-race kinematics
         _kin_grad(a_k, a_o, C, omega, gp, dm, D, m_ball, RACE_OUTER if race == RACE_TRACTION else race, cen, gyro, kg)
-        if race == RACE_TRACTION:
-            rolling_start(a_k, a_o, omega, D, dm, tw[0])
     F_c = kg[KG_FC, KG_VALUE]
     Mgo = kg[KG_MGO, KG_VALUE]
     Mgi = kg[KG_MGI, KG_VALUE]
@@ -502,17 +528,18 @@ def _chain(kg, row, dak, dao_X1, dao_X2, dC_X1, dC_X2, dC_A1, dC_A2):
 
 
 @kernel
-def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond):
+def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond, tw=None):
     """Solve one ball's equilibrium for curvature-centre offset (A1, A2) (m); warm start from X[:, j].
 
-    geo = (r_i, r_o, K_series, f_ball, tw) with K_series the Hertz constant of both contacts in series,
-    f_ball (N) the bearing-level load per ball of the convergence test (_ball_newton) and tw RACE_TRACTION's work
-    (traction_work()); that race control keeps the ball's kinematics over omega in X[X_Y:, j].
+    geo = (r_i, r_o, K_series, f_ball) with K_series the Hertz constant of both contacts in series and
+    f_ball (N) the bearing-level load per ball of the convergence test (_ball_newton); tw: RACE_TRACTION's block
+    and work (traction_work), None for a hypothesis. RACE_TRACTION keeps the ball's kinematics over omega in
+    X[X_Y:, j].
     Fills X[:, j] and cond (BE_*): ring load, friction couple, their derivatives w.r.t. A with the ball
     position condensed, contact loads, angles and the hybrid ratio; kg, w: work arrays of _ball_eval.
     Returns 0 (converged), 1 (unloaded ball), 2 (not converged).
     """
-    r_i, r_o, K_s, f_ball, tw = geo
+    r_i, r_o, K_s, f_ball = geo
     race = int(qs[QS_RACE])
     cen = qs[QS_CENTRIFUGAL] > 0.5 and omega != 0.0
     gyro = (qs[QS_GYROSCOPIC] > 0.5 or race == RACE_TRACTION) and omega != 0.0
@@ -530,26 +557,27 @@ def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond):
     _ball_start(A1, A2, x, r_i, r_o, qs[QS_K_I], qs[QS_K_O], F_c0)
     D = qs[QS_D]
     dm = qs[QS_DM]
-    if race == RACE_TRACTION:  # the kinematics' warm start: the last solution at this speed, or rolling
-        y = tw[0]
+    if tw is not None:  # the kinematics' warm start: the last solution at this speed, or rolling
+        y = tw[1]
+        tw[7][2] = 0.0  # no derivatives of this ball yet
         if 0.0 < X[X_Y, j] < 1.0:
             for k in range(4):
                 y[k] = X[X_Y + k, j] * omega
         else:
             rolling_start(math.atan2(A1, A2), math.atan2(A1, A2), omega, D, dm, y)
     ball = (A1, A2, r_i, r_o, qs[QS_K_I], qs[QS_K_O], qs[QS_FI], omega, D / dm, dm, D, qs[QS_M_BALL],
-            race, cen, gyro, qs[QS_C_HYB], qs[QS_TRACTION:], tw)  # fmt: skip
-    status = _ball_newton(x, ball, F_c0, f_ball, kg, w)
+            race, cen, gyro, qs[QS_C_HYB])  # fmt: skip
+    status = _ball_newton(x, ball, F_c0, f_ball, kg, w, tw)
     if status == 2 and (x[0] != 0.0 or x[1] != 0.0):
         # a warm start far from this solution (the ball floated in its clearance at the last solve and sits
         # where the damped steps crawl): once more from the cold start
         x[0] = 0.0
         x[1] = 0.0
         _ball_start(A1, A2, x, r_i, r_o, qs[QS_K_I], qs[QS_K_O], F_c0)
-        status = _ball_newton(x, ball, F_c0, f_ball, kg, w)
-    if race == RACE_TRACTION:
+        status = _ball_newton(x, ball, F_c0, f_ball, kg, w, tw)
+    if tw is not None:
         for k in range(4):
-            X[X_Y + k, j] = tw[0][k] / omega
+            X[X_Y + k, j] = tw[1][k] / omega
     if not _condense(w, cond):
         return 2
     if w[EV_Q_I] <= 0.0 and w[EV_Q_O] <= 0.0:
@@ -558,9 +586,19 @@ def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond):
 
 
 @kernel
-def traction_work():
-    """Work arrays of RACE_TRACTION's ball kinematics (y, out, Dy, dout: kernels.ball_traction), geo's last item."""
-    return np.zeros(4), np.zeros(TE_SIZE), np.zeros((TE_SIZE, 4)), np.zeros((TE_SIZE, 4))
+def traction_work(qs):
+    """RACE_TRACTION's traction block and the work arrays of its ball kinematics (tr, y, out, Dy, dout, terms, dydp,
+    p: kernels.ball_traction, _traction_grad)."""
+    return (
+        qs[QS_TRACTION:],
+        np.zeros(4),
+        np.zeros(TE_SIZE),
+        np.zeros((TE_SIZE, 4)),
+        np.zeros((TE_SIZE, 4)),
+        np.zeros((2, TT_SIZE)),
+        np.zeros((4, 4)),
+        np.zeros(4),
+    )
 
 
 @kernel
@@ -632,13 +670,13 @@ def _ball_start(A1, A2, x, r_i, r_o, K_i, K_o, F_c0):
 @kernel
 def _ball_residual_at(x, lam, step, args):
     """Evaluate the ball at x + lam step (m) into its work array; returns the residual norm (N)."""
-    ball, kg, w = args
-    _ball_eval(x[0] + lam * step[0], x[1] + lam * step[1], ball, kg, w)
+    ball, kg, w, tw = args
+    _ball_eval(x[0] + lam * step[0], x[1] + lam * step[1], ball, kg, w, tw)
     return math.hypot(w[EV_R1], w[EV_R2])
 
 
 @kernel
-def _ball_newton(x, ball, F_c0, f_ball, kg, w):
+def _ball_newton(x, ball, F_c0, f_ball, kg, w, tw):
     """Damped Newton on the ball position x (2, m, updated in place) from its start; w holds the
     evaluation at the final x. Returns 0 (converged) or 2 (not converged: iteration cap or singular dr/dX).
 
@@ -647,7 +685,7 @@ def _ball_newton(x, ball, F_c0, f_ball, kg, w):
     rounding in its position alone gives a residual far above 1e-13 of them) is judged against the loads
     that the global equilibrium balances, not against its own."""
     r_i, r_o, D = ball[2], ball[3], ball[10]  # layout of `ball`: _ball_eval
-    _ball_eval(x[0], x[1], ball, kg, w)
+    _ball_eval(x[0], x[1], ball, kg, w, tw)
     res = math.hypot(w[EV_R1], w[EV_R2])
     for _ in range(_BALL_MAXIT):
         scale = w[EV_Q_I] + w[EV_Q_O] + abs(F_c0) + f_ball + 1e-300
@@ -666,7 +704,7 @@ def _ball_newton(x, ball, F_c0, f_ball, kg, w):
             s2 *= cap / norm
         if norm < 1e-15 * D:
             return 0
-        lam, res = _ball_line_search(x, (s1, s2), res, _BALL_TRIES, (ball, kg, w))
+        lam, res = _ball_line_search(x, (s1, s2), res, _BALL_TRIES, (ball, kg, w, tw))
         x[0] += lam * s1
         x[1] += lam * s2
     return 2
@@ -730,10 +768,19 @@ def ring_loads(d, qs, dPd, omega, X, F, K, contact, jacobian, f_load=0.0):
     (filled), from which ball_outputs derives the per-ball outputs once the solve has converged.
     Returns the worst ball status (0 all converged or unloaded, 2 a ball did not converge).
     """
+    if int(qs[QS_RACE]) == RACE_TRACTION and omega != 0.0:
+        return _ring_loads(d, qs, dPd, omega, X, F, K, contact, jacobian, f_load, traction_work(qs))
+    return _ring_loads(d, qs, dPd, omega, X, F, K, contact, jacobian, f_load, None)
+
+
+@kernel
+def _ring_loads(d, qs, dPd, omega, X, F, K, contact, jacobian, f_load, tw):
+    """ring_loads with RACE_TRACTION's block and work tw (traction_work), or None: numba compiles it once for the
+    hypotheses, without the traction branches, and once for the race control from traction."""
     Z = int(qs[QS_Z])
     A, r_i, r_o, A1_0, A2_0, Rr, alpha0 = qs_geometry(qs, dPd)
     K_s = (qs[QS_K_I] ** (-2.0 / 3.0) + qs[QS_K_O] ** (-2.0 / 3.0)) ** -1.5
-    geo = (r_i, r_o, K_s, max(f_load, _F_FLOOR) / Z, traction_work())
+    geo = (r_i, r_o, K_s, max(f_load, _F_FLOOR) / Z)
     kg = np.empty((3, KG_SIZE))
     w = np.empty(EV_SIZE)
     cond = np.empty(BE_SIZE)
@@ -748,7 +795,7 @@ def ring_loads(d, qs, dPd, omega, X, F, K, contact, jacobian, f_load=0.0):
         cp, sp = ball_direction(j, Z)
         A1 = A1_0 + d[2] + Rr * (d[3] * sp - d[4] * cp)
         A2 = A2_0 + d[0] * cp + d[1] * sp
-        status = ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond)
+        status = ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond, tw)
         if status == 2:
             worst = 2
         gz = cond[BE_GZ]
@@ -790,7 +837,6 @@ def ball_outputs(omega, qs, X, contact, balls):
     race = int(qs[QS_RACE])
     cen = qs[QS_CENTRIFUGAL] > 0.5 and omega != 0.0
     gyro = qs[QS_GYROSCOPIC] > 0.5 and omega != 0.0
-    te = np.empty(TE_SIZE)
     for j in range(contact.shape[1]):
         a_i = contact[CS_A_I, j]
         a_o = contact[CS_A_O, j]
@@ -823,8 +869,14 @@ def ball_outputs(omega, qs, X, contact, balls):
         u_o = abs(w_m) * 0.5 * dm * (1.0 + gp * math.cos(a_o))
         p_i = 0.0
         p_o = 0.0
-        if race == RACE_TRACTION and omega != 0.0:
-            w_m, w_R, beta, Mg, lam_i, u_i, u_o, p_i, p_o = _traction_ball(omega, qs, X, contact, j, te)
+        # the friction a hypothesis asks of each contact: its share of the gyroscopic moment, the only tangential
+        # force of its ball balance
+        Q_i = contact[CS_Q_I, j]
+        Q_o = contact[CS_Q_O, j]
+        balls[BQ_MU_REQ_I, j] = abs(Mgi.real) / Q_i if Q_i > 0.0 and race != RACE_TRACTION else 0.0
+        balls[BQ_MU_REQ_O, j] = abs(Mgo.real) / Q_o if Q_o > 0.0 and race != RACE_TRACTION else 0.0
+        if race == RACE_TRACTION and omega != 0.0 and Q_i > 0.0 and Q_o > 0.0:
+            w_m, w_R, beta, Mg, lam_i, u_i, u_o, p_i, p_o = _traction_ball(omega, qs, X, contact, j)
             F_c = 0.5 * qs[QS_M_BALL] * dm * w_m * w_m if cen else 0.0
         balls[BQ_Q_I, j] = contact[CS_Q_I, j]
         balls[BQ_Q_O, j] = contact[CS_Q_O, j]
@@ -848,10 +900,11 @@ def ball_outputs(omega, qs, X, contact, balls):
 
 
 @kernel
-def _traction_ball(omega, qs, X, contact, j, te):
+def _traction_ball(omega, qs, X, contact, j):
     """Per-ball outputs of RACE_TRACTION from the kinematics y = X[X_Y:, j] omega (rad/s) of the solution:
     (w_m, w_R, beta, M_g, lam_i, u_i, u_o, P_slip_i, P_slip_o) in ball_outputs' units and signs (w_R the spin
-    relative to the cage about the axis (cos beta, -sin beta), negative for omega > 0). te: TE_SIZE work."""
+    relative to the cage about the axis (cos beta, -sin beta), negative for omega > 0), for a ball loaded on both
+    races (a ball on one race keeps outer-race kinematics, _ball_eval)."""
     D = qs[QS_D]
     dm = qs[QS_DM]
     w_m = X[X_Y, j] * omega
@@ -864,11 +917,7 @@ def _traction_ball(omega, qs, X, contact, j, te):
     Q_o = contact[CS_Q_O, j]
     a_i = contact[CS_A_I, j]
     a_o = contact[CS_A_O, j]
-    if Q_i <= 0.0 or Q_o <= 0.0:  # outer-race kinematics (_ball_eval): the pure-rolling speeds, no traction
-        gp = D / dm
-        u_i = abs(omega - w_m) * 0.5 * dm * (1.0 - gp * math.cos(a_i))
-        u_o = abs(w_m) * 0.5 * dm * (1.0 + gp * math.cos(a_o))
-        return w_m, w_R, beta, Mg, 0.0, u_i, u_o, 0.0, 0.0
+    te = np.empty(TE_SIZE)
     y = np.empty(4)
     for k in range(4):
         y[k] = X[X_Y + k, j] * omega
@@ -922,9 +971,10 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
 
     F_applied (5): loads (N, N.m) on the load-controlled DOFs; control (5): 1 = load-controlled,
     0 = displacement-controlled (d holds the imposed value); d (5, m and rad): warm start, solution
-    on return; F: reactions at the solution (N, N.m); X (2, Z): ball positions (m), warm start and
-    solution. Filled once, at the solution: balls (BQ_SIZE, Z) per-ball outputs, and K (5x5) the
-    stiffness dF/dd when qs[QS_STIFFNESS] is set (otherwise K is not touched).
+    on return; F: reactions at the solution (N, N.m); X (X_SIZE, Z, or 2 rows for the hypotheses): ball states,
+    warm start and solution; RACE_TRACTION from a cold X starts from the outer-race-controlled solution. Filled
+    once, at the solution: balls (BQ_SIZE, Z) per-ball outputs, and K (5x5) the stiffness dF/dd when
+    qs[QS_STIFFNESS] is set (otherwise K is not touched).
     Returns (status, iterations, residual): status QS_* code, residual = max scaled load error (N).
     """
     idx = np.empty(5, np.int64)
@@ -936,9 +986,22 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
     stiffness = qs[QS_STIFFNESS] > 0.5
     J = np.empty((5, 5))  # Newton matrix: the stiffness of the current iterate
     contact = np.empty((CS_SIZE, int(qs[QS_Z])))
+    it = 0
+    if int(qs[QS_RACE]) == RACE_TRACTION and omega != 0.0 and _cold(X):
+        # the film's traction from a cold start: far from rolling, the balls' kinematics stall or need continuation at
+        # every trial of the ring's Newton; the outer-race-controlled bearing is the start instead (each ball's
+        # traction kinematics then start from rolling at its contacts)
+        rolling = qs.copy()
+        rolling[QS_RACE] = RACE_OUTER
+        d_cold = d.copy()
+        status, it, res = _global_newton(F_applied, idx, n, d, rolling, dPd, omega, X, F, J, contact, n > 0)
+        if status != QS_OK:  # the traction solve from the cold start itself
+            d[:] = d_cold
+            X[:, :] = 0.0
     d_start = d.copy()
     X_start = X.copy()
-    status, it, res = _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, stiffness or n > 0)
+    status, more, res = _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, stiffness or n > 0)
+    it += more
     if status != QS_OK and n > 0:
         d[:] = d_start
         X[:, :] = X_start
@@ -948,6 +1011,15 @@ def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
     if stiffness:
         K[:, :] = J
     return status, it, res
+
+
+@kernel
+def _cold(X):
+    """No ball has traction kinematics yet (X[X_Y] = w_m / omega, in ]0, 1[ once solved)."""
+    for j in range(X.shape[1]):
+        if 0.0 < X[X_Y, j] < 1.0:
+            return False
+    return True
 
 
 @kernel

@@ -451,6 +451,17 @@ QUASI_STATIC_OUTPUTS = (
     ),
     Variable("alpha_inner", "rad", "inner contact angle of the most loaded ball", source=("ball_set", bo.BS_ALPHA_I)),
     Variable("alpha_outer", "rad", "outer contact angle of the most loaded ball", source=("ball_set", bo.BS_ALPHA_O)),
+    *(
+        Variable(
+            f"mu_required_{race}",
+            "1",
+            f"largest traction coefficient the race-control hypothesis asks of an {race} contact (its share of the "
+            f"balls' gyroscopic moment over the contact load; a warning is logged above the lubricant's limiting "
+            f"traction coefficient); 0 under race_control = traction, whose forces are the traction curve's",
+            source=("ball_set", slot),
+        )
+        for race, slot in (("inner", bo.BS_MU_REQ_I), ("outer", bo.BS_MU_REQ_O))
+    ),
     *truncation_outputs("trunc"),
     Variable(
         "omega_cage",

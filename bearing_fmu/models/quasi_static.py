@@ -36,6 +36,7 @@ from .declarations import (
     QUASI_STATIC_PARAMETERS,
 )
 from .film_table import film_table_array
+from .friction import FrictionWatch
 from .lubrication import Lubrication, pack_lubrication
 from .variables import (
     DM_N_LIMIT,
@@ -142,7 +143,8 @@ class QuasiStaticModel:
         # shoulder truncation of the contact ellipses (kernels.truncation), the races truncated at the last
         # evaluation (a warning is logged on entry only)
         self._trunc = np.zeros(tk.TR_SIZE)
-        self._truncated = [False, False]
+        self._truncated = [0.0, 0.0]  # per race the truncated fraction at its last warning (0: not truncated)
+        self._friction = FrictionWatch(self.race_control, self.lubricant.traction_limit, self.lubricant.name)
         self.F_preload = float(F_preload)
         if self.F_preload and self.scene.drive != "fixed_axial":
             raise InputError(
@@ -364,24 +366,6 @@ class QuasiStaticModel:
                 applied, self.control, self.d, self.qs, dPd, omega, self.X, self.F, self.K, self.balls
             )
             iters += more
-        if status != qk.QS_OK and self._traction:
-            # the film's traction from cold can stall where the balls' kinematics are far from rolling: solve the
-            # outer-race-controlled bearing first and start the traction solution from it
-            self.d[:] = np.where(self.control > 0.5, 0.0, d_start)
-            self.X[:] = 0.0
-            self.qs[qk.QS_RACE] = qk.RACE_OUTER
-            try:
-                status, more, res = qk.solve_quasistatic(
-                    applied, self.control, self.d, self.qs, dPd, omega, self.X, self.F, self.K, self.balls
-                )
-            finally:
-                self.qs[qk.QS_RACE] = qk.RACE_TRACTION
-            iters += more
-            if status == qk.QS_OK:
-                status, more, res = qk.solve_quasistatic(
-                    applied, self.control, self.d, self.qs, dPd, omega, self.X, self.F, self.K, self.balls
-                )
-                iters += more
         self.status = (status, iters, res)
         if status != qk.QS_OK:
             self.d[:] = d_start
@@ -398,6 +382,12 @@ class QuasiStaticModel:
             )
         if self.bearing.kind == "angular_contact":
             self._check_thrust_side(d_start, X_start, u)
+        try:
+            self._friction.refuse_friction_alone(self.balls, applied, self.control, lambda: self._shown(u))
+        except InputError:
+            self.d[:] = d_start
+            self.X[:] = X_start
+            raise
 
     def _refuse_without_thrust(self, applied, u):
         """An equilibrium not found for a single angular-contact bearing whose thrust is load-controlled and not
@@ -506,15 +496,25 @@ class QuasiStaticModel:
         self.warnings += truncation_warnings(
             self._truncation_parameters, self._trunc, self.balls, qk.BQ_Q_I, self.balls, qk.BQ_A_I, self._truncated
         )
+        summary = self._summary
+        inner = summary[bo.BS_ALPHA_I] if out[ck.CO_QMAX_I] > 0.0 else None
+        mu_required = (summary[bo.BS_MU_REQ_I], summary[bo.BS_MU_REQ_O])
+        self.warnings += self._friction.warnings(mu_required, inner, self.balls, u)
         return self.values
 
     # -- state (FMU get/set state, rollback) ---------------------------------------------------
     def get_state(self):
-        """Solver state as plain lists (JSON-serialisable): displacements, ball positions and the races whose contact
-        ellipse was truncated (their warning is logged on entry only)."""
-        return {"d": self.d.tolist(), "X": self.X.tolist(), "truncated": list(self._truncated)}
+        """Solver state as plain lists (JSON-serialisable): displacements, ball states, the races whose contact
+        ellipse was truncated (their warning is logged on entry only) and the friction watch's state."""
+        return {
+            "d": self.d.tolist(),
+            "X": self.X.tolist(),
+            "truncated": list(self._truncated),
+            "friction": self._friction.state(),
+        }
 
     def set_state(self, state):
         self.d[:] = state["d"]
         self.X[:] = state["X"]
-        self._truncated[:] = state.get("truncated", (False, False))
+        self._truncated[:] = state.get("truncated", (0.0, 0.0))
+        self._friction.set_state(state.get("friction", {}))

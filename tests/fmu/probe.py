@@ -41,6 +41,8 @@ def open_fmu(path, parameters=None):
     for name, value in (parameters or {}).items():
         if isinstance(value, str):
             fmu.setString([vr[name]], [value])
+        elif isinstance(value, int):
+            fmu.setInteger([vr[name]], [value])
         else:
             fmu.setReal([vr[name]], [value])
     try:

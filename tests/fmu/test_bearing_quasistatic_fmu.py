@@ -274,3 +274,48 @@ def test_oil_outside_its_data_range_is_warned_once_per_entry(bearing_fmu):
     assert "T_oil = 250 K" in warnings[1][0] and "[273.15, 393.15] K" in warnings[1][0]
     fmu.terminate()
     fmu.freeInstance()
+
+
+def test_race_control_from_traction_and_the_friction_a_hypothesis_assumes(bearing_fmu):
+    """Bearing.fmu with the 40 deg 218 of the textbook cases and the Guessasma oil (limiting traction coefficient 0.06)
+    under 8.9 kN at 8 000 rpm: race_control_mode = 0 (outer) outputs mu_required_outer = 0.0775 and logs one
+    fmi2Warning naming it, the limit and race_control = 'traction' (none at the next step); race_control_mode = 3
+    (traction) runs with mu_required 0, no such warning, a cage 8-9 % faster (docs/quasistatic.md, section 2), and an
+    FMU state that repeats a step exactly (it carries the balls' kinematics)."""
+    from tests.validation.test_shoulder_truncation import BEARING
+
+    rpm = 8000.0 * math.pi / 30.0
+    runs = {}
+    for mode in (0, 3):
+        host.messages.clear()
+        parameters = {"bearing": str(BEARING), "lubricant": "guessasma_oil", "race_control_mode": mode}
+        fmu, vr, _ = host.open_fmu(str(bearing_fmu), parameters)
+        fmu.setReal([vr["F_z"], vr["omega"]], [8900.0, rpm])
+        said = []
+        for k in range(2):
+            host.messages.clear()
+            assert host.step_status(fmu, 0.1 * k) == 0
+            said.append(
+                [m["message"] for m in host.messages if m["status"] == 1 and "traction coefficient" in m["message"]]
+            )
+        names = ("omega_cage", "mu_required_inner", "mu_required_outer", "torque")
+        runs[mode] = (dict(zip(names, fmu.getReal([vr[n] for n in names]))), said)
+        if mode == 3:
+            state = fmu.getFMUstate()
+            before = fmu.getReal([vr["omega_cage"], vr["torque"], vr["z"]])
+            fmu.setReal([vr["omega"]], [1.1 * rpm])
+            assert host.step_status(fmu, 0.2) == 0
+            fmu.setFMUstate(state)
+            fmu.setReal([vr["omega"]], [rpm])
+            assert host.step_status(fmu, 0.2) == 0
+            assert fmu.getReal([vr["omega_cage"], vr["torque"], vr["z"]]) == before
+            fmu.freeFMUstate(state)
+        fmu.terminate()
+        fmu.freeInstance()
+    outer, traction = runs[0][0], runs[3][0]
+    assert 0.077 < outer["mu_required_outer"] < 0.078 and outer["mu_required_inner"] == 0.0
+    assert [len(w) for w in runs[0][1]] == [1, 0]
+    assert "0.06" in runs[0][1][0][0] and "race_control = 'traction'" in runs[0][1][0][0]
+    assert traction["mu_required_inner"] == traction["mu_required_outer"] == 0.0
+    assert runs[3][1] == [[], []]
+    assert 1.08 < traction["omega_cage"] / outer["omega_cage"] < 1.09

@@ -13,9 +13,11 @@ from . import ref_geometry
 
 SRC_OUT, SRC_D, SRC_F, SRC_K, SRC_BALL_SET, SRC_TRUNC = 0, 1, 2, 3, 4, 5
 BS_ALPHA_I, BS_ALPHA_O, BS_CAGE, BS_BALL, BS_ITERATIONS = 0, 1, 2, 3, 4
-BS_BALL_CAGE, BS_FTF, BS_BPFO, BS_BPFI, BS_BSF, BS_SIZE = 5, 6, 7, 8, 9, 10
+BS_BALL_CAGE, BS_FTF, BS_BPFO, BS_BPFI, BS_BSF = 5, 6, 7, 8, 9
+BS_MU_REQ_I, BS_MU_REQ_O, BS_SIZE = 10, 11, 12
 # rows of the per-ball array (kernels.jones_harris BQ_*)
 BQ_Q_I, BQ_Q_O, BQ_A_I, BQ_A_O, BQ_BETA, BQ_W_M, BQ_W_R = 0, 1, 2, 3, 4, 5, 6
+BQ_MU_REQ_I, BQ_MU_REQ_O = 18, 19
 
 
 def _most_loaded(loads):
@@ -47,6 +49,9 @@ def ball_set_summary(balls, omega, iterations, summary):
     summary[BS_BALL_CAGE] = abs(w_r)
     frequencies = ref_geometry.pass_frequencies(omega, cage, w_r, len(q_i))
     summary[BS_FTF], summary[BS_BPFO], summary[BS_BPFI], summary[BS_BSF] = frequencies
+    # the largest required traction coefficient of each race (0 when no ball asks any)
+    summary[BS_MU_REQ_I] = max([0.0, *balls[BQ_MU_REQ_I]])
+    summary[BS_MU_REQ_O] = max([0.0, *balls[BQ_MU_REQ_O]])
 
 
 def quasi_static_outputs(balls, omega, iterations, out, d, F, K_flat, trunc, source, index, summary, values):

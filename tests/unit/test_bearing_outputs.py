@@ -25,9 +25,20 @@ from tests.reference import ref_bearing_outputs as rb
 def test_every_public_kernel_has_a_twin_and_the_codes_match():
     kernels = [n for n, f in vars(bo).items() if hasattr(f, "py_func") and f.py_func.__module__ == bo.__name__]
     assert kernels and all(callable(getattr(rb, n, None)) for n in kernels), kernels
-    for name in ("SRC_OUT", "SRC_D", "SRC_F", "SRC_K", "SRC_BALL_SET", "BS_ALPHA_I", "BS_CAGE", "BS_SIZE"):
+    for name in (
+        "SRC_OUT",
+        "SRC_D",
+        "SRC_F",
+        "SRC_K",
+        "SRC_BALL_SET",
+        "BS_ALPHA_I",
+        "BS_CAGE",
+        "BS_MU_REQ_I",
+        "BS_MU_REQ_O",
+        "BS_SIZE",
+    ):
         assert getattr(bo, name) == getattr(rb, name), name
-    for name in ("BQ_Q_I", "BQ_Q_O", "BQ_A_I", "BQ_A_O", "BQ_BETA", "BQ_W_M", "BQ_W_R"):
+    for name in ("BQ_Q_I", "BQ_Q_O", "BQ_A_I", "BQ_A_O", "BQ_BETA", "BQ_W_M", "BQ_W_R", "BQ_MU_REQ_I", "BQ_MU_REQ_O"):
         assert getattr(qk, name) == getattr(rb, name), name
 
 
@@ -40,6 +51,8 @@ def random_balls(rng, Z, inner_loaded):
     balls[qk.BQ_BETA] = rng.uniform(-0.5, 0.5, Z)
     balls[qk.BQ_W_M] = rng.uniform(400.0, 460.0, Z)
     balls[qk.BQ_W_R] = rng.uniform(-4000.0, -3000.0, Z)
+    balls[qk.BQ_MU_REQ_I] = rng.uniform(0.0, 0.1, Z)
+    balls[qk.BQ_MU_REQ_O] = rng.uniform(0.0, 0.1, Z)
     return balls
 
 

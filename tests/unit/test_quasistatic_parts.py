@@ -79,8 +79,8 @@ BALL_CASES = [
 def test_ball_equilibrium_matches_twin(label, p, d):
     qs, g = pack(p), ref.geometry(p)
     K_s = (p["K_i"] ** (-2.0 / 3.0) + p["K_o"] ** (-2.0 / 3.0)) ** -1.5
-    X = np.zeros((2, g["Z"]))
-    kg, w, cond = np.empty((3, 4)), np.empty(qk.EV_SIZE), np.empty(qk.BE_SIZE)
+    X = np.zeros((qk.X_SIZE, g["Z"]))
+    kg, w, cond = np.empty((3, qk.KG_SIZE)), np.empty(qk.EV_SIZE), np.empty(qk.BE_SIZE)
     inner_free = 0  # balls off the inner race (held on the outer one by the centrifugal force, or free)
     for j, psi in enumerate(g["psi"]):
         A1, A2 = ref.groove_centre_offset(d, psi, g)
@@ -96,7 +96,7 @@ def test_ball_equilibrium_matches_twin(label, p, d):
         if twin["Q_i"] > 0.0 and twin["Q_o"] > 0.0:
             assert cond[qk.BE_A_I] == pytest.approx(twin["a_i"], abs=1e-8), (label, j)
             assert cond[qk.BE_A_O] == pytest.approx(twin["a_o"], abs=1e-8), (label, j)
-            assert X[:, j] == pytest.approx([twin["X1"], twin["X2"]], abs=1e-8 * p["D"]), (label, j)
+            assert X[:2, j] == pytest.approx([twin["X1"], twin["X2"]], abs=1e-8 * p["D"]), (label, j)
     if "lifted" in label:
         assert inner_free > 0
 
@@ -111,7 +111,7 @@ def test_ring_loads_and_bearing_loads_match_twin(label, p, d):
     results = []
     for jacobian in (True, False):
         F, K = np.zeros(5), np.full((5, 5), np.nan)
-        qk.ring_loads(d, qs, 0.0, p["omega"], np.zeros((2, Z)), F, K, contact, jacobian)
+        qk.ring_loads(d, qs, 0.0, p["omega"], np.zeros((qk.X_SIZE, Z)), F, K, contact, jacobian)
         assert np.allclose(F, F_ref, rtol=0, atol=1e-8 * np.max(np.abs(F_ref))), label
         assert np.all(np.isfinite(K)) == jacobian  # without the Jacobian K is not touched
         results.append(F)
