@@ -218,13 +218,14 @@ def test_overload_warning_is_logged():
     assert any("ISO 76" in w for w in model.warnings)
 
 
-def test_shoulder_truncation_is_reported_and_warned_once_per_entry(bearing_fmu):
+def test_shoulder_truncation_is_reported_and_warned_on_entry_and_at_each_doubling(bearing_fmu):
     """Bearing.fmu with the 40 deg 218 of the textbook cases (its own bearing file, iso_vg68_mineral) under 8.9 kN
     thrust: at rest within its shoulders (truncation_inner = 0, no warning); at 10 000 and 12 000 rpm the
     centrifugal force turns the inner contact to 55-57 deg and its ellipse past the estimated 60.7 deg shoulder
     edge: truncation_inner > 0 and one fmi2Warning naming the race, the contact angle and the edge, not one per
-    step; back at rest it leaves truncation, and the next entry is warned again. FMU state: a state saved in
-    truncation and restored gives no new warning (the state carries which races are truncated)."""
+    step, and one more when the truncated fraction has doubled since (10 000 -> 12 000 rpm); back at rest it leaves
+    truncation, and the next entry is warned again. FMU state: a state saved in truncation and restored gives no new
+    warning (the state carries each race's fraction at its last warning)."""
     from tests.validation.test_shoulder_truncation import BEARING
 
     host.messages.clear()
@@ -240,7 +241,9 @@ def test_shoulder_truncation_is_reported_and_warned_once_per_entry(bearing_fmu):
         warnings.append([m["message"] for m in host.messages if m["status"] == 1 and "truncated" in m["message"]])
     assert [t[0] > 0.0 for t in truncation] == [n > 0.0 for n in rpm]
     assert all(t[1] == 0.0 for t in truncation)
-    assert [len(w) for w in warnings] == [0, 1, 0, 0, 0, 0, 0, 1]
+    # 10 000 rpm: 23.2 % of the semi-major axis past the edge; 12 000 rpm: 55.7 %, more than doubled: warned again
+    assert [len(w) for w in warnings] == [0, 1, 1, 0, 0, 0, 0, 1]
+    assert "grown from 23.2 %" in warnings[2][0]
     assert "inner ring's thrust-side shoulder" in warnings[1][0] and "edge at 60.7 deg" in warnings[1][0]
     state = fmu.getFMUstate()  # in truncation
     fmu.setReal([vr["omega"]], [0.0])
