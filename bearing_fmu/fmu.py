@@ -223,6 +223,7 @@ class BearingDEM(_BearingSlave):
             traction_limit=self.traction_limit,
             support_stiffness=self.support_stiffness,
             support_damping=self.support_damping,
+            support_mass=self.support_mass,
         )
 
     def _advance(self, step_size):

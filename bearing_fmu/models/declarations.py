@@ -27,7 +27,7 @@ from ..kernels import radial_bearing as ak
 from ..kernels import rating_life as rl
 from ..kernels import truncation as tk
 from ..kernels.ball_dynamics import state as ds
-from ..params import SUPPORT_DAMPING, SUPPORT_STIFFNESS, load_dem_constants
+from ..params import SUPPORT_DAMPING, SUPPORT_MASS, SUPPORT_STIFFNESS, load_dem_constants
 from ..scene import LUBRICATION_METHODS, RACE_CONTROLS
 from .file_parameters import bearing_parameters
 from .variables import (
@@ -695,8 +695,9 @@ DEM_OUTPUTS = (
         "monitor_status",
         "1",
         "stability monitor of the last doStep: 0 ok, 1 non-finite force, 2 penetration beyond the material "
-        "limit, 3 energy growth, 4 tangential chatter, 5 normal damping beyond the step (a non-zero code comes "
-        "with fmi2Discard)",
+        "limit, 3 energy growth, 4 tangential chatter, 5 normal damping beyond the step (codes 1-5 come with "
+        "fmi2Discard); 6 the inner ring whirls: a self-excited orbit of the ring on its support, the step succeeds "
+        "and an fmi2Warning names the orbit at its onset (docs/dem.md, Ring support)",
         "integer",
         source=("status", ds.ST_CODE),
     ),
@@ -781,6 +782,18 @@ DEM_PARAMETERS = (
         min=SUPPORT_DAMPING.low,
         max=SUPPORT_DAMPING.high,
         limits="0 = none; the automatic step follows the support",
+    ),
+    Variable(
+        "support_mass",
+        "kg",
+        "the shaft's modal mass at the seat, moving with the inner ring: added to its mass in x, y, z and, spread over "
+        "the pitch circle (m (d_m/2)^2/2), to its tilt inertia. 0 = the ring alone. Set it with the shaft's modal "
+        "stiffness in support_stiffness: a mass on the damper alone lowers the damping below which the ring whirls "
+        "(docs/dem.md, Ring support)",
+        start=_DEM.support_mass,
+        min=SUPPORT_MASS.low,
+        max=SUPPORT_MASS.high,
+        limits="a spindle shaft's modal mass at a seat is 2-10 kg; 0 = the ring alone",
     ),
     *bearing_parameters("6208", "guessasma_oil"),
 )

@@ -15,6 +15,7 @@
 """
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -30,6 +31,7 @@ from bearing_fmu.kernels.ball_dynamics.state import (
     STATUS_NOT_FINITE,
     STATUS_OK,
     STATUS_PENETRATION,
+    STATUS_WHIRL,
 )
 from bearing_fmu.kernels.ehl import friction_coefficient
 from bearing_fmu.models.dem import DemModel, DemUnstableError
@@ -106,6 +108,7 @@ def test_validate_and_variables(dem_fmu):
         "average_state_outputs",
         "support_stiffness",
         "support_damping",
+        "support_mass",
         "bearing_from_file",
         "lubricant_from_file",
     }
@@ -355,3 +358,33 @@ def test_master_rollback_with_dem_equals_a_plain_run_on_the_accepted_grid(dem_fm
     for name in ("dem.omega_cage", "dem.x", "dem.torque"):
         assert np.array_equal(result.columns[name], plain[name]), name
     assert run_master(spec_of(doc())).status == "ok"
+
+
+def test_a_whirling_ring_is_reported_through_the_fmu(dem_fmu):
+    """The 218 (40 deg) under 8.9 kN thrust at 12 000 rpm on support_damping = 300 N.s/m, kicked radially by 2 % of
+    the thrust for 2 ms (tests/validation/test_dem_ring_whirl.py): its ring whirls (about 115 um at 820-830 Hz). Every
+    step succeeds (the run is stable; the outputs are those of the whirling ring), monitor_status turns 6 and the
+    importer receives one fmi2Warning (status 1) naming the orbit, its frequency and support_damping. With the
+    default support the same run reports 0 throughout and no such warning."""
+    bearing = str(Path(__file__).parents[1] / "validation" / "data" / "angular_218_textbook.toml")
+    omega = 12000.0 * math.pi / 30.0
+
+    def run(parameters):
+        probe.messages.clear()
+        fmu, vr, _ = probe.open_fmu(str(dem_fmu), {"bearing": bearing, "lubricant": "iso_vg68_mineral", **parameters})
+        steps = [(0.01, 0.0)] * 10 + [(0.002, 0.02 * 8900.0)] + [(0.01, 0.0)] * 20  # (H, F_x)
+        t, codes = 0.0, []
+        for h, F_x in steps:
+            fmu.setReal([vr["omega"], vr["F_x"], vr["F_z"], vr["T_oil"]], [omega, F_x, 8900.0, 313.15])
+            assert step_status(fmu, t, h) == 0
+            t += h
+            codes.append(fmu.getInteger([vr["monitor_status"]])[0])
+        fmu.freeInstance()
+        return codes, [m for m in probe.messages if "whirls" in m["message"]]
+
+    codes, warnings = run({"support_damping": 300.0})
+    assert codes[-10:] == [STATUS_WHIRL] * 10
+    assert len(warnings) == 1 and warnings[0]["status"] == 1
+    assert "support_damping = 300 N.s/m" in warnings[0]["message"] and " Hz" in warnings[0]["message"]
+    codes, warnings = run({})
+    assert codes == [STATUS_OK] * len(codes) and warnings == []

@@ -445,13 +445,15 @@ def advance(st, par, lub, n_steps, dt, omega0, omega1, F_ring, T_oil):
     """n_steps steps (omega linear from omega0 to omega1); returns (energy dissipated per race (J), power
     dissipated per race in the last step (W), capacitance of every step integrated over time (F.s), the averaged
     state outputs' sums in the layout of acc[A_XT:A_SIZE]: the ring's displacement and tilts integrated over the steps,
-    the number of refreshes and the sums of their samples)."""
+    the number of refreshes and the sums of their samples, then the orbit watch's integrals of the squares of x, y,
+    theta_x, theta_y and of |v_xy|^2 and |theta'|^2)."""
     refresh_every = int(par[s.P_REFRESH])
     energy = np.zeros(2)
     last = np.zeros(2)
     capacitance = 0.0
     position = np.zeros(5)
     samples = np.zeros(9)
+    squares = np.zeros(6)
     count = 0
     for n in range(n_steps):
         if st["counters"][s.K_STEP] % refresh_every == 0:
@@ -464,7 +466,11 @@ def advance(st, par, lub, n_steps, dt, omega0, omega1, F_ring, T_oil):
         energy += last * dt
         capacitance += step_capacitance(st, par) * dt
         position += np.concatenate((st["ring"][s.R_X : s.R_X + 3], st["ring"][s.R_TH : s.R_TH + 2])) * dt
-    return energy, last, capacitance, np.concatenate((position, [count], samples))
+        ring = st["ring"]
+        v_xy, rates = ring[s.R_VX : s.R_VX + 2], ring[s.R_VTH : s.R_VTH + 2]
+        across = np.concatenate((ring[s.R_X : s.R_X + 2], ring[s.R_TH : s.R_TH + 2]))
+        squares += np.concatenate((across**2, [v_xy @ v_xy, rates @ rates])) * dt
+    return energy, last, capacitance, np.concatenate((position, [count], samples, squares))
 
 
 KERNEL_MODULE = "bearing_fmu.kernels.ball_dynamics.integrator"

@@ -147,6 +147,8 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction, sup
     assert acc[s.A_SAMPLES] == state_sums[5] > 0.0
     for k in range(9):  # each sum on its own scale (loads, pressure, Lambda, films)
         report[f"refresh sum {k}"] = _scale_err(acc[s.A_S_QMAX_I + k : s.A_S_QMAX_I + k + 1], state_sums[6 + k : 7 + k])
+    for k, name in enumerate(("x^2", "y^2", "theta_x^2", "theta_y^2", "|v|^2", "|theta'|^2")):
+        report[f"{name} x time"] = _scale_err(acc[s.A_RING_SQ + k : s.A_RING_SQ + k + 1], state_sums[15 + k : 16 + k])
     print("kernel vs twin, largest scaled difference:", {k: f"{v:.2e}" for k, v in report.items()})
     assert np.array_equal(kernel_state["counters"], twin_state["counters"])
     for name, err in report.items():

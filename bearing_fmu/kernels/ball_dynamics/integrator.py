@@ -33,6 +33,7 @@ from .state import (
     A_MR,
     A_POWER_I,
     A_POWER_O,
+    A_RING_SQ,
     A_S_HC_I,
     A_S_HMIN_I,
     A_S_LAMBDA_I,
@@ -628,6 +629,13 @@ def advance(
         acc[A_XT + 2] += ring[R_X + 2] * dt
         acc[A_XT + 3] += ring[R_TH] * dt
         acc[A_XT + 4] += ring[R_TH + 1] * dt
+        # second moments of the ring's motion across its axis: the orbit watch's variances over a window
+        acc[A_RING_SQ] += ring[R_X] * ring[R_X] * dt
+        acc[A_RING_SQ + 1] += ring[R_X + 1] * ring[R_X + 1] * dt
+        acc[A_RING_SQ + 2] += ring[R_TH] * ring[R_TH] * dt
+        acc[A_RING_SQ + 3] += ring[R_TH + 1] * ring[R_TH + 1] * dt
+        acc[A_RING_SQ + 4] += (ring[R_VX] * ring[R_VX] + ring[R_VX + 1] * ring[R_VX + 1]) * dt
+        acc[A_RING_SQ + 5] += (ring[R_VTH] * ring[R_VTH] + ring[R_VTH + 1] * ring[R_VTH + 1]) * dt
         if capacitance:  # the balls loaded on both races in this step, in parallel
             c = 0.0
             for j in range(Z):

@@ -192,6 +192,7 @@ STATUS_PENETRATION = 2  # a ball-race penetration passed its physical limit
 STATUS_ENERGY = 3  # kinetic energy passed the bound set by the inputs (growth without input)
 STATUS_CHATTER = 4  # a tangential spring reversed while slipping on consecutive steps
 STATUS_DAMPING = 5  # a ball's normal damping grew beyond what the step integrates (a full film at low speed)
+STATUS_WHIRL = 6  # set by the facade, not the kernel: the inner ring whirls (models.dem.whirl); the run goes on
 
 # ---- work arrays of one force evaluation: float64[W_SIZE, Z] -------------------------------------
 W_FB = 0  # force on each ball (N), 3 rows
@@ -228,4 +229,6 @@ A_S_HMIN_I = 27  # ... the smallest inner minimum film (m, 0 with none)
 A_S_HMIN_O = 28
 A_S_HC_I = 29  # ... the central film of the most loaded inner contact (m, 0 with none)
 A_S_HC_O = 30
-A_SIZE = 31
+A_RING_SQ = 31  # the ring's x^2, y^2 (m^2.s), theta_x^2, theta_y^2 (rad^2.s), vx^2 + vy^2 (m^2/s) and tilt rates
+#   squared (rad^2/s) integrated over the call's steps, 6 entries: the orbit watch's variances (models.dem.whirl)
+A_SIZE = 37

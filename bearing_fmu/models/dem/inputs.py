@@ -6,7 +6,7 @@ import math
 from bearing_fmu_common.variables import InputLimits
 
 from ...kernels.ehl import friction_coefficient
-from ...params import SUPPORT_DAMPING, SUPPORT_STIFFNESS, clearance_limits
+from ...params import SUPPORT_DAMPING, SUPPORT_MASS, SUPPORT_STIFFNESS, clearance_limits
 from ..declarations import DEM_DT_MAX, DEM_INPUTS, DEM_REFRESH_MAX, T_OIL_START
 from ..variables import DM_N_LIMIT, MATERIAL_LIMIT, InputError
 from .packing import CONSTANTS
@@ -18,11 +18,10 @@ COMMUNICATION_DIGITS = 12
 COMMUNICATION_RESOLUTION = 10.0**-COMMUNICATION_DIGITS
 
 
-def checked_settings(
-    dt, refresh, safety, refresh_interval, traction_limit, support_stiffness, support_damping, kt_ratio, mass, inertia
-):
-    """Refuse a DemModel setting out of its range (the arguments of DemModel; mass and inertia are ring_mass and
-    ring_inertia); returns the ring's support (N/m, N.s/m) and kt_ratio, params/dem_model.toml's where None."""
+def checked_settings(dt, refresh, safety, refresh_interval, traction_limit, support, kt_ratio, mass, inertia):
+    """Refuse a DemModel setting out of its range (the arguments of DemModel; support = (support_stiffness,
+    support_damping, support_mass), mass and inertia are ring_mass and ring_inertia); returns the ring's support
+    (N/m, N.s/m, kg) and kt_ratio, params/dem_model.toml's where None."""
     if dt is not None and not (math.isfinite(dt) and 0.0 < dt <= DEM_DT_MAX):
         raise InputError(f"dt = {dt} s is outside the allowed range ]0, {DEM_DT_MAX:g}] s")
     if refresh is not None and not (float(refresh) == int(refresh) and 1 <= int(refresh) <= 100000):
@@ -40,9 +39,11 @@ def checked_settings(
             f"traction_limit = {traction_limit} is outside the allowed range [0, {TRACTION_LIMIT_MAX:g}] "
             "(0 = the lubricant's EHL traction curve; 0.01 = the papers' mu(Lambda))"
         )
+    stiffness, damping, support_mass = support
     support = (
-        _checked_support("support_stiffness", support_stiffness, CONSTANTS.support_stiffness, SUPPORT_STIFFNESS),
-        _checked_support("support_damping", support_damping, CONSTANTS.support_damping, SUPPORT_DAMPING),
+        _checked_support("support_stiffness", stiffness, CONSTANTS.support_stiffness, SUPPORT_STIFFNESS),
+        _checked_support("support_damping", damping, CONSTANTS.support_damping, SUPPORT_DAMPING),
+        _checked_support("support_mass", support_mass, CONSTANTS.support_mass, SUPPORT_MASS),
     )
     kt_ratio = CONSTANTS.kt_ratio if kt_ratio is None else kt_ratio
     if not (math.isfinite(kt_ratio) and 0.1 <= kt_ratio <= 1.5):

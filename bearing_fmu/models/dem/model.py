@@ -19,7 +19,7 @@ from ...scene import Scene
 from ..declarations import DEM_INPUTS, DEM_OUTPUTS
 from ..declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
 from ..variables import P_MAX_ERROR, InputError, OilTemperatureWatch, check_clearance, pressure_warnings
-from . import inputs, outputs, time_step
+from . import inputs, outputs, time_step, whirl
 from .inputs import T_OIL_DEFAULT
 from .monitor import DemUnstableError, energy_limit, unstable_error
 from .packing import load_limit, pack_parameters
@@ -44,7 +44,8 @@ class DemModel:
     support_stiffness (N/m), support_damping (N.s/m): the inner ring's support, a spring to its rest position and a
     damper across the axis (x, y; none along z), the same spread over the pitch circle in the tilts (k (d_m/2)^2/2,
     c (d_m/2)^2/2); None = params/dem_model.toml's (no spring; 1000 N.s/m, the shaft it sits on: docs/dem.md, Ring
-    support).
+    support). support_mass (kg): the shaft's modal mass at the seat, added to the ring's mass in x, y, z and, spread
+    over the pitch circle (m (d_m/2)^2/2), to its tilt inertia; None = params/dem_model.toml's (0: the ring alone).
     traction_limit: 0 (default) = the tangential force of the film is the lubricant's EHL traction curve
     (kernels.ehl.film_traction_coefficient,
     the film's share ehl.film_share(Lambda)), the asperities' share a spring capped at the boundary friction;
@@ -71,6 +72,7 @@ class DemModel:
         ring_inertia=None,
         support_stiffness=None,
         support_damping=None,
+        support_mass=None,
         safety=SAFETY,
         refresh_interval=REFRESH_INTERVAL,
         averaged=True,
@@ -85,8 +87,8 @@ class DemModel:
         self.Pd = b.Pd if Pd is None else float(Pd)
         check_clearance(self.Pd, b, Pd is not None)
         self.support, kt_ratio = inputs.checked_settings(
-            dt, refresh, safety, refresh_interval, traction_limit, support_stiffness, support_damping, kt_ratio,
-            ring_mass, ring_inertia,
+            dt, refresh, safety, refresh_interval, traction_limit, (support_stiffness, support_damping, support_mass),
+            kt_ratio, ring_mass, ring_inertia,
         )  # fmt: skip
         self.traction_limit = float(traction_limit)
         self.averaged = bool(averaged)
@@ -126,6 +128,8 @@ class DemModel:
         self.refresh = 0  # its tribology refresh interval (steps)
         self._place_bodies()
         self._initialise(0.0, 0.0, 0.0, 0.0, T_OIL_DEFAULT)
+        self.orbit_window = whirl.new_window(self.ring)  # the ring-orbit watch's window (models.dem.whirl)
+        self.orbit_verdict = None  # whirl.Verdict of the window the last advance() closed, None if it closed none
         # the FMU interface (update): variables of the scene in declaration order, filled by one copy plan
         self.inputs = select(DEM_INPUTS, self.scene)
         self.outputs = select(DEM_OUTPUTS, self.scene)
@@ -264,6 +268,43 @@ class DemModel:
             self.balls, self.ring, self.par, self._truncation_parameters, self._Q, self._signed_alpha, self.trunc,
             self.truncated,
         )  # fmt: skip
+        self.warnings += self._watch_orbit(interval)
+
+    def _watch_orbit(self, interval):
+        """The ring-orbit watch (models.dem.whirl) after a call of `interval` (s): closes its window when it is full;
+        while the last closed window is a whirl, self.status holds STATUS_WHIRL. Returns the warning of a whirl's
+        onset (once per entry), else []."""
+        window = self.orbit_window
+        whirl.add_call(window, self._acc, interval)
+        self.orbit_verdict = None
+        warning = []
+        if window[whirl.WS_T] >= whirl.WINDOW * (1.0 - 1e-9):
+            was_whirling = window[whirl.WS_WHIRL] > 0.0
+            o = self.out
+            delta = max(
+                (self._Q[0].max() / self.par[s.P_KH_I]) ** (2.0 / 3.0),
+                (self._Q[1].max() / self.par[s.P_KH_O]) ** (2.0 / 3.0),
+            )
+            lines = whirl.kinematic_lines(self.omega, o[s.O_OMEGA_CAGE], o[s.O_OMEGA_BALL_REL], self.bearing.Z)
+            verdict = whirl.judge(window, self.ring, self.par[s.P_RHO_I], delta, lines)
+            self.orbit_verdict = verdict
+            if verdict.kind is not None and not was_whirling:
+                warning = [self._whirl_warning(verdict)]
+        if window[whirl.WS_WHIRL] > 0.0:
+            self.status[s.ST_CODE] = s.STATUS_WHIRL
+        return warning
+
+    def _whirl_warning(self, v):
+        stiffness, damping, mass = self.support
+        return (
+            f"the inner ring whirls ({v.kind} orbit at t = {self.time:.6g} s): {v.r * 1e6:.3g} um rms orbit and "
+            f"{v.t * 1e3:.3g} mrad rms tilt at {v.f:.4g} Hz, not a shaft, cage, ball or ball-pass frequency; "
+            f"{v.e / v.delta:.2g} x the contact deflection {v.delta * 1e6:.3g} um. A self-excited motion of the ring "
+            f"driven by the contacts' traction on its support (support_damping = {damping:g} N.s/m, "
+            f"support_stiffness = {stiffness:g} N/m, support_mass = {mass:g} kg): the torque, loads and "
+            "films describe the whirling ring. A shaft at the seat damps it: raise support_damping or give the "
+            "shaft's modal stiffness and mass (thresholds in docs/dem.md, Ring support)"
+        )
 
     def _run(self, n_steps, dt, omega, loads, T_oil):
         """One kernel call of n_steps steps of dt (s) to the inner-ring speed omega; returns the speed and the sum
@@ -384,7 +425,7 @@ class DemModel:
         return outputs_as_dict(self.outputs, self.values)
 
     # -- state (FMU get/set state, rollback) ---------------------------------------------------
-    STATE_ARRAYS = ("balls", "cage", "ring", "spring", "trib", "counters", "truncated")
+    STATE_ARRAYS = ("balls", "cage", "ring", "spring", "trib", "counters", "truncated", "orbit_window")
 
     def get_state(self):
         """Copy of the whole dynamic state (every array and the current inner-ring speed)."""

@@ -58,8 +58,8 @@ def ring_inertia(bearing, mass):
 
 def pack_parameters(bearing, scene, lubricant, Pd, support, traction_limit, kt_ratio, mass=None, inertia=None):
     """The parameter array (float64[P_SIZE]) of a bearing with diametral clearance Pd (m) and the model's settings
-    (checked: support = (stiffness N/m, damping N.s/m), traction_limit, kt_ratio; the ring's mass (kg) and inertia
-    about a diameter (kg.m^2), None = estimated); returns it with the shoulders' truncation parameters
+    (checked: support = (stiffness N/m, damping N.s/m, mass kg), traction_limit, kt_ratio; the ring's mass (kg) and
+    inertia about a diameter (kg.m^2), None = estimated); returns it with the shoulders' truncation parameters
     (models.contacts.truncation_parameters) and the balls' rest position (placement.ball_rest_position).
     Raises InputError when estimated cage balls find no room between the balls."""
     b, sc = bearing, scene
@@ -90,7 +90,7 @@ def pack_parameters(bearing, scene, lubricant, Pd, support, traction_limit, kt_r
     pack(p, s, "P_", contact_terms(b, sc, rc))
     p[s.P_ALPHA_E] = CONSTANTS.alpha_e
     p[s.P_KT_RATIO] = kt_ratio
-    p[s.P_K_SUPPORT], p[s.P_C_SUPPORT] = support
+    p[s.P_K_SUPPORT], p[s.P_C_SUPPORT], support_mass = support
     lever = 0.5 * (0.5 * b.dm) ** 2  # a support spread over the pitch circle, about a diameter (m^2)
     p[s.P_KT_SUPPORT] = lever * p[s.P_K_SUPPORT]
     p[s.P_CT_SUPPORT] = lever * p[s.P_C_SUPPORT]
@@ -101,6 +101,11 @@ def pack_parameters(bearing, scene, lubricant, Pd, support, traction_limit, kt_r
     p[s.P_I_RING], p[s.P_IP_RING] = ring_inertia(b, p[s.P_M_RING])
     if inertia is not None:
         p[s.P_I_RING] = float(inertia)
+    # the shaft's modal mass at the seat moves with the ring: in the translations, and in the tilts spread over the
+    # pitch circle like the support's spring and damper, m (d_m/2)^2/2; its polar inertia and gyroscopic moment
+    # stay the ring's (a spinning shaft's gyroscopic coupling is the shaft model's)
+    p[s.P_M_RING] += support_mass
+    p[s.P_I_RING] += lever * support_mass
     _pack_hertz_scales(p, rc)
     p[s.P_CHATTER] = CHATTER_STEPS
     p[s.P_DAMPING_STOP] = DAMPING_STOP
