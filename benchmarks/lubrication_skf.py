@@ -11,6 +11,10 @@ oil-lubricated speed range of a 72-series spindle bearing). Oil iso_vg68_mineral
 the same operating viscosity nu = eta/rho. 'product' is the contact torque (Houpert components with the method's
 film factors) without the drag; 'SKF' is phi_ish phi_rs M_rr + M_sl (bare M_rr + M_sl for flooded); ratio =
 product / SKF. Exponents: least-squares slope of ln M over ln n on the whole range. Torques in mN.m.
+The oil jet's starvation against SKF's form: per speed, the inlet oil layer h_oil at which the product's
+Hamrock-Dowson starvation factor of the most loaded inner contact equals SKF's phi_rs (K_rs = 3e-8), found by
+bisection in log h_oil over [0.01, 20] um, and the contact torque ratio with it. A constant layer follows SKF's
+exponential form over speed only if that layer is about constant.
 Run: python -m benchmarks.lubrication_skf -> docs/reports/lubrication_skf.md and .png
 """
 
@@ -105,6 +109,44 @@ DRAG = (
 )
 
 
+LAYER_RANGE = (1e-8, 20e-6)  # m: the bisection's bracket of the inlet oil layer
+
+
+def phi_rs_at(case, layer, n):
+    """The product's oil-jet starvation factor (inner, most loaded) and contact torque (N.m) at inlet layer `layer`
+    (m) and speed n (rpm)."""
+    m = QuasiStaticModel(case["bearing"], LUBRICANT, replace(SCENE, lubrication="oil_jet", inlet_oil_layer=layer))
+    r = m.evaluate(omega=n * RPM, T_oil=T_OIL, **{case["load"][0]: case["load"][1]})
+    return r["phi_rs_inner"], r["torque"] - r["torque_drag"]
+
+
+def equivalent_layer(case, n, target):
+    """(layer (m), contact torque (N.m)) at which the product's phi_rs equals `target`, or None above the bracket."""
+    low, high = (math.log(x) for x in LAYER_RANGE)
+    if phi_rs_at(case, math.exp(high), n)[0] < target:
+        return None
+    for _ in range(40):  # 1e-5 of the log bracket
+        mid = 0.5 * (low + high)
+        if phi_rs_at(case, math.exp(mid), n)[0] < target:
+            low = mid
+        else:
+            high = mid
+    return math.exp(high), phi_rs_at(case, math.exp(high), n)[1]
+
+
+def jet_layer_rows(case, nu):
+    """Per speed: n, SKF's phi_rs, the product's at the default layer, the equivalent layer (um), the torque ratio
+    to SKF with it."""
+    s = skf_rows(case, "oil_jet", nu, None)
+    rows = []
+    for k, n in enumerate(case["speeds"]):
+        default = phi_rs_at(case, 20e-6, n)[0]
+        found = equivalent_layer(case, n, s[k, 4])
+        layer, ratio = (None, None) if found is None else (1e6 * found[0], found[1] / s[k, 0])
+        rows.append([case["bearing"], n, s[k, 4], default, layer, ratio])
+    return rows
+
+
 def measure():
     eta, _, rho = lubricant_state(T_OIL, load_lubricant(LUBRICANT).array)
     nu = eta / rho * 1e6
@@ -121,6 +163,15 @@ def measure():
         blocks.append({"table": dict(caption=caption, columns=COLUMNS, formats=formats, rows=rows)})
         panels.append(dict(title=f"{case['bearing']}: contact torque, product (--) vs SKF (-)", xlabel="n (rpm)",
                            ylabel="M (mN.m)", xscale="log", yscale="log", series=series))  # fmt: skip
+    jet = [row for case in CASES for row in jet_layer_rows(case, nu)]
+    jet_caption = (
+        "Oil jet: the inlet layer at which the product's phi_rs (most loaded inner contact) equals SKF's, and the "
+        "contact torque ratio product / SKF with it (the default layer is 20 um)."
+    )
+    jet_columns = ["bearing", "n (rpm)", "SKF phi_rs", "product phi_rs at 20 um", "equivalent layer (um)",
+                   "ratio with it"]  # fmt: skip
+    jet_formats = ["{}", "{:.0f}", "{:.3f}", "{:.3f}", "{:.3g}", "{:.2f}"]
+    blocks.append({"table": dict(caption=jet_caption, columns=jet_columns, formats=jet_formats, rows=jet)})
     caption = "Summary: ratios product / SKF (without drag) and speed exponents."
     blocks += [{"table": dict(caption=caption, columns=SUMMARY, formats=["{}"] * 2 + ["{:.2f}"] * 6, rows=summaries)},
                {"text": DRAG}, {"figure": dict(file="lubrication_skf.png", caption="torque over speed", panels=panels,

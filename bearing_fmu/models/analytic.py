@@ -22,7 +22,7 @@ from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
 from .contacts import RaceContacts, truncation_parameters, truncation_warnings
 from .declarations import ANALYTIC_INPUTS, ANALYTIC_OUTPUTS
 from .film_table import film_table_array
-from .lubrication import Lubrication, pack_lubrication
+from .lubrication import Lubrication, LubricationWatch, pack_lubrication
 from .variables import (
     DM_N_LIMIT,
     MATERIAL_LIMIT,
@@ -87,6 +87,7 @@ class AnalyticModel:
         self.ball = np.zeros((8, b.Z))
         self.warnings = []
         self._oil_watch = OilTemperatureWatch(self.lubricant)
+        self._lubrication_watch = LubricationWatch(self.lubrication_numbers, self.lubricant)
         self.outputs = select(ANALYTIC_OUTPUTS, self.scene)
         self.output_names = tuple(v.name for v in self.outputs)
         self.values = np.zeros(len(self.outputs))  # outputs of the last evaluation, in self.outputs order
@@ -126,7 +127,8 @@ class AnalyticModel:
         brg[ak.B_CENTRIFUGAL] = 1.0 if s.centrifugal else 0.0
         brg[ak.B_TOL] = s.tolerance
         brg[ak.B_CAPACITANCE] = 1.0 if s.capacitance else 0.0
-        pack_lubrication(brg, ak, "B_", Lubrication(s, b.D, b.dm))
+        self.lubrication_numbers = Lubrication(s, b.D, b.dm)
+        pack_lubrication(brg, ak, "B_", self.lubrication_numbers)
         brg[ak.B_FILM_TABLE :] = film_table_array(b, self.lubricant, s.film_correction)
         return brg
 
@@ -191,6 +193,7 @@ class AnalyticModel:
                 self.ball[0], self.ball[1], abs(float(F_y)), 0.0, float(omega), self._life_parameters, self._life
             )
         self.warnings = pressure_warnings(out[ak.O_PMAX], f"F_y = {F_y} N") + self._oil_watch.warnings(T_oil)
+        self.warnings += self._lubrication_watch.warnings(float(omega), (out[ak.O_PHI_RS_I], out[ak.O_PHI_RS_O]))
         # ball rows 0 and 1: inner and outer contact loads, all at the groove bottom (angle 0)
         tk.race_truncation(self.ball, 0, self._angles, 0, self._truncation_parameters, self._trunc)
         self.warnings += truncation_warnings(

@@ -15,6 +15,7 @@ import math
 
 import numpy as np
 
+from ..kernels.lubricant import LUB_VISC_MODEL, VISCOSITY_CONSTANT
 from ..kernels.lubrication import (
     METHOD_FLOODED,
     METHOD_GREASE,
@@ -85,6 +86,57 @@ class Lubrication:
     @property
     def on(self):
         return self.code != METHOD_FLOODED
+
+
+class LubricationWatch:
+    """What the scene's lubrication method cannot do at the current state, told as warnings (an FMU logs them as
+    fmi2Warning):
+    - a method with inlet shear heating and an oil of constant viscosity (a lubricant file that gives one
+      viscosity, e.g. guessasma_oil): beta = -d ln(eta)/dT = 0, so no film is reduced (phi_ish = 1); once, at the
+      first evaluation at speed;
+    - an oil bath or oil jet whose inlet layer fills every loaded inlet at speed (phi_rs = 1 on both races): the
+      contacts run fully flooded. The starvation follows Hamrock & Dowson's inlet distance with a constant inlet
+      layer (20 um by default, estimated), which leaves these bearings flooded at every speed tried, where the SKF
+      friction model's empirical factor for bath and jet starves them at speed (docs/lubrication_method.md,
+      section 4). Once per entry into that state."""
+
+    SPEED = 1e-9  # rad/s: below it the bearing stands and no inlet is fed
+
+    def __init__(self, lubrication, lubricant):
+        self.method = lubrication.method if lubrication.on else None
+        self.thermal = lubrication.on and lubrication.thermal
+        self.h_oil = lubrication.h_oil
+        self.name = lubricant.name
+        self.constant = int(lubricant.array[LUB_VISC_MODEL]) == VISCOSITY_CONSTANT
+        self.told_constant = False
+        self.flooded = False
+
+    def warnings(self, omega, phi_rs):
+        """[] or the warnings of an evaluation at inner-ring speed omega (rad/s) whose most loaded contacts have the
+        starvation factors phi_rs = (inner, outer) (-)."""
+        if self.method is None or abs(omega) < self.SPEED:
+            return []
+        told = []
+        if self.thermal and self.constant and not self.told_constant:
+            self.told_constant = True
+            told.append(
+                f"lubrication = '{self.method}' with lubricant '{self.name}', whose viscosity is constant: no inlet "
+                "shear heating (phi_ish = 1; the thermal reduction needs the viscosity's temperature coefficient "
+                "-d ln(eta)/dT). Give a lubricant with a viscosity law in temperature for it "
+                "(docs/lubrication_method.md)"
+            )
+        flooded = self.method in ("oil_bath", "oil_jet") and min(phi_rs) >= 1.0
+        if flooded and not self.flooded:
+            told.append(
+                f"lubrication = '{self.method}': the inlet oil layer of {self.h_oil * 1e6:.3g} um fills every loaded "
+                f"inlet at {abs(omega) * 30.0 / math.pi:.5g} rpm (phi_rs = 1 on both races), so the contacts run "
+                "fully flooded. The SKF friction model's empirical starvation factor for bath and jet (K_rs = 3e-8) "
+                "starves such contacts at speed (phi_rs 0.63 on a 6208 at 9 549 rpm in a 68 mm^2/s oil, "
+                "docs/reports/lubrication_skf.md): film and torque here are those of a flooded inlet; a thinner "
+                "inlet_oil_layer starves them (docs/lubrication_method.md, section 4)"
+            )
+        self.flooded = flooded
+        return told
 
 
 def immersed_area_fraction(H, D, dm, points=3600):

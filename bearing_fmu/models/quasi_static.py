@@ -37,7 +37,7 @@ from .declarations import (
 )
 from .film_table import film_table_array
 from .friction import FrictionWatch
-from .lubrication import Lubrication, pack_lubrication
+from .lubrication import Lubrication, LubricationWatch, pack_lubrication
 from .variables import (
     DM_N_LIMIT,
     MATERIAL_LIMIT,
@@ -140,6 +140,7 @@ class QuasiStaticModel:
         self.status = (qk.QS_OK, 0, 0.0)
         self.warnings = []
         self._oil_watch = OilTemperatureWatch(self.lubricant)
+        self._lubrication_watch = LubricationWatch(self.lubrication_numbers, self.lubricant)
         # shoulder truncation of the contact ellipses (kernels.truncation), the races truncated at the last
         # evaluation (a warning is logged on entry only)
         self._trunc = np.zeros(tk.TR_SIZE)
@@ -247,7 +248,8 @@ class QuasiStaticModel:
         cp[ck.CP_TORQUE] = 1.0 if s.torque else 0.0
         if self.lubrication != s.lubrication:  # the parameter's method at its defaults
             s = replace(s, lubrication=self.lubrication, oil_level=None, inlet_oil_layer=None, cavity_oil_fraction=None)
-        pack_lubrication(cp, ck, "CP_", Lubrication(s, b.D, b.dm), s.torque)
+        self.lubrication_numbers = Lubrication(s, b.D, b.dm)
+        pack_lubrication(cp, ck, "CP_", self.lubrication_numbers, s.torque)
         cp[ck.CP_DM] = b.dm
         cp[ck.CP_FILM_TABLE :] = film_table_array(b, self.lubricant, s.film_correction)
         return qs, cp
@@ -500,6 +502,7 @@ class QuasiStaticModel:
         inner = summary[bo.BS_ALPHA_I] if out[ck.CO_QMAX_I] > 0.0 else None
         mu_required = (summary[bo.BS_MU_REQ_I], summary[bo.BS_MU_REQ_O])
         self.warnings += self._friction.warnings(mu_required, inner, self.balls, u)
+        self.warnings += self._lubrication_watch.warnings(omega, (out[ck.CO_PHI_RS_I], out[ck.CO_PHI_RS_O]))
         return self.values
 
     # -- state (FMU get/set state, rollback) ---------------------------------------------------

@@ -322,3 +322,23 @@ def test_race_control_from_traction_and_the_friction_a_hypothesis_assumes(bearin
     assert traction["mu_required_inner"] == traction["mu_required_outer"] == 0.0
     assert runs[3][1] == [[], []]
     assert 1.08 < traction["omega_cage"] / outer["omega_cage"] < 1.09
+
+
+def test_what_the_lubrication_method_leaves_out_is_warned(bearing_fmu):
+    """Bearing.fmu with the 6208, guessasma_oil (constant viscosity) and lubrication = oil_jet
+    (docs/lubrication_method.md, section 4): the first step at speed logs two fmi2Warnings, no inlet shear heating
+    (phi_ish = 1) and an inlet filled by the 20 um layer (phi_rs = 1); the next steps at speed none."""
+    host.messages.clear()
+    fmu, vr, _ = host.open_fmu(
+        str(bearing_fmu), {"bearing": "6208", "lubricant": "guessasma_oil", "lubrication": "oil_jet"}
+    )
+    fmu.setReal([vr["F_y"], vr["omega"]], [3000.0, 1000.0])
+    told = []
+    for k in range(3):
+        host.messages.clear()
+        assert host.step_status(fmu, 0.1 * k) == 0
+        told.append([m["message"] for m in host.messages if m["status"] == 1 and "lubrication = " in m["message"]])
+    assert [len(t) for t in told] == [2, 0, 0]
+    assert "whose viscosity is constant" in told[0][0] and "fills every loaded inlet" in told[0][1]
+    fmu.terminate()
+    fmu.freeInstance()

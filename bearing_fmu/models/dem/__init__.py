@@ -25,6 +25,7 @@ The modules, one responsibility each:
 - ``inputs``: checks of the settings, of each call's inputs and of the FMU's communication step.
 - ``monitor``: the monitor's thresholds, the kinetic-energy bound of a call, DemUnstableError and its message.
 - ``outputs``: the output dict, the averaged state outputs, the shoulder truncation, the per-contact arrays.
+- ``whirl``: the ring-orbit watch (a self-excited orbit of the ring on its support: monitor code 6, a warning).
 """
 
 from .inputs import COMMUNICATION_DIGITS, COMMUNICATION_RESOLUTION, T_OIL_DEFAULT, TRACTION_LIMIT_MAX
