@@ -28,6 +28,13 @@ Wall time per operating point: analytic one evaluation, quasi-static a cold solv
 load, 5 ms speed ramp, running until the cage speed averaged over 10 ms changes by less than 0.1 % from one window
 to the next (at most 3 s), means over the next 10 ms).
 
+Race control over speed: under thrust at speed a race-control hypothesis can ask more traction of the contacts than
+the oil carries. The 218 angular-contact bearing of the textbook thrust cases (40 deg, 8.9 kN, the Guessasma oil:
+constant viscosity, limiting traction coefficient 0.06) at 3 000-15 000 rpm and the B7214C (800 N, ISO VG68) at
+3 000, 10 000 and 15 000 rpm: the quasi-static fidelity with outer-race control (the default) and with the race
+control from traction against the DEM's steady state (means over 0.281-0.300 s after a 10 ms ramp), with the
+traction coefficient outer-race control requires (mu_required) and the warm solve's wall time.
+
 Run: python -m benchmarks.fidelity_ladder: docs/reports/fidelity_ladder.md and .png.
 """
 
@@ -372,6 +379,81 @@ def dem_note(rows):
     )
 
 
+B218 = "tests/validation/data/angular_218_textbook.toml"  # the textbook's 218 (40 deg, 16 balls)
+# (bearing, lubricant, rpm, thrust N, the DEM's path: None = from rest, or the speed it comes from)
+RACE_CASES = (
+    *((B218, "guessasma_oil", rpm, 8900.0, None) for rpm in (3000.0, 5000.0, 8000.0, 12000.0, 15000.0)),
+    (B218, "guessasma_oil", 15000.0, 8900.0, 12000.0),
+    *(("B7214C", LUBRICANT, rpm, 800.0, None) for rpm in (3000.0, 10000.0, 15000.0)),
+)
+RACE_SCENE = Scene(name="traction", fidelity="quasi_static", torque=True, gyroscopic=True)
+RACE_COMPARED = ("omega_cage", "torque", "Q_max_inner", "Q_max_outer", "alpha_inner", "alpha_outer")
+
+
+def dem_steady(bearing, lubricant, rpm, F_z, via=None):
+    """The DEM's outputs under the thrust F_z (N) at rpm, averaged over 20 samples at 0.281-0.300 s after a 10 ms speed
+    ramp from rest; with `via` (rpm), ramped to `via` in 10 ms, held there to 0.15 s, ramped to rpm over 0.1 s and
+    averaged over 0.451-0.470 s (where the steady state depends on the path); and the wall time (s) of the run."""
+    start = time.perf_counter()
+    omega = rpm * math.pi / 30.0
+    first = omega if via is None else via * math.pi / 30.0
+    model = DemModel(bearing, lubricant)
+    model.advance(2e-3, omega=0.0, F_z=F_z)
+    for k in range(1, 21):
+        model.advance(2e-3 + 10e-3 * k / 20, omega=first * k / 20, F_z=F_z)
+    t = 0.28
+    if via is not None:
+        model.advance(0.15, omega=first, F_z=F_z)
+        for k in range(1, 21):
+            model.advance(0.15 + 0.1 * k / 20, omega=first + (omega - first) * k / 20, F_z=F_z)
+        t = 0.45
+    model.advance(t, omega=omega, F_z=F_z)
+    samples = [model.advance(t + 1e-3 * k, omega=omega, F_z=F_z) for k in range(1, 21)]
+    return {key: float(np.mean([o[key] for o in samples])) for key in RACE_COMPARED}, time.perf_counter() - start
+
+
+def quasi_static_race(bearing, lubricant, rpm, F_z, race_control):
+    """The quasi-static outputs at rpm under F_z (N) (a cold solve) and the median wall time (s) of a warm solve (1 %
+    load change)."""
+    model = QuasiStaticModel(bearing, lubricant, scene=RACE_SCENE, race_control=race_control)
+    omega = rpm * math.pi / 30.0
+    out = model.evaluate(omega=omega, F_z=F_z)
+    times = []
+    for k in range(7):
+        start = time.perf_counter()
+        model.evaluate(omega=omega, F_z=F_z * (1.01 if k % 2 == 0 else 1.0))
+        times.append(time.perf_counter() - start)
+    return out, statistics.median(times)
+
+
+def race_control_block():
+    """Table of the race controls against the DEM over speed."""
+    rows, worst = [], {}
+    for bearing, lubricant, rpm, F_z, via in RACE_CASES:
+        dem, dem_time = dem_steady(bearing, lubricant, rpm, F_z, via)
+        name = ("218" if bearing == B218 else bearing) + ("" if via is None else f", DEM via {via:.0f} rpm")
+        for control in ("outer", "traction"):
+            out, warm = quasi_static_race(bearing, lubricant, rpm, F_z, control)
+            diff = [out[key] / dem[key] - 1.0 for key in RACE_COMPARED]
+            worst[control] = max(worst.get(control, 0.0), *(abs(d) for d in diff))
+            mu = max(out["mu_required_inner"], out["mu_required_outer"]) if control == "outer" else None
+            rows.append([name, rpm, control, *(100.0 * d for d in diff), mu, 1e3 * warm, dem_time])
+    columns = ["bearing", "n (rpm)", "race control", "cage (%)", "torque (%)", "Q_max i (%)", "Q_max o (%)",
+               "alpha i (%)", "alpha o (%)", "mu_required", "warm solve (ms)", "DEM run (s)"]  # fmt: skip
+    formats = ["{}", "{:.0f}", "{}"] + ["{:+.2f}"] * 6 + ["{:.4f}", "{:.3f}", "{:.1f}"]
+    caption = (
+        "Race control over speed: quasi-static (cold solves) against the DEM's steady state (difference in %), the DEM "
+        "ramped from rest in 10 ms unless it comes from another speed; mu_required the largest traction coefficient "
+        "outer-race control asks of a contact (both oils carry 0.06). The 218 at 15 000 rpm has two steady states: the "
+        "DEM ramped from rest stays outer-race controlled, the DEM coming from 12 000 rpm keeps the balls' skid of "
+        "8 000-12 000 rpm (cage 6.5 % faster). The traction solution's cold start lands on the skid (the row of the "
+        "DEM via 12 000 rpm); the traction equations have several solutions there (docs/quasistatic.md, section 2)."
+    )
+    metrics = [metric(f"race control {c}: max relative difference to the DEM", v, "1", "difference")
+               for c, v in worst.items()]  # fmt: skip
+    return dict(table=dict(caption=caption, columns=columns, formats=formats, rows=rows)), metrics
+
+
 def measure():
     rows = run()
     table, entries = errors(rows), ladder(rows)
@@ -380,6 +462,8 @@ def measure():
     count.update(preload=sum(bool(r["point"].F_preload) for r in rows))
     metrics = [metric(f"{f}: max relative difference of {q}", max(v), "1", "difference") for (f, q), v in table.items()]
     metrics += [metric(f"{n}: wall time per operating point", c, "s", "timing") for n, (c, _) in entries.items()]
+    race_block, race_metrics = race_control_block()
+    metrics += race_metrics
     blocks = [
         dict(
             text="{total} operating points, {b7214c} of them of the B7214C ({preload} under a fixed preload).",
@@ -391,6 +475,7 @@ def measure():
         dict(figure=figure),
         dict(table=per_point_table(rows)),
         stops_block(rows),
+        race_block,
     ]
     title = "Fidelity ladder: difference between the analytic, quasi-static and DEM fidelities"
     about = __doc__.split("\n", 2)[2].split("Run:")[0]
