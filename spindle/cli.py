@@ -31,7 +31,7 @@ RUNS = ROOT / "runs"
 # FMUs go to the checkout's fmus/ in a source tree, else to ./fmus of the working directory
 FMUS = ROOT / "fmus" if IN_CHECKOUT else Path.cwd() / "fmus"
 DEMO_RUN = RUNS / "closed_loop_spring.toml"
-EXIT_OK, EXIT_ERROR, EXIT_INVALID, EXIT_LIMIT, EXIT_DIFFERS = 0, 1, 2, 3, 4
+EXIT_OK, EXIT_ERROR, EXIT_INVALID, EXIT_LIMIT, EXIT_DIFFERS, EXIT_UNCONVERGED = 0, 1, 2, 3, 4, 5
 EXIT_PIPE = 128 + signal.SIGPIPE  # the output was closed by its reader (e.g. `| head`): stopped quietly
 EXIT_CODES = f"""exit codes:
   {EXIT_OK}  done
@@ -39,6 +39,7 @@ EXIT_CODES = f"""exit codes:
   {EXIT_INVALID}  usage error, or `validate` found problems in an FMU or a run file
   {EXIT_LIMIT}  a run stopped at a limit (e.g. thermal runaway); results up to there are written
   {EXIT_DIFFERS}  `check`: an FMU's output differs from its reference (the variable is named)
+  {EXIT_UNCONVERGED}  `film`: a requested contact's numerical film did not converge (its reason is printed)
   {EXIT_PIPE}  the output was closed by its reader (e.g. `spindle info | head`): stopped quietly"""
 
 
@@ -306,21 +307,59 @@ def cmd_export_ssp(args):
 
 def cmd_film(args):
     """The film at the most loaded inner and outer contacts of a quasi-static operating point: every film formula
-    against the numerical EHL solver (bearing_fmu.models.film_check)."""
-    import math
+    against the numerical EHL solver (bearing_fmu.models.film_check); over a range of one input (A:B:N) a film map.
+    Exit EXIT_UNCONVERGED when a contact's numerical film did not converge."""
+    from bearing_fmu.models.variables import T_OIL_RANGE, InputError
+    from bearing_fmu_common.paramfile import ParameterError
 
-    from bearing_fmu.models.film_check import film_check, format_film_check
+    from .film_map import film_map, operating_points
 
-    loads = {name: value for name, value in (("F_x", args.Fx), ("F_y", args.Fy), ("F_z", args.Fz)) if value}
-    loads.update({name: value for name, value in (("M_x", args.Mx), ("M_y", args.My)) if value})
-    omega = args.speed * 2.0 * math.pi / 60.0
-    print(
-        f"{args.bearing} with {args.lubricant} at {args.speed:g} rpm ({omega:.2f} rad/s), oil at {args.T_oil:g} K, "
-        f"loads {loads or 'none'} (N, N.m); numerical solver on "
-        + (f"grid level {args.level}" if args.level is not None else "the grid level each contact's film needs")
-    )
-    print(format_film_check(film_check(args.bearing, args.lubricant, omega, loads, args.T_oil, args.level)))
-    return EXIT_OK
+    low, high = T_OIL_RANGE
+    if not low <= args.T_oil <= high:
+        raise SystemExit(
+            f"spindle film: --T-oil = {args.T_oil:g} K is outside the allowed range [{low:g}, {high:g}] K (kelvin: "
+            f"40 C is 313.15 K)"
+        )
+    try:
+        points, swept = operating_points(args)
+    except ValueError as exc:
+        raise SystemExit(f"spindle film: {exc}") from None
+    if _kernels_not_compiled("ehl_solver"):
+        print("note: the first run compiles the film solver's kernels (about a minute); later runs reuse them",
+              file=sys.stderr)  # fmt: skip
+    try:
+        converged = film_map(args, points, swept)
+    except (InputError, ParameterError) as exc:
+        print(f"spindle film: {exc}", file=sys.stderr)
+        return EXIT_ERROR
+    return EXIT_OK if converged else EXIT_UNCONVERGED
+
+
+def _kernels_not_compiled(module):
+    """Whether the user cache holds no compiled kernel of bearing_fmu.kernels.<module> (a first run compiles)."""
+    from bearing_fmu_common.jit import user_cache_dir
+
+    try:
+        folder = user_cache_dir() / "bearing_fmu" / "kernels"
+    except OSError:
+        return True
+    return not any(folder.glob(f"{module}.*.nbi"))
+
+
+def _level(text):
+    """--level: a grid level of the numerical EHL solver, 0 to its finest."""
+    from bearing_fmu.models.ehl_numerical import FINEST_LEVEL
+
+    try:
+        level = int(text)
+    except ValueError:
+        level = None
+    if level is None or not 0 <= level <= FINEST_LEVEL:
+        raise argparse.ArgumentTypeError(
+            f"--level = {text} is outside the allowed range [0, {FINEST_LEVEL}] (a whole number; leave it out for the "
+            "level each contact's film needs)"
+        )
+    return level
 
 
 def cmd_film_table(args):
@@ -437,17 +476,29 @@ def main(argv=None):
     )
     p.add_argument("bearing", help="bearing name or file (e.g. 6208, B7214C)")
     p.add_argument("--lubricant", required=True, help="lubricant name or file (e.g. iso_vg68_mineral)")
-    p.add_argument("--speed", type=float, required=True, metavar="RPM", help="inner-ring speed (rpm)")
-    for name, unit in (("Fx", "N"), ("Fy", "N"), ("Fz", "N"), ("Mx", "N.m"), ("My", "N.m")):
-        p.add_argument(f"--{name}", type=float, default=0.0, help=f"load on the inner ring ({unit})")
-    p.add_argument("--T-oil", dest="T_oil", type=float, default=313.15, metavar="K", help="oil temperature (K)")
+    span = " or a range A:B:N (N values from A to B: a film map)"
+    p.add_argument("--speed", "--speeds", required=True, metavar="RPM", help="inner-ring speed (rpm)" + span)
+    axes = (
+        ("Fx", "N", "radial load on the inner ring along x (a positive F_x loads the ball at psi = 0)"),
+        ("Fy", "N", "radial load on the inner ring along y"),
+        ("Fz", "N", "axial load on the inner ring along z (+z: the thrust a single angular-contact bearing carries)"),
+        ("Mx", "N.m", "moment on the inner ring about x"),
+        ("My", "N.m", "moment on the inner ring about y"),
+    )
+    for name, unit, text in axes:
+        p.add_argument(f"--{name}", default="0", metavar=unit, help=f"{text} ({unit}, default 0; docs/conventions.md)"
+                       + span)  # fmt: skip
+    p.add_argument("--T-oil", dest="T_oil", type=float, default=313.15, metavar="K",
+                   help="oil temperature (K, default 313.15 K = 40 C)")  # fmt: skip
     p.add_argument(
         "--level",
-        type=int,
+        type=_level,
         default=None,
-        help="grid level of the numerical solver (default: the level each contact's film needs, 3-5, within ~2 %% "
-        "of the grid-converged film; docs/ehl_solver.md)",
+        help="grid level of the numerical solver, 0-5 (default: the level each contact's film needs, 3-5, within "
+        "~2 %% of the grid-converged film; docs/ehl_solver.md)",
     )
+    p.add_argument("--plot", default="film_map.png", metavar="PNG",
+                   help="the film map's figure, written when one input is a range (default film_map.png)")  # fmt: skip
     p = sub.add_parser(
         "film-table",
         help="build the film correction table of a bearing and lubricant (scene option film_correction = 'table')",

@@ -61,6 +61,7 @@ class ContactFilm:
     formulas: dict = field(default_factory=dict)  # formula name -> Film
     numerical: Film = None  # None: the solver found no positive film on its grid (a finer level is needed)
     converged: bool = False
+    reason: str = ""  # why the numerical film is not converged ("" when it is)
     level: int = 0  # grid level of the numerical solve (models.ehl_numerical.grid_hierarchy)
     seconds: float = 0.0  # wall time of the numerical solve (s)
 
@@ -106,19 +107,29 @@ def film_check(bearing, lubricant, omega, loads, T_oil=313.15, finest=None):
         resolved = 0.0 < solution.h_min <= solution.h_c < math.inf
         check.numerical = _film(solution.h_c, solution.h_min, sigma) if resolved else None
         check.converged = solution.converged and resolved
+        if not resolved:
+            check.reason = "no positive film on this grid: solve on a finer level"
+        elif not solution.converged:
+            check.reason = solution.reason or "not converged"
         checks.append(check)
     return checks
 
 
 def format_film_check(checks):
-    """The film check as a plain-text table (films in nm, differences against the numerical solution in %)."""
+    """The film check as a plain-text table (films in nm, differences against the numerical solution in %; left out
+    where the numerical film is not converged, whose reason is printed). A race without a loaded contact is said."""
     lines = []
+    for race in RACES:
+        if not any(c.race == race for c in checks):
+            lines.append(f"{race} race: no loaded contact at this operating point (left out)")
     for c in checks:
         lines.append(
             f"{c.race} contact, ball {c.ball}: Q = {c.load:.1f} N, u_e = {c.u_e:.3f} m/s, k = {c.k:.3f}, "
             f"p_h = {c.p_h / 1e9:.3f} GPa, sigma = {c.sigma * 1e9:.1f} nm; numerical solve "
             f"on grid level {c.level} {'converged' if c.converged else 'NOT converged'} in {c.seconds:.1f} s"
         )
+        if not c.converged:
+            lines.append(f"  not converged: {c.reason}; the differences against it are left out")
         lines.append(
             f"  {'method':<18} {'h_c nm':>9} {'vs num.':>8} {'h_min nm':>9} {'vs num.':>8} {'Lambda':>7}  regime"
         )
@@ -126,9 +137,10 @@ def format_film_check(checks):
         if n is None:
             lines.append("  numerical          no positive film on this grid: solve on a finer level")
         rows = ([] if n is None else [("numerical", n)]) + list(c.formulas.items())
+        compared = n is not None and c.converged
         for method, f in rows:
-            d_c = "" if f is n or n is None else f"{100.0 * (f.h_c / n.h_c - 1.0):+.1f} %"
-            d_m = "" if f is n or n is None else f"{100.0 * (f.h_min / n.h_min - 1.0):+.1f} %"
+            d_c = f"{100.0 * (f.h_c / n.h_c - 1.0):+.1f} %" if compared and f is not n else ""
+            d_m = f"{100.0 * (f.h_min / n.h_min - 1.0):+.1f} %" if compared and f is not n else ""
             lam = f"{f.lam:.2f}" if math.isfinite(f.lam) else "inf"
             lines.append(
                 f"  {method:<18} {f.h_c * 1e9:>9.1f} {d_c:>8} {f.h_min * 1e9:>9.1f} {d_m:>8} {lam:>7}  {f.regime}"
