@@ -428,7 +428,7 @@ def quasi_static_race(bearing, lubricant, rpm, F_z, race_control):
 
 def race_control_block():
     """Table of the race controls against the DEM over speed."""
-    rows, worst = [], {}
+    rows, worst, skid = [], {}, {}
     for bearing, lubricant, rpm, F_z, via in RACE_CASES:
         dem, dem_time = dem_steady(bearing, lubricant, rpm, F_z, via)
         name = ("218" if bearing == B218 else bearing) + ("" if via is None else f", DEM via {via:.0f} rpm")
@@ -436,6 +436,8 @@ def race_control_block():
             out, warm = quasi_static_race(bearing, lubricant, rpm, F_z, control)
             diff = [out[key] / dem[key] - 1.0 for key in RACE_COMPARED]
             worst[control] = max(worst.get(control, 0.0), *(abs(d) for d in diff))
+            if bearing == B218 and rpm in (8000.0, 12000.0):  # where outer-race control asks more than the oil gives
+                skid[control] = max(skid.get(control, 0.0), *(abs(d) for d in diff))
             mu = max(out["mu_required_inner"], out["mu_required_outer"]) if control == "outer" else None
             rows.append([name, rpm, control, *(100.0 * d for d in diff), mu, 1e3 * warm, dem_time])
     columns = ["bearing", "n (rpm)", "race control", "cage (%)", "torque (%)", "Q_max i (%)", "Q_max o (%)",
@@ -449,8 +451,10 @@ def race_control_block():
         "8 000-12 000 rpm (cage 6.5 % faster). The traction solution's cold start lands on the skid (the row of the "
         "DEM via 12 000 rpm); the traction equations have several solutions there (docs/quasistatic.md, section 2)."
     )
-    metrics = [metric(f"race control {c}: max relative difference to the DEM", v, "1", "difference")
-               for c, v in worst.items()]  # fmt: skip
+    metrics = [metric(f"race control {c}: max relative difference to the DEM, 218 at 8 000-12 000 rpm", v, "1",
+                      "difference") for c, v in skid.items()]  # fmt: skip
+    metrics += [metric(f"race control {c}: max relative difference to the DEM over every row (two states at 15 000 "
+                       "rpm)", v, "1", "difference") for c, v in worst.items()]  # fmt: skip
     return dict(table=dict(caption=caption, columns=columns, formats=formats, rows=rows)), metrics
 
 
