@@ -114,7 +114,10 @@ TT_PHI = 6  # the film's share of the tangential force (-)
 TT_MU = 7  # mu(Lambda) of the papers (-): Houpert's sliding terms
 TT_DPHI = 8  # d phi / dQ at the film's entrainment speed (1/N)
 TT_DMU = 9  # d mu / dQ at the film's entrainment speed (1/N)
-TT_SIZE = 10
+TT_LAM = 10  # Lambda of the film last evaluated (-), at the entrainment speed TT_U_FILM (m/s) and load TT_Q_FILM (N)
+TT_U_FILM = 11
+TT_Q_FILM = 12
+TT_SIZE = 13
 # exponents of the load terms in Q (N): a ~ Q^(1/3) (Hertz), the hysteresis force ~ b Q, Heathcote's ~ Q a^2, the
 # pivoting moment ~ Q a (kernels.torque), Houpert's EHL rolling force ~ W^0.466 (torque.houpert_rolling_force)
 _E_A = 1.0 / 3.0
@@ -142,12 +145,25 @@ def _load_terms(race, Q, D, tr, terms):
 @kernel(inline="always")
 def _film(race, u, tr, terms):
     """The contact's film terms at entrainment speed u (m/s) into terms[race] (TT_PHI, TT_MU): the film share and
-    mu(Lambda) of its minimum film (the scene's formula); returns True when they changed (beyond 1e-12)."""
+    mu(Lambda) of its minimum film (the scene's formula); returns True when they changed (beyond 1e-12).
+
+    Both are flat for Lambda <= 1 and Lambda > 3. Every film formula has Lambda ~ u^e_u Q^e_Q with 0 < e_u < 0.72 and
+    -0.1 < e_Q < 0 (ellipticity k >= 1): within 1 % of the entrainment speed and 5 % of the load of the film last
+    evaluated (TT_LAM, TT_U_FILM, TT_Q_FILM), Lambda stays within 1.3 % of its value, so a film that was 3 % inside a
+    flat stretch keeps its terms, unchanged, without evaluating the film. terms is therefore tied to one traction
+    block tr (its viscosity, roughness and radii): zero TT_LAM when tr changes."""
     o = TR_STRIDE * race
     Q = terms[race, TT_Q]
+    lam = terms[race, TT_LAM]
+    if (lam > 1.03 * 3.0 or lam < 1.0 / 1.03) and u > 0.0:
+        if abs(u - terms[race, TT_U_FILM]) <= 0.01 * u and abs(Q - terms[race, TT_Q_FILM]) <= 0.05 * Q:
+            return False
     h_min = film_thickness(int(tr[TR_FILM]), tr[TR_ETA], tr[TR_XI], tr[TR_E_RED], u, Q, tr[o + TR_RX], tr[o + TR_RY],
                            tr[o + TR_K])[1]  # fmt: skip
     lam = film_parameter(h_min, tr[o + TR_SIGMA])
+    terms[race, TT_LAM] = lam
+    terms[race, TT_U_FILM] = u
+    terms[race, TT_Q_FILM] = Q
     phi = film_share(lam)
     mu = friction_coefficient(lam)
     changed = abs(phi - terms[race, TT_PHI]) > 1e-12 or abs(mu - terms[race, TT_MU]) > 1e-12 * mu
