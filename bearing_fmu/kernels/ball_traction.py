@@ -567,18 +567,18 @@ def _marquardt(y, p, omega, D, dm, J, tr, terms, Dy, out, res, trial, work, M):
 
 
 @kernel
-def _newton(y, p, omega, D, dm, J, tr, terms, out, Dy, ws):
-    """Damped Newton on the kinematics y (rad/s) with the tribology terms held; out at the last iterate, Dy at the
-    last iterate that took a step (parameter_derivatives evaluates it at the solution). True when converged:
-    residual at most _TOL (Q_i + Q_o), or a step below 1e-14 omega. ws: solve_traction's work arrays."""
-    work, Dp, M, trial = ws
+def _newton(y, p, omega, D, dm, J, tr, terms, out, Dy, Dp, ws):
+    """Damped Newton on the kinematics y (rad/s) with the tribology terms held; out, Dy and Dp (_residual_d) at the
+    last iterate. True when converged: residual at most _TOL (Q_i + Q_o), or a step below 1e-14 omega. ws:
+    solve_work. Trials are evaluated with their partials, so that the accepted one leaves them for
+    parameter_derivatives."""
+    work, Dy_t, Dp_t, M, trial = ws[1], ws[2], ws[3], ws[4], ws[5]
     scale = _TOL * (p[2] + p[3])
-    _residual(y, p[0], p[1], p[2], p[3], omega, D, dm, J, tr, terms, out)
+    _residual_d(y, p, omega, D, dm, J, tr, terms, out, Dy, Dp)
     res = _norm(out)
     for _ in range(_MAXIT):
         if res <= scale:
             return True
-        _residual_d(y, p, omega, D, dm, J, tr, terms, work, Dy, Dp)
         for r in range(4):
             M[r, 4] = -out[TE_R + r]
         if not _solve4(Dy, M, 1):
@@ -588,7 +588,7 @@ def _newton(y, p, omega, D, dm, J, tr, terms, out, Dy, ws):
         for _t in range(_TRIES):
             for c in range(4):
                 trial[c] = y[c] + lam * M[c, 4]
-            _residual(trial, p[0], p[1], p[2], p[3], omega, D, dm, J, tr, terms, work)
+            _residual_d(trial, p, omega, D, dm, J, tr, terms, work, Dy_t, Dp_t)
             if _norm(work) < res:
                 descent = True
                 break
@@ -597,6 +597,8 @@ def _newton(y, p, omega, D, dm, J, tr, terms, out, Dy, ws):
             # the Newton step does not lower the residual (past a kink of the slip speed's max, the traction's slope
             # changes by orders): Levenberg-Marquardt steps, from Newton's towards the steepest descent
             descent = _marquardt(y, p, omega, D, dm, J, tr, terms, Dy, out, res, trial, work, M)
+            if descent:
+                _residual_d(trial, p, omega, D, dm, J, tr, terms, work, Dy_t, Dp_t)
         if not descent:
             return res <= 1e3 * scale  # no descent left: converged to rounding, or stalled
         small = True
@@ -604,6 +606,8 @@ def _newton(y, p, omega, D, dm, J, tr, terms, out, Dy, ws):
             small = small and abs(trial[c] - y[c]) <= 1e-14 * abs(omega)
         y[:] = trial
         out[:] = work
+        Dy[:, :] = Dy_t
+        Dp[:, :] = Dp_t
         res = _norm(out)
         if small:
             return True
@@ -611,19 +615,37 @@ def _newton(y, p, omega, D, dm, J, tr, terms, out, Dy, ws):
 
 
 @kernel
-def solve_traction(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy):
+def solve_work():
+    """Work arrays of a traction solve (solve_traction_with): the contacts p (4), a trial's evaluation, its partials
+    in y and in p, the elimination's matrix (4 x 8) and the trial kinematics."""
+    return (np.empty(4), np.empty(TE_SIZE), np.empty((TE_SIZE, 4)), np.empty((TE_SIZE, 4)), np.empty((4, 8)),
+            np.empty(4))  # fmt: skip
+
+
+@kernel
+def solve_traction(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy, Dp):
     """The ball's kinematics y (rad/s, start and solution) for the contacts (a_i, a_o, Q_i, Q_o); terms (2 x TT_SIZE)
-    holds the contacts' terms, out (TE_*) the evaluation at the solution, Dy (TE_SIZE x 4) is work (the derivatives
-    at the solution: parameter_derivatives). True when converged.
+    holds the contacts' terms, out (TE_*) the evaluation at the solution, Dy and Dp (TE_SIZE x 4) its partials in y
+    (the film held) and in the contacts (_residual_d; with the film terms of the last Newton round, which the
+    solution's differ from by 1e-12 at most). True when converged.
 
     The film of a contact follows its entrainment speed, which the kinematics change only by the balls' slip:
     Newton runs with the film terms of its start held, and again from its solution with those of the solution until
     they no longer change (in a full film at once: the film share and mu(Lambda) are then constants)."""
-    p = np.array([a_i, a_o, Q_i, Q_o])
-    ws = (np.empty(TE_SIZE), np.empty((TE_SIZE, 4)), np.empty((4, 5)), np.empty(4))
+    return solve_traction_with(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy, Dp, solve_work())
+
+
+@kernel
+def solve_traction_with(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy, Dp, ws):
+    """solve_traction with its work arrays ws (solve_work)."""
+    p = ws[0]
+    p[0] = a_i
+    p[1] = a_o
+    p[2] = Q_i
+    p[3] = Q_o
     _terms_at(y, a_i, a_o, Q_i, Q_o, omega, D, dm, tr, terms)
     for _ in range(_FILM_ROUNDS):
-        if not _newton(y, p, omega, D, dm, J, tr, terms, out, Dy, ws):
+        if not _newton(y, p, omega, D, dm, J, tr, terms, out, Dy, Dp, ws):
             return False
         if not _films_at(y, a_i, a_o, omega, D, dm, tr, terms):
             return True
@@ -638,7 +660,13 @@ def parameter_derivatives(y, p, omega, D, dm, J, tr, terms, out, Dy, dout, dydp)
     in y with the film held) are evaluated here at y. The partials in p are closed forms (_residual_d), the film
     terms following the loads at the solution's entrainment speeds. dydp (4 x 4): dy/dp."""
     _residual_d(y, p, omega, D, dm, J, tr, terms, out, Dy, dout)
-    M = np.empty((4, 8))
+    implicit_derivatives(Dy, dout, dydp, np.empty((4, 8)))
+
+
+@kernel
+def implicit_derivatives(Dy, dout, dydp, M):
+    """parameter_derivatives from the partials Dy (in y) and dout (in p, on entry) of _residual_d at a solution:
+    dy/dp = -(dR/dy)^-1 dR/dp into dydp, dout + Dy dy/dp into dout, d w_m / dp in its row TE_R. M: 4 x 8 work."""
     for c in range(4):
         for r in range(4):
             M[r, 4 + c] = -dout[TE_R + r, c]
@@ -654,17 +682,17 @@ def parameter_derivatives(y, p, omega, D, dm, J, tr, terms, out, Dy, dout, dydp)
 
 
 @kernel
-def solve_from_rolling(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy):
+def solve_from_rolling(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy, Dp):
     """solve_traction from outer-race control, the last resort where a warm start stalls: directly, and if that
     stalls too, along a traction curve softened by 1000, 100 and 10 times its knee (a continuation: each solution
     the start of the next, the curve's steep knee reached last). Arguments and result as solve_traction."""
     rolling_start(a_i, a_o, omega, D, dm, y)
-    if solve_traction(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy):
+    if solve_traction(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy, Dp):
         return True
     rolling_start(a_i, a_o, omega, D, dm, y)
     soft = tr.copy()
     for factor in (1000.0, 100.0, 10.0):
         soft[TR_S0] = factor * tr[TR_S0]
-        if not solve_traction(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, soft, terms, out, Dy):
+        if not solve_traction(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, soft, terms, out, Dy, Dp):
             return False
-    return solve_traction(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy)
+    return solve_traction(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy, Dp)

@@ -72,12 +72,21 @@ def test_solved_kinematics_and_their_derivatives_equal_the_twin(case):
     out = np.zeros(bt.TE_SIZE)
     Dy = np.zeros((bt.TE_SIZE, 4))
     terms = np.zeros((2, bt.TT_SIZE))
-    assert bt.solve_traction(y, *contacts, omega, D, dm, J, tr, terms, out, Dy)
+    Dp = np.zeros((bt.TE_SIZE, 4))
+    assert bt.solve_traction(y, *contacts, omega, D, dm, J, tr, terms, out, Dy, Dp)
     twin, ok = ref.solve_traction(*contacts, omega, D, dm, J, tr, start=start)
     assert ok
     assert y == pytest.approx(twin, abs=1e-9 * omega)
     dout = np.zeros((bt.TE_SIZE, 4))
+    solved_out, solved_Dy = out.copy(), Dy.copy()
     bt.parameter_derivatives(y, np.array(contacts), omega, D, dm, J, tr, terms, out, Dy, dout, np.zeros((4, 4)))
+    # the solve leaves the evaluation and its partials at the solution (film terms of its last Newton round, within
+    # 1e-12 of the solution's), from which the bearing takes dy/dp
+    assert solved_out == pytest.approx(out, rel=1e-9, abs=1e-12 * max(contacts[2:]))
+    assert solved_Dy == pytest.approx(Dy, rel=1e-9, abs=1e-9 * np.abs(Dy).max())
+    from_solve = Dp.copy()
+    bt.implicit_derivatives(solved_Dy, from_solve, np.zeros((4, 4)), np.zeros((4, 8)))
+    assert from_solve == pytest.approx(dout, rel=1e-9, abs=1e-9 * np.abs(dout).max())
     kernel = dout[[bt.TE_R, bt.TE_FTAU_I, bt.TE_FTAU_O]]
     expected = ref.parameter_derivatives(*contacts, omega, D, dm, J, tr, twin)
     for row in range(3):

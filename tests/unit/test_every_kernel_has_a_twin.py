@@ -47,7 +47,13 @@ COVERED_THROUGH = {
     BT + "_films_at": (BT + "_terms_at", "both contacts' film terms at the kinematics' entrainment speeds"),
     BT + "_terms_at": (BT + "traction_eval", "every term of both contacts"),
     BT + "solve_from_rolling": (JH + "_traction_grad", "the kinematics from a cold start, with a continuation"),
-    BT + "_newton": (BT + "solve_traction", "the iteration whose result is the compared kinematics"),
+    BT + "_newton": (BT + "solve_traction_with", "the iteration whose result is the compared kinematics"),
+    BT + "solve_traction_with": (BT + "solve_traction", "its body, with the caller's work arrays"),
+    BT + "solve_work": (BT + "solve_traction", "the work arrays of a solve"),
+    BT + "implicit_derivatives": (
+        BT + "parameter_derivatives",
+        "its implicit-function step, from the partials the solve leaves",
+    ),
     BT + "_residual_d": (
         BT + "parameter_derivatives",
         "the residuals' closed-form partials, also checked against central differences of _residual",
