@@ -117,7 +117,8 @@ TT_DMU = 9  # d mu / dQ at the film's entrainment speed (1/N)
 TT_LAM = 10  # Lambda of the film last evaluated (-), at the entrainment speed TT_U_FILM (m/s) and load TT_Q_FILM (N)
 TT_U_FILM = 11
 TT_Q_FILM = 12
-TT_SIZE = 13
+TT_C_R1 = 13  # Houpert's EHL rolling force at u = 1 m/s and Q = 1 N (N), once per traction block
+TT_SIZE = 14
 # exponents of the load terms in Q (N): a ~ Q^(1/3) (Hertz), the hysteresis force ~ b Q, Heathcote's ~ Q a^2, the
 # pivoting moment ~ Q a (kernels.torque), Houpert's EHL rolling force ~ W^0.466 (torque.houpert_rolling_force)
 _E_A = 1.0 / 3.0
@@ -129,9 +130,11 @@ _E_C_R = 0.466
 
 @kernel(inline="always")
 def _load_terms(race, Q, D, tr, terms):
-    """The contact's terms that follow its load Q (N) alone into terms[race] (TT_A .. TT_C_R)."""
+    """The contact's terms that follow its load Q (N) alone into terms[race] (TT_A .. TT_C_R). Houpert's rolling force
+    is its value at 1 N (TT_C_R1, evaluated once for the traction block tr) times Q^0.466, its power of the load."""
     o = TR_STRIDE * race
-    q3 = Q ** (1.0 / 3.0)
+    ln_q = math.log(Q)
+    q3 = math.exp(ln_q / 3.0)  # Q^(1/3)
     a = tr[o + TR_A1] * q3
     Rx = tr[o + TR_RX]
     terms[race, TT_A] = a
@@ -139,7 +142,9 @@ def _load_terms(race, Q, D, tr, terms):
     terms[race, TT_HYST] = 0.5 * hysteresis_force(Q, tr[o + TR_B1] * q3, Rx, tr[TR_ALPHA_H])
     terms[race, TT_HEATH] = 0.5 * heathcote_force(Q, a, Rx, tr[o + TR_F], D, 1.0)
     terms[race, TT_SPIN] = spin_moment(Q, a, tr[o + TR_EE], 1.0)
-    terms[race, TT_C_R] = houpert_rolling_force(Q, 1.0, Rx, tr[o + TR_RY], tr[TR_E_RED], tr[TR_ETA], tr[TR_XI])
+    if terms[race, TT_C_R1] == 0.0:
+        terms[race, TT_C_R1] = houpert_rolling_force(1.0, 1.0, Rx, tr[o + TR_RY], tr[TR_E_RED], tr[TR_ETA], tr[TR_XI])
+    terms[race, TT_C_R] = terms[race, TT_C_R1] * math.exp(_E_C_R * ln_q)
 
 
 @kernel(inline="always")
@@ -151,7 +156,7 @@ def _film(race, u, tr, terms):
     -0.1 < e_Q < 0 (ellipticity k >= 1): within 1 % of the entrainment speed and 5 % of the load of the film last
     evaluated (TT_LAM, TT_U_FILM, TT_Q_FILM), Lambda stays within 1.3 % of its value, so a film that was 3 % inside a
     flat stretch keeps its terms, unchanged, without evaluating the film. terms is therefore tied to one traction
-    block tr (its viscosity, roughness and radii): zero TT_LAM when tr changes."""
+    block tr (its viscosity, roughness and radii): zero TT_LAM and TT_C_R1 when tr changes."""
     o = TR_STRIDE * race
     Q = terms[race, TT_Q]
     lam = terms[race, TT_LAM]
@@ -325,14 +330,15 @@ def _contact_d(race, ua, ur, w_m, Wa, Wr, Wt, w_race, D, dm, s_0, mu_lim, terms)
         gv_s = _lin(SPIN_SLIP * math.copysign(a, spin), gspin, SPIN_SLIP * abs(spin) * _E_A * a / Q, _unit(5, 1.0))
     v = math.sqrt(s_t * s_t + s_tau * s_tau)
     x = v / v_s
-    g = cap * (1.0 - x * (0.5 - x / 6.0)) / v_s if x < 1e-5 else -cap * math.expm1(-x) / v
+    em = math.expm1(-x)
+    g = cap * (1.0 - x * (0.5 - x / 6.0)) / v_s if x < 1e-5 else -cap * em / v
     # g = cap E(x) / v_s, E(x) = (1 - exp(-x)) / x, by its series where x is small
     if x < 1e-3:
         E = 1.0 - x * (0.5 - x * (1.0 / 6.0 - x / 24.0))
         dE = -0.5 + x * (1.0 / 3.0 - x * (0.125 - x / 30.0))
     else:
-        E = -math.expm1(-x) / x
-        dE = (math.exp(-x) * (1.0 + x) - 1.0) / (x * x)
+        E = -em / x
+        dE = ((1.0 + em) * (1.0 + x) - 1.0) / (x * x)
     gv = _lin(s_t / v, gs_t, s_tau / v, gs_tau) if v > 0.0 else _unit(0, 0.0)
     gx = _lin(1.0 / v_s, gv, -x / v_s, gv_s)
     gg = _lin(E / v_s, gcap, cap * dE / v_s, gx)
@@ -384,6 +390,23 @@ def _contact_d(race, ua, ur, w_m, Wa, Wr, Wt, w_race, D, dm, s_0, mu_lim, terms)
     return (F_t, F_tau, M_a, M_r, M_t, g * v * v, u, g * v), (gF_t, gF_tau, gM_a, gM_r, gM_t, gP, gu, gF)
 
 
+@kernel(inline="always")
+def _p_column(Dp, c, g, k, race, half, Q):
+    """Column c of _residual_d's partials in p: direction k of the gradients g of the contact on race (0 inner)."""
+    Dp[TE_R, c] = g[0][k]
+    Dp[TE_R + 1, c] = g[2][k] / half
+    Dp[TE_R + 2, c] = g[3][k] / half
+    Dp[TE_R + 3, c] = g[4][k] / half
+    Dp[TE_FTAU_I + race, c] = g[1][k]
+    Dp[TE_FTAU_O - race, c] = 0.0
+    Dp[TE_P_I + race, c] = g[5][k]
+    Dp[TE_P_O - race, c] = 0.0
+    Dp[TE_U_I + race, c] = g[6][k]
+    Dp[TE_U_O - race, c] = 0.0
+    Dp[TE_MU_I + race, c] = g[7][k] / Q
+    Dp[TE_MU_O - race, c] = 0.0
+
+
 @kernel
 def _residual_d(y, p, omega, D, dm, J, tr, terms, out, Dy, Dp):
     """_residual at y (rad/s) and the contacts p = (a_i, a_o, Q_i, Q_o) into out, with the partials of every output
@@ -432,23 +455,10 @@ def _residual_d(y, p, omega, D, dm, J, tr, terms, out, Dy, Dp):
     Dy[TE_R + 3, 0] -= J * Wr / half
     Dy[TE_R + 3, 2] -= J * w_m / half
     # p: a_i and Q_i move the inner contact alone (its directions 4 and 5), a_o and Q_o the outer one
-    for c in range(4):
-        gk = gi if c % 2 == 0 else go
-        k = 4 if c < 2 else 5
-        inner = 1.0 if c % 2 == 0 else 0.0
-        outer = 1.0 - inner
-        Dp[TE_R, c] = gk[0][k]
-        Dp[TE_R + 1, c] = gk[2][k] / half
-        Dp[TE_R + 2, c] = gk[3][k] / half
-        Dp[TE_R + 3, c] = gk[4][k] / half
-        Dp[TE_FTAU_I, c] = inner * gk[1][k]
-        Dp[TE_FTAU_O, c] = outer * gk[1][k]
-        Dp[TE_P_I, c] = inner * gk[5][k]
-        Dp[TE_P_O, c] = outer * gk[5][k]
-        Dp[TE_U_I, c] = inner * gk[6][k]
-        Dp[TE_U_O, c] = outer * gk[6][k]
-        Dp[TE_MU_I, c] = inner * gk[7][k] / Q_i
-        Dp[TE_MU_O, c] = outer * gk[7][k] / Q_o
+    _p_column(Dp, 0, gi, 4, 0, half, Q_i)
+    _p_column(Dp, 1, go, 4, 1, half, Q_o)
+    _p_column(Dp, 2, gi, 5, 0, half, Q_i)
+    _p_column(Dp, 3, go, 5, 1, half, Q_o)
     Dp[TE_MU_I, 2] -= out[TE_MU_I] / Q_i
     Dp[TE_MU_O, 3] -= out[TE_MU_O] / Q_o
 
@@ -477,7 +487,7 @@ def traction_eval(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, out):
 
     a_i, a_o (rad), Q_i, Q_o (N > 0): the contacts; omega (rad/s) the inner race's speed; D, dm (m); J (kg.m^2)
     the ball's moment of inertia; tr: the traction block (TR_*)."""
-    terms = np.empty((2, TT_SIZE))
+    terms = np.zeros((2, TT_SIZE))  # zeros: no film (TT_LAM) or rolling force (TT_C_R1) evaluated yet
     _terms_at(y, a_i, a_o, Q_i, Q_o, omega, D, dm, tr, terms)
     _residual(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out)
 
@@ -625,9 +635,10 @@ def solve_work():
 @kernel
 def solve_traction(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy, Dp):
     """The ball's kinematics y (rad/s, start and solution) for the contacts (a_i, a_o, Q_i, Q_o); terms (2 x TT_SIZE)
-    holds the contacts' terms, out (TE_*) the evaluation at the solution, Dy and Dp (TE_SIZE x 4) its partials in y
-    (the film held) and in the contacts (_residual_d; with the film terms of the last Newton round, which the
-    solution's differ from by 1e-12 at most). True when converged.
+    holds the contacts' terms (zeros at first, then kept between solves with the same traction block tr), out (TE_*)
+    the evaluation at the solution, Dy and Dp (TE_SIZE x 4) its partials in y (the film held) and in the contacts
+    (_residual_d; with the film terms of the last Newton round, which the solution's differ from by 1e-12 at most).
+    True when converged.
 
     The film of a contact follows its entrainment speed, which the kinematics change only by the balls' slip:
     Newton runs with the film terms of its start held, and again from its solution with those of the solution until

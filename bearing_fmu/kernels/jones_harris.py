@@ -325,7 +325,9 @@ def _kin_grad(a_i, a_o, C, omega, gp, dm, D, m_ball, race, cen, gyro, g):
         g[k, KG_DQO] = 0.0
 
 
-@kernel
+# inlined (as _ball_residual_at): a call boundary increfs and decrefs every work array of tw, atomic operations that
+# took a quarter of a traction solve
+@kernel(inline="always")
 def _traction_grad(a_i, a_o, Q_i, Q_o, omega, dm, D, m_ball, cen, tw, g):
     """RACE_TRACTION's kinematic terms (F_c, Mg_o, Mg_i) as _kin_grad gives a hypothesis' (rows KG_*), solved from
     the film's traction for the contacts (a_i, a_o, Q_i, Q_o) (kernels.ball_traction), with their partials in a_i,
@@ -669,7 +671,7 @@ def _ball_start(A1, A2, x, r_i, r_o, K_i, K_o, F_c0):
         x[1] = r_o + (F_c0 / K_o) ** (2.0 / 3.0)
 
 
-@kernel
+@kernel(inline="always")  # see _traction_grad
 def _ball_residual_at(x, lam, step, args):
     """Evaluate the ball at x + lam step (m) into its work array; returns the residual norm (N)."""
     ball, kg, w, tw = args

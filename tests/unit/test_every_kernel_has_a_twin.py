@@ -59,6 +59,7 @@ COVERED_THROUGH = {
         "the residuals' closed-form partials, also checked against central differences of _residual",
     ),
     BT + "_contact_d": (BT + "_residual_d", "one contact's outputs and their gradients"),
+    BT + "_p_column": (BT + "_residual_d", "one column of the partials in the contacts"),
     BT + "_surfaces_grad": (BT + "_contact_d", "gradients of one contact's sliding, spin and entrainment"),
     BT + "_lin": (BT + "_contact_d", "a linear combination of two gradients"),
     BT + "_unit": (BT + "_contact_d", "a gradient along one direction"),
