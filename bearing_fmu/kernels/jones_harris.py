@@ -47,10 +47,11 @@ from .ball_traction import (
     TE_U_O,
     TR_SIZE,
     TT_SIZE,
-    parameter_derivatives,
+    implicit_derivatives,
     rolling_start,
     solve_from_rolling,
-    solve_traction,
+    solve_traction_with,
+    solve_work,
     traction_eval,
 )
 from .geometry import ball_direction
@@ -324,16 +325,18 @@ def _kin_grad(a_i, a_o, C, omega, gp, dm, D, m_ball, race, cen, gyro, g):
         g[k, KG_DQO] = 0.0
 
 
-@kernel
+# inlined (as _ball_residual_at): a call boundary increfs and decrefs every work array of tw, atomic operations that
+# took a quarter of a traction solve
+@kernel(inline="always")
 def _traction_grad(a_i, a_o, Q_i, Q_o, omega, dm, D, m_ball, cen, tw, g):
     """RACE_TRACTION's kinematic terms (F_c, Mg_o, Mg_i) as _kin_grad gives a hypothesis' (rows KG_*), solved from
     the film's traction for the contacts (a_i, a_o, Q_i, Q_o) (kernels.ball_traction), with their partials in a_i,
     a_o, Q_i (column KG_DC) and Q_o (KG_DQO). Mg_o, Mg_i are minus the in-plane traction forces (this kernel's sign
-    of lam M_g / D). tw = (tr, y, out, Dy, dout, terms, dydp, p) (traction_work): the traction block, y (4, rad/s)
-    the ball's kinematics, warm start and solution, the solver's work, and the derivatives dy/dp at the last
+    of lam M_g / D). tw = (tr, y, out, Dy, dout, terms, dydp, p, ws) (traction_work): the traction block, y (4,
+    rad/s) the ball's kinematics, warm start and solution, the solver's work, and the derivatives dy/dp at the last
     contacts p of the same ball (p[2] = 0: none), from which the next solve of the ball starts. A solve that does
     not converge gives NaN."""
-    tr, y, out, Dy, dout, terms, dydp, p = tw
+    tr, y, out, Dy, dout, terms, dydp, p, ws = tw
     J = 0.1 * m_ball * D * D  # the ball's own balance: its gyroscopic moment whatever the hypotheses' option
     y0, y1, y2, y3 = y[0], y[1], y[2], y[3]
     predicted = p[2] > 0.0
@@ -345,12 +348,12 @@ def _traction_grad(a_i, a_o, Q_i, Q_o, omega, dm, D, m_ball, cen, tw, g):
     p[1] = a_o
     p[2] = Q_i
     p[3] = Q_o
-    solved = solve_traction(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy)
+    solved = solve_traction_with(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy, dout, ws)
     if not solved and predicted:  # a prediction over a long step can land where Newton stalls: from the last solution
         y[0], y[1], y[2], y[3] = y0, y1, y2, y3
-        solved = solve_traction(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy)
+        solved = solve_traction_with(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy, dout, ws)
     if not solved:
-        solved = solve_from_rolling(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy)
+        solved = solve_from_rolling(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy, dout)
     if not solved:  # NaN, which the ball's Newton refuses; the next solve of the ball starts from its last solution
         y[0], y[1], y[2], y[3] = y0, y1, y2, y3
         p[2] = 0.0
@@ -358,7 +361,7 @@ def _traction_grad(a_i, a_o, Q_i, Q_o, omega, dm, D, m_ball, cen, tw, g):
             for c in range(KG_SIZE):
                 g[k, c] = math.nan
         return
-    parameter_derivatives(y, p, omega, D, dm, J, tr, terms, out, Dy, dout, dydp)
+    implicit_derivatives(Dy, dout, dydp, ws[4])  # the solve left the partials at its solution in Dy and dout
     cols = (KG_DAI, KG_DAO, KG_DC, KG_DQO)
     fc = 0.5 * m_ball * dm if cen else 0.0
     g[KG_FC, KG_VALUE] = fc * y[0] * y[0]
@@ -588,7 +591,7 @@ def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond, tw=None):
 @kernel
 def traction_work(qs):
     """RACE_TRACTION's traction block and the work arrays of its ball kinematics (tr, y, out, Dy, dout, terms, dydp,
-    p: kernels.ball_traction, _traction_grad)."""
+    p, ws: kernels.ball_traction, _traction_grad)."""
     return (
         qs[QS_TRACTION:],
         np.zeros(4),
@@ -598,6 +601,7 @@ def traction_work(qs):
         np.zeros((2, TT_SIZE)),
         np.zeros((4, 4)),
         np.zeros(4),
+        solve_work(),
     )
 
 
@@ -667,7 +671,7 @@ def _ball_start(A1, A2, x, r_i, r_o, K_i, K_o, F_c0):
         x[1] = r_o + (F_c0 / K_o) ** (2.0 / 3.0)
 
 
-@kernel
+@kernel(inline="always")  # see _traction_grad
 def _ball_residual_at(x, lam, step, args):
     """Evaluate the ball at x + lam step (m) into its work array; returns the residual norm (N)."""
     ball, kg, w, tw = args

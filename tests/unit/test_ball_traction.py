@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 from bearing_fmu.kernels import ball_traction as bt
+from bearing_fmu.kernels import ehl
 from bearing_fmu.kernels import jones_harris as qk
 from bearing_fmu.kernels.lubricant import lubricant_state
 from bearing_fmu.models.contacts import race_contacts, traction_block
@@ -71,12 +72,21 @@ def test_solved_kinematics_and_their_derivatives_equal_the_twin(case):
     out = np.zeros(bt.TE_SIZE)
     Dy = np.zeros((bt.TE_SIZE, 4))
     terms = np.zeros((2, bt.TT_SIZE))
-    assert bt.solve_traction(y, *contacts, omega, D, dm, J, tr, terms, out, Dy)
+    Dp = np.zeros((bt.TE_SIZE, 4))
+    assert bt.solve_traction(y, *contacts, omega, D, dm, J, tr, terms, out, Dy, Dp)
     twin, ok = ref.solve_traction(*contacts, omega, D, dm, J, tr, start=start)
     assert ok
     assert y == pytest.approx(twin, abs=1e-9 * omega)
     dout = np.zeros((bt.TE_SIZE, 4))
+    solved_out, solved_Dy = out.copy(), Dy.copy()
     bt.parameter_derivatives(y, np.array(contacts), omega, D, dm, J, tr, terms, out, Dy, dout, np.zeros((4, 4)))
+    # the solve leaves the evaluation and its partials at the solution (film terms of its last Newton round, within
+    # 1e-12 of the solution's), from which the bearing takes dy/dp
+    assert solved_out == pytest.approx(out, rel=1e-9, abs=1e-12 * max(contacts[2:]))
+    assert solved_Dy == pytest.approx(Dy, rel=1e-9, abs=1e-9 * np.abs(Dy).max())
+    from_solve = Dp.copy()
+    bt.implicit_derivatives(solved_Dy, from_solve, np.zeros((4, 4)), np.zeros((4, 8)))
+    assert from_solve == pytest.approx(dout, rel=1e-9, abs=1e-9 * np.abs(dout).max())
     kernel = dout[[bt.TE_R, bt.TE_FTAU_I, bt.TE_FTAU_O]]
     expected = ref.parameter_derivatives(*contacts, omega, D, dm, J, tr, twin)
     for row in range(3):
@@ -105,3 +115,74 @@ def test_the_stiffness_is_the_derivative_of_the_traction_solution(case):
             loads.append(F.copy())
         fd = (loads[0] - loads[1]) / 2e-8
         assert K[:, c] == pytest.approx(fd, abs=0.01 * np.abs(fd).max())
+
+
+def _central_differences(y, contacts, omega, D, dm, J, tr, terms, u, step):
+    """Central differences of _residual's outputs in y (steps 1e-7 omega, terms held) and in the contacts (step rad,
+    step Q; a load's terms and film follow it at the entrainment speeds u)."""
+    p = np.array(contacts)
+    fy, fp = np.zeros((bt.TE_SIZE, 4)), np.zeros((bt.TE_SIZE, 4))
+    for c in range(4):
+        values = []
+        for sgn in (1.0, -1.0):
+            z = y.copy()
+            z[c] += sgn * 1e-7 * omega
+            values.append(np.zeros(bt.TE_SIZE))
+            bt._residual(z, *p, omega, D, dm, J, tr, terms, values[-1])
+        fy[:, c] = (values[0] - values[1]) / 2e-7 / omega
+        h = step if c < 2 else step * p[c]
+        values = []
+        for sgn in (1.0, -1.0):
+            q, held = p.copy(), terms.copy()
+            q[c] += sgn * h
+            if c >= 2:
+                bt._load_terms(c - 2, q[c], D, tr, held)
+                bt._film(c - 2, u[c - 2], tr, held)
+            values.append(np.zeros(bt.TE_SIZE))
+            bt._residual(y, *q, omega, D, dm, J, tr, held, values[-1])
+        fp[:, c] = (values[0] - values[1]) / (2.0 * h)
+    return fy, fp
+
+
+@pytest.mark.parametrize("case", CASES)
+@pytest.mark.parametrize("film", ["full film", "mixed film, Hamrock-Dowson", "mixed film, Masjedi-Khonsari"])
+def test_closed_form_partials_equal_central_differences(case, film):
+    """_residual_d: the same outputs as _residual (bit for bit), and partials in y and in the contacts within 1e-5 of
+    each row's largest central difference, at the solved kinematics and at a state that slides and spins; in a full
+    film and in a mixed one (Lambda = 2) (the film share and mu(Lambda) then follow the load). The contacts'
+    differences take steps of 1e-6 and 1e-8 (relative for the loads), each row the closer: near a spin of 0 the
+    regularised pivoting moment curves the moments too much for the first (2e-4 of error) and the powers round too
+    much for the second (3e-5)."""
+    contacts, tr, omega, D, dm, J, solved = _ball(case)
+    tr = tr.copy()
+    if film != "full film":  # the roughness that puts both contacts at Lambda = 2 in the solved kinematics
+        tr[bt.TR_FILM] = 1.0 if "Masjedi" in film else 0.0
+        terms, out = np.zeros((2, bt.TT_SIZE)), np.zeros(bt.TE_SIZE)
+        bt._terms_at(solved, *contacts, omega, D, dm, tr, terms)
+        bt._residual(solved, *contacts, omega, D, dm, J, tr, terms, out)
+        for race in range(2):
+            o = bt.TR_STRIDE * race
+            args = (tr[bt.TR_ETA], tr[bt.TR_XI], tr[bt.TR_E_RED], out[bt.TE_U_I + race], contacts[2 + race])
+            h_min = ehl.film_thickness(int(tr[bt.TR_FILM]), *args, tr[o + bt.TR_RX], tr[o + bt.TR_RY], tr[o + bt.TR_K])[
+                1
+            ]
+            tr[o + bt.TR_SIGMA] = h_min / 2.0
+    p = np.array(contacts)
+    for y in (solved, solved * np.array([1.001, 0.999, 1.01, 1.0]) + np.array([0.0, 0.0, 0.0, 1e-3 * omega])):
+        terms = np.zeros((2, bt.TT_SIZE))
+        bt._terms_at(y, *contacts, omega, D, dm, tr, terms)
+        if film != "full film":
+            assert 0.0 < terms[0, bt.TT_PHI] < 1.0 and 0.0 < terms[1, bt.TT_PHI] < 1.0
+            assert terms[0, bt.TT_DPHI] != 0.0 and terms[1, bt.TT_DMU] != 0.0
+        out, Dy, Dp = np.zeros(bt.TE_SIZE), np.zeros((bt.TE_SIZE, 4)), np.zeros((bt.TE_SIZE, 4))
+        bt._residual_d(y, p, omega, D, dm, J, tr, terms, out, Dy, Dp)
+        plain = np.zeros(bt.TE_SIZE)
+        bt._residual(y, *contacts, omega, D, dm, J, tr, terms, plain)
+        assert np.array_equal(out, plain)
+        u = out[bt.TE_U_I : bt.TE_U_O + 1]
+        fy, fp = _central_differences(y, contacts, omega, D, dm, J, tr, terms, u, 1e-6)
+        fp_fine = _central_differences(y, contacts, omega, D, dm, J, tr, terms, u, 1e-8)[1]
+        for row in range(bt.TE_SIZE):
+            assert Dy[row] == pytest.approx(fy[row], abs=1e-5 * np.abs(fy[row]).max()), row
+            err = min(np.abs(Dp[row] - f).max() / np.abs(f).max() for f in (fp[row], fp_fine[row]))
+            assert err <= 1e-5, row
