@@ -26,7 +26,6 @@ import pytest
 
 from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.models.dem import DemModel
-from benchmarks.reference_cases.cwru import bearing_file, rows
 
 SPEED = 1797.0 * 2.0 * math.pi / 60.0  # rad/s
 SAMPLE_RATE = 10000.0  # Hz: the lines up to 2 kHz, the content above it well below 5 % (measured at 20 kHz)
@@ -34,16 +33,6 @@ SEGMENT = 3.0  # s: 1/3 Hz resolution, so that a line stands out of the broadban
 RECORD = 9.0  # s: five segments overlapping by half, averaged (Welch)
 FLOOR_BINS = 15  # +-5 Hz around a peak: its broadband floor
 FLOOR_RATIO = 4.0  # a line stands at least 4x above that floor (the BPFO line: ~100x)
-
-
-@pytest.fixture(scope="module")
-def bearing_6205(tmp_path_factory):
-    row = next(r for r in rows() if r["bearing"].startswith("6205"))
-    path = bearing_file(row, tmp_path_factory.mktemp("cwru"))
-    # the template's cage-element radius is the 6208's: the 6205's elements are estimated from its pockets
-    text = "\n".join(line for line in path.read_text().splitlines() if not line.startswith("ball_radius"))
-    path.write_text(text + "\n")
-    return path
 
 
 def kinematic_frequencies(shaft, ftf, bsf, Z):
@@ -67,11 +56,11 @@ def is_line(spectrum, i, threshold):
 
 
 @pytest.mark.parametrize("load", [500.0, 1000.0, 2000.0])
-def test_healthy_bearing_spectrum_has_only_bearing_frequencies(bearing_6205, load):
+def test_healthy_bearing_spectrum_has_only_bearing_frequencies(cwru_6205, load):
     """CWRU 6205 at 1 797 rpm, 500/1 000/2 000 N radial, 9 s of the ring's displacement: every tonal line above
     5 % of the BPFO line is a shaft, cage, ball-spin or ball-pass frequency, harmonic or sideband, and the BPFO
     line is the largest above the cage harmonics (with independent cage elements a 21.3 Hz line reached 36-89 %)."""
-    model = DemModel(str(bearing_6205), "guessasma_oil")
+    model = DemModel(str(cwru_6205), "guessasma_oil")
     model.advance(5e-3, omega=0.0, F_y=load)
     for k in range(1, 21):
         model.advance(5e-3 + 10e-3 * k / 20, omega=SPEED * k / 20, F_y=load)
