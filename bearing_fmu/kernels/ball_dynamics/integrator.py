@@ -23,7 +23,7 @@ from bearing_fmu_common.jit import kernel
 from ..capacitance import ball_capacitance
 from ..lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
 from .cage import ball_cage_contact, cage_guide_contact
-from .contacts import ball_race_contact
+from .contacts import ball_race_contact, groove_approach
 from .monitor import damping_step_ratio, kinetic_energy
 from .state import (
     A_CAP,
@@ -123,6 +123,7 @@ from .state import (
     W_DISS,
     W_FB,
     W_FC,
+    W_GEOM,
     W_LOADED,
     W_MB,
     W_ORBIT,
@@ -293,8 +294,6 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
             cx,
             cy,
             cz,
-            rho,
-            par[P_RG_I + race],
             par[P_KH_I + race],
             ax,
             ay,
@@ -305,10 +304,22 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
         inv_lim = 1.0 / par[P_DELTA_LIM_I + race]
         row = S_INNER + S_STRIDE * race
         power = 0.0
+        # the approaches and normals first, in a loop of their own (contacts.ball_race_contact says why)
+        geo = W_GEOM + 4 * race
+        rg = par[P_RG_I + race]
+        for j in range(Z):
+            delta, nx, ny, nz = groove_approach(
+                balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, ax, ay, az, rho, rg
+            )
+            work[geo, j] = delta
+            work[geo + 1, j] = nx
+            work[geo + 2, j] = ny
+            work[geo + 3, j] = nz
         for j in range(Z):
             delta, fx, fy, fz, mx, my, mz, sx, sy, sz, slipping, reversed_, p, dtx, dty, dtz, rcx, rcy, rcz = (
                 ball_race_contact(
                     race,
+                    (work[geo, j], work[geo + 1, j], work[geo + 2, j], work[geo + 3, j]),
                     balls[B_X, j],
                     balls[B_X + 1, j],
                     balls[B_X + 2, j],
