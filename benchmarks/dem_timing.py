@@ -210,8 +210,9 @@ def _refreshes(n, balls, ring, par, trib, lub):
     K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF])
     tc = np.empty((TC_SIZE, 2))
     tribology_constants(par, eta, xi, tc)
+    geo = np.empty((4, balls.shape[1]))
     for _ in range(n):
-        refresh_tribology(OMEGA, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
+        refresh_tribology(OMEGA, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, geo)
 
 
 def profile(model, n=20000):

@@ -544,7 +544,7 @@ def initialise_accelerations(
     K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF])
     tc = np.empty((TC_SIZE, 2))
     tribology_constants(par, eta, xi, tc)
-    refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
+    refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, np.empty((4, balls.shape[1])))
     # a step of zero length: positions and velocities stay, the accelerations become those of the forces
     saved = spring.copy()
     verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, M_x, M_y, 0.0, work, acc)
@@ -594,6 +594,7 @@ def advance(
     tc = np.empty((TC_SIZE, 2))
     tribology_constants(par, eta, xi, tc)
     Z = balls.shape[1]
+    geo = np.empty((4, Z))  # refresh_tribology's scratch
     refresh = max(int(par[P_REFRESH]), 1)
     chatter_limit = int(par[P_CHATTER])
     damping_stop = par[P_DAMPING_STOP]
@@ -619,7 +620,7 @@ def advance(
     for n in range(n_steps):
         if countdown == 0:
             countdown = refresh
-            refresh_tribology(omega0 + d_omega * n, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
+            refresh_tribology(omega0 + d_omega * n, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, geo)
             film_i = 0.0
             film_o = 0.0
             for j in range(Z):
