@@ -284,6 +284,25 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
     )
     mu_lim = par[P_MU_LIM]
     kappa = par[P_FILM_RATE] * dt / par[P_M_BALL]  # slip (m/s) a newton removes from a ball's contacts in a step
+    # the approaches and normals of both races first, in a loop of their own (contacts.ball_race_contact says why)
+    cxi, cyi, czi, axi, ayi, azi, rhoi = race_circle(0, ring, par)
+    cxo, cyo, czo, axo, ayo, azo, rhoo = race_circle(1, ring, par)
+    rgi = par[P_RG_I]
+    rgo = par[P_RG_I + 1]
+    for j in range(Z):
+        px = balls[B_X, j]
+        py = balls[B_X + 1, j]
+        pz = balls[B_X + 2, j]
+        delta, nx, ny, nz = groove_approach(px, py, pz, cxi, cyi, czi, axi, ayi, azi, rhoi, rgi)
+        work[W_GEOM, j] = delta
+        work[W_GEOM + 1, j] = nx
+        work[W_GEOM + 2, j] = ny
+        work[W_GEOM + 3, j] = nz
+        delta, nx, ny, nz = groove_approach(px, py, pz, cxo, cyo, czo, axo, ayo, azo, rhoo, rgo)
+        work[W_GEOM + 4, j] = delta
+        work[W_GEOM + 5, j] = nx
+        work[W_GEOM + 6, j] = ny
+        work[W_GEOM + 7, j] = nz
     for race in range(2):
         cx, cy, cz, ax, ay, az, rho = race_circle(race, ring, par)
         frame = (
@@ -304,17 +323,7 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
         inv_lim = 1.0 / par[P_DELTA_LIM_I + race]
         row = S_INNER + S_STRIDE * race
         power = 0.0
-        # the approaches and normals first, in a loop of their own (contacts.ball_race_contact says why)
         geo = W_GEOM + 4 * race
-        rg = par[P_RG_I + race]
-        for j in range(Z):
-            delta, nx, ny, nz = groove_approach(
-                balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, ax, ay, az, rho, rg
-            )
-            work[geo, j] = delta
-            work[geo + 1, j] = nx
-            work[geo + 2, j] = ny
-            work[geo + 3, j] = nz
         for j in range(Z):
             delta, fx, fy, fz, mx, my, mz, sx, sy, sz, slipping, reversed_, p, dtx, dty, dtz, rcx, rcy, rcz = (
                 ball_race_contact(
