@@ -197,7 +197,8 @@ def _cage_contacts(n, balls, cage, par, work):
     return total
 
 
-@njit
+# verlet_step is inlined into its caller and compiled with the caller's error model: advance's (numpy), as here
+@njit(error_model="numpy")
 def _steps(n, balls, cage, ring, spring, trib, counters, par, work, acc, dt):
     """n Verlet steps from the state (the tribology frozen: the contact law only)."""
     for _ in range(n):
