@@ -29,7 +29,7 @@ from numba import njit
 from bearing_fmu.kernels.ball_dynamics import integrator as dyn
 from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.kernels.ball_dynamics.cage import ball_cage_contact, cage_guide_contact
-from bearing_fmu.kernels.ball_dynamics.contacts import ball_race_contact
+from bearing_fmu.kernels.ball_dynamics.contacts import ball_race_contact, groove_approach
 from bearing_fmu.kernels.ball_dynamics.tribology import TC_SIZE, race_circle, refresh_tribology, tribology_constants
 from bearing_fmu.kernels.lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
 from bearing_fmu.models.dem import REFRESH_INTERVAL, DemModel
@@ -135,8 +135,8 @@ def side_by_side(base_tree, configurations, steps=STEPS, repeats=REPEATS):
 
 @njit
 def _race_contacts(n, balls, ring, spring, trib, par, work, acc, dt):
-    """n passes of the 18 ball-race contact laws (contacts.ball_race_contact) on one state, results summed
-    (the state is not written: every pass sees the same contacts)."""
+    """n passes of the 18 ball-race contact laws (contacts.groove_approach, contacts.ball_race_contact) on one state,
+    results summed (the state is not written: every pass sees the same contacts)."""
     total = 0.0
     steps = (0.5 * par[s.P_D], par[s.P_ALPHA_E], par[s.P_KT_RATIO], 4.0 * dt / par[s.P_I_BALL],
              2.0 * par[s.P_V_REG] / par[s.P_D], dt)  # fmt: skip
@@ -144,17 +144,28 @@ def _race_contacts(n, balls, ring, spring, trib, par, work, acc, dt):
     for _ in range(n):
         for race in range(2):
             cx, cy, cz, ax, ay, az, rho = race_circle(race, ring, par)
-            frame = (OMEGA, acc[s.A_VR], acc[s.A_VR + 1], acc[s.A_VR + 2], cx, cy, cz, rho, par[s.P_RG_I + race],
-                     par[s.P_KH_I + race], ax, ay, az, acc[s.A_WR], acc[s.A_WR + 1])  # fmt: skip
+            frame = (OMEGA, acc[s.A_VR], acc[s.A_VR + 1], acc[s.A_VR + 2], cx, cy, cz, par[s.P_KH_I + race], ax, ay,
+                     az, acc[s.A_WR], acc[s.A_WR + 1])  # fmt: skip
             row = 3 * race
+            geo = s.W_GEOM + 4 * race
+            for j in range(balls.shape[1]):
+                delta, nx, ny, nz = groove_approach(
+                    balls[s.B_X, j], balls[s.B_X + 1, j], balls[s.B_X + 2, j], cx, cy, cz, ax, ay, az, rho,
+                    par[s.P_RG_I + race],
+                )  # fmt: skip
+                work[geo, j] = delta
+                work[geo + 1, j] = nx
+                work[geo + 2, j] = ny
+                work[geo + 3, j] = nz
             for j in range(balls.shape[1]):
                 result = ball_race_contact(
-                    race, balls[s.B_X, j], balls[s.B_X + 1, j], balls[s.B_X + 2, j], work[s.W_VB, j],
-                    work[s.W_VB + 1, j], work[s.W_VB + 2, j], work[s.W_WB, j], work[s.W_WB + 1, j],
-                    work[s.W_WB + 2, j], work[s.W_ORBIT, j], spring[row, j], spring[row + 1, j], spring[row + 2, j],
-                    trib[s.T_MU, race, j], int(trib[s.T_REGIME, race, j]), trib[s.T_C_N, race, j],
-                    trib[s.T_F_ROLL, race, j], trib[s.T_M_SPIN, race, j],
-                    (trib[s.T_PHI, race, j], trib[s.T_SLIP, race, j], par[s.P_MU_LIM], kappa), frame, steps,
+                    race, (work[geo, j], work[geo + 1, j], work[geo + 2, j], work[geo + 3, j]), balls[s.B_X, j],
+                    balls[s.B_X + 1, j], balls[s.B_X + 2, j], work[s.W_VB, j], work[s.W_VB + 1, j],
+                    work[s.W_VB + 2, j], work[s.W_WB, j], work[s.W_WB + 1, j], work[s.W_WB + 2, j], work[s.W_ORBIT, j],
+                    spring[row, j], spring[row + 1, j], spring[row + 2, j], trib[s.T_MU, race, j],
+                    int(trib[s.T_REGIME, race, j]), trib[s.T_C_N, race, j], trib[s.T_F_ROLL, race, j],
+                    trib[s.T_M_SPIN, race, j], (trib[s.T_PHI, race, j], trib[s.T_SLIP, race, j], par[s.P_MU_LIM], kappa),
+                    frame, steps,
                 )  # fmt: skip
                 total += result[1] + result[4] + result[12]
     return total
@@ -186,7 +197,8 @@ def _cage_contacts(n, balls, cage, par, work):
     return total
 
 
-@njit
+# verlet_step is inlined into its caller and compiled with the caller's error model: advance's (numpy), as here
+@njit(error_model="numpy")
 def _steps(n, balls, cage, ring, spring, trib, counters, par, work, acc, dt):
     """n Verlet steps from the state (the tribology frozen: the contact law only)."""
     for _ in range(n):
@@ -199,8 +211,9 @@ def _refreshes(n, balls, ring, par, trib, lub):
     K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF])
     tc = np.empty((TC_SIZE, 2))
     tribology_constants(par, eta, xi, tc)
+    geo = np.empty((4, balls.shape[1]))
     for _ in range(n):
-        refresh_tribology(OMEGA, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
+        refresh_tribology(OMEGA, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, geo)
 
 
 def profile(model, n=20000):

@@ -385,7 +385,7 @@ def step(st, par, omega, F_ring, dt):
     ring[s.R_TIME] += dt
     st["counters"][s.K_STEP] += 1
     # velocity Verlet pairs the step's forces with the velocities it ends with (the kernel's
-    # integrator.slip_power_at_step_end says why the predicted ones are not used)
+    # integrator.slip_power_correction says why the predicted ones are not used)
     return power + slip_power(st, par, omega, slips)
 
 

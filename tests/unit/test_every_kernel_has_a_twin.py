@@ -171,7 +171,7 @@ COVERED_THROUGH = {
     BD + "cage.cage_guide_contact": (BD + "integrator.verlet_step", "cage ball - channel contacts of a step"),
     BD + "cage.damped_hertz": (BD + "cage.ball_cage_contact", "the damped Hertz law of both cage contacts"),
     BD + "integrator.rigid_cage_torque": (BD + "integrator.verlet_step", "the cage's torque shared by its elements"),
-    BD + "integrator.slip_power_at_step_end": (
+    BD + "integrator.slip_power_correction": (
         BD + "integrator.verlet_step",
         "the slip power at the velocities a step ends with, in the dissipated energy compared every step (the twin "
         "evaluates it from the end velocities directly, ref_ball_dynamics.slip_power)",

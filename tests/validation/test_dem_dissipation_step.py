@@ -6,7 +6,7 @@ Verlet then carry a step-to-step oscillation of the slip that the motion itself 
 forces on the rings) does not have. Booked at the predicted slip, the film's power was spurious: the 6208 below
 read 0.371 N.m at the default step against 0.304 N.m at 0.25 us (22 % high), and 29 % high at 3 kN with 1.6 x the
 automatic step, with no monitor stop. It is booked with the slip the step ends with (docs/dem.md, Choice of the
-defaults; integrator.slip_power_at_step_end).
+defaults; integrator.slip_power_correction).
 
 Reference: the same model at 0.25 us, tribology every step (the step study's reference scale,
 docs/reports/dem_steps.md: a tenth of the automatic step). Tolerance 1e-3: the step study measured the torque at

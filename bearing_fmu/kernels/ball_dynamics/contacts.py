@@ -133,6 +133,7 @@ def tangential_spring(ox, oy, oz, nx, ny, nz, vtx, vty, vtz, dt, kt, f_limit):
 @kernel(inline="always")
 def ball_race_contact(
     race,
+    geometry,
     px,
     py,
     pz,
@@ -157,6 +158,12 @@ def ball_race_contact(
 ):
     """Forces of the contact of a ball with one race.
 
+    geometry = (delta, nx, ny, nz): the contact's approach (m) and unit normal, groove_approach of the ball's centre.
+    Why the caller evaluates it for all the balls of a race first: it is a chain of two square roots and a division,
+    each waiting for the one before; in a loop of its own the chains of different balls are independent and the
+    processor overlaps them, where inside the contact law they would run one after another (the step's ball-race
+    contacts took a sixth less time).
+
     race 0 inner (turning at omega about its axis a through its centre c, tilting at (wtx, wty) about x and y,
     translating at (vrx0, vry0, vrz0)),
     1 outer (fixed). Ball: centre (px, py, pz) (m), predicted velocity v (m/s) and angular velocity w (rad/s),
@@ -165,9 +172,9 @@ def ball_race_contact(
     moment m_s (N.m). film = (phi (-), slip = 1/v_s (s/m), mu_lim (-), kappa (s/kg)): the film's share of
     the tangential force, its traction curve mu_lim (1 - exp(-v_t / v_s)) (ehl.film_slip_speed) and the slip a
     newton removes from the ball's two contacts in a step (7 dt / m), for the curve's implicit evaluation.
-    frame = (omega (rad/s), vrx0, vry0, vrz0 (m/s), cx, cy, cz, rho, rg (m), K_h (N/m^1.5), ax, ay, az (-), wtx, wty
-    (rad/s)): the race's motion, its groove's curvature-centre circle (centre c, axis a, radius rho), (f - 1/2) D,
-    Hertz constant and tilt rates. steps = (half_d
+    frame = (omega (rad/s), vrx0, vry0, vrz0 (m/s), cx, cy, cz (m), K_h (N/m^1.5), ax, ay, az (-), wtx, wty (rad/s)):
+    the race's motion, the centre c of its groove's curvature-centre circle and its axis a, Hertz constant and tilt
+    rates. steps = (half_d
     = D/2 (m), alpha_e (s/m), kt_ratio (-), rate_inv = 4 dt / I (1/(N.m.s)), the inverse of the largest viscous
     rate of a regularised moment, w_reg = v_reg / (D/2) (rad/s), dt (s)). (Tuples keep the argument count
     within what numba's IR inliner takes.)
@@ -180,9 +187,9 @@ def ball_race_contact(
     point from the ball's centre (m): with them the integrator books the slip's power at the velocities the step
     ends with (integrator.verlet_step says why).
     """
-    omega, vrx0, vry0, vrz0, cx, cy, cz, rho, rg, K_h, ax, ay, az, wtx, wty = frame
+    omega, vrx0, vry0, vrz0, cx, cy, cz, K_h, ax, ay, az, wtx, wty = frame
     half_d, alpha_e, kt_ratio, rate_inv, w_reg, dt = steps
-    delta, nx, ny, nz = groove_approach(px, py, pz, cx, cy, cz, ax, ay, az, rho, rg)
+    delta, nx, ny, nz = geometry
     if delta <= 0.0:  # open: the spring and the chatter count start again at the next touch
         return delta, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, False, False, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
     root = math.sqrt(delta)

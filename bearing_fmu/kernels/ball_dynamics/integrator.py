@@ -23,7 +23,7 @@ from bearing_fmu_common.jit import kernel
 from ..capacitance import ball_capacitance
 from ..lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
 from .cage import ball_cage_contact, cage_guide_contact
-from .contacts import ball_race_contact
+from .contacts import ball_race_contact, groove_approach
 from .monitor import damping_step_ratio, kinetic_energy
 from .state import (
     A_CAP,
@@ -123,6 +123,7 @@ from .state import (
     W_DISS,
     W_FB,
     W_FC,
+    W_GEOM,
     W_LOADED,
     W_MB,
     W_ORBIT,
@@ -192,58 +193,30 @@ def sample_refresh(trib, acc):
     acc[A_SAMPLES] += 1.0
 
 
-@kernel(inline="always")  # called once per step from verlet_step: no array-passing call
-def slip_power_at_step_end(balls, ring, par, work, acc):
-    """Book the power of the contacts' dissipating tangential forces (work[W_DISS], N, at the contact points
-    work[W_ARM], m) with the slip velocity the step ends with: add -D . (v_slip(n+1) - v_slip*) to
-    acc[A_POWER_I + race], the contact loop having booked -D . v_slip* at the predicted velocities.
+@kernel(inline="always")
+def slip_power_correction(Dx, Dy, Dz, rx, ry, rz, dvx, dvy, dvz, dwx, dwy, dwz, dsx, dsy, dsz):
+    """Correction (W) to the power of one contact's dissipating tangential force (Dx, Dy, Dz) (N, on the ball, at
+    the contact point (rx, ry, rz) from its centre, m), booked at the predicted velocities, for the slip velocity the
+    step ends with: -D . (dv + dw x r - ds), dv (m/s) and dw (rad/s) the changes of the ball's velocity and angular
+    velocity from the predicted ones to the step's end, ds (m/s) that of the race surface at the contact point.
 
     Why: velocity Verlet pairs the force of step n+1 with the velocities v(n+1) in its energy balance. The
     predicted velocities v* = v(n) + a(n) dt carry, at a stiff film traction (slope dF/dv up to ~1e4 N.s/m), an
     oscillation from step to step that v(n+1) does not: the forces and the motion converge with the step, but
     the film's power booked at v* came out 20 % of the whole loss too high on the 6208 at 6 kN, 500 rad/s at the
     default step (docs/dem.md, Choice of the defaults)."""
-    Z = balls.shape[1]
-    cx, cy, cz, _, _, _, _ = race_circle(0, ring, par)
-    # the inner race's surface velocity changes with the ring's translation and tilt rates (its speed is given)
-    dvrx = ring[R_VX] - acc[A_VR]
-    dvry = ring[R_VX + 1] - acc[A_VR + 1]
-    dvrz = ring[R_VX + 2] - acc[A_VR + 2]
-    dwrx = ring[R_VTH] - acc[A_WR]
-    dwry = ring[R_VTH + 1] - acc[A_WR + 1]
-    for race in range(2):
-        d = 3 * race
-        correction = 0.0
-        for j in range(Z):
-            Dx = work[W_DISS + d, j]
-            Dy = work[W_DISS + d + 1, j]
-            Dz = work[W_DISS + d + 2, j]
-            if Dx == 0.0 and Dy == 0.0 and Dz == 0.0:
-                continue
-            rx = work[W_ARM + d, j]
-            ry = work[W_ARM + d + 1, j]
-            rz = work[W_ARM + d + 2, j]
-            dwx = balls[B_WX, j] - work[W_WB, j]
-            dwy = balls[B_WX + 1, j] - work[W_WB + 1, j]
-            dwz = balls[B_WX + 2, j] - work[W_WB + 2, j]
-            dvx = balls[B_VX, j] - work[W_VB, j] + dwy * rz - dwz * ry
-            dvy = balls[B_VX + 1, j] - work[W_VB + 1, j] + dwz * rx - dwx * rz
-            dvz = balls[B_VX + 2, j] - work[W_VB + 2, j] + dwx * ry - dwy * rx
-            if race == 0:
-                lx = balls[B_X, j] + rx - cx
-                ly = balls[B_X + 1, j] + ry - cy
-                lz = balls[B_X + 2, j] + rz - cz
-                dvx -= dvrx + dwry * lz  # the ring's translation and (tilt rates, 0) x l
-                dvy -= dvry - dwrx * lz
-                dvz -= dvrz + dwrx * ly - dwry * lx
-            correction -= Dx * dvx + Dy * dvy + Dz * dvz
-        acc[A_POWER_I + race] += correction
+    ux = dvx + dwy * rz - dwz * ry - dsx
+    uy = dvy + dwz * rx - dwx * rz - dsy
+    uz = dvz + dwx * ry - dwy * rx - dsz
+    return -(Dx * ux + Dy * uy + Dz * uz)
 
 
 # error_model="numpy": a division by zero gives inf or NaN, which the monitor stops as a non-finite force, instead
 # of a ZeroDivisionError; no division here can meet a zero divisor in a valid state (the contacts guard theirs), and
-# without a check and an exception path per division (26 of them) the step runs about 10 % faster
-@kernel(error_model="numpy")
+# without a check and an exception path per division (26 of them) the step runs about 10 % faster. Inlined into its
+# callers (which take the same error model: the inlined code is compiled with the caller's): a call that passes the
+# nine state arrays costs two atomic reference-count updates per array, about 5 % of a step.
+@kernel(error_model="numpy", inline="always")
 def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, M_x, M_y, dt, work, acc):
     """One velocity-Verlet step of every body (see the module docstring) at inner-ring speed omega (rad/s) and
     loads F_x, F_y, F_z (N), M_x, M_y (N.m, about its centre) on the inner ring.
@@ -311,6 +284,25 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
     )
     mu_lim = par[P_MU_LIM]
     kappa = par[P_FILM_RATE] * dt / par[P_M_BALL]  # slip (m/s) a newton removes from a ball's contacts in a step
+    # the approaches and normals of both races first, in a loop of their own (contacts.ball_race_contact says why)
+    cxi, cyi, czi, axi, ayi, azi, rhoi = race_circle(0, ring, par)
+    cxo, cyo, czo, axo, ayo, azo, rhoo = race_circle(1, ring, par)
+    rgi = par[P_RG_I]
+    rgo = par[P_RG_I + 1]
+    for j in range(Z):
+        px = balls[B_X, j]
+        py = balls[B_X + 1, j]
+        pz = balls[B_X + 2, j]
+        delta, nx, ny, nz = groove_approach(px, py, pz, cxi, cyi, czi, axi, ayi, azi, rhoi, rgi)
+        work[W_GEOM, j] = delta
+        work[W_GEOM + 1, j] = nx
+        work[W_GEOM + 2, j] = ny
+        work[W_GEOM + 3, j] = nz
+        delta, nx, ny, nz = groove_approach(px, py, pz, cxo, cyo, czo, axo, ayo, azo, rhoo, rgo)
+        work[W_GEOM + 4, j] = delta
+        work[W_GEOM + 5, j] = nx
+        work[W_GEOM + 6, j] = ny
+        work[W_GEOM + 7, j] = nz
     for race in range(2):
         cx, cy, cz, ax, ay, az, rho = race_circle(race, ring, par)
         frame = (
@@ -321,8 +313,6 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
             cx,
             cy,
             cz,
-            rho,
-            par[P_RG_I + race],
             par[P_KH_I + race],
             ax,
             ay,
@@ -333,10 +323,12 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
         inv_lim = 1.0 / par[P_DELTA_LIM_I + race]
         row = S_INNER + S_STRIDE * race
         power = 0.0
+        geo = W_GEOM + 4 * race
         for j in range(Z):
             delta, fx, fy, fz, mx, my, mz, sx, sy, sz, slipping, reversed_, p, dtx, dty, dtz, rcx, rcy, rcz = (
                 ball_race_contact(
                     race,
+                    (work[geo, j], work[geo + 1, j], work[geo + 2, j], work[geo + 3, j]),
                     balls[B_X, j],
                     balls[B_X + 1, j],
                     balls[B_X + 2, j],
@@ -454,28 +446,8 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
         work[W_FC + 1, k] += fy
         work[W_FC + 2, k] += fz
     rigid_cage_torque(cage, work)
-    # a NaN or inf anywhere (positions, velocities, springs) reaches the contact forces within a step;
-    # the moments follow from the same quantities
-    total = acc[A_FR] + acc[A_FR + 1] + acc[A_FR + 2] + acc[A_MR] + acc[A_MR + 1]
-    for j in range(Z):
-        total += work[W_FB, j] + work[W_FB + 1, j] + work[W_FB + 2, j] + work[W_FC, j] + work[W_FC + 1, j]
-        total += work[W_FC + 2, j]
     # ---- corrector: new accelerations and velocities
     half = 0.5 * dt
-    inv_m = 1.0 / par[P_M_BALL]
-    inv_i = 1.0 / par[P_I_BALL]
-    inv_c = 1.0 / par[P_M_CAGE]
-    for j in range(Z):
-        for i in range(3):
-            a = work[W_FB + i, j] * inv_m
-            balls[B_VX + i, j] += (balls[B_AX + i, j] + a) * half
-            balls[B_AX + i, j] = a
-            a = work[W_MB + i, j] * inv_i
-            balls[B_WX + i, j] += (balls[B_ALX + i, j] + a) * half
-            balls[B_ALX + i, j] = a
-            a = work[W_FC + i, j] * inv_c
-            cage[C_VX + i, j] += (cage[C_AX + i, j] + a) * half
-            cage[C_AX + i, j] = a
     # the ring's support across the axis (the shaft it sits on): a spring to its rest position and a damper on the
     # predicted velocity in x and y; axially the bearing alone holds the ring
     inv_r = 1.0 / par[P_M_RING]
@@ -504,13 +476,74 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
     a *= inv_d
     ring[R_VTH + 1] += (ring[R_ATH + 1] + a) * half
     ring[R_ATH + 1] = a
-    slip_power_at_step_end(balls, ring, par, work, acc)
+    # the contacts' slip power at the velocities the step ends with (slip_power_correction), in the balls' loop:
+    # the inner race's surface velocity changes with the ring's translation and tilt rates (its speed is given)
+    dvrx = ring[R_VX] - acc[A_VR]
+    dvry = ring[R_VX + 1] - acc[A_VR + 1]
+    dvrz = ring[R_VX + 2] - acc[A_VR + 2]
+    dwrx = ring[R_VTH] - acc[A_WR]
+    dwry = ring[R_VTH + 1] - acc[A_WR + 1]
+    cx, cy, cz, _, _, _, _ = race_circle(0, ring, par)
+    correction_i = 0.0
+    correction_o = 0.0
+    # a NaN or inf anywhere (positions, velocities, springs) reaches the contact forces within a step; the moments
+    # follow from the same quantities. The sum only feeds the finiteness check, so it is taken in the loop that
+    # reads the forces anyway, in an order that keeps the additions' chain short.
+    total = fr_x + fr_y + fr_z + mr_x + mr_y
+    inv_m = 1.0 / par[P_M_BALL]
+    inv_i = 1.0 / par[P_I_BALL]
+    inv_c = 1.0 / par[P_M_CAGE]
+    for j in range(Z):
+        for i in range(3):
+            f = work[W_FB + i, j]
+            f_c = work[W_FC + i, j]
+            total += f + f_c
+            a = f * inv_m
+            balls[B_VX + i, j] += (balls[B_AX + i, j] + a) * half
+            balls[B_AX + i, j] = a
+            a = work[W_MB + i, j] * inv_i
+            balls[B_WX + i, j] += (balls[B_ALX + i, j] + a) * half
+            balls[B_ALX + i, j] = a
+            a = f_c * inv_c
+            cage[C_VX + i, j] += (cage[C_AX + i, j] + a) * half
+            cage[C_AX + i, j] = a
+        dwx = balls[B_WX, j] - work[W_WB, j]
+        dwy = balls[B_WX + 1, j] - work[W_WB + 1, j]
+        dwz = balls[B_WX + 2, j] - work[W_WB + 2, j]
+        dvx = balls[B_VX, j] - work[W_VB, j]
+        dvy = balls[B_VX + 1, j] - work[W_VB + 1, j]
+        dvz = balls[B_VX + 2, j] - work[W_VB + 2, j]
+        Dx = work[W_DISS, j]
+        Dy = work[W_DISS + 1, j]
+        Dz = work[W_DISS + 2, j]
+        if Dx != 0.0 or Dy != 0.0 or Dz != 0.0:
+            rx = work[W_ARM, j]
+            ry = work[W_ARM + 1, j]
+            rz = work[W_ARM + 2, j]
+            lx = balls[B_X, j] + rx - cx
+            ly = balls[B_X + 1, j] + ry - cy
+            lz = balls[B_X + 2, j] + rz - cz
+            # the race surface: the ring's translation and (tilt rates, 0) x l at the contact point
+            correction_i += slip_power_correction(
+                Dx, Dy, Dz, rx, ry, rz, dvx, dvy, dvz, dwx, dwy, dwz, dvrx + dwry * lz, dvry - dwrx * lz,
+                dvrz + dwrx * ly - dwry * lx,
+            )  # fmt: skip
+        Dx = work[W_DISS + 3, j]
+        Dy = work[W_DISS + 4, j]
+        Dz = work[W_DISS + 5, j]
+        if Dx != 0.0 or Dy != 0.0 or Dz != 0.0:
+            correction_o += slip_power_correction(
+                Dx, Dy, Dz, work[W_ARM + 3, j], work[W_ARM + 4, j], work[W_ARM + 5, j], dvx, dvy, dvz, dwx, dwy, dwz,
+                0.0, 0.0, 0.0,
+            )  # fmt: skip
+    acc[A_POWER_I] += correction_i
+    acc[A_POWER_O] += correction_o
     ring[R_TIME] += dt
     counters[K_STEP] += 1
     return worst_pen, worst_pen_at, worst_chat, worst_chat_at, total
 
 
-@kernel
+@kernel(error_model="numpy")  # (verlet_step is inlined: its error model)
 def initialise_accelerations(
     balls, cage, ring, spring, trib, counters, par, lub, omega, F_x, F_y, F_z, M_x, M_y, T_oil, work, acc
 ):
@@ -520,7 +553,7 @@ def initialise_accelerations(
     K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF])
     tc = np.empty((TC_SIZE, 2))
     tribology_constants(par, eta, xi, tc)
-    refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
+    refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, np.empty((4, balls.shape[1])))
     # a step of zero length: positions and velocities stay, the accelerations become those of the forces
     saved = spring.copy()
     verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, M_x, M_y, 0.0, work, acc)
@@ -528,7 +561,7 @@ def initialise_accelerations(
     counters[K_STEP] -= 1  # not a step: the refresh phase stays
 
 
-@kernel
+@kernel(error_model="numpy")  # (verlet_step is inlined: its error model)
 def advance(
     balls,
     cage,
@@ -570,6 +603,7 @@ def advance(
     tc = np.empty((TC_SIZE, 2))
     tribology_constants(par, eta, xi, tc)
     Z = balls.shape[1]
+    geo = np.empty((4, Z))  # refresh_tribology's scratch
     refresh = max(int(par[P_REFRESH]), 1)
     chatter_limit = int(par[P_CHATTER])
     damping_stop = par[P_DAMPING_STOP]
@@ -595,7 +629,7 @@ def advance(
     for n in range(n_steps):
         if countdown == 0:
             countdown = refresh
-            refresh_tribology(omega0 + d_omega * n, eta, xi, K_cm, rho0, balls, ring, par, trib, tc)
+            refresh_tribology(omega0 + d_omega * n, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, geo)
             film_i = 0.0
             film_o = 0.0
             for j in range(Z):

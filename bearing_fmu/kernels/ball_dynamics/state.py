@@ -206,7 +206,8 @@ W_LOADED = 19  # races on which each ball is loaded in the current step (0, 1, 2
 W_CAP_BALL = 20  # each ball's capacitance at the last refresh, inner and outer contact in series (F)
 W_DISS = 21  # tangential force on each ball that dissipates at its contacts (N), 3 rows per race (inner 21-23)
 W_ARM = 27  # contact point from the ball's centre (m), 3 rows per race (inner 27-29)
-W_SIZE = 33
+W_GEOM = 33  # approach (m) and unit normal of each ball-race contact (contacts.groove_approach), 4 rows per race
+W_SIZE = 41
 
 # ---- scalar work of one step: float64[A_SIZE] -----------------------------------------------------
 A_FR = 0  # force on the inner ring (N), 3 entries

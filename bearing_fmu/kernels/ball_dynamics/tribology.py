@@ -170,12 +170,13 @@ def tribology_constants(par, eta, xi, tc):
 
 
 @kernel
-def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
+def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, geo):
     """Recompute trib[:, race, ball] of every ball-race contact from the current state (positions and
     velocities at a step).
 
     omega: inner-ring speed (rad/s); eta (Pa.s), xi (1/Pa), K_cm (m^3/kg), rho0 (kg/m^3): lubricant
-    state; tc: its power-law constants (tribology_constants).
+    state; tc: its power-law constants (tribology_constants); geo: float64[4, Z], scratch for the contacts' approaches
+    and normals.
     """
     E_red = par[P_E_RED]
     D = par[P_D]
@@ -213,11 +214,24 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc):
         ln_fr = tc[TC_LN_FR, race]
         ln_hmin = tc[TC_LN_HMIN, race]
         ln_hc = tc[TC_LN_HC, race]
+        # the approaches and normals first, in a loop of their own: each is a chain of two square roots and a
+        # division that the processor overlaps between the balls in a short loop, not inside the long one below
+        for j in range(balls.shape[1]):
+            delta, nx, ny, nz = groove_approach(
+                balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j], cx, cy, cz, ax, ay, az, rho, rg
+            )
+            geo[0, j] = delta
+            geo[1, j] = nx
+            geo[2, j] = ny
+            geo[3, j] = nz
         for j in range(balls.shape[1]):
             px = balls[B_X, j]
             py = balls[B_X + 1, j]
             pz = balls[B_X + 2, j]
-            delta, nx, ny, nz = groove_approach(px, py, pz, cx, cy, cz, ax, ay, az, rho, rg)
+            delta = geo[0, j]
+            nx = geo[1, j]
+            ny = geo[2, j]
+            nz = geo[3, j]
             if delta <= 0.0:
                 for t in range(T_SIZE):
                     trib[t, race, j] = 0.0
