@@ -43,6 +43,7 @@ from .ehl import (
     film_thickness,
     friction_coefficient,
 )
+from .elimination import gauss_solve
 from .torque import heathcote_force, houpert_rolling_force, hysteresis_force, spin_moment
 
 # layout of the traction block (at the offset the quasi-static array gives it): per race, inner then outer
@@ -511,31 +512,10 @@ def rolling_start(a_i, a_o, omega, D, dm, y):
 def _solve4(A, M, n):
     """Solve A[:4, :4] X = B for the n right-hand sides B in M[:, 4 : 4 + n] (M: 4 x (4 + n) work, A copied into
     its first four columns) by Gaussian elimination with partial pivoting; X replaces B. False if singular."""
-    m = 4 + n
     for r in range(4):
         for c in range(4):
             M[r, c] = A[r, c]
-    for k in range(4):
-        piv = k
-        for i in range(k + 1, 4):
-            if abs(M[i, k]) > abs(M[piv, k]):
-                piv = i
-        if M[piv, k] == 0.0 or not math.isfinite(M[piv, k]):
-            return False
-        if piv != k:
-            for c in range(m):
-                M[k, c], M[piv, c] = M[piv, c], M[k, c]
-        for i in range(k + 1, 4):
-            f = M[i, k] / M[k, k]
-            for c in range(k, m):
-                M[i, c] -= f * M[k, c]
-    for c in range(4, m):
-        for k in range(3, -1, -1):
-            s = M[k, c]
-            for j in range(k + 1, 4):
-                s -= M[k, j] * M[j, c]
-            M[k, c] = s / M[k, k]
-    return True
+    return gauss_solve(M, 4, 4 + n)
 
 
 @kernel

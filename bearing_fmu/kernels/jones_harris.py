@@ -36,6 +36,7 @@ import numpy as np
 
 from bearing_fmu_common.jit import kernel
 
+from .ball_coupled_newton import ball_contacts, coupled_newton, coupled_work
 from .ball_traction import (
     TE_FTAU_I,
     TE_FTAU_O,
@@ -335,11 +336,16 @@ def _traction_grad(a_i, a_o, Q_i, Q_o, omega, dm, D, m_ball, cen, tw, g):
     of lam M_g / D). tw = (tr, y, out, Dy, dout, terms, dydp, p, ws) (traction_work): the traction block, y (4,
     rad/s) the ball's kinematics, warm start and solution, the solver's work, and the derivatives dy/dp at the last
     contacts p of the same ball (p[2] = 0: none), from which the next solve of the ball starts. A solve that does
-    not converge gives NaN."""
-    tr, y, out, Dy, dout, terms, dydp, p, ws = tw
+    not converge gives NaN. Where the coupled Newton (kernels.ball_coupled_newton) has just converged at these
+    contacts, its last evaluation (out, Dy, dout and terms, at y) is the solve's, verified there to the same
+    tolerance, and is taken as it is."""
+    tr, y, out, Dy, dout, terms, dydp, p, ws = tw[:9]
     J = 0.1 * m_ball * D * D  # the ball's own balance: its gyroscopic moment whatever the hypotheses' option
     y0, y1, y2, y3 = y[0], y[1], y[2], y[3]
-    predicted = p[2] > 0.0
+    fresh = tw[9][5]
+    coupled = fresh[0] > 0.0 and ws[0][0] == a_i and ws[0][1] == a_o and ws[0][2] == Q_i and ws[0][3] == Q_o
+    fresh[0] = 0.0
+    predicted = p[2] > 0.0 and not coupled
     if predicted:  # the ball's last solution moved along its derivatives to these contacts (first order)
         dp = (a_i - p[0], a_o - p[1], Q_i - p[2], Q_o - p[3])
         for k in range(4):
@@ -348,7 +354,7 @@ def _traction_grad(a_i, a_o, Q_i, Q_o, omega, dm, D, m_ball, cen, tw, g):
     p[1] = a_o
     p[2] = Q_i
     p[3] = Q_o
-    solved = solve_traction_with(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy, dout, ws)
+    solved = coupled or solve_traction_with(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy, dout, ws)
     if not solved and predicted:  # a prediction over a long step can land where Newton stalls: from the last solution
         y[0], y[1], y[2], y[3] = y0, y1, y2, y3
         solved = solve_traction_with(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, terms, out, Dy, dout, ws)
@@ -383,30 +389,9 @@ def _ball_eval(X1, X2, ball, kg, w, tw):
     without the traction branch).
     """
     A1, A2, r_i, r_o, K_i, K_o, f_i, omega, gp, dm, D, m_ball, race, cen, gyro, c_hyb = ball
-    L_o = math.hypot(X1, X2)
-    so = X1 / L_o
-    co = X2 / L_o
-    V1 = A1 - X1
-    V2 = A2 - X2
-    L_i = math.hypot(V1, V2)
-    si = V1 / L_i
-    ci = V2 / L_i
-    d_o = L_o - r_o
-    d_i = L_i - r_i
-    Q_o = 0.0
-    dQ_o = 0.0
-    if d_o > 0.0:
-        sq = math.sqrt(d_o)
-        Q_o = K_o * d_o * sq
-        dQ_o = 1.5 * K_o * sq
-    Q_i = 0.0
-    dQ_i = 0.0
-    if d_i > 0.0:
-        sq = math.sqrt(d_i)
-        Q_i = K_i * d_i * sq
-        dQ_i = 1.5 * K_i * sq
+    L_o, so, co, L_i, si, ci, Q_o, dQ_o, Q_i, dQ_i = ball_contacts(X1, X2, A1, A2, r_i, r_o, K_i, K_o)
     a_o = math.atan2(X1, X2)
-    a_i = math.atan2(V1, V2)
+    a_i = math.atan2(A1 - X1, A2 - X2)
     # gradients of the contact angles and loads: (d/dX1, d/dX2) and (d/dA1, d/dA2)
     dao_X1 = co / L_o
     dao_X2 = -so / L_o
@@ -416,7 +401,7 @@ def _ball_eval(X1, X2, ball, kg, w, tw):
     # whose ball lies beyond the inner curvature centre (cos a_i <= 0, at a clearance of the order of the
     # groove's), where w_m's denominator vanishes at a_i = pi; such a ball rolls on its outer contact's angle
     a_k, dak_X1, dak_X2, dak_A1, dak_A2 = a_i, -dai_A1, -dai_A2, dai_A1, dai_A2
-    if ci <= 0.0 and d_i <= 0.0:
+    if ci <= 0.0 and Q_i <= 0.0:
         a_k, dak_X1, dak_X2, dak_A1, dak_A2 = a_o, dao_X1, dao_X2, 0.0, 0.0
     dQo_X1 = dQ_o * so
     dQo_X2 = dQ_o * co
@@ -568,6 +553,12 @@ def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond, tw=None):
                 y[k] = X[X_Y + k, j] * omega
         else:
             rolling_start(math.atan2(A1, A2), math.atan2(A1, A2), omega, D, dm, y)
+        # the position and the kinematics by one Newton; the nested solve below then verifies the result in one
+        # evaluation (or starts from x and y as they were, where the coupled Newton did not converge)
+        fc = 0.5 * qs[QS_M_BALL] * dm if cen else 0.0
+        coupled = (A1, A2, r_i, r_o, qs[QS_K_I], qs[QS_K_O], omega, D, dm, 0.1 * qs[QS_M_BALL] * D * D, fc)
+        f_scale = abs(F_c0) + f_ball
+        coupled_newton(x, y, coupled, f_scale, _BALL_RTOL, tw[0], tw[5], tw[2], tw[3], tw[4], tw[8][0], tw[9])
     ball = (A1, A2, r_i, r_o, qs[QS_K_I], qs[QS_K_O], qs[QS_FI], omega, D / dm, dm, D, qs[QS_M_BALL],
             race, cen, gyro, qs[QS_C_HYB])  # fmt: skip
     status = _ball_newton(x, ball, F_c0, f_ball, kg, w, tw)
@@ -591,7 +582,7 @@ def ball_equilibrium(A1, A2, X, j, qs, geo, omega, kg, w, cond, tw=None):
 @kernel
 def traction_work(qs):
     """RACE_TRACTION's traction block and the work arrays of its ball kinematics (tr, y, out, Dy, dout, terms, dydp,
-    p, ws: kernels.ball_traction, _traction_grad)."""
+    p, ws: kernels.ball_traction, _traction_grad; cw: kernels.ball_coupled_newton)."""
     return (
         qs[QS_TRACTION:],
         np.zeros(4),
@@ -602,6 +593,7 @@ def traction_work(qs):
         np.zeros((4, 4)),
         np.zeros(4),
         solve_work(),
+        coupled_work(),
     )
 
 

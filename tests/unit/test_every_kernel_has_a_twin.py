@@ -38,6 +38,7 @@ ES = "bearing_fmu.kernels.ehl_solver."
 BD = "bearing_fmu.kernels.ball_dynamics."
 # helper -> (twinned caller, why the caller's comparison covers it)
 BT = "bearing_fmu.kernels.ball_traction."
+BC = "bearing_fmu.kernels.ball_coupled_newton."
 COVERED_THROUGH = {
     BT + "_surfaces": (BT + "_contact", "one contact's sliding, spin and entrainment speeds"),
     BT + "_contact": (BT + "_residual", "one contact's forces and moments, both contacts compared"),
@@ -67,6 +68,15 @@ COVERED_THROUGH = {
     BT + "_solve4": (BT + "_newton", "the Newton step of the compared kinematics"),
     BT + "_norm": (BT + "_newton", "the residual norm of the line search"),
     BT + "_marquardt": (BT + "_newton", "the damped step where Newton's does not descend"),
+    BC + "coupled_newton": (
+        JH + "ball_equilibrium",
+        "the start of the nested ball solve, which verifies it in one evaluation: the compared equilibrium is the "
+        "nested solve's (test_ball_coupled_newton.py checks that both reach one solution)",
+    ),
+    BC + "_evaluate": (BC + "coupled_newton", "its residuals, and the Jacobian checked against central differences"),
+    BC + "ball_contacts": (JH + "_ball_eval", "a ball's contact loads and directions at its position"),
+    BC + "_norm6": (BC + "coupled_newton", "the residual norm of the line search"),
+    BC + "coupled_work": (JH + "traction_work", "the work arrays of the coupled Newton"),
     JH + "_traction_grad": (JH + "_ball_eval", "the traction kinematics' terms, as _kin_grad's for a hypothesis"),
     JH + "traction_work": (JH + "ring_loads", "the work arrays of the traction kinematics"),
     JH + "_cold": (JH + "solve_quasistatic", "whether the traction kinematics start from outer-race control"),
