@@ -22,13 +22,13 @@ from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
 from .contacts import RaceContacts, truncation_parameters, truncation_warnings
 from .declarations import ANALYTIC_INPUTS, ANALYTIC_OUTPUTS
 from .film_table import film_table_array
+from .input_checks import check_clearance
 from .lubrication import Lubrication, LubricationWatch, pack_lubrication
 from .variables import (
     DM_N_LIMIT,
     MATERIAL_LIMIT,
     InputError,
     OilTemperatureWatch,
-    check_clearance,
     material_load_limit,
     pressure_warnings,
 )

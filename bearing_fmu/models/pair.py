@@ -72,8 +72,9 @@ import numpy as np
 from ..kernels import contacts as ck
 from ..kernels import jones_harris as qk
 from ..kernels.torque import TL_SIZE
+from .input_checks import check_oil_temperature, check_speed
 from .quasi_static import QuasiStaticModel, SolverError
-from .variables import InputError, check_oil_temperature, check_speed, pressure_warnings
+from .variables import InputError, pressure_warnings
 
 ARRANGEMENTS = ("X", "O")
 PRELOADS = ("spring", "fixed")

@@ -37,6 +37,7 @@ from .declarations import (
 )
 from .film_table import film_table_array
 from .friction import FrictionWatch
+from .input_checks import check_clearance
 from .lubrication import Lubrication, LubricationWatch, pack_lubrication
 from .variables import (
     DM_N_LIMIT,
@@ -44,7 +45,6 @@ from .variables import (
     TILT_LIMIT,
     InputError,
     OilTemperatureWatch,
-    check_clearance,
     material_load_limit,
     pressure_warnings,
 )

@@ -2,8 +2,8 @@
 
 Every check raises InputError with a message naming the input, its value and the allowed range. The
 static bounds below are the declared ranges (FMI min/max) of the inputs and parameters
-(models.declarations); the checks narrow them where the limit depends on the bearing (d_m n, the
-material load limit, the groove clearance).
+(models.declarations); the checks (here and in models.input_checks, which reads the declarations) narrow them
+where the limit depends on the bearing (d_m n, the material load limit, the groove clearance).
 """
 
 from bearing_fmu_common.variables import (  # noqa: F401  (re-exported for the models)
@@ -32,20 +32,6 @@ MATERIAL_LIMIT = (
 T_OIL_LIMITS = "-40..200 C: range of the viscosity laws of mineral and PAO oils"
 
 
-def check_speed(omega, omega_max):
-    """Raise InputError unless |omega| (rad/s) <= omega_max (the bearing's d_m n limit) and OMEGA_MAX."""
-    from .declarations import OMEGA
-
-    OMEGA.check(omega, -omega_max, omega_max, f"d_m n <= {DM_N_LIMIT:.0e} mm.rpm")
-
-
-def check_oil_temperature(T_oil):
-    """Raise InputError unless T_oil (K) is within T_OIL_RANGE."""
-    from .declarations import T_OIL
-
-    T_OIL.check(T_oil)
-
-
 def material_load_limit(Z, E_red, contacts):
     """Largest admissible load (N): all Z balls at the contact load giving p_max = P_MAX_ERROR on the worse
     of the contacts ((Rx, Ry, k, E, K) per race: curvature radii in m and Hertz coefficients), reduced
@@ -72,25 +58,6 @@ def pressure_warnings(p_max, loads):
             f"(ISO 76 static limit): permanent raceway deformation expected"
         ]
     return []
-
-
-def check_clearance(Pd, bearing, given):
-    """Raise InputError unless the diametral clearance Pd (m) lies within the geometric limits of the
-    bearing (params.clearance_limits: -A <= P_d <= A, A = (f_i + f_o - 1) D, i.e. free contact angle up to
-    60 deg) and, when set (given=True: the parameter Pd), within its declared range +-GROOVE_MAX; given
-    False: read from the bearing file."""
-    from ..params import clearance_limits
-    from .declarations import PD
-
-    low, high = clearance_limits(bearing.D, bearing.f_i, bearing.f_o)
-    if given:  # the parameter: also within its declared range
-        low, high = max(low, PD.min), min(high, PD.max)
-    if not (low <= Pd <= high):  # False for NaN
-        origin = "set" if given else f"read from {bearing.path}"
-        raise InputError(
-            f"Pd = {Pd} m ({origin}) is outside the allowed range [{low:.4g}, {high:.4g}] m "
-            f"(|Pd| <= (f_i + f_o - 1) D: free contact angle up to 60 deg)"
-        )
 
 
 class OilTemperatureWatch:

@@ -18,7 +18,8 @@ from ...params import load_bearing, load_lubricant
 from ...scene import Scene
 from ..declarations import DEM_INPUTS, DEM_OUTPUTS
 from ..declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
-from ..variables import P_MAX_ERROR, InputError, OilTemperatureWatch, check_clearance, pressure_warnings
+from ..input_checks import check_clearance
+from ..variables import P_MAX_ERROR, InputError, OilTemperatureWatch, pressure_warnings
 from . import inputs, outputs, time_step, whirl
 from .inputs import T_OIL_DEFAULT
 from .monitor import DemUnstableError, energy_limit, unstable_error
