@@ -67,13 +67,13 @@ def fixed_10000_oil_air(closed_loop_fmus):
 
 # -- spring preload --------------------------------------------------------------------------------
 def test_spring_run_completes_one_hour(spring):
-    """Issue 4: the 1 h closed loop at H = 1 s runs to the end (no limit reached)."""
+    """The 1 h closed loop at H = 1 s runs to the end (no limit reached)."""
     assert spring.status == "ok" and spring.message == ""
     assert spring.columns["time"][-1] == 3600.0 and len(spring.columns["time"]) == 3601
 
 
 def test_spring_temperatures_rise_monotonically_after_the_first_minute(spring):
-    """Issue 4 acceptance. In the first minute the cold, viscous oil makes a burst of heat (the first
+    """Closed-loop requirement. In the first minute the cold, viscous oil makes a burst of heat (the first
     step sees ~6 kW) and the oil/ring nodes may overshoot; after it every temperature rises step by
     step (strictly: no plateau, no oscillation from the coupling)."""
     start = at(spring, 60.0)
@@ -83,7 +83,7 @@ def test_spring_temperatures_rise_monotonically_after_the_first_minute(spring):
 
 
 def test_spring_temperatures_settle(spring):
-    """Issue 4 acceptance: settled = the change over the last 10 min is below 1 % of the rise."""
+    """Closed-loop requirement: settled = the change over the last 10 min is below 1 % of the rise."""
     end, ten_min_before = at(spring, 3600.0), at(spring, 3000.0)
     for name in TEMPERATURES:
         T = spring.columns[name]
@@ -93,7 +93,7 @@ def test_spring_temperatures_settle(spring):
 
 
 def test_spring_steady_state_energy_balance(spring):
-    """Issue 4 acceptance: |P_in - P_out| / P_in < 1 % at t = 3600 s (P_in: the bearings' heat into the
+    """Closed-loop requirement: |P_in - P_out| / P_in < 1 % at t = 3600 s (P_in: the bearings' heat into the
     network; P_out: the heat leaving through the boundaries; their difference is what is still being
     stored, so it vanishes at steady state)."""
     P_in, P_out = spring.columns["spindle.P_in"][-1], spring.columns["spindle.P_out"][-1]
@@ -114,7 +114,7 @@ def test_spring_outer_ring_rise_is_tens_of_kelvin(spring):
 
 # -- fixed preload ----------------------------------------------------------------------------------
 def test_fixed_6000_preload_rises_with_temperature_and_settles(fixed_6000):
-    """Issue 4 acceptance (runs/closed_loop_fixed.toml header): at 6000 rpm the preload rises from
+    """Closed-loop requirement (runs/closed_loop_fixed.toml header): at 6000 rpm the preload rises from
     about 1.1 kN with the shaft-housing temperature difference and settles (status ok after 1 h).
     Settling is judged on the increments: an approach to a finite value has shrinking increments
     (ratio of the last 10 min to the 10 min before below 0.6; measured 0.45, an exponential approach
@@ -135,7 +135,7 @@ def test_fixed_6000_preload_rises_with_temperature_and_settles(fixed_6000):
 
 
 def test_fixed_6000_outcome_does_not_depend_on_the_step(fixed_6000):
-    """Issue 4: the settled values at 1 h agree for H = 0.1, 1 and 5 s. Tolerance: the coupling holds
+    """Closed loop: the settled values at 1 h agree for H = 0.1, 1 and 5 s. Tolerance: the coupling holds
     each exchanged variable for one step (the bearings see temperatures of t_n, the network holds the
     heat over the step), so the co-simulation lags the exact loop by about one step; the difference to
     the H = 0.1 s run is then about (H - 0.1 s) times the current rate of change. The bound is twice
@@ -151,7 +151,7 @@ def test_fixed_6000_outcome_does_not_depend_on_the_step(fixed_6000):
 
 
 def test_fixed_10000_runs_away_and_stops_with_a_message(fixed_10000):
-    """Issue 4 acceptance: at 10 000 rpm the fixed preload runs away (heat -> growth -> preload ->
+    """Closed-loop requirement: at 10 000 rpm the fixed preload runs away (heat -> growth -> preload ->
     heat); the run's limit (inner ring above 150 C) stops it with status 'limit' and a message naming
     the runaway, and the results up to the stop are kept. Before the stop the preload has grown many
     times over and still accelerates."""
@@ -168,7 +168,7 @@ def test_fixed_10000_runs_away_and_stops_with_a_message(fixed_10000):
 
 
 def test_fixed_10000_stop_time_does_not_depend_on_the_step(fixed_10000):
-    """Issue 4: the runaway is physics, not numerics: it happens at every H and stops at the same time
+    """Closed loop: the runaway is physics, not numerics: it happens at every H and stops at the same time
     within 2 H of the H = 0.1 s run. Tolerance: the limit is checked at communication points only
     (stop up to one H after the crossing) and the one-step coupling lag shifts the trajectory by about
     one more H (measured: 705, 702 and 700.6 s for H = 5, 1, 0.1 s). The bearings run flooded here

@@ -171,7 +171,7 @@ def test_solution_matches_twin(label, p, F_applied, omega):
 
 @pytest.mark.parametrize("label,p,F_applied,omega", LOAD_CASES, ids=[c[0] for c in LOAD_CASES])
 def test_jacobian_matches_central_differences(label, p, F_applied, omega):
-    """Issue 3: analytic K vs central differences <= 1e-5 relative (entries above 1e-6 of the largest),
+    """The analytic K vs central differences <= 1e-5 relative (entries above 1e-6 of the largest),
     against the kernel's own loads and against the twin's central differences."""
     p = dict(p, omega=omega)
     status, d, F, K, balls, X = kernel_solve(pack(p), F_applied, omega)
