@@ -41,9 +41,9 @@ from scipy.optimize import brentq
 
 from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.kernels.lubricant import LUB_EPS_R0, LUB_RHO_REF
+from tests.reference import ref_ball_dynamics_contacts as contacts
 from tests.reference import ref_capacitance, ref_ehl, ref_film_correction, ref_hertz, ref_lubricant, ref_torque
-
-Z_AXIS = np.array([0.0, 0.0, 1.0])
+from tests.reference.ref_ball_dynamics_contacts import Z_AXIS, groove_contact
 
 # Heathcote constant C_H = 3I/8: rolling bands at +-c (zero net traction of w(y) ~ 1 - y^2), then
 # I = 2 int_0^1 (1 - s^2)|c^2 - s^2| ds (Johnson 1985 ch. 8).
@@ -63,16 +63,6 @@ def ring_axis(ring):
         return Z_AXIS.copy()
     k = theta / t
     return Z_AXIS * math.cos(t) + np.cross(k, Z_AXIS) * math.sin(t) + k * np.dot(k, Z_AXIS) * (1.0 - math.cos(t))
-
-
-def groove_contact(p, centre, rho, rg, axis=Z_AXIS):
-    """(delta, n) of a ball centre p against the circle (centre, radius rho, normal axis)."""
-    d = p - centre
-    radial = d - np.dot(d, axis) * axis
-    q = centre + rho * radial / np.linalg.norm(radial)
-    gap = p - q
-    dist = np.linalg.norm(gap)
-    return dist - rg, gap / dist
 
 
 def race_centre(race, ring, par):
@@ -219,73 +209,39 @@ def forces(st, par, omega, F_ring, vel, dt):
                 spring[rows, j] = 0.0
                 counters[kc] = 0
                 continue
-            K_h = par[s.P_KH_I + race]
-            Q = K_h * delta**1.5
-            r_c = 0.5 * D * n
-            v_surface_ball = v_b[:, j] + np.cross(w_b[:, j], r_c)
-            if race == 0:
-                v_surface_race = v_r + np.cross(W, p + r_c - centre)
-            else:
-                v_surface_race = np.zeros(3)
-            v_rel = v_surface_ball - v_surface_race
-            v_n = np.dot(v_rel, n)
-            v_t = v_rel - v_n * n
-            if int(trib[s.T_REGIME, race, j]) == 0:
-                c_n = 1.5 * par[s.P_ALPHA_E] * Q
-            else:
-                c_n = trib[s.T_C_N, race, j]
-            F_n = max(Q + c_n * v_n, 0.0)
-            phi = trib[s.T_PHI, race, j]
-            F_film = phi * par[s.P_MU_LIM] * F_n  # the film's traction plateau
-            old = spring[rows, j] - np.dot(spring[rows, j], n) * n
-            slipping = False
-            if phi < 1.0:  # the asperities' spring, capped at the rest of the tangential limit
-                xi = old + v_t * dt
-                k_t = par[s.P_KT_RATIO] * K_h * math.sqrt(delta)
-                F_t = -k_t * xi
-                cap = max(trib[s.T_MU, race, j] * F_n - F_film, 0.0)
-                slipping = np.linalg.norm(F_t) > cap
-                if slipping:
-                    F_t = F_t * cap / np.linalg.norm(F_t)
-                    xi = -F_t / k_t
-                    counters[kc] = counters[kc] + 1 if np.dot(xi, old) < 0.0 else 0
-                else:
-                    counters[kc] = 0
-            else:  # a full film: no elastic stick
-                xi = np.zeros(3)
-                F_t = np.zeros(3)
-                counters[kc] = 0
-            spring[rows, j] = xi
-            dissipating = F_t.copy() if slipping else np.zeros(3)
-            v = np.linalg.norm(v_t)
-            if F_film > 0.0 and v > 0.0:
-                # EHL traction curve F_film (1 - exp(-v/v_s)), solved linearly implicitly: F / (1 + kappa dF/dv),
-                # kappa = 2 x 3.5 dt / m (a force at a solid sphere's surface, both contacts of the ball)
-                g = trib[s.T_SLIP, race, j]
-                kappa = par[s.P_FILM_RATE] * dt / par[s.P_M_BALL]
-                f = F_film * (1.0 - math.exp(-v * g)) / (1.0 + kappa * F_film * g * math.exp(-v * g))
-                F_t = F_t - f * v_t / v
-                dissipating -= f * v_t / v
-            if dissipating.any():
-                slips.append((race, j, dissipating, r_c))
-            force = -F_n * n + F_t
-            f_ball[:, j] += force
-            q = w_b[:, j] - orbit_speed(p, v_b[:, j]) * Z_AXIS
-            q = q - np.dot(q, n) * n
-            spin = np.dot(w_b[:, j] - W, n)
-            # regularised resistances: viscous below max(w_reg, M / (I / (4 dt))), Coulomb-like above
-            M_roll = trib[s.T_F_ROLL, race, j] * 0.5 * D
-            M_spin = trib[s.T_M_SPIN, race, j]
-            rate = par[s.P_I_BALL] / (4.0 * dt) if dt > 0.0 else math.inf  # dt = 0: the state's accelerations
-            resistances = (
-                -M_roll * q / max(np.linalg.norm(q), w_reg, M_roll / rate)
-                - M_spin * spin / max(abs(spin), w_reg, M_spin / rate) * n
+            tribology = (
+                trib[s.T_MU, race, j],
+                trib[s.T_PHI, race, j],
+                trib[s.T_SLIP, race, j],
+                int(trib[s.T_REGIME, race, j]),
+                trib[s.T_C_N, race, j],
+                trib[s.T_F_ROLL, race, j],
+                trib[s.T_M_SPIN, race, j],
             )
-            m_ball[:, j] += np.cross(r_c, F_t) + resistances
+            law = dict(
+                K_h=par[s.P_KH_I + race],
+                D=D,
+                alpha_e=par[s.P_ALPHA_E],
+                kt_ratio=par[s.P_KT_RATIO],
+                mu_lim=par[s.P_MU_LIM],
+                kappa=par[s.P_FILM_RATE] * dt / par[s.P_M_BALL],
+                w_reg=w_reg,
+                rate=par[s.P_I_BALL] / (4.0 * dt) if dt > 0.0 else math.inf,  # dt = 0: the state's accelerations
+            )
+            w_orbit = orbit_speed(p, v_b[:, j])
+            c = contacts.ball_race_contact(
+                race, delta, n, p, v_b[:, j], w_b[:, j], w_orbit, spring[rows, j], tribology, (W, v_r, centre), law, dt
+            )
+            spring[rows, j] = c["spring"]
+            counters[kc] = counters[kc] + 1 if c["reversed"] else 0
+            if c["dissipating"].any():
+                slips.append((race, j, c["dissipating"], c["r_c"]))
+            f_ball[:, j] += c["force"]
+            m_ball[:, j] += c["moment"]
             if race == 0:  # the race takes the opposite force at the contact point and the opposite moments
-                f_ring -= force
-                m_ring -= np.cross(p + r_c - centre, force) + resistances
-            power[race] += c_n * v_n**2 if F_n > 0.0 else 0.0
+                f_ring -= c["force"]
+                m_ring -= np.cross(p + c["r_c"] - centre, c["force"]) + c["resistances"]
+            power[race] += c["damping"]
     R_sum = 0.5 * D + par[s.P_R_CAGE]
     m_b, m_c = par[s.P_M_BALL], par[s.P_M_CAGE]
     for k in range(Z):

@@ -172,10 +172,6 @@ COVERED_THROUGH = {
         "the tilted inner ring's axis: compared through advance with a tilting ring, and against the twin's Rodrigues "
         "rotation from 1e-9 to 0.3 rad in test_ball_dynamics.py",
     ),
-    BD + "contacts.ball_race_contact": (BD + "integrator.verlet_step", "every ball-race contact of a step"),
-    BD + "contacts.groove_approach": (BD + "contacts.ball_race_contact", "approach and normal of the torus"),
-    BD + "contacts.contact_damping": (BD + "contacts.ball_race_contact", "C_n by regime (boundary and mixed)"),
-    BD + "contacts.tangential_spring": (BD + "contacts.ball_race_contact", "sticking and slipping springs"),
     BD + "stiffness._contact_spring": (BD + "stiffness.stiffness_matrix", "the in-plane spring of each loaded contact"),
     BD + "cage.ball_cage_contact": (BD + "integrator.verlet_step", "ball - cage-ball contacts of a step"),
     BD + "cage.cage_guide_contact": (BD + "integrator.verlet_step", "cage ball - channel contacts of a step"),
