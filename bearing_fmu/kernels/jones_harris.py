@@ -1078,32 +1078,19 @@ def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
         F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacobian, scale, d_try
     )
     for it in range(maxit + 1):
-        if not math.isfinite(res):
-            return QS_NOT_FINITE, status[1], res
-        if res <= tol * max(f_ref, _mean_ball_load(contact)) or n == 0:
-            return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), status[1], res
+        end = _iteration_end(res, tol, f_ref, contact, n, ball_status)
+        if end >= 0:
+            return end, status[1], res
         if it == maxit:
             break
-        kmax = 0.0
+        _newton_system(F_applied, F, J, idx, n, scale, k_floor, Kr, R)
         for a in range(n):
-            kmax = max(kmax, J[idx[a], idx[a]] / (scale[idx[a]] ** 2))
-        for a in range(n):
-            ia = idx[a]
-            R[a] = (F_applied[ia] - F[ia]) / scale[ia]
             g[a] = R[a]
-            for b in range(n):
-                ib = idx[b]
-                Kr[a, b] = J[ia, ib] / (scale[ia] * scale[ib])
-            Kr[a, a] += 1e-12 * kmax + k_floor
-        for a in range(n):
             for b in range(n):
                 Ks[a, b] = 0.5 * (Kr[a, b] + Kr[b, a])
         if not _solve_small(Kr, R, n, Rw):
             return QS_NOT_FINITE, it, res
-        big = 0.0
-        for a in range(n):
-            big = max(big, abs(Rw[a]))
-        if big < 1e-15 * A:
+        if _max_abs(Rw, n) < 1e-15 * A:
             return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), status[1], res
         accepted = False
         while radius >= _TR_COLLAPSE * A:
@@ -1149,6 +1136,44 @@ def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
     return QS_NOT_CONVERGED, status[1], res
 
 
+@kernel(inline="always")
+def _iteration_end(res, tol, f_ref, contact, n, ball_status):
+    """How the ring's Newton solvers end at an iterate of scaled residual res (N): QS_NOT_FINITE, QS_OK (or
+    QS_BALL_NOT_CONVERGED when a ball did not converge) once res is within tol of the larger of the load scale f_ref
+    and the mean ball load, or with no load-controlled DOF (n = 0); -1 to go on."""
+    if not math.isfinite(res):
+        return QS_NOT_FINITE
+    if res <= tol * max(f_ref, _mean_ball_load(contact)) or n == 0:
+        return QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK
+    return -1
+
+
+@kernel(inline="always")
+def _newton_system(F_applied, F, J, idx, n, scale, k_floor, Kr, R):
+    """The ring's Newton system on the n load-controlled DOFs idx[:n], in scaled DOFs (rotations as arc lengths,
+    moments as forces: scale): the unbalanced load R (N) and the stiffness Kr (N/m), its diagonal raised by 1e-12 of
+    its largest entry and the floor k_floor (N/m) so that a ring with no loaded ball still has a step."""
+    kmax = 0.0
+    for a in range(n):
+        kmax = max(kmax, J[idx[a], idx[a]] / (scale[idx[a]] ** 2))
+    for a in range(n):
+        ia = idx[a]
+        R[a] = (F_applied[ia] - F[ia]) / scale[ia]
+        for b in range(n):
+            ib = idx[b]
+            Kr[a, b] = J[ia, ib] / (scale[ia] * scale[ib])
+        Kr[a, a] += 1e-12 * kmax + k_floor
+
+
+@kernel(inline="always")
+def _max_abs(v, n):
+    """The largest |v[:n]|."""
+    big = 0.0
+    for a in range(n):
+        big = max(big, abs(v[a]))
+    return big
+
+
 @kernel
 def _damped_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacobian):
     """Damped Newton on the loads of the n load-controlled DOFs idx[:n]: solve_quasistatic's last resort when
@@ -1169,27 +1194,15 @@ def _damped_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
         F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacobian, scale, d_try
     )
     for it in range(maxit + 1):
-        if not math.isfinite(res):
-            return QS_NOT_FINITE, status[1], res
-        if res <= tol * max(f_ref, _mean_ball_load(contact)) or n == 0:
-            return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), status[1], res
+        end = _iteration_end(res, tol, f_ref, contact, n, ball_status)
+        if end >= 0:
+            return end, status[1], res
         if it == maxit:
             break
-        kmax = 0.0
-        for a in range(n):
-            kmax = max(kmax, J[idx[a], idx[a]] / (scale[idx[a]] ** 2))
-        for a in range(n):
-            ia = idx[a]
-            R[a] = (F_applied[ia] - F[ia]) / scale[ia]
-            for b in range(n):
-                ib = idx[b]
-                Kr[a, b] = J[ia, ib] / (scale[ia] * scale[ib])
-            Kr[a, a] += 1e-12 * kmax + k_floor
+        _newton_system(F_applied, F, J, idx, n, scale, k_floor, Kr, R)
         if not _solve_small(Kr, R, n, Rw):
             return QS_NOT_FINITE, it, res
-        big = 0.0
-        for a in range(n):
-            big = max(big, abs(Rw[a]))
+        big = _max_abs(Rw, n)
         if big < 1e-15 * A:
             return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), status[1], res
         f = 1.0 if big <= step_cap else step_cap / big

@@ -145,13 +145,16 @@ COVERED_THROUGH = {
     JH + "_loads_residual_at": (JH + "_global_newton", "one trial of the trust-region iteration"),
     JH + "_damped_newton": (JH + "solve_quasistatic", "the last resort whose result is the compared solution"),
     JH + "_loads_line_search": (JH + "_damped_newton", "the damping of the last-resort Newton"),
+    JH + "_newton_system": (JH + "_global_newton", "the scaled, regularised Newton system of both ring solvers"),
+    JH + "_max_abs": (JH + "_global_newton", "the size of a Newton step, the small-step convergence test"),
+    JH + "_iteration_end": (JH + "_global_newton", "the convergence test of both ring solvers"),
     JH + "_dogleg": (JH + "_global_newton", "the step of the trust-region iteration whose result is compared"),
     JH + "_model_decrease": (JH + "_dogleg", "the quadratic model's decrease, two sums"),
     JH + "_sum_squares": (JH + "_global_newton", "a squared norm"),
     JH + "_residual_norm": (JH + "_newton_start", "largest scaled load error: the compared solution's criterion"),
     JH + "_newton_settings": (JH + "_global_newton", "the solvers' tolerance, cap, scales and stiffness floor"),
     JH + "_newton_start": (JH + "_global_newton", "the first evaluation of the compared iteration"),
-    JH + "_mean_ball_load": (JH + "_global_newton", "load scale of the convergence test, a mean"),
+    JH + "_mean_ball_load": (JH + "_iteration_end", "load scale of the convergence test, a mean"),
     # the DEM step's pieces: compared through advance over 300 steps of a 6208 in a speed ramp under 3 kN
     # (test_ball_dynamics.py: loaded and open contacts, boundary and mixed regimes, slipping springs, cage
     # balls pressed by the balls and by their channel), three film formulas
