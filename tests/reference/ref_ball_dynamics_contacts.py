@@ -2,7 +2,7 @@
 
 Written from the model (module docstring of the kernel; Guessasma & Machado 2018; Farah et al. 2020; Cundall &
 Strack 1979; Houpert's resistances), with np.dot, np.cross and np.linalg.norm, and used by the step's twin
-(ref_ball_dynamics.forces), so that the law is written once on this side too:
+(ref_ball_dynamics_integrator.forces), so that the law is written once on this side too:
 - groove = torus: the nearest point q of the groove-curvature-centre circle to the ball centre p, approach
   delta = |p - q| - (f - 1/2) D, normal n = (p - q)/|p - q|;
 - normal force Q + C_n v_n >= 0, Q = K_h delta^1.5, C_n = 1.5 alpha_e Q in the boundary regime, else the refresh's;

@@ -1,6 +1,6 @@
 """Twin of bearing_fmu.kernels.ball_dynamics.outputs: contact loads, contact angles and bearing-level outputs.
 
-Written from the definitions with vector algebra (the groove-torus contact of ref_ball_dynamics, Hertz
+Written from the definitions with vector algebra (the groove-torus contact of ref_ball_dynamics_integrator, Hertz
 Q = K_h delta^1.5), sharing only the array layout (the kernel's slot constants):
 - contact angle: angle of the contact normal from the plane normal to the bearing axis z, atan2(|n_z|, |n_radial|);
 - cage speed: mean change of the balls' orbital angles over the interval; ball speeds of the most loaded
@@ -21,7 +21,7 @@ import numpy as np
 
 from bearing_fmu.kernels.ball_dynamics import state as s
 from tests.reference import ref_capacitance, ref_ehl, ref_truncation
-from tests.reference.ref_ball_dynamics import groove_contact, race_centre
+from tests.reference.ref_ball_dynamics_integrator import groove_contact, race_centre
 from tests.reference.ref_ball_dynamics_monitor import kinetic_energy
 
 KERNEL_MODULE = "bearing_fmu.kernels.ball_dynamics.outputs"

@@ -13,7 +13,7 @@ K = sum G^T K_ball G. Balls open on either race are skipped.
 import numpy as np
 
 from bearing_fmu.kernels.ball_dynamics import state as s
-from tests.reference.ref_ball_dynamics import groove_contact, race_centre
+from tests.reference.ref_ball_dynamics_integrator import groove_contact, race_centre
 
 KERNEL_MODULE = "bearing_fmu.kernels.ball_dynamics.stiffness"
 

@@ -1,4 +1,4 @@
-"""kernels.radial_bearing against its twin tests/reference/ref_analytic.py (a ball loop over the twins).
+"""kernels.radial_bearing against its twin tests/reference/ref_radial_bearing.py (a ball loop over the twins).
 
 Every O_* output is compared (O_ITER, the kernel's Newton count, has no twin: it is checked for
 convergence instead), and so are the eight per-ball rows of the work array. The tolerances are
@@ -38,8 +38,8 @@ from bearing_fmu.kernels import radial_bearing as ak
 from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.params import catalogue
 from bearing_fmu.scene import Scene
-from tests.reference import ref_analytic as ra
 from tests.reference import ref_lubricant as rlub
+from tests.reference import ref_radial_bearing as ra
 from tests.unit._compare import assert_close, rel_err
 from tests.unit.test_film_correction import made_up_table
 

@@ -1,4 +1,4 @@
-"""kernels.ball_dynamics against its twin tests/reference/ref_ball_dynamics.py, plus contact-geometry checks.
+"""kernels.ball_dynamics against its twin tests/reference/ref_ball_dynamics_integrator.py, plus contact-geometry checks.
 
 Kernel vs twin: both start from one state taken in the middle of a start-up of the 6208 of Guessasma & Machado (2018)
 (3 kN radial, speed ramping through 300 rad/s, so springs are loaded, some contacts slip, the
@@ -26,7 +26,7 @@ from bearing_fmu.kernels.ball_dynamics.tribology import ring_axis
 from bearing_fmu.kernels.hertz import hertz_contact
 from bearing_fmu.models.dem import DemModel, DemUnstableError
 from bearing_fmu.models.variables import InputError
-from tests.reference import ref_ball_dynamics as ref
+from tests.reference import ref_ball_dynamics_integrator as ref
 from tests.unit.test_film_correction import made_up_table
 
 STEPS = 300

@@ -11,7 +11,7 @@ from bearing_fmu.kernels.ball_dynamics import integrator as dyn
 from bearing_fmu.kernels.ball_dynamics import monitor, outputs, stiffness
 from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.models.dem import DemModel
-from tests.reference import ref_ball_dynamics as ref
+from tests.reference import ref_ball_dynamics_integrator as ref
 from tests.reference import ref_ball_dynamics_monitor as ref_monitor
 from tests.reference import ref_ball_dynamics_outputs as ref_outputs
 from tests.reference import ref_ball_dynamics_stiffness as ref_stiffness

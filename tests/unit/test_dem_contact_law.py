@@ -4,8 +4,8 @@
 States: random contacts of a 6208-sized ball (D = 11.9 mm, K_h of a steel contact) on the inner race of a tilted,
 translating, turning ring and on the fixed outer race, in each regime (boundary, mixed, full film), with the
 asperities' spring sticking and slipping (a slipping one also reversed), with and without a film, at approaches
-from 0.1 to 10 um; and the open contact. The step's own twin (ref_ball_dynamics.forces) takes the same function,
-so the whole step's comparison (test_ball_dynamics.py) covers it in context; here every output is compared
+from 0.1 to 10 um; and the open contact. The step's own twin (ref_ball_dynamics_integrator.forces) takes the same
+function, so the whole step's comparison (test_ball_dynamics.py) covers it in context; here every output is compared
 separately, on states that steps rarely reach.
 
 Tolerance: 1e-12 of each output's scale (the largest force, moment or spring length of the contact), the rounding of

@@ -183,7 +183,7 @@ COVERED_THROUGH = {
     BD + "integrator.slip_power_correction": (
         BD + "integrator.verlet_step",
         "the slip power at the velocities a step ends with, in the dissipated energy compared every step (the twin "
-        "evaluates it from the end velocities directly, ref_ball_dynamics.slip_power)",
+        "evaluates it from the end velocities directly, ref_ball_dynamics_integrator.slip_power)",
     ),
     BD + "integrator.sample_refresh": (BD + "integrator.advance", "the averaged state outputs' refresh samples"),
 }

@@ -1,4 +1,4 @@
-"""kernels.jones_harris against its slow twin (tests/reference/ref_quasistatic.py) and against itself.
+"""kernels.jones_harris against its slow twin (tests/reference/ref_jones_harris.py) and against itself.
 
 The twin solves every ball with scipy.optimize.root on polar unknowns and the bearing with
 scipy.optimize.root; the kernel uses nested damped Newton with analytic derivatives. Both follow
@@ -21,7 +21,7 @@ import numpy as np
 import pytest
 
 from bearing_fmu.kernels import jones_harris as qk
-from tests.reference import ref_quasistatic as ref
+from tests.reference import ref_jones_harris as ref
 
 RPM = 2.0 * math.pi / 60.0
 RACES = {

@@ -1,6 +1,6 @@
 """The trust-region solve of the ring against its twin on points where the former line-search Newton failed.
 
-Twin: tests/reference/ref_quasistatic.solve_loads, scipy.optimize.root ('hybr', then 'lm') on the same load
+Twin: tests/reference/ref_jones_harris.solve_loads, scipy.optimize.root ('hybr', then 'lm') on the same load
 residual, with its own ball solves; an independent solver, not the kernel's algorithm. The points are of the
 large-angle grid (tests/stability/test_large_free_angle_grid.py) with the twin's B7214C-like and 6208-like
 bearings at speed, centrifugal and gyroscopic effects on; measured with the line-search Newton: "no
@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from bearing_fmu.kernels import jones_harris as qk
-from tests.reference import ref_quasistatic as ref
+from tests.reference import ref_jones_harris as ref
 from tests.unit.test_quasistatic import kernel_solve, pack
 
 

@@ -16,7 +16,7 @@ import pytest
 from bearing_fmu import InputError, QuasiStaticModel, Scene
 from bearing_fmu.build import SCENES_DIR
 from bearing_fmu.kernels import jones_harris as qk
-from tests.reference import ref_quasistatic as ref
+from tests.reference import ref_jones_harris as ref
 from tests.unit.test_quasistatic import kernel_solve, pack
 
 RPM = 2.0 * math.pi / 60.0

@@ -1,4 +1,4 @@
-"""The parts of kernels.jones_harris against their twins in tests/reference/ref_quasistatic.py.
+"""The parts of kernels.jones_harris against their twins in tests/reference/ref_jones_harris.py.
 
 test_quasistatic.py compares the whole solve and load evaluation; these compare the parts a reader
 meets first (geometry, kinematics and moment share, one ball's equilibrium, the load evaluation without
@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 from bearing_fmu.kernels import jones_harris as qk
-from tests.reference import ref_quasistatic as ref
+from tests.reference import ref_jones_harris as ref
 from tests.unit._compare import assert_close
 from tests.unit.test_quasistatic import RACES, pack
 

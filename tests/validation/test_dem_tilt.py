@@ -41,7 +41,7 @@ from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.models.dem import DemModel
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
-from tests.reference.ref_ball_dynamics import race_centre
+from tests.reference.ref_ball_dynamics_integrator import race_centre
 
 LOADS = dict(F_y=2000.0, F_z=3000.0)
 TOL = 0.02

@@ -1,4 +1,4 @@
-"""Self-consistency checks of the quasi-static twin tests/reference/ref_quasistatic.py.
+"""Self-consistency checks of the quasi-static twin tests/reference/ref_jones_harris.py.
 
 The twin is compared elsewhere with the numba kernel; here it is checked against what the model
 definition implies independently of how it is coded:
@@ -24,7 +24,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq
 
-from tests.reference import ref_quasistatic as rq
+from tests.reference import ref_jones_harris as rq
 
 OMEGA = 10000.0 * 2.0 * math.pi / 60.0  # 10000 rpm
 FAST = settings(max_examples=60, deadline=None)
