@@ -496,12 +496,19 @@ def traction_eval(y, a_i, a_o, Q_i, Q_o, omega, D, dm, J, tr, out):
 @kernel
 def rolling_start(a_i, a_o, omega, D, dm, y):
     """Outer-race-control kinematics (Jones: tan beta = sin a_o / (cos a_o + D/d_m)) as y (rad/s): the start of the
-    traction solve where no earlier solution of the ball is at hand."""
+    traction solve where no earlier solution of the ball is at hand. NaN where the law has no rolling solution (a
+    ball turned beyond its inner groove's centre, a_i near 180 deg, can make a denominator 0): the solve then fails,
+    and the caller refuses the state for its reason, instead of a division by zero ending the solve."""
     gp = D / dm
     beta = math.atan2(math.sin(a_o), math.cos(a_o) + gp)
     n_o = (1.0 - gp * math.cos(a_i)) * math.cos(a_o - beta)
-    w_m = omega * n_o / ((1.0 + gp * math.cos(a_o)) * math.cos(a_i - beta) + n_o)
-    w_R = -w_m * (1.0 + gp * math.cos(a_o)) / (gp * math.cos(a_o - beta))
+    den_m = (1.0 + gp * math.cos(a_o)) * math.cos(a_i - beta) + n_o
+    den_r = gp * math.cos(a_o - beta)
+    if den_m == 0.0 or den_r == 0.0:
+        y[:] = math.nan
+        return
+    w_m = omega * n_o / den_m
+    w_R = -w_m * (1.0 + gp * math.cos(a_o)) / den_r
     y[0] = w_m
     y[1] = w_m + w_R * math.cos(beta)
     y[2] = -w_R * math.sin(beta)

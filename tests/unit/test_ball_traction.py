@@ -17,6 +17,7 @@ from bearing_fmu.kernels import jones_harris as qk
 from bearing_fmu.kernels.lubricant import lubricant_state
 from bearing_fmu.models.contacts import race_contacts, traction_block
 from bearing_fmu.models.quasi_static import QuasiStaticModel
+from bearing_fmu.models.variables import InputError
 from bearing_fmu.scene import Scene
 from tests.reference import ref_ball_traction as ref
 
@@ -186,3 +187,15 @@ def test_closed_form_partials_equal_central_differences(case, film):
             assert Dy[row] == pytest.approx(fy[row], abs=1e-5 * np.abs(fy[row]).max()), row
             err = min(np.abs(Dp[row] - f).max() / np.abs(f).max() for f in (fp[row], fp_fine[row]))
             assert err <= 1e-5, row
+
+
+def test_a_ball_beyond_its_groove_centre_is_refused_for_that_reason():
+    """The 6208 with the largest clearance its grooves allow (P_d = (f_i + f_o - 1) D, free contact angle 60 deg)
+    under 3 kN radial load at 500 rad/s: a ball on the unloaded side turns beyond the centre of its inner groove
+    (inner contact angle 180 deg), where the rolling start of its traction kinematics has a zero denominator. The
+    model refuses the state naming that reason (an InputError), as it does under outer-race control; it raised a
+    bare ZeroDivisionError from inside the solve before."""
+    b = QuasiStaticModel("6208").bearing
+    m = QuasiStaticModel("6208", Pd=(b.f_i + b.f_o - 1.0) * b.D, race_control="traction")
+    with pytest.raises(InputError, match="beyond the centre of curvature of its inner groove"):
+        m.evaluate(omega=500.0, F_y=3000.0)
