@@ -42,37 +42,7 @@
         Py_XDECREF(old__);                                                                         \
     } while (0)
 
-/* Python code the layer needs; compiled once into its own namespace. */
-static const char *HELPER_SOURCE =
-    "import importlib, inspect, os, pickle, sys, threading, traceback, types\n"
-    "# One set-up lock for every FMU of the product in the process. Each FMU brings its own copy of this\n"
-    "# library and so its own namespace: the lock lives in a module registered once in sys.modules.\n"
-    "# Two FMUs set up by two threads at once (imports, numba loading kernels and filling its registries)\n"
-    "# are not safe: one of them can fail to instantiate.\n"
-    "_shared = sys.modules.setdefault('_bearing_fmu_runtime_shared', types.ModuleType('_bearing_fmu_runtime_shared'))\n"
-    "_setup_lock = _shared.__dict__.setdefault('setup_lock', threading.RLock())\n"
-    "def begin_setup():\n"
-    "    _setup_lock.acquire()\n"
-    "def end_setup():\n"
-    "    _setup_lock.release()\n"
-    "def slave_class(resources):\n"
-    "    with open(os.path.join(resources, 'slavemodule.txt'), encoding='utf-8') as fh:\n"
-    "        name = fh.readline().strip()\n"
-    "    if name not in sys.modules and resources not in sys.path:\n"
-    "        sys.path.insert(0, resources)\n"
-    "    module = importlib.import_module(name)\n"
-    "    found = [c for c in vars(module).values() if inspect.isclass(c) and not inspect.isabstract(c)\n"
-    "             and any(k.__name__ == 'Fmi2Slave' for k in c.__mro__)]\n"
-    "    if not found:\n"
-    "        raise ImportError(f'no Fmi2Slave subclass in module {name} ({module.__file__})')\n"
-    "    return max(found, key=lambda c: len(c.__mro__))\n"
-    "def describe(kind, value, tb):\n"
-    "    # the exception first: a host that shows only the start of a long message still shows the cause\n"
-    "    head = ''.join(traceback.format_exception_only(kind, value)).rstrip()\n"
-    "    return head + '\\n' + ''.join(traceback.format_exception(kind, value, tb)).rstrip()\n"
-    "def dumps(state):\n"
-    "    return pickle.dumps(state, protocol=pickle.HIGHEST_PROTOCOL)\n"
-    "loads = pickle.loads\n";
+#define HELPER_FILE "fmi2_layer.py" /* resources/ file: the layer's Python side (bearing_fmu_common/runtime) */
 
 /* The value references of the last call of one kind, as a Python tuple: a host asks for the same
  * variables every step, so the tuple is built once and handed over again while the references match. */
@@ -135,7 +105,7 @@ typedef struct {
 } Instance;
 
 static pthread_mutex_t helper_lock = PTHREAD_MUTEX_INITIALIZER; /* taken before the GIL: see ensure_helper */
-static PyObject *helper; /* namespace of HELPER_SOURCE; lives as long as the process */
+static PyObject *helper; /* the module of resources/fmi2_layer.py; lives as long as the process */
 
 /* Names of the slave methods called every step and of its log queue, interned once (ensure_helper):
  * a call by an interned name skips building the name and parsing a format string per call. */
@@ -248,33 +218,94 @@ static fmi2Status settle(Instance *c, const char *what, PyObject *result, fmi2St
 
 /* -- interpreter ---------------------------------------------------------------------------- */
 
-/* Make sure this copy of the layer has its helper. The interpreter runs already: the host's, or the one
- * the FMU's entry library started (fmi2_loader.c); it is never finalised (docs/fmu_runtime.md). The
- * helper is made once per copy of the layer; helper_lock is taken before the GIL (never the other way
- * round), so two host threads instantiating at once make it once. */
-static int ensure_helper(char *error, size_t size)
+/* The pending Python exception as "Kind: text" (malloc'ed; NULL if none could be had); clears it. */
+static char *exception_text(void)
+{
+    PyObject *kind, *value, *tb;
+    PyErr_Fetch(&kind, &value, &tb);
+    PyErr_NormalizeException(&kind, &value, &tb);
+    PyObject *name = kind ? PyObject_GetAttrString(kind, "__name__") : NULL;
+    PyObject *text = value ? PyObject_Str(value) : NULL;
+    const char *name_utf8 = name ? PyUnicode_AsUTF8AndSize(name, NULL) : NULL;
+    const char *text_utf8 = text ? PyUnicode_AsUTF8AndSize(text, NULL) : NULL;
+    char *out = NULL;
+    if (name_utf8 != NULL) {
+        size_t n = strlen(name_utf8) + (text_utf8 ? strlen(text_utf8) : 0) + 3;
+        if ((out = malloc(n)) != NULL)
+            snprintf(out, n, "%s%s%s", name_utf8, text_utf8 && text_utf8[0] ? ": " : "", text_utf8 ? text_utf8 : "");
+    }
+    PyErr_Clear();
+    Py_XDECREF(name);
+    Py_XDECREF(text);
+    Py_XDECREF(kind);
+    Py_XDECREF(value);
+    Py_XDECREF(tb);
+    return out;
+}
+
+/* resources/fmi2_layer.py loaded by file location as a module of its own, not registered in sys.modules (each
+ * copy of the layer has its own) and without touching sys.path; new reference, or NULL with an exception set. */
+static PyObject *load_helper(const char *resources)
+{
+    size_t n = strlen(resources) + sizeof HELPER_FILE + 1;
+    char *path = malloc(n);
+    if (path == NULL)
+        return PyErr_NoMemory();
+    snprintf(path, n, "%s/%s", resources, HELPER_FILE);
+    PyObject *util = PyImport_ImportModule("importlib.util");
+    PyObject *spec = util ? PyObject_CallMethod(util, "spec_from_file_location", "(sN)", "bearing_fmu_runtime",
+                                                PyUnicode_DecodeFSDefault(path))
+                          : NULL;
+    free(path);
+    if (spec == Py_None) {
+        Py_CLEAR(spec);
+        PyErr_SetString(PyExc_ImportError, "no loader for " HELPER_FILE);
+    }
+    PyObject *module = spec ? PyObject_CallMethod(util, "module_from_spec", "(O)", spec) : NULL;
+    PyObject *loader = module ? PyObject_GetAttrString(spec, "loader") : NULL;
+    PyObject *done = loader ? PyObject_CallMethod(loader, "exec_module", "(O)", module) : NULL;
+    if (done == NULL)
+        Py_CLEAR(module);
+    Py_XDECREF(done);
+    Py_XDECREF(loader);
+    Py_XDECREF(spec);
+    Py_XDECREF(util);
+    return module;
+}
+
+static char NO_MEMORY[] = "out of memory"; /* what ensure_helper returns when it cannot allocate its message */
+
+/* Make sure this copy of the layer has its helper, the module of resources/fmi2_layer.py (`resources`: the
+ * first instance's). The interpreter runs already: the host's, or the one the FMU's entry library started
+ * (fmi2_loader.c); it is never finalised (docs/fmu_runtime.md). The helper is made once per copy of the
+ * layer; helper_lock is taken before the GIL (never the other way round), so two host threads instantiating
+ * at once make it once. NULL if it is there, else what went wrong (malloc'ed, or NO_MEMORY). */
+static char *ensure_helper(const char *resources)
 {
     if (!Py_IsInitialized()) {
-        snprintf(error, size, "no Python interpreter runs in this process (the FMU's entry library starts one)");
-        return 0;
+        static const char text[] = "no Python interpreter runs in this process (the FMU's entry library starts one)";
+        char *copy = strdup(text);
+        return copy ? copy : NO_MEMORY;
     }
-    int ok = 1;
+    char *error = NULL;
     pthread_mutex_lock(&helper_lock);
     if (helper == NULL) {
         PyGILState_STATE gil = PyGILState_Ensure();
-        PyObject *globals = PyDict_New();
-        PyObject *code = Py_CompileString(HELPER_SOURCE, "<bearing_fmu_runtime>", Py_file_input);
-        PyObject *done = NULL;
-        if (globals != NULL && code != NULL && PyDict_SetItemString(globals, "__builtins__", PyEval_GetBuiltins()) == 0)
-            done = PyEval_EvalCode(code, globals, globals);
-        if (done == NULL) {
-            PyErr_Print();
-            snprintf(error, size, "the runtime's helper code failed to compile");
-            ok = 0;
+        PyObject *module = load_helper(resources);
+        if (module == NULL) {
+            char *why = exception_text();
+            const char *detail = why ? why : "unknown Python error";
+            static const char head[] = "cannot load the layer's Python side, resources/" HELPER_FILE " (an incomplete "
+                                       "or altered FMU): ";
+            size_t n = sizeof head + strlen(detail);
+            error = malloc(n);
+            if (error != NULL)
+                snprintf(error, n, "%s%s", head, detail);
+            else
+                error = NO_MEMORY;
+            free(why);
         } else {
-            Py_DECREF(done);
-            helper = PyModule_New("bearing_fmu_runtime");
-            PyDict_Update(PyModule_GetDict(helper), globals);
+            helper = module;
             for (int k = 0; k < N_KINDS; k++)
                 kind_names[k] = PyUnicode_InternFromString(KIND_METHODS[k]);
             name_do_step = PyUnicode_InternFromString("do_step");
@@ -282,12 +313,10 @@ static int ensure_helper(char *error, size_t size)
             name_begin_setup = PyUnicode_InternFromString("begin_setup");
             name_end_setup = PyUnicode_InternFromString("end_setup");
         }
-        Py_XDECREF(code);
-        Py_XDECREF(globals);
         PyGILState_Release(gil);
     }
     pthread_mutex_unlock(&helper_lock);
-    return ok;
+    return error;
 }
 
 /* -- instance ------------------------------------------------------------------------------- */
@@ -455,7 +484,6 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     c->logger = functions ? functions->logger : NULL;
     c->env = functions ? functions->componentEnvironment : NULL;
     c->logging_on = loggingOn;
-    char error[1024];
     char *resources = uri_to_path(fmuResourceLocation);
     if (fmuType != fmi2CoSimulation || resources == NULL) {
         emitf(c, fmi2Error, "%s: only co-simulation with a resource location is supported", c->name);
@@ -463,12 +491,15 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     }
     if (!guid_matches(c, resources, fmuGUID))
         return refuse(c, resources);
-    if (!ensure_helper(error, sizeof error)) {
+    char *error = ensure_helper(resources);
+    if (error != NULL) {
         emitf(c, fmi2Error, "%s: %s", c->name, error);
+        if (error != NO_MEMORY)
+            free(error);
         return refuse(c, resources);
     }
     PyGILState_STATE gil = PyGILState_Ensure();
-    setup_lock(name_begin_setup); /* the class and the slave under one hold: see HELPER_SOURCE */
+    setup_lock(name_begin_setup); /* the class and the slave under one hold: see fmi2_layer.py */
     c->cls = PyObject_CallMethod(helper, "slave_class", "(s)", resources);
     if (c->cls == NULL)
         log_exception(c, "loading the slave class");

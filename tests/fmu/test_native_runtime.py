@@ -341,6 +341,22 @@ def test_a_wrong_guid_is_refused(unpacked, importer):
     assert f"GUID '{{not-this-fmu}}' is not this FMU's ('{unpacked.guid}' in its modelDescription.xml)" in stderr
 
 
+@pytest.mark.parametrize("unpacked", ["analytic_fmu"], indirect=True)
+def test_the_layer_runs_the_python_side_the_fmu_carries(unpacked, importer):
+    """The layer's Python code is resources/fmi2_layer.py, not text compiled into the binary: without that file
+    fmi2Instantiate returns NULL and says which file is missing."""
+    layer = unpacked.dir / "resources" / "fmi2_layer.py"
+    assert layer.read_bytes() == (Path(install_runtime.__code__.co_filename).parent / "fmi2_layer.py").read_bytes()
+    binary = (unpacked.library.parent / "fmi2_python.abi3.so").read_bytes()
+    assert b"def slave_class" not in binary and b"import importlib" not in binary
+    layer.unlink()
+    rc, statuses, stderr = unpacked.calls(importer, ["instantiate"])
+    assert rc == 0, stderr[-2000:]
+    assert statuses == [("instantiate", "null")]
+    assert "cannot load the layer's Python side, resources/fmi2_layer.py (an incomplete or altered FMU)" in stderr
+    assert "FileNotFoundError" in stderr
+
+
 @pytest.fixture(scope="module")
 def failing_fmu(tmp_path_factory):
     """An FMU of tests/fmu/failing_constructor_slave.py with the product's FMI layer."""
