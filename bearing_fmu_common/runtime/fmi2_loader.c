@@ -72,6 +72,18 @@ typedef struct {
     int logging_on;
 } Host;
 
+static void log_text(fmi2CallbackLogger logger, fmi2ComponentEnvironment env, const char *name, fmi2Status status,
+                     const char *category, const char *text)
+{
+    if (logger == NULL)
+        return;
+    char *format = printf_safe(text);
+    if (format == NULL)
+        return;
+    logger(env, name, status, category, format);
+    free(format);
+}
+
 static void say(const Host *host, fmi2Status status, const char *fmt, ...)
 {
     if (status == fmi2OK && !host->logging_on)

@@ -15,7 +15,8 @@
  * pythonfmu's builder), imports that module with resources/ on sys.path (once per process: later
  * instances, from any extraction of the FMU, reuse it and add nothing to sys.path) and instantiates
  * its Fmi2Slave subclass. Every call holds the GIL (PyGILState_Ensure), so a Python host (fmpy, whose
- * ctypes calls release the GIL) and a native host on any thread are served the same way.
+ * ctypes calls release the GIL) and a native host on any thread are served the same way; the host's logger
+ * is called with the GIL released (emit).
  *
  * No call can crash the host: a NULL instance gets fmi2Error, and every call is checked against the FMI
  * 2.0 co-simulation call sequence (the states and masks below, as the Modelica Reference-FMUs check it);
@@ -113,13 +114,44 @@ static const char *KIND_METHODS[N_KINDS] = {"get_real",   "get_integer", "get_bo
                                             "set_real",   "set_integer", "set_boolean", "set_string"};
 static PyObject *kind_names[N_KINDS], *name_do_step, *name_log_queue, *name_begin_setup, *name_end_setup;
 
+/* -- the GIL ---------------------------------------------------------------------------------- */
+
+/* How many holds of the GIL this thread has taken through gil_take and not given back: the host's logger is
+ * called with the GIL released only by a thread that holds it (PyGILState_Check is not in the stable ABI). */
+static __thread int gil_holds;
+
+static PyGILState_STATE gil_take(void)
+{
+    PyGILState_STATE state = PyGILState_Ensure();
+    gil_holds++;
+    return state;
+}
+
+static void gil_give(PyGILState_STATE state)
+{
+    gil_holds--;
+    PyGILState_Release(state);
+}
+
 /* -- logging -------------------------------------------------------------------------------- */
 
-/* Pass a message to the host's logger (warnings and errors always; debug messages only if asked for). */
+/* Pass a message to the host's logger (warnings and errors always; debug messages only if asked for). The
+ * logger runs with the GIL released: a host's logger may wait for a lock of the host (its log file, its
+ * console) that another host thread holds while it calls into an FMU, and that thread needs the GIL. The
+ * message and category are copied into C memory first, so nothing of Python is touched meanwhile. */
 static void emit(const Instance *c, fmi2Status status, const char *category, const char *text)
 {
-    if (status != fmi2OK || c->logging_on)
-        log_text(c->logger, c->env, c->name, status, category, text);
+    if (c->logger == NULL || (status == fmi2OK && !c->logging_on))
+        return;
+    char *format = printf_safe(text), *cat = strdup(category);
+    if (format != NULL && cat != NULL) {
+        PyThreadState *saved = gil_holds > 0 ? PyEval_SaveThread() : NULL;
+        c->logger(c->env, c->name, status, cat, format);
+        if (saved != NULL)
+            PyEval_RestoreThread(saved);
+    }
+    free(format);
+    free(cat);
 }
 
 static void emitf(const Instance *c, fmi2Status status, const char *fmt, ...)
@@ -132,7 +164,8 @@ static void emitf(const Instance *c, fmi2Status status, const char *fmt, ...)
     emit(c, status, status >= fmi2Error ? "logStatusError" : "logAll", text);
 }
 
-/* Pass the slave's queued log messages (pythonfmu LogMsg: status, category, msg) to the host. */
+/* Pass the slave's queued log messages (pythonfmu LogMsg: status, category, msg) to the host. They are taken
+ * off the queue before the first is passed on (the GIL is released while the logger runs). */
 static void flush_log(const Instance *c)
 {
     if (c->slave == NULL)
@@ -144,8 +177,13 @@ static void flush_log(const Instance *c)
         return;
     }
     Py_ssize_t n = PyList_Size(queue);
-    for (Py_ssize_t i = 0; i < n; i++) {
-        PyObject *entry = PyList_GetItem(queue, i);
+    PyObject *batch = PyList_GetSlice(queue, 0, n);
+    if (batch != NULL)
+        PyList_SetSlice(queue, 0, n, NULL);
+    Py_DECREF(queue);
+    PyErr_Clear();
+    for (Py_ssize_t i = 0; batch != NULL && i < n; i++) {
+        PyObject *entry = PyList_GetItem(batch, i);
         PyObject *status = PyObject_GetAttrString(entry, "status");
         PyObject *category = PyObject_GetAttrString(entry, "category");
         PyObject *msg = PyObject_GetAttrString(entry, "msg");
@@ -163,8 +201,7 @@ static void flush_log(const Instance *c)
         Py_XDECREF(msg_text);
         Py_XDECREF(category_text);
     }
-    PyList_SetSlice(queue, 0, n, NULL);
-    Py_DECREF(queue);
+    Py_XDECREF(batch);
 }
 
 /* Log the pending Python exception with its traceback as an fmi2Error message; clears it. */
@@ -290,7 +327,7 @@ static char *ensure_helper(const char *resources)
     char *error = NULL;
     pthread_mutex_lock(&helper_lock);
     if (helper == NULL) {
-        PyGILState_STATE gil = PyGILState_Ensure();
+        PyGILState_STATE gil = gil_take();
         PyObject *module = load_helper(resources);
         if (module == NULL) {
             char *why = exception_text();
@@ -313,7 +350,7 @@ static char *ensure_helper(const char *resources)
             name_begin_setup = PyUnicode_InternFromString("begin_setup");
             name_end_setup = PyUnicode_InternFromString("end_setup");
         }
-        PyGILState_Release(gil);
+        gil_give(gil);
     }
     pthread_mutex_unlock(&helper_lock);
     return error;
@@ -372,20 +409,23 @@ static int has_slave(Instance *c, const char *call)
     Instance *c = component;                                                                       \
     if (c == NULL)                                                                                 \
         return fmi2Error;                                                                          \
-    PyGILState_STATE gil__ = PyGILState_Ensure();                                                  \
+    PyGILState_STATE gil__ = gil_take();                                                           \
+    State entered__ = c->state;                                                                    \
     if (!allowed(c, (mask), (call)))                                                               \
     RETURN(fmi2Error)
 
 /* Leave the call: an error or fatal status puts the instance into that state (not while a step runs on
- * another thread: a call refused meanwhile leaves the step's outcome to decide); releases the GIL. */
+ * another thread, nor if one ran when the call came: a call refused meanwhile leaves the step's outcome to
+ * decide, also when the step ended while the refusal was being logged); releases the GIL. */
 #define RETURN(value)                                                                              \
     do {                                                                                           \
         fmi2Status value__ = (value);                                                              \
-        if (value__ == fmi2Error && c->state != STEP_IN_PROGRESS)                                  \
+        int stepping__ = entered__ == STEP_IN_PROGRESS || c->state == STEP_IN_PROGRESS;            \
+        if (value__ == fmi2Error && !stepping__)                                                   \
             c->state = ERROR_STATE;                                                                \
-        else if (value__ == fmi2Fatal && c->state != STEP_IN_PROGRESS)                             \
+        else if (value__ == fmi2Fatal && !stepping__)                                              \
             c->state = FATAL_STATE;                                                                \
-        PyGILState_Release(gil__);                                                                 \
+        gil_give(gil__);                                                                           \
         return value__;                                                                            \
     } while (0)
 
@@ -498,7 +538,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
             free(error);
         return refuse(c, resources);
     }
-    PyGILState_STATE gil = PyGILState_Ensure();
+    PyGILState_STATE gil = gil_take();
     setup_lock(name_begin_setup); /* the class and the slave under one hold: see fmi2_layer.py */
     c->cls = PyObject_CallMethod(helper, "slave_class", "(s)", resources);
     if (c->cls == NULL)
@@ -514,7 +554,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     } else {
         c->state = INSTANTIATED;
     }
-    PyGILState_Release(gil);
+    gil_give(gil);
     free(resources);
     return c;
 }
@@ -524,14 +564,14 @@ void fmi2FreeInstance(fmi2Component component)
     Instance *c = component;
     if (c == NULL)
         return;
-    PyGILState_STATE gil = PyGILState_Ensure();
+    PyGILState_STATE gil = gil_take();
     if (!allowed(c, MASK_FreeInstance, "fmi2FreeInstance")) {
-        PyGILState_Release(gil); /* a step still running on another thread: leave the instance alone */
+        gil_give(gil); /* a step still running on another thread: leave the instance alone */
         return;
     }
     flush_log(c);
     release(c);
-    PyGILState_Release(gil);
+    gil_give(gil);
     /* the last instance leaves the interpreter running: docs/fmu_runtime.md */
 }
 

@@ -18,15 +18,24 @@
  *     two threads, released together, each instantiate, initialise, step twice, terminate and free
  *     one of the two FMUs: what a host that sets up two FMUs at once does.
  *     exit: 0 all calls OK, 2 usage or loading problem, 3 an FMI call failed
+ * native_importer --logger-lock LIBRARY RESOURCE_URI GUID VR
+ *     a host whose logger takes a lock of its own: thread 1 holds that lock while it reads Real VR of one
+ *     instance; thread 2 meanwhile makes a call the FMU refuses on a second instance, whose message goes
+ *     to the logger, which waits for the lock. Prints "logger-lock S1 S2" (the two calls' statuses).
+ *     exit: 0, 2 usage or loading problem, 3 an FMI call failed, 5 the threads did not finish within 60 s
  *
  * The FMU's messages go to stderr, formatted as printf formats (FMI 2.0 logger).
  */
+#define _GNU_SOURCE /* pthread_timedjoin_np */
 #include <dlfcn.h>
+#include <errno.h>
 #include <pthread.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
+#include <unistd.h>
 
 #include "fmi2Functions.h"
 
@@ -355,10 +364,110 @@ static int threads_mode(int argc, char **argv)
     return jobs[0].result ? jobs[0].result : jobs[1].result;
 }
 
+/* -- --logger-lock: a logger that takes a lock another thread holds while it calls into the FMU ------ */
+
+static pthread_mutex_t host_lock = PTHREAD_MUTEX_INITIALIZER; /* e.g. the host's log file */
+static volatile int logger_waiting;                           /* the locking logger is waiting for host_lock */
+
+static void locking_logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status, fmi2String category,
+                           fmi2String message, ...)
+{
+    (void)env;
+    __atomic_store_n(&logger_waiting, 1, __ATOMIC_SEQ_CST);
+    pthread_mutex_lock(&host_lock);
+    va_list args;
+    va_start(args, message);
+    flockfile(stderr);
+    fprintf(stderr, "[%d] %s (%s): ", (int)status, name, category);
+    vfprintf(stderr, message, args);
+    fputc('\n', stderr);
+    funlockfile(stderr);
+    va_end(args);
+    pthread_mutex_unlock(&host_lock);
+}
+
+typedef struct {
+    const Api *api;
+    fmi2Component reader, refused; /* thread 1 reads from the first, thread 2 makes a refused call on the second */
+    fmi2ValueReference vr;         /* the Real thread 1 reads */
+    volatile int holding;          /* thread 1 holds host_lock */
+    fmi2Status status;
+} LockJob;
+
+static void *reader_main(void *arg)
+{
+    LockJob *job = arg;
+    pthread_mutex_lock(&host_lock);
+    __atomic_store_n(&job->holding, 1, __ATOMIC_SEQ_CST);
+    for (int k = 0; k < 10000 && !__atomic_load_n(&logger_waiting, __ATOMIC_SEQ_CST); k++)
+        usleep(1000); /* until thread 2 is in the logger, waiting for host_lock (10 s at most) */
+    fmi2Real value = 0.0;
+    job->status = job->api->fmi2GetReal(job->reader, &job->vr, 1, &value); /* needs the GIL */
+    pthread_mutex_unlock(&host_lock);
+    return NULL;
+}
+
+static void *refused_main(void *arg)
+{
+    LockJob *job = arg;
+    while (!__atomic_load_n(&job->holding, __ATOMIC_SEQ_CST))
+        usleep(1000);
+    job->status = job->api->fmi2DoStep(job->refused, 0.0, 0.1, fmi2True); /* before initialisation: refused */
+    return NULL;
+}
+
+static int logger_lock_mode(const Api *api, int argc, char **argv)
+{
+    if (argc != 6) {
+        fprintf(stderr, "usage: %s --logger-lock LIBRARY RESOURCE_URI GUID VR\n", argv[0]);
+        return 2;
+    }
+    static fmi2CallbackFunctions locking = {locking_logger, calloc, free, NULL, NULL};
+    fmi2Component reader = api->fmi2Instantiate("reader", fmi2CoSimulation, argv[4], argv[3], &locking, fmi2False,
+                                                fmi2False);
+    fmi2Component refused = api->fmi2Instantiate("refused", fmi2CoSimulation, argv[4], argv[3], &locking, fmi2False,
+                                                 fmi2False);
+    if (reader == NULL || refused == NULL) {
+        fprintf(stderr, "fmi2Instantiate failed\n");
+        return 3;
+    }
+    CHECK(api->fmi2SetupExperiment(reader, fmi2False, 0.0, 0.0, fmi2False, 0.0));
+    CHECK(api->fmi2EnterInitializationMode(reader));
+    CHECK(api->fmi2ExitInitializationMode(reader));
+    LockJob first = {.api = api, .reader = reader, .vr = (fmi2ValueReference)strtoul(argv[5], NULL, 10),
+                     .status = fmi2Fatal};
+    LockJob second = {.api = api, .refused = refused, .status = fmi2Fatal};
+    pthread_t threads[2];
+    __atomic_store_n(&logger_waiting, 0, __ATOMIC_SEQ_CST); /* a message of the set-up does not count */
+    pthread_create(&threads[0], NULL, reader_main, &first);
+    pthread_create(&threads[1], NULL, refused_main, &second);
+    /* thread 2 starts its call once thread 1 holds the lock */
+    while (!__atomic_load_n(&first.holding, __ATOMIC_SEQ_CST))
+        usleep(1000);
+    __atomic_store_n(&second.holding, 1, __ATOMIC_SEQ_CST);
+    struct timespec deadline;
+    clock_gettime(CLOCK_REALTIME, &deadline);
+    deadline.tv_sec += 60;
+    for (int k = 0; k < 2; k++)
+        if (pthread_timedjoin_np(threads[k], NULL, &deadline) == ETIMEDOUT) {
+            printf("logger-lock deadlock\n");
+            fflush(stdout);
+            _exit(5); /* the threads are stuck: no orderly exit */
+        }
+    printf("logger-lock %d %d\n", (int)first.status, (int)second.status);
+    api->fmi2FreeInstance(reader);
+    api->fmi2FreeInstance(refused);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc > 1 && strcmp(argv[1], "--threads") == 0)
         return threads_mode(argc, argv);
+    if (argc > 2 && strcmp(argv[1], "--logger-lock") == 0) {
+        Api api;
+        return load(argv[2], &api) ? logger_lock_mode(&api, argc, argv) : 2;
+    }
     int calls = argc > 1 && strcmp(argv[1], "--calls") == 0;
     if (argc < 2 + calls) {
         fprintf(stderr, "usage: see the head of native_importer.c\n");

@@ -342,6 +342,19 @@ def test_a_wrong_guid_is_refused(unpacked, importer):
 
 
 @pytest.mark.parametrize("unpacked", ["analytic_fmu"], indirect=True)
+def test_a_host_logger_waiting_for_a_lock_of_the_host_does_not_block_other_threads(unpacked, importer):
+    """The host's logger runs without the GIL: thread 2's refused call logs, and its logger waits for a lock that
+    thread 1 holds while it reads an output of another instance (which needs the GIL); both calls return."""
+    env = {k: os.environ[k] for k in KEPT if k in os.environ}
+    args = [str(importer), "--logger-lock", str(unpacked.library), unpacked.resources, unpacked.guid]
+    args.append(str(unpacked.vr["Lambda_outer"]))
+    proc = subprocess.run(args, capture_output=True, text=True, env=env, timeout=600)
+    assert proc.returncode == 0, (proc.stdout, proc.stderr[-2000:])
+    assert proc.stdout.split() == ["logger-lock", "0", "3"]  # the read is OK, the refused step fmi2Error
+    assert "refused (logStatusError): refused: fmi2DoStep is not allowed in state instantiated" in proc.stderr
+
+
+@pytest.mark.parametrize("unpacked", ["analytic_fmu"], indirect=True)
 def test_the_layer_runs_the_python_side_the_fmu_carries(unpacked, importer):
     """The layer's Python code is resources/fmi2_layer.py, not text compiled into the binary: without that file
     fmi2Instantiate returns NULL and says which file is missing."""
