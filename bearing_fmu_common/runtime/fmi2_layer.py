@@ -53,8 +53,11 @@ def slave_class(resources):
 
 def describe(kind, value, tb):
     """An exception and its traceback as one text, the exception first: a host that shows only the start of
-    a long message still shows the cause."""
+    a long message still shows the cause. An exception raised by the layer's own C code has no traceback: its
+    text alone."""
     head = "".join(traceback.format_exception_only(kind, value)).rstrip()
+    if tb is None:
+        return head
     return head + "\n" + "".join(traceback.format_exception(kind, value, tb)).rstrip()
 
 

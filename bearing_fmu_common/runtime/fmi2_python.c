@@ -27,6 +27,7 @@
 #define Py_LIMITED_API 0x030A0000 /* Python 3.10: the oldest supported host */
 #include <Python.h>
 
+#include <limits.h>
 #include <pthread.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -736,6 +737,14 @@ fmi2Status fmi2SetString(fmi2Component component, const fmi2ValueReference vr[],
                PyUnicode_DecodeUTF8(value[i] ? value[i] : "", (Py_ssize_t)strlen(value[i] ? value[i] : ""), "replace"));
 }
 
+/* The value of variable vr[i] could not be converted: logged with its value reference. */
+static void log_value_error(Instance *c, int kind, fmi2ValueReference vr)
+{
+    char what[64];
+    snprintf(what, sizeof what, "%s, value reference %u", KIND_METHODS[kind], (unsigned)vr);
+    log_exception(c, what);
+}
+
 fmi2Status fmi2GetReal(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[])
 {
     BEGIN("fmi2GetReal", MASK_Get);
@@ -744,13 +753,16 @@ fmi2Status fmi2GetReal(fmi2Component component, const fmi2ValueReference vr[], s
     PyObject *values = get_values(c, GET_REAL, vr, nvr);
     if (values == NULL)
         RETURN(fmi2Error);
-    for (size_t i = 0; i < nvr; i++)
-        value[i] = PyFloat_AsDouble(PyList_GetItem(values, (Py_ssize_t)i));
-    Py_DECREF(values);
-    if (PyErr_Occurred()) {
-        log_exception(c, "get_real");
-        RETURN(fmi2Error);
+    for (size_t i = 0; i < nvr; i++) {
+        double x = PyFloat_AsDouble(PyList_GetItem(values, (Py_ssize_t)i));
+        if (x == -1.0 && PyErr_Occurred()) { /* stop at the first: no C API call with an exception set */
+            Py_DECREF(values);
+            log_value_error(c, GET_REAL, vr[i]);
+            RETURN(fmi2Error);
+        }
+        value[i] = x;
     }
+    Py_DECREF(values);
     flush_log(c);
     RETURN(fmi2OK);
 }
@@ -763,13 +775,19 @@ fmi2Status fmi2GetInteger(fmi2Component component, const fmi2ValueReference vr[]
     PyObject *values = get_values(c, GET_INTEGER, vr, nvr);
     if (values == NULL)
         RETURN(fmi2Error);
-    for (size_t i = 0; i < nvr; i++)
-        value[i] = (fmi2Integer)PyLong_AsLong(PyList_GetItem(values, (Py_ssize_t)i));
-    Py_DECREF(values);
-    if (PyErr_Occurred()) {
-        log_exception(c, "get_integer");
-        RETURN(fmi2Error);
+    for (size_t i = 0; i < nvr; i++) {
+        PyObject *item = PyList_GetItem(values, (Py_ssize_t)i);
+        long x = PyLong_AsLong(item);
+        if (!(x == -1 && PyErr_Occurred()) && (x < INT_MIN || x > INT_MAX))
+            PyErr_Format(PyExc_OverflowError, "%ld does not fit an fmi2Integer (%d to %d)", x, INT_MIN, INT_MAX);
+        if (PyErr_Occurred()) { /* stop at the first: no C API call with an exception set */
+            Py_DECREF(values);
+            log_value_error(c, GET_INTEGER, vr[i]);
+            RETURN(fmi2Error);
+        }
+        value[i] = (fmi2Integer)x;
     }
+    Py_DECREF(values);
     flush_log(c);
     RETURN(fmi2OK);
 }
@@ -782,17 +800,16 @@ fmi2Status fmi2GetBoolean(fmi2Component component, const fmi2ValueReference vr[]
     PyObject *values = get_values(c, GET_BOOLEAN, vr, nvr);
     if (values == NULL)
         RETURN(fmi2Error);
-    int failed = 0;
     for (size_t i = 0; i < nvr; i++) {
         int truth = PyObject_IsTrue(PyList_GetItem(values, (Py_ssize_t)i));
-        failed |= truth < 0;
-        value[i] = truth > 0 ? fmi2True : fmi2False;
+        if (truth < 0) { /* stop at the first: no C API call with an exception set */
+            Py_DECREF(values);
+            log_value_error(c, GET_BOOLEAN, vr[i]);
+            RETURN(fmi2Error);
+        }
+        value[i] = truth ? fmi2True : fmi2False;
     }
     Py_DECREF(values);
-    if (failed) {
-        log_exception(c, "get_boolean");
-        RETURN(fmi2Error);
-    }
     flush_log(c);
     RETURN(fmi2OK);
 }
@@ -806,20 +823,23 @@ fmi2Status fmi2GetString(fmi2Component component, const fmi2ValueReference vr[],
     if (values == NULL)
         RETURN(fmi2Error);
     PyObject *strings = PyList_New((Py_ssize_t)nvr); /* the pointers stay valid until the next call */
-    for (size_t i = 0; strings != NULL && i < nvr; i++) {
+    if (strings == NULL) {
+        Py_DECREF(values);
+        log_exception(c, "get_string");
+        RETURN(fmi2Error);
+    }
+    for (size_t i = 0; i < nvr; i++) {
         PyObject *bytes = PyUnicode_AsUTF8String(PyList_GetItem(values, (Py_ssize_t)i));
-        if (bytes == NULL) {
-            Py_CLEAR(strings);
-            break;
+        if (bytes == NULL) { /* stop at the first: no C API call with an exception set */
+            SET_REF(c->strings, strings); /* the strings given before it stay valid too */
+            Py_DECREF(values);
+            log_value_error(c, GET_STRING, vr[i]);
+            RETURN(fmi2Error);
         }
         PyList_SetItem(strings, (Py_ssize_t)i, bytes);
         value[i] = PyBytes_AsString(bytes);
     }
     Py_DECREF(values);
-    if (strings == NULL) {
-        log_exception(c, "get_string");
-        RETURN(fmi2Error);
-    }
     SET_REF(c->strings, strings);
     flush_log(c);
     RETURN(fmi2OK);

@@ -12,7 +12,9 @@
  *     CALL: instantiate, guid:TEXT (the GUID of the next instantiate), setup, enter, exit, step (doStep
  *     of 0.1 s from the last accepted step's end), terminate, reset, getReal:VR, setReal:VR=REAL,
  *     getState, setState, cancel, free, null (every function with a NULL instance, one line each),
- *     nullargs (NULL array or state arguments, one line each).
+ *     nullargs (NULL array or state arguments, one line each), reals:VR,VR,... (likewise integers,
+ *     booleans, strings: one get of those variables into an array filled with -7 (strings: "unset")
+ *     before, printed as "CALL STATUS|value|value|...").
  *     exit: 0 (2 usage or loading problem)
  * native_importer --threads LIB1 URI1 GUID1 LIB2 URI2 GUID2
  *     two threads, released together, each instantiate, initialise, step twice, terminate and free
@@ -238,6 +240,37 @@ static void null_arguments(const Api *api, fmi2Component c)
     SHOW("nullargs:fmi2GetRealStatus", api->fmi2GetRealStatus(c, fmi2LastSuccessfulTime, NULL));
 }
 
+/* reals:VR,VR,... and the like: one get into an array filled beforehand, printed whole with the status. */
+static void get_many(const Api *api, fmi2Component c, const char *call, const char *list)
+{
+    fmi2ValueReference vr[MAX_VARS];
+    size_t n = 0;
+    for (const char *p = list; *p && n < MAX_VARS; p = strchr(p, ',') ? strchr(p, ',') + 1 : p + strlen(p))
+        vr[n++] = (fmi2ValueReference)strtoul(p, NULL, 10);
+    fmi2Real r[MAX_VARS];
+    fmi2Integer i[MAX_VARS];
+    fmi2Boolean b[MAX_VARS];
+    fmi2String s[MAX_VARS];
+    for (size_t k = 0; k < MAX_VARS; k++)
+        r[k] = -7.0, i[k] = -7, b[k] = -7, s[k] = "unset";
+    fmi2Status status = call[0] == 'r'   ? api->fmi2GetReal(c, vr, n, r)
+                        : call[0] == 'i' ? api->fmi2GetInteger(c, vr, n, i)
+                        : call[0] == 'b' ? api->fmi2GetBoolean(c, vr, n, b)
+                                         : api->fmi2GetString(c, vr, n, s);
+    printf("%s %d", call, (int)status);
+    for (size_t k = 0; k < n; k++) {
+        if (call[0] == 'r')
+            printf("|%.17g", r[k]);
+        else if (call[0] == 'i')
+            printf("|%d", i[k]);
+        else if (call[0] == 'b')
+            printf("|%d", b[k]);
+        else
+            printf("|%s", s[k]);
+    }
+    printf("\n");
+}
+
 static int calls_mode(const Api *api, int argc, char **argv)
 {
     if (argc < 5) {
@@ -293,6 +326,9 @@ static int calls_mode(const Api *api, int argc, char **argv)
             api->fmi2FreeInstance(c);
             c = NULL;
             printf("%s done\n", call);
+        } else if (strncmp(call, "reals:", 6) == 0 || strncmp(call, "integers:", 9) == 0 ||
+                   strncmp(call, "booleans:", 9) == 0 || strncmp(call, "strings:", 8) == 0) {
+            get_many(api, c, call, arg);
         } else if (strcmp(call, "null") == 0) {
             null_instance(api);
         } else if (strcmp(call, "nullargs") == 0) {

@@ -418,6 +418,48 @@ def test_calls_after_a_failed_reset_return_error(failing_fmu, importer):
     assert "fmi2GetReal: the instance has no model since fmi2Reset failed" in stderr
 
 
+@pytest.fixture(scope="module")
+def bad_values_fmu(tmp_path_factory):
+    """An FMU of tests/fmu/bad_values_slave.py with the product's FMI layer."""
+    from pythonfmu.builder import FmuBuilder
+
+    script = Path(__file__).with_name("bad_values_slave.py")
+    path = FmuBuilder.build_FMU(script, dest=tmp_path_factory.mktemp("bad_values"))
+    sys.modules.pop(script.stem, None)
+    return install_runtime(path)
+
+
+def test_a_getter_stops_at_the_first_value_it_cannot_convert(bad_values_fmu, importer):
+    """Each getter's second value cannot be converted (a str for a Real, 2**40 for an Integer, an object whose
+    truth raises for a Boolean, bytes for a String): fmi2Error, the values after it are left as they were, and
+    the message names the variable's value reference and the cause."""
+    fmu = Unpacked(bad_values_fmu)
+    try:
+        calls = ["instantiate", "setup", "enter", "exit"]
+        for kind in ("real", "integer", "boolean", "string"):
+            calls.append(f"{kind}s:" + ",".join(str(fmu.vr[f"{kind}_{k}"]) for k in range(3)))
+        rc, statuses, stderr = fmu.calls(importer, calls + ["free"])
+    finally:
+        fmu.remove()
+    assert rc == 0, stderr[-2000:]
+    got = {call.split(":")[0]: status for call, status in statuses[4:8]}
+    assert got == {
+        "reals": "3|1.5|-7|-7",
+        "integers": "3|7|-7|-7",
+        "booleans": "3|1|-7|-7",
+        "strings": "3|first|unset|unset",
+    }
+    assert f"get_real, value reference {fmu.vr['real_1']}: TypeError: must be real number, not str" in stderr
+    assert f"get_integer, value reference {fmu.vr['integer_1']}: OverflowError: 1099511627776 does not fit an " in (
+        stderr
+    )
+    assert (
+        f"get_boolean, value reference {fmu.vr['boolean_1']}: ValueError: this value is neither true nor false"
+        in stderr
+    )
+    assert f"get_string, value reference {fmu.vr['string_1']}: TypeError: " in stderr
+
+
 TWO_THREAD_RUNS = 3
 
 
