@@ -676,8 +676,8 @@ static PyObject *references(Instance *c, int kind, const fmi2ValueReference vr[]
     return refs;
 }
 
-/* The checks every getter and setter makes before touching the slave: the arrays are there (or nvr = 0)
- * and the instance has a slave. */
+/* The checks every getter and setter makes before touching the slave: the arrays are there (they may be NULL
+ * only with nvr = 0: FMI 2.0) and the instance has a slave. A refusal is logged with the argument's name. */
 static int arrays_ok(Instance *c, const char *call, const void *vr, const void *value, size_t nvr)
 {
     return (nvr == 0 || (given(c, vr, call, "vr") && given(c, value, call, "value"))) && has_slave(c, call);
@@ -700,17 +700,40 @@ static PyObject *get_values(Instance *c, int kind, const fmi2ValueReference vr[]
     return values;
 }
 
-/* slave.<method of kind>(vrs, values) with values built by make(i). */
+/* The value of variable vr[i] could not be converted: logged with its value reference. */
+static void log_value_error(Instance *c, int kind, fmi2ValueReference vr)
+{
+    char what[64];
+    snprintf(what, sizeof what, "%s, value reference %u", KIND_METHODS[kind], (unsigned)vr);
+    log_exception(c, what);
+}
+
+/* slave.<method of kind>(vrs, values) with values built by make(i); a value that cannot be made stops the call
+ * (fmi2Error, logged with its value reference). */
 #define SET_VALUES(call, kind, make)                                                               \
     BEGIN(call, MASK_Set);                                                                         \
     if (!arrays_ok(c, call, vr, value, nvr))                                                       \
         RETURN(fmi2Error);                                                                         \
-    PyObject *vrs = references(c, kind, vr, nvr), *values = PyList_New((Py_ssize_t)nvr);           \
-    for (size_t i = 0; values != NULL && i < nvr; i++)                                             \
-        PyList_SetItem(values, (Py_ssize_t)i, make);                                              \
-    PyObject *r = vrs && values ? PyObject_CallMethodObjArgs(c->slave, kind_names[kind], vrs, values, NULL) : NULL; \
+    if (nvr == 0)                                                                                  \
+        RETURN(fmi2OK);                                                                            \
+    PyObject *values = PyList_New((Py_ssize_t)nvr);                                                \
+    if (values == NULL) {                                                                          \
+        log_exception(c, KIND_METHODS[kind]);                                                      \
+        RETURN(fmi2Error);                                                                         \
+    }                                                                                              \
+    for (size_t i = 0; i < nvr; i++) {                                                             \
+        PyObject *item = (make);                                                                   \
+        if (item == NULL) {                                                                        \
+            Py_DECREF(values);                                                                     \
+            log_value_error(c, kind, vr[i]);                                                       \
+            RETURN(fmi2Error);                                                                     \
+        }                                                                                          \
+        PyList_SetItem(values, (Py_ssize_t)i, item);                                               \
+    }                                                                                              \
+    PyObject *vrs = references(c, kind, vr, nvr);                                                  \
+    PyObject *r = vrs ? PyObject_CallMethodObjArgs(c->slave, kind_names[kind], vrs, values, NULL) : NULL; \
     Py_XDECREF(vrs);                                                                               \
-    Py_XDECREF(values);                                                                            \
+    Py_DECREF(values);                                                                             \
     RETURN(settle(c, KIND_METHODS[kind], r, fmi2Error))
 
 fmi2Status fmi2SetReal(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[])
@@ -737,19 +760,13 @@ fmi2Status fmi2SetString(fmi2Component component, const fmi2ValueReference vr[],
                PyUnicode_DecodeUTF8(value[i] ? value[i] : "", (Py_ssize_t)strlen(value[i] ? value[i] : ""), "replace"));
 }
 
-/* The value of variable vr[i] could not be converted: logged with its value reference. */
-static void log_value_error(Instance *c, int kind, fmi2ValueReference vr)
-{
-    char what[64];
-    snprintf(what, sizeof what, "%s, value reference %u", KIND_METHODS[kind], (unsigned)vr);
-    log_exception(c, what);
-}
-
 fmi2Status fmi2GetReal(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[])
 {
     BEGIN("fmi2GetReal", MASK_Get);
     if (!arrays_ok(c, "fmi2GetReal", vr, value, nvr))
         RETURN(fmi2Error);
+    if (nvr == 0)
+        RETURN(fmi2OK);
     PyObject *values = get_values(c, GET_REAL, vr, nvr);
     if (values == NULL)
         RETURN(fmi2Error);
@@ -772,6 +789,8 @@ fmi2Status fmi2GetInteger(fmi2Component component, const fmi2ValueReference vr[]
     BEGIN("fmi2GetInteger", MASK_Get);
     if (!arrays_ok(c, "fmi2GetInteger", vr, value, nvr))
         RETURN(fmi2Error);
+    if (nvr == 0)
+        RETURN(fmi2OK);
     PyObject *values = get_values(c, GET_INTEGER, vr, nvr);
     if (values == NULL)
         RETURN(fmi2Error);
@@ -797,6 +816,8 @@ fmi2Status fmi2GetBoolean(fmi2Component component, const fmi2ValueReference vr[]
     BEGIN("fmi2GetBoolean", MASK_Get);
     if (!arrays_ok(c, "fmi2GetBoolean", vr, value, nvr))
         RETURN(fmi2Error);
+    if (nvr == 0)
+        RETURN(fmi2OK);
     PyObject *values = get_values(c, GET_BOOLEAN, vr, nvr);
     if (values == NULL)
         RETURN(fmi2Error);
@@ -819,6 +840,8 @@ fmi2Status fmi2GetString(fmi2Component component, const fmi2ValueReference vr[],
     BEGIN("fmi2GetString", MASK_Get);
     if (!arrays_ok(c, "fmi2GetString", vr, value, nvr))
         RETURN(fmi2Error);
+    if (nvr == 0)
+        RETURN(fmi2OK);
     PyObject *values = get_values(c, GET_STRING, vr, nvr);
     if (values == NULL)
         RETURN(fmi2Error);

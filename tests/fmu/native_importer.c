@@ -12,7 +12,9 @@
  *     CALL: instantiate, guid:TEXT (the GUID of the next instantiate), setup, enter, exit, step (doStep
  *     of 0.1 s from the last accepted step's end), terminate, reset, getReal:VR, setReal:VR=REAL,
  *     getState, setState, cancel, free, null (every function with a NULL instance, one line each),
- *     nullargs (NULL array or state arguments, one line each), reals:VR,VR,... (likewise integers,
+ *     nullargs (NULL array or state arguments, one line each; nullargs:LABEL only the one of that label, e.g.
+ *     nullargs:fmi2SetReal(value)), empty (every getter and setter with
+ *     nvr = 0 and NULL arrays, one line each), reals:VR,VR,... (likewise integers,
  *     booleans, strings: one get of those variables into an array filled with -7 (strings: "unset")
  *     before, printed as "CALL STATUS|value|value|...").
  *     exit: 0 (2 usage or loading problem)
@@ -226,18 +228,52 @@ static void null_instance(const Api *api)
     SHOW("null:fmi2GetStringStatus", api->fmi2GetStringStatus(NULL, fmi2PendingStatus, &s));
 }
 
-/* NULL where the instance's functions expect an array or a state (nvr > 0). */
-static void null_arguments(const Api *api, fmi2Component c)
+/* NULL where the instance's functions expect an array or a state (nvr > 0); `only`: that one call (its label
+ * without "nullargs:"), or every one if empty. */
+#define SHOW_IF(label, call)                                                                       \
+    if (only[0] == '\0' || strcmp(only, label) == 0)                                               \
+    SHOW("nullargs:" label, call)
+
+static void null_arguments(const Api *api, fmi2Component c, const char *only)
 {
     fmi2ValueReference vr = 0;
     fmi2Real r = 0.0;
-    SHOW("nullargs:fmi2GetReal(vr)", api->fmi2GetReal(c, NULL, 1, &r));
-    SHOW("nullargs:fmi2GetReal(value)", api->fmi2GetReal(c, &vr, 1, NULL));
-    SHOW("nullargs:fmi2SetReal(value)", api->fmi2SetReal(c, &vr, 1, NULL));
-    SHOW("nullargs:fmi2GetFMUstate", api->fmi2GetFMUstate(c, NULL));
-    SHOW("nullargs:fmi2SetFMUstate", api->fmi2SetFMUstate(c, NULL));
-    SHOW("nullargs:fmi2SerializedFMUstateSize", api->fmi2SerializedFMUstateSize(c, NULL, NULL));
-    SHOW("nullargs:fmi2GetRealStatus", api->fmi2GetRealStatus(c, fmi2LastSuccessfulTime, NULL));
+    fmi2Integer i = 0;
+    fmi2Boolean b = fmi2False;
+    fmi2String s = "";
+    SHOW_IF("fmi2GetReal(vr)", api->fmi2GetReal(c, NULL, 1, &r));
+    SHOW_IF("fmi2GetReal(value)", api->fmi2GetReal(c, &vr, 1, NULL));
+    SHOW_IF("fmi2GetInteger(vr)", api->fmi2GetInteger(c, NULL, 1, &i));
+    SHOW_IF("fmi2GetInteger(value)", api->fmi2GetInteger(c, &vr, 1, NULL));
+    SHOW_IF("fmi2GetBoolean(vr)", api->fmi2GetBoolean(c, NULL, 1, &b));
+    SHOW_IF("fmi2GetBoolean(value)", api->fmi2GetBoolean(c, &vr, 1, NULL));
+    SHOW_IF("fmi2GetString(vr)", api->fmi2GetString(c, NULL, 1, &s));
+    SHOW_IF("fmi2GetString(value)", api->fmi2GetString(c, &vr, 1, NULL));
+    SHOW_IF("fmi2SetReal(vr)", api->fmi2SetReal(c, NULL, 1, &r));
+    SHOW_IF("fmi2SetReal(value)", api->fmi2SetReal(c, &vr, 1, NULL));
+    SHOW_IF("fmi2SetInteger(vr)", api->fmi2SetInteger(c, NULL, 1, &i));
+    SHOW_IF("fmi2SetInteger(value)", api->fmi2SetInteger(c, &vr, 1, NULL));
+    SHOW_IF("fmi2SetBoolean(vr)", api->fmi2SetBoolean(c, NULL, 1, &b));
+    SHOW_IF("fmi2SetBoolean(value)", api->fmi2SetBoolean(c, &vr, 1, NULL));
+    SHOW_IF("fmi2SetString(vr)", api->fmi2SetString(c, NULL, 1, &s));
+    SHOW_IF("fmi2SetString(value)", api->fmi2SetString(c, &vr, 1, NULL));
+    SHOW_IF("fmi2GetFMUstate", api->fmi2GetFMUstate(c, NULL));
+    SHOW_IF("fmi2SetFMUstate", api->fmi2SetFMUstate(c, NULL));
+    SHOW_IF("fmi2SerializedFMUstateSize", api->fmi2SerializedFMUstateSize(c, NULL, NULL));
+    SHOW_IF("fmi2GetRealStatus", api->fmi2GetRealStatus(c, fmi2LastSuccessfulTime, NULL));
+}
+
+/* nvr = 0 with NULL arrays (allowed: FMI 2.0), every getter and setter. */
+static void empty_arrays(const Api *api, fmi2Component c)
+{
+    SHOW("empty:fmi2GetReal", api->fmi2GetReal(c, NULL, 0, NULL));
+    SHOW("empty:fmi2GetInteger", api->fmi2GetInteger(c, NULL, 0, NULL));
+    SHOW("empty:fmi2GetBoolean", api->fmi2GetBoolean(c, NULL, 0, NULL));
+    SHOW("empty:fmi2GetString", api->fmi2GetString(c, NULL, 0, NULL));
+    SHOW("empty:fmi2SetReal", api->fmi2SetReal(c, NULL, 0, NULL));
+    SHOW("empty:fmi2SetInteger", api->fmi2SetInteger(c, NULL, 0, NULL));
+    SHOW("empty:fmi2SetBoolean", api->fmi2SetBoolean(c, NULL, 0, NULL));
+    SHOW("empty:fmi2SetString", api->fmi2SetString(c, NULL, 0, NULL));
 }
 
 /* reals:VR,VR,... and the like: one get into an array filled beforehand, printed whole with the status. */
@@ -331,8 +367,10 @@ static int calls_mode(const Api *api, int argc, char **argv)
             get_many(api, c, call, arg);
         } else if (strcmp(call, "null") == 0) {
             null_instance(api);
-        } else if (strcmp(call, "nullargs") == 0) {
-            null_arguments(api, c);
+        } else if (strncmp(call, "nullargs", 8) == 0) {
+            null_arguments(api, c, arg);
+        } else if (strcmp(call, "empty") == 0) {
+            empty_arrays(api, c);
         } else {
             fprintf(stderr, "unknown call %s\n", call);
             return 2;

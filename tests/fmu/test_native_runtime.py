@@ -294,6 +294,7 @@ def test_fmus_set_up_by_several_threads_take_turns(analytic_fmu):
 
 # -- the layer cannot crash its host ------------------------------------------------------------------
 
+TYPES = ("Real", "Integer", "Boolean", "String")
 FUNCTIONS = """SetDebugLogging SetupExperiment EnterInitializationMode ExitInitializationMode Terminate Reset GetReal
     GetInteger GetBoolean GetString SetReal SetInteger SetBoolean SetString GetFMUstate SetFMUstate FreeFMUstate
     SerializedFMUstateSize SerializeFMUstate DeSerializeFMUstate GetDirectionalDerivative SetRealInputDerivatives
@@ -327,10 +328,30 @@ def test_calls_out_of_the_fmi_call_sequence_are_refused(unpacked, importer):
 
 @pytest.mark.parametrize("unpacked", ["analytic_fmu"], indirect=True)
 def test_null_arguments_are_refused(unpacked, importer):
+    """A NULL value-reference or value array with nvr > 0 gets fmi2Error and a message from every getter and
+    setter, and a NULL state or size pointer likewise: no crash. Each getter and setter is called in
+    initialization mode after fmi2Reset (a refusal leaves the error state, where setters are not allowed)."""
     rc, statuses, stderr = unpacked.calls(importer, ["instantiate", "setup", "enter", "exit", "nullargs", "free"])
     assert rc == 0, stderr[-2000:]
-    assert all(status == 3 for call, status in statuses if call.startswith("nullargs:")), statuses
-    assert "fmi2GetReal: argument vr is NULL" in stderr
+    assert [status for call, status in statuses if call.startswith("nullargs:")] == [3] * 20, statuses
+    labels = [f"fmi2{d}{kind}({arg})" for d in ("Get", "Set") for kind in TYPES for arg in ("vr", "value")]
+    calls = ["instantiate"] + [c for label in labels for c in ("reset", "setup", "enter", f"nullargs:{label}")]
+    rc, statuses, stderr = unpacked.calls(importer, calls + ["free"])
+    assert rc == 0, stderr[-2000:]
+    assert [(call, status) for call, status in statuses if call.startswith("nullargs:")] == [
+        (f"nullargs:{label}", 3) for label in labels
+    ]
+    for label in labels:
+        call, argument = label.rstrip(")").split("(")
+        assert f"native: {call}: argument {argument} is NULL" in stderr
+
+
+@pytest.mark.parametrize("unpacked", ["analytic_fmu"], indirect=True)
+def test_empty_arrays_may_be_null(unpacked, importer):
+    """nvr = 0 with NULL arrays is a valid call (FMI 2.0): fmi2OK from every getter and setter."""
+    rc, statuses, stderr = unpacked.calls(importer, ["instantiate", "setup", "enter", "exit", "empty", "free"])
+    assert rc == 0, stderr[-2000:]
+    assert [s for c, s in statuses if c.startswith("empty:")] == [0] * 8, statuses
 
 
 @pytest.mark.parametrize("unpacked", ["analytic_fmu"], indirect=True)
