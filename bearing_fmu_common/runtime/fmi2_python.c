@@ -708,165 +708,173 @@ static void log_value_error(Instance *c, int kind, fmi2ValueReference vr)
     log_exception(c, what);
 }
 
-/* slave.<method of kind>(vrs, values) with values built by make(i); a value that cannot be made stops the call
- * (fmi2Error, logged with its value reference). */
-#define SET_VALUES(call, kind, make)                                                               \
-    BEGIN(call, MASK_Set);                                                                         \
-    if (!arrays_ok(c, call, vr, value, nvr))                                                       \
-        RETURN(fmi2Error);                                                                         \
-    if (nvr == 0)                                                                                  \
-        RETURN(fmi2OK);                                                                            \
-    PyObject *values = PyList_New((Py_ssize_t)nvr);                                                \
-    if (values == NULL) {                                                                          \
-        log_exception(c, KIND_METHODS[kind]);                                                      \
-        RETURN(fmi2Error);                                                                         \
-    }                                                                                              \
-    for (size_t i = 0; i < nvr; i++) {                                                             \
-        PyObject *item = (make);                                                                   \
-        if (item == NULL) {                                                                        \
-            Py_DECREF(values);                                                                     \
-            log_value_error(c, kind, vr[i]);                                                       \
-            RETURN(fmi2Error);                                                                     \
-        }                                                                                          \
-        PyList_SetItem(values, (Py_ssize_t)i, item);                                               \
-    }                                                                                              \
-    PyObject *vrs = references(c, kind, vr, nvr);                                                  \
-    PyObject *r = vrs ? PyObject_CallMethodObjArgs(c->slave, kind_names[kind], vrs, values, NULL) : NULL; \
-    Py_XDECREF(vrs);                                                                               \
-    Py_DECREF(values);                                                                             \
-    RETURN(settle(c, KIND_METHODS[kind], r, fmi2Error))
+/* One FMI variable type: its getter's and setter's names and slave methods (kinds), the size of its C value
+ * and the conversions between a C value and a Python object. */
+typedef struct {
+    const char *get_call, *set_call;
+    int get_kind, set_kind;
+    size_t size;
+    int keeps; /* the C values point into Python objects kept until the next get (String) */
+    /* the Python object `item` as the C value at `out`: 0, or -1 with a Python exception set; `keep` (with
+     * `keeps`): a list of nvr slots, slot i for what the value points into */
+    int (*to_c)(PyObject *item, void *out, PyObject *keep, Py_ssize_t i);
+    /* the C value at `in` as a new Python object, or NULL with a Python exception set */
+    PyObject *(*to_python)(const void *in);
+} VariableType;
 
-fmi2Status fmi2SetReal(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[])
+static int real_to_c(PyObject *item, void *out, PyObject *keep, Py_ssize_t i)
 {
-    SET_VALUES("fmi2SetReal", SET_REAL, PyFloat_FromDouble(value[i]));
+    (void)keep, (void)i;
+    double x = PyFloat_AsDouble(item);
+    if (x == -1.0 && PyErr_Occurred())
+        return -1;
+    *(fmi2Real *)out = x;
+    return 0;
 }
 
-fmi2Status fmi2SetInteger(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,
-                          const fmi2Integer value[])
+static int integer_to_c(PyObject *item, void *out, PyObject *keep, Py_ssize_t i)
 {
-    SET_VALUES("fmi2SetInteger", SET_INTEGER, PyLong_FromLong(value[i]));
-}
-
-fmi2Status fmi2SetBoolean(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,
-                          const fmi2Boolean value[])
-{
-    SET_VALUES("fmi2SetBoolean", SET_BOOLEAN, PyBool_FromLong(value[i]));
-}
-
-fmi2Status fmi2SetString(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,
-                         const fmi2String value[])
-{
-    SET_VALUES("fmi2SetString", SET_STRING,
-               PyUnicode_DecodeUTF8(value[i] ? value[i] : "", (Py_ssize_t)strlen(value[i] ? value[i] : ""), "replace"));
-}
-
-fmi2Status fmi2GetReal(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[])
-{
-    BEGIN("fmi2GetReal", MASK_Get);
-    if (!arrays_ok(c, "fmi2GetReal", vr, value, nvr))
-        RETURN(fmi2Error);
-    if (nvr == 0)
-        RETURN(fmi2OK);
-    PyObject *values = get_values(c, GET_REAL, vr, nvr);
-    if (values == NULL)
-        RETURN(fmi2Error);
-    for (size_t i = 0; i < nvr; i++) {
-        double x = PyFloat_AsDouble(PyList_GetItem(values, (Py_ssize_t)i));
-        if (x == -1.0 && PyErr_Occurred()) { /* stop at the first: no C API call with an exception set */
-            Py_DECREF(values);
-            log_value_error(c, GET_REAL, vr[i]);
-            RETURN(fmi2Error);
-        }
-        value[i] = x;
+    (void)keep, (void)i;
+    long x = PyLong_AsLong(item);
+    if (x == -1 && PyErr_Occurred())
+        return -1;
+    if (x < INT_MIN || x > INT_MAX) {
+        PyErr_Format(PyExc_OverflowError, "%ld does not fit an fmi2Integer (%d to %d)", x, INT_MIN, INT_MAX);
+        return -1;
     }
-    Py_DECREF(values);
-    flush_log(c);
-    RETURN(fmi2OK);
+    *(fmi2Integer *)out = (fmi2Integer)x;
+    return 0;
 }
 
-fmi2Status fmi2GetInteger(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[])
+static int boolean_to_c(PyObject *item, void *out, PyObject *keep, Py_ssize_t i)
 {
-    BEGIN("fmi2GetInteger", MASK_Get);
-    if (!arrays_ok(c, "fmi2GetInteger", vr, value, nvr))
-        RETURN(fmi2Error);
+    (void)keep, (void)i;
+    int truth = PyObject_IsTrue(item);
+    if (truth < 0)
+        return -1;
+    *(fmi2Boolean *)out = truth ? fmi2True : fmi2False;
+    return 0;
+}
+
+static int string_to_c(PyObject *item, void *out, PyObject *keep, Py_ssize_t i)
+{
+    PyObject *bytes = PyUnicode_AsUTF8String(item);
+    if (bytes == NULL)
+        return -1;
+    PyList_SetItem(keep, i, bytes); /* the pointer stays valid until the next fmi2GetString */
+    *(fmi2String *)out = PyBytes_AsString(bytes);
+    return 0;
+}
+
+static PyObject *real_to_python(const void *in) { return PyFloat_FromDouble(*(const fmi2Real *)in); }
+static PyObject *integer_to_python(const void *in) { return PyLong_FromLong(*(const fmi2Integer *)in); }
+static PyObject *boolean_to_python(const void *in) { return PyBool_FromLong(*(const fmi2Boolean *)in); }
+
+static PyObject *string_to_python(const void *in)
+{
+    const char *text = *(const fmi2String *)in ? *(const fmi2String *)in : ""; /* NULL: the empty string */
+    return PyUnicode_DecodeUTF8(text, (Py_ssize_t)strlen(text), "replace");
+}
+
+static const VariableType REAL = {"fmi2GetReal", "fmi2SetReal", GET_REAL, SET_REAL, sizeof(fmi2Real), 0,
+                                  real_to_c, real_to_python};
+static const VariableType INTEGER = {"fmi2GetInteger", "fmi2SetInteger", GET_INTEGER, SET_INTEGER,
+                                     sizeof(fmi2Integer), 0, integer_to_c, integer_to_python};
+static const VariableType BOOLEAN = {"fmi2GetBoolean", "fmi2SetBoolean", GET_BOOLEAN, SET_BOOLEAN,
+                                     sizeof(fmi2Boolean), 0, boolean_to_c, boolean_to_python};
+static const VariableType STRING = {"fmi2GetString", "fmi2SetString", GET_STRING, SET_STRING, sizeof(fmi2String), 1,
+                                    string_to_c, string_to_python};
+
+/* A getter: slave.get_<type>(vrs), each value converted into value[i]. Stops at the first value that cannot
+ * be converted (fmi2Error, logged with its value reference: no C API call with an exception set); the values
+ * after it are not written. Holds the GIL. */
+static fmi2Status get_variables(Instance *c, const VariableType *type, const fmi2ValueReference vr[], size_t nvr,
+                                void *value)
+{
+    if (!arrays_ok(c, type->get_call, vr, value, nvr))
+        return fmi2Error;
     if (nvr == 0)
-        RETURN(fmi2OK);
-    PyObject *values = get_values(c, GET_INTEGER, vr, nvr);
+        return fmi2OK;
+    PyObject *values = get_values(c, type->get_kind, vr, nvr);
     if (values == NULL)
-        RETURN(fmi2Error);
+        return fmi2Error;
+    PyObject *keep = type->keeps ? PyList_New((Py_ssize_t)nvr) : NULL;
+    if (type->keeps && keep == NULL) {
+        Py_DECREF(values);
+        log_exception(c, KIND_METHODS[type->get_kind]);
+        return fmi2Error;
+    }
+    fmi2Status status = fmi2OK;
     for (size_t i = 0; i < nvr; i++) {
         PyObject *item = PyList_GetItem(values, (Py_ssize_t)i);
-        long x = PyLong_AsLong(item);
-        if (!(x == -1 && PyErr_Occurred()) && (x < INT_MIN || x > INT_MAX))
-            PyErr_Format(PyExc_OverflowError, "%ld does not fit an fmi2Integer (%d to %d)", x, INT_MIN, INT_MAX);
-        if (PyErr_Occurred()) { /* stop at the first: no C API call with an exception set */
-            Py_DECREF(values);
-            log_value_error(c, GET_INTEGER, vr[i]);
-            RETURN(fmi2Error);
+        if (type->to_c(item, (char *)value + i * type->size, keep, (Py_ssize_t)i) < 0) {
+            log_value_error(c, type->get_kind, vr[i]);
+            status = fmi2Error;
+            break;
         }
-        value[i] = (fmi2Integer)x;
     }
     Py_DECREF(values);
-    flush_log(c);
-    RETURN(fmi2OK);
+    if (keep != NULL)
+        SET_REF(c->strings, keep); /* also after an error: the strings given before it stay valid */
+    if (status == fmi2OK)
+        flush_log(c);
+    return status;
 }
 
-fmi2Status fmi2GetBoolean(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[])
+/* A setter: slave.set_<type>(vrs, values) with value[i] converted. A value that cannot be converted stops the
+ * call (fmi2Error, logged with its value reference). Holds the GIL. */
+static fmi2Status set_variables(Instance *c, const VariableType *type, const fmi2ValueReference vr[], size_t nvr,
+                                const void *value)
 {
-    BEGIN("fmi2GetBoolean", MASK_Get);
-    if (!arrays_ok(c, "fmi2GetBoolean", vr, value, nvr))
-        RETURN(fmi2Error);
+    if (!arrays_ok(c, type->set_call, vr, value, nvr))
+        return fmi2Error;
     if (nvr == 0)
-        RETURN(fmi2OK);
-    PyObject *values = get_values(c, GET_BOOLEAN, vr, nvr);
-    if (values == NULL)
-        RETURN(fmi2Error);
-    for (size_t i = 0; i < nvr; i++) {
-        int truth = PyObject_IsTrue(PyList_GetItem(values, (Py_ssize_t)i));
-        if (truth < 0) { /* stop at the first: no C API call with an exception set */
-            Py_DECREF(values);
-            log_value_error(c, GET_BOOLEAN, vr[i]);
-            RETURN(fmi2Error);
-        }
-        value[i] = truth ? fmi2True : fmi2False;
+        return fmi2OK;
+    PyObject *values = PyList_New((Py_ssize_t)nvr);
+    if (values == NULL) {
+        log_exception(c, KIND_METHODS[type->set_kind]);
+        return fmi2Error;
     }
+    for (size_t i = 0; i < nvr; i++) {
+        PyObject *item = type->to_python((const char *)value + i * type->size);
+        if (item == NULL) {
+            Py_DECREF(values);
+            log_value_error(c, type->set_kind, vr[i]);
+            return fmi2Error;
+        }
+        PyList_SetItem(values, (Py_ssize_t)i, item);
+    }
+    PyObject *vrs = references(c, type->set_kind, vr, nvr);
+    PyObject *r = vrs ? PyObject_CallMethodObjArgs(c->slave, kind_names[type->set_kind], vrs, values, NULL) : NULL;
+    Py_XDECREF(vrs);
     Py_DECREF(values);
-    flush_log(c);
-    RETURN(fmi2OK);
+    return settle(c, KIND_METHODS[type->set_kind], r, fmi2Error);
 }
 
-fmi2Status fmi2GetString(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2String value[])
-{
-    BEGIN("fmi2GetString", MASK_Get);
-    if (!arrays_ok(c, "fmi2GetString", vr, value, nvr))
-        RETURN(fmi2Error);
-    if (nvr == 0)
-        RETURN(fmi2OK);
-    PyObject *values = get_values(c, GET_STRING, vr, nvr);
-    if (values == NULL)
-        RETURN(fmi2Error);
-    PyObject *strings = PyList_New((Py_ssize_t)nvr); /* the pointers stay valid until the next call */
-    if (strings == NULL) {
-        Py_DECREF(values);
-        log_exception(c, "get_string");
-        RETURN(fmi2Error);
+/* The eight FMI getters and setters, one line each. */
+#define GETTER(Type, TYPE)                                                                         \
+    fmi2Status fmi2Get##Type(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,   \
+                             fmi2##Type value[])                                                   \
+    {                                                                                              \
+        BEGIN("fmi2Get" #Type, MASK_Get);                                                          \
+        RETURN(get_variables(c, &TYPE, vr, nvr, value));                                           \
     }
-    for (size_t i = 0; i < nvr; i++) {
-        PyObject *bytes = PyUnicode_AsUTF8String(PyList_GetItem(values, (Py_ssize_t)i));
-        if (bytes == NULL) { /* stop at the first: no C API call with an exception set */
-            SET_REF(c->strings, strings); /* the strings given before it stay valid too */
-            Py_DECREF(values);
-            log_value_error(c, GET_STRING, vr[i]);
-            RETURN(fmi2Error);
-        }
-        PyList_SetItem(strings, (Py_ssize_t)i, bytes);
-        value[i] = PyBytes_AsString(bytes);
+#define SETTER(Type, TYPE)                                                                         \
+    fmi2Status fmi2Set##Type(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,   \
+                             const fmi2##Type value[])                                             \
+    {                                                                                              \
+        BEGIN("fmi2Set" #Type, MASK_Set);                                                          \
+        RETURN(set_variables(c, &TYPE, vr, nvr, value));                                           \
     }
-    Py_DECREF(values);
-    SET_REF(c->strings, strings);
-    flush_log(c);
-    RETURN(fmi2OK);
-}
+
+GETTER(Real, REAL)
+GETTER(Integer, INTEGER)
+GETTER(Boolean, BOOLEAN)
+GETTER(String, STRING)
+SETTER(Real, REAL)
+SETTER(Integer, INTEGER)
+SETTER(Boolean, BOOLEAN)
+SETTER(String, STRING)
 
 /* -- state ---------------------------------------------------------------------------------- */
 
