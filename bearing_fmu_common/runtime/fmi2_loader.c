@@ -88,12 +88,15 @@ static void say(const Host *host, fmi2Status status, const char *fmt, ...)
 {
     if (status == fmi2OK && !host->logging_on)
         return;
-    char text[8192];
+    char *text = NULL; /* sized to the message, on the heap: a host thread's stack may be small */
     va_list args;
     va_start(args, fmt);
-    vsnprintf(text, sizeof text, fmt, args);
+    int n = vasprintf(&text, fmt, args);
     va_end(args);
+    if (n < 0)
+        return;
     log_text(host->logger, host->env, host->name, status, status >= fmi2Error ? "logStatusError" : "logAll", text);
+    free(text);
 }
 
 /* What was tried, for the host's logger: "candidate: what it lacks; ..." */
@@ -176,6 +179,17 @@ typedef struct {
     int major, minor, micro;
 } Interpreter;
 
+/* The search's working memory, on the heap (about 60 kB): a host may call fmi2Instantiate on a thread with a
+ * small stack, and the search's buffers are sized for paths. */
+typedef struct {
+    Interpreter found;     /* the interpreter chosen */
+    Interpreter candidate; /* the one being probed */
+    Report report;         /* every candidate tried and what it lacks */
+    char out[8192];        /* a probe's output */
+    char label[4200];      /* how the candidate was found */
+    char dir[4096], real[PATH_MAX], path[4096 + 16], key[PATH_MAX + 16], hint[4096];
+} Search;
+
 /* Run `program -c PROBE_SOURCE`; its output (stdout and stderr) into out. Returns the exit status, or
  * -1 with out saying why it did not run or did not answer in time. */
 static int run_probe(const char *program, char *out, size_t size)
@@ -252,8 +266,9 @@ static const char *last_line(char *text)
 
 /* Is `program` (found as `label`) an interpreter this FMU can start? Fills `found` if so; otherwise notes
  * what it lacks. `required_minor` >= 0: a libpython 3.<required_minor> is already in the process. */
-static int probe(const char *program, const char *label, int required_minor, Interpreter *found, Report *report)
+static int probe(Search *search, const char *program, const char *label, int required_minor)
 {
+    Report *report = &search->report;
     if (strchr(program, '/') != NULL) {
         if (access(program, F_OK) != 0) {
             note(report, "%s: no such file", label);
@@ -264,8 +279,8 @@ static int probe(const char *program, const char *label, int required_minor, Int
             return 0;
         }
     }
-    char out[8192];
-    int status = run_probe(program, out, sizeof out);
+    char *out = search->out;
+    int status = run_probe(program, out, sizeof search->out);
     char *marker = strstr(out, "BEARING_FMU_PROBE ");
     if (status != 0 || marker == NULL) {
         if (status < 0 && marker == NULL)
@@ -275,7 +290,8 @@ static int probe(const char *program, const char *label, int required_minor, Int
                  out[0] ? last_line(out) : "no output");
         return 0;
     }
-    Interpreter it = {.major = 0};
+    Interpreter *it = &search->candidate;
+    memset(it, 0, sizeof *it);
     char *lines[4] = {NULL};
     char *cursor = marker + strlen("BEARING_FMU_PROBE ");
     for (int k = 0; k < 4 && cursor != NULL; k++) {
@@ -284,46 +300,47 @@ static int probe(const char *program, const char *label, int required_minor, Int
         if (cursor != NULL)
             *cursor++ = '\0';
     }
-    if (lines[3] == NULL || sscanf(lines[0], "%d.%d.%d", &it.major, &it.minor, &it.micro) != 3) {
+    if (lines[3] == NULL || sscanf(lines[0], "%d.%d.%d", &it->major, &it->minor, &it->micro) != 3) {
         note(report, "%s: unexpected answer to the probe", label);
         return 0;
     }
-    snprintf(it.label, sizeof it.label, "%s", label);
-    snprintf(it.executable, sizeof it.executable, "%s", lines[1]);
-    snprintf(it.libpython, sizeof it.libpython, "%s", lines[2]);
+    snprintf(it->label, sizeof it->label, "%s", label);
+    snprintf(it->executable, sizeof it->executable, "%s", lines[1]);
+    snprintf(it->libpython, sizeof it->libpython, "%s", lines[2]);
     const char *missing = lines[3];
     char version[32];
-    snprintf(version, sizeof version, "Python %d.%d.%d", it.major, it.minor, it.micro);
-    if (it.major != 3 || it.minor < OLDEST_MINOR || it.minor > NEWEST_MINOR) {
+    snprintf(version, sizeof version, "Python %d.%d.%d", it->major, it->minor, it->micro);
+    if (it->major != 3 || it->minor < OLDEST_MINOR || it->minor > NEWEST_MINOR) {
         note(report, "%s, %s: this FMU starts Python 3.%d to 3.%d", label, version, OLDEST_MINOR, NEWEST_MINOR);
         return 0;
     }
-    if (required_minor >= 0 && it.minor != required_minor) {
+    if (required_minor >= 0 && it->minor != required_minor) {
         note(report, "%s, %s: the process has libpython 3.%d loaded already", label, version, required_minor);
         return 0;
     }
-    if (it.libpython[0] == '\0' || access(it.libpython, R_OK) != 0) {
+    if (it->libpython[0] == '\0' || access(it->libpython, R_OK) != 0) {
         note(report, "%s, %s: no shared libpython%s%s (a Python built with --enable-shared, or the distribution's "
-             "libpython3.%d package)", label, version, it.libpython[0] ? " " : "", it.libpython, it.minor);
+             "libpython3.%d package)", label, version, it->libpython[0] ? " " : "", it->libpython, it->minor);
         return 0;
     }
     if (missing[0] != '\0') {
         note(report, "%s, %s: no module%s %s", label, version, strchr(missing, ',') ? "s" : "", missing);
         return 0;
     }
-    *found = it;
+    search->found = *it;
     return 1;
 }
 
 /* The search (docs/fmu_runtime.md, "Which Python"): BEARING_FMU_PYTHON alone if it is set; else python3
  * and python in each PATH directory, then the interpreter that built the FMU. */
-static int find_python(const char *resources, int required_minor, Interpreter *found, Report *report)
+static int find_python(Search *search, const char *resources, int required_minor)
 {
-    char label[4200];
+    Report *report = &search->report;
+    char *label = search->label;
     const char *env = getenv(PYTHON_ENV);
     if (env != NULL && env[0] != '\0') {
-        snprintf(label, sizeof label, "%s=%s", PYTHON_ENV, env);
-        if (probe(env, label, required_minor, found, report))
+        snprintf(label, sizeof search->label, "%s=%s", PYTHON_ENV, env);
+        if (probe(search, env, label, required_minor))
             return 1;
         note(report, "nothing else was tried: %s names the interpreter to use", PYTHON_ENV);
         return 0;
@@ -334,27 +351,25 @@ static int find_python(const char *resources, int required_minor, Interpreter *f
         note(report, "PATH: not set");
     static const char *NAMES[] = {"python3", "python"};
     enum { MAX_TRIED = 64 };
-    char (*tried)[PATH_MAX + 16] = malloc(MAX_TRIED * sizeof *tried); /* on the heap: a host thread's stack may be small */
+    char (*tried)[PATH_MAX + 16] = malloc(MAX_TRIED * sizeof *tried);
     int n_tried = 0;
     for (const char *dir = path; dir != NULL && *dir != '\0';) {
         const char *end = strchr(dir, ':');
         size_t length = end ? (size_t)(end - dir) : strlen(dir);
-        char given[4096], real[PATH_MAX];
-        snprintf(given, sizeof given, "%.*s", (int)length, dir);
-        const char *resolved = realpath(given, real); /* /bin and /usr/bin are often one directory */
+        snprintf(search->dir, sizeof search->dir, "%.*s", (int)length, dir);
+        const char *resolved = realpath(search->dir, search->real); /* /bin and /usr/bin are often one directory */
         for (int k = 0; k < 2 && length > 0 && resolved != NULL; k++) {
-            char candidate[sizeof given + 16], key[PATH_MAX + 16];
-            snprintf(candidate, sizeof candidate, "%s/%s", given, NAMES[k]);
-            snprintf(key, sizeof key, "%s/%s", resolved, NAMES[k]);
+            snprintf(search->path, sizeof search->path, "%s/%s", search->dir, NAMES[k]);
+            snprintf(search->key, sizeof search->key, "%s/%s", resolved, NAMES[k]);
             int seen = 0;
             for (int i = 0; i < n_tried; i++)
-                seen |= strcmp(tried[i], key) == 0;
-            if (seen || access(candidate, X_OK) != 0)
+                seen |= strcmp(tried[i], search->key) == 0;
+            if (seen || access(search->path, X_OK) != 0)
                 continue; /* a directory without that name is no candidate */
             if (tried != NULL && n_tried < MAX_TRIED)
-                snprintf(tried[n_tried++], sizeof tried[0], "%s", key);
-            snprintf(label, sizeof label, "%s on PATH (%s)", NAMES[k], candidate);
-            if (probe(candidate, label, required_minor, found, report)) {
+                snprintf(tried[n_tried++], sizeof tried[0], "%s", search->key);
+            snprintf(label, sizeof search->label, "%s on PATH (%s)", NAMES[k], search->path);
+            if (probe(search, search->path, label, required_minor)) {
                 free(tried);
                 return 1;
             }
@@ -362,10 +377,10 @@ static int find_python(const char *resources, int required_minor, Interpreter *f
         dir = end ? end + 1 : NULL;
     }
     free(tried);
-    char hint[4096];
-    if (resources != NULL && read_hint(resources, PYTHON_HINT, hint, sizeof hint)) {
-        snprintf(label, sizeof label, "the interpreter that built the FMU (%s, resources/%s)", hint, PYTHON_HINT);
-        if (probe(hint, label, required_minor, found, report))
+    if (resources != NULL && read_hint(resources, PYTHON_HINT, search->hint, sizeof search->hint)) {
+        snprintf(label, sizeof search->label, "the interpreter that built the FMU (%s, resources/%s)", search->hint,
+                 PYTHON_HINT);
+        if (probe(search, search->hint, label, required_minor))
             return 1;
     }
     return 0;
@@ -458,20 +473,26 @@ static int ensure_python(const Host *host, const char *resources)
     }
     /* no interpreter runs; if a libpython is loaded (a host linked it without starting it), start that one */
     int loaded = is_initialized != NULL && version != NULL;
-    Interpreter it;
-    Report report = {.text = ""};
-    if (!find_python(resources, loaded ? minor : -1, &it, &report)) {
+    Search *search = calloc(1, sizeof *search);
+    if (search == NULL) {
+        say(host, fmi2Error, "out of memory while looking for a Python interpreter");
+        return 0;
+    }
+    int ok = find_python(search, resources, loaded ? minor : -1);
+    if (!ok)
         say(host, fmi2Error,
             "no Python interpreter for this FMU: it needs Python 3.%d to 3.%d built with a shared libpython, with "
             "numpy and numba installed. Tried: %s. Set %s to such a python executable (a virtual environment's "
-            "bin/python works).", OLDEST_MINOR, NEWEST_MINOR, report.text, PYTHON_ENV, PYTHON_ENV);
-        return 0;
-    }
-    if (!start_python(host, &it, loaded))
-        return 0;
-    say(host, fmi2OK, "started Python %d.%d.%d: %s (sys.executable %s, %s)%s%s", it.major, it.minor, it.micro, it.label,
-        it.executable, it.libpython, report.text[0] ? "; before it: " : "", report.text);
-    return 1;
+            "bin/python works).", OLDEST_MINOR, NEWEST_MINOR, search->report.text, PYTHON_ENV, PYTHON_ENV);
+    else
+        ok = start_python(host, &search->found, loaded);
+    const Interpreter *it = &search->found;
+    if (ok)
+        say(host, fmi2OK, "started Python %d.%d.%d: %s (sys.executable %s, %s)%s%s", it->major, it->minor, it->micro,
+            it->label, it->executable, it->libpython, search->report.text[0] ? "; before it: " : "",
+            search->report.text);
+    free(search);
+    return ok;
 }
 
 /* -- loading the layer ------------------------------------------------------------------------ */
@@ -483,23 +504,29 @@ static int load_layer(const Host *host)
         say(host, fmi2Error, "cannot locate the FMU's binary directory");
         return 0;
     }
-    char path[4096];
     const char *slash = strrchr(self.dli_fname, '/');
-    snprintf(path, sizeof path, "%.*s%s", slash ? (int)(slash - self.dli_fname + 1) : 0, self.dli_fname, LAYER_FILE);
+    char *path = NULL; /* on the heap: a host thread's stack may be small */
+    if (asprintf(&path, "%.*s%s", slash ? (int)(slash - self.dli_fname + 1) : 0, self.dli_fname, LAYER_FILE) < 0) {
+        say(host, fmi2Error, "out of memory while loading the FMU's Python layer");
+        return 0;
+    }
     /* RTLD_LOCAL: its fmi2* functions stay out of the global scope; kept for good (its Python objects live
      * as long as the interpreter) */
     void *handle = dlopen(path, RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
     if (handle == NULL) {
         say(host, fmi2Error, "cannot load the FMU's Python layer: %s", dlerror());
+        free(path);
         return 0;
     }
     typeof(layer) loaded;
 #define LOOKUP(name)                                                                               \
     if ((loaded.name = (name##TYPE *)dlsym(handle, #name)) == NULL) {                              \
         say(host, fmi2Error, "%s lacks %s (an incomplete or altered FMU)", path, #name);           \
+        free(path);                                                                                \
         return 0;                                                                                  \
     }
     LAYER_FUNCTIONS(LOOKUP)
+    free(path);
     layer = loaded;
     /* keep this library (and so `layer`) loaded when a host unloads it after fmi2FreeInstance (fmpy does) */
     dlopen(self.dli_fname, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);

@@ -157,12 +157,20 @@ static void emit(const Instance *c, fmi2Status status, const char *category, con
 
 static void emitf(const Instance *c, fmi2Status status, const char *fmt, ...)
 {
-    char text[1024];
-    va_list args;
+    if (c->logger == NULL || (status == fmi2OK && !c->logging_on))
+        return;
+    va_list args, again;
     va_start(args, fmt);
-    vsnprintf(text, sizeof text, fmt, args);
+    va_copy(again, args);
+    int n = vsnprintf(NULL, 0, fmt, args);
+    char *text = n >= 0 ? malloc((size_t)n + 1) : NULL; /* sized to the message, on the heap: small host stacks */
+    if (text != NULL)
+        vsnprintf(text, (size_t)n + 1, fmt, again);
+    va_end(again);
     va_end(args);
-    emit(c, status, status >= fmi2Error ? "logStatusError" : "logAll", text);
+    if (text != NULL)
+        emit(c, status, status >= fmi2Error ? "logStatusError" : "logAll", text);
+    free(text);
 }
 
 /* Pass the slave's queued log messages (pythonfmu LogMsg: status, category, msg) to the host. They are taken
@@ -218,15 +226,12 @@ static void log_exception(const Instance *c, const char *what)
     const char *utf8 = text ? PyUnicode_AsUTF8AndSize(text, NULL) : NULL;
     PyErr_Clear();
     const char *detail = utf8 ? utf8 : "unknown Python error";
-    /* sized to the traceback: emitf's fixed buffer would cut a long one before its end */
     size_t n = strlen(c->name) + strlen(what) + strlen(detail) + 5;
     char *message = malloc(n);
     if (message != NULL) {
         snprintf(message, n, "%s: %s: %s", c->name, what, detail);
         emit(c, fmi2Error, "logStatusError", message);
         free(message);
-    } else {
-        emitf(c, fmi2Error, "%s: %s: %s", c->name, what, detail);
     }
     Py_XDECREF(text);
     Py_XDECREF(kind);

@@ -40,9 +40,13 @@ static char *printf_safe(const char *text)
 /* Read the first line of resources/<name> into buf; 0 if absent. */
 static int read_hint(const char *resources, const char *name, char *buf, size_t size)
 {
-    char path[4096];
-    snprintf(path, sizeof path, "%s/%s", resources, name);
+    size_t n = strlen(resources) + strlen(name) + 2;
+    char *path = malloc(n); /* on the heap, as every buffer sized for a path: a host thread's stack may be small */
+    if (path == NULL)
+        return 0;
+    snprintf(path, n, "%s/%s", resources, name);
     FILE *fh = fopen(path, "r");
+    free(path);
     if (fh == NULL)
         return 0;
     int ok = fgets(buf, (int)size, fh) != NULL;

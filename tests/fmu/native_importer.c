@@ -22,6 +22,11 @@
  *     two threads, released together, each instantiate, initialise, step twice, terminate and free
  *     one of the two FMUs: what a host that sets up two FMUs at once does.
  *     exit: 0 all calls OK, 2 usage or loading problem, 3 an FMI call failed
+ * native_importer --stack KB LIBRARY RESOURCE_URI GUID CALL ...
+ *     the --calls mode on a thread whose stack is KB kB (below it a page that faults), filled with a pattern
+ *     beforehand; then prints "stack-used BYTES", the depth of stack the calls used (where the pattern was
+ *     overwritten). A stack too small for the calls crashes the process (SIGSEGV).
+ *     exit: 0 (2 usage or loading problem)
  * native_importer --logger-lock LIBRARY RESOURCE_URI GUID VR
  *     a host whose logger takes a lock of its own: thread 1 holds that lock while it reads Real VR of one
  *     instance; thread 2 meanwhile makes a call the FMU refuses on a second instance, whose message goes
@@ -38,6 +43,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -534,8 +540,64 @@ static int logger_lock_mode(const Api *api, int argc, char **argv)
     return 0;
 }
 
+/* -- --stack: the calls on a thread with a small stack, and how much of it they used ------------------ */
+
+typedef struct {
+    const Api *api;
+    int argc;
+    char **argv;
+    int result;
+} CallsJob;
+
+static void *calls_main(void *arg)
+{
+    CallsJob *job = arg;
+    job->result = calls_mode(job->api, job->argc, job->argv);
+    fflush(stdout);
+    return NULL;
+}
+
+static int stack_mode(int argc, char **argv)
+{
+    if (argc < 6) {
+        fprintf(stderr, "usage: %s --stack KB LIBRARY RESOURCE_URI GUID CALL ...\n", argv[0]);
+        return 2;
+    }
+    Api api;
+    if (!load(argv[3], &api))
+        return 2;
+    size_t size = (size_t)atoi(argv[2]) * 1024, page = (size_t)sysconf(_SC_PAGESIZE);
+    unsigned char *region = mmap(NULL, page + size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_STACK,
+                                 -1, 0);
+    if (region == MAP_FAILED || mprotect(region, page, PROT_NONE) != 0) { /* the stack grows down to the guard */
+        perror("mmap");
+        return 2;
+    }
+    unsigned char *stack = region + page;
+    memset(stack, 0xA5, size);
+    setvbuf(stderr, NULL, _IOFBF, 1 << 16); /* an unbuffered stream formats in an 8 kB buffer on the stack */
+    pthread_attr_t attr;
+    pthread_attr_init(&attr);
+    pthread_attr_setstack(&attr, stack, size);
+    /* argv + 1: --stack KB LIBRARY URI GUID CALL ..., the layout calls_mode reads (URI argv[3], GUID argv[4]) */
+    CallsJob job = {.api = &api, .argc = argc - 1, .argv = argv + 1, .result = 2};
+    pthread_t thread;
+    if (pthread_create(&thread, &attr, calls_main, &job) != 0) {
+        fprintf(stderr, "pthread_create failed\n");
+        return 2;
+    }
+    pthread_join(thread, NULL);
+    size_t untouched = 0;
+    while (untouched < size && stack[untouched] == 0xA5)
+        untouched++;
+    printf("stack-used %zu\n", size - untouched);
+    return job.result;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc > 1 && strcmp(argv[1], "--stack") == 0)
+        return stack_mode(argc, argv);
     if (argc > 1 && strcmp(argv[1], "--threads") == 0)
         return threads_mode(argc, argv);
     if (argc > 2 && strcmp(argv[1], "--logger-lock") == 0) {

@@ -522,6 +522,52 @@ def test_a_native_host_is_told_that_BEARING_FMU_PYTHON_does_not_exist(analytic_f
     assert "nothing else was tried: BEARING_FMU_PYTHON names the interpreter to use" in stderr
 
 
+def stack_run(fmu, importer, kilobytes, calls, extra):
+    """The importer's --stack mode: (returncode, [(call, status)], stack bytes used or None, stderr)."""
+    args = [str(importer), "--stack", str(kilobytes), str(fmu.library), fmu.resources, fmu.guid, *calls]
+    env = {k: os.environ[k] for k in KEPT if k in os.environ} | extra
+    proc = subprocess.run(args, capture_output=True, text=True, env=env, timeout=600)
+    lines = [line.split(" ", 1) for line in proc.stdout.splitlines()]
+    used = [int(value) for key, value in lines if key == "stack-used"]
+    statuses = [(call, int(s) if s.isdigit() else s) for call, s in lines if call != "stack-used"]
+    return proc.returncode, statuses, used[0] if used else None, proc.stderr
+
+
+# stack the test host's thread uses by itself (its thread descriptor, its calls loop, printing): 7.6 kB here
+HOST_STACK = 8 * 1024
+
+
+def test_the_interpreter_search_fits_a_small_host_thread_stack(analytic_fmu, importer, python_without_numba):
+    """fmi2Instantiate on a host thread with a 64 kB stack, through the whole interpreter search (a candidate that
+    lacks numba, the refusal logged): its buffers are on the heap. The search used 68 kB of stack before (a
+    64 kB thread crashed); now about 2 kB beyond the host's own."""
+    fmu = Unpacked(analytic_fmu)
+    try:
+        extra = {"BEARING_FMU_PYTHON": str(python_without_numba / "python")}
+        rc, statuses, used, stderr = stack_run(fmu, importer, 64, ["instantiate"], extra)
+    finally:
+        fmu.remove()
+    assert rc == 0, stderr[-2000:]
+    assert statuses == [("instantiate", "null")]
+    assert "no modules numpy, numba" in stderr
+    assert used < HOST_STACK + 8 * 1024, used
+
+
+def test_a_host_thread_with_a_small_stack_runs_the_fmu(analytic_fmu, importer):
+    """Starting Python, instantiating, stepping and freeing on a host thread with a 128 kB stack (Python's own
+    start-up and imports take the most: about 55 kB with Python 3.11)."""
+    fmu = Unpacked(analytic_fmu)
+    try:
+        calls = ["instantiate", "setup", "enter", "exit", "step", "free"]
+        extra = {"BEARING_FMU_PYTHON": sys.executable}
+        rc, statuses, used, stderr = stack_run(fmu, importer, 128, calls, extra)
+    finally:
+        fmu.remove()
+    assert rc == 0, stderr[-2000:]
+    assert statuses == [("instantiate", "ok"), ("setup", 0), ("enter", 0), ("exit", 0), ("step", 0), ("free", "done")]
+    assert used < 128 * 1024
+
+
 @pytest.fixture(scope="module")
 def python_without_numba(tmp_path_factory):
     """bin/ of a virtual environment of this Python without numpy and numba (no pip: a second or two)."""
