@@ -27,6 +27,7 @@
 #include <spawn.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,7 +43,7 @@ extern char **environ;
 
 #define LAYER_FILE "fmi2_python.abi3.so" /* beside this library */
 #define OLDEST_MINOR 10                  /* Python 3.10: the stable ABI the layer is built for */
-#define NEWEST_MINOR 13                  /* the newest Python whose start-up configuration is known here */
+#define LAST_PYCONFIG_MINOR 13           /* Python 3.13: the last started through PyConfig (later: PEP 741) */
 #define PROBE_SECONDS 60                 /* a candidate that has not answered by then is given up */
 
 /* -- the layer's functions ------------------------------------------------------------------- */
@@ -310,8 +311,8 @@ static int probe(Search *search, const char *program, const char *label, int req
     const char *missing = lines[3];
     char version[32];
     snprintf(version, sizeof version, "Python %d.%d.%d", it->major, it->minor, it->micro);
-    if (it->major != 3 || it->minor < OLDEST_MINOR || it->minor > NEWEST_MINOR) {
-        note(report, "%s, %s: this FMU starts Python 3.%d to 3.%d", label, version, OLDEST_MINOR, NEWEST_MINOR);
+    if (it->major != 3 || it->minor < OLDEST_MINOR) {
+        note(report, "%s, %s: this FMU starts Python 3.%d or later", label, version, OLDEST_MINOR);
         return 0;
     }
     if (required_minor >= 0 && it->minor != required_minor) {
@@ -388,58 +389,67 @@ static int find_python(Search *search, const char *resources, int required_minor
 
 /* -- starting it ------------------------------------------------------------------------------ */
 
-/* The parts of CPython's PyStatus and PyConfig used here, identical in Python 3.8 to 3.13
- * (Include/cpython/initconfig.h): the layer is built for the stable ABI, which has no start-up API. */
+/* Python is started with the executable found as its program name (argv[0]: Python finds its prefix, and a
+ * virtual environment's pyvenv.cfg, from it), honouring the environment (PYTHONHOME, PYTHONPATH) and the
+ * user's site-packages as `python` does, and without signal handlers (SIGINT and friends stay the host's).
+ * The layer is built for the stable ABI, which has no start-up API; these are CPython's public, documented
+ * start-up functions, looked up in the libpython:
+ * - Python 3.14 on: the opaque configuration of PEP 741 (PyInitConfig_Create, options set by name,
+ *   Py_InitializeFromInitConfig), which depends on no structure layout;
+ * - Python 3.10 to 3.13: PyConfig_InitPythonConfig, PyConfig_SetBytesArgv and Py_InitializeFromConfig. The
+ *   PyConfig structure is caller-allocated (a buffer larger than any of those versions' PyConfig) and one
+ *   field is written, install_signal_handlers, at its place in the head the structure has kept in every
+ *   version from 3.8 to 3.14 (Include/cpython/initconfig.h); those versions are released, so their layout
+ *   no longer changes. Before writing, the head is checked against what PyConfig_InitPythonConfig and
+ *   PyConfig_InitIsolatedConfig wrote into it. */
+
+/* PyStatus (Python 3.8 on), returned by value by the PyConfig functions */
 typedef struct {
     int type; /* 0: ok, 1: error, 2: exit */
     const char *func;
     const char *err_msg;
     int exitcode;
 } Status;
+/* the head of PyConfig (Python 3.8 to 3.14) */
 typedef struct {
     int config_init, isolated, use_environment, dev_mode, install_signal_handlers;
 } ConfigHead;
-#define CONFIG_BYTES 16384 /* more than sizeof(PyConfig) of any of those versions */
+#define CONFIG_BYTES 16384   /* more than sizeof(PyConfig) of any of those versions */
+#define PRECONFIG_BYTES 1024 /* more than sizeof(PyPreConfig) of any version (40 bytes in 3.8 to 3.14) */
 
-/* Load `it`'s libpython into the global scope (unless one of its version is there already) and start
- * the interpreter as that executable, without signal handlers (SIGINT and friends stay the host's);
- * PYTHONHOME and PYTHONPATH are honoured as by `python` itself. */
-static int start_python(const Host *host, const Interpreter *it, int loaded)
+#define LOOK_UP(lib, type, name) ((type)dlsym((lib), (name)))
+
+/* Python 3.10 to 3.13: PyConfig. 1 once Python runs; otherwise 0 with the reason logged. */
+static int start_with_pyconfig(const Host *host, const Interpreter *it, void *lib)
 {
-    void *lib = RTLD_DEFAULT;
-    if (!loaded) {
-        lib = dlopen(it->libpython, RTLD_NOW | RTLD_GLOBAL);
-        if (lib == NULL) {
-            say(host, fmi2Error, "cannot load %s (of %s): %s", it->libpython, it->label, dlerror());
-            return 0;
-        }
-        const char *(*version)(void) = (const char *(*)(void))dlsym(lib, "Py_GetVersion");
-        char expected[16];
-        snprintf(expected, sizeof expected, "%d.%d.", it->major, it->minor);
-        if (version == NULL || strncmp(version(), expected, strlen(expected)) != 0) {
-            say(host, fmi2Error, "%s (of %s) is not the libpython of Python %d.%d", it->libpython, it->label,
-                it->major, it->minor);
-            dlclose(lib);
-            return 0;
-        }
-        /* kept for good: extension modules resolve against it, and a Python is never unloaded */
-        dlopen(it->libpython, RTLD_NOW | RTLD_GLOBAL | RTLD_NOLOAD | RTLD_NODELETE);
-    }
-    void (*init_config)(void *) = (void (*)(void *))dlsym(lib, "PyConfig_InitPythonConfig");
+    void (*init_python)(void *) = LOOK_UP(lib, void (*)(void *), "PyConfig_InitPythonConfig");
+    void (*init_isolated)(void *) = LOOK_UP(lib, void (*)(void *), "PyConfig_InitIsolatedConfig");
     Status (*set_argv)(void *, ptrdiff_t, char *const *) =
-        (Status(*)(void *, ptrdiff_t, char *const *))dlsym(lib, "PyConfig_SetBytesArgv");
-    Status (*initialize)(const void *) = (Status(*)(const void *))dlsym(lib, "Py_InitializeFromConfig");
-    void (*clear)(void *) = (void (*)(void *))dlsym(lib, "PyConfig_Clear");
-    void *(*save_thread)(void) = (void *(*)(void))dlsym(lib, "PyEval_SaveThread");
-    void *config = calloc(1, CONFIG_BYTES);
-    if (!init_config || !set_argv || !initialize || !clear || !save_thread || !config) {
+        LOOK_UP(lib, Status(*)(void *, ptrdiff_t, char *const *), "PyConfig_SetBytesArgv");
+    Status (*initialize)(const void *) = LOOK_UP(lib, Status(*)(const void *), "Py_InitializeFromConfig");
+    void (*clear)(void *) = LOOK_UP(lib, void (*)(void *), "PyConfig_Clear");
+    void *config = calloc(1, CONFIG_BYTES), *isolated = calloc(1, CONFIG_BYTES);
+    if (!init_python || !init_isolated || !set_argv || !initialize || !clear || !config || !isolated) {
         say(host, fmi2Error, "%s (of %s) lacks Python's start-up functions", it->libpython, it->label);
+        free(config);
+        free(isolated);
+        return 0;
+    }
+    init_python(config);
+    init_isolated(isolated);
+    const ConfigHead *python = config, *alone = isolated;
+    int laid_out = python->isolated == 0 && python->use_environment == 1 && python->install_signal_handlers == 1 &&
+                   alone->isolated == 1 && alone->use_environment == 0 && alone->install_signal_handlers == 0;
+    clear(isolated);
+    free(isolated);
+    if (!laid_out) {
+        say(host, fmi2Error, "cannot start Python %d.%d.%d (%s): its PyConfig does not begin as in Python 3.8 to "
+            "3.14", it->major, it->minor, it->micro, it->label);
+        clear(config);
         free(config);
         return 0;
     }
-    init_config(config);
     ((ConfigHead *)config)->install_signal_handlers = 0;
-    /* argv[0] is the program name: Python finds its prefix, and a virtual environment's pyvenv.cfg, from it */
     char *argv[] = {(char *)it->executable, NULL};
     Status status = set_argv(config, 1, argv);
     if (status.type == 0)
@@ -451,6 +461,109 @@ static int start_python(const Host *host, const Interpreter *it, int loaded)
             status.func ? status.func : "", status.func ? ": " : "", status.err_msg ? status.err_msg : "unknown error");
         return 0;
     }
+    return 1;
+}
+
+/* Python 3.14 on: PEP 741's PyInitConfig. Python is pre-initialised first as `python` is (PyPreConfig_InitPythonConfig
+ * and Py_PreInitialize, caller-allocated but not written to: the locale, UTF-8 mode in the C locale, PYTHONUTF8),
+ * which PyInitConfig cannot express (its pre-configuration is an isolated one, without "decided at start-up"
+ * values); the configuration's defaults are those of an isolated interpreter (no signal handlers), and the
+ * options that make it start as `python` does are set by name. */
+static int start_with_init_config(const Host *host, const Interpreter *it, void *lib)
+{
+    void (*init_preconfig)(void *) = LOOK_UP(lib, void (*)(void *), "PyPreConfig_InitPythonConfig");
+    Status (*preinitialize)(const void *) = LOOK_UP(lib, Status(*)(const void *), "Py_PreInitialize");
+    void *(*create)(void) = LOOK_UP(lib, void *(*)(void), "PyInitConfig_Create");
+    void (*release)(void *) = LOOK_UP(lib, void (*)(void *), "PyInitConfig_Free");
+    int (*get_error)(void *, const char **) = LOOK_UP(lib, int (*)(void *, const char **), "PyInitConfig_GetError");
+    int (*set_int)(void *, const char *, int64_t) =
+        LOOK_UP(lib, int (*)(void *, const char *, int64_t), "PyInitConfig_SetInt");
+    int (*set_list)(void *, const char *, size_t, char *const *) =
+        LOOK_UP(lib, int (*)(void *, const char *, size_t, char *const *), "PyInitConfig_SetStrList");
+    int (*initialize)(void *) = LOOK_UP(lib, int (*)(void *), "Py_InitializeFromInitConfig");
+    if (!init_preconfig || !preinitialize || !create || !release || !get_error || !set_int || !set_list ||
+        !initialize) {
+        say(host, fmi2Error, "%s (of %s) lacks Python's start-up functions", it->libpython, it->label);
+        return 0;
+    }
+    void *preconfig = calloc(1, PRECONFIG_BYTES);
+    if (preconfig == NULL) {
+        say(host, fmi2Error, "out of memory while starting Python");
+        return 0;
+    }
+    init_preconfig(preconfig);
+    Status status = preinitialize(preconfig);
+    free(preconfig);
+    if (status.type != 0) {
+        say(host, fmi2Error, "cannot start Python %d.%d.%d (%s): %s%s%s", it->major, it->minor, it->micro, it->label,
+            status.func ? status.func : "", status.func ? ": " : "", status.err_msg ? status.err_msg : "unknown error");
+        return 0;
+    }
+    void *config = create();
+    if (config == NULL) {
+        say(host, fmi2Error, "out of memory while starting Python");
+        return 0;
+    }
+    static const struct {
+        const char *name;
+        int64_t value;
+    } OPTIONS[] = {/* as PyConfig_InitPythonConfig, without signal handlers */
+                   {"isolated", 0},          {"use_environment", 1},     {"user_site_directory", 1},
+                   {"safe_path", 0},         {"pathconfig_warnings", 1}, {"parse_argv", 1},
+                   {"configure_c_stdio", 1}, {"install_signal_handlers", 0}};
+    int ok = 1;
+    for (size_t k = 0; ok && k < sizeof OPTIONS / sizeof OPTIONS[0]; k++)
+        ok = set_int(config, OPTIONS[k].name, OPTIONS[k].value) == 0;
+    char *argv[] = {(char *)it->executable, NULL};
+    ok = ok && set_list(config, "argv", 1, argv) == 0 && initialize(config) == 0;
+    if (!ok) {
+        const char *error = NULL;
+        get_error(config, &error);
+        say(host, fmi2Error, "cannot start Python %d.%d.%d (%s): %s", it->major, it->minor, it->micro, it->label,
+            error ? error : "unknown error");
+    }
+    release(config);
+    return ok;
+}
+
+/* Load `it`'s libpython into the global scope (unless one of its version is there already) and start the
+ * interpreter (above). */
+static int start_python(const Host *host, const Interpreter *it, int loaded)
+{
+    void *lib = RTLD_DEFAULT;
+    if (!loaded) {
+        lib = dlopen(it->libpython, RTLD_NOW | RTLD_GLOBAL);
+        if (lib == NULL) {
+            say(host, fmi2Error, "cannot load %s (of %s): %s", it->libpython, it->label, dlerror());
+            return 0;
+        }
+        const char *(*version)(void) = LOOK_UP(lib, const char *(*)(void), "Py_GetVersion");
+        char expected[16];
+        snprintf(expected, sizeof expected, "%d.%d.", it->major, it->minor);
+        if (version == NULL || strncmp(version(), expected, strlen(expected)) != 0) {
+            say(host, fmi2Error, "%s (of %s) is not the libpython of Python %d.%d", it->libpython, it->label,
+                it->major, it->minor);
+            dlclose(lib);
+            return 0;
+        }
+        /* kept for good: extension modules resolve against it, and a Python is never unloaded */
+        dlopen(it->libpython, RTLD_NOW | RTLD_GLOBAL | RTLD_NOLOAD | RTLD_NODELETE);
+    }
+    void *(*save_thread)(void) = LOOK_UP(lib, void *(*)(void), "PyEval_SaveThread");
+    if (save_thread == NULL) {
+        say(host, fmi2Error, "%s (of %s) lacks Python's start-up functions", it->libpython, it->label);
+        return 0;
+    }
+    int started = 0;
+    if (dlsym(lib, "PyInitConfig_Create") != NULL)
+        started = start_with_init_config(host, it, lib);
+    else if (it->minor <= LAST_PYCONFIG_MINOR)
+        started = start_with_pyconfig(host, it, lib);
+    else
+        say(host, fmi2Error, "cannot start Python %d.%d.%d (%s): its libpython has no PyInitConfig_Create (PEP 741)",
+            it->major, it->minor, it->micro, it->label);
+    if (!started)
+        return 0;
     save_thread(); /* release the GIL: every call of the layer takes it with PyGILState_Ensure */
     return 1;
 }
@@ -481,9 +594,9 @@ static int ensure_python(const Host *host, const char *resources)
     int ok = find_python(search, resources, loaded ? minor : -1);
     if (!ok)
         say(host, fmi2Error,
-            "no Python interpreter for this FMU: it needs Python 3.%d to 3.%d built with a shared libpython, with "
+            "no Python interpreter for this FMU: it needs Python 3.%d or later built with a shared libpython, with "
             "numpy and numba installed. Tried: %s. Set %s to such a python executable (a virtual environment's "
-            "bin/python works).", OLDEST_MINOR, NEWEST_MINOR, search->report.text, PYTHON_ENV, PYTHON_ENV);
+            "bin/python works).", OLDEST_MINOR, search->report.text, PYTHON_ENV, PYTHON_ENV);
     else
         ok = start_python(host, &search->found, loaded);
     const Interpreter *it = &search->found;

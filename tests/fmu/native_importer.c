@@ -16,7 +16,8 @@
  *     nullargs:fmi2SetReal(value)), empty (every getter and setter with
  *     nvr = 0 and NULL arrays, one line each), reals:VR,VR,... (likewise integers,
  *     booleans, strings: one get of those variables into an array filled with -7 (strings: "unset")
- *     before, printed as "CALL STATUS|value|value|...").
+ *     before, printed as "CALL STATUS|value|value|..."), signals (how SIGINT and SIGPIPE are handled:
+ *     "signals SIGINT=default,SIGPIPE=default"; "host" for the handler hostsigint installs for SIGINT).
  *     exit: 0 (2 usage or loading problem)
  * native_importer --threads LIB1 URI1 GUID1 LIB2 URI2 GUID2
  *     two threads, released together, each instantiate, initialise, step twice, terminate and free
@@ -39,6 +40,7 @@
 #include <dlfcn.h>
 #include <errno.h>
 #include <pthread.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -282,6 +284,23 @@ static void empty_arrays(const Api *api, fmi2Component c)
     SHOW("empty:fmi2SetString", api->fmi2SetString(c, NULL, 0, NULL));
 }
 
+static void host_handler(int number) { (void)number; }
+
+/* How the process handles signal `number`: "default", "ignored", "host" (host_handler) or "handler". */
+static const char *disposition(int number)
+{
+    struct sigaction action;
+    if (sigaction(number, NULL, &action) != 0)
+        return "unknown";
+    if (!(action.sa_flags & SA_SIGINFO) && action.sa_handler == host_handler)
+        return "host";
+    if (!(action.sa_flags & SA_SIGINFO) && action.sa_handler == SIG_DFL)
+        return "default";
+    if (!(action.sa_flags & SA_SIGINFO) && action.sa_handler == SIG_IGN)
+        return "ignored";
+    return "handler";
+}
+
 /* reals:VR,VR,... and the like: one get into an array filled beforehand, printed whole with the status. */
 static void get_many(const Api *api, fmi2Component c, const char *call, const char *list)
 {
@@ -371,6 +390,12 @@ static int calls_mode(const Api *api, int argc, char **argv)
         } else if (strncmp(call, "reals:", 6) == 0 || strncmp(call, "integers:", 9) == 0 ||
                    strncmp(call, "booleans:", 9) == 0 || strncmp(call, "strings:", 8) == 0) {
             get_many(api, c, call, arg);
+        } else if (strcmp(call, "hostsigint") == 0) {
+            struct sigaction action = {.sa_handler = host_handler};
+            sigemptyset(&action.sa_mask);
+            SHOW(call, sigaction(SIGINT, &action, NULL));
+        } else if (strcmp(call, "signals") == 0) {
+            printf("%s SIGINT=%s,SIGPIPE=%s\n", call, disposition(SIGINT), disposition(SIGPIPE));
         } else if (strcmp(call, "null") == 0) {
             null_instance(api);
         } else if (strncmp(call, "nullargs", 8) == 0) {

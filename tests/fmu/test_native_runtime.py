@@ -568,6 +568,29 @@ def test_a_host_thread_with_a_small_stack_runs_the_fmu(analytic_fmu, importer):
     assert used < 128 * 1024
 
 
+STARTUP_PROBE = """import sys
+sys.stderr.write("STARTED isolated=%d argv=%r\\n" % (sys.flags.isolated, sys.argv))
+"""
+
+
+def test_a_native_host_starts_python_as_python_does(analytic_fmu, importer, tmp_path):
+    """The interpreter started in a native host reads PYTHONPATH (a sitecustomize.py there runs), is not isolated,
+    and installs none of Python's start-up signal handlers: SIGPIPE, which Python ignores when it installs them,
+    stays at its default, and the host's SIGINT handler stays."""
+    (tmp_path / "sitecustomize.py").write_text(STARTUP_PROBE)
+    fmu = Unpacked(analytic_fmu)
+    try:
+        extra = {"BEARING_FMU_PYTHON": sys.executable, "PYTHONPATH": str(tmp_path)}
+        calls = ["hostsigint", "signals", "instantiate", "signals", "free"]
+        rc, statuses, stderr = fmu.calls(importer, calls, extra)
+    finally:
+        fmu.remove()
+    assert rc == 0, stderr[-2000:]
+    assert statuses[2] == ("instantiate", "ok"), stderr[-2000:]
+    assert statuses[1] == statuses[3] == ("signals", "SIGINT=host,SIGPIPE=default"), statuses
+    assert "STARTED isolated=0 argv=['']" in stderr
+
+
 @pytest.fixture(scope="module")
 def python_without_numba(tmp_path_factory):
     """bin/ of a virtual environment of this Python without numpy and numba (no pip: a second or two)."""
