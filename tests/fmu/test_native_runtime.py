@@ -19,7 +19,15 @@
 - no entry point crashes the host: a NULL instance, a NULL argument, a call out of the FMI 2.0 call
   sequence, a wrong GUID and calls after a failed fmi2Reset get fmi2Error (with a message naming the
   call and the state where an instance has a logger), and a slave constructor's exception reaches the
-  host's logger with its text.
+  host's logger with its text;
+- a getter stops at the first value it cannot convert and names its value reference; nvr = 0 with NULL
+  arrays is fmi2OK;
+- the host's logger runs without the GIL (a logger waiting for a lock another host thread holds while it
+  calls into an FMU does not deadlock);
+- the layer's Python code is the resources/fmi2_layer.py the FMU carries;
+- the interpreter search fits a host thread with a 64 kB stack, a whole run one with 128 kB;
+- the interpreter a native host starts reads PYTHONPATH, is not isolated and leaves the signals as the host
+  set them.
 """
 
 import json
