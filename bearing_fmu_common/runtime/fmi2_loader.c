@@ -65,12 +65,22 @@ static struct {
 
 static pthread_mutex_t load_lock = PTHREAD_MUTEX_INITIALIZER; /* this copy's: one loading at a time */
 
-/* The host's logger and the instance it is about. */
+/* A message kept until the loader has released its locks. */
+typedef struct Message {
+    struct Message *next;
+    fmi2Status status;
+    char text[];
+} Message;
+
+/* The host's logger and the instance it is about. Messages are kept (`kept`, in order) while the loader holds
+ * its locks and passed to the logger after: a host's logger may wait for a lock of the host that another host
+ * thread holds while it calls fmi2Instantiate, which waits for the loader's locks. */
 typedef struct {
     fmi2CallbackLogger logger;
     fmi2ComponentEnvironment env;
     const char *name;
     int logging_on;
+    Message *kept, **last;
 } Host;
 
 static void log_text(fmi2CallbackLogger logger, fmi2ComponentEnvironment env, const char *name, fmi2Status status,
@@ -85,19 +95,39 @@ static void log_text(fmi2CallbackLogger logger, fmi2ComponentEnvironment env, co
     free(format);
 }
 
-static void say(const Host *host, fmi2Status status, const char *fmt, ...)
+/* Keep a message for the host's logger (passed on by pass_on). */
+static void say(Host *host, fmi2Status status, const char *fmt, ...)
 {
-    if (status == fmi2OK && !host->logging_on)
+    if (host->logger == NULL || (status == fmi2OK && !host->logging_on))
         return;
-    char *text = NULL; /* sized to the message, on the heap: a host thread's stack may be small */
-    va_list args;
+    va_list args, again;
     va_start(args, fmt);
-    int n = vasprintf(&text, fmt, args);
+    va_copy(again, args);
+    int n = vsnprintf(NULL, 0, fmt, args);
+    /* sized to the message, on the heap: a host thread's stack may be small */
+    Message *message = n >= 0 ? malloc(sizeof *message + (size_t)n + 1) : NULL;
+    if (message != NULL) {
+        vsnprintf(message->text, (size_t)n + 1, fmt, again);
+        message->status = status;
+        message->next = NULL;
+        *host->last = message;
+        host->last = &message->next;
+    }
+    va_end(again);
     va_end(args);
-    if (n < 0)
-        return;
-    log_text(host->logger, host->env, host->name, status, status >= fmi2Error ? "logStatusError" : "logAll", text);
-    free(text);
+}
+
+/* Pass the kept messages to the host's logger, in order; the loader holds none of its locks. */
+static void pass_on(Host *host)
+{
+    for (Message *message = host->kept, *next; message != NULL; message = next) {
+        next = message->next;
+        log_text(host->logger, host->env, host->name, message->status,
+                 message->status >= fmi2Error ? "logStatusError" : "logAll", message->text);
+        free(message);
+    }
+    host->kept = NULL;
+    host->last = &host->kept;
 }
 
 /* What was tried, for the host's logger: "candidate: what it lacks; ..." */
@@ -420,7 +450,7 @@ typedef struct {
 #define LOOK_UP(lib, type, name) ((type)dlsym((lib), (name)))
 
 /* Python 3.10 to 3.13: PyConfig. 1 once Python runs; otherwise 0 with the reason logged. */
-static int start_with_pyconfig(const Host *host, const Interpreter *it, void *lib)
+static int start_with_pyconfig(Host *host, const Interpreter *it, void *lib)
 {
     void (*init_python)(void *) = LOOK_UP(lib, void (*)(void *), "PyConfig_InitPythonConfig");
     void (*init_isolated)(void *) = LOOK_UP(lib, void (*)(void *), "PyConfig_InitIsolatedConfig");
@@ -469,7 +499,7 @@ static int start_with_pyconfig(const Host *host, const Interpreter *it, void *li
  * which PyInitConfig cannot express (its pre-configuration is an isolated one, without "decided at start-up"
  * values); the configuration's defaults are those of an isolated interpreter (no signal handlers), and the
  * options that make it start as `python` does are set by name. */
-static int start_with_init_config(const Host *host, const Interpreter *it, void *lib)
+static int start_with_init_config(Host *host, const Interpreter *it, void *lib)
 {
     void (*init_preconfig)(void *) = LOOK_UP(lib, void (*)(void *), "PyPreConfig_InitPythonConfig");
     Status (*preinitialize)(const void *) = LOOK_UP(lib, Status(*)(const void *), "Py_PreInitialize");
@@ -528,7 +558,7 @@ static int start_with_init_config(const Host *host, const Interpreter *it, void 
 
 /* Load `it`'s libpython into the global scope (unless one of its version is there already) and start the
  * interpreter (above). */
-static int start_python(const Host *host, const Interpreter *it, int loaded)
+static int start_python(Host *host, const Interpreter *it, int loaded)
 {
     void *lib = RTLD_DEFAULT;
     if (!loaded) {
@@ -569,7 +599,7 @@ static int start_python(const Host *host, const Interpreter *it, int loaded)
 }
 
 /* Make sure an interpreter runs: the host's, one another FMU started, or one found and started here. */
-static int ensure_python(const Host *host, const char *resources)
+static int ensure_python(Host *host, const char *resources)
 {
     int (*is_initialized)(void) = (int (*)(void))dlsym(RTLD_DEFAULT, "Py_IsInitialized");
     const char *(*version)(void) = (const char *(*)(void))dlsym(RTLD_DEFAULT, "Py_GetVersion");
@@ -610,7 +640,7 @@ static int ensure_python(const Host *host, const char *resources)
 
 /* -- loading the layer ------------------------------------------------------------------------ */
 
-static int load_layer(const Host *host)
+static int load_layer(Host *host)
 {
     Dl_info self; /* a static function's address: this copy, whatever another library exports */
     if (!dladdr((void *)&load_layer, &self) || self.dli_fname == NULL) {
@@ -656,7 +686,8 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
                               fmi2Boolean visible, fmi2Boolean loggingOn)
 {
     Host host = {functions ? functions->logger : NULL, functions ? functions->componentEnvironment : NULL,
-                 instanceName ? instanceName : "", loggingOn};
+                 instanceName ? instanceName : "", loggingOn, NULL, NULL};
+    host.last = &host.kept;
     pthread_mutex_lock(&load_lock);
     int ready = layer.fmi2Instantiate != NULL;
     if (!ready) {
@@ -671,6 +702,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
             close(lock);
     }
     pthread_mutex_unlock(&load_lock);
+    pass_on(&host);
     return ready ? layer.fmi2Instantiate(instanceName, fmuType, fmuGUID, fmuResourceLocation, functions, visible,
                                          loggingOn)
                  : NULL;

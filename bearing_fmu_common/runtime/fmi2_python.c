@@ -459,14 +459,24 @@ static void setup_lock(PyObject *name)
     PyErr_Restore(kind, value, tb);
 }
 
-static int create_slave(Instance *c)
+/* Construct the slave under the set-up lock (a hold of the caller's may be around it); nothing is logged: an
+ * exception is left pending. */
+static int construct_slave(Instance *c)
 {
     PyObject *args = PyTuple_New(0);
     setup_lock(name_begin_setup);
     c->slave = args ? PyObject_Call(c->cls, args, c->kwargs) : NULL;
     setup_lock(name_end_setup);
     Py_XDECREF(args);
-    if (c->slave == NULL) {
+    return c->slave != NULL;
+}
+
+/* Construct the slave (fmi2Reset) and log what it logged, or its exception, once the set-up lock is released:
+ * the host's logger never runs under it (it may wait for a lock of the host whose holder is setting up an
+ * FMU). */
+static int create_slave(Instance *c)
+{
+    if (!construct_slave(c)) {
         log_exception(c, "creating the slave");
         return 0;
     }
@@ -547,17 +557,17 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     PyGILState_STATE gil = gil_take();
     setup_lock(name_begin_setup); /* the class and the slave under one hold: see fmi2_layer.py */
     c->cls = PyObject_CallMethod(helper, "slave_class", "(s)", resources);
-    if (c->cls == NULL)
-        log_exception(c, "loading the slave class");
-    else
+    if (c->cls != NULL)
         c->kwargs = Py_BuildValue("{s:s,s:s,s:O}", "instance_name", c->name, "resources", resources, "visible",
                                   visible ? Py_True : Py_False);
-    int ok = c->cls != NULL && c->kwargs != NULL && create_slave(c);
-    setup_lock(name_end_setup);
+    int ok = c->cls != NULL && c->kwargs != NULL && construct_slave(c);
+    setup_lock(name_end_setup); /* keeps a pending exception: logged below, the lock released */
     if (!ok) {
+        log_exception(c, c->cls == NULL ? "loading the slave class" : "creating the slave");
         release(c);
         c = NULL;
     } else {
+        flush_log(c);
         c->state = INSTANTIATED;
     }
     gil_give(gil);

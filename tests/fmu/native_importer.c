@@ -33,6 +33,12 @@
  *     instance; thread 2 meanwhile makes a call the FMU refuses on a second instance, whose message goes
  *     to the logger, which waits for the lock. Prints "logger-lock S1 S2" (the two calls' statuses).
  *     exit: 0, 2 usage or loading problem, 3 an FMI call failed, 5 the threads did not finish within 60 s
+ * native_importer --logger-lock-instantiate LIBRARY RESOURCE_URI GUID LOGGING
+ *     the same logger; thread 1 holds its lock, thread 2 makes the process's first fmi2Instantiate (loggingOn
+ *     = LOGGING), whose messages wait for the lock, and thread 1 then calls fmi2Instantiate too. Prints
+ *     "logger-lock-instantiate waited|no-wait ok|null ok|null" (whether thread 2's logger was waiting when
+ *     thread 1 called; what thread 2's and thread 1's fmi2Instantiate returned).
+ *     exit: 0, 2 usage or loading problem, 5 the threads did not finish within 180 s
  *
  * The FMU's messages go to stderr, formatted as printf formats (FMI 2.0 logger).
  */
@@ -471,7 +477,8 @@ static int threads_mode(int argc, char **argv)
 
 /* -- --logger-lock: a logger that takes a lock another thread holds while it calls into the FMU ------ */
 
-static pthread_mutex_t host_lock = PTHREAD_MUTEX_INITIALIZER; /* e.g. the host's log file */
+/* e.g. the host's log file; recursive: a thread that holds it may log */
+static pthread_mutex_t host_lock = PTHREAD_RECURSIVE_MUTEX_INITIALIZER_NP;
 static volatile int logger_waiting;                           /* the locking logger is waiting for host_lock */
 
 static void locking_logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status, fmi2String category,
@@ -565,6 +572,75 @@ static int logger_lock_mode(const Api *api, int argc, char **argv)
     return 0;
 }
 
+/* --logger-lock-instantiate: thread 2 makes the process's first fmi2Instantiate, whose messages go to the
+ * locking logger, while thread 1 holds the lock and then calls fmi2Instantiate itself. */
+typedef struct {
+    const Api *api;
+    const char *uri, *guid;
+    int logging;
+    volatile int holding; /* thread 1 holds host_lock */
+    int waited;           /* thread 1 saw thread 2's logger waiting before it called */
+    fmi2Component got;
+} SetupJob;
+
+static fmi2Component instantiate_locked(const SetupJob *job, const char *name)
+{
+    static fmi2CallbackFunctions locking = {locking_logger, calloc, free, NULL, NULL};
+    return job->api->fmi2Instantiate(name, fmi2CoSimulation, job->guid, job->uri, &locking, fmi2False,
+                                     job->logging ? fmi2True : fmi2False);
+}
+
+static void *holder_main(void *arg)
+{
+    SetupJob *job = arg;
+    pthread_mutex_lock(&host_lock);
+    __atomic_store_n(&job->holding, 1, __ATOMIC_SEQ_CST);
+    for (int k = 0; k < 120000 && !__atomic_load_n(&logger_waiting, __ATOMIC_SEQ_CST); k++)
+        usleep(1000); /* until thread 2 is in the logger (120 s at most: it starts Python) */
+    job->waited = __atomic_load_n(&logger_waiting, __ATOMIC_SEQ_CST);
+    job->got = instantiate_locked(job, "holder");
+    pthread_mutex_unlock(&host_lock);
+    return NULL;
+}
+
+static void *first_main(void *arg)
+{
+    SetupJob *job = arg;
+    job->got = instantiate_locked(job, "first");
+    return NULL;
+}
+
+static int logger_lock_instantiate_mode(const Api *api, int argc, char **argv)
+{
+    if (argc != 6) {
+        fprintf(stderr, "usage: %s --logger-lock-instantiate LIBRARY RESOURCE_URI GUID LOGGING\n", argv[0]);
+        return 2;
+    }
+    SetupJob holder = {.api = api, .uri = argv[3], .guid = argv[4], .logging = atoi(argv[5])};
+    SetupJob first = holder;
+    pthread_t threads[2];
+    pthread_create(&threads[0], NULL, holder_main, &holder);
+    while (!__atomic_load_n(&holder.holding, __ATOMIC_SEQ_CST))
+        usleep(1000);
+    pthread_create(&threads[1], NULL, first_main, &first);
+    struct timespec deadline;
+    clock_gettime(CLOCK_REALTIME, &deadline);
+    deadline.tv_sec += 180;
+    for (int k = 0; k < 2; k++)
+        if (pthread_timedjoin_np(threads[k], NULL, &deadline) == ETIMEDOUT) {
+            printf("logger-lock-instantiate deadlock\n");
+            fflush(stdout);
+            _exit(5); /* the threads are stuck: no orderly exit */
+        }
+    printf("logger-lock-instantiate %s %s %s\n", holder.waited ? "waited" : "no-wait", first.got ? "ok" : "null",
+           holder.got ? "ok" : "null");
+    if (first.got)
+        api->fmi2FreeInstance(first.got);
+    if (holder.got)
+        api->fmi2FreeInstance(holder.got);
+    return 0;
+}
+
 /* -- --stack: the calls on a thread with a small stack, and how much of it they used ------------------ */
 
 typedef struct {
@@ -628,6 +704,10 @@ int main(int argc, char **argv)
     if (argc > 2 && strcmp(argv[1], "--logger-lock") == 0) {
         Api api;
         return load(argv[2], &api) ? logger_lock_mode(&api, argc, argv) : 2;
+    }
+    if (argc > 2 && strcmp(argv[1], "--logger-lock-instantiate") == 0) {
+        Api api;
+        return load(argv[2], &api) ? logger_lock_instantiate_mode(&api, argc, argv) : 2;
     }
     int calls = argc > 1 && strcmp(argv[1], "--calls") == 0;
     if (argc < 2 + calls) {

@@ -383,6 +383,30 @@ def test_a_host_logger_waiting_for_a_lock_of_the_host_does_not_block_other_threa
     assert "refused (logStatusError): refused: fmi2DoStep is not allowed in state instantiated" in proc.stderr
 
 
+@pytest.mark.parametrize("where", ["loader", "set-up"])
+def test_a_host_logger_waiting_for_a_lock_of_the_host_does_not_block_another_instantiation(
+    where, analytic_fmu, failing_fmu, importer
+):
+    """Thread 2 makes the process's first fmi2Instantiate and its messages wait for a lock of the host; thread 1
+    holds that lock and calls fmi2Instantiate too. The messages are passed on once the FMU holds none of its
+    locks: the loader's (with logging on, "started Python ..."; the loader holds its own locks while it starts
+    Python) and the layer's (a constructor's exception; the layer holds the set-up lock while it constructs)."""
+    fmu = Unpacked(analytic_fmu) if where == "loader" else failing_from(failing_fmu, 1)
+    env = {k: os.environ[k] for k in KEPT if k in os.environ}
+    args = [str(importer), "--logger-lock-instantiate", str(fmu.library), fmu.resources, fmu.guid]
+    args.append("1" if where == "loader" else "0")
+    try:
+        proc = subprocess.run(args, capture_output=True, text=True, env=env, timeout=600)
+    finally:
+        fmu.remove()
+    assert proc.returncode == 0, (proc.stdout, proc.stderr[-2000:])
+    got = "ok ok" if where == "loader" else "null null"  # the failing FMU's constructor always refuses here
+    assert proc.stdout.split() == ["logger-lock-instantiate", "waited", *got.split()]
+    assert ("first (logAll): started Python" if where == "loader" else "first (logStatusError): first: creating") in (
+        proc.stderr
+    )
+
+
 @pytest.mark.parametrize("unpacked", ["analytic_fmu"], indirect=True)
 def test_the_layer_runs_the_python_side_the_fmu_carries(unpacked, importer):
     """The layer's Python code is resources/fmi2_layer.py, not text compiled into the binary: without that file
