@@ -308,6 +308,7 @@ static const char *disposition(int number)
 }
 
 /* reals:VR,VR,... and the like: one get into an array filled beforehand, printed whole with the status. */
+__attribute__((noinline)) /* its arrays stay off the stack of the other calls */
 static void get_many(const Api *api, fmi2Component c, const char *call, const char *list)
 {
     fmi2ValueReference vr[MAX_VARS];
