@@ -421,11 +421,12 @@ static int find_python(Search *search, const char *resources, int required_minor
 
 /* Python is started with the executable found as its program name (argv[0]: Python finds its prefix, and a
  * virtual environment's pyvenv.cfg, from it), honouring the environment (PYTHONHOME, PYTHONPATH) and the
- * user's site-packages as `python` does, and without signal handlers (SIGINT and friends stay the host's).
- * The layer is built for the stable ABI, which has no start-up API; these are CPython's public, documented
- * start-up functions, looked up in the libpython:
+ * user's site-packages as `python` does, and without Python's start-up signal handlers (SIGPIPE, SIGXFSZ
+ * and a SIGINT handler of the host's stay the host's). The layer is built for the stable ABI, which has no
+ * start-up API; these are CPython's public, documented start-up functions, looked up in the libpython:
  * - Python 3.14 on: the opaque configuration of PEP 741 (PyInitConfig_Create, options set by name,
- *   Py_InitializeFromInitConfig), which depends on no structure layout;
+ *   Py_InitializeFromInitConfig), which depends on no structure layout, after Py_PreInitialize with
+ *   PyPreConfig_InitPythonConfig's pre-configuration (allocated, never written to);
  * - Python 3.10 to 3.13: PyConfig_InitPythonConfig, PyConfig_SetBytesArgv and Py_InitializeFromConfig. The
  *   PyConfig structure is caller-allocated (a buffer larger than any of those versions' PyConfig) and one
  *   field is written, install_signal_handlers, at its place in the head the structure has kept in every
