@@ -6,7 +6,7 @@ Two libraries, both linked with no libpython:
 - the layer, binaries/linux64/fmi2_python.abi3.so (fmi2_python.c), built for CPython's stable ABI
   (Py_LIMITED_API 3.10): one binary serves every Python from 3.10 on.
 Each is compiled once per source and compiler command into a cache directory and reused by every FMU
-of a build.
+of a build. The layer's Python side (fmi2_layer.py) goes into the FMU as resources/fmi2_layer.py.
 """
 
 import hashlib
@@ -24,6 +24,8 @@ RUNTIME_DIR = Path(__file__).resolve().parent
 SOURCE = RUNTIME_DIR / "fmi2_python.c"  # the layer
 LOADER_SOURCE = RUNTIME_DIR / "fmi2_loader.c"  # the FMU's binary
 SHARED_HEADER = RUNTIME_DIR / "fmi2_shared.h"
+HELPER_SOURCE = RUNTIME_DIR / "fmi2_layer.py"  # the layer's Python side
+HELPER_FILE = "fmi2_layer.py"  # resources/ file the layer loads at its first fmi2Instantiate
 LAYER_FILE = "fmi2_python.abi3.so"  # beside the FMU's binary; the name fmi2_loader.c loads
 PLATFORM = "linux64"  # the only platform the layer is built for
 PYTHON_HINT = "python.txt"  # resources/ file read by the loader: the interpreter that built the FMU
@@ -102,14 +104,15 @@ def install_runtime(fmu_path, python=sys.executable):
     """Replace the binaries of a pythonfmu-built FMU by the project's (binaries/linux64/<modelIdentifier>.so,
     the loader, and the layer beside it), record `python` in resources/python.txt (a native host's last
     candidate interpreter: the build machine's) and the modelDescription's GUID in resources/guid.txt
-    (fmi2Instantiate refuses another GUID: one layer serves every FMU, so the GUID cannot be compiled in)."""
+    (fmi2Instantiate refuses another GUID: one layer serves every FMU, so the GUID cannot be compiled in), and
+    the layer's Python side in resources/fmi2_layer.py."""
     fmu_path = Path(fmu_path)
     loader, layer = compiled_runtime(LOADER_SOURCE), compiled_runtime(SOURCE)
     staged = fmu_path.with_suffix(".fmu.tmp")
     with zipfile.ZipFile(fmu_path) as source, zipfile.ZipFile(staged, "w", zipfile.ZIP_DEFLATED) as target:
         md = ElementTree.fromstring(source.read("modelDescription.xml"))
         identifier = md.find("CoSimulation").get("modelIdentifier")
-        written = (f"resources/{PYTHON_HINT}", f"resources/{GUID_FILE}")
+        written = (f"resources/{PYTHON_HINT}", f"resources/{GUID_FILE}", f"resources/{HELPER_FILE}")
         for item in source.infolist():
             if not item.filename.startswith("binaries/") and item.filename not in written:
                 target.writestr(item, source.read(item))
@@ -117,5 +120,6 @@ def install_runtime(fmu_path, python=sys.executable):
         target.write(layer, f"binaries/{PLATFORM}/{LAYER_FILE}")
         target.writestr(f"resources/{PYTHON_HINT}", f"{python}\n")
         target.writestr(f"resources/{GUID_FILE}", f"{md.get('guid')}\n")
+        target.write(HELPER_SOURCE, f"resources/{HELPER_FILE}")
     shutil.move(staged, fmu_path)
     return fmu_path

@@ -15,7 +15,8 @@
  * pythonfmu's builder), imports that module with resources/ on sys.path (once per process: later
  * instances, from any extraction of the FMU, reuse it and add nothing to sys.path) and instantiates
  * its Fmi2Slave subclass. Every call holds the GIL (PyGILState_Ensure), so a Python host (fmpy, whose
- * ctypes calls release the GIL) and a native host on any thread are served the same way.
+ * ctypes calls release the GIL) and a native host on any thread are served the same way; the host's logger
+ * is called with the GIL released (emit).
  *
  * No call can crash the host: a NULL instance gets fmi2Error, and every call is checked against the FMI
  * 2.0 co-simulation call sequence (the states and masks below, as the Modelica Reference-FMUs check it);
@@ -26,6 +27,7 @@
 #define Py_LIMITED_API 0x030A0000 /* Python 3.10: the oldest supported host */
 #include <Python.h>
 
+#include <limits.h>
 #include <pthread.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -42,37 +44,7 @@
         Py_XDECREF(old__);                                                                         \
     } while (0)
 
-/* Python code the layer needs; compiled once into its own namespace. */
-static const char *HELPER_SOURCE =
-    "import importlib, inspect, os, pickle, sys, threading, traceback, types\n"
-    "# One set-up lock for every FMU of the product in the process. Each FMU brings its own copy of this\n"
-    "# library and so its own namespace: the lock lives in a module registered once in sys.modules.\n"
-    "# Two FMUs set up by two threads at once (imports, numba loading kernels and filling its registries)\n"
-    "# are not safe: one of them can fail to instantiate.\n"
-    "_shared = sys.modules.setdefault('_bearing_fmu_runtime_shared', types.ModuleType('_bearing_fmu_runtime_shared'))\n"
-    "_setup_lock = _shared.__dict__.setdefault('setup_lock', threading.RLock())\n"
-    "def begin_setup():\n"
-    "    _setup_lock.acquire()\n"
-    "def end_setup():\n"
-    "    _setup_lock.release()\n"
-    "def slave_class(resources):\n"
-    "    with open(os.path.join(resources, 'slavemodule.txt'), encoding='utf-8') as fh:\n"
-    "        name = fh.readline().strip()\n"
-    "    if name not in sys.modules and resources not in sys.path:\n"
-    "        sys.path.insert(0, resources)\n"
-    "    module = importlib.import_module(name)\n"
-    "    found = [c for c in vars(module).values() if inspect.isclass(c) and not inspect.isabstract(c)\n"
-    "             and any(k.__name__ == 'Fmi2Slave' for k in c.__mro__)]\n"
-    "    if not found:\n"
-    "        raise ImportError(f'no Fmi2Slave subclass in module {name} ({module.__file__})')\n"
-    "    return max(found, key=lambda c: len(c.__mro__))\n"
-    "def describe(kind, value, tb):\n"
-    "    # the exception first: a host that shows only the start of a long message still shows the cause\n"
-    "    head = ''.join(traceback.format_exception_only(kind, value)).rstrip()\n"
-    "    return head + '\\n' + ''.join(traceback.format_exception(kind, value, tb)).rstrip()\n"
-    "def dumps(state):\n"
-    "    return pickle.dumps(state, protocol=pickle.HIGHEST_PROTOCOL)\n"
-    "loads = pickle.loads\n";
+#define HELPER_FILE "fmi2_layer.py" /* resources/ file: the layer's Python side (bearing_fmu_common/runtime) */
 
 /* The value references of the last call of one kind, as a Python tuple: a host asks for the same
  * variables every step, so the tuple is built once and handed over again while the references match. */
@@ -135,7 +107,7 @@ typedef struct {
 } Instance;
 
 static pthread_mutex_t helper_lock = PTHREAD_MUTEX_INITIALIZER; /* taken before the GIL: see ensure_helper */
-static PyObject *helper; /* namespace of HELPER_SOURCE; lives as long as the process */
+static PyObject *helper; /* the module of resources/fmi2_layer.py; lives as long as the process */
 
 /* Names of the slave methods called every step and of its log queue, interned once (ensure_helper):
  * a call by an interned name skips building the name and parsing a format string per call. */
@@ -143,26 +115,66 @@ static const char *KIND_METHODS[N_KINDS] = {"get_real",   "get_integer", "get_bo
                                             "set_real",   "set_integer", "set_boolean", "set_string"};
 static PyObject *kind_names[N_KINDS], *name_do_step, *name_log_queue, *name_begin_setup, *name_end_setup;
 
+/* -- the GIL ---------------------------------------------------------------------------------- */
+
+/* How many holds of the GIL this thread has taken through gil_take and not given back: the host's logger is
+ * called with the GIL released only by a thread that holds it (PyGILState_Check is not in the stable ABI). */
+static __thread int gil_holds;
+
+static PyGILState_STATE gil_take(void)
+{
+    PyGILState_STATE state = PyGILState_Ensure();
+    gil_holds++;
+    return state;
+}
+
+static void gil_give(PyGILState_STATE state)
+{
+    gil_holds--;
+    PyGILState_Release(state);
+}
+
 /* -- logging -------------------------------------------------------------------------------- */
 
-/* Pass a message to the host's logger (warnings and errors always; debug messages only if asked for). */
+/* Pass a message to the host's logger (warnings and errors always; debug messages only if asked for). The
+ * logger runs with the GIL released: a host's logger may wait for a lock of the host (its log file, its
+ * console) that another host thread holds while it calls into an FMU, and that thread needs the GIL. The
+ * message and category are copied into C memory first, so nothing of Python is touched meanwhile. */
 static void emit(const Instance *c, fmi2Status status, const char *category, const char *text)
 {
-    if (status != fmi2OK || c->logging_on)
-        log_text(c->logger, c->env, c->name, status, category, text);
+    if (c->logger == NULL || (status == fmi2OK && !c->logging_on))
+        return;
+    char *format = printf_safe(text), *cat = strdup(category);
+    if (format != NULL && cat != NULL) {
+        PyThreadState *saved = gil_holds > 0 ? PyEval_SaveThread() : NULL;
+        c->logger(c->env, c->name, status, cat, format);
+        if (saved != NULL)
+            PyEval_RestoreThread(saved);
+    }
+    free(format);
+    free(cat);
 }
 
 static void emitf(const Instance *c, fmi2Status status, const char *fmt, ...)
 {
-    char text[1024];
-    va_list args;
+    if (c->logger == NULL || (status == fmi2OK && !c->logging_on))
+        return;
+    va_list args, again;
     va_start(args, fmt);
-    vsnprintf(text, sizeof text, fmt, args);
+    va_copy(again, args);
+    int n = vsnprintf(NULL, 0, fmt, args);
+    char *text = n >= 0 ? malloc((size_t)n + 1) : NULL; /* sized to the message, on the heap: small host stacks */
+    if (text != NULL)
+        vsnprintf(text, (size_t)n + 1, fmt, again);
+    va_end(again);
     va_end(args);
-    emit(c, status, status >= fmi2Error ? "logStatusError" : "logAll", text);
+    if (text != NULL)
+        emit(c, status, status >= fmi2Error ? "logStatusError" : "logAll", text);
+    free(text);
 }
 
-/* Pass the slave's queued log messages (pythonfmu LogMsg: status, category, msg) to the host. */
+/* Pass the slave's queued log messages (pythonfmu LogMsg: status, category, msg) to the host. They are taken
+ * off the queue before the first is passed on (the GIL is released while the logger runs). */
 static void flush_log(const Instance *c)
 {
     if (c->slave == NULL)
@@ -174,8 +186,13 @@ static void flush_log(const Instance *c)
         return;
     }
     Py_ssize_t n = PyList_Size(queue);
-    for (Py_ssize_t i = 0; i < n; i++) {
-        PyObject *entry = PyList_GetItem(queue, i);
+    PyObject *batch = PyList_GetSlice(queue, 0, n);
+    if (batch != NULL)
+        PyList_SetSlice(queue, 0, n, NULL);
+    Py_DECREF(queue);
+    PyErr_Clear();
+    for (Py_ssize_t i = 0; batch != NULL && i < n; i++) {
+        PyObject *entry = PyList_GetItem(batch, i);
         PyObject *status = PyObject_GetAttrString(entry, "status");
         PyObject *category = PyObject_GetAttrString(entry, "category");
         PyObject *msg = PyObject_GetAttrString(entry, "msg");
@@ -193,8 +210,7 @@ static void flush_log(const Instance *c)
         Py_XDECREF(msg_text);
         Py_XDECREF(category_text);
     }
-    PyList_SetSlice(queue, 0, n, NULL);
-    Py_DECREF(queue);
+    Py_XDECREF(batch);
 }
 
 /* Log the pending Python exception with its traceback as an fmi2Error message; clears it. */
@@ -210,15 +226,12 @@ static void log_exception(const Instance *c, const char *what)
     const char *utf8 = text ? PyUnicode_AsUTF8AndSize(text, NULL) : NULL;
     PyErr_Clear();
     const char *detail = utf8 ? utf8 : "unknown Python error";
-    /* sized to the traceback: emitf's fixed buffer would cut a long one before its end */
     size_t n = strlen(c->name) + strlen(what) + strlen(detail) + 5;
     char *message = malloc(n);
     if (message != NULL) {
         snprintf(message, n, "%s: %s: %s", c->name, what, detail);
         emit(c, fmi2Error, "logStatusError", message);
         free(message);
-    } else {
-        emitf(c, fmi2Error, "%s: %s: %s", c->name, what, detail);
     }
     Py_XDECREF(text);
     Py_XDECREF(kind);
@@ -248,33 +261,94 @@ static fmi2Status settle(Instance *c, const char *what, PyObject *result, fmi2St
 
 /* -- interpreter ---------------------------------------------------------------------------- */
 
-/* Make sure this copy of the layer has its helper. The interpreter runs already: the host's, or the one
- * the FMU's entry library started (fmi2_loader.c); it is never finalised (docs/fmu_runtime.md). The
- * helper is made once per copy of the layer; helper_lock is taken before the GIL (never the other way
- * round), so two host threads instantiating at once make it once. */
-static int ensure_helper(char *error, size_t size)
+/* The pending Python exception as "Kind: text" (malloc'ed; NULL if none could be had); clears it. */
+static char *exception_text(void)
+{
+    PyObject *kind, *value, *tb;
+    PyErr_Fetch(&kind, &value, &tb);
+    PyErr_NormalizeException(&kind, &value, &tb);
+    PyObject *name = kind ? PyObject_GetAttrString(kind, "__name__") : NULL;
+    PyObject *text = value ? PyObject_Str(value) : NULL;
+    const char *name_utf8 = name ? PyUnicode_AsUTF8AndSize(name, NULL) : NULL;
+    const char *text_utf8 = text ? PyUnicode_AsUTF8AndSize(text, NULL) : NULL;
+    char *out = NULL;
+    if (name_utf8 != NULL) {
+        size_t n = strlen(name_utf8) + (text_utf8 ? strlen(text_utf8) : 0) + 3;
+        if ((out = malloc(n)) != NULL)
+            snprintf(out, n, "%s%s%s", name_utf8, text_utf8 && text_utf8[0] ? ": " : "", text_utf8 ? text_utf8 : "");
+    }
+    PyErr_Clear();
+    Py_XDECREF(name);
+    Py_XDECREF(text);
+    Py_XDECREF(kind);
+    Py_XDECREF(value);
+    Py_XDECREF(tb);
+    return out;
+}
+
+/* resources/fmi2_layer.py loaded by file location as a module of its own, not registered in sys.modules (each
+ * copy of the layer has its own) and without touching sys.path; new reference, or NULL with an exception set. */
+static PyObject *load_helper(const char *resources)
+{
+    size_t n = strlen(resources) + sizeof HELPER_FILE + 1;
+    char *path = malloc(n);
+    if (path == NULL)
+        return PyErr_NoMemory();
+    snprintf(path, n, "%s/%s", resources, HELPER_FILE);
+    PyObject *util = PyImport_ImportModule("importlib.util");
+    PyObject *spec = util ? PyObject_CallMethod(util, "spec_from_file_location", "(sN)", "bearing_fmu_runtime",
+                                                PyUnicode_DecodeFSDefault(path))
+                          : NULL;
+    free(path);
+    if (spec == Py_None) {
+        Py_CLEAR(spec);
+        PyErr_SetString(PyExc_ImportError, "no loader for " HELPER_FILE);
+    }
+    PyObject *module = spec ? PyObject_CallMethod(util, "module_from_spec", "(O)", spec) : NULL;
+    PyObject *loader = module ? PyObject_GetAttrString(spec, "loader") : NULL;
+    PyObject *done = loader ? PyObject_CallMethod(loader, "exec_module", "(O)", module) : NULL;
+    if (done == NULL)
+        Py_CLEAR(module);
+    Py_XDECREF(done);
+    Py_XDECREF(loader);
+    Py_XDECREF(spec);
+    Py_XDECREF(util);
+    return module;
+}
+
+static char NO_MEMORY[] = "out of memory"; /* what ensure_helper returns when it cannot allocate its message */
+
+/* Make sure this copy of the layer has its helper, the module of resources/fmi2_layer.py (`resources`: the
+ * first instance's). The interpreter runs already: the host's, or the one the FMU's entry library started
+ * (fmi2_loader.c); it is never finalised (docs/fmu_runtime.md). The helper is made once per copy of the
+ * layer; helper_lock is taken before the GIL (never the other way round), so two host threads instantiating
+ * at once make it once. NULL if it is there, else what went wrong (malloc'ed, or NO_MEMORY). */
+static char *ensure_helper(const char *resources)
 {
     if (!Py_IsInitialized()) {
-        snprintf(error, size, "no Python interpreter runs in this process (the FMU's entry library starts one)");
-        return 0;
+        static const char text[] = "no Python interpreter runs in this process (the FMU's entry library starts one)";
+        char *copy = strdup(text);
+        return copy ? copy : NO_MEMORY;
     }
-    int ok = 1;
+    char *error = NULL;
     pthread_mutex_lock(&helper_lock);
     if (helper == NULL) {
-        PyGILState_STATE gil = PyGILState_Ensure();
-        PyObject *globals = PyDict_New();
-        PyObject *code = Py_CompileString(HELPER_SOURCE, "<bearing_fmu_runtime>", Py_file_input);
-        PyObject *done = NULL;
-        if (globals != NULL && code != NULL && PyDict_SetItemString(globals, "__builtins__", PyEval_GetBuiltins()) == 0)
-            done = PyEval_EvalCode(code, globals, globals);
-        if (done == NULL) {
-            PyErr_Print();
-            snprintf(error, size, "the runtime's helper code failed to compile");
-            ok = 0;
+        PyGILState_STATE gil = gil_take();
+        PyObject *module = load_helper(resources);
+        if (module == NULL) {
+            char *why = exception_text();
+            const char *detail = why ? why : "unknown Python error";
+            static const char head[] = "cannot load the layer's Python side, resources/" HELPER_FILE " (an incomplete "
+                                       "or altered FMU): ";
+            size_t n = sizeof head + strlen(detail);
+            error = malloc(n);
+            if (error != NULL)
+                snprintf(error, n, "%s%s", head, detail);
+            else
+                error = NO_MEMORY;
+            free(why);
         } else {
-            Py_DECREF(done);
-            helper = PyModule_New("bearing_fmu_runtime");
-            PyDict_Update(PyModule_GetDict(helper), globals);
+            helper = module;
             for (int k = 0; k < N_KINDS; k++)
                 kind_names[k] = PyUnicode_InternFromString(KIND_METHODS[k]);
             name_do_step = PyUnicode_InternFromString("do_step");
@@ -282,12 +356,10 @@ static int ensure_helper(char *error, size_t size)
             name_begin_setup = PyUnicode_InternFromString("begin_setup");
             name_end_setup = PyUnicode_InternFromString("end_setup");
         }
-        Py_XDECREF(code);
-        Py_XDECREF(globals);
-        PyGILState_Release(gil);
+        gil_give(gil);
     }
     pthread_mutex_unlock(&helper_lock);
-    return ok;
+    return error;
 }
 
 /* -- instance ------------------------------------------------------------------------------- */
@@ -343,20 +415,23 @@ static int has_slave(Instance *c, const char *call)
     Instance *c = component;                                                                       \
     if (c == NULL)                                                                                 \
         return fmi2Error;                                                                          \
-    PyGILState_STATE gil__ = PyGILState_Ensure();                                                  \
+    PyGILState_STATE gil__ = gil_take();                                                           \
+    State entered__ = c->state;                                                                    \
     if (!allowed(c, (mask), (call)))                                                               \
     RETURN(fmi2Error)
 
 /* Leave the call: an error or fatal status puts the instance into that state (not while a step runs on
- * another thread: a call refused meanwhile leaves the step's outcome to decide); releases the GIL. */
+ * another thread, nor if one ran when the call came: a call refused meanwhile leaves the step's outcome to
+ * decide, also when the step ended while the refusal was being logged); releases the GIL. */
 #define RETURN(value)                                                                              \
     do {                                                                                           \
         fmi2Status value__ = (value);                                                              \
-        if (value__ == fmi2Error && c->state != STEP_IN_PROGRESS)                                  \
+        int stepping__ = entered__ == STEP_IN_PROGRESS || c->state == STEP_IN_PROGRESS;            \
+        if (value__ == fmi2Error && !stepping__)                                                   \
             c->state = ERROR_STATE;                                                                \
-        else if (value__ == fmi2Fatal && c->state != STEP_IN_PROGRESS)                             \
+        else if (value__ == fmi2Fatal && !stepping__)                                              \
             c->state = FATAL_STATE;                                                                \
-        PyGILState_Release(gil__);                                                                 \
+        gil_give(gil__);                                                                           \
         return value__;                                                                            \
     } while (0)
 
@@ -384,14 +459,24 @@ static void setup_lock(PyObject *name)
     PyErr_Restore(kind, value, tb);
 }
 
-static int create_slave(Instance *c)
+/* Construct the slave under the set-up lock (a hold of the caller's may be around it); nothing is logged: an
+ * exception is left pending. */
+static int construct_slave(Instance *c)
 {
     PyObject *args = PyTuple_New(0);
     setup_lock(name_begin_setup);
     c->slave = args ? PyObject_Call(c->cls, args, c->kwargs) : NULL;
     setup_lock(name_end_setup);
     Py_XDECREF(args);
-    if (c->slave == NULL) {
+    return c->slave != NULL;
+}
+
+/* Construct the slave (fmi2Reset) and log what it logged, or its exception, once the set-up lock is released:
+ * the host's logger never runs under it (it may wait for a lock of the host whose holder is setting up an
+ * FMU). */
+static int create_slave(Instance *c)
+{
+    if (!construct_slave(c)) {
         log_exception(c, "creating the slave");
         return 0;
     }
@@ -455,7 +540,6 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     c->logger = functions ? functions->logger : NULL;
     c->env = functions ? functions->componentEnvironment : NULL;
     c->logging_on = loggingOn;
-    char error[1024];
     char *resources = uri_to_path(fmuResourceLocation);
     if (fmuType != fmi2CoSimulation || resources == NULL) {
         emitf(c, fmi2Error, "%s: only co-simulation with a resource location is supported", c->name);
@@ -463,27 +547,30 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     }
     if (!guid_matches(c, resources, fmuGUID))
         return refuse(c, resources);
-    if (!ensure_helper(error, sizeof error)) {
+    char *error = ensure_helper(resources);
+    if (error != NULL) {
         emitf(c, fmi2Error, "%s: %s", c->name, error);
+        if (error != NO_MEMORY)
+            free(error);
         return refuse(c, resources);
     }
-    PyGILState_STATE gil = PyGILState_Ensure();
-    setup_lock(name_begin_setup); /* the class and the slave under one hold: see HELPER_SOURCE */
+    PyGILState_STATE gil = gil_take();
+    setup_lock(name_begin_setup); /* the class and the slave under one hold: see fmi2_layer.py */
     c->cls = PyObject_CallMethod(helper, "slave_class", "(s)", resources);
-    if (c->cls == NULL)
-        log_exception(c, "loading the slave class");
-    else
+    if (c->cls != NULL)
         c->kwargs = Py_BuildValue("{s:s,s:s,s:O}", "instance_name", c->name, "resources", resources, "visible",
                                   visible ? Py_True : Py_False);
-    int ok = c->cls != NULL && c->kwargs != NULL && create_slave(c);
-    setup_lock(name_end_setup);
+    int ok = c->cls != NULL && c->kwargs != NULL && construct_slave(c);
+    setup_lock(name_end_setup); /* keeps a pending exception: logged below, the lock released */
     if (!ok) {
+        log_exception(c, c->cls == NULL ? "loading the slave class" : "creating the slave");
         release(c);
         c = NULL;
     } else {
+        flush_log(c);
         c->state = INSTANTIATED;
     }
-    PyGILState_Release(gil);
+    gil_give(gil);
     free(resources);
     return c;
 }
@@ -493,14 +580,14 @@ void fmi2FreeInstance(fmi2Component component)
     Instance *c = component;
     if (c == NULL)
         return;
-    PyGILState_STATE gil = PyGILState_Ensure();
+    PyGILState_STATE gil = gil_take();
     if (!allowed(c, MASK_FreeInstance, "fmi2FreeInstance")) {
-        PyGILState_Release(gil); /* a step still running on another thread: leave the instance alone */
+        gil_give(gil); /* a step still running on another thread: leave the instance alone */
         return;
     }
     flush_log(c);
     release(c);
-    PyGILState_Release(gil);
+    gil_give(gil);
     /* the last instance leaves the interpreter running: docs/fmu_runtime.md */
 }
 
@@ -604,8 +691,8 @@ static PyObject *references(Instance *c, int kind, const fmi2ValueReference vr[]
     return refs;
 }
 
-/* The checks every getter and setter makes before touching the slave: the arrays are there (or nvr = 0)
- * and the instance has a slave. */
+/* The checks every getter and setter makes before touching the slave: the arrays are there (they may be NULL
+ * only with nvr = 0: FMI 2.0) and the instance has a slave. A refusal is logged with the argument's name. */
 static int arrays_ok(Instance *c, const char *call, const void *vr, const void *value, size_t nvr)
 {
     return (nvr == 0 || (given(c, vr, call, "vr") && given(c, value, call, "value"))) && has_slave(c, call);
@@ -628,131 +715,181 @@ static PyObject *get_values(Instance *c, int kind, const fmi2ValueReference vr[]
     return values;
 }
 
-/* slave.<method of kind>(vrs, values) with values built by make(i). */
-#define SET_VALUES(call, kind, make)                                                               \
-    BEGIN(call, MASK_Set);                                                                         \
-    if (!arrays_ok(c, call, vr, value, nvr))                                                       \
-        RETURN(fmi2Error);                                                                         \
-    PyObject *vrs = references(c, kind, vr, nvr), *values = PyList_New((Py_ssize_t)nvr);           \
-    for (size_t i = 0; values != NULL && i < nvr; i++)                                             \
-        PyList_SetItem(values, (Py_ssize_t)i, make);                                              \
-    PyObject *r = vrs && values ? PyObject_CallMethodObjArgs(c->slave, kind_names[kind], vrs, values, NULL) : NULL; \
-    Py_XDECREF(vrs);                                                                               \
-    Py_XDECREF(values);                                                                            \
-    RETURN(settle(c, KIND_METHODS[kind], r, fmi2Error))
-
-fmi2Status fmi2SetReal(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[])
+/* The value of variable vr[i] could not be converted: logged with its value reference. */
+static void log_value_error(Instance *c, int kind, fmi2ValueReference vr)
 {
-    SET_VALUES("fmi2SetReal", SET_REAL, PyFloat_FromDouble(value[i]));
+    char what[64];
+    snprintf(what, sizeof what, "%s, value reference %u", KIND_METHODS[kind], (unsigned)vr);
+    log_exception(c, what);
 }
 
-fmi2Status fmi2SetInteger(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,
-                          const fmi2Integer value[])
+/* One FMI variable type: its getter's and setter's names and slave methods (kinds), the size of its C value
+ * and the conversions between a C value and a Python object. */
+typedef struct {
+    const char *get_call, *set_call;
+    int get_kind, set_kind;
+    size_t size;
+    int keeps; /* the C values point into Python objects kept until the next get (String) */
+    /* the Python object `item` as the C value at `out`: 0, or -1 with a Python exception set; `keep` (with
+     * `keeps`): a list of nvr slots, slot i for what the value points into */
+    int (*to_c)(PyObject *item, void *out, PyObject *keep, Py_ssize_t i);
+    /* the C value at `in` as a new Python object, or NULL with a Python exception set */
+    PyObject *(*to_python)(const void *in);
+} VariableType;
+
+static int real_to_c(PyObject *item, void *out, PyObject *keep, Py_ssize_t i)
 {
-    SET_VALUES("fmi2SetInteger", SET_INTEGER, PyLong_FromLong(value[i]));
+    (void)keep, (void)i;
+    double x = PyFloat_AsDouble(item);
+    if (x == -1.0 && PyErr_Occurred())
+        return -1;
+    *(fmi2Real *)out = x;
+    return 0;
 }
 
-fmi2Status fmi2SetBoolean(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,
-                          const fmi2Boolean value[])
+static int integer_to_c(PyObject *item, void *out, PyObject *keep, Py_ssize_t i)
 {
-    SET_VALUES("fmi2SetBoolean", SET_BOOLEAN, PyBool_FromLong(value[i]));
-}
-
-fmi2Status fmi2SetString(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,
-                         const fmi2String value[])
-{
-    SET_VALUES("fmi2SetString", SET_STRING,
-               PyUnicode_DecodeUTF8(value[i] ? value[i] : "", (Py_ssize_t)strlen(value[i] ? value[i] : ""), "replace"));
-}
-
-fmi2Status fmi2GetReal(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[])
-{
-    BEGIN("fmi2GetReal", MASK_Get);
-    if (!arrays_ok(c, "fmi2GetReal", vr, value, nvr))
-        RETURN(fmi2Error);
-    PyObject *values = get_values(c, GET_REAL, vr, nvr);
-    if (values == NULL)
-        RETURN(fmi2Error);
-    for (size_t i = 0; i < nvr; i++)
-        value[i] = PyFloat_AsDouble(PyList_GetItem(values, (Py_ssize_t)i));
-    Py_DECREF(values);
-    if (PyErr_Occurred()) {
-        log_exception(c, "get_real");
-        RETURN(fmi2Error);
+    (void)keep, (void)i;
+    long x = PyLong_AsLong(item);
+    if (x == -1 && PyErr_Occurred())
+        return -1;
+    if (x < INT_MIN || x > INT_MAX) {
+        PyErr_Format(PyExc_OverflowError, "%ld does not fit an fmi2Integer (%d to %d)", x, INT_MIN, INT_MAX);
+        return -1;
     }
-    flush_log(c);
-    RETURN(fmi2OK);
+    *(fmi2Integer *)out = (fmi2Integer)x;
+    return 0;
 }
 
-fmi2Status fmi2GetInteger(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[])
+static int boolean_to_c(PyObject *item, void *out, PyObject *keep, Py_ssize_t i)
 {
-    BEGIN("fmi2GetInteger", MASK_Get);
-    if (!arrays_ok(c, "fmi2GetInteger", vr, value, nvr))
-        RETURN(fmi2Error);
-    PyObject *values = get_values(c, GET_INTEGER, vr, nvr);
+    (void)keep, (void)i;
+    int truth = PyObject_IsTrue(item);
+    if (truth < 0)
+        return -1;
+    *(fmi2Boolean *)out = truth ? fmi2True : fmi2False;
+    return 0;
+}
+
+static int string_to_c(PyObject *item, void *out, PyObject *keep, Py_ssize_t i)
+{
+    PyObject *bytes = PyUnicode_AsUTF8String(item);
+    if (bytes == NULL)
+        return -1;
+    PyList_SetItem(keep, i, bytes); /* the pointer stays valid until the next fmi2GetString */
+    *(fmi2String *)out = PyBytes_AsString(bytes);
+    return 0;
+}
+
+static PyObject *real_to_python(const void *in) { return PyFloat_FromDouble(*(const fmi2Real *)in); }
+static PyObject *integer_to_python(const void *in) { return PyLong_FromLong(*(const fmi2Integer *)in); }
+static PyObject *boolean_to_python(const void *in) { return PyBool_FromLong(*(const fmi2Boolean *)in); }
+
+static PyObject *string_to_python(const void *in)
+{
+    const char *text = *(const fmi2String *)in ? *(const fmi2String *)in : ""; /* NULL: the empty string */
+    return PyUnicode_DecodeUTF8(text, (Py_ssize_t)strlen(text), "replace");
+}
+
+static const VariableType REAL = {"fmi2GetReal", "fmi2SetReal", GET_REAL, SET_REAL, sizeof(fmi2Real), 0,
+                                  real_to_c, real_to_python};
+static const VariableType INTEGER = {"fmi2GetInteger", "fmi2SetInteger", GET_INTEGER, SET_INTEGER,
+                                     sizeof(fmi2Integer), 0, integer_to_c, integer_to_python};
+static const VariableType BOOLEAN = {"fmi2GetBoolean", "fmi2SetBoolean", GET_BOOLEAN, SET_BOOLEAN,
+                                     sizeof(fmi2Boolean), 0, boolean_to_c, boolean_to_python};
+static const VariableType STRING = {"fmi2GetString", "fmi2SetString", GET_STRING, SET_STRING, sizeof(fmi2String), 1,
+                                    string_to_c, string_to_python};
+
+/* A getter: slave.get_<type>(vrs), each value converted into value[i]. Stops at the first value that cannot
+ * be converted (fmi2Error, logged with its value reference: no C API call with an exception set); the values
+ * after it are not written. Holds the GIL. */
+static fmi2Status get_variables(Instance *c, const VariableType *type, const fmi2ValueReference vr[], size_t nvr,
+                                void *value)
+{
+    if (!arrays_ok(c, type->get_call, vr, value, nvr))
+        return fmi2Error;
+    if (nvr == 0)
+        return fmi2OK;
+    PyObject *values = get_values(c, type->get_kind, vr, nvr);
     if (values == NULL)
-        RETURN(fmi2Error);
-    for (size_t i = 0; i < nvr; i++)
-        value[i] = (fmi2Integer)PyLong_AsLong(PyList_GetItem(values, (Py_ssize_t)i));
-    Py_DECREF(values);
-    if (PyErr_Occurred()) {
-        log_exception(c, "get_integer");
-        RETURN(fmi2Error);
+        return fmi2Error;
+    PyObject *keep = type->keeps ? PyList_New((Py_ssize_t)nvr) : NULL;
+    if (type->keeps && keep == NULL) {
+        Py_DECREF(values);
+        log_exception(c, KIND_METHODS[type->get_kind]);
+        return fmi2Error;
     }
-    flush_log(c);
-    RETURN(fmi2OK);
-}
-
-fmi2Status fmi2GetBoolean(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[])
-{
-    BEGIN("fmi2GetBoolean", MASK_Get);
-    if (!arrays_ok(c, "fmi2GetBoolean", vr, value, nvr))
-        RETURN(fmi2Error);
-    PyObject *values = get_values(c, GET_BOOLEAN, vr, nvr);
-    if (values == NULL)
-        RETURN(fmi2Error);
-    int failed = 0;
+    fmi2Status status = fmi2OK;
     for (size_t i = 0; i < nvr; i++) {
-        int truth = PyObject_IsTrue(PyList_GetItem(values, (Py_ssize_t)i));
-        failed |= truth < 0;
-        value[i] = truth > 0 ? fmi2True : fmi2False;
-    }
-    Py_DECREF(values);
-    if (failed) {
-        log_exception(c, "get_boolean");
-        RETURN(fmi2Error);
-    }
-    flush_log(c);
-    RETURN(fmi2OK);
-}
-
-fmi2Status fmi2GetString(fmi2Component component, const fmi2ValueReference vr[], size_t nvr, fmi2String value[])
-{
-    BEGIN("fmi2GetString", MASK_Get);
-    if (!arrays_ok(c, "fmi2GetString", vr, value, nvr))
-        RETURN(fmi2Error);
-    PyObject *values = get_values(c, GET_STRING, vr, nvr);
-    if (values == NULL)
-        RETURN(fmi2Error);
-    PyObject *strings = PyList_New((Py_ssize_t)nvr); /* the pointers stay valid until the next call */
-    for (size_t i = 0; strings != NULL && i < nvr; i++) {
-        PyObject *bytes = PyUnicode_AsUTF8String(PyList_GetItem(values, (Py_ssize_t)i));
-        if (bytes == NULL) {
-            Py_CLEAR(strings);
+        PyObject *item = PyList_GetItem(values, (Py_ssize_t)i);
+        if (type->to_c(item, (char *)value + i * type->size, keep, (Py_ssize_t)i) < 0) {
+            log_value_error(c, type->get_kind, vr[i]);
+            status = fmi2Error;
             break;
         }
-        PyList_SetItem(strings, (Py_ssize_t)i, bytes);
-        value[i] = PyBytes_AsString(bytes);
     }
     Py_DECREF(values);
-    if (strings == NULL) {
-        log_exception(c, "get_string");
-        RETURN(fmi2Error);
-    }
-    SET_REF(c->strings, strings);
-    flush_log(c);
-    RETURN(fmi2OK);
+    if (keep != NULL)
+        SET_REF(c->strings, keep); /* also after an error: the strings given before it stay valid */
+    if (status == fmi2OK)
+        flush_log(c);
+    return status;
 }
+
+/* A setter: slave.set_<type>(vrs, values) with value[i] converted. A value that cannot be converted stops the
+ * call (fmi2Error, logged with its value reference). Holds the GIL. */
+static fmi2Status set_variables(Instance *c, const VariableType *type, const fmi2ValueReference vr[], size_t nvr,
+                                const void *value)
+{
+    if (!arrays_ok(c, type->set_call, vr, value, nvr))
+        return fmi2Error;
+    if (nvr == 0)
+        return fmi2OK;
+    PyObject *values = PyList_New((Py_ssize_t)nvr);
+    if (values == NULL) {
+        log_exception(c, KIND_METHODS[type->set_kind]);
+        return fmi2Error;
+    }
+    for (size_t i = 0; i < nvr; i++) {
+        PyObject *item = type->to_python((const char *)value + i * type->size);
+        if (item == NULL) {
+            Py_DECREF(values);
+            log_value_error(c, type->set_kind, vr[i]);
+            return fmi2Error;
+        }
+        PyList_SetItem(values, (Py_ssize_t)i, item);
+    }
+    PyObject *vrs = references(c, type->set_kind, vr, nvr);
+    PyObject *r = vrs ? PyObject_CallMethodObjArgs(c->slave, kind_names[type->set_kind], vrs, values, NULL) : NULL;
+    Py_XDECREF(vrs);
+    Py_DECREF(values);
+    return settle(c, KIND_METHODS[type->set_kind], r, fmi2Error);
+}
+
+/* The eight FMI getters and setters, one line each. */
+#define GETTER(Type, TYPE)                                                                         \
+    fmi2Status fmi2Get##Type(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,   \
+                             fmi2##Type value[])                                                   \
+    {                                                                                              \
+        BEGIN("fmi2Get" #Type, MASK_Get);                                                          \
+        RETURN(get_variables(c, &TYPE, vr, nvr, value));                                           \
+    }
+#define SETTER(Type, TYPE)                                                                         \
+    fmi2Status fmi2Set##Type(fmi2Component component, const fmi2ValueReference vr[], size_t nvr,   \
+                             const fmi2##Type value[])                                             \
+    {                                                                                              \
+        BEGIN("fmi2Set" #Type, MASK_Set);                                                          \
+        RETURN(set_variables(c, &TYPE, vr, nvr, value));                                           \
+    }
+
+GETTER(Real, REAL)
+GETTER(Integer, INTEGER)
+GETTER(Boolean, BOOLEAN)
+GETTER(String, STRING)
+SETTER(Real, REAL)
+SETTER(Integer, INTEGER)
+SETTER(Boolean, BOOLEAN)
+SETTER(String, STRING)
 
 /* -- state ---------------------------------------------------------------------------------- */
 

@@ -1,5 +1,5 @@
 /* What the FMU's entry library (fmi2_loader.c) and its Python layer (fmi2_python.c) both need: the FMI
- * logger call, the resources/ hint files and the resource URI. Each includes it once; every function is
+ * logger's format, the resources/ hint files and the resource URI. Each includes it once; every function is
  * static, so each library keeps its own copy and exports nothing of it.
  *
  * SPDX-License-Identifier: MIT.
@@ -17,19 +17,16 @@
 #define PYTHON_HINT "python.txt"        /* resources/ file: the interpreter that built the FMU */
 #define GUID_FILE "guid.txt"            /* resources/ file: the GUID of the FMU's modelDescription.xml */
 
-/* The FMI logger takes a printf format: pass the text with every '%' doubled so that a host that
- * formats prints it unchanged and a message can never be read as a conversion. */
-static void log_text(fmi2CallbackLogger logger, fmi2ComponentEnvironment env, const char *name, fmi2Status status,
-                     const char *category, const char *text)
+/* The FMI logger takes a printf format: the text with every '%' doubled (malloc'ed; NULL without memory), so
+ * that a host that formats prints it unchanged and a message can never be read as a conversion. */
+static char *printf_safe(const char *text)
 {
-    if (logger == NULL)
-        return;
     size_t n = strlen(text), extra = 0;
     for (size_t i = 0; i < n; i++)
         extra += text[i] == '%';
     char *format = malloc(n + extra + 1);
     if (format == NULL)
-        return;
+        return NULL;
     char *out = format;
     for (size_t i = 0; i < n; i++) {
         *out++ = text[i];
@@ -37,16 +34,19 @@ static void log_text(fmi2CallbackLogger logger, fmi2ComponentEnvironment env, co
             *out++ = '%';
     }
     *out = '\0';
-    logger(env, name, status, category, format);
-    free(format);
+    return format;
 }
 
 /* Read the first line of resources/<name> into buf; 0 if absent. */
 static int read_hint(const char *resources, const char *name, char *buf, size_t size)
 {
-    char path[4096];
-    snprintf(path, sizeof path, "%s/%s", resources, name);
+    size_t n = strlen(resources) + strlen(name) + 2;
+    char *path = malloc(n); /* on the heap, as every buffer sized for a path: a host thread's stack may be small */
+    if (path == NULL)
+        return 0;
+    snprintf(path, n, "%s/%s", resources, name);
     FILE *fh = fopen(path, "r");
+    free(path);
     if (fh == NULL)
         return 0;
     int ok = fgets(buf, (int)size, fh) != NULL;

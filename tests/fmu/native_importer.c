@@ -12,21 +12,48 @@
  *     CALL: instantiate, guid:TEXT (the GUID of the next instantiate), setup, enter, exit, step (doStep
  *     of 0.1 s from the last accepted step's end), terminate, reset, getReal:VR, setReal:VR=REAL,
  *     getState, setState, cancel, free, null (every function with a NULL instance, one line each),
- *     nullargs (NULL array or state arguments, one line each).
+ *     nullargs (NULL array or state arguments, one line each; nullargs:LABEL only the one of that label, e.g.
+ *     nullargs:fmi2SetReal(value)), empty (every getter and setter with
+ *     nvr = 0 and NULL arrays, one line each), reals:VR,VR,... (likewise integers,
+ *     booleans, strings: one get of those variables into an array filled with -7 (strings: "unset")
+ *     before, printed as "CALL STATUS|value|value|..."), signals (how SIGINT and SIGPIPE are handled:
+ *     "signals SIGINT=default,SIGPIPE=default"; "host" for the handler hostsigint installs for SIGINT).
  *     exit: 0 (2 usage or loading problem)
  * native_importer --threads LIB1 URI1 GUID1 LIB2 URI2 GUID2
  *     two threads, released together, each instantiate, initialise, step twice, terminate and free
  *     one of the two FMUs: what a host that sets up two FMUs at once does.
  *     exit: 0 all calls OK, 2 usage or loading problem, 3 an FMI call failed
+ * native_importer --stack KB LIBRARY RESOURCE_URI GUID CALL ...
+ *     the --calls mode on a thread whose stack is KB kB (below it a page that faults), filled with a pattern
+ *     beforehand; then prints "stack-used BYTES", the depth of stack the calls used (where the pattern was
+ *     overwritten). A stack too small for the calls crashes the process (SIGSEGV).
+ *     exit: 0 (2 usage or loading problem)
+ * native_importer --logger-lock LIBRARY RESOURCE_URI GUID VR
+ *     a host whose logger takes a lock of its own: thread 1 holds that lock while it reads Real VR of one
+ *     instance; thread 2 meanwhile makes a call the FMU refuses on a second instance, whose message goes
+ *     to the logger, which waits for the lock. Prints "logger-lock S1 S2" (the two calls' statuses).
+ *     exit: 0, 2 usage or loading problem, 3 an FMI call failed, 5 the threads did not finish within 60 s
+ * native_importer --logger-lock-instantiate LIBRARY RESOURCE_URI GUID LOGGING
+ *     the same logger; thread 1 holds its lock, thread 2 makes the process's first fmi2Instantiate (loggingOn
+ *     = LOGGING), whose messages wait for the lock, and thread 1 then calls fmi2Instantiate too. Prints
+ *     "logger-lock-instantiate waited|no-wait ok|null ok|null" (whether thread 2's logger was waiting when
+ *     thread 1 called; what thread 2's and thread 1's fmi2Instantiate returned).
+ *     exit: 0, 2 usage or loading problem, 5 the threads did not finish within 180 s
  *
  * The FMU's messages go to stderr, formatted as printf formats (FMI 2.0 logger).
  */
+#define _GNU_SOURCE /* pthread_timedjoin_np */
 #include <dlfcn.h>
+#include <errno.h>
 #include <pthread.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
+#include <time.h>
+#include <unistd.h>
 
 #include "fmi2Functions.h"
 
@@ -215,18 +242,101 @@ static void null_instance(const Api *api)
     SHOW("null:fmi2GetStringStatus", api->fmi2GetStringStatus(NULL, fmi2PendingStatus, &s));
 }
 
-/* NULL where the instance's functions expect an array or a state (nvr > 0). */
-static void null_arguments(const Api *api, fmi2Component c)
+/* NULL where the instance's functions expect an array or a state (nvr > 0); `only`: that one call (its label
+ * without "nullargs:"), or every one if empty. */
+#define SHOW_IF(label, call)                                                                       \
+    if (only[0] == '\0' || strcmp(only, label) == 0)                                               \
+    SHOW("nullargs:" label, call)
+
+static void null_arguments(const Api *api, fmi2Component c, const char *only)
 {
     fmi2ValueReference vr = 0;
     fmi2Real r = 0.0;
-    SHOW("nullargs:fmi2GetReal(vr)", api->fmi2GetReal(c, NULL, 1, &r));
-    SHOW("nullargs:fmi2GetReal(value)", api->fmi2GetReal(c, &vr, 1, NULL));
-    SHOW("nullargs:fmi2SetReal(value)", api->fmi2SetReal(c, &vr, 1, NULL));
-    SHOW("nullargs:fmi2GetFMUstate", api->fmi2GetFMUstate(c, NULL));
-    SHOW("nullargs:fmi2SetFMUstate", api->fmi2SetFMUstate(c, NULL));
-    SHOW("nullargs:fmi2SerializedFMUstateSize", api->fmi2SerializedFMUstateSize(c, NULL, NULL));
-    SHOW("nullargs:fmi2GetRealStatus", api->fmi2GetRealStatus(c, fmi2LastSuccessfulTime, NULL));
+    fmi2Integer i = 0;
+    fmi2Boolean b = fmi2False;
+    fmi2String s = "";
+    SHOW_IF("fmi2GetReal(vr)", api->fmi2GetReal(c, NULL, 1, &r));
+    SHOW_IF("fmi2GetReal(value)", api->fmi2GetReal(c, &vr, 1, NULL));
+    SHOW_IF("fmi2GetInteger(vr)", api->fmi2GetInteger(c, NULL, 1, &i));
+    SHOW_IF("fmi2GetInteger(value)", api->fmi2GetInteger(c, &vr, 1, NULL));
+    SHOW_IF("fmi2GetBoolean(vr)", api->fmi2GetBoolean(c, NULL, 1, &b));
+    SHOW_IF("fmi2GetBoolean(value)", api->fmi2GetBoolean(c, &vr, 1, NULL));
+    SHOW_IF("fmi2GetString(vr)", api->fmi2GetString(c, NULL, 1, &s));
+    SHOW_IF("fmi2GetString(value)", api->fmi2GetString(c, &vr, 1, NULL));
+    SHOW_IF("fmi2SetReal(vr)", api->fmi2SetReal(c, NULL, 1, &r));
+    SHOW_IF("fmi2SetReal(value)", api->fmi2SetReal(c, &vr, 1, NULL));
+    SHOW_IF("fmi2SetInteger(vr)", api->fmi2SetInteger(c, NULL, 1, &i));
+    SHOW_IF("fmi2SetInteger(value)", api->fmi2SetInteger(c, &vr, 1, NULL));
+    SHOW_IF("fmi2SetBoolean(vr)", api->fmi2SetBoolean(c, NULL, 1, &b));
+    SHOW_IF("fmi2SetBoolean(value)", api->fmi2SetBoolean(c, &vr, 1, NULL));
+    SHOW_IF("fmi2SetString(vr)", api->fmi2SetString(c, NULL, 1, &s));
+    SHOW_IF("fmi2SetString(value)", api->fmi2SetString(c, &vr, 1, NULL));
+    SHOW_IF("fmi2GetFMUstate", api->fmi2GetFMUstate(c, NULL));
+    SHOW_IF("fmi2SetFMUstate", api->fmi2SetFMUstate(c, NULL));
+    SHOW_IF("fmi2SerializedFMUstateSize", api->fmi2SerializedFMUstateSize(c, NULL, NULL));
+    SHOW_IF("fmi2GetRealStatus", api->fmi2GetRealStatus(c, fmi2LastSuccessfulTime, NULL));
+}
+
+/* nvr = 0 with NULL arrays (allowed: FMI 2.0), every getter and setter. */
+static void empty_arrays(const Api *api, fmi2Component c)
+{
+    SHOW("empty:fmi2GetReal", api->fmi2GetReal(c, NULL, 0, NULL));
+    SHOW("empty:fmi2GetInteger", api->fmi2GetInteger(c, NULL, 0, NULL));
+    SHOW("empty:fmi2GetBoolean", api->fmi2GetBoolean(c, NULL, 0, NULL));
+    SHOW("empty:fmi2GetString", api->fmi2GetString(c, NULL, 0, NULL));
+    SHOW("empty:fmi2SetReal", api->fmi2SetReal(c, NULL, 0, NULL));
+    SHOW("empty:fmi2SetInteger", api->fmi2SetInteger(c, NULL, 0, NULL));
+    SHOW("empty:fmi2SetBoolean", api->fmi2SetBoolean(c, NULL, 0, NULL));
+    SHOW("empty:fmi2SetString", api->fmi2SetString(c, NULL, 0, NULL));
+}
+
+static void host_handler(int number) { (void)number; }
+
+/* How the process handles signal `number`: "default", "ignored", "host" (host_handler) or "handler". */
+static const char *disposition(int number)
+{
+    struct sigaction action;
+    if (sigaction(number, NULL, &action) != 0)
+        return "unknown";
+    if (!(action.sa_flags & SA_SIGINFO) && action.sa_handler == host_handler)
+        return "host";
+    if (!(action.sa_flags & SA_SIGINFO) && action.sa_handler == SIG_DFL)
+        return "default";
+    if (!(action.sa_flags & SA_SIGINFO) && action.sa_handler == SIG_IGN)
+        return "ignored";
+    return "handler";
+}
+
+/* reals:VR,VR,... and the like: one get into an array filled beforehand, printed whole with the status. */
+__attribute__((noinline)) /* its arrays stay off the stack of the other calls */
+static void get_many(const Api *api, fmi2Component c, const char *call, const char *list)
+{
+    fmi2ValueReference vr[MAX_VARS];
+    size_t n = 0;
+    for (const char *p = list; *p && n < MAX_VARS; p = strchr(p, ',') ? strchr(p, ',') + 1 : p + strlen(p))
+        vr[n++] = (fmi2ValueReference)strtoul(p, NULL, 10);
+    fmi2Real r[MAX_VARS];
+    fmi2Integer i[MAX_VARS];
+    fmi2Boolean b[MAX_VARS];
+    fmi2String s[MAX_VARS];
+    for (size_t k = 0; k < MAX_VARS; k++)
+        r[k] = -7.0, i[k] = -7, b[k] = -7, s[k] = "unset";
+    fmi2Status status = call[0] == 'r'   ? api->fmi2GetReal(c, vr, n, r)
+                        : call[0] == 'i' ? api->fmi2GetInteger(c, vr, n, i)
+                        : call[0] == 'b' ? api->fmi2GetBoolean(c, vr, n, b)
+                                         : api->fmi2GetString(c, vr, n, s);
+    printf("%s %d", call, (int)status);
+    for (size_t k = 0; k < n; k++) {
+        if (call[0] == 'r')
+            printf("|%.17g", r[k]);
+        else if (call[0] == 'i')
+            printf("|%d", i[k]);
+        else if (call[0] == 'b')
+            printf("|%d", b[k]);
+        else
+            printf("|%s", s[k]);
+    }
+    printf("\n");
 }
 
 static int calls_mode(const Api *api, int argc, char **argv)
@@ -284,10 +394,21 @@ static int calls_mode(const Api *api, int argc, char **argv)
             api->fmi2FreeInstance(c);
             c = NULL;
             printf("%s done\n", call);
+        } else if (strncmp(call, "reals:", 6) == 0 || strncmp(call, "integers:", 9) == 0 ||
+                   strncmp(call, "booleans:", 9) == 0 || strncmp(call, "strings:", 8) == 0) {
+            get_many(api, c, call, arg);
+        } else if (strcmp(call, "hostsigint") == 0) {
+            struct sigaction action = {.sa_handler = host_handler};
+            sigemptyset(&action.sa_mask);
+            SHOW(call, sigaction(SIGINT, &action, NULL));
+        } else if (strcmp(call, "signals") == 0) {
+            printf("%s SIGINT=%s,SIGPIPE=%s\n", call, disposition(SIGINT), disposition(SIGPIPE));
         } else if (strcmp(call, "null") == 0) {
             null_instance(api);
-        } else if (strcmp(call, "nullargs") == 0) {
-            null_arguments(api, c);
+        } else if (strncmp(call, "nullargs", 8) == 0) {
+            null_arguments(api, c, arg);
+        } else if (strcmp(call, "empty") == 0) {
+            empty_arrays(api, c);
         } else {
             fprintf(stderr, "unknown call %s\n", call);
             return 2;
@@ -355,10 +476,240 @@ static int threads_mode(int argc, char **argv)
     return jobs[0].result ? jobs[0].result : jobs[1].result;
 }
 
+/* -- --logger-lock: a logger that takes a lock another thread holds while it calls into the FMU ------ */
+
+/* e.g. the host's log file; recursive: a thread that holds it may log */
+static pthread_mutex_t host_lock = PTHREAD_RECURSIVE_MUTEX_INITIALIZER_NP;
+static volatile int logger_waiting;                           /* the locking logger is waiting for host_lock */
+
+static void locking_logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status, fmi2String category,
+                           fmi2String message, ...)
+{
+    (void)env;
+    __atomic_store_n(&logger_waiting, 1, __ATOMIC_SEQ_CST);
+    pthread_mutex_lock(&host_lock);
+    va_list args;
+    va_start(args, message);
+    flockfile(stderr);
+    fprintf(stderr, "[%d] %s (%s): ", (int)status, name, category);
+    vfprintf(stderr, message, args);
+    fputc('\n', stderr);
+    funlockfile(stderr);
+    va_end(args);
+    pthread_mutex_unlock(&host_lock);
+}
+
+typedef struct {
+    const Api *api;
+    fmi2Component reader, refused; /* thread 1 reads from the first, thread 2 makes a refused call on the second */
+    fmi2ValueReference vr;         /* the Real thread 1 reads */
+    volatile int holding;          /* thread 1 holds host_lock */
+    fmi2Status status;
+} LockJob;
+
+static void *reader_main(void *arg)
+{
+    LockJob *job = arg;
+    pthread_mutex_lock(&host_lock);
+    __atomic_store_n(&job->holding, 1, __ATOMIC_SEQ_CST);
+    for (int k = 0; k < 10000 && !__atomic_load_n(&logger_waiting, __ATOMIC_SEQ_CST); k++)
+        usleep(1000); /* until thread 2 is in the logger, waiting for host_lock (10 s at most) */
+    fmi2Real value = 0.0;
+    job->status = job->api->fmi2GetReal(job->reader, &job->vr, 1, &value); /* needs the GIL */
+    pthread_mutex_unlock(&host_lock);
+    return NULL;
+}
+
+static void *refused_main(void *arg)
+{
+    LockJob *job = arg;
+    while (!__atomic_load_n(&job->holding, __ATOMIC_SEQ_CST))
+        usleep(1000);
+    job->status = job->api->fmi2DoStep(job->refused, 0.0, 0.1, fmi2True); /* before initialisation: refused */
+    return NULL;
+}
+
+static int logger_lock_mode(const Api *api, int argc, char **argv)
+{
+    if (argc != 6) {
+        fprintf(stderr, "usage: %s --logger-lock LIBRARY RESOURCE_URI GUID VR\n", argv[0]);
+        return 2;
+    }
+    static fmi2CallbackFunctions locking = {locking_logger, calloc, free, NULL, NULL};
+    fmi2Component reader = api->fmi2Instantiate("reader", fmi2CoSimulation, argv[4], argv[3], &locking, fmi2False,
+                                                fmi2False);
+    fmi2Component refused = api->fmi2Instantiate("refused", fmi2CoSimulation, argv[4], argv[3], &locking, fmi2False,
+                                                 fmi2False);
+    if (reader == NULL || refused == NULL) {
+        fprintf(stderr, "fmi2Instantiate failed\n");
+        return 3;
+    }
+    CHECK(api->fmi2SetupExperiment(reader, fmi2False, 0.0, 0.0, fmi2False, 0.0));
+    CHECK(api->fmi2EnterInitializationMode(reader));
+    CHECK(api->fmi2ExitInitializationMode(reader));
+    LockJob first = {.api = api, .reader = reader, .vr = (fmi2ValueReference)strtoul(argv[5], NULL, 10),
+                     .status = fmi2Fatal};
+    LockJob second = {.api = api, .refused = refused, .status = fmi2Fatal};
+    pthread_t threads[2];
+    __atomic_store_n(&logger_waiting, 0, __ATOMIC_SEQ_CST); /* a message of the set-up does not count */
+    pthread_create(&threads[0], NULL, reader_main, &first);
+    pthread_create(&threads[1], NULL, refused_main, &second);
+    /* thread 2 starts its call once thread 1 holds the lock */
+    while (!__atomic_load_n(&first.holding, __ATOMIC_SEQ_CST))
+        usleep(1000);
+    __atomic_store_n(&second.holding, 1, __ATOMIC_SEQ_CST);
+    struct timespec deadline;
+    clock_gettime(CLOCK_REALTIME, &deadline);
+    deadline.tv_sec += 60;
+    for (int k = 0; k < 2; k++)
+        if (pthread_timedjoin_np(threads[k], NULL, &deadline) == ETIMEDOUT) {
+            printf("logger-lock deadlock\n");
+            fflush(stdout);
+            _exit(5); /* the threads are stuck: no orderly exit */
+        }
+    printf("logger-lock %d %d\n", (int)first.status, (int)second.status);
+    api->fmi2FreeInstance(reader);
+    api->fmi2FreeInstance(refused);
+    return 0;
+}
+
+/* --logger-lock-instantiate: thread 2 makes the process's first fmi2Instantiate, whose messages go to the
+ * locking logger, while thread 1 holds the lock and then calls fmi2Instantiate itself. */
+typedef struct {
+    const Api *api;
+    const char *uri, *guid;
+    int logging;
+    volatile int holding; /* thread 1 holds host_lock */
+    int waited;           /* thread 1 saw thread 2's logger waiting before it called */
+    fmi2Component got;
+} SetupJob;
+
+static fmi2Component instantiate_locked(const SetupJob *job, const char *name)
+{
+    static fmi2CallbackFunctions locking = {locking_logger, calloc, free, NULL, NULL};
+    return job->api->fmi2Instantiate(name, fmi2CoSimulation, job->guid, job->uri, &locking, fmi2False,
+                                     job->logging ? fmi2True : fmi2False);
+}
+
+static void *holder_main(void *arg)
+{
+    SetupJob *job = arg;
+    pthread_mutex_lock(&host_lock);
+    __atomic_store_n(&job->holding, 1, __ATOMIC_SEQ_CST);
+    for (int k = 0; k < 120000 && !__atomic_load_n(&logger_waiting, __ATOMIC_SEQ_CST); k++)
+        usleep(1000); /* until thread 2 is in the logger (120 s at most: it starts Python) */
+    job->waited = __atomic_load_n(&logger_waiting, __ATOMIC_SEQ_CST);
+    job->got = instantiate_locked(job, "holder");
+    pthread_mutex_unlock(&host_lock);
+    return NULL;
+}
+
+static void *first_main(void *arg)
+{
+    SetupJob *job = arg;
+    job->got = instantiate_locked(job, "first");
+    return NULL;
+}
+
+static int logger_lock_instantiate_mode(const Api *api, int argc, char **argv)
+{
+    if (argc != 6) {
+        fprintf(stderr, "usage: %s --logger-lock-instantiate LIBRARY RESOURCE_URI GUID LOGGING\n", argv[0]);
+        return 2;
+    }
+    SetupJob holder = {.api = api, .uri = argv[3], .guid = argv[4], .logging = atoi(argv[5])};
+    SetupJob first = holder;
+    pthread_t threads[2];
+    pthread_create(&threads[0], NULL, holder_main, &holder);
+    while (!__atomic_load_n(&holder.holding, __ATOMIC_SEQ_CST))
+        usleep(1000);
+    pthread_create(&threads[1], NULL, first_main, &first);
+    struct timespec deadline;
+    clock_gettime(CLOCK_REALTIME, &deadline);
+    deadline.tv_sec += 180;
+    for (int k = 0; k < 2; k++)
+        if (pthread_timedjoin_np(threads[k], NULL, &deadline) == ETIMEDOUT) {
+            printf("logger-lock-instantiate deadlock\n");
+            fflush(stdout);
+            _exit(5); /* the threads are stuck: no orderly exit */
+        }
+    printf("logger-lock-instantiate %s %s %s\n", holder.waited ? "waited" : "no-wait", first.got ? "ok" : "null",
+           holder.got ? "ok" : "null");
+    if (first.got)
+        api->fmi2FreeInstance(first.got);
+    if (holder.got)
+        api->fmi2FreeInstance(holder.got);
+    return 0;
+}
+
+/* -- --stack: the calls on a thread with a small stack, and how much of it they used ------------------ */
+
+typedef struct {
+    const Api *api;
+    int argc;
+    char **argv;
+    int result;
+} CallsJob;
+
+static void *calls_main(void *arg)
+{
+    CallsJob *job = arg;
+    job->result = calls_mode(job->api, job->argc, job->argv);
+    fflush(stdout);
+    return NULL;
+}
+
+static int stack_mode(int argc, char **argv)
+{
+    if (argc < 6) {
+        fprintf(stderr, "usage: %s --stack KB LIBRARY RESOURCE_URI GUID CALL ...\n", argv[0]);
+        return 2;
+    }
+    Api api;
+    if (!load(argv[3], &api))
+        return 2;
+    size_t size = (size_t)atoi(argv[2]) * 1024, page = (size_t)sysconf(_SC_PAGESIZE);
+    unsigned char *region = mmap(NULL, page + size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_STACK,
+                                 -1, 0);
+    if (region == MAP_FAILED || mprotect(region, page, PROT_NONE) != 0) { /* the stack grows down to the guard */
+        perror("mmap");
+        return 2;
+    }
+    unsigned char *stack = region + page;
+    memset(stack, 0xA5, size);
+    setvbuf(stderr, NULL, _IOFBF, 1 << 16); /* an unbuffered stream formats in an 8 kB buffer on the stack */
+    pthread_attr_t attr;
+    pthread_attr_init(&attr);
+    pthread_attr_setstack(&attr, stack, size);
+    /* argv + 1: --stack KB LIBRARY URI GUID CALL ..., the layout calls_mode reads (URI argv[3], GUID argv[4]) */
+    CallsJob job = {.api = &api, .argc = argc - 1, .argv = argv + 1, .result = 2};
+    pthread_t thread;
+    if (pthread_create(&thread, &attr, calls_main, &job) != 0) {
+        fprintf(stderr, "pthread_create failed\n");
+        return 2;
+    }
+    pthread_join(thread, NULL);
+    size_t untouched = 0;
+    while (untouched < size && stack[untouched] == 0xA5)
+        untouched++;
+    printf("stack-used %zu\n", size - untouched);
+    return job.result;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc > 1 && strcmp(argv[1], "--stack") == 0)
+        return stack_mode(argc, argv);
     if (argc > 1 && strcmp(argv[1], "--threads") == 0)
         return threads_mode(argc, argv);
+    if (argc > 2 && strcmp(argv[1], "--logger-lock") == 0) {
+        Api api;
+        return load(argv[2], &api) ? logger_lock_mode(&api, argc, argv) : 2;
+    }
+    if (argc > 2 && strcmp(argv[1], "--logger-lock-instantiate") == 0) {
+        Api api;
+        return load(argv[2], &api) ? logger_lock_instantiate_mode(&api, argc, argv) : 2;
+    }
     int calls = argc > 1 && strcmp(argv[1], "--calls") == 0;
     if (argc < 2 + calls) {
         fprintf(stderr, "usage: see the head of native_importer.c\n");

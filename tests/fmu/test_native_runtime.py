@@ -19,7 +19,15 @@
 - no entry point crashes the host: a NULL instance, a NULL argument, a call out of the FMI 2.0 call
   sequence, a wrong GUID and calls after a failed fmi2Reset get fmi2Error (with a message naming the
   call and the state where an instance has a logger), and a slave constructor's exception reaches the
-  host's logger with its text.
+  host's logger with its text;
+- a getter stops at the first value it cannot convert and names its value reference; nvr = 0 with NULL
+  arrays is fmi2OK;
+- the host's logger runs without the GIL (a logger waiting for a lock another host thread holds while it
+  calls into an FMU does not deadlock);
+- the layer's Python code is the resources/fmi2_layer.py the FMU carries;
+- the interpreter search fits a host thread with a 64 kB stack, a whole run one with 128 kB;
+- the interpreter a native host starts reads PYTHONPATH, is not isolated and leaves the signals as the host
+  set them.
 """
 
 import json
@@ -294,6 +302,7 @@ def test_fmus_set_up_by_several_threads_take_turns(analytic_fmu):
 
 # -- the layer cannot crash its host ------------------------------------------------------------------
 
+TYPES = ("Real", "Integer", "Boolean", "String")
 FUNCTIONS = """SetDebugLogging SetupExperiment EnterInitializationMode ExitInitializationMode Terminate Reset GetReal
     GetInteger GetBoolean GetString SetReal SetInteger SetBoolean SetString GetFMUstate SetFMUstate FreeFMUstate
     SerializedFMUstateSize SerializeFMUstate DeSerializeFMUstate GetDirectionalDerivative SetRealInputDerivatives
@@ -327,10 +336,30 @@ def test_calls_out_of_the_fmi_call_sequence_are_refused(unpacked, importer):
 
 @pytest.mark.parametrize("unpacked", ["analytic_fmu"], indirect=True)
 def test_null_arguments_are_refused(unpacked, importer):
+    """A NULL value-reference or value array with nvr > 0 gets fmi2Error and a message from every getter and
+    setter, and a NULL state or size pointer likewise: no crash. Each getter and setter is called in
+    initialization mode after fmi2Reset (a refusal leaves the error state, where setters are not allowed)."""
     rc, statuses, stderr = unpacked.calls(importer, ["instantiate", "setup", "enter", "exit", "nullargs", "free"])
     assert rc == 0, stderr[-2000:]
-    assert all(status == 3 for call, status in statuses if call.startswith("nullargs:")), statuses
-    assert "fmi2GetReal: argument vr is NULL" in stderr
+    assert [status for call, status in statuses if call.startswith("nullargs:")] == [3] * 20, statuses
+    labels = [f"fmi2{d}{kind}({arg})" for d in ("Get", "Set") for kind in TYPES for arg in ("vr", "value")]
+    calls = ["instantiate"] + [c for label in labels for c in ("reset", "setup", "enter", f"nullargs:{label}")]
+    rc, statuses, stderr = unpacked.calls(importer, calls + ["free"])
+    assert rc == 0, stderr[-2000:]
+    assert [(call, status) for call, status in statuses if call.startswith("nullargs:")] == [
+        (f"nullargs:{label}", 3) for label in labels
+    ]
+    for label in labels:
+        call, argument = label.rstrip(")").split("(")
+        assert f"native: {call}: argument {argument} is NULL" in stderr
+
+
+@pytest.mark.parametrize("unpacked", ["analytic_fmu"], indirect=True)
+def test_empty_arrays_may_be_null(unpacked, importer):
+    """nvr = 0 with NULL arrays is a valid call (FMI 2.0): fmi2OK from every getter and setter."""
+    rc, statuses, stderr = unpacked.calls(importer, ["instantiate", "setup", "enter", "exit", "empty", "free"])
+    assert rc == 0, stderr[-2000:]
+    assert [s for c, s in statuses if c.startswith("empty:")] == [0] * 8, statuses
 
 
 @pytest.mark.parametrize("unpacked", ["analytic_fmu"], indirect=True)
@@ -339,6 +368,59 @@ def test_a_wrong_guid_is_refused(unpacked, importer):
     assert rc == 0, stderr[-2000:]
     assert statuses == [("instantiate", "null")]
     assert f"GUID '{{not-this-fmu}}' is not this FMU's ('{unpacked.guid}' in its modelDescription.xml)" in stderr
+
+
+@pytest.mark.parametrize("unpacked", ["analytic_fmu"], indirect=True)
+def test_a_host_logger_waiting_for_a_lock_of_the_host_does_not_block_other_threads(unpacked, importer):
+    """The host's logger runs without the GIL: thread 2's refused call logs, and its logger waits for a lock that
+    thread 1 holds while it reads an output of another instance (which needs the GIL); both calls return."""
+    env = {k: os.environ[k] for k in KEPT if k in os.environ}
+    args = [str(importer), "--logger-lock", str(unpacked.library), unpacked.resources, unpacked.guid]
+    args.append(str(unpacked.vr["Lambda_outer"]))
+    proc = subprocess.run(args, capture_output=True, text=True, env=env, timeout=600)
+    assert proc.returncode == 0, (proc.stdout, proc.stderr[-2000:])
+    assert proc.stdout.split() == ["logger-lock", "0", "3"]  # the read is OK, the refused step fmi2Error
+    assert "refused (logStatusError): refused: fmi2DoStep is not allowed in state instantiated" in proc.stderr
+
+
+@pytest.mark.parametrize("where", ["loader", "set-up"])
+def test_a_host_logger_waiting_for_a_lock_of_the_host_does_not_block_another_instantiation(
+    where, analytic_fmu, failing_fmu, importer
+):
+    """Thread 2 makes the process's first fmi2Instantiate and its messages wait for a lock of the host; thread 1
+    holds that lock and calls fmi2Instantiate too. The messages are passed on once the FMU holds none of its
+    locks: the loader's (with logging on, "started Python ..."; the loader holds its own locks while it starts
+    Python) and the layer's (a constructor's exception; the layer holds the set-up lock while it constructs)."""
+    fmu = Unpacked(analytic_fmu) if where == "loader" else failing_from(failing_fmu, 1)
+    env = {k: os.environ[k] for k in KEPT if k in os.environ}
+    args = [str(importer), "--logger-lock-instantiate", str(fmu.library), fmu.resources, fmu.guid]
+    args.append("1" if where == "loader" else "0")
+    try:
+        proc = subprocess.run(args, capture_output=True, text=True, env=env, timeout=600)
+    finally:
+        fmu.remove()
+    assert proc.returncode == 0, (proc.stdout, proc.stderr[-2000:])
+    got = "ok ok" if where == "loader" else "null null"  # the failing FMU's constructor always refuses here
+    assert proc.stdout.split() == ["logger-lock-instantiate", "waited", *got.split()]
+    assert ("first (logAll): started Python" if where == "loader" else "first (logStatusError): first: creating") in (
+        proc.stderr
+    )
+
+
+@pytest.mark.parametrize("unpacked", ["analytic_fmu"], indirect=True)
+def test_the_layer_runs_the_python_side_the_fmu_carries(unpacked, importer):
+    """The layer's Python code is resources/fmi2_layer.py, not text compiled into the binary: without that file
+    fmi2Instantiate returns NULL and says which file is missing."""
+    layer = unpacked.dir / "resources" / "fmi2_layer.py"
+    assert layer.read_bytes() == (Path(install_runtime.__code__.co_filename).parent / "fmi2_layer.py").read_bytes()
+    binary = (unpacked.library.parent / "fmi2_python.abi3.so").read_bytes()
+    assert b"def slave_class" not in binary and b"import importlib" not in binary
+    layer.unlink()
+    rc, statuses, stderr = unpacked.calls(importer, ["instantiate"])
+    assert rc == 0, stderr[-2000:]
+    assert statuses == [("instantiate", "null")]
+    assert "cannot load the layer's Python side, resources/fmi2_layer.py (an incomplete or altered FMU)" in stderr
+    assert "FileNotFoundError" in stderr
 
 
 @pytest.fixture(scope="module")
@@ -389,6 +471,48 @@ def test_calls_after_a_failed_reset_return_error(failing_fmu, importer):
     assert "fmi2GetReal: the instance has no model since fmi2Reset failed" in stderr
 
 
+@pytest.fixture(scope="module")
+def bad_values_fmu(tmp_path_factory):
+    """An FMU of tests/fmu/bad_values_slave.py with the product's FMI layer."""
+    from pythonfmu.builder import FmuBuilder
+
+    script = Path(__file__).with_name("bad_values_slave.py")
+    path = FmuBuilder.build_FMU(script, dest=tmp_path_factory.mktemp("bad_values"))
+    sys.modules.pop(script.stem, None)
+    return install_runtime(path)
+
+
+def test_a_getter_stops_at_the_first_value_it_cannot_convert(bad_values_fmu, importer):
+    """Each getter's second value cannot be converted (a str for a Real, 2**40 for an Integer, an object whose
+    truth raises for a Boolean, bytes for a String): fmi2Error, the values after it are left as they were, and
+    the message names the variable's value reference and the cause."""
+    fmu = Unpacked(bad_values_fmu)
+    try:
+        calls = ["instantiate", "setup", "enter", "exit"]
+        for kind in ("real", "integer", "boolean", "string"):
+            calls.append(f"{kind}s:" + ",".join(str(fmu.vr[f"{kind}_{k}"]) for k in range(3)))
+        rc, statuses, stderr = fmu.calls(importer, calls + ["free"])
+    finally:
+        fmu.remove()
+    assert rc == 0, stderr[-2000:]
+    got = {call.split(":")[0]: status for call, status in statuses[4:8]}
+    assert got == {
+        "reals": "3|1.5|-7|-7",
+        "integers": "3|7|-7|-7",
+        "booleans": "3|1|-7|-7",
+        "strings": "3|first|unset|unset",
+    }
+    assert f"get_real, value reference {fmu.vr['real_1']}: TypeError: must be real number, not str" in stderr
+    assert f"get_integer, value reference {fmu.vr['integer_1']}: OverflowError: 1099511627776 does not fit an " in (
+        stderr
+    )
+    assert (
+        f"get_boolean, value reference {fmu.vr['boolean_1']}: ValueError: this value is neither true nor false"
+        in stderr
+    )
+    assert f"get_string, value reference {fmu.vr['string_1']}: TypeError: " in stderr
+
+
 TWO_THREAD_RUNS = 3
 
 
@@ -428,6 +552,75 @@ def test_a_native_host_is_told_that_BEARING_FMU_PYTHON_does_not_exist(analytic_f
     assert rc == 0 and got == [("instantiate", "null")], stderr
     assert "BEARING_FMU_PYTHON=/nonexistent/bin/python: no such file" in stderr
     assert "nothing else was tried: BEARING_FMU_PYTHON names the interpreter to use" in stderr
+
+
+def stack_run(fmu, importer, kilobytes, calls, extra):
+    """The importer's --stack mode: (returncode, [(call, status)], stack bytes used or None, stderr)."""
+    args = [str(importer), "--stack", str(kilobytes), str(fmu.library), fmu.resources, fmu.guid, *calls]
+    env = {k: os.environ[k] for k in KEPT if k in os.environ} | extra
+    proc = subprocess.run(args, capture_output=True, text=True, env=env, timeout=600)
+    lines = [line.split(" ", 1) for line in proc.stdout.splitlines()]
+    used = [int(value) for key, value in lines if key == "stack-used"]
+    statuses = [(call, int(s) if s.isdigit() else s) for call, s in lines if call != "stack-used"]
+    return proc.returncode, statuses, used[0] if used else None, proc.stderr
+
+
+# stack the test host's thread uses by itself (its thread descriptor, its calls loop, printing): 7.6 kB here
+HOST_STACK = 8 * 1024
+
+
+def test_the_interpreter_search_fits_a_small_host_thread_stack(analytic_fmu, importer, python_without_numba):
+    """fmi2Instantiate on a host thread with a 64 kB stack, through the whole interpreter search (a candidate that
+    lacks numba, the refusal logged): its buffers are on the heap. The search used 68 kB of stack before (a
+    64 kB thread crashed); now about 2 kB beyond the host's own."""
+    fmu = Unpacked(analytic_fmu)
+    try:
+        extra = {"BEARING_FMU_PYTHON": str(python_without_numba / "python")}
+        rc, statuses, used, stderr = stack_run(fmu, importer, 64, ["instantiate"], extra)
+    finally:
+        fmu.remove()
+    assert rc == 0, stderr[-2000:]
+    assert statuses == [("instantiate", "null")]
+    assert "no modules numpy, numba" in stderr
+    assert used < HOST_STACK + 8 * 1024, used
+
+
+def test_a_host_thread_with_a_small_stack_runs_the_fmu(analytic_fmu, importer):
+    """Starting Python, instantiating, stepping and freeing on a host thread with a 128 kB stack (Python's own
+    start-up and imports take the most: about 55 kB with Python 3.11)."""
+    fmu = Unpacked(analytic_fmu)
+    try:
+        calls = ["instantiate", "setup", "enter", "exit", "step", "free"]
+        extra = {"BEARING_FMU_PYTHON": sys.executable}
+        rc, statuses, used, stderr = stack_run(fmu, importer, 128, calls, extra)
+    finally:
+        fmu.remove()
+    assert rc == 0, stderr[-2000:]
+    assert statuses == [("instantiate", "ok"), ("setup", 0), ("enter", 0), ("exit", 0), ("step", 0), ("free", "done")]
+    assert used < 128 * 1024
+
+
+STARTUP_PROBE = """import sys
+sys.stderr.write("STARTED isolated=%d argv=%r\\n" % (sys.flags.isolated, sys.argv))
+"""
+
+
+def test_a_native_host_starts_python_as_python_does(analytic_fmu, importer, tmp_path):
+    """The interpreter started in a native host reads PYTHONPATH (a sitecustomize.py there runs), is not isolated,
+    and installs none of Python's start-up signal handlers: SIGPIPE, which Python ignores when it installs them,
+    stays at its default, and the host's SIGINT handler stays."""
+    (tmp_path / "sitecustomize.py").write_text(STARTUP_PROBE)
+    fmu = Unpacked(analytic_fmu)
+    try:
+        extra = {"BEARING_FMU_PYTHON": sys.executable, "PYTHONPATH": str(tmp_path)}
+        calls = ["hostsigint", "signals", "instantiate", "signals", "free"]
+        rc, statuses, stderr = fmu.calls(importer, calls, extra)
+    finally:
+        fmu.remove()
+    assert rc == 0, stderr[-2000:]
+    assert statuses[2] == ("instantiate", "ok"), stderr[-2000:]
+    assert statuses[1] == statuses[3] == ("signals", "SIGINT=host,SIGPIPE=default"), statuses
+    assert "STARTED isolated=0 argv=['']" in stderr
 
 
 @pytest.fixture(scope="module")
