@@ -16,6 +16,7 @@ _value = checked_value
 
 LENGTH = Spec("m", 0.0, 10.0, low_open=True)
 MODULUS = Spec("Pa", 1e6, 1e13, low_open=True)
+ROUGHNESS = Spec("m", 0.0, 1e-4)
 POISSON = Spec("-", 0.0, 0.5, low_open=False)
 DENSITY = Spec("kg/m^3", 100.0, 30000.0)
 
@@ -180,6 +181,21 @@ def _clearance_and_angle(doc, D, f_i, f_o, kind, path):
     return Pd, free if alpha is None else alpha
 
 
+def check_roughness(Ra_inner, Ra_outer, Ra_ball, path):
+    """Raise ParameterError unless each race's contact has a composite roughness sqrt(Ra_race^2 + Ra_ball^2) > 0
+    (m; Ra >= 0 each): every fidelity's film parameter is Lambda = h_min / sigma. `path` names where the values came
+    from; the message names the keys of the bearing file's [surface]."""
+    for race, Ra in (("inner", Ra_inner), ("outer", Ra_outer)):
+        if not math.hypot(Ra, Ra_ball) > 0.0:
+            high = f"{ROUGHNESS.high:g}"
+            raise ParameterError(
+                f"{path}: 'surface.{race}_race_Ra' = {Ra} m and 'surface.ball_Ra' = {Ra_ball} m give the {race} "
+                f"contacts no roughness: the film parameter Lambda = h_min / sigma needs a composite roughness "
+                f"sigma = sqrt(Ra_race^2 + Ra_ball^2) > 0 (allowed: 'surface.{race}_race_Ra' in ]0, {high}] m, or "
+                f"'surface.ball_Ra' in ]0, {high}] m)"
+            )
+
+
 CAGE_MATERIAL = {"E": MODULUS, "nu": POISSON, "rho": DENSITY}
 
 
@@ -222,9 +238,9 @@ def bearing_from_document(doc, path):
         alpha0=alpha0,
         ball=_material(doc, "material.ball", path),
         ring=_material(doc, "material.ring", path),
-        Ra_inner=_value(doc, "surface.inner_race_Ra", Spec("m", 0.0, 1e-4), path),
-        Ra_outer=_value(doc, "surface.outer_race_Ra", Spec("m", 0.0, 1e-4), path),
-        Ra_ball=_value(doc, "surface.ball_Ra", Spec("m", 0.0, 1e-4), path),
+        Ra_inner=_value(doc, "surface.inner_race_Ra", ROUGHNESS, path),
+        Ra_outer=_value(doc, "surface.outer_race_Ra", ROUGHNESS, path),
+        Ra_ball=_value(doc, "surface.ball_Ra", ROUGHNESS, path),
         cage_ball_radius=_value(doc, "cage.ball_radius", Spec("m", 0.0, 1.0, True), path, required=False, default=0.0),
         cage_mass=_value(doc, "cage.mass", Spec("kg", 0.0, 1e3, True), path, required=False, default=0.0),
         shoulder_inner=shoulders["inner_shoulder_diameter"],
@@ -245,4 +261,5 @@ def bearing_from_document(doc, path):
         raise ParameterError(
             f"{path}: {bearing.Z} balls of {D} m do not fit on the pitch circle (pi d_m = {math.pi * dm:.4g} m)"
         )
+    check_roughness(bearing.Ra_inner, bearing.Ra_outer, bearing.Ra_ball, path)
     return bearing

@@ -23,6 +23,7 @@ from bearing_fmu_common.variables import Variable
 
 from ..params import (
     ALPHA_MAX,
+    ROUGHNESS,
     TRACTION_LIMIT_DEFAULT,
     TRACTION_SLIP_DEFAULT,
     _resolve,
@@ -96,6 +97,7 @@ SHOULDERS = (
     ("shoulder_inner_back", "inner_back_shoulder_diameter", "inner ring, back side"),
     ("shoulder_outer_back", "outer_back_shoulder_diameter", "outer ring, back side"),
 )
+ROUGHNESS_RULE = " (a race's Ra or the balls' Ra > 0: Lambda = h_min / sigma needs sigma > 0)"
 # the bearing file's values (docs/parameters.md, bearing file); ranges are those the bearing file's reader
 # accepts, closed at 0 where the reader's bound is open (it refuses the 0 with the parameter's name)
 BEARING_QUANTITIES = (
@@ -143,9 +145,21 @@ BEARING_QUANTITIES = (
     _optional(B + "E_cage", "Pa", "material.cage.E", "Young's modulus of the cage", 1e13),
     _optional(B + "nu_cage", "1", "material.cage.nu", "Poisson's ratio of the cage", 0.5),
     _optional(B + "rho_cage", "kg/m^3", "material.cage.rho", "density of the cage", 30000.0),
-    _real(B + "Ra_inner", "m", "surface.inner_race_Ra", "roughness Ra of the inner race", 0.0, 1e-4),
-    _real(B + "Ra_outer", "m", "surface.outer_race_Ra", "roughness Ra of the outer race", 0.0, 1e-4),
-    _real(B + "Ra_ball", "m", "surface.ball_Ra", "roughness Ra of the balls", 0.0, 1e-4),
+    *(
+        _real(
+            B + name,
+            "m",
+            f"surface.{key}",
+            f"roughness Ra of the {words}{ROUGHNESS_RULE}",
+            ROUGHNESS.low,
+            ROUGHNESS.high,
+        )
+        for name, key, words in (
+            ("Ra_inner", "inner_race_Ra", "inner race"),
+            ("Ra_outer", "outer_race_Ra", "outer race"),
+            ("Ra_ball", "ball_Ra", "balls"),
+        )
+    ),
     _optional(B + "cage_ball_radius", "m", "cage.ball_radius", "radius of the DEM's cage balls", 1.0),
     _optional(B + "cage_mass", "kg", "cage.mass", "mass of the whole cage", 1e3),
 )

@@ -203,6 +203,11 @@ def refusal(path, parameters):
             "lubricant_data.nu_1 = 0.0 m^2/s is outside the allowed range [2e-06, 1.0]",
         ),
         (
+            "dem_fmu",
+            {"bearing_from_file": False, "bearing_data.Ra_outer": 0.0},
+            "bearing_data.Ra_outer = 0.0 m and bearing_data.Ra_ball = 0.0 m give the outer contacts no roughness",
+        ),
+        (
             "spindle_thermal_fmu",
             {"network_from_file": False, "bearing_1.bore": 0.09},
             "bearing_1.bore = 0.09 m must be > 0 and at most the inner groove diameter",

@@ -144,6 +144,43 @@ def test_cage_mass_is_shared_by_the_dem_cage_balls(tmp_path):
         load_bearing(_write(tmp_path, text))
 
 
+def _numeric(name="6208", **changes):
+    """The bearing_data.* values of a catalogue bearing with `changes` (short names: Ra_inner, Z, ...)."""
+    from bearing_fmu.models.file_parameters import B, bearing_values
+
+    values = bearing_values(name)
+    values.update({B + key: value for key, value in changes.items()})
+    return values
+
+
+@pytest.mark.parametrize("race", ["inner", "outer"])
+def test_a_race_without_composite_roughness_is_refused_by_every_fidelity(tmp_path, race):
+    """Lambda = h_min / sigma needs sigma = 1.25 sqrt(Ra_race^2 + Ra_ball^2) > 0 on each race: the 6208 (ball_Ra 0)
+    with a race's Ra 0 is refused by the bearing file's reader, as a file and as the FMU's numeric parameters (named
+    as such), and by each facade given such a Bearing made by hand (unchecked, the DEM would report Lambda = inf, or
+    shrink its step without end); the B7214C, whose balls are rough, takes a smooth race."""
+    from dataclasses import replace
+
+    from bearing_fmu.models.dem import DemModel
+    from bearing_fmu.models.file_parameters import bearing_from_values
+    from bearing_fmu.models.quasi_static import QuasiStaticModel
+
+    key = f"Ra_{race}"
+    allowed = rf"\(allowed: bearing_data.{key} in \]0, 0.0001\] m, or bearing_data.Ra_ball in \]0, 0.0001\] m\)"
+    with pytest.raises(
+        ParameterError, match=rf"bearing_data.{key} = 0.0 m and bearing_data.Ra_ball = 0.0 m .*{allowed}"
+    ):
+        bearing_from_values(_numeric(**{key: 0.0}))
+    text = BASE.replace(f"{race}_race_Ra = {{ value = 0.3e-6", f"{race}_race_Ra = {{ value = 0.0")
+    with pytest.raises(ParameterError, match=rf"'surface.{race}_race_Ra' = 0.0 m and 'surface.ball_Ra' = 0.0 m"):
+        load_bearing(_write(tmp_path, text))
+    smooth = replace(load_bearing("6208"), **{key: 0.0})
+    for facade in (AnalyticModel, QuasiStaticModel, DemModel):
+        with pytest.raises(ParameterError, match=rf"'surface.{race}_race_Ra' = 0.0 m"):
+            facade(smooth, "guessasma_oil")
+    assert bearing_from_values(_numeric("B7214C", **{key: 0.0})).Ra_ball > 0.0
+
+
 def test_unknown_catalogue_name_lists_choices():
     with pytest.raises(ParameterError, match="unknown bearing 'xyz'.*6208"):
         load_bearing("xyz")
