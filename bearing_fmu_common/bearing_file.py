@@ -196,6 +196,29 @@ def check_roughness(Ra_inner, Ra_outer, Ra_ball, path):
             )
 
 
+def cage_ball_room(D, dm, Z):
+    """Largest radius (m) of a cage ball half a pitch ahead of each of Z balls of diameter D (m) on a circle of
+    diameter dm (m): touching both neighbouring balls, d_m sin(pi / (2 Z)) - D / 2 (centre to centre along the
+    chord of half a pitch)."""
+    return dm * math.sin(0.5 * math.pi / Z) - 0.5 * D
+
+
+def _check_cage(cage_ball_radius, D, dm, Z, path):
+    """Refuse a given cage-ball radius (m; 0 = not given) that overlaps the balls on the pitch circle."""
+    room = cage_ball_room(D, dm, Z)
+    if cage_ball_radius > room:
+        fit = (
+            f"at most {room:.6g} m fits (d_m sin(pi / (2 Z)) - D/2, touching both balls): give a smaller "
+            f"'cage.ball_radius' or leave it out (0) for the DEM's estimate"
+            if room > 0.0
+            else "no cage ball fits between the balls: give fewer balls"
+        )
+        raise ParameterError(
+            f"{path}: 'cage.ball_radius' = {cage_ball_radius} m and 'geometry.n_balls' = {Z} overlap: the cage balls "
+            f"sit half a pitch between {Z} balls of {D} m on the pitch circle d_m = {dm} m, where {fit}"
+        )
+
+
 CAGE_MATERIAL = {"E": MODULUS, "nu": POISSON, "rho": DENSITY}
 
 
@@ -262,4 +285,5 @@ def bearing_from_document(doc, path):
             f"{path}: {bearing.Z} balls of {D} m do not fit on the pitch circle (pi d_m = {math.pi * dm:.4g} m)"
         )
     check_roughness(bearing.Ra_inner, bearing.Ra_outer, bearing.Ra_ball, path)
+    _check_cage(bearing.cage_ball_radius, D, dm, bearing.Z, path)
     return bearing

@@ -160,7 +160,13 @@ BEARING_QUANTITIES = (
             ("Ra_ball", "ball_Ra", "balls"),
         )
     ),
-    _optional(B + "cage_ball_radius", "m", "cage.ball_radius", "radius of the DEM's cage balls", 1.0),
+    _optional(
+        B + "cage_ball_radius",
+        "m",
+        "cage.ball_radius",
+        "radius of the DEM's cage balls, at most d_m sin(pi / (2 Z)) - D/2 (touching both balls)",
+        1.0,
+    ),
     _optional(B + "cage_mass", "kg", "cage.mass", "mass of the whole cage", 1e3),
 )
 

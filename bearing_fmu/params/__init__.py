@@ -28,6 +28,7 @@ from bearing_fmu_common.bearing_file import (  # noqa: F401  (re-exported: the b
     Material,
     angle_for_clearance,
     bearing_from_document,
+    cage_ball_room,
     check_roughness,
     clearance_for_angle,
     clearance_limits,

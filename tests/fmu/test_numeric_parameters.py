@@ -208,6 +208,11 @@ def refusal(path, parameters):
             "bearing_data.Ra_outer = 0.0 m and bearing_data.Ra_ball = 0.0 m give the outer contacts no roughness",
         ),
         (
+            "dem_fmu",
+            {"bearing_from_file": False, "bearing_data.Z": 10},
+            "bearing_data.cage_ball_radius = 0.00419 m and bearing_data.Z = 10 overlap",
+        ),
+        (
             "spindle_thermal_fmu",
             {"network_from_file": False, "bearing_1.bore": 0.09},
             "bearing_1.bore = 0.09 m must be > 0 and at most the inner groove diameter",

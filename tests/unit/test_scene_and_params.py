@@ -181,6 +181,28 @@ def test_a_race_without_composite_roughness_is_refused_by_every_fidelity(tmp_pat
     assert bearing_from_values(_numeric("B7214C", **{key: 0.0})).Ra_ball > 0.0
 
 
+def test_cage_balls_that_overlap_the_balls_are_refused_naming_z_and_the_radius():
+    """The 6208's cage balls (R_z = 4.19 mm) fit between its 9 balls: d_m sin(pi / 18) - D/2 = 4.223 mm. With 10
+    balls only 3.180 mm fits (overlapping cage balls would push the balls: 2.3 kN on an outer contact under 1 kN);
+    with 15, 34 um. Either is refused naming Z and the radius with what fits; a radius that fits, or none (the DEM's
+    estimate from the pockets), is taken."""
+    from bearing_fmu.kernels.ball_dynamics import state as s
+    from bearing_fmu.models.dem import DemModel
+    from bearing_fmu.models.file_parameters import bearing_from_values
+    from bearing_fmu.params import cage_ball_room
+
+    assert cage_ball_room(12.6e-3, 60.6e-3, 9) == pytest.approx(4.2231e-3, abs=1e-7)
+    for Z, room in ((10, "0.00317993"), (15, "3.44249e-05")):
+        with pytest.raises(
+            ParameterError,
+            match=rf"bearing_data.cage_ball_radius = 0.00419 m and bearing_data.Z = {Z} overlap: .* at most {room} m",
+        ):
+            bearing_from_values(_numeric(Z=Z))
+    assert bearing_from_values(_numeric(Z=10, cage_ball_radius=3.1e-3)).cage_ball_radius == 3.1e-3
+    estimated = DemModel(bearing_from_values(_numeric(Z=10, cage_ball_radius=0.0)), "guessasma_oil")
+    assert 0.0 < estimated.par[s.P_R_CAGE] < cage_ball_room(12.6e-3, 60.6e-3, 10)
+
+
 def test_unknown_catalogue_name_lists_choices():
     with pytest.raises(ParameterError, match="unknown bearing 'xyz'.*6208"):
         load_bearing("xyz")
