@@ -219,6 +219,73 @@ def _check_cage(cage_ball_radius, D, dm, Z, path):
         )
 
 
+def groove_bottoms(D, dm, Pd):
+    """(inner, outer) groove-bottom diameters (m) that the ring sections are checked against: the nominal d_m -+ D,
+    widened by half a clearance P_d > 0 as the thermal model's groove diameters d_m -+ (D + P_d / 2) are (the
+    DEM's inner-ring mass takes the nominal one); D, dm, Pd in m."""
+    half = 0.5 * max(Pd, 0.0)
+    return dm - D - half, dm + D + half
+
+
+def check_ring_sections(D, dm, Pd, bore=None, outer_diameter=None, names=None, where=""):
+    """Raise ParameterError unless each ring has material under its groove: bore < inner groove bottom and
+    outer diameter > outer groove bottom (groove_bottoms; bore < outer diameter follows). None = not given.
+    `names` maps 'bore', 'outer_diameter', 'D', 'd_m', 'Pd' to the names the message gives them (default: the
+    bearing file's keys); `where` prefixes the message (the file)."""
+    names = {**SECTION_NAMES, **(names or {})}
+    inner, outer = groove_bottoms(D, dm, Pd)
+    groove = f"{names['d_m']} = {dm} m, {names['D']} = {D} m, {names['Pd']} = {Pd} m"
+    if bore is not None and not bore < inner:
+        raise ParameterError(
+            f"{where}{names['bore']} = {bore} m leaves the inner ring no material under its groove: allowed below "
+            f"the inner groove bottom d_m - D - max(P_d, 0)/2 = {inner:.6g} m ({groove})"
+        )
+    if outer_diameter is not None and not outer_diameter > outer:
+        raise ParameterError(
+            f"{where}{names['outer_diameter']} = {outer_diameter} m leaves the outer ring no material under its "
+            f"groove: allowed above the outer groove bottom d_m + D + max(P_d, 0)/2 = {outer:.6g} m ({groove})"
+        )
+
+
+SECTION_NAMES = {
+    "bore": "'geometry.bore'",
+    "outer_diameter": "'geometry.outer_diameter'",
+    "D": "'geometry.ball_diameter'",
+    "d_m": "'geometry.pitch_diameter'",
+    "Pd": "'geometry.diametral_clearance'",
+}
+
+
+def groove_width(D, dm, f, ring, lands):
+    """Axial width (m) of a ring's groove between its two lands (diameters `lands`, m): the groove, a circle of
+    radius f D (f the conformity) from the nominal groove bottom d_m -+ D, is sqrt(h (2 f D - h)) wide on each side
+    at a land of height h above the bottom; ring 'inner' | 'outer'."""
+    bottom = dm - D if ring == "inner" else dm + D
+    r = f * D
+    return sum(math.sqrt(h * (2.0 * r - h)) for h in (0.5 * abs(land - bottom) for land in lands))
+
+
+def _check_width(bearing, path):
+    """Refuse a given ring width (m) narrower than either ring's groove between its lands (shoulder diameters):
+    the shoulders, whose edges truncate the contact ellipses, lie on the ring."""
+    b = bearing
+    for ring, f, lands in (
+        ("inner", b.f_i, (b.shoulder_inner, b.shoulder_inner_back)),
+        ("outer", b.f_o, (b.shoulder_outer, b.shoulder_outer_back)),
+    ):
+        needed = groove_width(b.D, b.dm, f, ring, lands)
+        if not b.width >= needed:
+            keys = [key for key in SHOULDER_KEYS if key.startswith(ring)]
+            estimated = [key for key in keys if key in b.shoulders_estimated]
+            shown = " and ".join(f"'geometry.{key}' = {land:.6g} m" for key, land in zip(keys, lands))
+            raise ParameterError(
+                f"{path}: 'geometry.width' = {b.width} m is narrower than the {ring} ring's groove between its lands: "
+                f"allowed from {needed:.6g} m, the width of the groove (radius f D from the groove bottom) at the land "
+                f"diameters {shown}"
+                + (" (estimated where not given: docs/parameters.md, Shoulders)" if estimated else "")
+            )
+
+
 CAGE_MATERIAL = {"E": MODULUS, "nu": POISSON, "rho": DENSITY}
 
 
@@ -286,4 +353,7 @@ def bearing_from_document(doc, path):
         )
     check_roughness(bearing.Ra_inner, bearing.Ra_outer, bearing.Ra_ball, path)
     _check_cage(bearing.cage_ball_radius, D, dm, bearing.Z, path)
+    check_ring_sections(D, dm, Pd, bearing.bore, bearing.outer_diameter, where=f"{path}: ")
+    if bearing.width is not None:
+        _check_width(bearing, path)
     return bearing

@@ -126,9 +126,23 @@ BEARING_QUANTITIES = (
         0.0,
         ALPHA_MAX,
     ),
-    _optional(B + "bore", "m", "geometry.bore", "bore diameter (the DEM's inner-ring mass)", 10.0),
-    _optional(B + "outer_diameter", "m", "geometry.outer_diameter", "outer diameter", 10.0),
-    _optional(B + "width", "m", "geometry.width", "ring width (the DEM's inner-ring mass)", 10.0),
+    _optional(
+        B + "bore",
+        "m",
+        "geometry.bore",
+        "bore diameter, below the inner groove bottom (the DEM's inner-ring mass)",
+        10.0,
+    ),
+    _optional(
+        B + "outer_diameter", "m", "geometry.outer_diameter", "outer diameter, above the outer groove bottom", 10.0
+    ),
+    _optional(
+        B + "width",
+        "m",
+        "geometry.width",
+        "ring width, at least each ring's groove width between its lands (the DEM's inner-ring mass)",
+        10.0,
+    ),
     *(
         _optional(B + name, "m", f"geometry.{key}", f"land (shoulder) diameter, {words}", 10.0)
         for name, key, words in SHOULDERS

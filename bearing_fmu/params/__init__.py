@@ -29,6 +29,7 @@ from bearing_fmu_common.bearing_file import (  # noqa: F401  (re-exported: the b
     angle_for_clearance,
     bearing_from_document,
     cage_ball_room,
+    check_ring_sections,
     check_roughness,
     clearance_for_angle,
     clearance_limits,

@@ -40,7 +40,7 @@ RING_DIMENSIONS = (
     ("D", "m", "D", "ball diameter (< d_m)", 0.0, 1.0),
     ("d_m", "m", "dm", "pitch diameter", 0.0, 10.0),
     ("Pd", "m", "Pd", "diametral clearance at assembly (negative = preload); grooves d_m -+ (D + Pd/2)", -1e-2, 1e-2),
-    ("bore", "m", "bore", "bore diameter (> 0, at most the inner groove diameter)", 0.0, 10.0),
+    ("bore", "m", "bore", "bore diameter (> 0, below the inner groove bottom)", 0.0, 10.0),
     ("E_ring", "Pa", "E", "Young's modulus of the rings (centrifugal growth)", 1e6, 1e13),
     ("nu_ring", "1", "nu", "Poisson's ratio of the rings", 0.0, 0.5),
     ("rho_ring", "kg/m^3", "rho", "density of the rings", 100.0, 30000.0),
@@ -57,7 +57,7 @@ AXIAL = (
 
 
 DIMENSION_LIMITS = (
-    "the range the network and bearing files accept; in use also 0 < D < d_m, 0 < bore <= d_m - D - Pd/2 and "
+    "the range the network and bearing files accept; in use also 0 < D < d_m, 0 < bore < d_m - D - max(Pd, 0)/2 and "
     "spacing > 0 (spindle.thermal.model.with_dimensions)"
 )
 

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_fmu_common.bearing_file import read_bearing
+from bearing_fmu_common.bearing_file import check_ring_sections, read_bearing
 from bearing_fmu_common.paramfile import ParameterError, read_toml, resolve_toml
 from bearing_fmu_common.variables import InputError
 
@@ -139,14 +139,10 @@ def _bearing_entry(entry, index, node_index, where):
         if name not in node_index:
             raise ParameterError(f"{where}: '{role}' = {name!r} is not a node ({', '.join(node_index)})")
         nodes[role] = node_index[name]
-    b = load_ring_bearing(entry.get("bearing", ""))
+    b = load_ring_bearing(entry.get("bearing", ""))  # its reader checks the bore against the groove
     if b.bore is None:
         raise ParameterError(f"{b.path} [geometry]: missing key 'bore' (m)")
     ring = ring_dimensions(b.D, b.dm, b.Pd, b.bore, b.ring.E, b.ring.nu, b.ring.rho)
-    if not b.bore <= ring["d_i"]:
-        raise ParameterError(
-            f"{b.path} [geometry]: 'bore' = {b.bore} m must not exceed the inner groove diameter {ring['d_i']} m"
-        )
     return dict(name=b.name, **ring, **nodes)
 
 
@@ -337,8 +333,8 @@ def _axial(section, node_index, n_bearings, where):
 def with_dimensions(net, values):
     """`net` with its main dimensions (spindle.thermal.declarations.dimension_rows) replaced by `values` (FMI name
     -> value; the parameter network_from_file false): each checked against its declared range, and the ring
-    geometry as a bearing file's (0 < D < d_m, 0 < bore <= inner groove diameter, spacing > 0). A refusal names
-    the parameter."""
+    geometry as a bearing file's (0 < D < d_m, 0 < bore below the inner groove bottom:
+    bearing_fmu_common.bearing_file.check_ring_sections, spacing > 0). A refusal names the parameter."""
     for var in dimension_declarations(net)[1:]:
         var.check(values[var.name])
     bearings = []
@@ -349,11 +345,10 @@ def with_dimensions(net, values):
             raise ParameterError(
                 f"bearing_{k}.D = {ring['D']} m must be > 0 and below bearing_{k}.d_m = {ring['dm']} m"
             )
-        if not 0.0 < ring["bore"] <= geometry["d_i"]:
-            raise ParameterError(
-                f"bearing_{k}.bore = {ring['bore']} m must be > 0 and at most the inner groove diameter "
-                f"d_m - D - Pd/2 = {geometry['d_i']} m"
-            )
+        if not ring["bore"] > 0.0:
+            raise ParameterError(f"bearing_{k}.bore = {ring['bore']} m must be > 0")
+        names = {key: f"bearing_{k}.{key}" for key in ("bore", "D", "d_m", "Pd")}
+        check_ring_sections(ring["D"], ring["dm"], ring["Pd"], bore=ring["bore"], names=names)
         bearings.append({**b, **geometry})
     axial = net.axial and {**net.axial, **{key: values[name] for name, _, key, *_ in AXIAL}}
     if axial and not axial["spacing"] > 0.0:

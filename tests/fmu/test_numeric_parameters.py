@@ -213,9 +213,14 @@ def refusal(path, parameters):
             "bearing_data.cage_ball_radius = 0.00419 m and bearing_data.Z = 10 overlap",
         ),
         (
+            "bearing_fmu",
+            {"bearing_from_file": False, "bearing_data.bore": 0.1, "bearing_data.outer_diameter": 0.09},
+            "bearing_data.bore = 0.1 m leaves the inner ring no material under its groove: allowed below",
+        ),
+        (
             "spindle_thermal_fmu",
             {"network_from_file": False, "bearing_1.bore": 0.09},
-            "bearing_1.bore = 0.09 m must be > 0 and at most the inner groove diameter",
+            "bearing_1.bore = 0.09 m leaves the inner ring no material under its groove: allowed below",
         ),
         (
             "spindle_thermal_fmu",

@@ -203,6 +203,43 @@ def test_cage_balls_that_overlap_the_balls_are_refused_naming_z_and_the_radius()
     assert 0.0 < estimated.par[s.P_R_CAGE] < cage_ball_room(12.6e-3, 60.6e-3, 10)
 
 
+@pytest.mark.parametrize(
+    ("changes", "message"),
+    [
+        ({"bore": 0.048}, r"bearing_data.bore = 0.048 m leaves the inner ring no material under its groove: allowed "
+         r"below the inner groove bottom d_m - D - max\(P_d, 0\)/2 = 0.048 m"),
+        ({"outer_diameter": 0.07}, r"bearing_data.outer_diameter = 0.07 m leaves the outer ring no material under its "
+         r"groove: allowed above the outer groove bottom d_m \+ D \+ max\(P_d, 0\)/2 = 0.0732 m"),
+        ({"bore": 0.09, "outer_diameter": 0.08}, r"bearing_data.bore = 0.09 m leaves the inner ring"),
+        ({"width": 0.01}, r"bearing_data.width = 0.01 m is narrower than the inner ring's groove between its lands: "
+         r"allowed from 0.0103289 m"),
+    ],
+)  # fmt: skip
+def test_ring_sections_and_width_are_checked_for_every_fidelity(tmp_path, changes, message):
+    """Each ring keeps material under its groove (bore below d_m - D, outer diameter above d_m + D, so the bore is
+    below the outer diameter) and is as wide as its groove between the lands the shoulder truncation uses (the
+    6208's estimated lands 53.04 mm, 0.2 D above the groove bottom: 2 sqrt(h (2 f D - h)) = 10.33 mm): the numeric
+    parameters and a file are refused naming the value and the allowed bound, by the reader every fidelity uses;
+    the catalogue's dimensions are taken."""
+    from bearing_fmu.models.dem import DemModel
+    from bearing_fmu.models.file_parameters import bearing_from_values
+    from bearing_fmu.models.quasi_static import QuasiStaticModel
+
+    with pytest.raises(ParameterError, match=message):
+        bearing_from_values(_numeric(**changes))
+    text = BASE
+    for key, value in changes.items():
+        line = next(line for line in BASE.splitlines() if line.startswith(key + " "))
+        text = text.replace(line, f'{key} = {{ value = {value!r}, unit = "m", source = "test" }}')
+    path = _write(tmp_path, text)
+    for facade in (AnalyticModel, QuasiStaticModel, DemModel):
+        with pytest.raises(ParameterError, match=rf"'geometry.{next(iter(changes))}' = "):
+            facade(path, "guessasma_oil")
+    for name in catalogue("bearings"):
+        b = bearing_from_values(_numeric(name))
+        assert b.bore < b.dm - b.D and b.outer_diameter > b.dm + b.D
+
+
 def test_unknown_catalogue_name_lists_choices():
     with pytest.raises(ParameterError, match="unknown bearing 'xyz'.*6208"):
         load_bearing("xyz")

@@ -264,6 +264,27 @@ def test_bad_inputs_name_the_input():
         SpindleThermalModel(integrator="implicit_euler", substeps=0)
 
 
+def _dimensions(**changes):
+    """The default network's main dimensions (the FMU parameters of network_from_file false) with `changes`."""
+    from spindle.thermal.declarations import dimension_rows
+    from spindle.thermal.model import load_spindle
+
+    values = {name: value for name, *_, value in dimension_rows(load_spindle("b7214c_x_pair"))}
+    return {**values, **changes}
+
+
+def test_bore_is_checked_as_the_bearing_files():
+    """bearing_k.bore below the inner groove bottom d_m - D - max(Pd, 0)/2 (the B7214C: 81.598 mm), as a bearing
+    file's bore (bearing_fmu_common.bearing_file.check_ring_sections)."""
+    with pytest.raises(
+        ParameterError,
+        match=r"bearing_1.bore = 0.0816 m leaves the inner ring no material under its groove: allowed below the inner "
+        r"groove bottom d_m - D - max\(P_d, 0\)/2 = 0.081598 m \(bearing_1.d_m = 0.0975 m",
+    ):
+        SpindleThermalModel(dimensions=_dimensions(**{"bearing_1.bore": 0.0816}))
+    SpindleThermalModel(dimensions=_dimensions(**{"bearing_1.bore": 0.0815}))
+
+
 def test_parameter_errors(tmp_path):
     """Parameter files are checked: a node cut off from every boundary (L singular) is named; a wrong
     unit, a split not summing to 1, an unknown catalogue name are reported with the key."""
