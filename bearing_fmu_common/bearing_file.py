@@ -15,7 +15,14 @@ from .paramfile import ParameterError, Spec, checked_value, read_toml
 _value = checked_value
 
 LENGTH = Spec("m", 0.0, 10.0, low_open=True)
-MODULUS = Spec("Pa", 1e6, 1e13, low_open=True)
+MODULUS = Spec("Pa", 1e6, 1e13, low_open=True)  # a cage's material: polymers (PA66 3.3 GPa) to steel and brass
+# the balls' and rings' material: rolling-bearing steels (about 200 GPa), titanium alloys (110 GPa) and ceramics
+# (silicon nitride 310 GPa, tungsten carbide about 650 GPa); below 10 GPa are polymers, whose contacts the hard
+# EHL film formulas and the Hertz pressure limit of the models do not describe
+BALL_RING_MODULUS = Spec("Pa", 1e10, 1e12)
+# |diametral clearance| (m) a parameter may declare: the groove clearance (f_i + f_o - 1) D of a 0.25 m ball with
+# conformities 0.52 (beyond any catalogue ball); the bearing's own groove clearance applies within it
+GROOVE_MAX = 1e-2
 ROUGHNESS = Spec("m", 0.0, 1e-4)
 POISSON = Spec("-", 0.0, 0.5, low_open=False)
 DENSITY = Spec("kg/m^3", 100.0, 30000.0)
@@ -67,7 +74,7 @@ class Bearing:
 
 def _material(doc, section, path):
     return Material(
-        E=_value(doc, f"{section}.E", MODULUS, path),
+        E=_value(doc, f"{section}.E", BALL_RING_MODULUS, path),
         nu=_value(doc, f"{section}.nu", POISSON, path),
         rho=_value(doc, f"{section}.rho", DENSITY, path),
     )

@@ -23,6 +23,8 @@ from bearing_fmu_common.variables import Variable
 
 from ..params import (
     ALPHA_MAX,
+    BALL_RING_MODULUS,
+    GROOVE_MAX,
     ROUGHNESS,
     TRACTION_LIMIT_DEFAULT,
     TRACTION_SLIP_DEFAULT,
@@ -31,7 +33,6 @@ from ..params import (
     load_bearing,
     lubricant_from_document,
 )
-from .variables import GROOVE_MAX
 
 BEARING_PREFIX = "bearing_data."
 LUBRICANT_PREFIX = "lubricant_data."
@@ -151,7 +152,14 @@ BEARING_QUANTITIES = (
         quantity
         for part, words in (("ball", "balls"), ("ring", "rings"))
         for quantity in (
-            _real(f"{B}E_{part}", "Pa", f"material.{part}.E", f"Young's modulus of the {words}", 1e6, 1e13),
+            _real(
+                f"{B}E_{part}",
+                "Pa",
+                f"material.{part}.E",
+                f"Young's modulus of the {words} (steels and ceramics)",
+                BALL_RING_MODULUS.low,
+                BALL_RING_MODULUS.high,
+            ),
             _real(f"{B}nu_{part}", "1", f"material.{part}.nu", f"Poisson's ratio of the {words}", 0.0, 0.5),
             _real(f"{B}rho_{part}", "kg/m^3", f"material.{part}.rho", f"density of the {words}", 100.0, 30000.0),
         )

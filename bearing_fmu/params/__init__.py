@@ -18,7 +18,9 @@ import numpy as np
 from bearing_fmu_common.bearing_file import (  # noqa: F401  (re-exported: the bearing file's API)
     ALPHA_MAX,
     ANGLE_MATCH,
+    BALL_RING_MODULUS,
     DENSITY,
+    GROOVE_MAX,
     LENGTH,
     MODULUS,
     POISSON,

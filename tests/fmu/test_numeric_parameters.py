@@ -224,6 +224,16 @@ def refusal(path, parameters):
         ),
         (
             "spindle_thermal_fmu",
+            {"bearing_1.E_ring": 1e6},
+            "bearing_1.E_ring = 1000000.0 Pa is outside the allowed range [1e+10, 1e+12] Pa",
+        ),
+        (
+            "spindle_thermal_fmu",
+            {"network_from_file": False, "bearing_1.Pd": 0.01},
+            "bearing_1.Pd = 0.01 m is outside the allowed range [-0.0007938, 0.0007938] m",
+        ),
+        (
+            "spindle_thermal_fmu",
             {"axial.spacing": 11.0},
             "axial.spacing = 11.0 m is outside the allowed range [0, 10] m",
         ),
