@@ -62,7 +62,8 @@ class Quantity:
 
 FILE_LIMITS = (
     "the range of the {} file's value (docs/parameters.md), 0 included where 0 means not given or unused; "
-    "in use, the file's own checks apply (open bounds, d_m > D, the balls fit, clearance and angle agree)"
+    "in use, the file's own checks apply (open bounds, d_m > D, the balls fit, clearance and angle agree, the rings' "
+    "sections and width, a rough race, the cage balls fit)"
 )
 
 
