@@ -15,7 +15,15 @@ from .paramfile import ParameterError, Spec, checked_value, read_toml
 _value = checked_value
 
 LENGTH = Spec("m", 0.0, 10.0, low_open=True)
-MODULUS = Spec("Pa", 1e6, 1e13, low_open=True)
+MODULUS = Spec("Pa", 1e6, 1e13, low_open=True)  # a cage's material: polymers (PA66 3.3 GPa) to steel and brass
+# the balls' and rings' material: rolling-bearing steels (about 200 GPa), titanium alloys (110 GPa) and ceramics
+# (silicon nitride 310 GPa, tungsten carbide about 650 GPa); below 10 GPa are polymers, whose contacts the hard
+# EHL film formulas and the Hertz pressure limit of the models do not describe
+BALL_RING_MODULUS = Spec("Pa", 1e10, 1e12)
+# |diametral clearance| (m) a parameter may declare: the groove clearance (f_i + f_o - 1) D of a 0.25 m ball with
+# conformities 0.52 (beyond any catalogue ball); the bearing's own groove clearance applies within it
+GROOVE_MAX = 1e-2
+ROUGHNESS = Spec("m", 0.0, 1e-4)
 POISSON = Spec("-", 0.0, 0.5, low_open=False)
 DENSITY = Spec("kg/m^3", 100.0, 30000.0)
 
@@ -66,7 +74,7 @@ class Bearing:
 
 def _material(doc, section, path):
     return Material(
-        E=_value(doc, f"{section}.E", MODULUS, path),
+        E=_value(doc, f"{section}.E", BALL_RING_MODULUS, path),
         nu=_value(doc, f"{section}.nu", POISSON, path),
         rho=_value(doc, f"{section}.rho", DENSITY, path),
     )
@@ -180,6 +188,111 @@ def _clearance_and_angle(doc, D, f_i, f_o, kind, path):
     return Pd, free if alpha is None else alpha
 
 
+def check_roughness(Ra_inner, Ra_outer, Ra_ball, path):
+    """Raise ParameterError unless each race's contact has a composite roughness sqrt(Ra_race^2 + Ra_ball^2) > 0
+    (m; Ra >= 0 each): every fidelity's film parameter is Lambda = h_min / sigma. `path` names where the values came
+    from; the message names the keys of the bearing file's [surface]."""
+    for race, Ra in (("inner", Ra_inner), ("outer", Ra_outer)):
+        if not math.hypot(Ra, Ra_ball) > 0.0:
+            high = f"{ROUGHNESS.high:g}"
+            raise ParameterError(
+                f"{path}: 'surface.{race}_race_Ra' = {Ra} m and 'surface.ball_Ra' = {Ra_ball} m give the {race} "
+                f"contacts no roughness: the film parameter Lambda = h_min / sigma needs a composite roughness "
+                f"sigma = sqrt(Ra_race^2 + Ra_ball^2) > 0 (allowed: 'surface.{race}_race_Ra' in ]0, {high}] m, or "
+                f"'surface.ball_Ra' in ]0, {high}] m)"
+            )
+
+
+def cage_ball_room(D, dm, Z):
+    """Largest radius (m) of a cage ball half a pitch ahead of each of Z balls of diameter D (m) on a circle of
+    diameter dm (m): touching both neighbouring balls, d_m sin(pi / (2 Z)) - D / 2 (centre to centre along the
+    chord of half a pitch)."""
+    return dm * math.sin(0.5 * math.pi / Z) - 0.5 * D
+
+
+def _check_cage(cage_ball_radius, D, dm, Z, path):
+    """Refuse a given cage-ball radius (m; 0 = not given) that overlaps the balls on the pitch circle."""
+    room = cage_ball_room(D, dm, Z)
+    if cage_ball_radius > room:
+        fit = (
+            f"at most {room:.6g} m fits (d_m sin(pi / (2 Z)) - D/2, touching both balls): give a smaller "
+            f"'cage.ball_radius' or leave it out (0) for the DEM's estimate"
+            if room > 0.0
+            else "no cage ball fits between the balls: give fewer balls"
+        )
+        raise ParameterError(
+            f"{path}: 'cage.ball_radius' = {cage_ball_radius} m and 'geometry.n_balls' = {Z} overlap: the cage balls "
+            f"sit half a pitch between {Z} balls of {D} m on the pitch circle d_m = {dm} m, where {fit}"
+        )
+
+
+def groove_bottoms(D, dm, Pd):
+    """(inner, outer) groove-bottom diameters (m) that the ring sections are checked against: the nominal d_m -+ D,
+    widened by half a clearance P_d > 0 as the thermal model's groove diameters d_m -+ (D + P_d / 2) are (the
+    DEM's inner-ring mass takes the nominal one); D, dm, Pd in m."""
+    half = 0.5 * max(Pd, 0.0)
+    return dm - D - half, dm + D + half
+
+
+def check_ring_sections(D, dm, Pd, bore=None, outer_diameter=None, names=None, where=""):
+    """Raise ParameterError unless each ring has material under its groove: bore < inner groove bottom and
+    outer diameter > outer groove bottom (groove_bottoms; bore < outer diameter follows). None = not given.
+    `names` maps 'bore', 'outer_diameter', 'D', 'd_m', 'Pd' to the names the message gives them (default: the
+    bearing file's keys); `where` prefixes the message (the file)."""
+    names = {**SECTION_NAMES, **(names or {})}
+    inner, outer = groove_bottoms(D, dm, Pd)
+    groove = f"{names['d_m']} = {dm} m, {names['D']} = {D} m, {names['Pd']} = {Pd} m"
+    if bore is not None and not bore < inner:
+        raise ParameterError(
+            f"{where}{names['bore']} = {bore} m leaves the inner ring no material under its groove: allowed below "
+            f"the inner groove bottom d_m - D - max(P_d, 0)/2 = {inner:.6g} m ({groove})"
+        )
+    if outer_diameter is not None and not outer_diameter > outer:
+        raise ParameterError(
+            f"{where}{names['outer_diameter']} = {outer_diameter} m leaves the outer ring no material under its "
+            f"groove: allowed above the outer groove bottom d_m + D + max(P_d, 0)/2 = {outer:.6g} m ({groove})"
+        )
+
+
+SECTION_NAMES = {
+    "bore": "'geometry.bore'",
+    "outer_diameter": "'geometry.outer_diameter'",
+    "D": "'geometry.ball_diameter'",
+    "d_m": "'geometry.pitch_diameter'",
+    "Pd": "'geometry.diametral_clearance'",
+}
+
+
+def groove_width(D, dm, f, ring, lands):
+    """Axial width (m) of a ring's groove between its two lands (diameters `lands`, m): the groove, a circle of
+    radius f D (f the conformity) from the nominal groove bottom d_m -+ D, is sqrt(h (2 f D - h)) wide on each side
+    at a land of height h above the bottom; ring 'inner' | 'outer'."""
+    bottom = dm - D if ring == "inner" else dm + D
+    r = f * D
+    return sum(math.sqrt(h * (2.0 * r - h)) for h in (0.5 * abs(land - bottom) for land in lands))
+
+
+def _check_width(bearing, path):
+    """Refuse a given ring width (m) narrower than either ring's groove between its lands (shoulder diameters):
+    the shoulders, whose edges truncate the contact ellipses, lie on the ring."""
+    b = bearing
+    for ring, f, lands in (
+        ("inner", b.f_i, (b.shoulder_inner, b.shoulder_inner_back)),
+        ("outer", b.f_o, (b.shoulder_outer, b.shoulder_outer_back)),
+    ):
+        needed = groove_width(b.D, b.dm, f, ring, lands)
+        if not b.width >= needed:
+            keys = [key for key in SHOULDER_KEYS if key.startswith(ring)]
+            estimated = [key for key in keys if key in b.shoulders_estimated]
+            shown = " and ".join(f"'geometry.{key}' = {land:.6g} m" for key, land in zip(keys, lands))
+            raise ParameterError(
+                f"{path}: 'geometry.width' = {b.width} m is narrower than the {ring} ring's groove between its lands: "
+                f"allowed from {needed:.6g} m, the width of the groove (radius f D from the groove bottom) at the land "
+                f"diameters {shown}"
+                + (" (estimated where not given: docs/parameters.md, Shoulders)" if estimated else "")
+            )
+
+
 CAGE_MATERIAL = {"E": MODULUS, "nu": POISSON, "rho": DENSITY}
 
 
@@ -222,9 +335,9 @@ def bearing_from_document(doc, path):
         alpha0=alpha0,
         ball=_material(doc, "material.ball", path),
         ring=_material(doc, "material.ring", path),
-        Ra_inner=_value(doc, "surface.inner_race_Ra", Spec("m", 0.0, 1e-4), path),
-        Ra_outer=_value(doc, "surface.outer_race_Ra", Spec("m", 0.0, 1e-4), path),
-        Ra_ball=_value(doc, "surface.ball_Ra", Spec("m", 0.0, 1e-4), path),
+        Ra_inner=_value(doc, "surface.inner_race_Ra", ROUGHNESS, path),
+        Ra_outer=_value(doc, "surface.outer_race_Ra", ROUGHNESS, path),
+        Ra_ball=_value(doc, "surface.ball_Ra", ROUGHNESS, path),
         cage_ball_radius=_value(doc, "cage.ball_radius", Spec("m", 0.0, 1.0, True), path, required=False, default=0.0),
         cage_mass=_value(doc, "cage.mass", Spec("kg", 0.0, 1e3, True), path, required=False, default=0.0),
         shoulder_inner=shoulders["inner_shoulder_diameter"],
@@ -245,4 +358,9 @@ def bearing_from_document(doc, path):
         raise ParameterError(
             f"{path}: {bearing.Z} balls of {D} m do not fit on the pitch circle (pi d_m = {math.pi * dm:.4g} m)"
         )
+    check_roughness(bearing.Ra_inner, bearing.Ra_outer, bearing.Ra_ball, path)
+    _check_cage(bearing.cage_ball_radius, D, dm, bearing.Z, path)
+    check_ring_sections(D, dm, Pd, bearing.bore, bearing.outer_diameter, where=f"{path}: ")
+    if bearing.width is not None:
+        _check_width(bearing, path)
     return bearing

@@ -30,6 +30,9 @@ TYPICAL_MAGNITUDE |= {"N/m": 1e8, "1": 1.0}
 # Static bounds shared by the bearing and the thermal FMUs (declared ranges of speed and load inputs)
 OMEGA_MAX = 1e5  # rad/s (~955 000 rpm): d_m n = 4e6 mm.rpm is reached below it by any bearing with d_m >= 5 mm
 LOAD_MAX = 1e8  # N: far beyond any ball bearing (the largest slewing ball bearings: C0 of order 1e7 N)
+# |thermal/centrifugal change| of a bearing's clearance or axial position (m): spindle bearings see micrometres; the
+# bearing FMUs' dPd_thermal and dz_thermal inputs and the thermal FMU's outputs feeding them stay within it
+THERMAL_SHIFT_MAX = 1e-3
 
 
 class InputError(ValueError):

@@ -17,7 +17,7 @@ from ..kernels import truncation as tk
 from ..kernels.geometry import ball_mass, curvature_radii
 from ..kernels.hertz import hertz_coefficients_approx, hertz_coefficients_exact, reduced_modulus
 from ..kernels.loaddist import gauss_legendre
-from ..params import load_bearing, load_lubricant
+from ..params import check_roughness, load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
 from .contacts import RaceContacts, truncation_parameters, truncation_warnings
 from .declarations import ANALYTIC_INPUTS, ANALYTIC_OUTPUTS
@@ -61,12 +61,8 @@ class AnalyticModel:
         self.Pd = b.Pd if Pd is None else float(Pd)
         check_clearance(self.Pd, b, Pd is not None)
         self.omega_max = DM_N_LIMIT / (b.dm * 1e3) * 2.0 * math.pi / 60.0
+        check_roughness(b.Ra_inner, b.Ra_outer, b.Ra_ball, b.path)  # the reader's check, for a Bearing made by hand
         self.brg = self._pack()
-        if min(self.brg[ak.B_SIGMA_I], self.brg[ak.B_SIGMA_O]) <= 0.0:
-            raise InputError(
-                f"bearing '{b.name}': composite roughness sigma must be > 0 (Lambda = h_min/sigma); "
-                f"give surface.inner_race_Ra / outer_race_Ra / ball_Ra > 0 m"
-            )
         contacts = [
             [self.brg[k] for k in keys]
             for keys in (

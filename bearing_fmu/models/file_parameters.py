@@ -23,6 +23,9 @@ from bearing_fmu_common.variables import Variable
 
 from ..params import (
     ALPHA_MAX,
+    BALL_RING_MODULUS,
+    GROOVE_MAX,
+    ROUGHNESS,
     TRACTION_LIMIT_DEFAULT,
     TRACTION_SLIP_DEFAULT,
     _resolve,
@@ -30,7 +33,6 @@ from ..params import (
     load_bearing,
     lubricant_from_document,
 )
-from .variables import GROOVE_MAX
 
 BEARING_PREFIX = "bearing_data."
 LUBRICANT_PREFIX = "lubricant_data."
@@ -60,7 +62,8 @@ class Quantity:
 
 FILE_LIMITS = (
     "the range of the {} file's value (docs/parameters.md), 0 included where 0 means not given or unused; "
-    "in use, the file's own checks apply (open bounds, d_m > D, the balls fit, clearance and angle agree)"
+    "in use, the file's own checks apply (open bounds, d_m > D, the balls fit, clearance and angle agree, the rings' "
+    "sections and width, a rough race, the cage balls fit)"
 )
 
 
@@ -96,6 +99,7 @@ SHOULDERS = (
     ("shoulder_inner_back", "inner_back_shoulder_diameter", "inner ring, back side"),
     ("shoulder_outer_back", "outer_back_shoulder_diameter", "outer ring, back side"),
 )
+ROUGHNESS_RULE = " (a race's Ra or the balls' Ra > 0: Lambda = h_min / sigma needs sigma > 0)"
 # the bearing file's values (docs/parameters.md, bearing file); ranges are those the bearing file's reader
 # accepts, closed at 0 where the reader's bound is open (it refuses the 0 with the parameter's name)
 BEARING_QUANTITIES = (
@@ -124,9 +128,23 @@ BEARING_QUANTITIES = (
         0.0,
         ALPHA_MAX,
     ),
-    _optional(B + "bore", "m", "geometry.bore", "bore diameter (the DEM's inner-ring mass)", 10.0),
-    _optional(B + "outer_diameter", "m", "geometry.outer_diameter", "outer diameter", 10.0),
-    _optional(B + "width", "m", "geometry.width", "ring width (the DEM's inner-ring mass)", 10.0),
+    _optional(
+        B + "bore",
+        "m",
+        "geometry.bore",
+        "bore diameter, below the inner groove bottom (the DEM's inner-ring mass)",
+        10.0,
+    ),
+    _optional(
+        B + "outer_diameter", "m", "geometry.outer_diameter", "outer diameter, above the outer groove bottom", 10.0
+    ),
+    _optional(
+        B + "width",
+        "m",
+        "geometry.width",
+        "ring width, at least each ring's groove width between its lands (the DEM's inner-ring mass)",
+        10.0,
+    ),
     *(
         _optional(B + name, "m", f"geometry.{key}", f"land (shoulder) diameter, {words}", 10.0)
         for name, key, words in SHOULDERS
@@ -135,7 +153,14 @@ BEARING_QUANTITIES = (
         quantity
         for part, words in (("ball", "balls"), ("ring", "rings"))
         for quantity in (
-            _real(f"{B}E_{part}", "Pa", f"material.{part}.E", f"Young's modulus of the {words}", 1e6, 1e13),
+            _real(
+                f"{B}E_{part}",
+                "Pa",
+                f"material.{part}.E",
+                f"Young's modulus of the {words} (steels and ceramics)",
+                BALL_RING_MODULUS.low,
+                BALL_RING_MODULUS.high,
+            ),
             _real(f"{B}nu_{part}", "1", f"material.{part}.nu", f"Poisson's ratio of the {words}", 0.0, 0.5),
             _real(f"{B}rho_{part}", "kg/m^3", f"material.{part}.rho", f"density of the {words}", 100.0, 30000.0),
         )
@@ -143,10 +168,28 @@ BEARING_QUANTITIES = (
     _optional(B + "E_cage", "Pa", "material.cage.E", "Young's modulus of the cage", 1e13),
     _optional(B + "nu_cage", "1", "material.cage.nu", "Poisson's ratio of the cage", 0.5),
     _optional(B + "rho_cage", "kg/m^3", "material.cage.rho", "density of the cage", 30000.0),
-    _real(B + "Ra_inner", "m", "surface.inner_race_Ra", "roughness Ra of the inner race", 0.0, 1e-4),
-    _real(B + "Ra_outer", "m", "surface.outer_race_Ra", "roughness Ra of the outer race", 0.0, 1e-4),
-    _real(B + "Ra_ball", "m", "surface.ball_Ra", "roughness Ra of the balls", 0.0, 1e-4),
-    _optional(B + "cage_ball_radius", "m", "cage.ball_radius", "radius of the DEM's cage balls", 1.0),
+    *(
+        _real(
+            B + name,
+            "m",
+            f"surface.{key}",
+            f"roughness Ra of the {words}{ROUGHNESS_RULE}",
+            ROUGHNESS.low,
+            ROUGHNESS.high,
+        )
+        for name, key, words in (
+            ("Ra_inner", "inner_race_Ra", "inner race"),
+            ("Ra_outer", "outer_race_Ra", "outer race"),
+            ("Ra_ball", "ball_Ra", "balls"),
+        )
+    ),
+    _optional(
+        B + "cage_ball_radius",
+        "m",
+        "cage.ball_radius",
+        "radius of the DEM's cage balls, at most d_m sin(pi / (2 Z)) - D/2 (touching both balls)",
+        1.0,
+    ),
     _optional(B + "cage_mass", "kg", "cage.mass", "mass of the whole cage", 1e3),
 )
 

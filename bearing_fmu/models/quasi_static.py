@@ -23,7 +23,7 @@ from ..kernels.geometry import ball_mass, free_contact_angle
 from ..kernels.hertz import hertz_contact, hertz_stiffness
 from ..kernels.lubricant import lubricant_state
 from ..kernels.torque import TL_SIZE
-from ..params import load_bearing, load_lubricant
+from ..params import check_roughness, load_bearing, load_lubricant
 from ..scene import LUBRICATION_METHODS, RACE_CONTROLS, Scene
 from .contacts import contact_terms, pack, race_contacts, traction_block, truncation_parameters, truncation_warnings
 from .declarations import (
@@ -122,9 +122,8 @@ class QuasiStaticModel:
         self.hybrid_split = hybrid_split
         self.control = np.array(DRIVE_CONTROL[self.scene.drive], dtype=float)
         self.omega_max = DM_N_LIMIT / (b.dm * 1e3) * 2.0 * math.pi / 60.0
+        check_roughness(b.Ra_inner, b.Ra_outer, b.Ra_ball, b.path)  # the reader's check, for a Bearing made by hand
         self.qs, self.cp = self._pack()
-        if min(self.cp[ck.CP_SIGMA_I], self.cp[ck.CP_SIGMA_O]) <= 0.0:
-            raise InputError(f"bearing '{b.name}': composite roughness sigma must be > 0 (Lambda = h_min/sigma)")
         self.groove = (b.f_i + b.f_o - 1.0) * b.D
         self.load_limit = self._load_limit()
         Z = b.Z

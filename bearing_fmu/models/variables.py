@@ -6,9 +6,11 @@ static bounds below are the declared ranges (FMI min/max) of the inputs and para
 where the limit depends on the bearing (d_m n, the material load limit, the groove clearance).
 """
 
+from bearing_fmu_common.bearing_file import GROOVE_MAX  # noqa: F401  (re-exported for the models)
 from bearing_fmu_common.variables import (  # noqa: F401  (re-exported for the models)
     LOAD_MAX,
     OMEGA_MAX,
+    THERMAL_SHIFT_MAX,
     InputError,
     Variable,
 )
@@ -21,9 +23,9 @@ T_OIL_RANGE = (233.15, 473.15)  # K, -40..200 C: range of the viscosity laws of 
 # Static bounds (declared ranges; the bearing-dependent limit applies within them):
 # OMEGA_MAX (rad/s) and LOAD_MAX (N) are bearing_fmu_common.variables' (the thermal FMU uses them too)
 MOMENT_MAX = 1e8  # N.m: LOAD_MAX at 1 m
-GROOVE_MAX = 1e-2  # m: groove clearance (f_i + f_o - 1) D of a 0.25 m ball (beyond any catalogue ball), 0.52 + 0.52
+# GROOVE_MAX (m, |clearance|) is the bearing file's (bearing_fmu_common.bearing_file: the thermal FMU declares it too)
 TILT_LIMIT = 0.01  # rad: imposed tilt, over 3 x the largest misalignment ball-bearing catalogues permit
-THERMAL_SHIFT_MAX = 1e-3  # m: thermal/centrifugal clearance or axial change (spindle bearings: micrometres)
+# THERMAL_SHIFT_MAX (m, thermal clearance or axial change) is bearing_fmu_common.variables' (the thermal FMU's bound)
 OMEGA_LIMITS = f"|omega| <= {OMEGA_MAX:g} rad/s and d_m n <= {DM_N_LIMIT:.0e} mm.rpm of the bearing"
 LOAD_LIMITS = "static bound; the bearing's material limit (p_max = 6 GPa with the load on all balls) applies within"
 MATERIAL_LIMIT = (

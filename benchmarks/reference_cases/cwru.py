@@ -45,8 +45,9 @@ def rows():
 
 def bearing_file(row, folder):
     """A bearing file of the rig's bearing: the 6208 file with the CWRU size (the frequencies depend on D, d_m, Z
-    only; materials, conformity and roughness are those of the template; the template's shoulders are left out,
-    so the loader estimates the rig bearing's own, docs/parameters.md)."""
+    only; materials, conformity and roughness are those of the template; the template's shoulders and cage-ball
+    radius are left out, so the loader estimates the rig bearing's own shoulders and the DEM its cage balls from
+    their pockets, docs/parameters.md: the 6208's cage balls do not fit between the rig bearing's balls)."""
     values = {
         "ball_diameter": float(row["ball_diameter_in"]) * INCH,
         "pitch_diameter": float(row["pitch_diameter_in"]) * INCH,
@@ -58,7 +59,7 @@ def bearing_file(row, folder):
     lines = []
     for line in TEMPLATE.read_text().splitlines():
         key = line.split("=")[0].strip()
-        if key.endswith("shoulder_diameter"):
+        if key.endswith("shoulder_diameter") or key == "ball_radius":
             continue
         if key == "name":
             line = f'name = "{row["bearing"]}"'

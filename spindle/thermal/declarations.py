@@ -6,8 +6,9 @@ array in the order of output_declarations(), the FMU class (spindle.thermal.fmu)
 variables from the same declarations, and fmus/<Name>.md is generated from them (spindle.build).
 """
 
+from bearing_fmu_common.bearing_file import BALL_RING_MODULUS, GROOVE_MAX
 from bearing_fmu_common.paramfile import ParameterError
-from bearing_fmu_common.variables import LOAD_MAX, OMEGA_MAX, Variable
+from bearing_fmu_common.variables import LOAD_MAX, OMEGA_MAX, THERMAL_SHIFT_MAX, Variable
 
 T_START = 293.15  # K, start value of the temperature inputs of the FMU (20 C, the default assembly temperature)
 DEFAULT_SPINDLE = "b7214c_x_pair"
@@ -21,7 +22,7 @@ T_LIMITS = (
     "meaningless below 150 K, and 1000 K is past the austenite transformation of bearing steel"
 )
 K_AXIAL_MAX = 1e11  # N/m: 100 x the axial stiffness of the stiffest spindle bearing sets (~1e9 N/m)
-AXIAL_FLOAT_MAX = 1e-3  # m: |axial float| of the shaft; a bearing FMU refuses |dz_thermal| beyond it
+AXIAL_FLOAT_MAX = THERMAL_SHIFT_MAX  # m: |axial float| of the shaft; a bearing FMU refuses |dz_thermal| beyond it
 
 
 NETWORK_FROM_FILE = Variable(
@@ -34,14 +35,23 @@ NETWORK_FROM_FILE = Variable(
 )
 # The network's main dimensions: what turns temperatures into the clearance and preload outputs. Per bearing k
 # (its [[bearing]] entry, the bearing file it names): (name, unit, key of the network's bearing entry,
-# description, min, max); then the [expansion] and [axial] values. Ranges: those of the files' readers, closed
-# where those are open (model.with_dimensions refuses a 0 that the file would refuse).
+# description, min, max); then the [expansion] and [axial] values. Ranges: those of the files' readers (the bearing
+# file's are bearing_fmu_common.bearing_file's, as the bearing FMUs declare them), closed where those are open
+# (model.with_dimensions refuses a 0 that the file would refuse).
 RING_DIMENSIONS = (
     ("D", "m", "D", "ball diameter (< d_m)", 0.0, 1.0),
     ("d_m", "m", "dm", "pitch diameter", 0.0, 10.0),
-    ("Pd", "m", "Pd", "diametral clearance at assembly (negative = preload); grooves d_m -+ (D + Pd/2)", -1e-2, 1e-2),
-    ("bore", "m", "bore", "bore diameter (> 0, at most the inner groove diameter)", 0.0, 10.0),
-    ("E_ring", "Pa", "E", "Young's modulus of the rings (centrifugal growth)", 1e6, 1e13),
+    (
+        "Pd", "m", "Pd",
+        "diametral clearance at assembly (negative = preload), |Pd| <= (f_i + f_o - 1) D with the bearing file's "
+        "conformities; grooves d_m -+ (D + Pd/2)",
+        -GROOVE_MAX, GROOVE_MAX,
+    ),
+    ("bore", "m", "bore", "bore diameter (> 0, below the inner groove bottom)", 0.0, 10.0),
+    (
+        "E_ring", "Pa", "E", "Young's modulus of the rings (centrifugal growth; steels and ceramics)",
+        BALL_RING_MODULUS.low, BALL_RING_MODULUS.high,
+    ),
     ("nu_ring", "1", "nu", "Poisson's ratio of the rings", 0.0, 0.5),
     ("rho_ring", "kg/m^3", "rho", "density of the rings", 100.0, 30000.0),
 )  # fmt: skip
@@ -57,8 +67,8 @@ AXIAL = (
 
 
 DIMENSION_LIMITS = (
-    "the range the network and bearing files accept; in use also 0 < D < d_m, 0 < bore <= d_m - D - Pd/2 and "
-    "spacing > 0 (spindle.thermal.model.with_dimensions)"
+    "the range the network and bearing files accept; in use also 0 < D < d_m, |Pd| <= (f_i + f_o - 1) D, "
+    "0 < bore < d_m - D - max(Pd, 0)/2 and spacing > 0 (spindle.thermal.model.with_dimensions)"
 )
 
 

@@ -15,9 +15,9 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_fmu_common.bearing_file import read_bearing
+from bearing_fmu_common.bearing_file import check_ring_sections, clearance_limits, read_bearing
 from bearing_fmu_common.paramfile import ParameterError, read_toml, resolve_toml
-from bearing_fmu_common.variables import InputError
+from bearing_fmu_common.variables import THERMAL_SHIFT_MAX, InputError
 
 from . import network as nk
 from .declarations import (
@@ -139,15 +139,12 @@ def _bearing_entry(entry, index, node_index, where):
         if name not in node_index:
             raise ParameterError(f"{where}: '{role}' = {name!r} is not a node ({', '.join(node_index)})")
         nodes[role] = node_index[name]
-    b = load_ring_bearing(entry.get("bearing", ""))
+    b = load_ring_bearing(entry.get("bearing", ""))  # its reader checks the bore against the groove
     if b.bore is None:
         raise ParameterError(f"{b.path} [geometry]: missing key 'bore' (m)")
     ring = ring_dimensions(b.D, b.dm, b.Pd, b.bore, b.ring.E, b.ring.nu, b.ring.rho)
-    if not b.bore <= ring["d_i"]:
-        raise ParameterError(
-            f"{b.path} [geometry]: 'bore' = {b.bore} m must not exceed the inner groove diameter {ring['d_i']} m"
-        )
-    return dict(name=b.name, **ring, **nodes)
+    # the conformities stay the file's: with the ball diameter they bound the clearance (clearance_limits)
+    return dict(name=b.name, **ring, f_i=b.f_i, f_o=b.f_o, **nodes)
 
 
 def ring_dimensions(D, dm, Pd, bore, E, nu, rho):
@@ -337,8 +334,9 @@ def _axial(section, node_index, n_bearings, where):
 def with_dimensions(net, values):
     """`net` with its main dimensions (spindle.thermal.declarations.dimension_rows) replaced by `values` (FMI name
     -> value; the parameter network_from_file false): each checked against its declared range, and the ring
-    geometry as a bearing file's (0 < D < d_m, 0 < bore <= inner groove diameter, spacing > 0). A refusal names
-    the parameter."""
+    geometry as a bearing file's (0 < D < d_m, |Pd| <= (f_i + f_o - 1) D with the file's conformities, 0 < bore
+    below the inner groove bottom: bearing_fmu_common.bearing_file.check_ring_sections, spacing > 0). A refusal
+    names the parameter."""
     for var in dimension_declarations(net)[1:]:
         var.check(values[var.name])
     bearings = []
@@ -349,11 +347,17 @@ def with_dimensions(net, values):
             raise ParameterError(
                 f"bearing_{k}.D = {ring['D']} m must be > 0 and below bearing_{k}.d_m = {ring['dm']} m"
             )
-        if not 0.0 < ring["bore"] <= geometry["d_i"]:
+        low, high = clearance_limits(ring["D"], b["f_i"], b["f_o"])
+        if not low <= ring["Pd"] <= high:
             raise ParameterError(
-                f"bearing_{k}.bore = {ring['bore']} m must be > 0 and at most the inner groove diameter "
-                f"d_m - D - Pd/2 = {geometry['d_i']} m"
+                f"bearing_{k}.Pd = {ring['Pd']} m is outside the allowed range [{low:.4g}, {high:.4g}] m "
+                f"(|Pd| <= (f_i + f_o - 1) D with bearing_{k}.D = {ring['D']} m and the conformities f_i = {b['f_i']}, "
+                f"f_o = {b['f_o']} of bearing '{b['name']}': free contact angle up to 60 deg, as in the bearing FMUs)"
             )
+        if not ring["bore"] > 0.0:
+            raise ParameterError(f"bearing_{k}.bore = {ring['bore']} m must be > 0")
+        names = {key: f"bearing_{k}.{key}" for key in ("bore", "D", "d_m", "Pd")}
+        check_ring_sections(ring["D"], ring["dm"], ring["Pd"], bore=ring["bore"], names=names)
         bearings.append({**b, **geometry})
     axial = net.axial and {**net.axial, **{key: values[name] for name, _, key, *_ in AXIAL}}
     if axial and not axial["spacing"] > 0.0:
@@ -419,6 +423,7 @@ class SpindleThermalModel:
         self.outputs = output_declarations(net)
         self.output_names = tuple(v.name for v in self.outputs)
         self.values = np.zeros(len(self.outputs))  # outputs at the current state, in self.outputs order
+        self._next = np.zeros(len(self.outputs))  # outputs of a step before they are accepted
         self._position = {name: k for k, name in enumerate(self.input_names)}
         self._checks = [(v.name, v.unit, *_admissible(v)) for v in self.inputs]
         self._tables()
@@ -439,6 +444,7 @@ class SpindleThermalModel:
         self._bearing_par = np.array(
             [[b["rho"], b["E"], b["nu"], b["a"], b["d_i"], b["d_o"], b["D"]] for b in net.bearings], dtype=float
         ).reshape(len(net.bearings), 7)
+        self._clearance_limits = self._clearance_output_limits(slot)
         self._bearing_idx = np.array(
             [
                 [b["inner_ring"], b["outer_ring"], b["ball_oil"]]
@@ -463,6 +469,41 @@ class SpindleThermalModel:
         )
         if self.axial_float:
             self._axial_at = tuple(position[name] for name in ("F_axial_1", "F_axial_2", "K_axial_1", "K_axial_2"))
+
+    def _clearance_output_limits(self, slot):
+        """Per bearing (output slot of dPd_thermal_k, low, high, why): the range dPd_thermal_k may take, that of the
+        bearing FMUs' input dPd_thermal for this bearing: |dPd| <= THERMAL_SHIFT_MAX and P_d + dPd within the
+        groove clearance, |P_d + dPd| <= (f_i + f_o - 1) D (bearing_fmu_common.bearing_file.clearance_limits)."""
+        rows = []
+        for k, b in enumerate(self.net.bearings, start=1):
+            low, high = clearance_limits(b["D"], b["f_i"], b["f_o"])
+            why = (
+                f"|dPd_thermal_{k}| <= {THERMAL_SHIFT_MAX:g} m and Pd + dPd_thermal_{k} within [{low:.4g}, "
+                f"{high:.4g}] m with Pd = {b['Pd']} m: the bearing FMUs' input dPd_thermal, |Pd + dPd| <= "
+                "(f_i + f_o - 1) D"
+            )
+            rows.append(
+                (
+                    slot[f"dPd_thermal_{k}"],
+                    max(-THERMAL_SHIFT_MAX, low - b["Pd"]),
+                    min(THERMAL_SHIFT_MAX, high - b["Pd"]),
+                    why,
+                )
+            )
+        return tuple(rows)
+
+    def _check_clearance_outputs(self, values, u):
+        """Raise SpindleInputError if a bearing's clearance change in `values` (outputs for the inputs u) leaves the
+        range of _clearance_output_limits: growth no bearing survives (a ring turning too fast for its modulus, or
+        temperatures beyond any spindle's), which the bearing FMU fed with it would refuse."""
+        for k, (at, low, high, why) in enumerate(self._clearance_limits, start=1):
+            if not low <= values[at] <= high:  # a NaN fails too
+                omega = u[self._idx[nk.LS_OMEGA]]
+                raise SpindleInputError(
+                    f"dPd_thermal_{k} = {values[at]} m (thermal and centrifugal growth at omega = {omega} rad/s and "
+                    f"the network's temperatures) is outside the allowed range [{low:.4g}, {high:.4g}] m ({why}); "
+                    "state left unchanged"
+                )
 
     @property
     def parameters(self):
@@ -546,11 +587,14 @@ class SpindleThermalModel:
     def initialize(self, **inputs):
         """Set inputs, all nodes to T_initial (default: T_ambient, else the first boundary input), s = 0, time = 0."""
         u = self._merge(inputs)
+        T = np.full(len(self.net.nodes), self._start_temperature(u))
+        values = np.zeros(len(self.outputs))
+        self._outputs(T, u, values, 0.0, T)
+        self._check_clearance_outputs(values, u)
         self._u = u
-        self.T = np.full(len(self.net.nodes), self._start_temperature(u))
-        self.T0 = self.T.copy()
+        self.T, self.T0 = T, T.copy()
         self.s, self.time = 0.0, 0.0
-        self._outputs(self.T, u, self.values)
+        self.values[:] = values
         return self.outputs_values()
 
     def _start_temperature(self, u):
@@ -604,6 +648,7 @@ class SpindleThermalModel:
                 f"node {self.net.nodes[bad[0]]} would reach T = {T[bad[0]]} K (non-physical) "
                 f"with these heat inputs; state left unchanged"
             )
+        s = self.s
         if self.axial_float:
             F_1, F_2, K_1, K_2 = (u[k] for k in self._axial_at)
             if K_1 > 0.0 and K_2 > 0.0:
@@ -618,10 +663,12 @@ class SpindleThermalModel:
                         f"{shown} give an axial float s = {s} m, outside the allowed range [{-AXIAL_FLOAT_MAX:g}, "
                         f"{AXIAL_FLOAT_MAX:g}] m (a bearing FMU refuses dz_thermal beyond it); state left unchanged"
                     )
-                self.s = s
+        self._outputs(T, u_vec, self._next, s)
+        self._check_clearance_outputs(self._next, u)
+        self.s = s
         self._u, self.T = [float(x) for x in u], T
         self.time += float(h)
-        self._outputs(T, u_vec, self.values)
+        self.values[:] = self._next
         return self.values
 
     def outputs_values(self):
@@ -638,6 +685,7 @@ class SpindleThermalModel:
         P, Tb, _ = self._vectors(u)
         values = np.zeros(len(self.outputs))
         self._outputs(nk.cholesky_solve(op["R"], nk.source_vector(op["B"], Tb, P)), u, values)
+        self._check_clearance_outputs(values, u)
         return dict(zip(self.output_names, values.tolist()))
 
     def time_constants(self, omega=0.0):
@@ -677,16 +725,18 @@ class SpindleThermalModel:
         self._outputs(self.T, self._u, self.values)
 
     # ---------------------------------------------------------------- outputs
-    def _outputs(self, T, u, values):
-        """Fill `values` (self.outputs order) with the outputs for node temperatures T and inputs u."""
+    def _outputs(self, T, u, values, s=None, T0=None):
+        """Fill `values` (self.outputs order) with the outputs for node temperatures T and inputs u, the shaft's
+        axial float s (m) and the initial temperatures T0 (K) (None: the model's)."""
         u = np.asarray(u, dtype=float)
-        T0 = self.T0 if self.T0 is not None else np.full(len(T), self._start_temperature(u))
+        if T0 is None:
+            T0 = self.T0 if self.T0 is not None else np.full(len(T), self._start_temperature(u))
         net = self.net
         nk.network_outputs(
             T,
             T0,
             u,
-            self.s,
+            self.s if s is None else s,
             self._heat_at,
             self._boundary_at,
             net.C,

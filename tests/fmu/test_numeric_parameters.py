@@ -203,9 +203,34 @@ def refusal(path, parameters):
             "lubricant_data.nu_1 = 0.0 m^2/s is outside the allowed range [2e-06, 1.0]",
         ),
         (
+            "dem_fmu",
+            {"bearing_from_file": False, "bearing_data.Ra_outer": 0.0},
+            "bearing_data.Ra_outer = 0.0 m and bearing_data.Ra_ball = 0.0 m give the outer contacts no roughness",
+        ),
+        (
+            "dem_fmu",
+            {"bearing_from_file": False, "bearing_data.Z": 10},
+            "bearing_data.cage_ball_radius = 0.00419 m and bearing_data.Z = 10 overlap",
+        ),
+        (
+            "bearing_fmu",
+            {"bearing_from_file": False, "bearing_data.bore": 0.1, "bearing_data.outer_diameter": 0.09},
+            "bearing_data.bore = 0.1 m leaves the inner ring no material under its groove: allowed below",
+        ),
+        (
             "spindle_thermal_fmu",
             {"network_from_file": False, "bearing_1.bore": 0.09},
-            "bearing_1.bore = 0.09 m must be > 0 and at most the inner groove diameter",
+            "bearing_1.bore = 0.09 m leaves the inner ring no material under its groove: allowed below",
+        ),
+        (
+            "spindle_thermal_fmu",
+            {"bearing_1.E_ring": 1e6},
+            "bearing_1.E_ring = 1000000.0 Pa is outside the allowed range [1e+10, 1e+12] Pa",
+        ),
+        (
+            "spindle_thermal_fmu",
+            {"network_from_file": False, "bearing_1.Pd": 0.01},
+            "bearing_1.Pd = 0.01 m is outside the allowed range [-0.0007938, 0.0007938] m",
         ),
         (
             "spindle_thermal_fmu",

@@ -144,6 +144,102 @@ def test_cage_mass_is_shared_by_the_dem_cage_balls(tmp_path):
         load_bearing(_write(tmp_path, text))
 
 
+def _numeric(name="6208", **changes):
+    """The bearing_data.* values of a catalogue bearing with `changes` (short names: Ra_inner, Z, ...)."""
+    from bearing_fmu.models.file_parameters import B, bearing_values
+
+    values = bearing_values(name)
+    values.update({B + key: value for key, value in changes.items()})
+    return values
+
+
+@pytest.mark.parametrize("race", ["inner", "outer"])
+def test_a_race_without_composite_roughness_is_refused_by_every_fidelity(tmp_path, race):
+    """Lambda = h_min / sigma needs sigma = 1.25 sqrt(Ra_race^2 + Ra_ball^2) > 0 on each race: the 6208 (ball_Ra 0)
+    with a race's Ra 0 is refused by the bearing file's reader, as a file and as the FMU's numeric parameters (named
+    as such), and by each facade given such a Bearing made by hand (unchecked, the DEM would report Lambda = inf, or
+    shrink its step without end); the B7214C, whose balls are rough, takes a smooth race."""
+    from dataclasses import replace
+
+    from bearing_fmu.models.dem import DemModel
+    from bearing_fmu.models.file_parameters import bearing_from_values
+    from bearing_fmu.models.quasi_static import QuasiStaticModel
+
+    key = f"Ra_{race}"
+    allowed = rf"\(allowed: bearing_data.{key} in \]0, 0.0001\] m, or bearing_data.Ra_ball in \]0, 0.0001\] m\)"
+    with pytest.raises(
+        ParameterError, match=rf"bearing_data.{key} = 0.0 m and bearing_data.Ra_ball = 0.0 m .*{allowed}"
+    ):
+        bearing_from_values(_numeric(**{key: 0.0}))
+    text = BASE.replace(f"{race}_race_Ra = {{ value = 0.3e-6", f"{race}_race_Ra = {{ value = 0.0")
+    with pytest.raises(ParameterError, match=rf"'surface.{race}_race_Ra' = 0.0 m and 'surface.ball_Ra' = 0.0 m"):
+        load_bearing(_write(tmp_path, text))
+    smooth = replace(load_bearing("6208"), **{key: 0.0})
+    for facade in (AnalyticModel, QuasiStaticModel, DemModel):
+        with pytest.raises(ParameterError, match=rf"'surface.{race}_race_Ra' = 0.0 m"):
+            facade(smooth, "guessasma_oil")
+    assert bearing_from_values(_numeric("B7214C", **{key: 0.0})).Ra_ball > 0.0
+
+
+def test_cage_balls_that_overlap_the_balls_are_refused_naming_z_and_the_radius():
+    """The 6208's cage balls (R_z = 4.19 mm) fit between its 9 balls: d_m sin(pi / 18) - D/2 = 4.223 mm. With 10
+    balls only 3.180 mm fits (overlapping cage balls would push the balls: 2.3 kN on an outer contact under 1 kN);
+    with 15, 34 um. Either is refused naming Z and the radius with what fits; a radius that fits, or none (the DEM's
+    estimate from the pockets), is taken."""
+    from bearing_fmu.kernels.ball_dynamics import state as s
+    from bearing_fmu.models.dem import DemModel
+    from bearing_fmu.models.file_parameters import bearing_from_values
+    from bearing_fmu.params import cage_ball_room
+
+    assert cage_ball_room(12.6e-3, 60.6e-3, 9) == pytest.approx(4.2231e-3, abs=1e-7)
+    for Z, room in ((10, "0.00317993"), (15, "3.44249e-05")):
+        with pytest.raises(
+            ParameterError,
+            match=rf"bearing_data.cage_ball_radius = 0.00419 m and bearing_data.Z = {Z} overlap: .* at most {room} m",
+        ):
+            bearing_from_values(_numeric(Z=Z))
+    assert bearing_from_values(_numeric(Z=10, cage_ball_radius=3.1e-3)).cage_ball_radius == 3.1e-3
+    estimated = DemModel(bearing_from_values(_numeric(Z=10, cage_ball_radius=0.0)), "guessasma_oil")
+    assert 0.0 < estimated.par[s.P_R_CAGE] < cage_ball_room(12.6e-3, 60.6e-3, 10)
+
+
+@pytest.mark.parametrize(
+    ("changes", "message"),
+    [
+        ({"bore": 0.048}, r"bearing_data.bore = 0.048 m leaves the inner ring no material under its groove: allowed "
+         r"below the inner groove bottom d_m - D - max\(P_d, 0\)/2 = 0.048 m"),
+        ({"outer_diameter": 0.07}, r"bearing_data.outer_diameter = 0.07 m leaves the outer ring no material under its "
+         r"groove: allowed above the outer groove bottom d_m \+ D \+ max\(P_d, 0\)/2 = 0.0732 m"),
+        ({"bore": 0.09, "outer_diameter": 0.08}, r"bearing_data.bore = 0.09 m leaves the inner ring"),
+        ({"width": 0.01}, r"bearing_data.width = 0.01 m is narrower than the inner ring's groove between its lands: "
+         r"allowed from 0.0103289 m"),
+    ],
+)  # fmt: skip
+def test_ring_sections_and_width_are_checked_for_every_fidelity(tmp_path, changes, message):
+    """Each ring keeps material under its groove (bore below d_m - D, outer diameter above d_m + D, so the bore is
+    below the outer diameter) and is as wide as its groove between the lands the shoulder truncation uses (the
+    6208's estimated lands 53.04 mm, 0.2 D above the groove bottom: 2 sqrt(h (2 f D - h)) = 10.33 mm): the numeric
+    parameters and a file are refused naming the value and the allowed bound, by the reader every fidelity uses;
+    the catalogue's dimensions are taken."""
+    from bearing_fmu.models.dem import DemModel
+    from bearing_fmu.models.file_parameters import bearing_from_values
+    from bearing_fmu.models.quasi_static import QuasiStaticModel
+
+    with pytest.raises(ParameterError, match=message):
+        bearing_from_values(_numeric(**changes))
+    text = BASE
+    for key, value in changes.items():
+        line = next(line for line in BASE.splitlines() if line.startswith(key + " "))
+        text = text.replace(line, f'{key} = {{ value = {value!r}, unit = "m", source = "test" }}')
+    path = _write(tmp_path, text)
+    for facade in (AnalyticModel, QuasiStaticModel, DemModel):
+        with pytest.raises(ParameterError, match=rf"'geometry.{next(iter(changes))}' = "):
+            facade(path, "guessasma_oil")
+    for name in catalogue("bearings"):
+        b = bearing_from_values(_numeric(name))
+        assert b.bore < b.dm - b.D and b.outer_diameter > b.dm + b.D
+
+
 def test_unknown_catalogue_name_lists_choices():
     with pytest.raises(ParameterError, match="unknown bearing 'xyz'.*6208"):
         load_bearing("xyz")

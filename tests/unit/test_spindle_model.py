@@ -264,6 +264,81 @@ def test_bad_inputs_name_the_input():
         SpindleThermalModel(integrator="implicit_euler", substeps=0)
 
 
+def _dimensions(**changes):
+    """The default network's main dimensions (the FMU parameters of network_from_file false) with `changes`."""
+    from spindle.thermal.declarations import dimension_rows
+    from spindle.thermal.model import load_spindle
+
+    values = {name: value for name, *_, value in dimension_rows(load_spindle("b7214c_x_pair"))}
+    return {**values, **changes}
+
+
+def test_ring_modulus_and_clearance_ranges_are_the_bearing_fmus():
+    """bearing_k.E_ring and bearing_k.Pd declare the ranges of the bearing FMUs' bearing_data.E_ring and
+    bearing_data.Pd (a steel or ceramic ring, 10 GPa to 1 TPa; |Pd| <= 10 mm), and in use the clearance is bounded by
+    the groove clearance (f_i + f_o - 1) D = 0.79 mm of the B7214C, as the bearing FMUs bound it. A ring of 1 MPa
+    would give dPd_thermal = -0.914 m at 10 000 rpm."""
+    from bearing_fmu.models.file_parameters import BEARING_QUANTITIES
+    from spindle.thermal.declarations import dimension_declarations
+    from spindle.thermal.model import load_spindle
+
+    thermal = {v.name: v for v in dimension_declarations(load_spindle("b7214c_x_pair"))}
+    bearing = {q.variable.name: q.variable for q in BEARING_QUANTITIES}
+    for k in (1, 2):
+        for name in ("E_ring", "Pd"):
+            ours, theirs = thermal[f"bearing_{k}.{name}"], bearing[f"bearing_data.{name}"]
+            assert (
+                (ours.min, ours.max) == (theirs.min, theirs.max) == {"E_ring": (1e10, 1e12), "Pd": (-1e-2, 1e-2)}[name]
+            )
+    with pytest.raises(
+        InputError, match=r"bearing_1.E_ring = 1000000.0 Pa is outside the allowed range \[1e\+10, 1e\+12\]"
+    ):
+        SpindleThermalModel(dimensions=_dimensions(**{"bearing_1.E_ring": 1e6}))
+    with pytest.raises(
+        ParameterError,
+        match=r"bearing_2.Pd = 0.01 m is outside the allowed range \[-0.0007938, 0.0007938\] m \(\|Pd\| <= "
+        r"\(f_i \+ f_o - 1\) D with bearing_2.D = 0.015875 m and the conformities f_i = 0.52, f_o = 0.53",
+    ):
+        SpindleThermalModel(dimensions=_dimensions(**{"bearing_2.Pd": 0.01}))
+    soft = SpindleThermalModel(dimensions=_dimensions(**{"bearing_1.E_ring": 1e10}))
+    soft.initialize(**RUN)
+    # 21 x the steel ring's centrifugal growth (-4.35 um of clearance at 10 000 rpm, docs/spindle_thermal.md)
+    assert -100e-6 < soft.step(1.0)["dPd_thermal_1"] < -80e-6
+
+
+def test_bore_is_checked_as_the_bearing_files():
+    """bearing_k.bore below the inner groove bottom d_m - D - max(Pd, 0)/2 (the B7214C: 81.598 mm), as a bearing
+    file's bore (bearing_fmu_common.bearing_file.check_ring_sections)."""
+    with pytest.raises(
+        ParameterError,
+        match=r"bearing_1.bore = 0.0816 m leaves the inner ring no material under its groove: allowed below the inner "
+        r"groove bottom d_m - D - max\(P_d, 0\)/2 = 0.081598 m \(bearing_1.d_m = 0.0975 m",
+    ):
+        SpindleThermalModel(dimensions=_dimensions(**{"bearing_1.bore": 0.0816}))
+    SpindleThermalModel(dimensions=_dimensions(**{"bearing_1.bore": 0.0815}))
+
+
+def test_an_impossible_clearance_change_is_refused_and_the_state_kept():
+    """dPd_thermal_k stays within what the bearing FMUs take as their input dPd_thermal: |dPd| <= 1 mm and
+    |Pd + dPd| <= (f_i + f_o - 1) D. At 30 000 rad/s (far beyond the bearing's d_m n limit) the B7214C's inner ring
+    would grow by 1.8 mm (dPd = -3.57 mm in a step, -3.58 mm at the steady state): refused naming the output, its
+    value and the range, as a step, at initialisation and at a steady state; the state is left unchanged."""
+    m = SpindleThermalModel()
+    m.initialize(**RUN)
+    before = m.get_state()
+    values = m.values.copy()
+    refused = r"dPd_thermal_1 = -0.0035\d* m \(thermal and centrifugal growth at omega = 30000.0 rad/s .*\) is "
+    refused += r"outside the allowed range \[-0.0008478, 0.0007397\] m"
+    with pytest.raises(SpindleInputError, match=refused):
+        m.step(1.0, omega=3e4)
+    assert m.get_state() == before and (m.values == values).all()
+    with pytest.raises(SpindleInputError, match=refused):
+        m.steady_state(omega=3e4)
+    with pytest.raises(SpindleInputError, match=refused):
+        SpindleThermalModel().initialize(**{**RUN, "omega": 3e4})
+    assert m.step(1.0, omega=OMEGA)["dPd_thermal_1"] < 0.0  # the run goes on
+
+
 def test_parameter_errors(tmp_path):
     """Parameter files are checked: a node cut off from every boundary (L singular) is named; a wrong
     unit, a split not summing to 1, an unknown catalogue name are reported with the key."""

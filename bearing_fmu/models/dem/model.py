@@ -14,7 +14,7 @@ from ...kernels.ball_dynamics import state as s
 from ...kernels.ball_dynamics.outputs import bearing_outputs
 from ...kernels.ball_dynamics.stiffness import stiffness_matrix
 from ...kernels.geometry import pass_frequencies
-from ...params import load_bearing, load_lubricant
+from ...params import check_roughness, load_bearing, load_lubricant
 from ...scene import Scene
 from ..declarations import DEM_INPUTS, DEM_OUTPUTS
 from ..declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
@@ -85,6 +85,7 @@ class DemModel:
             raise InputError(f"scene '{self.scene.name}' has fidelity {self.scene.fidelity!r}: DemModel needs 'dem'")
         self.bearing = b = load_bearing(bearing)
         self.lubricant = load_lubricant(lubricant)
+        check_roughness(b.Ra_inner, b.Ra_outer, b.Ra_ball, b.path)  # the reader's check, for a Bearing made by hand
         self.Pd = b.Pd if Pd is None else float(Pd)
         check_clearance(self.Pd, b, Pd is not None)
         self.support, kt_ratio = inputs.checked_settings(

@@ -10,7 +10,7 @@ import numpy as np
 from ...kernels.ball_dynamics import state as s
 from ...kernels.geometry import ball_mass
 from ...kernels.hertz import hertz_contact, hertz_stiffness
-from ...params import load_dem_constants
+from ...params import cage_ball_room, load_dem_constants
 from ..contacts import contact_terms, pack, race_contacts, truncation_parameters
 from ..film_table import film_table_array
 from ..variables import P_MAX_ERROR, InputError
@@ -126,8 +126,10 @@ def _pack_cage(p, bearing, rest):
     D = b.D
     E_c, nu_c, rho_c = cage_material(b)
     pitch = rest[0]
-    half_pocket = pitch * 2.0 * math.sin(0.5 * math.pi / b.Z)  # ball centre to the mid-angle point
-    R_z = b.cage_ball_radius if b.cage_ball_radius > 0.0 else half_pocket - 0.5 * D - CONSTANTS.cage_pocket_play * D
+    # a given radius fits between the balls on the pitch circle (the bearing file's reader checks it); an estimated
+    # one leaves the pocket play on the circle of the balls at rest
+    room = cage_ball_room(D, 2.0 * pitch, b.Z)
+    R_z = b.cage_ball_radius if b.cage_ball_radius > 0.0 else room - CONSTANTS.cage_pocket_play * D
     if R_z <= 0.0:
         raise InputError(
             f"bearing '{b.name}': no room for cage balls between {b.Z} balls of {D} m "
