@@ -333,16 +333,17 @@ def _traction_grad(a_i, a_o, Q_i, Q_o, omega, dm, D, m_ball, cen, tw, g):
     """RACE_TRACTION's kinematic terms (F_c, Mg_o, Mg_i) as _kin_grad gives a hypothesis' (rows KG_*), solved from
     the film's traction for the contacts (a_i, a_o, Q_i, Q_o) (kernels.ball_traction), with their partials in a_i,
     a_o, Q_i (column KG_DC) and Q_o (KG_DQO). Mg_o, Mg_i are minus the in-plane traction forces (this kernel's sign
-    of lam M_g / D). tw = (tr, y, out, Dy, dout, terms, dydp, p, ws) (traction_work): the traction block, y (4,
-    rad/s) the ball's kinematics, warm start and solution, the solver's work, and the derivatives dy/dp at the last
+    of lam M_g / D). tw = (tr, y, out, Dy, dout, terms, dydp, p, ws, cw) (traction_work): the traction block, y (4,
+    rad/s) the ball's kinematics, warm start and solution, the solver's work (ws; cw the coupled Newton's, whose flag
+    cw[5] says its last evaluation is current), and the derivatives dy/dp at the last
     contacts p of the same ball (p[2] = 0: none), from which the next solve of the ball starts. A solve that does
     not converge gives NaN. Where the coupled Newton (kernels.ball_coupled_newton) has just converged at these
     contacts, its last evaluation (out, Dy, dout and terms, at y) is the solve's, verified there to the same
     tolerance, and is taken as it is."""
-    tr, y, out, Dy, dout, terms, dydp, p, ws = tw[:9]
+    tr, y, out, Dy, dout, terms, dydp, p, ws, cw = tw
     J = 0.1 * m_ball * D * D  # the ball's own balance: its gyroscopic moment whatever the hypotheses' option
     y0, y1, y2, y3 = y[0], y[1], y[2], y[3]
-    fresh = tw[9][5]
+    fresh = cw[5]
     coupled = fresh[0] > 0.0 and ws[0][0] == a_i and ws[0][1] == a_o and ws[0][2] == Q_i and ws[0][3] == Q_o
     fresh[0] = 0.0
     predicted = p[2] > 0.0 and not coupled
