@@ -17,7 +17,6 @@ import argparse
 import csv
 import hashlib
 import io
-import math
 import shutil
 import sys
 import tempfile
@@ -29,11 +28,8 @@ from bearing_fmu_common.runtime.build import install_runtime
 from bearing_fmu_common.variables import select
 
 from .compiled_code import COMPILED_DIR, add_compiled_code
+from .fidelities import FIDELITIES
 from .fmu_files import add_documentation, crosscheck_tables, entry_metadata
-from .models.analytic import AnalyticModel
-from .models.declarations import DEFAULT_FIXED_PRELOAD
-from .models.dem import DemModel
-from .models.quasi_static import QuasiStaticModel
 from .scene import Scene
 
 PACKAGE_DIR = Path(__file__).resolve().parent
@@ -246,7 +242,7 @@ def build_fmu(scene_file, out_dir=DEFAULT_OUT, configuration=None):
     scene = Scene.from_dict(scene_dict)  # fail early, listing every problem
     model = make_model(scene, {key: source for key, (_, source) in choices.items()})
     rows = reference_rows(scene, model)
-    step = DEM_REFERENCE_STEP if scene.fidelity == "dem" else REFERENCE_STEP
+    step = FIDELITIES[scene.fidelity].reference_step
     starts = {v.name: v.start_in(scene) for v in model.inputs}
     inputs, reference, stop = crosscheck_tables(rows, starts, step, starts)
     names = {key: name for key, (name, _) in choices.items()}
@@ -413,30 +409,16 @@ def scene_variables(scene_file, fmu_name=None, choices=None):
 
 
 def reference_inputs(scene):
-    """The reference experiment of a scene (input dicts, SI): a speed ramp at constant load.
-
-    analytic: 6208 at 3 kN radial, 40 C, 0-1700 rad/s; dem: dem_reference_inputs(); quasi_static: B7214C
-    at 800 N axial and 500 N radial (load drive) or at z = 20 um, x = 2 um (imposed) or with 500 N radial at 5 um beyond
-    the 800 N assembly offset (fixed_axial), 40 C, 0-10 000 rpm."""
-    if scene.fidelity == "analytic":
-        return [{"omega": float(w), "F_y": 3000.0, "T_oil": 313.15} for w in range(0, 1701, 50)]
-    if scene.fidelity == "dem":
-        return dem_reference_inputs()
-    speeds = [n * 2.0 * math.pi / 60.0 for n in range(0, 10001, 500)]
-    if scene.drive == "displacement":
-        return [{"omega": w, "x": 2e-6, "z": 20e-6, "T_oil": 313.15} for w in speeds]
-    if scene.drive == "fixed_axial":  # assembly offset of the FMU's default F_preload, 5 um tighter
-        return [{"omega": w, "F_x": 500.0, "z": 5e-6, "T_oil": 313.15} for w in speeds]
-    return [{"omega": w, "F_x": 500.0, "F_z": 800.0, "T_oil": 313.15} for w in speeds]
-
-
-REFERENCE_STEP = 0.1  # s, communication step of the analytic and quasi-static reference experiments
+    """The reference experiment of a scene's FMU (input dicts, SI), declared by its fidelity (models.fidelity):
+    analytic, the 6208 at 3 kN radial over 0-1700 rad/s; quasi-static, the B7214C over 0-10 000 rpm; DEM, the 6208's
+    start-up to 500 rad/s and a load step (models.dem.fidelity.reference_inputs)."""
+    return FIDELITIES[scene.fidelity].reference_inputs(scene)
 
 
 def compile_runs(scene):
     """The simulate_fmu runs that compile the kernels of a scene's FMU at build (compiled_code): ten steps
     with the start values, then the reference experiment ({"options": keywords, "inputs": rows with time, s})."""
-    step = DEM_REFERENCE_STEP if scene.fidelity == "dem" else REFERENCE_STEP
+    step = FIDELITIES[scene.fidelity].reference_step
     rows = [{"time": row.get("time", n * step), **row} for n, row in enumerate(reference_inputs(scene))]
     return [
         {"options": {"stop_time": 10 * step, "output_interval": step}},
@@ -444,34 +426,10 @@ def compile_runs(scene):
     ]
 
 
-DEM_REFERENCE_STEP = 0.5e-3  # s, communication step of the DEM reference experiment
-
-
-def dem_reference_inputs():
-    """The DEM reference experiment, one dict per communication point (time = end of the step, s): the 6208
-    at 3 kN radial, 40 C, speed ramp 0 -> 500 rad/s over 5 ms, steady to 6 ms, then a load step to 4 kN
-    held to 8 ms (a step of 0.5 ms). Each row's inputs hold over the step that ends at its time."""
-    rows = []
-    for n in range(1, 17):
-        t = n * DEM_REFERENCE_STEP
-        omega = 500.0 * min(t / 5e-3, 1.0)
-        rows.append({"time": t, "omega": omega, "F_x": 3000.0 if t <= 6e-3 else 4000.0, "T_oil": 313.15})
-    return rows
-
-
 def make_model(scene, choices=None):
     """The Python model of a scene with its FMU's default parameters, or those `choices` sets (bearing,
-    lubricant, race_control: catalogue names or files)."""
-    choices = dict(choices or {})
-    if scene.fidelity == "analytic":
-        choices.pop("race_control", None)  # a quasi-static parameter: the other fidelities have none
-        return AnalyticModel(scene=scene, **choices)
-    if scene.fidelity == "dem":
-        choices.pop("race_control", None)
-        return DemModel(scene=scene, **choices)
-    if scene.drive == "fixed_axial":
-        return QuasiStaticModel(scene=scene, F_preload=DEFAULT_FIXED_PRELOAD, **choices)
-    return QuasiStaticModel(scene=scene, **choices)
+    lubricant, race_control: catalogue names or files; a choice the fidelity does not take is left out)."""
+    return FIDELITIES[scene.fidelity].make_model(scene, choices)
 
 
 def reference_rows(scene, model=None):

@@ -15,12 +15,10 @@ from pythonfmu.enums import Fmi2Status
 from bearing_fmu_common.fmi import DeclaredSlave, check_parameters, declared_parameter
 from bearing_fmu_common.variables import select
 
+from .fidelities import FIDELITIES
 from .kernels.ball_dynamics.state import ST_CODE
-from .models.analytic import AnalyticModel
-from .models.declarations import ANALYTIC_PARAMETERS, DEM_PARAMETERS, QUASI_STATIC_PARAMETERS
-from .models.dem import DemModel, DemUnstableError
+from .models.dem import DemUnstableError
 from .models.file_parameters import BEARING_PREFIX, LUBRICANT_PREFIX, bearing_from_values, lubricant_from_values
-from .models.quasi_static import QuasiStaticModel
 from .models.variables import InputError
 from .params import ParameterError
 from .scene import LUBRICATION_METHODS, RACE_CONTROLS, Scene, SceneError
@@ -33,8 +31,9 @@ class _BearingSlave(DeclaredSlave):
     """Common FMI plumbing: parameters, inputs and outputs from the declarations, guarded calls, full state."""
 
     author = "bearing_fmu developers"
+    fidelity = FIDELITIES["analytic"]  # its facade and parameters (models.fidelity)
     scene = Scene()
-    parameters = ()  # declarations of the FMU's parameters (models.declarations)
+    parameters = fidelity.parameters  # declarations of the FMU's parameters (models.declarations)
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
@@ -70,8 +69,14 @@ class _BearingSlave(DeclaredSlave):
         """The clearance that replaces the bearing's (m), None: the bearing's own (Pd_from_file)."""
         return None if self.Pd_from_file else self.Pd
 
+    def _model_options(self):
+        """The facade's keyword arguments beyond bearing, lubricant, scene and clearance (from the parameters)."""
+        return {}
+
     def _make_model(self):
-        raise NotImplementedError
+        return self.fidelity.model(
+            self._bearing(), self._lubricant(), self.scene, Pd=self._clearance(), **self._model_options()
+        )
 
     def _build_model(self):
         check_parameters(self, self._parameters)
@@ -150,11 +155,6 @@ class BearingAnalytic(_BearingSlave):
         "capacitance. SI units."
     )
 
-    parameters = ANALYTIC_PARAMETERS
-
-    def _make_model(self):
-        return AnalyticModel(self._bearing(), self._lubricant(), self.scene, Pd=self._clearance())
-
 
 class BearingQuasiStatic(_BearingSlave):
     """Quasi-static 5-DOF ball bearing (Jones/Harris) with film, capacitance, Houpert torque and stiffness."""
@@ -164,9 +164,9 @@ class BearingQuasiStatic(_BearingSlave):
         "equilibrium (centrifugal force, gyroscopic moment, race control), exact Hertz contacts, "
         "5x5 stiffness, EHL film, regime, capacitance, Houpert friction torque and ring heat. SI units."
     )
+    fidelity = FIDELITIES["quasi_static"]
     scene = Scene(name="quasi_static", fidelity="quasi_static")
-
-    parameters = QUASI_STATIC_PARAMETERS
+    parameters = fidelity.parameters
     F_preload = 0.0  # N: no assembly offset unless the scene's drive is fixed_axial (then a parameter)
 
     def _race_control(self):
@@ -177,16 +177,8 @@ class BearingQuasiStatic(_BearingSlave):
         """The lubrication method in effect: lubrication_mode's unless it is -1, then the String lubrication's."""
         return self.lubrication if self.lubrication_mode < 0 else LUBRICATION_METHODS[self.lubrication_mode]
 
-    def _make_model(self):
-        return QuasiStaticModel(
-            self._bearing(),
-            self._lubricant(),
-            self.scene,
-            Pd=self._clearance(),
-            race_control=self._race_control(),
-            F_preload=self.F_preload,
-            lubrication=self._lubrication(),
-        )
+    def _model_options(self):
+        return {"race_control": self._race_control(), "F_preload": self.F_preload, "lubrication": self._lubrication()}
 
 
 class BearingDEM(_BearingSlave):
@@ -202,29 +194,25 @@ class BearingDEM(_BearingSlave):
         "in time, per-contact EHL film, regime, friction and damping, Houpert resistances, capacitance; "
         "torque and ring heat from the energy dissipated over the step. SI units."
     )
+    fidelity = FIDELITIES["dem"]
     scene = Scene(name="dem", fidelity="dem")
-
-    parameters = DEM_PARAMETERS
+    parameters = fidelity.parameters
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
         self._monitor_slot = self._model.output_names.index("monitor_status")
 
-    def _make_model(self):
-        return DemModel(
-            self._bearing(),
-            self._lubricant(),
-            self.scene,
-            dt=None if self.dt == 0.0 else self.dt,  # 0 = automatic
-            Pd=self._clearance(),
-            refresh_interval=self.refresh_interval,
-            averaged=bool(self.average_outputs),
-            averaged_state=bool(self.average_state_outputs),
-            traction_limit=self.traction_limit,
-            support_stiffness=self.support_stiffness,
-            support_damping=self.support_damping,
-            support_mass=self.support_mass,
-        )
+    def _model_options(self):
+        return {
+            "dt": None if self.dt == 0.0 else self.dt,  # 0 = automatic
+            "refresh_interval": self.refresh_interval,
+            "averaged": bool(self.average_outputs),
+            "averaged_state": bool(self.average_state_outputs),
+            "traction_limit": self.traction_limit,
+            "support_stiffness": self.support_stiffness,
+            "support_damping": self.support_damping,
+            "support_mass": self.support_mass,
+        }
 
     def _advance(self, step_size):
         self._y = self._model.update(self._u, step_size).tolist()

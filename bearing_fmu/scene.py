@@ -10,7 +10,6 @@ from dataclasses import dataclass, fields, replace
 from .kernels.capacitance import PRESSURE_MAX, PRESSURE_MEAN
 from .kernels.ehl import FILM_CHITTENDEN, FILM_HAMROCK_DOWSON, FILM_MASJEDI_KHONSARI
 
-FIDELITIES = ("analytic", "quasi_static", "dem")
 DRIVES = ("load", "displacement", "fixed_axial")  # which DOFs are load- or displacement-controlled
 RACE_CONTROLS = ("outer", "inner", "hybrid", "traction")
 FILM_FORMULAS = {
@@ -26,6 +25,75 @@ CAPACITANCE_REGIONS = ("hertz", "lubricated")  # the contact's capacitor: its He
 # lubrication methods (docs/lubrication_method.md; their defaults in models.lubrication.METHODS)
 LUBRICATION_METHODS = ("flooded", "oil_bath", "oil_jet", "oil_air", "grease")
 DRAG_METHODS = ("oil_bath", "oil_jet", "oil_air")
+
+
+_QUASI_STATIC_ONLY = "{option} = {value} needs fidelity = 'quasi_static'"
+_IN_THE_DEM = (
+    "{option} = {value} is a quasi-static option (the DEM always has the gyroscopic moment, the torque and the "
+    "dPd_thermal input)"
+)
+
+
+@dataclass(frozen=True)
+class FidelityRules:
+    """The scene options a fidelity accepts (its facade: bearing_fmu.fidelities).
+
+    allowed: option -> (the values the fidelity accepts, the message for any other: {option} and {value} are filled);
+        an option not listed takes every value the scene allows.
+    torque_always: the fidelity computes the friction torque whatever the option `torque` says (the drag of a bath,
+        jet or oil-air method is then computed and exposed).
+    """
+
+    allowed: dict
+    torque_always: bool = False
+
+    def problems(self, scene, refused=()):
+        """The scene's options this fidelity does not accept, except those in `refused` (refused for every one)."""
+        out = []
+        for option, (values, message) in self.allowed.items():
+            value = getattr(scene, option)
+            if value not in values and option not in refused:
+                out.append(message.format(option=option, value=_shown(value)))
+        return out
+
+
+def _shown(value):
+    """An option's value as a scene file writes it (true, 'load')."""
+    return str(value).lower() if isinstance(value, bool) else repr(value)
+
+
+# What each fidelity accepts beyond the options every fidelity takes; a new fidelity declares its rules here.
+FIDELITY_RULES = {
+    "analytic": FidelityRules(
+        {
+            "spring_constant": (("hertz",), _QUASI_STATIC_ONLY),
+            **{option: ((False,), _QUASI_STATIC_ONLY) for option in ("gyroscopic", "torque", "stiffness")},
+            "thermal_inputs": ((False,), _QUASI_STATIC_ONLY),
+            "drive": (("load",), _QUASI_STATIC_ONLY + " (analytic is load-driven)"),
+        },
+        torque_always=True,
+    ),
+    "quasi_static": FidelityRules({}),
+    "dem": FidelityRules(
+        {
+            "spring_constant": (("hertz",), _QUASI_STATIC_ONLY),
+            "life": ((False,), "life = true needs fidelity = 'analytic' or 'quasi_static'"),
+            **{option: ((False,), _IN_THE_DEM) for option in ("gyroscopic", "torque", "thermal_inputs")},
+            "drive": (("load",), _QUASI_STATIC_ONLY + " (the DEM is load-driven)"),
+            "centrifugal": (
+                (True,),
+                "centrifugal = false is not possible with fidelity = 'dem' (the balls' orbit makes it)",
+            ),
+            "lubrication": (
+                ("flooded",),
+                "lubrication = {value} is not in the DEM yet (docs/lubrication_method.md, the DEM hook): "
+                "allowed 'flooded' with fidelity = 'dem'",
+            ),
+        },
+        torque_always=True,
+    ),
+}
+FIDELITIES = tuple(FIDELITY_RULES)
 
 
 class SceneError(ValueError):
@@ -126,7 +194,7 @@ class Scene:
     def drag(self):
         """The drag of the balls is computed and exposed (torque_drag, P_drag): a bath, jet or oil-air method, in
         the analytic fidelity or with the quasi-static torque."""
-        return self.lubrication in DRAG_METHODS and (self.fidelity == "analytic" or self.torque)
+        return self.lubrication in DRAG_METHODS and (FIDELITY_RULES[self.fidelity].torque_always or self.torque)
 
     def problems(self):
         """List of human-readable problems (empty when the scene is valid)."""
@@ -163,29 +231,12 @@ class Scene:
             out.append(f"race_control = {self.race_control!r}: allowed {list(RACE_CONTROLS)}")
         if self.spring_constant not in SPRING_CONSTANTS:
             out.append(f"spring_constant = {self.spring_constant!r}: allowed {list(SPRING_CONSTANTS)}")
-        elif self.spring_constant != "hertz" and self.fidelity != "quasi_static":
-            out.append(f"spring_constant = {self.spring_constant!r} needs fidelity = 'quasi_static'")
-        if self.life and self.fidelity == "dem":
-            out.append("life = true needs fidelity = 'analytic' or 'quasi_static'")
         if not 5 <= self.max_iterations <= 1000:
             out.append(f"max_iterations = {self.max_iterations}: allowed [5, 1000]")
-        if self.fidelity == "analytic":
-            for option in ("gyroscopic", "torque", "stiffness", "thermal_inputs"):
-                if getattr(self, option):
-                    out.append(f"{option} = true needs fidelity = 'quasi_static'")
-            if self.drive != "load":
-                out.append(f"drive = {self.drive!r} needs fidelity = 'quasi_static' (analytic is load-driven)")
-        if self.fidelity == "dem":
-            for option in ("gyroscopic", "torque", "thermal_inputs"):
-                if getattr(self, option):
-                    out.append(
-                        f"{option} = true is a quasi-static option (the DEM always has the gyroscopic moment, the "
-                        "torque and the dPd_thermal input)"
-                    )
-            if self.drive != "load":
-                out.append(f"drive = {self.drive!r} needs fidelity = 'quasi_static' (the DEM is load-driven)")
-            if not self.centrifugal:
-                out.append("centrifugal = false is not possible with fidelity = 'dem' (the balls' orbit makes it)")
+        if self.fidelity in FIDELITY_RULES:
+            choices = {"spring_constant": SPRING_CONSTANTS, "lubrication": LUBRICATION_METHODS}
+            refused = [name for name, allowed in choices.items() if getattr(self, name) not in allowed]
+            out += FIDELITY_RULES[self.fidelity].problems(self, refused)
         out += self._lubrication_problems()
         if self.background_capacitance > 0.0 and not self.capacitance:
             out.append("background_capacitance > 0 needs capacitance = true")
@@ -195,11 +246,6 @@ class Scene:
         out = []
         if self.lubrication not in LUBRICATION_METHODS:
             return [f"lubrication = {self.lubrication!r}: allowed {list(LUBRICATION_METHODS)}"]
-        if self.lubrication != "flooded" and self.fidelity == "dem":
-            out.append(
-                f"lubrication = {self.lubrication!r} is not in the DEM yet (docs/lubrication_method.md, the DEM hook): "
-                "allowed 'flooded' with fidelity = 'dem'"
-            )
         checks = (
             ("oil_level", "", 0.0, 20.0, ("oil_bath",)),
             ("inlet_oil_layer", " m", 1e-8, 1e-2, LUBRICATION_METHODS[1:]),

@@ -16,6 +16,7 @@ import math
 from pathlib import Path
 
 from bearing_fmu import build as bearing_build
+from bearing_fmu.fidelities import FIDELITIES
 from bearing_fmu.fmu_files import add_documentation
 
 from .thermal.declarations import parameter_declarations
@@ -155,22 +156,10 @@ def _names(variables, units=True):
     return ", ".join(shown)
 
 
-DRIVE_WORDS = {
-    "load": "loads in, displacements out",
-    "displacement": "displacements in, reaction loads out",
-    "fixed_axial": "fixed axial position (fixed preload): axial reaction out",
-}
-
-
 def _summary(name, scene):
-    """A few words on what the FMU models: its fidelity and drive, or its network options."""
+    """A few words on what the FMU models: its fidelity's summary (with its drive), or its network options."""
     if scene:
-        scene = scene[0]
-        if scene.fidelity == "analytic":
-            return "analytic bearing"
-        if scene.fidelity == "dem":
-            return "DEM (ball dynamics) bearing, loads in, displacements out"
-        return f"quasi-static bearing, {DRIVE_WORDS[scene.drive]}"
+        return FIDELITIES[scene[0].fidelity].summary(scene[0])
     return "thermal spindle" + (", axial float of a fixed-preload pair" if THERMAL_FMUS[name][1] else "")
 
 

@@ -20,7 +20,8 @@ from ..kernels.loaddist import gauss_legendre
 from ..params import check_roughness, load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
 from .contacts import RaceContacts, truncation_parameters, truncation_warnings
-from .declarations import ANALYTIC_INPUTS, ANALYTIC_OUTPUTS
+from .declarations import ANALYTIC_INPUTS, ANALYTIC_OUTPUTS, ANALYTIC_PARAMETERS
+from .fidelity import Fidelity
 from .film_table import film_table_array
 from .input_checks import check_clearance
 from .lubrication import Lubrication, LubricationWatch, pack_lubrication
@@ -208,3 +209,19 @@ class AnalyticModel:
                 f"F_y = {F_y} N, T_oil = {T_oil} K: please report this case"
             )
         return values
+
+
+def reference_inputs(scene):
+    """The analytic FMU's reference experiment (SI): the 6208 at 3 kN radial, 40 C, 0-1700 rad/s in steps of 50."""
+    return [{"omega": float(w), "F_y": 3000.0, "T_oil": 313.15} for w in range(0, 1701, 50)]
+
+
+FIDELITY = Fidelity(
+    name="analytic",
+    model=AnalyticModel,
+    parameters=ANALYTIC_PARAMETERS,
+    choices=("bearing", "lubricant"),
+    reference_step=0.1,
+    reference_inputs=reference_inputs,
+    summary=lambda scene: "analytic bearing",
+)

@@ -27,6 +27,7 @@ from ..params import check_roughness, load_bearing, load_lubricant
 from ..scene import LUBRICATION_METHODS, RACE_CONTROLS, Scene
 from .contacts import contact_terms, pack, race_contacts, traction_block, truncation_parameters, truncation_warnings
 from .declarations import (
+    DEFAULT_FIXED_PRELOAD,
     DISPLACEMENT_LIMIT,
     DOF_NAMES,
     DRIVE_CONTROL,
@@ -35,6 +36,7 @@ from .declarations import (
     QUASI_STATIC_OUTPUTS,
     QUASI_STATIC_PARAMETERS,
 )
+from .fidelity import Fidelity
 from .film_table import film_table_array
 from .friction import FrictionWatch
 from .input_checks import check_clearance
@@ -520,3 +522,39 @@ class QuasiStaticModel:
         self.X[:] = state["X"]
         self._truncated[:] = state.get("truncated", (0.0, 0.0))
         self._friction.set_state(state.get("friction", {}))
+
+
+DRIVE_WORDS = {
+    "load": "loads in, displacements out",
+    "displacement": "displacements in, reaction loads out",
+    "fixed_axial": "fixed axial position (fixed preload): axial reaction out",
+}
+
+
+def reference_inputs(scene):
+    """The quasi-static FMU's reference experiment (SI): the B7214C at 40 C, 0-10 000 rpm in steps of 500 rpm,
+    at 800 N axial and 500 N radial (load drive), at z = 20 um, x = 2 um (displacement drive) or with 500 N radial
+    at 5 um beyond the 800 N assembly offset (fixed_axial drive)."""
+    speeds = [n * 2.0 * math.pi / 60.0 for n in range(0, 10001, 500)]
+    if scene.drive == "displacement":
+        return [{"omega": w, "x": 2e-6, "z": 20e-6, "T_oil": 313.15} for w in speeds]
+    if scene.drive == "fixed_axial":  # assembly offset of the FMU's default F_preload, 5 um tighter
+        return [{"omega": w, "F_x": 500.0, "z": 5e-6, "T_oil": 313.15} for w in speeds]
+    return [{"omega": w, "F_x": 500.0, "F_z": 800.0, "T_oil": 313.15} for w in speeds]
+
+
+def build_options(scene):
+    """The reference model's assembly preload: the Rabreau rig's 800 N in a fixed-preload scene, none otherwise."""
+    return {"F_preload": DEFAULT_FIXED_PRELOAD} if scene.drive == "fixed_axial" else {}
+
+
+FIDELITY = Fidelity(
+    name="quasi_static",
+    model=QuasiStaticModel,
+    parameters=QUASI_STATIC_PARAMETERS,
+    choices=("bearing", "lubricant", "race_control"),
+    reference_step=0.1,
+    reference_inputs=reference_inputs,
+    summary=lambda scene: f"quasi-static bearing, {DRIVE_WORDS[scene.drive]}",
+    build_options=build_options,
+)

@@ -28,7 +28,8 @@ from fmpy.fmi2 import FMU2Slave
 from fmpy.validation import validate_fmu
 
 import bearing_fmu
-from bearing_fmu.build import DEM_REFERENCE_STEP, REFERENCE_STEP, SCENES_DIR, dem_reference_inputs, reference_inputs
+from bearing_fmu.build import SCENES_DIR
+from bearing_fmu.fidelities import FIDELITIES
 from bearing_fmu.scene import Scene
 from bearing_fmu_common.variables import TYPICAL_MAGNITUDE
 from spindle.check import NOT_COMPARED, compare
@@ -63,9 +64,9 @@ def expected_experiment(name):
         return 3600.0, 60.0
     with open(SCENES_DIR / BEARINGS[name], "rb") as fh:
         scene = Scene.from_dict(tomllib.load(fh)["scene"])
-    if scene.fidelity == "dem":
-        return dem_reference_inputs()[-1]["time"], DEM_REFERENCE_STEP
-    return len(reference_inputs(scene)) * REFERENCE_STEP, REFERENCE_STEP  # one step per point, from 0
+    fidelity = FIDELITIES[scene.fidelity]
+    rows, step = fidelity.reference_inputs(scene), fidelity.reference_step
+    return rows[-1].get("time", len(rows) * step), step  # without times: one step per point, from 0
 
 
 @pytest.mark.parametrize("fmu", ALL + CONFIGURED, indirect=True)
