@@ -6,6 +6,6 @@ registry and need no change.
 """
 
 from .models import analytic, quasi_static
-from .models.dem import fidelity as dem
+from .models.dem import model as dem
 
 FIDELITIES = {fidelity.name: fidelity for fidelity in (analytic.FIDELITY, quasi_static.FIDELITY, dem.FIDELITY)}
