@@ -17,7 +17,7 @@ _PUBLIC = {
     "SolverError": "bearing_fmu.models.quasi_static",
     "PairAssembly": "bearing_fmu.models.pair",
     "solve_pair": "bearing_fmu.models.pair",
-    "InputError": "bearing_fmu.models.variables",
+    "InputError": "bearing_fmu.models.limits",
     "Scene": "bearing_fmu.scene",
     "SceneError": "bearing_fmu.scene",
     "load_bearing": "bearing_fmu.params",

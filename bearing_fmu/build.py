@@ -24,7 +24,7 @@ from pathlib import Path
 
 from pythonfmu.builder import FmuBuilder
 
-from bearing_fmu_common.runtime.build import install_runtime
+from bearing_fmu_common.runtime.binaries import install_runtime
 from bearing_fmu_common.variables import select
 
 from .compiled_code import COMPILED_DIR, add_compiled_code

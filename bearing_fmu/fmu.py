@@ -19,7 +19,7 @@ from .fidelities import FIDELITIES
 from .kernels.ball_dynamics.state import ST_CODE
 from .models.dem import DemUnstableError
 from .models.file_parameters import BEARING_PREFIX, LUBRICANT_PREFIX, bearing_from_values, lubricant_from_values
-from .models.variables import InputError
+from .models.limits import InputError
 from .params import ParameterError
 from .scene import LUBRICATION_METHODS, RACE_CONTROLS, Scene, SceneError
 

@@ -29,7 +29,7 @@ from numba import njit
 from bearing_fmu.kernels.ball_dynamics import integrator as dyn
 from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.kernels.ball_dynamics.cage import ball_cage_contact, cage_guide_contact
-from bearing_fmu.kernels.ball_dynamics.contacts import ball_race_contact, groove_approach
+from bearing_fmu.kernels.ball_dynamics.contact_law import ball_race_contact, groove_approach
 from bearing_fmu.kernels.ball_dynamics.tribology import TC_SIZE, race_circle, refresh_tribology, tribology_constants
 from bearing_fmu.kernels.lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
 from bearing_fmu.models.dem import REFRESH_INTERVAL, DemModel

@@ -2,7 +2,7 @@
 
 `KernelRecorder(modules)` wraps each numba dispatcher of the given modules for the duration of a `with` block and
 records every call with copies of its array arguments taken before the call (the warm-start state a kernel reads
-is part of its work); facades call kernels through their module (``qk.solve_quasistatic``), so wrapping the
+is part of its work); facades call kernels through their module (``jones_harris.solve_quasistatic``), so wrapping the
 module attribute sees every call they make. `replay_time(calls)` repeats exactly those calls, in order, on fresh
 copies: what the run would cost with no Python between the kernels (no facade, no FMI, no master). Its default
 clock is this process's CPU time, which other processes on shared cores do not lengthen.

@@ -6,7 +6,7 @@ Run: python -m benchmarks.kernel_timing: docs/reports/kernel_timing.md
 
 import numpy as np
 
-from bearing_fmu.kernels import radial_bearing as ak
+from bearing_fmu.kernels import radial_bearing
 from bearing_fmu.kernels.capacitance import (
     ball_capacitance,
     bearing_capacitance,
@@ -52,7 +52,7 @@ from .render import cli, metric
 
 def cases():
     m = AnalyticModel()
-    E = m.brg[ak.B_E_RED]
+    E = m.brg[radial_bearing.B_E_RED]
     nodes, weights = gauss_legendre(48)
     vg68 = load_lubricant("iso_vg68_mineral").array
     turb = load_lubricant("thesis_turbine_oil").array
@@ -113,9 +113,9 @@ def analytic_rows():
         (10e-6, "P_d = 10 um (Newton on the radial shift)", "P_d = 10 um"),
     ):
         m = AnalyticModel(Pd=Pd)
-        out, ball = np.zeros(ak.O_SIZE), np.zeros((8, 9))
+        out, ball = np.zeros(radial_bearing.O_SIZE), np.zeros((8, 9))
         k_args = (500.0, 3000.0, 313.15, m.brg, m.lubricant.array, m.nodes, m.weights, out, ball)
-        kernel = median_time(ak.analytic_bearing, *k_args, number=NUMBER)
+        kernel = median_time(radial_bearing.analytic_bearing, *k_args, number=NUMBER)
         rows.append((f"kernel analytic_bearing, {label}", f"analytic kernel, {key} (median)", kernel))
         model = median_time(m.evaluate, 500.0, 3000.0, 313.15, number=NUMBER)
         what = f"AnalyticModel.evaluate (input checks + kernel + output dict), {label}"

@@ -17,9 +17,8 @@ from functools import partial
 
 import numpy as np
 
-from bearing_fmu.kernels import contacts as ck
-from bearing_fmu.kernels import jones_harris as qk
-from bearing_fmu.kernels import radial_bearing as ak
+from bearing_fmu.kernels import contact_outputs as ck
+from bearing_fmu.kernels import jones_harris, radial_bearing
 from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.models.quasi_static import DOF_NAMES, LOAD_NAMES, QuasiStaticModel
 from bearing_fmu.scene import Scene
@@ -50,7 +49,7 @@ def _repeat_step(n, F_applied, control, d0, X0, qs, omega, T_oil, cp, lub, d, X,
     for _ in range(n):
         d[:] = d0
         X[:, :] = X0
-        s += qk.solve_quasistatic(F_applied, control, d, qs, 0.0, omega, X, F, K, balls)[0]
+        s += jones_harris.solve_quasistatic(F_applied, control, d, qs, 0.0, omega, X, F, K, balls)[0]
         ck.contact_outputs(omega, T_oil, cp, lub, balls, out, pc, losses)
     return s
 
@@ -58,7 +57,7 @@ def _repeat_step(n, F_applied, control, d0, X0, qs, omega, T_oil, cp, lub, d, X,
 @kernel
 def _repeat_analytic(n, omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     for _ in range(n):
-        ak.analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball)
+        radial_bearing.analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball)
 
 
 def interleaved(fns):
@@ -97,8 +96,8 @@ def quasi_static_steps(label, bearing, drive, rpm, inputs, gyroscopic):
     fns = []
     for codes in VARIANTS.values():
         qs, cp = m.qs.copy(), m.cp.copy()
-        cp[ck.CP_CAPACITANCE], cp[ck.CP_TORQUE], qs[qk.QS_STIFFNESS] = codes
-        work = (np.zeros(5), np.zeros((2, Z)), np.zeros(5), np.zeros((5, 5)), np.zeros((qk.BQ_SIZE, Z)))
+        cp[ck.CP_CAPACITANCE], cp[ck.CP_TORQUE], qs[jones_harris.QS_STIFFNESS] = codes
+        work = (np.zeros(5), np.zeros((2, Z)), np.zeros(5), np.zeros((5, 5)), np.zeros((jones_harris.BQ_SIZE, Z)))
         outs = (np.zeros(ck.CO_SIZE), np.zeros((ck.PC_SIZE, Z)), np.zeros(4))
         args = (F_applied, m.control, d0, X0, qs, omega, T_OIL, cp, m.lubricant.array, *work, *outs)
         assert _repeat_step(1, *args) == 0, f"{label}: solver failed"
@@ -111,7 +110,7 @@ def analytic_cost():
     fns = []
     for capacitance in (False, True):
         m = AnalyticModel("6208", "guessasma_oil", Scene(capacitance=capacitance), Pd=10e-6)
-        out, ball = np.zeros(ak.O_SIZE), np.zeros((8, m.bearing.Z))
+        out, ball = np.zeros(radial_bearing.O_SIZE), np.zeros((8, m.bearing.Z))
         args = (700.0, 3000.0, T_OIL, m.brg, m.lubricant.array, m.nodes, m.weights, out, ball)
         fns.append(lambda n, args=args: _repeat_analytic(n, *args))
     return interleaved(fns)

@@ -19,7 +19,7 @@ import time
 
 from bearing_fmu.kernels import capacitance as cap
 from bearing_fmu.kernels import hertz as hk
-from bearing_fmu.kernels import radial_bearing as ak
+from bearing_fmu.kernels import radial_bearing
 from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.models.dem import DemModel
 from bearing_fmu.models.quasi_static import QuasiStaticModel
@@ -76,9 +76,19 @@ def cost():
     """(kernel us per contact, analytic evaluation us off, on) on the 6208 inner contact."""
     off = AnalyticModel("6208", "guessasma_oil", Scene())
     b = off.brg
-    geometry = [b[i] for i in (ak.B_RX_I, ak.B_RY_I, ak.B_E_RED, ak.B_K_I, ak.B_EE_I, ak.B_KK_I)]
+    geometry = [
+        b[i]
+        for i in (
+            radial_bearing.B_RX_I,
+            radial_bearing.B_RY_I,
+            radial_bearing.B_E_RED,
+            radial_bearing.B_K_I,
+            radial_bearing.B_EE_I,
+            radial_bearing.B_KK_I,
+        )
+    ]
     a, bb, _, p = hk.hertz_contact(KERNEL["load"], *geometry)
-    args = (2.2, a, bb, p, b[ak.B_E_RED], KERNEL["h_c"], KERNEL["oil_gap"], 1e-8)
+    args = (2.2, a, bb, p, b[radial_bearing.B_E_RED], KERNEL["h_c"], KERNEL["oil_gap"], 1e-8)
     kernel = median_time(cap.outside_hertz_capacitance, *args, number=2000)
     on = AnalyticModel("6208", "guessasma_oil", Scene(capacitance_region="lubricated", oil_gap=10e-6))
     u = (700.0, 3000.0, T_OIL)

@@ -19,8 +19,8 @@ import statistics
 import numpy as np
 
 from bearing_fmu.kernels import ball_traction as bt
-from bearing_fmu.kernels import contacts as ck
-from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.kernels import contact_outputs as ck
+from bearing_fmu.kernels import jones_harris
 from bearing_fmu.kernels.lubricant import lubricant_state
 from bearing_fmu.models.quasi_static import LOAD_NAMES, QuasiStaticModel
 from bearing_fmu.scene import Scene
@@ -52,7 +52,7 @@ def _repeat_solve(n, F_applied, control, d0, X0, qs, dPd, omega, d, X, F, K, bal
     for _ in range(n):
         d[:] = d0
         X[:, :] = X0
-        r = qk.solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls)
+        r = jones_harris.solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls)
     return r
 
 
@@ -61,7 +61,7 @@ def _repeat_loads(n, d, X0, qs, dPd, omega, X, F, K, balls):
     s = 0
     for _ in range(n):
         X[:, :] = X0
-        s += qk.bearing_loads(d, qs, dPd, omega, X, F, K, balls)
+        s += jones_harris.bearing_loads(d, qs, dPd, omega, X, F, K, balls)
     return s
 
 
@@ -70,7 +70,7 @@ def _repeat_ring_loads(n, d, X0, qs, dPd, omega, X, F, K, contact, jacobian):
     s = 0
     for _ in range(n):
         X[:, :] = X0
-        s += qk.ring_loads(d, qs, dPd, omega, X, F, K, contact, jacobian)
+        s += jones_harris.ring_loads(d, qs, dPd, omega, X, F, K, contact, jacobian)
     return s
 
 
@@ -82,11 +82,11 @@ class Case:
         self.model = QuasiStaticModel(bearing, "iso_vg68_mineral", scene(gyroscopic), race_control=race)
         self.race = race
         self.Z, self.omega, self.F = self.model.bearing.Z, rpm * RPM, np.array([loads.get(n, 0.0) for n in LOAD_NAMES])
-        self.work = (np.zeros(5), self.X0(), np.zeros(5), np.zeros((5, 5)), np.zeros((qk.BQ_SIZE, self.Z)))
+        self.work = (np.zeros(5), self.X0(), np.zeros(5), np.zeros((5, 5)), np.zeros((jones_harris.BQ_SIZE, self.Z)))
         if race == "traction":  # the film's traction at the oil temperature, as the facade sets it
             eta, xi, _ = lubricant_state(T_OIL, self.model.lubricant.array)
-            self.model.qs[qk.QS_TRACTION + bt.TR_ETA] = eta
-            self.model.qs[qk.QS_TRACTION + bt.TR_XI] = xi
+            self.model.qs[jones_harris.QS_TRACTION + bt.TR_ETA] = eta
+            self.model.qs[jones_harris.QS_TRACTION + bt.TR_XI] = xi
         # neighbour solution (load 1 % higher), then the solution itself, both from a cold start (traction: from the
         # outer-race-controlled solution, as the facade starts it when its own cold start stalls)
         self.d_near, self.X_near, _ = self.solve(1.01 * self.F, *self.start())
@@ -94,7 +94,7 @@ class Case:
         self.warm_status = self.solve(self.F, self.d_near, self.X_near)[2]
 
     def X0(self):
-        return np.zeros((qk.X_SIZE, self.Z))
+        return np.zeros((jones_harris.X_SIZE, self.Z))
 
     def start(self):
         """The cold start (d, X): zeros."""
@@ -103,8 +103,10 @@ class Case:
     def solve(self, F, d0, X0):
         d, X, Fo, K, balls = self.work
         d[:], X[:] = d0, X0
-        status = qk.solve_quasistatic(F, self.model.control, d, self.model.qs, 0.0, self.omega, X, Fo, K, balls)
-        if status[0] != qk.QS_OK:
+        status = jones_harris.solve_quasistatic(
+            F, self.model.control, d, self.model.qs, 0.0, self.omega, X, Fo, K, balls
+        )
+        if status[0] != jones_harris.QS_OK:
             raise RuntimeError(f"{self.label}: solver status {status} for F = {F}")
         return d.copy(), X.copy(), status
 
@@ -121,7 +123,7 @@ class Case:
         the Jacobian's extra cost (median of the batch-by-batch ratio - 1, ratio of the fastest batches - 1)."""
         _, X, Fo, K, balls = self.work
         qs, om = self.model.qs, self.omega
-        contact = np.zeros((qk.CS_SIZE, self.Z))
+        contact = np.zeros((jones_harris.CS_SIZE, self.Z))
         args = (self.d_sol, self.X_near, qs, 0.0, om, X, Fo, K)
         full, no_k, with_balls = rotated_batches(
             [
@@ -135,7 +137,7 @@ class Case:
         F = {True: np.zeros(5), False: np.zeros(5)}  # the same loads with and without the Jacobian
         for jacobian, loads in F.items():
             X[:] = self.X_near
-            qk.ring_loads(self.d_sol, qs, 0.0, om, X, loads, K, contact, jacobian)
+            jones_harris.ring_loads(self.d_sol, qs, 0.0, om, X, loads, K, contact, jacobian)
         assert np.array_equal(F[True], F[False]), F
         return (*(statistics.median(t) / N_LOADS for t in (full, no_k, with_balls)), extra)
 

@@ -2,5 +2,5 @@
 
 - ``spindle.thermal``: the thermal network (kernels, facade, FMU slave, parameter files).
 - ``spindle.cosim``: the fmpy co-simulation master, run files, the libcosim cross-check, sweeps, plots.
-- ``spindle.build``: builds every FMU; ``spindle.cli``: the ``spindle`` command.
+- ``spindle.all_fmus``: builds every FMU; ``spindle.cli``: the ``spindle`` command.
 """

@@ -8,7 +8,7 @@ sequence the reference was computed in, and compares every output column of the 
 - bearing FMUs (analytic, quasi-static): one doStep per reference row with that row's inputs (the scene's
   speed ramp, bearing_fmu.build.reference_inputs); the first row is the initialisation;
 - the DEM bearing FMU: the scene's input script, one doStep per row, ending at the row's time;
-- thermal FMUs: the constant inputs of spindle.build.reference_inputs, stepped at the reference's time step.
+- thermal FMUs: the constant inputs of spindle.all_fmus.reference_inputs, stepped at the reference's time step.
 
 Tolerance: |FMU - reference| <= RTOL * max(|reference|, |FMU|) + ATOL_SCALE * RTOL * max |reference
 column|. The FMU runs the same model code as the reference, so the only differences are those of the
@@ -169,7 +169,7 @@ def check_fmu(fmu_path, reference_csv=None):
     compared = [c for c in columns if c in output_names and c not in NOT_COMPARED]
     inputs, steps, initial = experiment(fmu_path, name)
     if inputs is None:  # thermal FMU: constant reference inputs, the reference's own time step
-        from spindle.build import reference_inputs
+        from spindle.all_fmus import reference_inputs
 
         model = SimpleNamespace(inputs=[v for v in md.modelVariables if v.causality == "input"])
         constant = reference_inputs(model)

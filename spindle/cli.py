@@ -71,7 +71,7 @@ def _overrides(pairs):
 
 
 def cmd_build(args):
-    from .build import build_all
+    from .all_fmus import build_all
 
     if args.config:
         from .configured import ConfigurationError, build_configured
@@ -309,7 +309,7 @@ def cmd_film(args):
     """The film at the most loaded inner and outer contacts of a quasi-static operating point: every film formula
     against the numerical EHL solver (bearing_fmu.models.film_check); over a range of one input (A:B:N) a film map.
     Exit EXIT_UNCONVERGED when a contact's numerical film did not converge."""
-    from bearing_fmu.models.variables import T_OIL_RANGE, InputError
+    from bearing_fmu.models.limits import T_OIL_RANGE, InputError
     from bearing_fmu_common.paramfile import ParameterError
 
     from .film_map import film_map, operating_points

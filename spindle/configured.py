@@ -28,7 +28,7 @@ from bearing_fmu.params import ParameterError, catalogue, catalogue_files, load_
 from bearing_fmu.scene import RACE_CONTROLS, Scene
 from bearing_fmu_common.variables import InputError
 
-from .build import THERMAL_FMUS, build_thermal_fmu
+from .all_fmus import THERMAL_FMUS, build_thermal_fmu
 from .thermal.model import CATALOGUE as NETWORKS
 
 KEYS = ("name", "bearing", "lubricant", "race_control", "spindle", "fmus")

@@ -56,10 +56,10 @@ def bearing_fixed_fmu():
 
 
 def _thermal_fmu(name):
-    """Path of fmus/<name>.fmu (a thermal spindle FMU of spindle.build.THERMAL_FMUS); rebuilt if it is
+    """Path of fmus/<name>.fmu (a thermal spindle FMU of spindle.all_fmus.THERMAL_FMUS); rebuilt if it is
     missing or older than any source it bundles (the spindle and bearing_fmu packages)."""
     from bearing_fmu.build import COMMON_DIR, PACKAGE_DIR
-    from spindle.build import SPINDLE_DIR, THERMAL_FMUS, build_thermal_fmu
+    from spindle.all_fmus import SPINDLE_DIR, THERMAL_FMUS, build_thermal_fmu
 
     path = FMU_DIR / f"{name}.fmu"
     newest_source = max(

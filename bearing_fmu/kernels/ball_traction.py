@@ -4,7 +4,7 @@ No race-control hypothesis: a ball's orbital speed w_m and its angular velocity 
 moment balance with the tangential forces the film transmits, as in the quasi-static skidding analyses of
 high-speed ball bearings (Harris 1971, J. Lubr. Technol. 93(1) 17-24, ball motion in thrust-loaded angular-contact
 bearings with Coulomb and viscous surface friction; Gupta's ADORE in its steady limit, Gupta 1984, Advanced
-Dynamics of Rolling Elements, Springer). The contact law is the DEM's (kernels.ball_dynamics.contacts), so that the
+Dynamics of Rolling Elements, Springer). The contact law is the DEM's (kernels.ball_dynamics.contact_law), so that the
 two fidelities describe one bearing:
 - tangential force at the contact centre against the sliding velocity s (ball surface minus race surface),
   |F| = Q ((1 - phi) mu_b + phi mu_lim)(1 - exp(-|s| / v_s)): the film's share phi (ehl.film_share) of the EHL

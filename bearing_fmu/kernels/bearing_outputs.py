@@ -1,7 +1,7 @@
 """The quasi-static facade's output array, filled in declaration order in one compiled call.
 
 quasi_static_outputs() takes the solver's arrays (kernels.jones_harris: displacements d, reactions F,
-stiffness K, per-ball results) and the contact outputs (kernels.contacts CO_*) and writes each output
+stiffness K, per-ball results) and the contact outputs (kernels.contact_outputs CO_*) and writes each output
 slot from the source named by models.declarations, after deriving the outputs that summarise the
 ball set:
 - the most loaded ball: the ball with the largest inner contact load (the largest outer contact load
@@ -25,7 +25,7 @@ from .geometry import pass_frequencies
 from .jones_harris import BQ_A_I, BQ_A_O, BQ_BETA, BQ_MU_REQ_I, BQ_MU_REQ_O, BQ_Q_I, BQ_Q_O, BQ_W_M, BQ_W_R
 
 # source codes of an output slot (models.declarations `source` arrays)
-SRC_OUT = 0  # the contact kernel's output array (kernels.contacts CO_*)
+SRC_OUT = 0  # the contact kernel's output array (kernels.contact_outputs CO_*)
 SRC_D = 1  # the solver's displacements
 SRC_F = 2  # the solver's reactions
 SRC_K = 3  # the stiffness matrix, flattened row by row

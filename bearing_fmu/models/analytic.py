@@ -11,7 +11,7 @@ import numpy as np
 
 from bearing_fmu_common.variables import InputLimits, gather_plan, outputs_as_dict, select
 
-from ..kernels import radial_bearing as ak
+from ..kernels import radial_bearing
 from ..kernels import rating_life as rl
 from ..kernels import truncation as tk
 from ..kernels.geometry import ball_mass, curvature_radii
@@ -19,13 +19,11 @@ from ..kernels.hertz import hertz_coefficients_approx, hertz_coefficients_exact,
 from ..kernels.loaddist import gauss_legendre
 from ..params import check_roughness, load_bearing, load_lubricant
 from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
-from .contacts import RaceContacts, truncation_parameters, truncation_warnings
 from .declarations import ANALYTIC_INPUTS, ANALYTIC_OUTPUTS, ANALYTIC_PARAMETERS
 from .fidelity import Fidelity
 from .film_table import film_table_array
 from .input_checks import check_clearance
-from .lubrication import Lubrication, LubricationWatch, pack_lubrication
-from .variables import (
+from .limits import (
     DM_N_LIMIT,
     MATERIAL_LIMIT,
     InputError,
@@ -33,6 +31,8 @@ from .variables import (
     material_load_limit,
     pressure_warnings,
 )
+from .lubrication import Lubrication, LubricationWatch, pack_lubrication
+from .race_contacts import RaceContacts, truncation_parameters, truncation_warnings
 
 GAUSS_NODES = 48  # quadrature points on the loaded arc (J_r(0.5) exact to < 1e-8)
 EPSILON_CAP = 1e6  # |epsilon| shown at most (a centred preloaded ring has delta_r = 0: eps is infinite)
@@ -67,11 +67,23 @@ class AnalyticModel:
         contacts = [
             [self.brg[k] for k in keys]
             for keys in (
-                (ak.B_RX_I, ak.B_RY_I, ak.B_K_I, ak.B_EE_I, ak.B_KK_I),
-                (ak.B_RX_O, ak.B_RY_O, ak.B_K_O, ak.B_EE_O, ak.B_KK_O),
+                (
+                    radial_bearing.B_RX_I,
+                    radial_bearing.B_RY_I,
+                    radial_bearing.B_K_I,
+                    radial_bearing.B_EE_I,
+                    radial_bearing.B_KK_I,
+                ),
+                (
+                    radial_bearing.B_RX_O,
+                    radial_bearing.B_RY_O,
+                    radial_bearing.B_K_O,
+                    radial_bearing.B_EE_O,
+                    radial_bearing.B_KK_O,
+                ),
             )
         ]
-        self.load_limit = material_load_limit(b.Z, self.brg[ak.B_E_RED], contacts)
+        self.load_limit = material_load_limit(b.Z, self.brg[radial_bearing.B_E_RED], contacts)
         self._limits = InputLimits(
             self.inputs,
             {
@@ -80,7 +92,7 @@ class AnalyticModel:
             },
         )
         self.nodes, self.weights = gauss_legendre(GAUSS_NODES)
-        self._out = np.zeros(ak.O_SIZE)
+        self._out = np.zeros(radial_bearing.O_SIZE)
         self.ball = np.zeros((8, b.Z))
         self.warnings = []
         self._oil_watch = OilTemperatureWatch(self.lubricant)
@@ -102,31 +114,36 @@ class AnalyticModel:
 
     def _pack(self):
         b, s = self.bearing, self.scene
-        brg = np.zeros(ak.B_SIZE)
+        brg = np.zeros(radial_bearing.B_SIZE)
         Rx_i, Ry_i, Rx_o, Ry_o = curvature_radii(b.D, b.dm, b.f_i, b.f_o, 0.0)
         coeff = hertz_coefficients_exact if s.hertz == "exact" else hertz_coefficients_approx
-        brg[ak.B_Z] = b.Z
-        brg[ak.B_D] = b.D
-        brg[ak.B_DM] = b.dm
-        brg[ak.B_PD] = self.Pd
-        brg[ak.B_RX_I], brg[ak.B_RY_I], brg[ak.B_RX_O], brg[ak.B_RY_O] = Rx_i, Ry_i, Rx_o, Ry_o
-        brg[ak.B_K_I], brg[ak.B_EE_I], brg[ak.B_KK_I] = coeff(Rx_i, Ry_i)
-        brg[ak.B_K_O], brg[ak.B_EE_O], brg[ak.B_KK_O] = coeff(Rx_o, Ry_o)
-        brg[ak.B_E_RED] = reduced_modulus(b.ball.E, b.ball.nu, b.ring.E, b.ring.nu)
-        brg[ak.B_M_BALL] = ball_mass(b.D, b.ball.rho)
-        brg[ak.B_SIGMA_I] = s.roughness_factor * math.hypot(b.Ra_inner, b.Ra_ball)
-        brg[ak.B_SIGMA_O] = s.roughness_factor * math.hypot(b.Ra_outer, b.Ra_ball)
-        brg[ak.B_FILM] = FILM_FORMULAS[s.film]
-        brg[ak.B_PRESSURE] = PERMITTIVITY_PRESSURES[s.permittivity_pressure]
-        brg[ak.B_H_FLOOR] = s.film_floor
-        brg[ak.B_C_BACKGROUND] = s.background_capacitance
-        brg[ak.B_OIL_GAP] = s.oil_gap if s.capacitance_region == "lubricated" else 0.0
-        brg[ak.B_CENTRIFUGAL] = 1.0 if s.centrifugal else 0.0
-        brg[ak.B_TOL] = s.tolerance
-        brg[ak.B_CAPACITANCE] = 1.0 if s.capacitance else 0.0
+        brg[radial_bearing.B_Z] = b.Z
+        brg[radial_bearing.B_D] = b.D
+        brg[radial_bearing.B_DM] = b.dm
+        brg[radial_bearing.B_PD] = self.Pd
+        (
+            brg[radial_bearing.B_RX_I],
+            brg[radial_bearing.B_RY_I],
+            brg[radial_bearing.B_RX_O],
+            brg[radial_bearing.B_RY_O],
+        ) = Rx_i, Ry_i, Rx_o, Ry_o
+        brg[radial_bearing.B_K_I], brg[radial_bearing.B_EE_I], brg[radial_bearing.B_KK_I] = coeff(Rx_i, Ry_i)
+        brg[radial_bearing.B_K_O], brg[radial_bearing.B_EE_O], brg[radial_bearing.B_KK_O] = coeff(Rx_o, Ry_o)
+        brg[radial_bearing.B_E_RED] = reduced_modulus(b.ball.E, b.ball.nu, b.ring.E, b.ring.nu)
+        brg[radial_bearing.B_M_BALL] = ball_mass(b.D, b.ball.rho)
+        brg[radial_bearing.B_SIGMA_I] = s.roughness_factor * math.hypot(b.Ra_inner, b.Ra_ball)
+        brg[radial_bearing.B_SIGMA_O] = s.roughness_factor * math.hypot(b.Ra_outer, b.Ra_ball)
+        brg[radial_bearing.B_FILM] = FILM_FORMULAS[s.film]
+        brg[radial_bearing.B_PRESSURE] = PERMITTIVITY_PRESSURES[s.permittivity_pressure]
+        brg[radial_bearing.B_H_FLOOR] = s.film_floor
+        brg[radial_bearing.B_C_BACKGROUND] = s.background_capacitance
+        brg[radial_bearing.B_OIL_GAP] = s.oil_gap if s.capacitance_region == "lubricated" else 0.0
+        brg[radial_bearing.B_CENTRIFUGAL] = 1.0 if s.centrifugal else 0.0
+        brg[radial_bearing.B_TOL] = s.tolerance
+        brg[radial_bearing.B_CAPACITANCE] = 1.0 if s.capacitance else 0.0
         self.lubrication_numbers = Lubrication(s, b.D, b.dm)
-        pack_lubrication(brg, ak, "B_", self.lubrication_numbers)
-        brg[ak.B_FILM_TABLE :] = film_table_array(b, self.lubricant, s.film_correction)
+        pack_lubrication(brg, radial_bearing, "B_", self.lubrication_numbers)
+        brg[radial_bearing.B_FILM_TABLE :] = film_table_array(b, self.lubricant, s.film_correction)
         return brg
 
     def _race_contacts(self):
@@ -134,13 +151,13 @@ class AnalyticModel:
         brg = self.brg
         return RaceContacts(
             0.0,
-            brg[ak.B_RX_I],
-            brg[ak.B_RY_I],
-            brg[ak.B_RX_O],
-            brg[ak.B_RY_O],
-            (brg[ak.B_K_I], brg[ak.B_EE_I], brg[ak.B_KK_I]),
-            (brg[ak.B_K_O], brg[ak.B_EE_O], brg[ak.B_KK_O]),
-            brg[ak.B_E_RED],
+            brg[radial_bearing.B_RX_I],
+            brg[radial_bearing.B_RY_I],
+            brg[radial_bearing.B_RX_O],
+            brg[radial_bearing.B_RY_O],
+            (brg[radial_bearing.B_K_I], brg[radial_bearing.B_EE_I], brg[radial_bearing.B_KK_I]),
+            (brg[radial_bearing.B_K_O], brg[radial_bearing.B_EE_O], brg[radial_bearing.B_KK_O]),
+            brg[radial_bearing.B_E_RED],
         )
 
     inputs = ANALYTIC_INPUTS
@@ -174,7 +191,7 @@ class AnalyticModel:
         omega, F_y, T_oil = u
         self.check_inputs(omega, F_y, T_oil)
         out = self._out
-        ak.analytic_bearing(
+        radial_bearing.analytic_bearing(
             float(omega),
             abs(float(F_y)),
             float(T_oil),
@@ -189,8 +206,12 @@ class AnalyticModel:
             rl.rating_life(
                 self.ball[0], self.ball[1], abs(float(F_y)), 0.0, float(omega), self._life_parameters, self._life
             )
-        self.warnings = pressure_warnings(out[ak.O_PMAX], f"F_y = {F_y} N") + self._oil_watch.warnings(T_oil)
-        self.warnings += self._lubrication_watch.warnings(float(omega), (out[ak.O_PHI_RS_I], out[ak.O_PHI_RS_O]))
+        self.warnings = pressure_warnings(out[radial_bearing.O_PMAX], f"F_y = {F_y} N") + self._oil_watch.warnings(
+            T_oil
+        )
+        self.warnings += self._lubrication_watch.warnings(
+            float(omega), (out[radial_bearing.O_PHI_RS_I], out[radial_bearing.O_PHI_RS_O])
+        )
         # ball rows 0 and 1: inner and outer contact loads, all at the groove bottom (angle 0)
         tk.race_truncation(self.ball, 0, self._angles, 0, self._truncation_parameters, self._trunc)
         self.warnings += truncation_warnings(
@@ -200,8 +221,8 @@ class AnalyticModel:
         values, slot = self.values, self._slot
         for source, index, target in self._gather:
             values[target] = source[index]
-        values[slot["y"]] = sign * out[ak.O_DELTA_R]
-        values[slot["epsilon"]] = min(max(out[ak.O_EPS], -EPSILON_CAP), EPSILON_CAP)
+        values[slot["y"]] = sign * out[radial_bearing.O_DELTA_R]
+        values[slot["epsilon"]] = min(max(out[radial_bearing.O_EPS], -EPSILON_CAP), EPSILON_CAP)
         if not math.isfinite(values.sum()) and not np.isfinite(values).all():  # NaN and inf propagate into a sum
             k = int(np.argmin(np.isfinite(values)))
             raise InputError(

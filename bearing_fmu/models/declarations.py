@@ -22,15 +22,15 @@ from dataclasses import replace
 from bearing_fmu_common.variables import Variable
 
 from ..kernels import bearing_outputs as bo
-from ..kernels import contacts as ck
-from ..kernels import radial_bearing as ak
+from ..kernels import contact_outputs as ck
+from ..kernels import radial_bearing
 from ..kernels import rating_life as rl
 from ..kernels import truncation as tk
 from ..kernels.ball_dynamics import state as ds
 from ..params import SUPPORT_DAMPING, SUPPORT_MASS, SUPPORT_STIFFNESS, load_dem_constants
 from ..scene import LUBRICATION_METHODS, RACE_CONTROLS
 from .file_parameters import bearing_parameters
-from .variables import (
+from .limits import (
     GROOVE_MAX,
     LOAD_LIMITS,
     LOAD_MAX,
@@ -46,7 +46,7 @@ from .variables import (
 T_OIL_START = 313.15  # K (40 C): every other input starts at 0 (at rest, unloaded, centred)
 DEFAULT_FIXED_PRELOAD = 800.0  # N, Rabreau et al. 2018 rig (fixed_axial scenes only)
 
-# Allowed ranges (min, max) of inputs and parameters: the static bounds of models.variables, each with its reason;
+# Allowed ranges (min, max) of inputs and parameters: the static bounds of models.limits, each with its reason;
 # the models narrow them at run time where the limit depends on the bearing (the message states the narrower range).
 OMEGA = Variable(
     "omega",
@@ -163,6 +163,22 @@ def lubrication_outputs(source, phi_slots, drag_slots, words=""):
     )
 
 
+def film_and_load_outputs(slots, outer_words=""):
+    """The film parameter, minimum film, regime, capacitance and largest contact loads of a static fidelity, from the
+    slots of its output array "out": Lambda, h_min (inner, outer), regime, C_bearing, Q_max (inner, outer)."""
+    lambda_i, lambda_o, h_min_i, h_min_o, regime, capacitance, q_max_i, q_max_o = slots
+    return (
+        Variable("Lambda_inner", "1", LAMBDA.format("inner"), source=("out", lambda_i)),
+        Variable("Lambda_outer", "1", LAMBDA.format("outer"), source=("out", lambda_o)),
+        Variable("h_min_inner", "m", H_MIN.format("inner"), source=("out", h_min_i)),
+        Variable("h_min_outer", "m", H_MIN.format("outer"), source=("out", h_min_o)),
+        Variable("regime", "1", REGIME, "integer", source=("out", regime)),
+        Variable("C_bearing", "F", CAPACITANCE, option="capacitance", source=("out", capacitance)),
+        Variable("Q_max_inner", "N", "largest inner contact load", source=("out", q_max_i)),
+        Variable("Q_max_outer", "N", "largest outer contact load" + outer_words, source=("out", q_max_o)),
+    )
+
+
 H_C = "central film thickness of the most loaded {} contact (0 if none; what capacitance film measurements report)"
 # speeds: every angular speed is about the bearing axis in the fixed frame (outer ring) unless it says otherwise
 BALL_CAGE = (
@@ -198,41 +214,58 @@ ANALYTIC_INPUTS = (
 )
 
 ANALYTIC_OUTPUTS = (
-    Variable("Lambda_inner", "1", LAMBDA.format("inner"), source=("out", ak.O_LAMBDA_I)),
-    Variable("Lambda_outer", "1", LAMBDA.format("outer"), source=("out", ak.O_LAMBDA_O)),
-    Variable("h_min_inner", "m", H_MIN.format("inner"), source=("out", ak.O_HMIN_I)),
-    Variable("h_min_outer", "m", H_MIN.format("outer"), source=("out", ak.O_HMIN_O)),
-    Variable("regime", "1", REGIME, "integer", source=("out", ak.O_REGIME)),
-    Variable("C_bearing", "F", CAPACITANCE, option="capacitance", source=("out", ak.O_C_BEARING)),
-    Variable("Q_max_inner", "N", "largest inner contact load", source=("out", ak.O_QMAX_I)),
-    Variable(
-        "Q_max_outer", "N", "largest outer contact load (includes centrifugal force)", source=("out", ak.O_QMAX_O)
+    *film_and_load_outputs(
+        (
+            radial_bearing.O_LAMBDA_I,
+            radial_bearing.O_LAMBDA_O,
+            radial_bearing.O_HMIN_I,
+            radial_bearing.O_HMIN_O,
+            radial_bearing.O_REGIME,
+            radial_bearing.O_C_BEARING,
+            radial_bearing.O_QMAX_I,
+            radial_bearing.O_QMAX_O,
+        ),
+        " (includes centrifugal force)",
     ),
-    Variable("p_max", "Pa", "largest Hertz contact pressure", source=("out", ak.O_PMAX)),
+    Variable("p_max", "Pa", "largest Hertz contact pressure", source=("out", radial_bearing.O_PMAX)),
     *truncation_outputs("trunc", " (contacts at the groove bottom)"),
     Variable(
         "omega_cage",
         "rad/s",
         "cage angular speed in the fixed frame (pure rolling, sign of omega)",
-        source=("out", ak.O_OMEGA_CAGE),
+        source=("out", radial_bearing.O_OMEGA_CAGE),
     ),
     Variable(
         "omega_ball",
         "rad/s",
         "ball spin speed about its own axis in the fixed frame (pure rolling, sign of omega); the spin relative "
         "to the cage is omega_ball_cage",
-        source=("out", ak.O_OMEGA_BALL),
+        source=("out", radial_bearing.O_OMEGA_BALL),
     ),
-    Variable("omega_ball_cage", "rad/s", BALL_CAGE.format("pure rolling"), source=("out", ak.O_OMEGA_BALL_CAGE)),
+    Variable(
+        "omega_ball_cage", "rad/s", BALL_CAGE.format("pure rolling"), source=("out", radial_bearing.O_OMEGA_BALL_CAGE)
+    ),
     *frequency_outputs(
-        {"FTF": ("out", ak.O_FTF), "BPFO": ("out", ak.O_BPFO), "BPFI": ("out", ak.O_BPFI), "BSF": ("out", ak.O_BSF)},
+        {
+            "FTF": ("out", radial_bearing.O_FTF),
+            "BPFO": ("out", radial_bearing.O_BPFO),
+            "BPFI": ("out", radial_bearing.O_BPFI),
+            "BSF": ("out", radial_bearing.O_BSF),
+        },
         "pure rolling",
     ),
-    Variable("h_c_inner", "m", H_C.format("inner"), source=("out", ak.O_HC_I)),
-    Variable("h_c_outer", "m", H_C.format("outer"), source=("out", ak.O_HC_O)),
-    Variable("n_loaded", "1", "number of balls loaded on both races", "integer", source=("out", ak.O_N_LOADED)),
+    Variable("h_c_inner", "m", H_C.format("inner"), source=("out", radial_bearing.O_HC_I)),
+    Variable("h_c_outer", "m", H_C.format("outer"), source=("out", radial_bearing.O_HC_O)),
+    Variable(
+        "n_loaded", "1", "number of balls loaded on both races", "integer", source=("out", radial_bearing.O_N_LOADED)
+    ),
     *lubrication_outputs(
-        "out", ((ak.O_PHI_ISH_I, ak.O_PHI_ISH_O), (ak.O_PHI_RS_I, ak.O_PHI_RS_O)), (ak.O_TORQUE_DRAG, ak.O_P_DRAG)
+        "out",
+        (
+            (radial_bearing.O_PHI_ISH_I, radial_bearing.O_PHI_ISH_O),
+            (radial_bearing.O_PHI_RS_I, radial_bearing.O_PHI_RS_O),
+        ),
+        (radial_bearing.O_TORQUE_DRAG, radial_bearing.O_P_DRAG),
     ),
     Variable("y", "m", "radial displacement of the inner ring along F_y"),  # signed radial approach
     Variable("epsilon", "1", "load parameter eps = (1 - P_d/(2 delta_r))/2, capped at 1e6 (centred preloaded ring)"),
@@ -438,14 +471,18 @@ QUASI_STATIC_OUTPUTS = (
         (ck.CO_TORQUE_DRAG, ck.CO_P_DRAG),
         ": half to each ring, in Q_inner_ring and Q_outer_ring",
     ),
-    Variable("Lambda_inner", "1", LAMBDA.format("inner"), source=("out", ck.CO_LAMBDA_I)),
-    Variable("Lambda_outer", "1", LAMBDA.format("outer"), source=("out", ck.CO_LAMBDA_O)),
-    Variable("h_min_inner", "m", H_MIN.format("inner"), source=("out", ck.CO_HMIN_I)),
-    Variable("h_min_outer", "m", H_MIN.format("outer"), source=("out", ck.CO_HMIN_O)),
-    Variable("regime", "1", REGIME, "integer", source=("out", ck.CO_REGIME)),
-    Variable("C_bearing", "F", CAPACITANCE, option="capacitance", source=("out", ck.CO_C_BEARING)),
-    Variable("Q_max_inner", "N", "largest inner contact load", source=("out", ck.CO_QMAX_I)),
-    Variable("Q_max_outer", "N", "largest outer contact load", source=("out", ck.CO_QMAX_O)),
+    *film_and_load_outputs(
+        (
+            ck.CO_LAMBDA_I,
+            ck.CO_LAMBDA_O,
+            ck.CO_HMIN_I,
+            ck.CO_HMIN_O,
+            ck.CO_REGIME,
+            ck.CO_C_BEARING,
+            ck.CO_QMAX_I,
+            ck.CO_QMAX_O,
+        )
+    ),
     Variable(
         "p_max", "Pa", "largest Hertz contact pressure (warning logged above 4.2 GPa)", source=("out", ck.CO_PMAX)
     ),

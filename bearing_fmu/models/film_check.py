@@ -17,10 +17,9 @@ import math
 import time
 from dataclasses import dataclass, field
 
-from bearing_fmu.kernels import contacts as ck
-from bearing_fmu.kernels import ehl
+from bearing_fmu.kernels import contact_outputs as ck
+from bearing_fmu.kernels import ehl, jones_harris
 from bearing_fmu.kernels import ehl_solver as es
-from bearing_fmu.kernels import jones_harris as qk
 from bearing_fmu.kernels.lubricant import lubricant_state
 
 from . import ehl_numerical as en
@@ -86,14 +85,14 @@ def film_check(bearing, lubricant, omega, loads, T_oil=313.15, finest=None):
     fluid = en.fluid_array(es.VISC_ROELANDS, es.DENS_DOWSON_HIGGINSON, eta, xi)
     checks = []
     for race, name in enumerate(RACES):
-        loads_race = model.balls[qk.BQ_Q_I + race]
+        loads_race = model.balls[jones_harris.BQ_Q_I + race]
         ball = int(loads_race.argmax())
         Q = float(loads_race[ball])
         if Q <= 0.0:
             continue
         o = 5 * race
         Rx, Ry, k = cp[ck.CP_RX_I + o], cp[ck.CP_RY_I + o], cp[ck.CP_K_I + o]
-        u = float(model.balls[qk.BQ_U_I + race, ball])
+        u = float(model.balls[jones_harris.BQ_U_I + race, ball])
         sigma = cp[ck.CP_SIGMA_I + race]
         check = ContactFilm(name, ball, Q, u, Rx, Ry, k, 0.0, sigma)
         for formula, code in FORMULAS.items():

@@ -43,7 +43,7 @@ from ..kernels import film_correction as fc
 from ..kernels.hertz import hertz_contact
 from ..kernels.lubricant import lubricant_state
 from ..scene import Scene
-from .contacts import race_contacts
+from .race_contacts import race_contacts
 
 # 2: a node the default grid does not converge is solved on the next finer one; 3: each node on the level its film
 # needs (models.ehl_numerical.film_level), not on level 3 throughout

@@ -13,8 +13,8 @@ import math
 
 import numpy as np
 
-from ..kernels import jones_harris as qk
-from .variables import InputError
+from ..kernels import jones_harris
+from .limits import InputError
 
 RACES = ("inner", "outer")
 BRANCH_JUMP = math.radians(10.0)  # rad: a change of the most loaded ball's inner contact angle between two evaluations
@@ -47,17 +47,19 @@ class FrictionWatch:
         balls a fraction of numpy's fixed cost per call, paid at every step."""
         if self.race_control == "traction":
             return
-        mu = (max(balls[qk.BQ_MU_REQ_I].tolist()), max(balls[qk.BQ_MU_REQ_O].tolist()))
-        if max(balls[qk.BQ_Q_I].tolist()) <= 0.0 and any(control[i] > 0.5 and applied[i] != 0.0 for i in range(5)):
+        mu = (max(balls[jones_harris.BQ_MU_REQ_I].tolist()), max(balls[jones_harris.BQ_MU_REQ_O].tolist()))
+        if max(balls[jones_harris.BQ_Q_I].tolist()) <= 0.0 and any(
+            control[i] > 0.5 and applied[i] != 0.0 for i in range(5)
+        ):
             why = "no ball touches the inner race under these loads, which only the friction of the balls' gyroscopic "
             why += "moment would carry (its required traction coefficient is infinite)"
         elif max(mu) > MU_IMPOSSIBLE:
             race = 0 if mu[0] >= mu[1] else 1
-            j = int(np.argmax(balls[qk.BQ_MU_REQ_I + race]))
+            j = int(np.argmax(balls[jones_harris.BQ_MU_REQ_I + race]))
             why = (
                 f"it asks a traction coefficient of {mu[race]:.4g} of ball {j + 1}'s {RACES[race]} contact (load "
-                f"{balls[qk.BQ_Q_I + race, j]:.4g} N), above {MU_IMPOSSIBLE:g}: friction, not the contact loads, would "
-                f"carry the bearing's load"
+                f"{balls[jones_harris.BQ_Q_I + race, j]:.4g} N), above {MU_IMPOSSIBLE:g}: friction, not the contact "
+                f"loads, would carry the bearing's load"
             )
         else:
             return
@@ -77,7 +79,7 @@ class FrictionWatch:
         for race in range(2):
             above = mu_required[race] > self.mu_limit
             if above and not self.exceeded[race]:
-                j = int(np.argmax(balls[qk.BQ_MU_REQ_I + race]))
+                j = int(np.argmax(balls[jones_harris.BQ_MU_REQ_I + race]))
                 out.append(
                     f"race control '{self.race_control}' asks a traction coefficient of {mu_required[race]:.4g} of "
                     f"ball {j + 1}'s {RACES[race]} contact, above the limiting traction coefficient "

@@ -3,7 +3,7 @@ clearance. Each raises InputError naming the input, its value and the allowed ra
 
 from ..params import clearance_limits
 from .declarations import OMEGA, PD, T_OIL
-from .variables import DM_N_LIMIT, InputError
+from .limits import DM_N_LIMIT, InputError
 
 
 def check_speed(omega, omega_max):

@@ -69,12 +69,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..kernels import contacts as ck
-from ..kernels import jones_harris as qk
+from ..kernels import contact_outputs as ck
+from ..kernels import jones_harris
 from ..kernels.torque import TL_SIZE
 from .input_checks import check_oil_temperature, check_speed
+from .limits import InputError, pressure_warnings
 from .quasi_static import QuasiStaticModel, SolverError
-from .variables import InputError, pressure_warnings
 
 ARRANGEMENTS = ("X", "O")
 PRELOADS = ("spring", "fixed")
@@ -167,7 +167,9 @@ class PairAssembly:
         self.models = (model_a, model_b)
         self.qs = tuple(m.qs.copy() for m in self.models)
         for qs in self.qs:
-            qs[qk.QS_STIFFNESS] = 1.0  # the pair's Newton needs each bearing's stiffness, whatever its scene exposes
+            qs[jones_harris.QS_STIFFNESS] = (
+                1.0  # the pair's Newton needs each bearing's stiffness, whatever its scene exposes
+            )
         self.arrangement = arrangement
         self.preload = preload
         self.F_preload = F_preload
@@ -222,15 +224,15 @@ class PairAssembly:
         Z = model.bearing.Z
         F = np.zeros(5)
         K = np.zeros((5, 5))
-        balls = np.zeros((qk.BQ_SIZE, Z))
+        balls = np.zeros((jones_harris.BQ_SIZE, Z))
         d_start = d.copy()
-        status = qk.solve_quasistatic(applied, control, d, self.qs[k], dPd, omega, X, F, K, balls)[0]
-        if status != qk.QS_OK:  # the warm start can be far off: retry cold
+        status = jones_harris.solve_quasistatic(applied, control, d, self.qs[k], dPd, omega, X, F, K, balls)[0]
+        if status != jones_harris.QS_OK:  # the warm start can be far off: retry cold
             d[:] = d_start
             if spring:
                 d[2] = self.z0[1]
             X[:] = 0.0
-            status = qk.solve_quasistatic(applied, control, d, self.qs[k], dPd, omega, X, F, K, balls)[0]
+            status = jones_harris.solve_quasistatic(applied, control, d, self.qs[k], dPd, omega, X, F, K, balls)[0]
         return status, d, F, K, balls
 
     def _evaluate(self, D, omega, dPd, dz, X, z_B):
@@ -240,7 +242,7 @@ class PairAssembly:
         parts = []
         for k in range(2):
             status, d, F, K, balls = self._bearing(k, D, omega, dPd[k], dz, X[k], z_B)
-            if status != qk.QS_OK or not (np.all(np.isfinite(F)) and np.all(np.isfinite(K))):
+            if status != jones_harris.QS_OK or not (np.all(np.isfinite(F)) and np.all(np.isfinite(K))):
                 return False, None, None, None
             Kk = condense_axial(K) if (k == 1 and self.preload == "spring") else K
             T = self.T[k]
@@ -370,8 +372,8 @@ class PairAssembly:
                 f"bearing {name}: {w}"
                 for w in pressure_warnings(p_max, f"bearing {name} ('{model.bearing.name}'): the loads")
             ]
-            loaded = balls[qk.BQ_Q_I] > 0.0
-            if model.qs[qk.QS_ANGULAR] > 0.5 and np.any(balls[qk.BQ_A_I][loaded] < 0.0):
+            loaded = balls[jones_harris.BQ_Q_I] > 0.0
+            if model.qs[jones_harris.QS_ANGULAR] > 0.5 and np.any(balls[jones_harris.BQ_A_I][loaded] < 0.0):
                 warnings.append(
                     f"bearing {name}: balls loaded at a negative contact angle (axial load "
                     f"{F[2]:.4g} N against its thrust direction): the model's full groove stands in for "

@@ -1,4 +1,4 @@
-"""QuasiStaticModel: facade of the quasi-static fidelity (kernels.jones_harris + kernels.contacts).
+"""QuasiStaticModel: facade of the quasi-static fidelity (kernels.jones_harris + kernels.contact_outputs).
 
 One bearing, lubricant and scene; inputs and outputs are SI and declared once in models.declarations
 (QUASI_STATIC_INPUTS, QUASI_STATIC_OUTPUTS): the model fills a preallocated output array in that order
@@ -15,8 +15,8 @@ from bearing_fmu_common.variables import InputLimits, outputs_as_dict, select
 
 from ..kernels import ball_traction as bt
 from ..kernels import bearing_outputs as bo
-from ..kernels import contacts as ck
-from ..kernels import jones_harris as qk
+from ..kernels import contact_outputs as ck
+from ..kernels import jones_harris
 from ..kernels import rating_life as rl
 from ..kernels import truncation as tk
 from ..kernels.geometry import ball_mass, free_contact_angle
@@ -25,7 +25,6 @@ from ..kernels.lubricant import lubricant_state
 from ..kernels.torque import TL_SIZE
 from ..params import check_roughness, load_bearing, load_lubricant
 from ..scene import LUBRICATION_METHODS, RACE_CONTROLS, Scene
-from .contacts import contact_terms, pack, race_contacts, traction_block, truncation_parameters, truncation_warnings
 from .declarations import (
     DEFAULT_FIXED_PRELOAD,
     DISPLACEMENT_LIMIT,
@@ -40,8 +39,7 @@ from .fidelity import Fidelity
 from .film_table import film_table_array
 from .friction import FrictionWatch
 from .input_checks import check_clearance
-from .lubrication import Lubrication, LubricationWatch, pack_lubrication
-from .variables import (
+from .limits import (
     DM_N_LIMIT,
     MATERIAL_LIMIT,
     TILT_LIMIT,
@@ -50,8 +48,22 @@ from .variables import (
     material_load_limit,
     pressure_warnings,
 )
+from .lubrication import Lubrication, LubricationWatch, pack_lubrication
+from .race_contacts import (
+    contact_terms,
+    pack,
+    race_contacts,
+    traction_block,
+    truncation_parameters,
+    truncation_warnings,
+)
 
-RACE_CODES = {"outer": qk.RACE_OUTER, "inner": qk.RACE_INNER, "hybrid": qk.RACE_HYBRID, "traction": qk.RACE_TRACTION}
+RACE_CODES = {
+    "outer": jones_harris.RACE_OUTER,
+    "inner": jones_harris.RACE_INNER,
+    "hybrid": jones_harris.RACE_HYBRID,
+    "traction": jones_harris.RACE_TRACTION,
+}
 # rad: the thrust-side check refuses loaded inner contacts below +1e-8 rad. A radial load without thrust puts
 # the loaded balls of a free single angular-contact bearing at the groove bottom (angle 0, returned to the
 # solver's rounding, ~1e-12 rad of either sign), where nothing locates the ring axially and it is nearly free
@@ -60,11 +72,11 @@ SHOULDER_ANGLE_TOL = 1e-8
 # readings of the hybrid model's gyroscopic-moment share (Python API only, for sensitivity studies;
 # the FMUs use 'spin_moments'): docs/quasistatic.md section 2, tests/validation/test_quasistatic_literature.py
 HYBRID_SPLITS = {
-    "spin_moments": qk.RACE_HYBRID,
-    "outer": qk.RACE_HYBRID_OUTER_SPLIT,
-    "inner": qk.RACE_HYBRID_INNER_SPLIT,
-    "equal": qk.RACE_HYBRID_EQUAL_SPLIT,
-    "controlling_race": qk.RACE_HYBRID_CONTROLLING,
+    "spin_moments": jones_harris.RACE_HYBRID,
+    "outer": jones_harris.RACE_HYBRID_OUTER_SPLIT,
+    "inner": jones_harris.RACE_HYBRID_INNER_SPLIT,
+    "equal": jones_harris.RACE_HYBRID_EQUAL_SPLIT,
+    "controlling_race": jones_harris.RACE_HYBRID_CONTROLLING,
 }
 _PARAMETERS = {v.name: v for v in QUASI_STATIC_PARAMETERS}
 
@@ -130,15 +142,15 @@ class QuasiStaticModel:
         self.load_limit = self._load_limit()
         Z = b.Z
         self.d = np.zeros(5)
-        self.X = np.zeros((qk.X_SIZE, Z))
+        self.X = np.zeros((jones_harris.X_SIZE, Z))
         self.F = np.zeros(5)
         self.K = np.zeros((5, 5))
-        self.balls = np.zeros((qk.BQ_SIZE, Z))
+        self.balls = np.zeros((jones_harris.BQ_SIZE, Z))
         self.per_contact = np.zeros((ck.PC_SIZE, Z))
         self.out = np.zeros(ck.CO_SIZE)
         self.out[ck.CO_PHI_ISH_I : ck.CO_PHI_RS_O + 1] = 1.0  # a flooded run of a method's scene: factors 1
         self._losses = np.zeros(TL_SIZE)
-        self.status = (qk.QS_OK, 0, 0.0)
+        self.status = (jones_harris.QS_OK, 0, 0.0)
         self.warnings = []
         self._oil_watch = OilTemperatureWatch(self.lubricant)
         self._lubrication_watch = LubricationWatch(self.lubrication_numbers, self.lubricant)
@@ -214,33 +226,33 @@ class QuasiStaticModel:
         rc = race_contacts(b, s, self.Pd)
         Rx_i, Ry_i, Rx_o, Ry_o, ci, co, E_red = rc.Rx_i, rc.Ry_i, rc.Rx_o, rc.Ry_o, rc.ci, rc.co, rc.E_red
         self._truncation_parameters = truncation_parameters(b, rc, self.Pd)
-        qs = np.zeros(qk.QS_SIZE)
-        qs[qk.QS_Z] = b.Z
-        qs[qk.QS_D] = b.D
-        qs[qk.QS_DM] = b.dm
-        qs[qk.QS_FI] = b.f_i
-        qs[qk.QS_FO] = b.f_o
-        qs[qk.QS_PD] = self.Pd
-        qs[qk.QS_ANGULAR] = 1.0 if b.kind == "angular_contact" else 0.0
+        qs = np.zeros(jones_harris.QS_SIZE)
+        qs[jones_harris.QS_Z] = b.Z
+        qs[jones_harris.QS_D] = b.D
+        qs[jones_harris.QS_DM] = b.dm
+        qs[jones_harris.QS_FI] = b.f_i
+        qs[jones_harris.QS_FO] = b.f_o
+        qs[jones_harris.QS_PD] = self.Pd
+        qs[jones_harris.QS_ANGULAR] = 1.0 if b.kind == "angular_contact" else 0.0
         spring = rl.iso16281_spring_constant if s.spring_constant == "iso_ts_16281" else hertz_stiffness
-        qs[qk.QS_K_I] = spring(Rx_i, Ry_i, E_red, *ci)
-        qs[qk.QS_K_O] = spring(Rx_o, Ry_o, E_red, *co)
-        qs[qk.QS_M_BALL] = ball_mass(b.D, b.ball.rho)
-        qs[qk.QS_RACE] = (
+        qs[jones_harris.QS_K_I] = spring(Rx_i, Ry_i, E_red, *ci)
+        qs[jones_harris.QS_K_O] = spring(Rx_o, Ry_o, E_red, *co)
+        qs[jones_harris.QS_M_BALL] = ball_mass(b.D, b.ball.rho)
+        qs[jones_harris.QS_RACE] = (
             HYBRID_SPLITS[self.hybrid_split] if self.race_control == "hybrid" else RACE_CODES[self.race_control]
         )
-        qs[qk.QS_CENTRIFUGAL] = 1.0 if s.centrifugal else 0.0
-        qs[qk.QS_GYROSCOPIC] = 1.0 if s.gyroscopic else 0.0
+        qs[jones_harris.QS_CENTRIFUGAL] = 1.0 if s.centrifugal else 0.0
+        qs[jones_harris.QS_GYROSCOPIC] = 1.0 if s.gyroscopic else 0.0
         # hybrid law: C = Q_i a_i E_i / (Q_o a_o E_o); a ~ Q^(1/3) gives C = c_hyb (Q_i/Q_o)^(4/3)
         a_i = hertz_contact(1.0, Rx_i, Ry_i, E_red, *ci)[0]
         a_o = hertz_contact(1.0, Rx_o, Ry_o, E_red, *co)[0]
-        qs[qk.QS_C_HYB] = a_i * ci[1] / (a_o * co[1])
-        qs[qk.QS_TOL] = s.tolerance
-        qs[qk.QS_MAXIT] = s.max_iterations
-        qs[qk.QS_STIFFNESS] = 1.0 if s.stiffness else 0.0
+        qs[jones_harris.QS_C_HYB] = a_i * ci[1] / (a_o * co[1])
+        qs[jones_harris.QS_TOL] = s.tolerance
+        qs[jones_harris.QS_MAXIT] = s.max_iterations
+        qs[jones_harris.QS_STIFFNESS] = 1.0 if s.stiffness else 0.0
         self._traction = self.race_control == "traction"
         if self._traction:
-            qs[qk.QS_TRACTION :] = traction_block(b, s, rc, self.lubricant)
+            qs[jones_harris.QS_TRACTION :] = traction_block(b, s, rc, self.lubricant)
         cp = np.zeros(ck.CP_SIZE)
         pack(cp, ck, "CP_", contact_terms(b, s, rc))
         cp[ck.CP_C_BACKGROUND] = s.background_capacitance
@@ -282,7 +294,7 @@ class QuasiStaticModel:
         Z = self.bearing.Z
         d = np.zeros(5)
         axial = np.array([0.0, 0.0, 1.0, 0.0, 0.0])
-        status, _, res = qk.solve_quasistatic(
+        status, _, res = jones_harris.solve_quasistatic(
             F_axial * axial,
             axial,
             d,
@@ -292,9 +304,9 @@ class QuasiStaticModel:
             np.zeros((2, Z)),
             np.zeros(5),
             np.zeros((5, 5)),
-            np.zeros((qk.BQ_SIZE, Z)),
+            np.zeros((jones_harris.BQ_SIZE, Z)),
         )
-        if status != qk.QS_OK:
+        if status != jones_harris.QS_OK:
             raise SolverError(
                 f"bearing '{self.bearing.name}': axial position under F = {F_axial} N at rest not "
                 f"found (status {status}, residual {res:.3g} N)"
@@ -335,8 +347,8 @@ class QuasiStaticModel:
         dPd = 0.0 if self._u_dPd is None else float(u[self._u_dPd])
         if self._traction:  # the film's traction at the oil temperature
             eta, xi, _ = lubricant_state(float(u[self._u_T_oil]), self.lubricant.array)
-            self.qs[qk.QS_TRACTION + bt.TR_ETA] = eta
-            self.qs[qk.QS_TRACTION + bt.TR_XI] = xi
+            self.qs[jones_harris.QS_TRACTION + bt.TR_ETA] = eta
+            self.qs[jones_harris.QS_TRACTION + bt.TR_XI] = xi
         self._solve(applied, dPd, omega, u)
         ck.contact_outputs(
             omega,
@@ -349,7 +361,9 @@ class QuasiStaticModel:
             self._losses,
         )
         # the contact ellipses against the shoulders (an output: nothing of the solution changes)
-        tk.race_truncation(self.balls, qk.BQ_Q_I, self.balls, qk.BQ_A_I, self._truncation_parameters, self._trunc)
+        tk.race_truncation(
+            self.balls, jones_harris.BQ_Q_I, self.balls, jones_harris.BQ_A_I, self._truncation_parameters, self._trunc
+        )
         return self._collect(omega, u)
 
     def _shown(self, u):
@@ -359,26 +373,26 @@ class QuasiStaticModel:
     def _solve(self, applied, dPd, omega, u):
         d_start = self.d.copy()
         X_start = self.X.copy()
-        status, iters, res = qk.solve_quasistatic(
+        status, iters, res = jones_harris.solve_quasistatic(
             applied, self.control, self.d, self.qs, dPd, omega, self.X, self.F, self.K, self.balls
         )
-        if status != qk.QS_OK:  # the warm start can be far off after a big input jump: retry cold
+        if status != jones_harris.QS_OK:  # the warm start can be far off after a big input jump: retry cold
             self.d[:] = np.where(self.control > 0.5, 0.0, d_start)
             self.X[:] = 0.0
-            status, more, res = qk.solve_quasistatic(
+            status, more, res = jones_harris.solve_quasistatic(
                 applied, self.control, self.d, self.qs, dPd, omega, self.X, self.F, self.K, self.balls
             )
             iters += more
         self.status = (status, iters, res)
-        if status != qk.QS_OK:
+        if status != jones_harris.QS_OK:
             self.d[:] = d_start
             self.X[:] = X_start
             self._refuse_without_thrust(applied, u)
             self._refuse_beyond_the_groove_centre(res, u)
             reason = {
-                qk.QS_NOT_CONVERGED: f"no convergence in {self.scene.max_iterations} iterations",
-                qk.QS_BALL_NOT_CONVERGED: "a ball equilibrium did not converge",
-                qk.QS_NOT_FINITE: "the iteration produced a non-finite value",
+                jones_harris.QS_NOT_CONVERGED: f"no convergence in {self.scene.max_iterations} iterations",
+                jones_harris.QS_BALL_NOT_CONVERGED: "a ball equilibrium did not converge",
+                jones_harris.QS_NOT_FINITE: "the iteration produced a non-finite value",
             }[status]
             raise SolverError(
                 f"quasi-static equilibrium not found ({reason}, load residual {res:.3g} N) for {self._shown(u)}"
@@ -415,7 +429,7 @@ class QuasiStaticModel:
         state): the physical reason, not the solver's. There the model's full-circle inner groove closes on the
         ball from behind, a contact the ring does not have, and the ball's state jumps between that contact and
         none (docs/quasistatic.md section 3): the loads have no continuous equilibrium to converge to."""
-        cos_inner = np.cos(self.balls[qk.BQ_A_I])
+        cos_inner = np.cos(self.balls[jones_harris.BQ_A_I])
         if not np.all(np.isfinite(cos_inner)) or cos_inner.min() > 0.0:
             return
         j = int(np.argmin(cos_inner))
@@ -425,10 +439,10 @@ class QuasiStaticModel:
             f"bearing '{b.name}' (P_d = {self.Pd:.4g} m, free contact angle "
             f"{math.degrees(free_contact_angle(b.D, b.f_i, b.f_o, self.Pd)):.3g} deg) crosses so much of its "
             f"clearance that ball {j} lies beyond the centre of curvature of its inner groove (inner contact angle "
-            f"{math.degrees(self.balls[qk.BQ_A_I, j]):.4g} deg): there the model's full-circle groove would press "
-            f"it from behind, a contact the ring does not have, and no equilibrium of the model describes the "
-            f"bearing. Allowed: loads and clearances that keep every inner contact angle below 90 deg (less "
-            f"clearance, more thrust or less radial load or moment). Inputs: {self._shown(u)}"
+            f"{math.degrees(self.balls[jones_harris.BQ_A_I, j]):.4g} deg): there the model's full-circle groove "
+            f"would press it from behind, a contact the ring does not have, and no equilibrium of the model "
+            f"describes the bearing. Allowed: loads and clearances that keep every inner contact angle below 90 deg "
+            f"(less clearance, more thrust or less radial load or moment). Inputs: {self._shown(u)}"
         )
 
     def _check_thrust_side(self, d_start, X_start, u):
@@ -443,22 +457,23 @@ class QuasiStaticModel:
         balls = self.balls
         # the usual case: no inner contact at or below the groove bottom (a list's min is a fraction of numpy's fixed
         # cost for a few dozen balls; NaN never passes)
-        if min(balls[qk.BQ_A_I].tolist()) >= SHOULDER_ANGLE_TOL:
+        if min(balls[jones_harris.BQ_A_I].tolist()) >= SHOULDER_ANGLE_TOL:
             return
-        wrong = (balls[qk.BQ_Q_I] > 0.0) & (balls[qk.BQ_A_I] < SHOULDER_ANGLE_TOL)
+        wrong = (balls[jones_harris.BQ_Q_I] > 0.0) & (balls[jones_harris.BQ_A_I] < SHOULDER_ANGLE_TOL)
         if not wrong.any():
             return
-        j = int(np.argmax(np.where(wrong, balls[qk.BQ_Q_I], -1.0)))
+        j = int(np.argmax(np.where(wrong, balls[jones_harris.BQ_Q_I], -1.0)))
         self.d[:] = d_start
         self.X[:] = X_start
         shown = self._shown(u)
         raise InputError(
             f"bearing '{self.bearing.name}' is a single-row angular-contact bearing: it carries thrust in +z only, "
             f"and these loads need its missing shoulder, or leave its balls at the groove bottom with nothing to "
-            f"locate it axially (ball {j} would carry {balls[qk.BQ_Q_I, j]:.4g} N at a contact angle of "
-            f"{math.degrees(balls[qk.BQ_A_I, j]):.3g} deg). Carry the reverse thrust, or the thrust a radial load "
-            f"needs, with a second bearing or a preload (bearing_fmu.models.pair). Allowed: loads with which every "
-            f"loaded ball touches the inner ring at a contact angle above {SHOULDER_ANGLE_TOL:g} rad. Inputs: {shown}"
+            f"locate it axially (ball {j} would carry {balls[jones_harris.BQ_Q_I, j]:.4g} N at a contact angle of "
+            f"{math.degrees(balls[jones_harris.BQ_A_I, j]):.3g} deg). Carry the reverse thrust, or the thrust a "
+            f"radial load needs, with a second bearing or a preload (bearing_fmu.models.pair). Allowed: loads with "
+            f"which every loaded ball touches the inner ring at a contact angle above {SHOULDER_ANGLE_TOL:g} rad. "
+            f"Inputs: {shown}"
         )
 
     def _collect(self, omega, u):
@@ -482,8 +497,8 @@ class QuasiStaticModel:
         if self.scene.life:
             F, balls = self.F, self.balls
             rl.rating_life(
-                balls[qk.BQ_Q_I],
-                balls[qk.BQ_Q_O],
+                balls[jones_harris.BQ_Q_I],
+                balls[jones_harris.BQ_Q_O],
                 math.hypot(F[0], F[1]),
                 abs(F[2]),
                 omega,
@@ -497,7 +512,13 @@ class QuasiStaticModel:
                 f"please report this case"
             )
         self.warnings += truncation_warnings(
-            self._truncation_parameters, self._trunc, self.balls, qk.BQ_Q_I, self.balls, qk.BQ_A_I, self._truncated
+            self._truncation_parameters,
+            self._trunc,
+            self.balls,
+            jones_harris.BQ_Q_I,
+            self.balls,
+            jones_harris.BQ_A_I,
+            self._truncated,
         )
         summary = self._summary
         inner = summary[bo.BS_ALPHA_I] if out[ck.CO_QMAX_I] > 0.0 else None

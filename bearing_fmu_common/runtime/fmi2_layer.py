@@ -1,6 +1,6 @@
 """The Python side of the FMUs' FMI layer (fmi2_python.c, docs/fmu_runtime.md).
 
-The build puts this file into every FMU as resources/fmi2_layer.py (bearing_fmu_common.runtime.build); the
+The build puts this file into every FMU as resources/fmi2_layer.py (bearing_fmu_common.runtime.binaries); the
 layer loads it from there at its first fmi2Instantiate, by file location, as a module of its own that is not
 registered in sys.modules: each FMU's copy of the layer has its own copy of this module, and loading it adds
 nothing to sys.path. Standard library only: it runs before the FMU's packages can be imported.

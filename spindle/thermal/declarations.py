@@ -3,7 +3,7 @@
 The variables follow the network (node names, heat inputs, boundaries and bearings of the spindle
 TOML), so they are declared as rules expanded for a network. SpindleThermalModel fills its output
 array in the order of output_declarations(), the FMU class (spindle.thermal.fmu) registers its FMI
-variables from the same declarations, and fmus/<Name>.md is generated from them (spindle.build).
+variables from the same declarations, and fmus/<Name>.md is generated from them (spindle.all_fmus).
 """
 
 from bearing_fmu_common.bearing_file import BALL_RING_MODULUS, GROOVE_MAX

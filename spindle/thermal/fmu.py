@@ -79,7 +79,7 @@ class SpindleThermal(DeclaredSlave):
             raise ValueError(
                 f"spindle = {self.spindle!r} has other inputs/outputs than the network this FMU "
                 f"was built with ({self.default_network!r}); FMI variables are fixed at build "
-                f"time: add an FMU for it in spindle.build.THERMAL_FMUS"
+                f"time: add an FMU for it in spindle.all_fmus.THERMAL_FMUS"
             )
         self._model = model
         self._started = False

@@ -24,7 +24,7 @@ from importlib.metadata import version
 import numpy as np
 import pytest
 
-from spindle.build import reference_inputs
+from spindle.all_fmus import reference_inputs
 from spindle.thermal.model import SpindleThermalModel
 from tests.conftest import pip_environment
 

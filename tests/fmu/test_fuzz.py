@@ -24,7 +24,7 @@ from pathlib import Path
 
 import pytest
 
-from spindle.build import all_variables
+from spindle.all_fmus import all_variables
 
 FUZZ = Path(__file__).with_name("fuzz.py")
 FIXTURES = {

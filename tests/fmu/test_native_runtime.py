@@ -43,7 +43,7 @@ from fmpy import extract, read_model_description
 from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import fmi2Terminated
 
-from bearing_fmu_common.runtime.build import fmi_headers, install_runtime
+from bearing_fmu_common.runtime.binaries import fmi_headers, install_runtime
 from tests.fmu import probe
 from tests.fmu.harness import opened
 

@@ -31,7 +31,7 @@ import pytest
 from bearing_fmu import build as bearing_build
 from bearing_fmu.compiled_code import KERNEL_PYTHONS_ENV
 from bearing_fmu_common.runtime.host_pythons import SUPPORTED, HostPythonError, host_python
-from spindle import build as spindle_build
+from spindle import all_fmus
 from tests.fmu.test_native_runtime import Unpacked, importer  # noqa: F401 (the importer fixture)
 
 VERSIONS = [f"{major}.{minor}" for major, minor in SUPPORTED]
@@ -76,8 +76,8 @@ def _build(out_dir, kernel_pythons):
             name: bearing_build.build_fmu(bearing_build.SCENES_DIR / scene, out_dir)
             for name, scene in (("Bearing", "quasi_static.toml"), ("BearingDEM", "dem.toml"))
         }
-        network, axial_float = spindle_build.THERMAL_FMUS["SpindleThermal"]
-        paths["SpindleThermal"] = spindle_build.build_thermal_fmu("SpindleThermal", network, axial_float, out_dir)
+        network, axial_float = all_fmus.THERMAL_FMUS["SpindleThermal"]
+        paths["SpindleThermal"] = all_fmus.build_thermal_fmu("SpindleThermal", network, axial_float, out_dir)
     finally:
         if saved is None:
             os.environ.pop(KERNEL_PYTHONS_ENV)
@@ -96,9 +96,9 @@ def fmus(pythons, tmp_path_factory):
 def experiment(name):
     """The reference experiment of FMU `name` as a CHILD run: {"options": simulate_fmu keywords, "inputs": rows}."""
     if name == "SpindleThermal":
-        network, axial_float = spindle_build.THERMAL_FMUS[name]
-        inputs = spindle_build.reference_inputs(spindle_build.SpindleThermalModel(network, axial_float=axial_float))
-        stop, step = spindle_build.REFERENCE_STOP, spindle_build.REFERENCE_STEP
+        network, axial_float = all_fmus.THERMAL_FMUS[name]
+        inputs = all_fmus.reference_inputs(all_fmus.SpindleThermalModel(network, axial_float=axial_float))
+        stop, step = all_fmus.REFERENCE_STOP, all_fmus.REFERENCE_STEP
         return {
             "options": {"stop_time": stop, "output_interval": step},
             "inputs": [{"time": 0.0, **inputs}, {"time": stop, **inputs}],

@@ -6,7 +6,7 @@
   declared;
 - the FMU's variables are the Python model's tables (spindle.thermal.fmu registers model.inputs/outputs),
   and the fixed-preload FMU alone has the axial-float inputs F_axial_k/K_axial_k (what a scene
-  does not need is not exposed; spindle.build.THERMAL_FMUS);
+  does not need is not exposed; spindle.all_fmus.THERMAL_FMUS);
 - a hand-written FMU2Slave loop equals spindle.thermal.model.SpindleThermalModel bit for bit: the FMU runs
   the same model code in the same interpreter (spindle/thermal/fmu.py is a thin wrapper), and the model has
   no history other than its state (temperatures, axial float, held inputs; the operator cache is a
@@ -85,7 +85,7 @@ def test_variables_are_the_model_tables(fixture, request):
 
 
 def test_axial_float_inputs_only_in_the_fixed_preload_fmu(spindle_thermal_fmu, spindle_thermal_fixed_fmu):
-    """What a scene does not need is not exposed (docs/architecture.md, scenes; spindle.build.THERMAL_FMUS):
+    """What a scene does not need is not exposed (docs/architecture.md, scenes; spindle.all_fmus.THERMAL_FMUS):
     a spring-preloaded pair keeps its axial force whatever the growth, so SpindleThermal has no axial-float
     inputs; the fixed-preload FMU needs the bearings' axial reactions and stiffnesses."""
     spring, fixed = set(inputs_of(spindle_thermal_fmu)), set(inputs_of(spindle_thermal_fixed_fmu))

@@ -1,7 +1,7 @@
 """The variable lists of the documentation are generated from the declarations and cannot drift.
 
 - each committed fmus/<Name>.md equals what `spindle build` writes from the declarations today, and the
-  README's FMU block equals `python -m spindle.build readme`'s: a declaration changed without rebuilding
+  README's FMU block equals `python -m spindle.all_fmus readme`'s: a declaration changed without rebuilding
   the documentation fails here, with the command that fixes it;
 - a built FMU exposes exactly the variables its fmus/<Name>.md lists, in the same order (value
   references follow registration order), with the same causality and unit.
@@ -13,7 +13,7 @@ import pytest
 from fmpy import read_model_description
 
 from bearing_fmu.build import variables_markdown
-from spindle.build import README, README_BEGIN, README_END, all_variables, readme_block
+from spindle.all_fmus import README, README_BEGIN, README_END, all_variables, readme_block
 from tests.conftest import FMU_DIR
 
 ROW = re.compile(r"^\| `([^`]+)` \| (\w+) \| (\w+) \| ([^|]*) \|")
@@ -32,15 +32,15 @@ def documented(name):
 @pytest.mark.parametrize("arguments", all_variables(), ids=lambda a: a[0])
 def test_fmu_variable_list_is_up_to_date(arguments):
     path = FMU_DIR / f"{arguments[0]}.md"
-    assert path.is_file(), f"{path} missing: run `python -m spindle.build docs`"
-    assert path.read_text() == variables_markdown(*arguments), f"{path} is stale: run `python -m spindle.build docs`"
+    assert path.is_file(), f"{path} missing: run `python -m spindle.all_fmus docs`"
+    assert path.read_text() == variables_markdown(*arguments), f"{path} is stale: run `python -m spindle.all_fmus docs`"
 
 
 def test_readme_variable_block_is_up_to_date():
     text = README.read_text()
     assert text.count(README_BEGIN) == 1 and text.count(README_END) == 1
     block = text[text.index(README_BEGIN) : text.index(README_END) + len(README_END)]
-    assert block == readme_block(), "README.md's FMU variable block is stale: run `python -m spindle.build readme`"
+    assert block == readme_block(), "README.md's FMU variable block is stale: run `python -m spindle.all_fmus readme`"
 
 
 @pytest.mark.parametrize(

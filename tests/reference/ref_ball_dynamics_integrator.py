@@ -41,9 +41,9 @@ from scipy.optimize import brentq
 
 from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.kernels.lubricant import LUB_EPS_R0, LUB_RHO_REF
-from tests.reference import ref_ball_dynamics_contacts as contacts
+from tests.reference import ref_ball_dynamics_contact_law as contacts
 from tests.reference import ref_capacitance, ref_ehl, ref_film_correction, ref_hertz, ref_lubricant, ref_torque
-from tests.reference.ref_ball_dynamics_contacts import Z_AXIS, groove_contact
+from tests.reference.ref_ball_dynamics_contact_law import Z_AXIS, groove_contact
 
 # Heathcote constant C_H = 3I/8: rolling bands at +-c (zero net traction of w(y) ~ 1 - y^2), then
 # I = 2 int_0^1 (1 - s^2)|c^2 - s^2| ds (Johnson 1985 ch. 8).

@@ -138,7 +138,7 @@ def lubricated_contact_capacitance(
 
 
 def assembly_outside(*args):
-    """The outside-Hertz term as the assembly twins (ref_radial_bearing, ref_contacts,
+    """The outside-Hertz term as the assembly twins (ref_radial_bearing, ref_contact_outputs,
     ref_ball_dynamics_integrator) take it: the kernel's value. They twin which contacts count and how (series,
     parallel, the eps_r of each region); the term itself is compared with outside_hertz_capacitance above in
     tests/unit/test_capacitance.py, and the brute force, run for every contact of every refresh, would make the

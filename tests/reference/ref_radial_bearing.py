@@ -23,7 +23,7 @@ checks them separately against ref_hertz).
 import math
 
 from bearing_fmu.kernels import lubricant as lk  # layout constants (LUB_*) only
-from bearing_fmu.kernels import radial_bearing as ak  # layout constants (B_*) only
+from bearing_fmu.kernels import radial_bearing  # layout constants (B_*) only
 
 from . import (
     ref_capacitance,
@@ -44,37 +44,46 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
     'O_' prefix (e.g. 'lambda_i' for O_LAMBDA_I) to values; balls maps BALL_ROWS (the rows of the
     kernel's work array, in order) to lists over the balls. 'iter' (the kernel's Newton iteration
     count) has no twin: it is None here."""
-    Z = int(brg[ak.B_Z])
-    D, dm, Pd, E_red = brg[ak.B_D], brg[ak.B_DM], brg[ak.B_PD], brg[ak.B_E_RED]
+    Z = int(brg[radial_bearing.B_Z])
+    D, dm, Pd, E_red = (
+        brg[radial_bearing.B_D],
+        brg[radial_bearing.B_DM],
+        brg[radial_bearing.B_PD],
+        brg[radial_bearing.B_E_RED],
+    )
     race = {
         "i": dict(
-            Rx=brg[ak.B_RX_I],
-            Ry=brg[ak.B_RY_I],
-            k=brg[ak.B_K_I],
-            E=brg[ak.B_EE_I],
-            K=brg[ak.B_KK_I],
-            sigma=brg[ak.B_SIGMA_I],
+            Rx=brg[radial_bearing.B_RX_I],
+            Ry=brg[radial_bearing.B_RY_I],
+            k=brg[radial_bearing.B_K_I],
+            E=brg[radial_bearing.B_EE_I],
+            K=brg[radial_bearing.B_KK_I],
+            sigma=brg[radial_bearing.B_SIGMA_I],
         ),
         "o": dict(
-            Rx=brg[ak.B_RX_O],
-            Ry=brg[ak.B_RY_O],
-            k=brg[ak.B_K_O],
-            E=brg[ak.B_EE_O],
-            K=brg[ak.B_KK_O],
-            sigma=brg[ak.B_SIGMA_O],
+            Rx=brg[radial_bearing.B_RX_O],
+            Ry=brg[radial_bearing.B_RY_O],
+            k=brg[radial_bearing.B_K_O],
+            E=brg[radial_bearing.B_EE_O],
+            K=brg[radial_bearing.B_KK_O],
+            sigma=brg[radial_bearing.B_SIGMA_O],
         ),
     }
-    film_code = int(brg[ak.B_FILM])
-    pressure_choice = int(brg[ak.B_PRESSURE])
-    h_floor = brg[ak.B_H_FLOOR]
+    film_code = int(brg[radial_bearing.B_FILM])
+    pressure_choice = int(brg[radial_bearing.B_PRESSURE])
+    h_floor = brg[radial_bearing.B_H_FLOOR]
 
     eta, xi, rho0 = ref_lubricant.lubricant_state(T_oil, lub)
     K_cm = ref_lubricant.clausius_mossotti_constant(lub[lk.LUB_EPS_R0], lub[lk.LUB_RHO_REF])
-    lubricated = brg[ak.B_LUBRICATED] > 0.5
+    lubricated = brg[radial_bearing.B_LUBRICATED] > 0.5
     beta = ref_lubrication.temperature_viscosity_coefficient(T_oil, lub) if lubricated else 0.0
     phis = {"i": (1.0, 1.0), "o": (1.0, 1.0)}
     omega_cage, omega_ball_cage, omega_ball, u = ref_geometry.rolling_kinematics(omega, D, dm, 0.0)
-    F_c = ref_geometry.centrifugal_force(brg[ak.B_M_BALL], dm, omega_cage) if brg[ak.B_CENTRIFUGAL] > 0.5 else 0.0
+    F_c = (
+        ref_geometry.centrifugal_force(brg[radial_bearing.B_M_BALL], dm, omega_cage)
+        if brg[radial_bearing.B_CENTRIFUGAL] > 0.5
+        else 0.0
+    )
 
     stiff = {s: ref_hertz.hertz_stiffness(c["Rx"], c["Ry"], E_red, c["k"], c["E"], c["K"]) for s, c in race.items()}
     K = ref_hertz.series_stiffness(stiff["i"], stiff["o"])
@@ -83,7 +92,7 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
     balls = {name: [] for name in BALL_ROWS}
     loaded = {"i": [], "o": []}  # (Lambda, h_min, h_c) of the loaded contacts of each race
     pressures = []
-    C_bearing = brg[ak.B_C_BACKGROUND]
+    C_bearing = brg[radial_bearing.B_C_BACKGROUND]
     n_loaded = 0
     for j in range(Z):
         psi = 2.0 * math.pi * j / Z
@@ -99,10 +108,20 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
             Q = loads[s]
             a_y, b_x, _, p_max = ref_hertz.hertz_contact(Q, c["Rx"], c["Ry"], E_red, c["k"], c["E"], c["K"])
             h_c, h_min = ref_film_correction.corrected_film_thickness(
-                film_code, eta, xi, E_red, u, Q, c["Rx"], c["Ry"], c["k"], brg[ak.B_FILM_TABLE :], "io".index(s)
+                film_code,
+                eta,
+                xi,
+                E_red,
+                u,
+                Q,
+                c["Rx"],
+                c["Ry"],
+                c["k"],
+                brg[radial_bearing.B_FILM_TABLE :],
+                "io".index(s),
             )
             if lubricated and Q > 0.0:
-                method = (brg[ak.B_K_OIL], brg[ak.B_THERMAL], brg[ak.B_H_OIL])
+                method = (brg[radial_bearing.B_K_OIL], brg[radial_bearing.B_THERMAL], brg[radial_bearing.B_H_OIL])
                 phi = ref_lubrication.film_factors(h_c, h_min, abs(u), p_max, b_x, c["Rx"], E_red, eta, beta, *method)
                 h_c, h_min = h_c * phi[0] * phi[1], h_min * phi[0] * phi[2]
                 if j == 0:
@@ -120,7 +139,7 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
                     h_c,
                     h_floor,
                     E_red,
-                    brg[ak.B_OIL_GAP],
+                    brg[radial_bearing.B_OIL_GAP],
                     outside=ref_capacitance.assembly_outside,
                 )
                 loaded[s].append((lam, h_min, h_c))
@@ -167,9 +186,9 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
     out["ftf"], out["bpfo"], out["bpfi"], out["bsf"] = frequencies
     (out["phi_ish_i"], out["phi_rs_i"]), (out["phi_ish_o"], out["phi_rs_o"]) = phis["i"], phis["o"]
     P = 0.0
-    if brg[ak.B_DRAG] > 0.5:
-        rho_e, eta_e = ref_lubrication.mixture(brg[ak.B_DRAG_X], rho0, eta)
-        P = Z * ref_lubrication.ball_drag_power(omega_cage * dm / 2.0, D, rho_e, eta_e, brg[ak.B_DRAG_AREA])
+    if brg[radial_bearing.B_DRAG] > 0.5:
+        rho_e, eta_e = ref_lubrication.mixture(brg[radial_bearing.B_DRAG_X], rho0, eta)
+        P = Z * ref_lubrication.ball_drag_power(omega_cage * dm / 2.0, D, rho_e, eta_e, brg[radial_bearing.B_DRAG_AREA])
     out["p_drag"] = P
     out["torque_drag"] = P / abs(omega) if omega != 0.0 else 0.0
     return out, balls

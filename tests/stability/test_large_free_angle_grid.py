@@ -19,7 +19,7 @@ import pytest
 
 from bearing_fmu import InputError, QuasiStaticModel, Scene
 from bearing_fmu.build import SCENES_DIR
-from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.kernels import jones_harris
 from bearing_fmu.models.declarations import LOAD_NAMES
 
 SCENE = Scene.from_toml(SCENES_DIR / "quasi_static.toml")  # the scene of Bearing.fmu
@@ -62,7 +62,9 @@ def test_every_grid_point_converges_or_is_refused_for_a_physical_reason(bearing,
                 continue
             applied = np.array([load.get(n, 0.0) for n in LOAD_NAMES])
             error = np.max(np.abs(applied - m.F) / scale)
-            assert m.status[0] == qk.QS_OK
-            load_scale = max(np.max(np.abs(applied) / scale), np.mean(m.balls[qk.BQ_Q_I]))  # the solver's scale
+            assert m.status[0] == jones_harris.QS_OK
+            load_scale = max(
+                np.max(np.abs(applied) / scale), np.mean(m.balls[jones_harris.BQ_Q_I])
+            )  # the solver's scale
             assert error <= SCENE.tolerance * load_scale, (share, load, error)
     assert not unexplained, unexplained

@@ -34,7 +34,7 @@ from hypothesis import strategies as st
 
 from bearing_fmu.kernels import ehl as ek
 from bearing_fmu.kernels import lubricant as lk
-from bearing_fmu.kernels import radial_bearing as ak
+from bearing_fmu.kernels import radial_bearing
 from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.params import catalogue
 from bearing_fmu.scene import Scene
@@ -45,11 +45,15 @@ from tests.unit.test_film_correction import made_up_table
 
 RTOL = 1e-12
 RTOL_GL = 2.5 * 48**-5.0
-METHOD_RTOL = 1e-6  # lubrication method: beta's differences and the meniscus (test_contacts.py)
+METHOD_RTOL = 1e-6  # lubrication method: beta's differences and the meniscus (test_contact_outputs.py)
 EPS = np.finfo(float).eps
 FAST = settings(max_examples=50, deadline=None)
 floats = functools.partial(st.floats, allow_nan=False, allow_infinity=False, allow_subnormal=False)
-OUTPUTS = {name[2:].lower(): getattr(ak, name) for name in dir(ak) if name.startswith("O_") and name != "O_SIZE"}
+OUTPUTS = {
+    name[2:].lower(): getattr(radial_bearing, name)
+    for name in dir(radial_bearing)
+    if name.startswith("O_") and name != "O_SIZE"
+}
 WLF = (
     lk.LUB_WLF_MU_G,
     lk.LUB_WLF_TG0,
@@ -91,9 +95,9 @@ def model(bearing, scene, Pd, lubricant):
 
 
 def run_kernel(m, omega, F_r, T):
-    out = np.zeros(ak.O_SIZE)
+    out = np.zeros(radial_bearing.O_SIZE)
     ball = np.zeros((8, m.bearing.Z))
-    ak.analytic_bearing(omega, F_r, T, m.brg, m.lubricant.array, m.nodes, m.weights, out, ball)
+    radial_bearing.analytic_bearing(omega, F_r, T, m.brg, m.lubricant.array, m.nodes, m.weights, out, ball)
     return out, ball
 
 
@@ -112,7 +116,7 @@ def check_against_twin(m, omega, F_r, T):
     """Run kernel and twin and check every output and ball row against the propagated tolerances."""
     out, ball = run_kernel(m, omega, F_r, T)
     ref, balls = ra.analytic_bearing(omega, F_r, T, m.brg, m.lubricant.array)
-    Pd = m.brg[ak.B_PD]
+    Pd = m.brg[radial_bearing.B_PD]
     eps = ref["eps"]
     delta = ref["delta_r"]
     tol_delta = RTOL_GL + (8.0 * EPS * (abs(eps) + 1.0 / abs(eps)) if 0.0 < abs(eps) < math.inf else 0.0)
@@ -157,8 +161,10 @@ def check_against_twin(m, omega, F_r, T):
             t += METHOD_RTOL if m.scene.lubricated else 0.0
             gain = max(outside_gain(m, balls["h_c_i"][j]), outside_gain(m, balls["h_c_o"][j]))
             c_abs += gain * t * Ci * Co / (Ci + Co)
-    assert abs(out[ak.O_C_BEARING] - ref["c_bearing"]) <= c_abs + RTOL * ref["c_bearing"], "C_bearing"
-    if m.scene.lubricated:  # beta's central difference (METHOD_RTOL, test_contacts.py) on top of the films' bound
+    assert abs(out[radial_bearing.O_C_BEARING] - ref["c_bearing"]) <= c_abs + RTOL * ref["c_bearing"], "C_bearing"
+    if (
+        m.scene.lubricated
+    ):  # beta's central difference (METHOD_RTOL, test_contact_outputs.py) on top of the films' bound
         for key in ("lambda_i", "lambda_o", "hmin_i", "hmin_o", "hc_i", "hc_o"):
             tol[key] += METHOD_RTOL
         for key in ("phi_ish_i", "phi_ish_o", "phi_rs_i", "phi_rs_o", "p_drag", "torque_drag"):
@@ -166,21 +172,21 @@ def check_against_twin(m, omega, F_r, T):
     for key, t in tol.items():
         assert_close(out[OUTPUTS[key]], ref[key], t, key)
     # integers: equal unless a threshold lies within the tolerance
-    lam_k = min(out[ak.O_LAMBDA_I], out[ak.O_LAMBDA_O])
-    assert out[ak.O_REGIME] == ek.lubrication_regime(lam_k)
+    lam_k = min(out[radial_bearing.O_LAMBDA_I], out[radial_bearing.O_LAMBDA_O])
+    assert out[radial_bearing.O_REGIME] == ek.lubrication_regime(lam_k)
     lam_r = min(ref["lambda_i"], ref["lambda_o"])
     if all(abs(lam_r - edge) > film_tol * edge for edge in (1.0, 3.0)):
-        assert out[ak.O_REGIME] == ref["regime"]
+        assert out[radial_bearing.O_REGIME] == ref["regime"]
     loaded = np.count_nonzero((ball[0] > 0.0) & (ball[1] > 0.0))
-    assert out[ak.O_N_LOADED] == loaded
+    assert out[radial_bearing.O_N_LOADED] == loaded
     compressions = [delta * math.cos(2.0 * math.pi * j / m.bearing.Z) - Pd / 2.0 for j in range(m.bearing.Z)]
     if all(abs(c) > 2.0 * tol_delta * max(delta, abs(Pd)) for c in compressions):
-        assert out[ak.O_N_LOADED] == ref["n_loaded"]
+        assert out[radial_bearing.O_N_LOADED] == ref["n_loaded"]
     # solver: no iteration without load, converged below the 200-iteration cap under any load
     if F_r == 0.0:
-        assert out[ak.O_ITER] == 0
+        assert out[radial_bearing.O_ITER] == 0
     else:
-        assert 1 <= out[ak.O_ITER] < 200
+        assert 1 <= out[radial_bearing.O_ITER] < 200
     return out, ref
 
 
@@ -233,15 +239,20 @@ def test_bearing_array_matches_twin_geometry():
     m = model("6208", "default", 0.0, "guessasma_oil")
     b = m.bearing
     radii = ref_geometry.curvature_radii(b.D, b.dm, b.f_i, b.f_o, 0.0)
-    assert_close(m.brg[[ak.B_RX_I, ak.B_RY_I, ak.B_RX_O, ak.B_RY_O]], radii, 1e-12, "radii")
     assert_close(
-        m.brg[[ak.B_K_I, ak.B_EE_I, ak.B_KK_I]],
+        m.brg[[radial_bearing.B_RX_I, radial_bearing.B_RY_I, radial_bearing.B_RX_O, radial_bearing.B_RY_O]],
+        radii,
+        1e-12,
+        "radii",
+    )
+    assert_close(
+        m.brg[[radial_bearing.B_K_I, radial_bearing.B_EE_I, radial_bearing.B_KK_I]],
         ref_hertz.hertz_coefficients_exact(radii[0], radii[1]),
         1e-12,
         "inner (k, E, K)",
     )
     assert_close(
-        m.brg[[ak.B_K_O, ak.B_EE_O, ak.B_KK_O]],
+        m.brg[[radial_bearing.B_K_O, radial_bearing.B_EE_O, radial_bearing.B_KK_O]],
         ref_hertz.hertz_coefficients_exact(radii[2], radii[3]),
         1e-12,
         "outer (k, E, K)",
@@ -253,11 +264,11 @@ def test_seed_case_6208():
     eta = 0.04 Pa s, xi = 2.3e-8 1/Pa: Q_max = 1457 N, Lambda_out at psi = 0 ~ 2.1-2.15, bearing capacitance
     of tens of pF."""
     out, ref = check_against_twin(model("6208", "default", 0.0, "guessasma_oil"), 500.0, 3000.0, 313.0)
-    assert out[ak.O_QMAX_I] == pytest.approx(1457.0, abs=0.5)
-    assert 2.1 <= out[ak.O_LAMBDA_O] <= 2.15
-    assert 10e-12 <= out[ak.O_C_BEARING] <= 500e-12
-    assert out[ak.O_EPS] == pytest.approx(0.5, rel=1e-12, abs=0)
-    assert out[ak.O_N_LOADED] == 5  # psi = 0, +-40, +-80 deg
+    assert out[radial_bearing.O_QMAX_I] == pytest.approx(1457.0, abs=0.5)
+    assert 2.1 <= out[radial_bearing.O_LAMBDA_O] <= 2.15
+    assert 10e-12 <= out[radial_bearing.O_C_BEARING] <= 500e-12
+    assert out[radial_bearing.O_EPS] == pytest.approx(0.5, rel=1e-12, abs=0)
+    assert out[radial_bearing.O_N_LOADED] == 5  # psi = 0, +-40, +-80 deg
 
 
 def test_zero_speed():
@@ -266,16 +277,16 @@ def test_zero_speed():
     out, ref = check_against_twin(m, 0.0, 3000.0, 313.0)
     for key in ("lambda_i", "lambda_o", "hmin_i", "hmin_o", "hc_i", "hc_o", "omega_cage", "omega_ball"):
         assert out[OUTPUTS[key]] == 0.0 == ref[key]
-    assert out[ak.O_REGIME] == ek.REGIME_BOUNDARY
-    assert out[ak.O_C_BEARING] > 0.0 and math.isfinite(out[ak.O_C_BEARING])
+    assert out[radial_bearing.O_REGIME] == ek.REGIME_BOUNDARY
+    assert out[radial_bearing.O_C_BEARING] > 0.0 and math.isfinite(out[radial_bearing.O_C_BEARING])
 
 
 def test_negative_speed_mirrors_kinematics_and_keeps_films():
     m = model("6208", "default", 12.6e-6, "iso_vg68_mineral")
     fwd, _ = check_against_twin(m, 800.0, 3000.0, 330.0)
     back, _ = check_against_twin(m, -800.0, 3000.0, 330.0)
-    assert back[ak.O_OMEGA_CAGE] == -fwd[ak.O_OMEGA_CAGE] < 0.0
-    assert back[ak.O_OMEGA_BALL] == -fwd[ak.O_OMEGA_BALL] < 0.0
+    assert back[radial_bearing.O_OMEGA_CAGE] == -fwd[radial_bearing.O_OMEGA_CAGE] < 0.0
+    assert back[radial_bearing.O_OMEGA_BALL] == -fwd[radial_bearing.O_OMEGA_BALL] < 0.0
     same = [v for k, v in OUTPUTS.items() if k not in ("omega_cage", "omega_ball")]
     assert np.array_equal(back[same], fwd[same])
 
@@ -285,17 +296,29 @@ def test_no_load_with_clearance():
     the outer contacts still carry F_c but no ball conducts, so C_bearing is the background term."""
     m = model("6208", "mean_pressure_background", 12.6e-6, "guessasma_oil")
     out, ref = check_against_twin(m, 500.0, 0.0, 313.0)
-    assert out[ak.O_DELTA_R] == 6.3e-6 and out[ak.O_EPS] == 0.0 and out[ak.O_N_LOADED] == 0
-    assert out[ak.O_QMAX_I] == 0.0 and out[ak.O_LAMBDA_I] == 0.0 and out[ak.O_HMIN_I] == 0.0
-    assert out[ak.O_QMAX_O] > 0.0  # F_c on every outer contact
-    assert out[ak.O_C_BEARING] == 30e-12
+    assert (
+        out[radial_bearing.O_DELTA_R] == 6.3e-6
+        and out[radial_bearing.O_EPS] == 0.0
+        and out[radial_bearing.O_N_LOADED] == 0
+    )
+    assert (
+        out[radial_bearing.O_QMAX_I] == 0.0
+        and out[radial_bearing.O_LAMBDA_I] == 0.0
+        and out[radial_bearing.O_HMIN_I] == 0.0
+    )
+    assert out[radial_bearing.O_QMAX_O] > 0.0  # F_c on every outer contact
+    assert out[radial_bearing.O_C_BEARING] == 30e-12
 
 
 def test_no_load_with_preload():
     """F_r = 0, P_d < 0: centred ring, every ball equally loaded (eps = inf, all balls loaded)."""
     m = model("6208", "default", -12.6e-6, "guessasma_oil")
     out, ref = check_against_twin(m, 500.0, 0.0, 313.0)
-    assert out[ak.O_DELTA_R] == 0.0 and out[ak.O_EPS] == math.inf and out[ak.O_N_LOADED] == 9
+    assert (
+        out[radial_bearing.O_DELTA_R] == 0.0
+        and out[radial_bearing.O_EPS] == math.inf
+        and out[radial_bearing.O_N_LOADED] == 9
+    )
     _, ball = run_kernel(m, 500.0, 0.0, 313.0)
     assert np.all(ball[0] == ball[0][0]) and ball[0][0] > 0.0
 
@@ -303,7 +326,7 @@ def test_no_load_with_preload():
 def test_eps_above_one_loads_every_ball():
     m = model("6208", "default", -25e-6, "guessasma_oil")
     out, _ = check_against_twin(m, 500.0, 1000.0, 313.0)
-    assert out[ak.O_EPS] >= 1.0 and out[ak.O_N_LOADED] == 9
+    assert out[radial_bearing.O_EPS] >= 1.0 and out[radial_bearing.O_N_LOADED] == 9
 
 
 def test_compiled_kernel_is_current():
@@ -314,9 +337,11 @@ def test_compiled_kernel_is_current():
     the kernel sources (bearing_fmu_common/jit.py, tests/unit/test_jit_cache.py) prevents it."""
     for lubricant, T in (("thesis_turbine_oil", 313.0), ("iso_vg68_mineral", 313.0), ("guessasma_oil", 233.15)):
         m = model("6208", "default", 5e-6, lubricant)
-        out = np.zeros(ak.O_SIZE)
+        out = np.zeros(radial_bearing.O_SIZE)
         ball = np.zeros((8, 9))
-        ak.analytic_bearing.py_func(700.0, 3000.0, T, m.brg, m.lubricant.array, m.nodes, m.weights, out, ball)
+        radial_bearing.analytic_bearing.py_func(
+            700.0, 3000.0, T, m.brg, m.lubricant.array, m.nodes, m.weights, out, ball
+        )
         try:
             jit_out, jit_ball = run_kernel(m, 700.0, 3000.0, T)
         except ZeroDivisionError as exc:
@@ -326,7 +351,7 @@ def test_compiled_kernel_is_current():
 
 def test_eps_without_load_and_clearance():
     out, ref = check_against_twin(model("6208", "default", 0.0, "guessasma_oil"), 500.0, 0.0, 313.0)
-    assert out[ak.O_EPS] == ref["eps"] == 0.5
+    assert out[radial_bearing.O_EPS] == ref["eps"] == 0.5
 
 
 def test_load_zone_is_mirror_symmetric():
@@ -334,24 +359,24 @@ def test_load_zone_is_mirror_symmetric():
     out, ball = run_kernel(m, 300.0, 2000.0, 313.0)
     Z = m.bearing.Z
     assert all(ball[0][j] == ball[0][(Z - j) % Z] for j in range(Z))
-    assert out[ak.O_N_LOADED] % 2 == 1  # the ball on the load line plus mirror pairs
+    assert out[radial_bearing.O_N_LOADED] % 2 == 1  # the ball on the load line plus mirror pairs
 
 
 @pytest.mark.parametrize("omega, F_r", [(500.0, 1e-310), (5.6e-160, 0.0)])
 def test_subnormal_loads_do_not_crash(omega, F_r):
     out, _ = run_kernel(model("6208", "default", 0.0, "guessasma_oil"), omega, F_r, 313.0)
-    assert np.all(np.isfinite(out[[ak.O_QMAX_I, ak.O_PMAX, ak.O_DELTA_R]]))
+    assert np.all(np.isfinite(out[[radial_bearing.O_QMAX_I, radial_bearing.O_PMAX, radial_bearing.O_DELTA_R]]))
 
 
 def test_smooth_surfaces_keep_their_film():
     m = AnalyticModel("6208", "guessasma_oil", Scene(), Pd=0.0)
-    m.brg[ak.B_SIGMA_I] = 0.0
-    m.brg[ak.B_SIGMA_O] = 0.0
+    m.brg[radial_bearing.B_SIGMA_I] = 0.0
+    m.brg[radial_bearing.B_SIGMA_O] = 0.0
     out, ball = run_kernel(m, 500.0, 3000.0, 313.0)
     ref, _ = ra.analytic_bearing(500.0, 3000.0, 313.0, m.brg, m.lubricant.array)
     assert ref["hmin_i"] > 0.0 and ref["lambda_i"] == math.inf and ref["regime"] == ek.REGIME_FULL_FILM
-    assert out[ak.O_HMIN_I] == pytest.approx(ref["hmin_i"], rel=1e-6, abs=0)
-    assert out[ak.O_LAMBDA_I] == math.inf and out[ak.O_REGIME] == ek.REGIME_FULL_FILM
+    assert out[radial_bearing.O_HMIN_I] == pytest.approx(ref["hmin_i"], rel=1e-6, abs=0)
+    assert out[radial_bearing.O_LAMBDA_I] == math.inf and out[radial_bearing.O_REGIME] == ek.REGIME_FULL_FILM
 
 
 @pytest.mark.parametrize(
@@ -369,8 +394,8 @@ def test_analytic_with_a_film_table_matches_twin(omega, F_r, T, scene):
     the twin corrects them; with a lubrication method the method's factors multiply the corrected film (the
     correction is the flooded isothermal film's, the factors scale that film)."""
     m = AnalyticModel("6208", "iso_vg68_mineral", SCENES[scene])
-    plain = run_kernel(m, omega, F_r, T)[0][ak.O_HMIN_I]
-    m.brg[ak.B_FILM_TABLE :] = made_up_table()
+    plain = run_kernel(m, omega, F_r, T)[0][radial_bearing.O_HMIN_I]
+    m.brg[radial_bearing.B_FILM_TABLE :] = made_up_table()
     check_against_twin(m, omega, F_r, T)
     if omega != 0.0:
-        assert run_kernel(m, omega, F_r, T)[0][ak.O_HMIN_I] != plain  # the table is read
+        assert run_kernel(m, omega, F_r, T)[0][radial_bearing.O_HMIN_I] != plain  # the table is read

@@ -14,7 +14,7 @@ import pytest
 
 from bearing_fmu.kernels import ball_coupled_newton as bc
 from bearing_fmu.kernels import ball_traction as bt
-from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.kernels import jones_harris
 from bearing_fmu.kernels.geometry import ball_direction
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
@@ -34,14 +34,26 @@ def _ball(case, j=0, load=1.0):
     m = QuasiStaticModel(bearing, lubricant, scene=SCENE, race_control="traction")
     m.evaluate(omega=omega, F_z=load * F_z)
     qs, d = m.qs, m.d
-    _, r_i, r_o, A1_0, A2_0, Rr, _ = qk.qs_geometry(qs, 0.0)
+    _, r_i, r_o, A1_0, A2_0, Rr, _ = jones_harris.qs_geometry(qs, 0.0)
     cp, sp = ball_direction(j, m.bearing.Z)
     A1 = A1_0 + d[2] + Rr * (d[3] * sp - d[4] * cp)
     A2 = A2_0 + d[0] * cp + d[1] * sp
-    D, dm, m_ball = qs[qk.QS_D], qs[qk.QS_DM], qs[qk.QS_M_BALL]
-    ball = (A1, A2, r_i, r_o, qs[qk.QS_K_I], qs[qk.QS_K_O], omega, D, dm, 0.1 * m_ball * D * D, 0.5 * m_ball * dm)
-    z = np.concatenate([m.X[:2, j], m.X[qk.X_Y :, j] * omega])
-    return ball, z, qs[qk.QS_TRACTION :].copy(), F_z / m.bearing.Z
+    D, dm, m_ball = qs[jones_harris.QS_D], qs[jones_harris.QS_DM], qs[jones_harris.QS_M_BALL]
+    ball = (
+        A1,
+        A2,
+        r_i,
+        r_o,
+        qs[jones_harris.QS_K_I],
+        qs[jones_harris.QS_K_O],
+        omega,
+        D,
+        dm,
+        0.1 * m_ball * D * D,
+        0.5 * m_ball * dm,
+    )
+    z = np.concatenate([m.X[:2, j], m.X[jones_harris.X_Y :, j] * omega])
+    return ball, z, qs[jones_harris.QS_TRACTION :].copy(), F_z / m.bearing.Z
 
 
 def _work():
@@ -94,7 +106,7 @@ def test_its_solution_is_the_nested_solves(case):
     x, y = start[:2].copy(), start[2:].copy()
     terms, out, Dy, Dp = _work()
     cw = bc.coupled_work()
-    assert bc.coupled_newton(x, y, ball, f_ball, qk._BALL_RTOL, tr, terms, out, Dy, Dp, np.zeros(4), cw)
+    assert bc.coupled_newton(x, y, ball, f_ball, jones_harris._BALL_RTOL, tr, terms, out, Dy, Dp, np.zeros(4), cw)
     assert x == pytest.approx(solved[:2], rel=1e-9)
     _, so, co, _, si, ci, Q_o, _, Q_i, _ = bc.ball_contacts(x[0], x[1], A1, A2, r_i, r_o, K_i, K_o)
     a_i, a_o = math.atan2(A1 - x[0], A2 - x[1]), math.atan2(x[0], x[1])
@@ -105,7 +117,7 @@ def test_its_solution_is_the_nested_solves(case):
     Mgi, Mgo = -out[bt.TE_FTAU_I], -out[bt.TE_FTAU_O]
     r1 = Q_i * si - Mgi * ci - Q_o * so + Mgo * co
     r2 = Q_i * ci + Mgi * si - Q_o * co + fc * nested[0] ** 2 - Mgo * so
-    assert math.hypot(r1, r2) <= qk._BALL_RTOL * (Q_i + Q_o + f_ball)
+    assert math.hypot(r1, r2) <= jones_harris._BALL_RTOL * (Q_i + Q_o + f_ball)
 
 
 def test_it_leaves_the_start_alone_where_a_contact_is_open():
@@ -119,6 +131,6 @@ def test_it_leaves_the_start_alone_where_a_contact_is_open():
     x0, y0 = x.copy(), y.copy()
     terms, out, Dy, Dp = _work()
     assert not bc.coupled_newton(
-        x, y, ball, f_ball, qk._BALL_RTOL, tr, terms, out, Dy, Dp, np.zeros(4), bc.coupled_work()
+        x, y, ball, f_ball, jones_harris._BALL_RTOL, tr, terms, out, Dy, Dp, np.zeros(4), bc.coupled_work()
     )
     assert np.array_equal(x, x0) and np.array_equal(y, y0)

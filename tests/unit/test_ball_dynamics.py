@@ -20,12 +20,12 @@ import pytest
 
 from bearing_fmu.kernels.ball_dynamics import integrator as dyn
 from bearing_fmu.kernels.ball_dynamics import state as s
-from bearing_fmu.kernels.ball_dynamics.contacts import groove_approach
+from bearing_fmu.kernels.ball_dynamics.contact_law import groove_approach
 from bearing_fmu.kernels.ball_dynamics.monitor import critical_time_step
 from bearing_fmu.kernels.ball_dynamics.tribology import ring_axis
 from bearing_fmu.kernels.hertz import hertz_contact
 from bearing_fmu.models.dem import DemModel, DemUnstableError
-from bearing_fmu.models.variables import InputError
+from bearing_fmu.models.limits import InputError
 from tests.reference import ref_ball_dynamics_integrator as ref
 from tests.unit.test_film_correction import made_up_table
 
@@ -496,7 +496,7 @@ def test_unstable_message_without_loaded_contact_names_no_infinite_limit():
 
 def test_pressure_above_the_iso_76_limit_gives_a_warning():
     """6208 at rest under 30 kN: p_max = 4.66 GPa at the most loaded contact, above the ISO 76 static limit
-    4.2 GPa: warned as by the other fidelities (models.variables.pressure_warnings); 3 kN gives no warning."""
+    4.2 GPa: warned as by the other fidelities (models.limits.pressure_warnings); 3 kN gives no warning."""
     model = DemModel("6208", "guessasma_oil")
     out = model.evaluate(3e-3, F_x=30000.0)
     assert 4.2e9 < out["p_max"] < 6e9

@@ -12,12 +12,11 @@ import numpy as np
 import pytest
 
 from bearing_fmu.kernels import ball_traction as bt
-from bearing_fmu.kernels import ehl
-from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.kernels import ehl, jones_harris
 from bearing_fmu.kernels.lubricant import lubricant_state
-from bearing_fmu.models.contacts import race_contacts, traction_block
+from bearing_fmu.models.limits import InputError
 from bearing_fmu.models.quasi_static import QuasiStaticModel
-from bearing_fmu.models.variables import InputError
+from bearing_fmu.models.race_contacts import race_contacts, traction_block
 from bearing_fmu.scene import Scene
 from tests.reference import ref_ball_traction as ref
 
@@ -39,8 +38,16 @@ def _ball(case):
     tr[bt.TR_ETA], tr[bt.TR_XI] = lubricant_state(313.15, m.lubricant.array)[:2]
     b = m.balls[:, 0]
     D, dm = m.bearing.D, m.bearing.dm
-    J = 0.1 * m.qs[qk.QS_M_BALL] * D * D
-    return (b[qk.BQ_A_I], b[qk.BQ_A_O], b[qk.BQ_Q_I], b[qk.BQ_Q_O]), tr, omega, D, dm, J, m.X[qk.X_Y :, 0] * omega
+    J = 0.1 * m.qs[jones_harris.QS_M_BALL] * D * D
+    return (
+        (b[jones_harris.BQ_A_I], b[jones_harris.BQ_A_O], b[jones_harris.BQ_Q_I], b[jones_harris.BQ_Q_O]),
+        tr,
+        omega,
+        D,
+        dm,
+        J,
+        m.X[jones_harris.X_Y :, 0] * omega,
+    )
 
 
 @pytest.mark.parametrize("case", CASES)
@@ -105,14 +112,14 @@ def test_the_stiffness_is_the_derivative_of_the_traction_solution(case):
     m.evaluate(omega=omega, F_z=F_z)
     d0, X0, K = m.d.copy(), m.X.copy(), m.K.copy()
     F = np.zeros(5)
-    contact = np.zeros((qk.CS_SIZE, m.bearing.Z))
+    contact = np.zeros((jones_harris.CS_SIZE, m.bearing.Z))
     for c in range(5):
         loads = []
         for sgn in (1.0, -1.0):
             d = d0.copy()
             d[c] += sgn * 1e-8
             X = X0.copy()
-            assert qk.ring_loads(d, m.qs, 0.0, omega, X, F, np.zeros((5, 5)), contact, False, F_z) == 0
+            assert jones_harris.ring_loads(d, m.qs, 0.0, omega, X, F, np.zeros((5, 5)), contact, False, F_z) == 0
             loads.append(F.copy())
         fd = (loads[0] - loads[1]) / 2e-8
         assert K[:, c] == pytest.approx(fd, abs=0.01 * np.abs(fd).max())

@@ -15,8 +15,8 @@ from hypothesis import strategies as st
 
 from bearing_fmu.build import SCENES_DIR
 from bearing_fmu.kernels import bearing_outputs as bo
-from bearing_fmu.kernels import contacts as ck
-from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.kernels import contact_outputs as ck
+from bearing_fmu.kernels import jones_harris
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
 from tests.reference import ref_bearing_outputs as rb
@@ -39,20 +39,20 @@ def test_every_public_kernel_has_a_twin_and_the_codes_match():
     ):
         assert getattr(bo, name) == getattr(rb, name), name
     for name in ("BQ_Q_I", "BQ_Q_O", "BQ_A_I", "BQ_A_O", "BQ_BETA", "BQ_W_M", "BQ_W_R", "BQ_MU_REQ_I", "BQ_MU_REQ_O"):
-        assert getattr(qk, name) == getattr(rb, name), name
+        assert getattr(jones_harris, name) == getattr(rb, name), name
 
 
 def random_balls(rng, Z, inner_loaded):
-    balls = np.zeros((qk.BQ_SIZE, Z))
-    balls[qk.BQ_Q_I] = rng.uniform(0.0, 900.0, Z) * (rng.uniform(size=Z) < 0.7) if inner_loaded else 0.0
-    balls[qk.BQ_Q_O] = rng.uniform(0.0, 1200.0, Z)
-    balls[qk.BQ_A_I] = rng.uniform(0.0, 0.6, Z)
-    balls[qk.BQ_A_O] = rng.uniform(0.0, 0.6, Z)
-    balls[qk.BQ_BETA] = rng.uniform(-0.5, 0.5, Z)
-    balls[qk.BQ_W_M] = rng.uniform(400.0, 460.0, Z)
-    balls[qk.BQ_W_R] = rng.uniform(-4000.0, -3000.0, Z)
-    balls[qk.BQ_MU_REQ_I] = rng.uniform(0.0, 0.1, Z)
-    balls[qk.BQ_MU_REQ_O] = rng.uniform(0.0, 0.1, Z)
+    balls = np.zeros((jones_harris.BQ_SIZE, Z))
+    balls[jones_harris.BQ_Q_I] = rng.uniform(0.0, 900.0, Z) * (rng.uniform(size=Z) < 0.7) if inner_loaded else 0.0
+    balls[jones_harris.BQ_Q_O] = rng.uniform(0.0, 1200.0, Z)
+    balls[jones_harris.BQ_A_I] = rng.uniform(0.0, 0.6, Z)
+    balls[jones_harris.BQ_A_O] = rng.uniform(0.0, 0.6, Z)
+    balls[jones_harris.BQ_BETA] = rng.uniform(-0.5, 0.5, Z)
+    balls[jones_harris.BQ_W_M] = rng.uniform(400.0, 460.0, Z)
+    balls[jones_harris.BQ_W_R] = rng.uniform(-4000.0, -3000.0, Z)
+    balls[jones_harris.BQ_MU_REQ_I] = rng.uniform(0.0, 0.1, Z)
+    balls[jones_harris.BQ_MU_REQ_O] = rng.uniform(0.0, 0.1, Z)
     return balls
 
 
@@ -76,10 +76,10 @@ def test_summary_random(seed, Z, inner, omega):
 
 def test_first_of_equal_loads_is_the_most_loaded():
     balls = random_balls(np.random.default_rng(1), 6, True)
-    balls[qk.BQ_Q_I] = [0.0, 5.0, 5.0, 1.0, 0.0, 5.0]
+    balls[jones_harris.BQ_Q_I] = [0.0, 5.0, 5.0, 1.0, 0.0, 5.0]
     summary = np.zeros(bo.BS_SIZE)
     bo.ball_set_summary(balls, 1.0, 0, summary)
-    assert summary[bo.BS_ALPHA_I] == balls[qk.BQ_A_I, 1]
+    assert summary[bo.BS_ALPHA_I] == balls[jones_harris.BQ_A_I, 1]
 
 
 @pytest.mark.parametrize("scene_file", ["quasi_static.toml", "quasi_static_displacement.toml"])

@@ -10,7 +10,7 @@ import pytest
 
 from bearing_fmu import AnalyticModel, ParameterError, QuasiStaticModel, Scene, load_bearing
 from bearing_fmu.build import SCENES_DIR
-from bearing_fmu.models.variables import InputError
+from bearing_fmu.models.limits import InputError
 from bearing_fmu.params import clearance_for_angle
 
 CATALOGUE = load_bearing("B7214C").path

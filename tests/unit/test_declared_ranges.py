@@ -26,8 +26,8 @@ from bearing_fmu.kernels.radial_bearing import (
 )
 from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.models.declarations import OMEGA, T_OIL
+from bearing_fmu.models.limits import P_MAX_ERROR
 from bearing_fmu.models.quasi_static import QuasiStaticModel
-from bearing_fmu.models.variables import P_MAX_ERROR
 from bearing_fmu_common.variables import InputError, InputLimits, Variable
 from spindle.thermal.model import SpindleThermalModel
 

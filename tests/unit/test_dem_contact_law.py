@@ -1,5 +1,5 @@
-"""The DEM's ball-race contact law (kernels.ball_dynamics.contacts) against its twin
-(tests/reference/ref_ball_dynamics_contacts.py), one contact at a time.
+"""The DEM's ball-race contact law (kernels.ball_dynamics.contact_law) against its twin
+(tests/reference/ref_ball_dynamics_contact_law.py), one contact at a time.
 
 States: random contacts of a 6208-sized ball (D = 11.9 mm, K_h of a steel contact) on the inner race of a tilted,
 translating, turning ring and on the fixed outer race, in each regime (boundary, mixed, full film), with the
@@ -20,9 +20,9 @@ import math
 import numpy as np
 import pytest
 
-from bearing_fmu.kernels.ball_dynamics import contacts as ck
+from bearing_fmu.kernels.ball_dynamics import contact_law as ck
 from bearing_fmu.kernels.ehl import REGIME_BOUNDARY, REGIME_FULL_FILM, REGIME_MIXED
-from tests.reference import ref_ball_dynamics_contacts as ref
+from tests.reference import ref_ball_dynamics_contact_law as ref
 
 D = 0.0119  # m
 K_H = 9.0e9  # N/m^1.5, a steel ball on a steel groove (the 6208's inner contact)

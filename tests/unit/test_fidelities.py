@@ -20,7 +20,7 @@ LOOPING_LAYERS = (
     "bearing_fmu/build.py",
     "bearing_fmu/scene.py",
     "bearing_fmu/fmu_files.py",
-    "spindle/build.py",
+    "spindle/all_fmus.py",
     "spindle/configured.py",
     "spindle/cli.py",
     "spindle/check.py",
@@ -50,7 +50,9 @@ def fidelity_branches(source):
 
 
 def test_the_branch_finder_finds_branches():
-    found = fidelity_branches("if scene.fidelity == 'dem':\n    pass\nx = fidelity in ('a', 'b')\ny = f.name == 'dem'\n")
+    found = fidelity_branches(
+        "if scene.fidelity == 'dem':\n    pass\nx = fidelity in ('a', 'b')\ny = f.name == 'dem'\n"
+    )
     assert found == [1, 3]
 
 

@@ -10,10 +10,9 @@ import math
 import numpy as np
 import pytest
 
-from bearing_fmu.kernels import contacts as ck
-from bearing_fmu.kernels import ehl
+from bearing_fmu.kernels import contact_outputs as ck
+from bearing_fmu.kernels import ehl, radial_bearing
 from bearing_fmu.kernels import film_correction as fc
-from bearing_fmu.kernels import radial_bearing as ak
 from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.kernels.lubricant import lubricant_state
 from bearing_fmu.models import film_table as ft
@@ -132,7 +131,7 @@ def test_table_is_read_back_from_the_cache_and_missing_one_names_the_command(tmp
 
 
 FIDELITIES = (
-    (AnalyticModel, "analytic", lambda m: m.brg[ak.B_FILM_TABLE :]),
+    (AnalyticModel, "analytic", lambda m: m.brg[radial_bearing.B_FILM_TABLE :]),
     (QuasiStaticModel, "quasi_static", lambda m: m.cp[ck.CP_FILM_TABLE :]),
     (DemModel, "dem", lambda m: m.par[s.P_FILM_TABLE :]),
 )

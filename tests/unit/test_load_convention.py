@@ -10,7 +10,7 @@ import math
 import numpy as np
 import pytest
 
-from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.kernels import jones_harris
 from bearing_fmu.kernels.geometry import ball_direction
 from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.models.quasi_static import QuasiStaticModel
@@ -43,7 +43,7 @@ def test_analytic_and_quasi_static_agree_on_a_pure_radial_load(bearing, F_y):
     q = qs.evaluate(omega=0.0, F_y=F_y, T_oil=T_OIL)
     Z, Pd = analytic.bearing.Z, analytic.Pd
     # the same balls carry the load: ball 1 the most, mirror balls j and Z - j alike, the same count
-    loads = qs.balls[qk.BQ_Q_I]
+    loads = qs.balls[jones_harris.BQ_Q_I]
     assert int(np.argmax(loads)) == 0 == int(np.argmax(analytic.ball[0]))
     assert loads[1:] == pytest.approx(loads[1:][::-1], rel=1e-9, abs=1e-9 * loads[0])
     assert q["n_loaded"] == a["n_loaded"]
@@ -72,7 +72,7 @@ def test_tilts_and_moments_are_right_handed(moment, side):
     ((name, value),) = moment.items()
     tilt = out["theta_x"] if name == "M_x" else out["theta_y"]
     assert math.copysign(1.0, tilt) == math.copysign(1.0, value) and tilt != 0.0
-    j = int(np.argmax(qs.balls[qk.BQ_Q_I]))
+    j = int(np.argmax(qs.balls[jones_harris.BQ_Q_I]))
     c, s = ball_direction(j, qs.bearing.Z)
     # within half a ball pitch of that side (Z = 17 is odd: -y lies exactly half-way between two balls)
     assert c * side[0] + s * side[1] >= math.cos(math.pi / qs.bearing.Z) - 1e-12

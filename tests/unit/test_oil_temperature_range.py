@@ -1,5 +1,5 @@
 """The oil temperature against the range the lubricant file's data support ([temperature_range]): a warning once
-per entry into the extrapolated range, in every fidelity (models.variables.OilTemperatureWatch).
+per entry into the extrapolated range, in every fidelity (models.limits.OilTemperatureWatch).
 
 iso_vg68_mineral: Walther's law through 40 and 100 C, read 40 K below and 20 K above (0-120 C, estimated); the
 thesis turbine oil: characterised between 30 and 150 C (Wheeler 2016, section 3.2). The B7214C with 250 K oil

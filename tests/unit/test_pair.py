@@ -12,9 +12,9 @@ import numpy as np
 import pytest
 
 from bearing_fmu.kernels.jones_harris import BQ_A_I, BQ_A_O
+from bearing_fmu.models.limits import InputError
 from bearing_fmu.models.pair import PairAssembly, solve_pair
 from bearing_fmu.models.quasi_static import QuasiStaticModel, SolverError
-from bearing_fmu.models.variables import InputError
 from bearing_fmu.scene import Scene
 
 RPM = 2.0 * math.pi / 60.0

@@ -20,62 +20,62 @@ import math
 import numpy as np
 import pytest
 
-from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.kernels import jones_harris
 from tests.reference import ref_jones_harris as ref
 
 RPM = 2.0 * math.pi / 60.0
 RACES = {
-    "outer": qk.RACE_OUTER,
-    "inner": qk.RACE_INNER,
-    "hybrid": qk.RACE_HYBRID,
-    "hybrid_outer": qk.RACE_HYBRID_OUTER_SPLIT,
-    "hybrid_inner": qk.RACE_HYBRID_INNER_SPLIT,
-    "hybrid_equal": qk.RACE_HYBRID_EQUAL_SPLIT,
-    "hybrid_controlling": qk.RACE_HYBRID_CONTROLLING,
+    "outer": jones_harris.RACE_OUTER,
+    "inner": jones_harris.RACE_INNER,
+    "hybrid": jones_harris.RACE_HYBRID,
+    "hybrid_outer": jones_harris.RACE_HYBRID_OUTER_SPLIT,
+    "hybrid_inner": jones_harris.RACE_HYBRID_INNER_SPLIT,
+    "hybrid_equal": jones_harris.RACE_HYBRID_EQUAL_SPLIT,
+    "hybrid_controlling": jones_harris.RACE_HYBRID_CONTROLLING,
 }
 
 
 def pack(p, tol=1e-12, maxit=100):
     """Kernel parameter array from a twin parameter dict (same K, mass, c_hyb)."""
-    qs = np.zeros(qk.QS_SIZE)
-    qs[qk.QS_Z] = p["Z"]
-    qs[qk.QS_D] = p["D"]
-    qs[qk.QS_DM] = p["dm"]
-    qs[qk.QS_FI] = p["f_i"]
-    qs[qk.QS_FO] = p["f_o"]
-    qs[qk.QS_PD] = p["Pd"]
-    qs[qk.QS_ANGULAR] = 1.0 if p["angular"] else 0.0
-    qs[qk.QS_K_I] = p["K_i"]
-    qs[qk.QS_K_O] = p["K_o"]
-    qs[qk.QS_M_BALL] = p["m_ball"]
-    qs[qk.QS_RACE] = RACES[p["race"]]
-    qs[qk.QS_CENTRIFUGAL] = 1.0 if p["centrifugal"] else 0.0
-    qs[qk.QS_GYROSCOPIC] = 1.0 if p["gyroscopic"] else 0.0
-    qs[qk.QS_C_HYB] = p["c_hyb"]
-    qs[qk.QS_TOL] = tol
-    qs[qk.QS_MAXIT] = maxit
-    qs[qk.QS_STIFFNESS] = 1.0
+    qs = np.zeros(jones_harris.QS_SIZE)
+    qs[jones_harris.QS_Z] = p["Z"]
+    qs[jones_harris.QS_D] = p["D"]
+    qs[jones_harris.QS_DM] = p["dm"]
+    qs[jones_harris.QS_FI] = p["f_i"]
+    qs[jones_harris.QS_FO] = p["f_o"]
+    qs[jones_harris.QS_PD] = p["Pd"]
+    qs[jones_harris.QS_ANGULAR] = 1.0 if p["angular"] else 0.0
+    qs[jones_harris.QS_K_I] = p["K_i"]
+    qs[jones_harris.QS_K_O] = p["K_o"]
+    qs[jones_harris.QS_M_BALL] = p["m_ball"]
+    qs[jones_harris.QS_RACE] = RACES[p["race"]]
+    qs[jones_harris.QS_CENTRIFUGAL] = 1.0 if p["centrifugal"] else 0.0
+    qs[jones_harris.QS_GYROSCOPIC] = 1.0 if p["gyroscopic"] else 0.0
+    qs[jones_harris.QS_C_HYB] = p["c_hyb"]
+    qs[jones_harris.QS_TOL] = tol
+    qs[jones_harris.QS_MAXIT] = maxit
+    qs[jones_harris.QS_STIFFNESS] = 1.0
     return qs
 
 
 def kernel_loads(qs, d, omega, dPd=0.0, X=None):
-    Z = int(qs[qk.QS_Z])
+    Z = int(qs[jones_harris.QS_Z])
     X = np.zeros((2, Z)) if X is None else X
     F = np.zeros(5)
     K = np.zeros((5, 5))
-    balls = np.zeros((qk.BQ_SIZE, Z))
-    status = qk.bearing_loads(np.asarray(d, float), qs, dPd, omega, X, F, K, balls)
+    balls = np.zeros((jones_harris.BQ_SIZE, Z))
+    status = jones_harris.bearing_loads(np.asarray(d, float), qs, dPd, omega, X, F, K, balls)
     return status, F, K, balls, X
 
 
 def kernel_solve(qs, F_applied, omega, control=(1, 1, 1, 1, 1), d0=None, dPd=0.0):
-    Z = int(qs[qk.QS_Z])
+    Z = int(qs[jones_harris.QS_Z])
     d = np.zeros(5) if d0 is None else np.array(d0, float)
     X = np.zeros((2, Z))
     F = np.zeros(5)
     K = np.zeros((5, 5))
-    balls = np.zeros((qk.BQ_SIZE, Z))
-    status, iters, res = qk.solve_quasistatic(
+    balls = np.zeros((jones_harris.BQ_SIZE, Z))
+    status, iters, res = jones_harris.solve_quasistatic(
         np.asarray(F_applied, float), np.asarray(control, float), d, qs, dPd, omega, X, F, K, balls
     )
     return status, d, F, K, balls, X
@@ -152,7 +152,7 @@ def test_solution_matches_twin(label, p, F_applied, omega):
     """Load-controlled solution: displacements, ball loads and contact angles equal the twin's."""
     p = dict(p, omega=omega)
     status, d, F, K, balls, X = kernel_solve(pack(p), F_applied, omega)
-    assert status == qk.QS_OK
+    assert status == jones_harris.QS_OK
     d_ref = ref.solve_loads(F_applied, p)
     scale = np.array([1, 1, 1, p["dm"] / 2, p["dm"] / 2])
     assert np.max(np.abs((d - d_ref) * scale)) <= 1e-6 * np.max(np.abs(d_ref * scale))
@@ -160,13 +160,13 @@ def test_solution_matches_twin(label, p, F_applied, omega):
     assert np.allclose(F, F_ref, rtol=0, atol=1e-8 * np.max(np.abs(F_ref)))
     q_scale = max(b["Q_o"] for b in ref_balls)
     for j, b in enumerate(ref_balls):
-        assert balls[qk.BQ_Q_I, j] == pytest.approx(b["Q_i"], abs=1e-8 * q_scale)
-        assert balls[qk.BQ_Q_O, j] == pytest.approx(b["Q_o"], abs=1e-8 * q_scale)
+        assert balls[jones_harris.BQ_Q_I, j] == pytest.approx(b["Q_i"], abs=1e-8 * q_scale)
+        assert balls[jones_harris.BQ_Q_O, j] == pytest.approx(b["Q_o"], abs=1e-8 * q_scale)
         if b["Q_i"] > 1e-6 * q_scale:
-            assert balls[qk.BQ_A_I, j] == pytest.approx(b["a_i"], abs=1e-8)
-            assert balls[qk.BQ_A_O, j] == pytest.approx(b["a_o"], abs=1e-8)
-            assert balls[qk.BQ_W_M, j] == pytest.approx(b["w_m"], rel=1e-8, abs=1e-9)
-            assert balls[qk.BQ_BETA, j] == pytest.approx(b["beta"], abs=1e-8)
+            assert balls[jones_harris.BQ_A_I, j] == pytest.approx(b["a_i"], abs=1e-8)
+            assert balls[jones_harris.BQ_A_O, j] == pytest.approx(b["a_o"], abs=1e-8)
+            assert balls[jones_harris.BQ_W_M, j] == pytest.approx(b["w_m"], rel=1e-8, abs=1e-9)
+            assert balls[jones_harris.BQ_BETA, j] == pytest.approx(b["beta"], abs=1e-8)
 
 
 @pytest.mark.parametrize("label,p,F_applied,omega", LOAD_CASES, ids=[c[0] for c in LOAD_CASES])
@@ -175,7 +175,7 @@ def test_jacobian_matches_central_differences(label, p, F_applied, omega):
     against the kernel's own loads and against the twin's central differences."""
     p = dict(p, omega=omega)
     status, d, F, K, balls, X = kernel_solve(pack(p), F_applied, omega)
-    assert status == qk.QS_OK
+    assert status == jones_harris.QS_OK
     assert relative_entry_error(K, central_difference(pack(p), d, omega, X)) <= 1e-5
     assert relative_entry_error(K, np.asarray(ref.stiffness_fd(d, p))) <= 1e-5
 
@@ -188,7 +188,7 @@ def test_stiffness_symmetric_at_rest(label, p, F_applied, omega):
     (relative to its largest entry, in consistent units: rotations as arc lengths at Rr_i)."""
     qs = pack(p)
     status, d, F, K, balls, X = kernel_solve(qs, F_applied, 0.0)
-    Rr = qk.qs_geometry(qs, 0.0)[5]
+    Rr = jones_harris.qs_geometry(qs, 0.0)[5]
     s = np.array([1.0, 1.0, 1.0, Rr, Rr])
     Ks = K / np.outer(s, s)
     assert np.max(np.abs(Ks - Ks.T)) <= 1e-8 * np.max(np.abs(Ks))
@@ -201,10 +201,10 @@ def test_pure_axial_load_gives_axisymmetric_positive_definite_stiffness(omega):
     to rounding), and the symmetric part of K is positive definite."""
     p = ref.params_b7214c(centrifugal=True, gyroscopic=True, race="outer", omega=omega)
     status, d, F, K, balls, X = kernel_solve(pack(p), (0.0, 0.0, 800.0, 0.0, 0.0), omega)
-    assert status == qk.QS_OK and np.all(balls[qk.BQ_Q_I] > 0.0)
+    assert status == jones_harris.QS_OK and np.all(balls[jones_harris.BQ_Q_I] > 0.0)
     assert K[0, 0] == pytest.approx(K[1, 1], rel=1e-9)
     assert K[3, 3] == pytest.approx(K[4, 4], rel=1e-9)
-    Rr = qk.qs_geometry(pack(p), 0.0)[5]
+    Rr = jones_harris.qs_geometry(pack(p), 0.0)[5]
     s = np.array([1.0, 1.0, 1.0, Rr, Rr])
     Ks = K / np.outer(s, s)
     assert np.all(np.linalg.eigvalsh(0.5 * (Ks + Ks.T)) > 0.0)
@@ -227,20 +227,20 @@ def test_kinematics_complex_step_matches_real_evaluation():
     outer-race-control law leaves no spin on the outer contact (Jones 1960)."""
     p = ref.params_b7214c(centrifugal=True, gyroscopic=True, race="outer", omega=1000.0)
     status, d, F, K, balls, X = kernel_solve(pack(p), (0.0, 0.0, 800.0, 0.0, 0.0), 1000.0)
-    assert np.max(np.abs(balls[qk.BQ_SPIN_O])) <= 1e-9 * np.max(np.abs(balls[qk.BQ_SPIN_I]))
+    assert np.max(np.abs(balls[jones_harris.BQ_SPIN_O])) <= 1e-9 * np.max(np.abs(balls[jones_harris.BQ_SPIN_I]))
     F_ref, ref_balls = ref.bearing_loads(d, p)
     for j, b in enumerate(ref_balls):
-        assert balls[qk.BQ_W_R, j] == pytest.approx(b["w_R"], rel=1e-9)
-        assert balls[qk.BQ_F_C, j] == pytest.approx(b["F_c"], rel=1e-9)
-        assert balls[qk.BQ_M_G, j] == pytest.approx(b["M_g"], rel=1e-9)
+        assert balls[jones_harris.BQ_W_R, j] == pytest.approx(b["w_R"], rel=1e-9)
+        assert balls[jones_harris.BQ_F_C, j] == pytest.approx(b["F_c"], rel=1e-9)
+        assert balls[jones_harris.BQ_M_G, j] == pytest.approx(b["M_g"], rel=1e-9)
 
 
 def test_unloaded_bearing_with_clearance_stays_centred():
     """F = 0 with clearance: every ball is free, d = 0, K = 0 (singular, reported as zeros, no NaN)."""
     qs = pack(ref.params_6208(Pd=20e-6))
     status, d, F, K, balls, X = kernel_solve(qs, (0.0,) * 5, 0.0)
-    assert status == qk.QS_OK
-    assert np.all(d == 0.0) and np.all(K == 0.0) and np.all(balls[qk.BQ_Q_I] == 0.0)
+    assert status == jones_harris.QS_OK
+    assert np.all(d == 0.0) and np.all(K == 0.0) and np.all(balls[jones_harris.BQ_Q_I] == 0.0)
 
 
 @pytest.mark.parametrize("F_r", [1e-3, 1.0, 50.0])
@@ -249,7 +249,7 @@ def test_nearly_unloaded_bearing_converges(F_r):
     Newton step from the unloaded start is regularised and capped, then backtracks."""
     qs = pack(ref.params_6208(Pd=20e-6))
     status, d, F, K, balls, X = kernel_solve(qs, (F_r, 0.0, 0.0, 0.0, 0.0), 0.0)
-    assert status == qk.QS_OK
+    assert status == jones_harris.QS_OK
     assert F[0] == pytest.approx(F_r, rel=1e-9)
     assert d[0] > 10e-6  # the ring crossed the radial clearance Pd/2
     assert np.all(np.isfinite(K))
@@ -261,9 +261,9 @@ def test_centrifugal_dominated_outer_contacts_at_very_high_speed():
     omega = 30000 * RPM
     p = ref.params_b7214c(centrifugal=True, gyroscopic=True, race="outer", omega=omega)
     status, d, F, K, balls, X = kernel_solve(pack(p), (0.0, 0.0, 100.0, 0.0, 0.0), omega)
-    assert status == qk.QS_OK
-    assert np.all(balls[qk.BQ_Q_O] > 3.0 * balls[qk.BQ_Q_I])
-    assert np.all(balls[qk.BQ_F_C] > 0.5 * balls[qk.BQ_Q_O])
+    assert status == jones_harris.QS_OK
+    assert np.all(balls[jones_harris.BQ_Q_O] > 3.0 * balls[jones_harris.BQ_Q_I])
+    assert np.all(balls[jones_harris.BQ_F_C] > 0.5 * balls[jones_harris.BQ_Q_O])
     assert np.all(np.isfinite(K))
 
 
@@ -272,7 +272,7 @@ def test_iteration_cap_reports_instead_of_hanging():
     clear error) instead of looping."""
     qs = pack(ref.params_b7214c(centrifugal=True, race="outer"), maxit=1)
     status, *_ = kernel_solve(qs, (500.0, 0.0, 800.0, 0.0, 0.0), 10000 * RPM)
-    assert status == qk.QS_NOT_CONVERGED
+    assert status == jones_harris.QS_NOT_CONVERGED
 
 
 def test_mixed_control_holds_the_imposed_axial_position():
@@ -284,6 +284,6 @@ def test_mixed_control_holds_the_imposed_axial_position():
     d0 = np.zeros(5)
     d0[2] = d[2]
     status2, d2, F2, *_ = kernel_solve(qs, (300.0, 0.0, 0.0, 0.0, 0.0), 0.0, control=(1, 1, 0, 1, 1), d0=d0)
-    assert status2 == qk.QS_OK
+    assert status2 == jones_harris.QS_OK
     assert F2[2] == pytest.approx(800.0, rel=1e-8)
     assert np.allclose(d2, d, rtol=0, atol=1e-12)

@@ -15,7 +15,7 @@ import pytest
 
 from bearing_fmu import InputError, QuasiStaticModel, Scene
 from bearing_fmu.build import SCENES_DIR
-from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.kernels import jones_harris
 from tests.reference import ref_jones_harris as ref
 from tests.unit.test_quasistatic import kernel_solve, pack
 
@@ -46,7 +46,7 @@ def test_run_up_from_rest_under_load_refuses_no_step(bearing):
         for k in range(1001):
             m.evaluate(omega=10000.0 * RPM * k / 1000, **load)
             most = max(most, m.status[1])
-        assert m.status[0] == qk.QS_OK
+        assert m.status[0] == jones_harris.QS_OK
         assert most <= 60, (load, most)  # bearing evaluations of the worst step (a full cap would be 100+)
 
 
@@ -83,14 +83,16 @@ def test_zero_load_in_clearance_gives_the_centre_whatever_the_history(label, p, 
     centre = ref.solve_loads(np.zeros(5), p)
     assert np.array_equal(centre, ref.zero_load_position(p))
     start = np.array([3e-6, -1e-6, 7e-6, 1e-4, -1e-4])  # the kernel's rule on all five DOFs load-controlled
-    A1_0 = qk.qs_geometry(qs, 0.0)[3]
-    assert qk._free_ring_start(np.zeros(5), np.arange(5), 5, A1_0, start, np.zeros((qk.CS_SIZE, p["Z"])))
+    A1_0 = jones_harris.qs_geometry(qs, 0.0)[3]
+    assert jones_harris._free_ring_start(
+        np.zeros(5), np.arange(5), 5, A1_0, start, np.zeros((jones_harris.CS_SIZE, p["Z"]))
+    )
     assert np.array_equal(start, ref.zero_load_position(p))
     A = (p["f_i"] + p["f_o"] - 1.0) * p["D"]
     results = []
     for d0 in (None, (0.0, 0.0, 20e-6, 0.0, 0.0), (0.0, 0.0, -0.3 * A, 0.0, 0.0), (5e-6, -3e-6, 0.0, 1e-4, 0.0)):
         status, d, F, *_ = kernel_solve(qs, np.zeros(5), p["omega"], d0=d0)
-        assert status == qk.QS_OK
+        assert status == jones_harris.QS_OK
         results.append(d)
     for d in results:
         assert np.array_equal(d, centre)
@@ -112,7 +114,7 @@ def test_low_speed_solution_matches_twin():
     # 5 kN along the line of ball 1 (+y), 2 kN across it (-x), 60 N.m about the y axis (docs/conventions.md)
     F_applied = (-2000.0, 5000.0, 0.0, 0.0, 60.0)
     status, d, *_ = kernel_solve(pack(p, tol=1e-10), F_applied, p["omega"])
-    assert status == qk.QS_OK
+    assert status == jones_harris.QS_OK
     d_ref = ref.solve_loads(F_applied, p)
     scale = np.array([1, 1, 1, p["dm"] / 2, p["dm"] / 2])
     assert np.max(np.abs((d - d_ref) * scale)) <= 1e-6 * np.max(np.abs(d_ref * scale))
@@ -142,7 +144,7 @@ def test_radial_load_with_a_clearance_of_half_the_groove_matches_the_twin():
     p = ref.params_6208(centrifugal=True, gyroscopic=True, omega=500.0, Pd=0.5 * A)
     F_applied = (0.0, 3000.0, 0.0, 0.0, 0.0)
     status, d, *_ = kernel_solve(pack(p, tol=1e-10), F_applied, p["omega"])
-    assert status == qk.QS_OK
+    assert status == jones_harris.QS_OK
     d_ref = ref.solve_loads(F_applied, p)
     scale = np.array([1, 1, 1, p["dm"] / 2, p["dm"] / 2])
     assert np.max(np.abs((d - d_ref) * scale)) <= 1e-6 * np.max(np.abs(d_ref * scale))
@@ -159,7 +161,7 @@ def test_deep_groove_bearing_with_a_large_clearance_converges_under_radial_load(
         for F_y in (300.0, 3000.0):
             m = QuasiStaticModel("6208", scene=SCENE, Pd=share * A)
             out = m.evaluate(omega=omega, F_y=F_y)
-            assert m.status[0] == qk.QS_OK
+            assert m.status[0] == jones_harris.QS_OK
             assert all(np.all(np.isfinite(np.asarray(v, dtype=float))) for v in out.values())
             assert abs(out["z"]) <= 1e-9 * A
             assert 0.0 < out["omega_cage"] < omega
@@ -178,7 +180,7 @@ def test_radial_load_alone_on_a_single_angular_contact_bearing_is_refused_every_
             with pytest.raises(InputError, match="groove bottom with nothing to locate it axially"):
                 m.evaluate(omega=omega, F_y=3000.0)
             m.evaluate(omega=omega, F_y=3000.0, F_z=1000.0)
-            assert m.status[0] == qk.QS_OK
+            assert m.status[0] == jones_harris.QS_OK
 
 
 @pytest.mark.parametrize("F_y", [10.0, 30.0, 100.0])

@@ -18,7 +18,7 @@ import math
 import numpy as np
 import pytest
 
-from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.kernels import jones_harris
 from tests.reference import ref_jones_harris as ref
 from tests.unit._compare import assert_close
 from tests.unit.test_quasistatic import RACES, pack
@@ -39,7 +39,7 @@ def test_geometry_matches_twin(name, dPd):
     p = dict(PARAMS[name], dPd=dPd)
     g = ref.geometry(p)
     expected = (g["A"], g["r_i"], g["r_o"], g["A1_0"], g["A2_0"], g["Rr_i"], g["alpha0"])
-    assert_close(qk.qs_geometry(pack(p), dPd), expected, RTOL, f"{name}, dPd = {dPd}")
+    assert_close(jones_harris.qs_geometry(pack(p), dPd), expected, RTOL, f"{name}, dPd = {dPd}")
 
 
 @pytest.mark.parametrize("race", list(RACES))
@@ -52,15 +52,15 @@ def test_kinematics_and_moment_share_match_twin(race, loads):
     C = p["c_hyb"] * (Q_i / Q_o) ** (4.0 / 3.0) if race.startswith("hybrid") else 0.0
     twin = ref.kinematics(dict(a_i=a_i, a_o=a_o, Q_i=Q_i, Q_o=Q_o), p, g)
     code = RACES[race]
-    out = qk.kinematics(complex(a_i), complex(a_o), complex(C), p["omega"], g["gp"], p["dm"], p["D"], p["m_ball"],
-                        code, True, True)  # fmt: skip
+    out = jones_harris.kinematics(complex(a_i), complex(a_o), complex(C), p["omega"], g["gp"], p["dm"], p["D"],
+                                  p["m_ball"], code, True, True)  # fmt: skip
     F_c, Mg_o, Mg_i, w_m, w_R, beta = (v.real for v in out)
     M_g_D = twin["M_g"] / p["D"]
     expected = (twin["F_c"], twin["lam_o"] * M_g_D, twin["lam_i"] * M_g_D, twin["w_m"], twin["w_R"], twin["beta"])
     assert_close((F_c, Mg_o, Mg_i, w_m, w_R, beta), expected, RTOL, f"{race}, Q = {loads}")
-    if code >= qk.RACE_HYBRID:
+    if code >= jones_harris.RACE_HYBRID:
         _, lam_i, _ = ref.race_control(a_i, a_o, Q_i, Q_o, p, g["gp"])
-        assert_close(qk.hybrid_inner_share(complex(C), code).real, lam_i, RTOL, "lam_i")
+        assert_close(jones_harris.hybrid_inner_share(complex(C), code).real, lam_i, RTOL, "lam_i")
 
 
 BALL_CASES = [
@@ -79,23 +79,28 @@ BALL_CASES = [
 def test_ball_equilibrium_matches_twin(label, p, d):
     qs, g = pack(p), ref.geometry(p)
     K_s = (p["K_i"] ** (-2.0 / 3.0) + p["K_o"] ** (-2.0 / 3.0)) ** -1.5
-    X = np.zeros((qk.X_SIZE, g["Z"]))
-    kg, w, cond = np.empty((3, qk.KG_SIZE)), np.empty(qk.EV_SIZE), np.empty(qk.BE_SIZE)
+    X = np.zeros((jones_harris.X_SIZE, g["Z"]))
+    kg, w, cond = np.empty((3, jones_harris.KG_SIZE)), np.empty(jones_harris.EV_SIZE), np.empty(jones_harris.BE_SIZE)
     inner_free = 0  # balls off the inner race (held on the outer one by the centrifugal force, or free)
     for j, psi in enumerate(g["psi"]):
         A1, A2 = ref.groove_centre_offset(d, psi, g)
-        geo = (g["r_i"], g["r_o"], K_s, qk._F_FLOOR / g["Z"])  # the strictest ball test: no applied load
-        status = qk.ball_equilibrium(A1, A2, X, j, qs, geo, p["omega"], kg, w, cond)
+        geo = (g["r_i"], g["r_o"], K_s, jones_harris._F_FLOOR / g["Z"])  # the strictest ball test: no applied load
+        status = jones_harris.ball_equilibrium(A1, A2, X, j, qs, geo, p["omega"], kg, w, cond)
         twin = ref.ball_state(A1, A2, p, g=g)
         q_scale = max(twin["Q_i"], twin["Q_o"], 1e-3)
         assert status in (0, 1)
-        inner_free += cond[qk.BE_Q_I] == 0.0
-        for slot, key in ((qk.BE_Q_I, "Q_i"), (qk.BE_Q_O, "Q_o"), (qk.BE_GZ, "g_z"), (qk.BE_GR, "g_r")):
+        inner_free += cond[jones_harris.BE_Q_I] == 0.0
+        for slot, key in (
+            (jones_harris.BE_Q_I, "Q_i"),
+            (jones_harris.BE_Q_O, "Q_o"),
+            (jones_harris.BE_GZ, "g_z"),
+            (jones_harris.BE_GR, "g_r"),
+        ):
             assert cond[slot] == pytest.approx(twin[key], abs=1e-8 * q_scale), (label, j, key)
-        assert cond[qk.BE_MG] == pytest.approx(twin["m_g"], abs=1e-8 * q_scale * p["D"]), (label, j)
+        assert cond[jones_harris.BE_MG] == pytest.approx(twin["m_g"], abs=1e-8 * q_scale * p["D"]), (label, j)
         if twin["Q_i"] > 0.0 and twin["Q_o"] > 0.0:
-            assert cond[qk.BE_A_I] == pytest.approx(twin["a_i"], abs=1e-8), (label, j)
-            assert cond[qk.BE_A_O] == pytest.approx(twin["a_o"], abs=1e-8), (label, j)
+            assert cond[jones_harris.BE_A_I] == pytest.approx(twin["a_i"], abs=1e-8), (label, j)
+            assert cond[jones_harris.BE_A_O] == pytest.approx(twin["a_o"], abs=1e-8), (label, j)
             assert X[:2, j] == pytest.approx([twin["X1"], twin["X2"]], abs=1e-8 * p["D"]), (label, j)
     if "lifted" in label:
         assert inner_free > 0
@@ -104,27 +109,27 @@ def test_ball_equilibrium_matches_twin(label, p, d):
 @pytest.mark.parametrize("label, p, d", BALL_CASES, ids=[c[0] for c in BALL_CASES])
 def test_ring_loads_and_bearing_loads_match_twin(label, p, d):
     qs = pack(p)
-    Z = int(qs[qk.QS_Z])
+    Z = int(qs[jones_harris.QS_Z])
     d = np.array(d)
     F_ref, twin_balls = ref.bearing_loads(d, p)
-    contact = np.empty((qk.CS_SIZE, Z))
+    contact = np.empty((jones_harris.CS_SIZE, Z))
     results = []
     for jacobian in (True, False):
         F, K = np.zeros(5), np.full((5, 5), np.nan)
-        qk.ring_loads(d, qs, 0.0, p["omega"], np.zeros((qk.X_SIZE, Z)), F, K, contact, jacobian)
+        jones_harris.ring_loads(d, qs, 0.0, p["omega"], np.zeros((jones_harris.X_SIZE, Z)), F, K, contact, jacobian)
         assert np.allclose(F, F_ref, rtol=0, atol=1e-8 * np.max(np.abs(F_ref))), label
         assert np.all(np.isfinite(K)) == jacobian  # without the Jacobian K is not touched
         results.append(F)
     assert np.array_equal(results[0], results[1])
     # bearing_loads = ring_loads with the Jacobian + the per-ball outputs
-    balls = np.zeros((qk.BQ_SIZE, Z))
+    balls = np.zeros((jones_harris.BQ_SIZE, Z))
     F = np.zeros(5)
-    qk.bearing_loads(d, qs, 0.0, p["omega"], np.zeros((2, Z)), F, np.zeros((5, 5)), balls)
+    jones_harris.bearing_loads(d, qs, 0.0, p["omega"], np.zeros((2, Z)), F, np.zeros((5, 5)), balls)
     assert np.array_equal(F, results[0])
     q_scale = max(b["Q_o"] for b in twin_balls)
     for j, b in enumerate(twin_balls):
-        assert balls[qk.BQ_Q_I, j] == pytest.approx(b["Q_i"], abs=1e-8 * q_scale), (label, j)
-        assert balls[qk.BQ_Q_O, j] == pytest.approx(b["Q_o"], abs=1e-8 * q_scale), (label, j)
+        assert balls[jones_harris.BQ_Q_I, j] == pytest.approx(b["Q_i"], abs=1e-8 * q_scale), (label, j)
+        assert balls[jones_harris.BQ_Q_O, j] == pytest.approx(b["Q_o"], abs=1e-8 * q_scale), (label, j)
 
 
 def test_small_solver_matches_twin():
@@ -136,9 +141,9 @@ def test_small_solver_matches_twin():
             assert np.linalg.cond(A) < 1e3
             Kr, R, out = np.zeros((5, 5)), np.zeros(5), np.zeros(5)
             Kr[:n, :n], R[:n] = A, b
-            assert qk._solve_small(Kr, R, n, out)
+            assert jones_harris._solve_small(Kr, R, n, out)
             assert_close(out[:n], ref.solve_small(A, b), 1e-12, f"n = {n}")
     singular = np.zeros((5, 5))
     singular[:2, :2] = [[1.0, 2.0], [2.0, 4.0]]
-    assert not qk._solve_small(singular, np.ones(5), 2, np.zeros(5))
+    assert not jones_harris._solve_small(singular, np.ones(5), 2, np.zeros(5))
     assert ref.solve_small([[1.0, 2.0], [2.0, 4.0]], [1.0, 1.0]) is None

@@ -8,7 +8,7 @@ from collections import Counter
 import numpy as np
 import pytest
 
-from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.kernels import jones_harris
 from bearing_fmu.kernels import rating_life as rl
 from bearing_fmu.kernels.geometry import free_contact_angle
 from bearing_fmu.models.analytic import AnalyticModel
@@ -78,7 +78,9 @@ def test_quasi_static_lives_are_the_twins_of_the_solution(bearing, loads):
     lp[[rl.LP_C_0R, rl.LP_F_0]] = m._life_parameters[[rl.LP_C_0R, rl.LP_F_0]]  # ISO 76 table (twinned elsewhere)
     out = np.zeros(rl.LO_SIZE)
     F = m.F
-    ref.rating_life(m.balls[qk.BQ_Q_I], m.balls[qk.BQ_Q_O], math.hypot(F[0], F[1]), abs(F[2]), OMEGA, lp, out)
+    ref.rating_life(
+        m.balls[jones_harris.BQ_Q_I], m.balls[jones_harris.BQ_Q_O], math.hypot(F[0], F[1]), abs(F[2]), OMEGA, lp, out
+    )
     assert rel_err([result[name] for name in LIFE], out) < 1e-10
     # the ring loads the balls carry are the applied ones
     assert math.hypot(F[0], F[1]) == pytest.approx(math.hypot(loads.get("F_x", 0.0), loads.get("F_y", 0.0)), abs=1e-6)
@@ -125,8 +127,8 @@ def test_iso_spring_constant_scales_the_contact_stiffness_only():
     hertz = quasi_static("B7214C", life=True)
     iso = quasi_static("B7214C", life=True, spring_constant="iso_ts_16281")
     ratio = 1.48 / (math.pi * math.sqrt(2.0) / 3.0)
-    assert iso.qs[qk.QS_K_I] / hertz.qs[qk.QS_K_I] == pytest.approx(ratio, rel=1e-12)
-    assert iso.qs[qk.QS_K_O] / hertz.qs[qk.QS_K_O] == pytest.approx(ratio, rel=1e-12)
+    assert iso.qs[jones_harris.QS_K_I] / hertz.qs[jones_harris.QS_K_I] == pytest.approx(ratio, rel=1e-12)
+    assert iso.qs[jones_harris.QS_K_O] / hertz.qs[jones_harris.QS_K_O] == pytest.approx(ratio, rel=1e-12)
     a = hertz.evaluate(omega=OMEGA, **loads)
     b = iso.evaluate(omega=OMEGA, **loads)
     for name in ("x", "z", "Q_max_inner", "Q_max_outer", *LIFE):

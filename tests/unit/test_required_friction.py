@@ -11,9 +11,9 @@ import math
 import numpy as np
 import pytest
 
-from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.kernels import jones_harris
+from bearing_fmu.models.limits import InputError
 from bearing_fmu.models.quasi_static import QuasiStaticModel
-from bearing_fmu.models.variables import InputError
 from bearing_fmu.scene import Scene
 
 B218 = "tests/validation/data/angular_218_textbook.toml"
@@ -27,8 +27,11 @@ def test_required_coefficient_is_the_friction_of_the_ball_balance():
     m = QuasiStaticModel(B218, "guessasma_oil", scene=SCENE, race_control="outer")
     out = m.evaluate(omega=8000 * RPM, F_z=8900.0)
     b = m.balls
-    demand = np.abs(b[qk.BQ_Q_I] * np.sin(b[qk.BQ_A_I]) - b[qk.BQ_Q_O] * np.sin(b[qk.BQ_A_O]))
-    expected = (demand / (b[qk.BQ_Q_O] * np.cos(b[qk.BQ_A_O]))).max()
+    demand = np.abs(
+        b[jones_harris.BQ_Q_I] * np.sin(b[jones_harris.BQ_A_I])
+        - b[jones_harris.BQ_Q_O] * np.sin(b[jones_harris.BQ_A_O])
+    )
+    expected = (demand / (b[jones_harris.BQ_Q_O] * np.cos(b[jones_harris.BQ_A_O]))).max()
     assert out["mu_required_outer"] == pytest.approx(expected, rel=1e-9)
     assert out["mu_required_inner"] == 0.0
     assert 0.077 < out["mu_required_outer"] < 0.078
@@ -81,9 +84,9 @@ def test_a_jump_of_the_contact_angle_under_a_small_input_step_is_warned():
     from bearing_fmu.models.friction import FrictionWatch
 
     def balls(alpha_deg):
-        b = np.zeros((qk.BQ_SIZE, 3))
-        b[qk.BQ_Q_I] = (10.0, 20.0, 10.0)
-        b[qk.BQ_A_I] = math.radians(alpha_deg)
+        b = np.zeros((jones_harris.BQ_SIZE, 3))
+        b[jones_harris.BQ_Q_I] = (10.0, 20.0, 10.0)
+        b[jones_harris.BQ_A_I] = math.radians(alpha_deg)
         return b
 
     watch = FrictionWatch("inner", 0.06, "oil")

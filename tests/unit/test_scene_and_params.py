@@ -6,7 +6,7 @@ import math
 import pytest
 
 from bearing_fmu.models.analytic import AnalyticModel
-from bearing_fmu.models.variables import InputError
+from bearing_fmu.models.limits import InputError
 from bearing_fmu.params import ParameterError, catalogue, load_bearing, load_lubricant
 from bearing_fmu.scene import Scene, SceneError
 from tests.conftest import ROOT

@@ -17,9 +17,8 @@ import numpy as np
 import pytest
 
 from bearing_fmu.kernels import capacitance as cap
-from bearing_fmu.kernels import contacts as ck
-from bearing_fmu.kernels import jones_harris as qk
-from bearing_fmu.kernels import radial_bearing as ak
+from bearing_fmu.kernels import contact_outputs as ck
+from bearing_fmu.kernels import jones_harris, radial_bearing
 from bearing_fmu.kernels.ball_dynamics import state as ds
 from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.models.dem import DemModel
@@ -137,10 +136,10 @@ def solve(m, qs, control=None, d0=None):
     d = np.zeros(5) if d0 is None else d0.copy()
     X, F = np.zeros((2, Z)), np.zeros(5)
     K = np.full((5, 5), np.nan)
-    balls = np.full((qk.BQ_SIZE, Z), np.nan)
+    balls = np.full((jones_harris.BQ_SIZE, Z), np.nan)
     control = m.control if control is None else control
-    status = qk.solve_quasistatic(LOADS, control, d, qs, 0.0, OMEGA, X, F, K, balls)
-    assert status[0] == qk.QS_OK
+    status = jones_harris.solve_quasistatic(LOADS, control, d, qs, 0.0, OMEGA, X, F, K, balls)
+    assert status[0] == jones_harris.QS_OK
     return d, X, F, K, balls
 
 
@@ -149,8 +148,8 @@ def test_stiffness_off_leaves_K_untouched(solved, control):
     m, _ = solved
     control = np.array(control, float)
     d0 = np.array([2e-6, 0.0, 10e-6, 0.0, 1e-5])  # the imposed values of displacement-controlled DOFs
-    on = solve(m, with_code(m.qs, qk.QS_STIFFNESS, 1.0), control, d0)
-    off = solve(m, with_code(m.qs, qk.QS_STIFFNESS, 0.0), control, d0)
+    on = solve(m, with_code(m.qs, jones_harris.QS_STIFFNESS, 1.0), control, d0)
+    off = solve(m, with_code(m.qs, jones_harris.QS_STIFFNESS, 0.0), control, d0)
     assert np.all(np.isfinite(on[3])) and np.all(np.isnan(off[3]))
     for a, b in zip(on[:3] + on[4:], off[:3] + off[4:]):  # d, X, F, balls: identical
         assert np.array_equal(a, b)
@@ -161,7 +160,7 @@ def python_newton(monkeypatch):
     """Run solve_quasistatic's Newton loop as Python, counting ring_loads (with its jacobian flag) and ball_outputs."""
     calls = Counter()
     for name in ("ring_loads", "ball_outputs"):
-        original = getattr(qk, name)
+        original = getattr(jones_harris, name)
 
         def wrapper(*args, _name=name, _original=original):
             calls[_name] += 1
@@ -169,10 +168,10 @@ def python_newton(monkeypatch):
                 calls[f"jacobian={bool(args[8])}"] += 1  # ring_loads(..., contact, jacobian, f_load)
             return _original(*args)
 
-        monkeypatch.setattr(qk, name, wrapper)
-    monkeypatch.setattr(qk, "_global_newton", qk._global_newton.py_func)
-    monkeypatch.setattr(qk, "_newton_start", qk._newton_start.py_func)
-    monkeypatch.setattr(qk, "_loads_residual_at", qk._loads_residual_at.py_func)
+        monkeypatch.setattr(jones_harris, name, wrapper)
+    monkeypatch.setattr(jones_harris, "_global_newton", jones_harris._global_newton.py_func)
+    monkeypatch.setattr(jones_harris, "_newton_start", jones_harris._newton_start.py_func)
+    monkeypatch.setattr(jones_harris, "_loads_residual_at", jones_harris._loads_residual_at.py_func)
     return calls
 
 
@@ -183,8 +182,10 @@ def test_stiffness_off_without_load_control_assembles_no_jacobian(solved, python
     for code in (0.0, 1.0):
         python_newton.clear()
         Z = m.bearing.Z
-        args = (d.copy(), with_code(m.qs, qk.QS_STIFFNESS, code), 0.0, OMEGA, np.zeros((2, Z)), np.zeros(5))
-        qk.solve_quasistatic.py_func(LOADS, control, *args, np.zeros((5, 5)), np.zeros((qk.BQ_SIZE, Z)))
+        args = (d.copy(), with_code(m.qs, jones_harris.QS_STIFFNESS, code), 0.0, OMEGA, np.zeros((2, Z)), np.zeros(5))
+        jones_harris.solve_quasistatic.py_func(
+            LOADS, control, *args, np.zeros((5, 5)), np.zeros((jones_harris.BQ_SIZE, Z))
+        )
         assert python_newton["ring_loads"] == 1
         assert python_newton[f"jacobian={code > 0.5}"] == 1, python_newton
 
@@ -192,9 +193,17 @@ def test_stiffness_off_without_load_control_assembles_no_jacobian(solved, python
 def test_per_ball_outputs_computed_once_after_convergence(solved, python_newton):
     m, _ = solved
     Z = m.bearing.Z
-    d, X, F, K, balls = np.zeros(5), np.zeros((2, Z)), np.zeros(5), np.zeros((5, 5)), np.zeros((qk.BQ_SIZE, Z))
-    status, iterations, _ = qk.solve_quasistatic.py_func(LOADS, m.control, d, m.qs, 0.0, OMEGA, X, F, K, balls)
-    assert status == qk.QS_OK and iterations >= 3
+    d, X, F, K, balls = (
+        np.zeros(5),
+        np.zeros((2, Z)),
+        np.zeros(5),
+        np.zeros((5, 5)),
+        np.zeros((jones_harris.BQ_SIZE, Z)),
+    )
+    status, iterations, _ = jones_harris.solve_quasistatic.py_func(
+        LOADS, m.control, d, m.qs, 0.0, OMEGA, X, F, K, balls
+    )
+    assert status == jones_harris.QS_OK and iterations >= 3
     assert python_newton["ring_loads"] >= iterations + 1  # one load evaluation per iteration at least
     assert python_newton["ball_outputs"] == 1
     # and they are those of the solution: the compiled solve from the same start gives the same rows
@@ -205,10 +214,10 @@ def test_per_ball_outputs_computed_once_after_convergence(solved, python_newton)
 def test_analytic_capacitance_off_skips_its_work(monkeypatch):
     on = AnalyticModel("6208", "guessasma_oil", Scene(capacitance=True, lubrication="oil_bath"))
     off = AnalyticModel("6208", "guessasma_oil", Scene(capacitance=False, lubrication="oil_bath"))
-    assert on.brg[ak.B_CAPACITANCE] == 1.0 and off.brg[ak.B_CAPACITANCE] == 0.0
+    assert on.brg[radial_bearing.B_CAPACITANCE] == 1.0 and off.brg[radial_bearing.B_CAPACITANCE] == 0.0
 
-    def run(m, kernel=ak.analytic_bearing):
-        out = np.full(ak.O_SIZE, np.nan)
+    def run(m, kernel=radial_bearing.analytic_bearing):
+        out = np.full(radial_bearing.O_SIZE, np.nan)
         ball = np.full((8, m.bearing.Z), np.nan)
         kernel(700.0, 3000.0, 313.0, m.brg, m.lubricant.array, m.nodes, m.weights, out, ball)
         return out, ball
@@ -216,13 +225,13 @@ def test_analytic_capacitance_off_skips_its_work(monkeypatch):
     on_out, on_ball = run(on)
     off_out, off_ball = run(off)
     assert not (np.any(np.isnan(on_out)) or np.any(np.isnan(on_ball)))  # all written (unloaded: Lambda = inf)
-    assert np.isnan(off_out[ak.O_C_BEARING]) and np.all(np.isnan(off_ball[6:8]))
-    others = [k for k in range(ak.O_SIZE) if k != ak.O_C_BEARING]
+    assert np.isnan(off_out[radial_bearing.O_C_BEARING]) and np.all(np.isnan(off_ball[6:8]))
+    others = [k for k in range(radial_bearing.O_SIZE) if k != radial_bearing.O_C_BEARING]
     assert np.array_equal(off_out[others], on_out[others]) and np.array_equal(off_ball[:6], on_ball[:6])
     for m, expect_work in ((off, False), (on, True)):
         calls = Counter()
-        counting(monkeypatch, ak, ("lubricated_contact_capacitance", "ball_capacitance"), calls)
-        run(m, ak.analytic_bearing.py_func)
+        counting(monkeypatch, radial_bearing, ("lubricated_contact_capacitance", "ball_capacitance"), calls)
+        run(m, radial_bearing.analytic_bearing.py_func)
         assert (sum(calls.values()) > 0) == expect_work, calls
         monkeypatch.undo()
 
@@ -232,7 +241,9 @@ def test_facade_packs_the_option_codes():
         cap, tor, stf = flags
         scene = Scene(name="codes", fidelity="quasi_static", capacitance=cap, torque=tor, stiffness=stf)
         m = QuasiStaticModel("6208", "iso_vg68_mineral", scene)
-        assert (m.cp[ck.CP_CAPACITANCE], m.cp[ck.CP_TORQUE], m.qs[qk.QS_STIFFNESS]) == tuple(map(float, flags))
+        assert (m.cp[ck.CP_CAPACITANCE], m.cp[ck.CP_TORQUE], m.qs[jones_harris.QS_STIFFNESS]) == tuple(
+            map(float, flags)
+        )
 
 
 @pytest.mark.parametrize("region", ["hertz", "lubricated"])
@@ -241,7 +252,7 @@ def test_capacitance_region_packs_the_oil_gap_and_hertz_skips_the_outside_term(m
     outside-Hertz term; 'lubricated' packs the scene's oil_gap (m) and computes it."""
     scene = dict(capacitance_region=region, oil_gap=7e-6)
     expect = 7e-6 if region == "lubricated" else 0.0
-    assert AnalyticModel("6208", "guessasma_oil", Scene(**scene)).brg[ak.B_OIL_GAP] == expect
+    assert AnalyticModel("6208", "guessasma_oil", Scene(**scene)).brg[radial_bearing.B_OIL_GAP] == expect
     qs = QuasiStaticModel("6208", "iso_vg68_mineral", Scene(name="q", fidelity="quasi_static", **scene))
     assert qs.cp[ck.CP_OIL_GAP] == expect
     assert DemModel("6208", "guessasma_oil", scene=Scene(name="d", fidelity="dem", **scene)).par[ds.P_OIL_GAP] == expect

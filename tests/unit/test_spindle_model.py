@@ -7,7 +7,7 @@ import math
 
 import pytest
 
-from bearing_fmu.models.variables import InputError
+from bearing_fmu.models.limits import InputError
 from bearing_fmu.params import ParameterError
 from spindle.thermal import network as nk
 from spindle.thermal.model import CATALOGUE, SpindleInputError, SpindleThermalModel

@@ -16,7 +16,7 @@ import math
 import numpy as np
 import pytest
 
-from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.kernels import jones_harris
 from bearing_fmu.kernels.ball_dynamics.state import P_SIGMA_I, T_P_FILM
 from bearing_fmu.kernels.geometry import (
     BALL_1_AZIMUTH,
@@ -216,7 +216,7 @@ def test_slow_drive_load_distribution_matches_quasi_static(Pd, F, printed):
     offset = float(np.mean(np.angle(np.exp(1j * (c["psi"] - BALL_1_AZIMUTH - 2.0 * np.pi * np.arange(Z) / Z)))))
     qs = QuasiStaticModel("6208", "guessasma_oil", scene=Scene(name="qs", fidelity="quasi_static"), Pd=Pd)
     ref = qs.evaluate(omega=1.0, F_x=F * math.sin(offset), F_y=F * math.cos(offset))
-    Q_qs = qs.balls[qk.BQ_Q_I]
+    Q_qs = qs.balls[jones_harris.BQ_Q_I]
     err = np.max(np.abs(c["Q_inner"] - Q_qs)) / Q_qs.max()
     eps = dem_6208.slow_drive_eps(out, Pd)
     eps_qs = 0.5 * (1.0 - Pd / (2.0 * math.hypot(ref["x"], ref["y"])))

@@ -11,9 +11,9 @@ import math
 import numpy as np
 import pytest
 
-from bearing_fmu.kernels import jones_harris as qk
+from bearing_fmu.kernels import jones_harris
+from bearing_fmu.models.limits import InputError
 from bearing_fmu.models.quasi_static import QuasiStaticModel
-from bearing_fmu.models.variables import InputError
 from benchmarks.reference_cases import guessasma_6208, outside
 
 T_OIL = 313.15
@@ -123,8 +123,8 @@ def test_controlling_race_split_is_discontinuous_in_speed():
     def state(split, rpm):
         model = QuasiStaticModel("B7214C", "iso_vg68_mineral", scene(), race_control="hybrid", hybrid_split=split)
         out = model.evaluate(omega=rpm * RPM, F_z=800.0, T_oil=T_OIL)
-        Q_i, Q_o = model.balls[qk.BQ_Q_I, 0], model.balls[qk.BQ_Q_O, 0]
-        return out, model.qs[qk.QS_C_HYB] * (Q_i / Q_o) ** (4.0 / 3.0)
+        Q_i, Q_o = model.balls[jones_harris.BQ_Q_I, 0], model.balls[jones_harris.BQ_Q_O, 0]
+        return out, model.qs[jones_harris.QS_C_HYB] * (Q_i / Q_o) ** (4.0 / 3.0)
 
     assert state("outer", 3664.0)[1] < 1.0 < state("inner", 3664.0)[1]
     for split, low, high in (("controlling_race", 0.05, math.inf), ("spin_moments", 0.0, 0.01)):

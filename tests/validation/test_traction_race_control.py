@@ -6,7 +6,7 @@ angular_218_textbook.toml) under 8.9 kN thrust with the Guessasma oil (constant 
 coefficient 0.06, estimated). At 8 000 and 12 000 rpm outer-race control needs a traction coefficient of about
 0.077 at the outer contact to hold the balls' gyroscopic moments: the DEM's balls do not get it, their spin axes fall
 to a pitch of 1-2 deg and the cage runs about 9 % faster than outer-race control. Both fidelities use one contact law
-(kernels.ball_traction, kernels.ball_dynamics.contacts), so the quasi-static traction solution is the DEM's steady
+(kernels.ball_traction, kernels.ball_dynamics.contact_law), so the quasi-static traction solution is the DEM's steady
 state: asserted within the acceptance of the race control, cage 2 %, torque 5 %, Q_max and contact angles 3 %
 (measured 0.03-0.4 %, docs/quasistatic.md). The DEM is averaged over 0.28-0.30 s after a 10 ms ramp: at 0.1 s its
 cage is still 2.6 % below its steady speed at 8 000 rpm.

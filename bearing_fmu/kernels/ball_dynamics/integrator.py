@@ -23,7 +23,7 @@ from bearing_fmu_common.jit import kernel
 from ..capacitance import ball_capacitance
 from ..lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
 from .cage import ball_cage_contact, cage_guide_contact
-from .contacts import ball_race_contact, groove_approach
+from .contact_law import ball_race_contact, groove_approach
 from .monitor import damping_step_ratio, kinetic_energy
 from .state import (
     A_CAP,

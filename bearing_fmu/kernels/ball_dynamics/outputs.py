@@ -16,7 +16,7 @@ from bearing_fmu_common.jit import kernel
 from ..capacitance import ball_capacitance
 from ..ehl import lubrication_regime
 from ..truncation import race_truncation
-from .contacts import groove_approach
+from .contact_law import groove_approach
 from .monitor import kinetic_energy
 from .state import (
     A_CAP,

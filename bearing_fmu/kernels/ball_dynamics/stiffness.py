@@ -20,7 +20,7 @@ import numpy as np
 
 from bearing_fmu_common.jit import kernel
 
-from .contacts import groove_approach
+from .contact_law import groove_approach
 from .state import B_X, P_KH_I, P_RG_I
 from .tribology import race_circle
 

@@ -40,7 +40,7 @@ from ..ehl import (
 )
 from ..film_correction import FT_ON, film_ratios
 from ..torque import heathcote_force, hysteresis_force, spin_moment
-from .contacts import groove_approach
+from .contact_law import groove_approach
 from .state import (
     B_VX,
     B_WX,

@@ -8,7 +8,7 @@ from bearing_fmu_common.variables import InputLimits
 from ...kernels.ehl import friction_coefficient
 from ...params import SUPPORT_DAMPING, SUPPORT_MASS, SUPPORT_STIFFNESS, clearance_limits
 from ..declarations import DEM_DT_MAX, DEM_INPUTS, DEM_REFRESH_MAX, T_OIL_START
-from ..variables import DM_N_LIMIT, MATERIAL_LIMIT, InputError
+from ..limits import DM_N_LIMIT, MATERIAL_LIMIT, InputError
 from .packing import CONSTANTS
 
 T_OIL_DEFAULT = T_OIL_START  # K, the oil temperature of a call that gives none

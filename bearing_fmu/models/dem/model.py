@@ -20,7 +20,7 @@ from ..declarations import DEM_INPUTS, DEM_OUTPUTS, DEM_PARAMETERS
 from ..declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
 from ..fidelity import Fidelity
 from ..input_checks import check_clearance
-from ..variables import P_MAX_ERROR, InputError, OilTemperatureWatch, pressure_warnings
+from ..limits import P_MAX_ERROR, InputError, OilTemperatureWatch, pressure_warnings
 from . import inputs, outputs, time_step, whirl
 from .inputs import T_OIL_DEFAULT
 from .monitor import DemUnstableError, energy_limit, unstable_error

@@ -7,7 +7,7 @@ from ...kernels.ball_dynamics import state as s
 from ...kernels.ball_dynamics.monitor import kinetic_energy
 from ...kernels.ball_dynamics.outputs import contact_loads
 from ...kernels.geometry import rolling_kinematics
-from ..variables import InputError
+from ..limits import InputError
 
 # consecutive slipping reversals of one spring that count as chatter: sustained chatter (6208 at 3 kN,
 # 500 rad/s, dt >= 7 us) reverses for hundreds of steps and multiplies the torque; a lightly loaded ball

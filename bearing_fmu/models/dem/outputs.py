@@ -7,7 +7,7 @@ import numpy as np
 
 from ...kernels.ball_dynamics import state as s
 from ...kernels.ball_dynamics.outputs import contact_angles, contact_loads, shoulder_truncation
-from ..contacts import truncation_warnings
+from ..race_contacts import truncation_warnings
 
 # the outputs that averaged_state replaces by their means over the tribology refreshes of a call: (out, acc sum)
 AVERAGED_STATE = (

@@ -11,9 +11,9 @@ from ...kernels.ball_dynamics import state as s
 from ...kernels.geometry import ball_mass
 from ...kernels.hertz import hertz_contact, hertz_stiffness
 from ...params import cage_ball_room, load_dem_constants
-from ..contacts import contact_terms, pack, race_contacts, truncation_parameters
 from ..film_table import film_table_array
-from ..variables import P_MAX_ERROR, InputError
+from ..limits import P_MAX_ERROR, InputError
+from ..race_contacts import contact_terms, pack, race_contacts, truncation_parameters
 from .monitor import CHATTER_STEPS, DAMPING_STOP
 from .placement import ball_rest_position
 
@@ -60,7 +60,7 @@ def pack_parameters(bearing, scene, lubricant, Pd, support, traction_limit, kt_r
     """The parameter array (float64[P_SIZE]) of a bearing with diametral clearance Pd (m) and the model's settings
     (checked: support = (stiffness N/m, damping N.s/m, mass kg), traction_limit, kt_ratio; the ring's mass (kg) and
     inertia about a diameter (kg.m^2), None = estimated); returns it with the shoulders' truncation parameters
-    (models.contacts.truncation_parameters) and the balls' rest position (placement.ball_rest_position).
+    (models.race_contacts.truncation_parameters) and the balls' rest position (placement.ball_rest_position).
     Raises InputError when estimated cage balls find no room between the balls."""
     b, sc = bearing, scene
     D = b.D

@@ -1,4 +1,4 @@
-"""Twin of bearing_fmu.kernels.ball_dynamics.contacts: the DEM's ball-race contact law, one contact, in 3-vectors.
+"""Twin of bearing_fmu.kernels.ball_dynamics.contact_law: the DEM's ball-race contact law, one contact, in 3-vectors.
 
 Written from the model (module docstring of the kernel; Guessasma & Machado 2018; Farah et al. 2020; Cundall &
 Strack 1979; Houpert's resistances), with np.dot, np.cross and np.linalg.norm, and used by the step's twin
@@ -115,7 +115,7 @@ def ball_race_contact(race, delta, n, p, v, w, w_orbit, old, tribology, ring, la
                 power=damping - np.dot(dissipating, v_t))  # fmt: skip
 
 
-KERNEL_MODULE = "bearing_fmu.kernels.ball_dynamics.contacts"
+KERNEL_MODULE = "bearing_fmu.kernels.ball_dynamics.contact_law"
 TWINS = {
     "groove_approach": groove_approach,
     "contact_damping": contact_damping,

@@ -1,4 +1,4 @@
-"""kernels.contacts.contact_outputs against its twin tests/reference/ref_contacts.py.
+"""kernels.contact_outputs.contact_outputs against its twin tests/reference/ref_contact_outputs.py.
 
 contact_outputs produces every film, capacitance, torque and heat output of the quasi-static fidelity
 (Bearing.fmu). The per-ball inputs come from solved bearings (QuasiStaticModel), so the contacts see
@@ -26,10 +26,10 @@ import math
 import numpy as np
 import pytest
 
-from bearing_fmu.kernels import contacts as ck
+from bearing_fmu.kernels import contact_outputs as ck
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
-from tests.reference import ref_contacts as rc
+from tests.reference import ref_contact_outputs as rc
 from tests.unit._compare import assert_close
 from tests.unit.test_film_correction import made_up_table
 

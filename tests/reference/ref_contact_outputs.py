@@ -1,4 +1,4 @@
-"""Twin of bearing_fmu.kernels.contacts: every ball-race contact of a solved bearing as a plain loop.
+"""Twin of bearing_fmu.kernels.contact_outputs: every ball-race contact of a solved bearing as a plain loop.
 
 Calls only the other twins (never a kernel). For each ball j and race (inner, outer), with the contact
 load Q, rolling speed u and spin speed of the per-ball rows (kernels.jones_harris BQ_*):
@@ -22,17 +22,17 @@ off is a null submodel: its outputs are NaN here (the kernel does not write them
 
 import numpy as np
 
-from bearing_fmu.kernels import contacts as ck  # layout constants (CP_*, CO_*, PC_*) only
-from bearing_fmu.kernels import jones_harris as qk  # layout constants (BQ_*) only
+from bearing_fmu.kernels import contact_outputs as ck  # layout constants (CP_*, CO_*, PC_*) only
+from bearing_fmu.kernels import jones_harris  # layout constants (BQ_*) only
 from bearing_fmu.kernels import lubricant as lk  # layout constants (LUB_*) only
 
 from . import ref_capacitance, ref_ehl, ref_film_correction, ref_hertz, ref_lubricant, ref_lubrication, ref_torque
 
 RACES = (  # (name, cp offsets of Rx, Ry, k, E, K; sigma; conformity; load, rolling, spin rows; ring heat)
     ("inner", (ck.CP_RX_I, ck.CP_RY_I, ck.CP_K_I, ck.CP_EE_I, ck.CP_KK_I), ck.CP_SIGMA_I, ck.CP_F_I,
-     qk.BQ_Q_I, qk.BQ_U_I, qk.BQ_SPIN_I),
+     jones_harris.BQ_Q_I, jones_harris.BQ_U_I, jones_harris.BQ_SPIN_I),
     ("outer", (ck.CP_RX_O, ck.CP_RY_O, ck.CP_K_O, ck.CP_EE_O, ck.CP_KK_O), ck.CP_SIGMA_O, ck.CP_F_O,
-     qk.BQ_Q_O, qk.BQ_U_O, qk.BQ_SPIN_O),
+     jones_harris.BQ_Q_O, jones_harris.BQ_U_O, jones_harris.BQ_SPIN_O),
 )  # fmt: skip
 
 
@@ -128,7 +128,7 @@ def contact_outputs(omega, T_oil, cp, lub, balls):
             rho_e, eta_e = ref_lubrication.mixture(cp[ck.CP_DRAG_X], rho0, eta)
             P = sum(
                 ref_lubrication.ball_drag_power(
-                    balls[qk.BQ_W_M, j] * cp[ck.CP_DM] / 2.0, cp[ck.CP_D], rho_e, eta_e, cp[ck.CP_DRAG_AREA]
+                    balls[jones_harris.BQ_W_M, j] * cp[ck.CP_DM] / 2.0, cp[ck.CP_D], rho_e, eta_e, cp[ck.CP_DRAG_AREA]
                 )
                 for j in range(Z)
             )
@@ -144,5 +144,5 @@ def contact_outputs(omega, T_oil, cp, lub, balls):
 
 
 # the kernels this module twins (tests/unit/test_every_kernel_has_a_twin.py)
-KERNEL_MODULE = "bearing_fmu.kernels.contacts"
+KERNEL_MODULE = "bearing_fmu.kernels.contact_outputs"
 TWINS = {"contact_outputs": contact_outputs}

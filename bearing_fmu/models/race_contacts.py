@@ -1,5 +1,5 @@
 """The two race contacts of a bearing as the facades pack them: the free contact angle, the reduced radii,
-the Hertz coefficients and modulus, the contact terms the quasi-static (kernels.contacts CP_*) and DEM
+the Hertz coefficients and modulus, the contact terms the quasi-static (kernels.contact_outputs CP_*) and DEM
 (kernels.ball_dynamics.state P_*) parameter arrays share under the same slot names, and the shoulder
 truncation parameters every fidelity shares (kernels.truncation TP_*)."""
 
