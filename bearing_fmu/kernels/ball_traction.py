@@ -33,6 +33,7 @@ import math
 import numpy as np
 
 from bearing_fmu_common.jit import kernel
+from bearing_fmu_common.layout import Layout
 
 from .ehl import (
     FILM_MASJEDI_KHONSARI,
@@ -47,35 +48,40 @@ from .elimination import gauss_solve
 from .torque import heathcote_force, houpert_rolling_force, hysteresis_force, spin_moment
 
 # layout of the traction block (at the offset the quasi-static array gives it): per race, inner then outer
-TR_A1 = 0  # semi-major axis of the contact ellipse at 1 N (m): a = TR_A1 Q^(1/3)
-TR_B1 = 1  # semi-minor axis at 1 N (m)
-TR_EE = 2  # complete elliptic integral of the second kind of the contact (-)
-TR_RX = 3  # reduced radius along the rolling direction (m)
-TR_RY = 4  # reduced radius across it (m)
-TR_K = 5  # ellipticity a/b (-)
-TR_F = 6  # groove conformity r/D (-)
-TR_SIGMA = 7  # composite roughness (m)
-TR_STRIDE = 8
-TR_MU_LIM = 2 * TR_STRIDE  # limiting traction coefficient of the film (-)
-TR_S0 = TR_MU_LIM + 1  # slide-to-roll ratio of the traction curve's knee (-)
-TR_ETA = TR_MU_LIM + 2  # viscosity at the oil temperature (Pa.s), set at each evaluation
-TR_XI = TR_MU_LIM + 3  # pressure-viscosity coefficient at the oil temperature (1/Pa), set at each evaluation
-TR_E_RED = TR_MU_LIM + 4  # reduced modulus (Pa)
-TR_ALPHA_H = TR_MU_LIM + 5  # hysteresis loss factor (-)
-TR_FILM = TR_MU_LIM + 6  # film formula code (kernels.ehl)
-TR_SIZE = TR_MU_LIM + 7
+_TR_RACE_SLOTS = Layout()  # one race's block
+TR_A1 = _TR_RACE_SLOTS.slot()  # semi-major axis of the contact ellipse at 1 N (m): a = TR_A1 Q^(1/3)
+TR_B1 = _TR_RACE_SLOTS.slot()  # semi-minor axis at 1 N (m)
+TR_EE = _TR_RACE_SLOTS.slot()  # complete elliptic integral of the second kind of the contact (-)
+TR_RX = _TR_RACE_SLOTS.slot()  # reduced radius along the rolling direction (m)
+TR_RY = _TR_RACE_SLOTS.slot()  # reduced radius across it (m)
+TR_K = _TR_RACE_SLOTS.slot()  # ellipticity a/b (-)
+TR_F = _TR_RACE_SLOTS.slot()  # groove conformity r/D (-)
+TR_SIGMA = _TR_RACE_SLOTS.slot()  # composite roughness (m)
+TR_STRIDE = _TR_RACE_SLOTS.size
+_TR_SLOTS = Layout()
+_TR_SLOTS.slot(2 * TR_STRIDE)  # the races' blocks, inner then outer, from 0
+TR_MU_LIM = _TR_SLOTS.slot()  # limiting traction coefficient of the film (-)
+TR_S0 = _TR_SLOTS.slot()  # slide-to-roll ratio of the traction curve's knee (-)
+TR_ETA = _TR_SLOTS.slot()  # viscosity at the oil temperature (Pa.s), set at each evaluation
+TR_XI = _TR_SLOTS.slot()  # pressure-viscosity coefficient at the oil temperature (1/Pa), set at each evaluation
+TR_E_RED = _TR_SLOTS.slot()  # reduced modulus (Pa)
+TR_ALPHA_H = _TR_SLOTS.slot()  # hysteresis loss factor (-)
+TR_FILM = _TR_SLOTS.slot()  # film formula code (kernels.ehl)
+TR_SIZE = _TR_SLOTS.size
 
 # the kinematic state of a ball, y = (w_m, W_a, W_r, W_t) (rad/s); per contact outputs of traction_eval's out
-TE_R = 0  # four residuals (N): orbit force, then the (a, r, t) moments over D/2
-TE_FTAU_I = 4  # in-plane (transverse) traction force on the ball at the inner contact (N), along (cos a_i, -sin a_i)
-TE_FTAU_O = 5  # the same at the outer contact (N), along (-cos a_o, sin a_o)
-TE_P_I = 6  # power of the inner contact's traction against its sliding (W)
-TE_P_O = 7
-TE_U_I = 8  # entrainment speed of the inner contact (m/s)
-TE_U_O = 9
-TE_MU_I = 10  # traction coefficient the inner contact transmits, |F| / Q (-)
-TE_MU_O = 11
-TE_SIZE = 12
+_TE_SLOTS = Layout()
+TE_R = _TE_SLOTS.slot(4)  # four residuals (N): orbit force, then the (a, r, t) moments over D/2
+# in-plane (transverse) traction force on the ball at the inner contact (N), along (cos a_i, -sin a_i)
+TE_FTAU_I = _TE_SLOTS.slot()
+TE_FTAU_O = _TE_SLOTS.slot()  # the same at the outer contact (N), along (-cos a_o, sin a_o)
+TE_P_I = _TE_SLOTS.slot()  # power of the inner contact's traction against its sliding (W)
+TE_P_O = _TE_SLOTS.slot()
+TE_U_I = _TE_SLOTS.slot()  # entrainment speed of the inner contact (m/s)
+TE_U_O = _TE_SLOTS.slot()
+TE_MU_I = _TE_SLOTS.slot()  # traction coefficient the inner contact transmits, |F| / Q (-)
+TE_MU_O = _TE_SLOTS.slot()
+TE_SIZE = _TE_SLOTS.size
 
 V_REG = 1e-3  # m/s: the resistances' directions are regularised below it (the DEM's, models.dem.packing)
 _TOL = 1e-12  # residual of the ball's kinematics relative to its contact loads
@@ -105,21 +111,23 @@ def _surfaces(ua, ur, w_m, Wa, Wr, Wt, w_race, D, dm):
 
 
 # columns of a contact's terms (a row per race): the load's, held through a solve, and the film's (_film)
-TT_A = 0  # semi-major axis of the contact ellipse (m)
-TT_Q = 1  # load (N)
-TT_HYST = 2  # half the hysteresis force (N)
-TT_HEATH = 3  # half the Heathcote force per unit friction coefficient (N)
-TT_SPIN = 4  # pivoting moment per unit friction coefficient (N.m)
-TT_C_R = 5  # Houpert's EHL rolling force at u = 1 m/s (N); it grows as u^0.656
-TT_PHI = 6  # the film's share of the tangential force (-)
-TT_MU = 7  # mu(Lambda) of the papers (-): Houpert's sliding terms
-TT_DPHI = 8  # d phi / dQ at the film's entrainment speed (1/N)
-TT_DMU = 9  # d mu / dQ at the film's entrainment speed (1/N)
-TT_LAM = 10  # Lambda of the film last evaluated (-), at the entrainment speed TT_U_FILM (m/s) and load TT_Q_FILM (N)
-TT_U_FILM = 11
-TT_Q_FILM = 12
-TT_C_R1 = 13  # Houpert's EHL rolling force at u = 1 m/s and Q = 1 N (N), once per traction block
-TT_SIZE = 14
+_TT_SLOTS = Layout()
+TT_A = _TT_SLOTS.slot()  # semi-major axis of the contact ellipse (m)
+TT_Q = _TT_SLOTS.slot()  # load (N)
+TT_HYST = _TT_SLOTS.slot()  # half the hysteresis force (N)
+TT_HEATH = _TT_SLOTS.slot()  # half the Heathcote force per unit friction coefficient (N)
+TT_SPIN = _TT_SLOTS.slot()  # pivoting moment per unit friction coefficient (N.m)
+TT_C_R = _TT_SLOTS.slot()  # Houpert's EHL rolling force at u = 1 m/s (N); it grows as u^0.656
+TT_PHI = _TT_SLOTS.slot()  # the film's share of the tangential force (-)
+TT_MU = _TT_SLOTS.slot()  # mu(Lambda) of the papers (-): Houpert's sliding terms
+TT_DPHI = _TT_SLOTS.slot()  # d phi / dQ at the film's entrainment speed (1/N)
+TT_DMU = _TT_SLOTS.slot()  # d mu / dQ at the film's entrainment speed (1/N)
+# Lambda of the film last evaluated (-), at the entrainment speed TT_U_FILM (m/s) and load TT_Q_FILM (N)
+TT_LAM = _TT_SLOTS.slot()
+TT_U_FILM = _TT_SLOTS.slot()
+TT_Q_FILM = _TT_SLOTS.slot()
+TT_C_R1 = _TT_SLOTS.slot()  # Houpert's EHL rolling force at u = 1 m/s and Q = 1 N (N), once per traction block
+TT_SIZE = _TT_SLOTS.size
 # exponents of the load terms in Q (N): a ~ Q^(1/3) (Hertz), the hysteresis force ~ b Q, Heathcote's ~ Q a^2, the
 # pivoting moment ~ Q a (kernels.torque), Houpert's EHL rolling force ~ W^0.466 (torque.houpert_rolling_force)
 _E_A = 1.0 / 3.0

@@ -20,6 +20,7 @@ ball set:
 import math
 
 from bearing_fmu_common.jit import kernel
+from bearing_fmu_common.layout import Layout
 
 from .geometry import pass_frequencies
 from .jones_harris import BQ_A_I, BQ_A_O, BQ_BETA, BQ_MU_REQ_I, BQ_MU_REQ_O, BQ_Q_I, BQ_Q_O, BQ_W_M, BQ_W_R
@@ -32,19 +33,20 @@ SRC_K = 3  # the stiffness matrix, flattened row by row
 SRC_BALL_SET = 4  # the ball-set summary below (BS_*)
 SRC_TRUNC = 5  # the shoulder truncation of the contact ellipses (kernels.truncation TR_*)
 # the ball-set summary
-BS_ALPHA_I = 0  # inner contact angle of the most loaded ball (rad)
-BS_ALPHA_O = 1  # outer contact angle of the most loaded ball (rad)
-BS_CAGE = 2  # cage speed (rad/s)
-BS_BALL = 3  # ball angular speed in the fixed frame (rad/s)
-BS_ITERATIONS = 4  # Newton iterations of the solve (-)
-BS_BALL_CAGE = 5  # ball angular speed relative to the cage (rad/s, magnitude)
-BS_FTF = 6  # defect frequencies (Hz) from the cage speed and BS_BALL_CAGE: fundamental train (cage) ...
-BS_BPFO = 7  # ... ball pass outer race
-BS_BPFI = 8  # ... ball pass inner race
-BS_BSF = 9  # ... ball spin
-BS_MU_REQ_I = 10  # largest traction coefficient the race control asks of an inner contact (-)
-BS_MU_REQ_O = 11  # ... of an outer contact (-)
-BS_SIZE = 12
+_BS_SLOTS = Layout()
+BS_ALPHA_I = _BS_SLOTS.slot()  # inner contact angle of the most loaded ball (rad)
+BS_ALPHA_O = _BS_SLOTS.slot()  # outer contact angle of the most loaded ball (rad)
+BS_CAGE = _BS_SLOTS.slot()  # cage speed (rad/s)
+BS_BALL = _BS_SLOTS.slot()  # ball angular speed in the fixed frame (rad/s)
+BS_ITERATIONS = _BS_SLOTS.slot()  # Newton iterations of the solve (-)
+BS_BALL_CAGE = _BS_SLOTS.slot()  # ball angular speed relative to the cage (rad/s, magnitude)
+BS_FTF = _BS_SLOTS.slot()  # defect frequencies (Hz) from the cage speed and BS_BALL_CAGE: fundamental train (cage) ...
+BS_BPFO = _BS_SLOTS.slot()  # ... ball pass outer race
+BS_BPFI = _BS_SLOTS.slot()  # ... ball pass inner race
+BS_BSF = _BS_SLOTS.slot()  # ... ball spin
+BS_MU_REQ_I = _BS_SLOTS.slot()  # largest traction coefficient the race control asks of an inner contact (-)
+BS_MU_REQ_O = _BS_SLOTS.slot()  # ... of an outer contact (-)
+BS_SIZE = _BS_SLOTS.size
 
 
 @kernel

@@ -14,6 +14,7 @@ heat to the rings). Torque = total power / |omega|; at rest it is 0 (no rolling,
 import math
 
 from bearing_fmu_common.jit import kernel
+from bearing_fmu_common.layout import Layout
 
 from .capacitance import ball_capacitance, lubricated_contact_capacitance
 from .ehl import film_parameter, friction_coefficient, lubrication_regime
@@ -25,83 +26,88 @@ from .lubrication import ball_drag_power, film_factors, mixture, rolling_force_f
 from .torque import TL_EHL, TL_SIZE, contact_losses
 
 # layout of the contact parameter array (built by the model)
-CP_RX_I = 0
-CP_RY_I = 1
-CP_K_I = 2  # ellipticity a_y/b_x (-)
-CP_EE_I = 3  # elliptic integral E (-)
-CP_KK_I = 4  # elliptic integral K (-)
-CP_RX_O = 5
-CP_RY_O = 6
-CP_K_O = 7
-CP_EE_O = 8
-CP_KK_O = 9
-CP_E_RED = 10  # reduced modulus (Pa)
-CP_SIGMA_I = 11  # composite roughness (m)
-CP_SIGMA_O = 12
-CP_FILM = 13  # film formula code
-CP_PRESSURE = 14
-CP_H_FLOOR = 15  # capacitance film floor (m)
-CP_C_BACKGROUND = 16
-CP_ALPHA_H = 17  # hysteresis loss factor (-)
-CP_F_I = 18  # inner conformity (-)
-CP_F_O = 19
-CP_D = 20  # ball diameter (m)
-CP_CAPACITANCE = 21  # 1 = capacitance submodel on; 0 = null submodel (its slots are not written)
-CP_TORQUE = 22  # 1 = loss (torque and heat) submodel on; 0 = null submodel (its slots are not written)
-CP_OIL_GAP = 23  # oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
+_CP_SLOTS = Layout()
+CP_RX_I = _CP_SLOTS.slot()
+CP_RY_I = _CP_SLOTS.slot()
+CP_K_I = _CP_SLOTS.slot()  # ellipticity a_y/b_x (-)
+CP_EE_I = _CP_SLOTS.slot()  # elliptic integral E (-)
+CP_KK_I = _CP_SLOTS.slot()  # elliptic integral K (-)
+CP_RX_O = _CP_SLOTS.slot()
+CP_RY_O = _CP_SLOTS.slot()
+CP_K_O = _CP_SLOTS.slot()
+CP_EE_O = _CP_SLOTS.slot()
+CP_KK_O = _CP_SLOTS.slot()
+CP_E_RED = _CP_SLOTS.slot()  # reduced modulus (Pa)
+CP_SIGMA_I = _CP_SLOTS.slot()  # composite roughness (m)
+CP_SIGMA_O = _CP_SLOTS.slot()
+CP_FILM = _CP_SLOTS.slot()  # film formula code
+CP_PRESSURE = _CP_SLOTS.slot()
+CP_H_FLOOR = _CP_SLOTS.slot()  # capacitance film floor (m)
+CP_C_BACKGROUND = _CP_SLOTS.slot()
+CP_ALPHA_H = _CP_SLOTS.slot()  # hysteresis loss factor (-)
+CP_F_I = _CP_SLOTS.slot()  # inner conformity (-)
+CP_F_O = _CP_SLOTS.slot()
+CP_D = _CP_SLOTS.slot()  # ball diameter (m)
+CP_CAPACITANCE = _CP_SLOTS.slot()  # 1 = capacitance submodel on; 0 = null submodel (its slots are not written)
+CP_TORQUE = _CP_SLOTS.slot()  # 1 = loss (torque and heat) submodel on; 0 = null submodel (its slots are not written)
+# oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
+CP_OIL_GAP = _CP_SLOTS.slot()
 # lubrication method (kernels.lubrication, models.lubrication); CP_LUBRICATED = 0 (flooded): none of it is read
-CP_LUBRICATED = 24  # 1 = film factors on (CO_PHI_* written); 0 = flooded, isothermal
-CP_THERMAL = 25  # 1 = inlet shear heating factor on
-CP_H_OIL = 26  # inlet oil layer (m; inf = no starvation)
-CP_K_OIL = 27  # oil thermal conductivity (W/(m K))
-CP_DRAG = 28  # 1 = drag of the balls on (with CP_TORQUE; CO_P_DRAG, CO_TORQUE_DRAG written)
-CP_DRAG_X = 29  # oil-volume fraction of the fluid the balls move through (-)
-CP_DRAG_AREA = 30  # time-mean part of a ball's frontal area in it (-)
-CP_DM = 31  # pitch diameter (m)
-CP_FILM_TABLE = 32  # film correction table (kernels.film_correction layout, FT_SIZE slots; its FT_ON 0 = off)
-CP_SIZE = CP_FILM_TABLE + FT_SIZE
+CP_LUBRICATED = _CP_SLOTS.slot()  # 1 = film factors on (CO_PHI_* written); 0 = flooded, isothermal
+CP_THERMAL = _CP_SLOTS.slot()  # 1 = inlet shear heating factor on
+CP_H_OIL = _CP_SLOTS.slot()  # inlet oil layer (m; inf = no starvation)
+CP_K_OIL = _CP_SLOTS.slot()  # oil thermal conductivity (W/(m K))
+CP_DRAG = _CP_SLOTS.slot()  # 1 = drag of the balls on (with CP_TORQUE; CO_P_DRAG, CO_TORQUE_DRAG written)
+CP_DRAG_X = _CP_SLOTS.slot()  # oil-volume fraction of the fluid the balls move through (-)
+CP_DRAG_AREA = _CP_SLOTS.slot()  # time-mean part of a ball's frontal area in it (-)
+CP_DM = _CP_SLOTS.slot()  # pitch diameter (m)
+# film correction table (kernels.film_correction layout, FT_SIZE slots; its FT_ON 0 = off)
+CP_FILM_TABLE = _CP_SLOTS.slot(FT_SIZE)
+CP_SIZE = _CP_SLOTS.size
 
 # layout of the output array
-CO_LAMBDA_I = 0
-CO_LAMBDA_O = 1
-CO_HMIN_I = 2
-CO_HMIN_O = 3
-CO_REGIME = 4
-CO_C_BEARING = 5
-CO_QMAX_I = 6
-CO_QMAX_O = 7
-CO_PMAX = 8
-CO_N_LOADED = 9
-CO_P_LOSS = 10
-CO_Q_INNER_RING = 11
-CO_Q_OUTER_RING = 12
-CO_TORQUE = 13
-CO_P_EHL = 14  # 4 components follow in kernels.torque TL_* order
-CO_ETA = 18
-CO_XI = 19
-CO_HC_I = 20  # central film thickness of the most loaded inner contact (m; 0 if none)
-CO_HC_O = 21  # ... outer contact
-CO_P_DRAG = 22  # drag power of the balls (W), part of CO_P_LOSS, half to each ring
-CO_TORQUE_DRAG = 23  # its torque CO_P_DRAG/|omega| (N.m)
-CO_PHI_ISH_I = 24  # film factors of the most loaded inner contact (-): inlet shear heating ...
-CO_PHI_ISH_O = 25  # ... outer contact
-CO_PHI_RS_I = 26  # ... starvation (central film), inner
-CO_PHI_RS_O = 27  # ... outer
-CO_SIZE = 28
+_CO_SLOTS = Layout()
+CO_LAMBDA_I = _CO_SLOTS.slot()
+CO_LAMBDA_O = _CO_SLOTS.slot()
+CO_HMIN_I = _CO_SLOTS.slot()
+CO_HMIN_O = _CO_SLOTS.slot()
+CO_REGIME = _CO_SLOTS.slot()
+CO_C_BEARING = _CO_SLOTS.slot()
+CO_QMAX_I = _CO_SLOTS.slot()
+CO_QMAX_O = _CO_SLOTS.slot()
+CO_PMAX = _CO_SLOTS.slot()
+CO_N_LOADED = _CO_SLOTS.slot()
+CO_P_LOSS = _CO_SLOTS.slot()
+CO_Q_INNER_RING = _CO_SLOTS.slot()
+CO_Q_OUTER_RING = _CO_SLOTS.slot()
+CO_TORQUE = _CO_SLOTS.slot()
+CO_P_EHL = _CO_SLOTS.slot(4)  # 4 components follow in kernels.torque TL_* order
+CO_ETA = _CO_SLOTS.slot()
+CO_XI = _CO_SLOTS.slot()
+CO_HC_I = _CO_SLOTS.slot()  # central film thickness of the most loaded inner contact (m; 0 if none)
+CO_HC_O = _CO_SLOTS.slot()  # ... outer contact
+CO_P_DRAG = _CO_SLOTS.slot()  # drag power of the balls (W), part of CO_P_LOSS, half to each ring
+CO_TORQUE_DRAG = _CO_SLOTS.slot()  # its torque CO_P_DRAG/|omega| (N.m)
+CO_PHI_ISH_I = _CO_SLOTS.slot()  # film factors of the most loaded inner contact (-): inlet shear heating ...
+CO_PHI_ISH_O = _CO_SLOTS.slot()  # ... outer contact
+CO_PHI_RS_I = _CO_SLOTS.slot()  # ... starvation (central film), inner
+CO_PHI_RS_O = _CO_SLOTS.slot()  # ... outer
+CO_SIZE = _CO_SLOTS.size
 # sums started at 0 whatever the options, and those of the loss submodel (with its TL_SIZE components at CO_P_EHL)
 _SUMS = (CO_QMAX_I, CO_QMAX_O, CO_PMAX, CO_N_LOADED, CO_HC_I, CO_HC_O)
 _LOSS_SUMS = (CO_Q_INNER_RING, CO_Q_OUTER_RING)
 
 # rows of the per-contact array
-PC_HMIN_I = 0
-PC_HMIN_O = 1
-PC_LAMBDA_I = 2
-PC_LAMBDA_O = 3
-PC_P_I = 4  # loss of the inner contact (W)
-PC_P_O = 5
-PC_C_I = 6  # capacitance (F)
-PC_C_O = 7
-PC_SIZE = 8
+_PC_SLOTS = Layout()
+PC_HMIN_I = _PC_SLOTS.slot()
+PC_HMIN_O = _PC_SLOTS.slot()
+PC_LAMBDA_I = _PC_SLOTS.slot()
+PC_LAMBDA_O = _PC_SLOTS.slot()
+PC_P_I = _PC_SLOTS.slot()  # loss of the inner contact (W)
+PC_P_O = _PC_SLOTS.slot()
+PC_C_I = _PC_SLOTS.slot()  # capacitance (F)
+PC_C_O = _PC_SLOTS.slot()
+PC_SIZE = _PC_SLOTS.size
 
 
 @kernel

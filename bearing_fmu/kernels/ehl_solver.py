@@ -27,6 +27,7 @@ import math
 import numpy as np
 
 from bearing_fmu_common.jit import kernel
+from bearing_fmu_common.layout import Layout
 
 VISC_BARUS = 0
 VISC_ROELANDS = 1
@@ -37,14 +38,15 @@ DENS_DOWSON_HIGGINSON = 1
 DENS_MURNAGHAN = 2
 
 # layout of the fluid array
-FLUID_VISC = 0  # viscosity code
-FLUID_DENS = 1  # density code
-FLUID_ETA0 = 2  # Pa.s, viscosity at p = 0 (Barus, Roelands)
-FLUID_ALPHA = 3  # 1/Pa, Barus coefficient; Roelands: alpha gives Z = alpha p0 / (ln eta0 + 9.67)
-FLUID_T = 4  # K, temperature (WLF, Murnaghan)
-FLUID_WLF = 5  # 8 values: mu_G (Pa.s), T_g0 (K), A1 (K), A2 (1/Pa), b1 (1/Pa), b2, C1, C2 (K)
-FLUID_MURN = 13  # 5 values: T_R (K), a_v (1/K), beta_K (1/K), K_MM (Pa), K' (-)
-FLUID_SIZE = 18
+_FLUID_SLOTS = Layout()
+FLUID_VISC = _FLUID_SLOTS.slot()  # viscosity code
+FLUID_DENS = _FLUID_SLOTS.slot()  # density code
+FLUID_ETA0 = _FLUID_SLOTS.slot()  # Pa.s, viscosity at p = 0 (Barus, Roelands)
+FLUID_ALPHA = _FLUID_SLOTS.slot()  # 1/Pa, Barus coefficient; Roelands: alpha gives Z = alpha p0 / (ln eta0 + 9.67)
+FLUID_T = _FLUID_SLOTS.slot()  # K, temperature (WLF, Murnaghan)
+FLUID_WLF = _FLUID_SLOTS.slot(8)  # 8 values: mu_G (Pa.s), T_g0 (K), A1 (K), A2 (1/Pa), b1 (1/Pa), b2, C1, C2 (K)
+FLUID_MURN = _FLUID_SLOTS.slot(5)  # 5 values: T_R (K), a_v (1/K), beta_K (1/K), K_MM (Pa), K' (-)
+FLUID_SIZE = _FLUID_SLOTS.size
 
 ROELANDS_P0 = 1.96e8  # Pa, Roelands' pressure constant
 ROELANDS_LN_ETA_INF = -9.67  # ln of Roelands' limiting viscosity 6.31e-5 Pa.s, as the law is printed

@@ -18,21 +18,24 @@ Layout of the table array (float64[FT_SIZE]):
 import math
 
 from bearing_fmu_common.jit import kernel
+from bearing_fmu_common.layout import Layout
 
 from .ehl import dimensionless_groups, film_thickness
 
 FT_NM = 9  # nodes in ln(W G^3)
 FT_NL = 4  # nodes in ln L
 FT_N_FORMULAS = 3  # FILM_HAMROCK_DOWSON, FILM_MASJEDI_KHONSARI, FILM_CHITTENDEN
-FT_ON = 0
-FT_RACE = 1
-FT_LN_WG0 = 0
-FT_D_LN_WG = 1
-FT_LN_L0 = 2
-FT_D_LN_L = 3
-FT_RATIOS = 4
-FT_RACE_STRIDE = FT_RATIOS + FT_N_FORMULAS * 2 * FT_NM * FT_NL
-FT_SIZE = FT_RACE + 2 * FT_RACE_STRIDE
+_FT_RACE_SLOTS = Layout()  # one race's table
+FT_LN_WG0 = _FT_RACE_SLOTS.slot()
+FT_D_LN_WG = _FT_RACE_SLOTS.slot()
+FT_LN_L0 = _FT_RACE_SLOTS.slot()
+FT_D_LN_L = _FT_RACE_SLOTS.slot()
+FT_RATIOS = _FT_RACE_SLOTS.slot(FT_N_FORMULAS * 2 * FT_NM * FT_NL)
+FT_RACE_STRIDE = _FT_RACE_SLOTS.size
+_FT_SLOTS = Layout()
+FT_ON = _FT_SLOTS.slot()
+FT_RACE = _FT_SLOTS.slot(2 * FT_RACE_STRIDE)  # the races' tables, inner then outer
+FT_SIZE = _FT_SLOTS.size
 
 
 @kernel

@@ -35,6 +35,7 @@ import math
 import numpy as np
 
 from bearing_fmu_common.jit import kernel
+from bearing_fmu_common.layout import Layout
 
 from .ball_coupled_newton import ball_contacts, coupled_newton, coupled_work
 from .ball_traction import (
@@ -58,25 +59,29 @@ from .ball_traction import (
 from .geometry import ball_direction
 
 # layout of the quasi-static bearing array (built by bearing_fmu.models.analytic)
-QS_Z = 0  # number of balls (-)
-QS_D = 1  # ball diameter (m)
-QS_DM = 2  # pitch diameter (m)
-QS_FI = 3  # inner groove conformity r_i/D (-)
-QS_FO = 4  # outer groove conformity r_o/D (-)
-QS_PD = 5  # nominal diametral clearance (m), negative = interference
-QS_ANGULAR = 6  # 1 = angular-contact (z = 0 where balls touch at alpha0), 0 = deep groove (z = 0 centred)
-QS_K_I = 7  # inner Hertz constant (N/m^1.5)
-QS_K_O = 8  # outer Hertz constant (N/m^1.5)
-QS_M_BALL = 9  # ball mass (kg)
-QS_RACE = 10  # race control code (RACE_*)
-QS_CENTRIFUGAL = 11  # 1 = centrifugal force on
-QS_GYROSCOPIC = 12  # 1 = gyroscopic moment on
-QS_C_HYB = 13  # hybrid law: a_i E_i / (a_o E_o) at equal loads (-), C = this (Q_i/Q_o)^(4/3)
-QS_TOL = 14  # relative tolerance of the global equilibrium (-)
-QS_MAXIT = 15  # iteration cap of the global Newton (-)
-QS_STIFFNESS = 16  # 1 = fill the stiffness output K; 0 = null submodel: K untouched, assembled only as Newton matrix
-QS_TRACTION = 17  # start of the traction block (kernels.ball_traction TR_*), read by RACE_TRACTION only
-QS_SIZE = QS_TRACTION + TR_SIZE
+_QS_SLOTS = Layout()
+QS_Z = _QS_SLOTS.slot()  # number of balls (-)
+QS_D = _QS_SLOTS.slot()  # ball diameter (m)
+QS_DM = _QS_SLOTS.slot()  # pitch diameter (m)
+QS_FI = _QS_SLOTS.slot()  # inner groove conformity r_i/D (-)
+QS_FO = _QS_SLOTS.slot()  # outer groove conformity r_o/D (-)
+QS_PD = _QS_SLOTS.slot()  # nominal diametral clearance (m), negative = interference
+# 1 = angular-contact (z = 0 where balls touch at alpha0), 0 = deep groove (z = 0 centred)
+QS_ANGULAR = _QS_SLOTS.slot()
+QS_K_I = _QS_SLOTS.slot()  # inner Hertz constant (N/m^1.5)
+QS_K_O = _QS_SLOTS.slot()  # outer Hertz constant (N/m^1.5)
+QS_M_BALL = _QS_SLOTS.slot()  # ball mass (kg)
+QS_RACE = _QS_SLOTS.slot()  # race control code (RACE_*)
+QS_CENTRIFUGAL = _QS_SLOTS.slot()  # 1 = centrifugal force on
+QS_GYROSCOPIC = _QS_SLOTS.slot()  # 1 = gyroscopic moment on
+QS_C_HYB = _QS_SLOTS.slot()  # hybrid law: a_i E_i / (a_o E_o) at equal loads (-), C = this (Q_i/Q_o)^(4/3)
+QS_TOL = _QS_SLOTS.slot()  # relative tolerance of the global equilibrium (-)
+QS_MAXIT = _QS_SLOTS.slot()  # iteration cap of the global Newton (-)
+# 1 = fill the stiffness output K; 0 = null submodel: K untouched, assembled only as Newton matrix
+QS_STIFFNESS = _QS_SLOTS.slot()
+# start of the traction block (kernels.ball_traction TR_*), read by RACE_TRACTION only
+QS_TRACTION = _QS_SLOTS.slot(TR_SIZE)
+QS_SIZE = _QS_SLOTS.size
 
 RACE_OUTER = 0
 RACE_INNER = 1
@@ -91,39 +96,46 @@ RACE_TRACTION = 7  # no hypothesis: kinematics from the balls' force and moment 
 
 # rows of the ball state X (X_SIZE, Z): the ball centre seen from the outer groove-curvature centre, then the
 # kinematics y = (w_m, W_a, W_r, W_t) (rad/s) of RACE_TRACTION (kernels.ball_traction), warm start and solution
-X_SIZE = 6
-X_Y = 2
+_X_SLOTS = Layout()
+X_POSITION = _X_SLOTS.slot(2)  # the ball centre (m): axial, radial
+X_Y = _X_SLOTS.slot(4)
+X_SIZE = _X_SLOTS.size
 
 # rows of the per-ball output array
-BQ_Q_I = 0  # inner contact load (N)
-BQ_Q_O = 1  # outer contact load (N)
-BQ_A_I = 2  # inner contact angle (rad)
-BQ_A_O = 3  # outer contact angle (rad)
-BQ_BETA = 4  # pitch angle of the ball spin axis (rad)
-BQ_W_M = 5  # orbital (cage) speed of the ball (rad/s)
-BQ_W_R = 6  # ball spin speed relative to the cage (rad/s, Harris sign)
-BQ_F_C = 7  # centrifugal force (N)
-BQ_M_G = 8  # gyroscopic moment (N.m, Harris sign)
-BQ_X1 = 9  # ball centre, axial, from the outer groove centre (m)
-BQ_X2 = 10  # ball centre, radial, from the outer groove centre (m)
-BQ_LAM_I = 11  # share of the gyroscopic moment taken by the inner race (-)
-BQ_SPIN_I = 12  # spin speed at the inner contact (rad/s)
-BQ_SPIN_O = 13  # spin speed at the outer contact (rad/s)
-BQ_U_I = 14  # rolling (entrainment) speed at the inner contact (m/s)
-BQ_U_O = 15  # rolling (entrainment) speed at the outer contact (m/s)
-BQ_P_SLIP_I = 16  # power of the traction against the sliding at the inner contact (W; RACE_TRACTION, else 0)
-BQ_P_SLIP_O = 17
-BQ_MU_REQ_I = 18  # traction coefficient a race-control hypothesis asks of the inner contact, |lam_i M_g/D| / Q_i (-)
-BQ_MU_REQ_O = 19  # ... of the outer contact (-); 0 under RACE_TRACTION (its forces are the traction curve's)
-BQ_SIZE = 20
+_BQ_SLOTS = Layout()
+BQ_Q_I = _BQ_SLOTS.slot()  # inner contact load (N)
+BQ_Q_O = _BQ_SLOTS.slot()  # outer contact load (N)
+BQ_A_I = _BQ_SLOTS.slot()  # inner contact angle (rad)
+BQ_A_O = _BQ_SLOTS.slot()  # outer contact angle (rad)
+BQ_BETA = _BQ_SLOTS.slot()  # pitch angle of the ball spin axis (rad)
+BQ_W_M = _BQ_SLOTS.slot()  # orbital (cage) speed of the ball (rad/s)
+BQ_W_R = _BQ_SLOTS.slot()  # ball spin speed relative to the cage (rad/s, Harris sign)
+BQ_F_C = _BQ_SLOTS.slot()  # centrifugal force (N)
+BQ_M_G = _BQ_SLOTS.slot()  # gyroscopic moment (N.m, Harris sign)
+BQ_X1 = _BQ_SLOTS.slot()  # ball centre, axial, from the outer groove centre (m)
+BQ_X2 = _BQ_SLOTS.slot()  # ball centre, radial, from the outer groove centre (m)
+BQ_LAM_I = _BQ_SLOTS.slot()  # share of the gyroscopic moment taken by the inner race (-)
+BQ_SPIN_I = _BQ_SLOTS.slot()  # spin speed at the inner contact (rad/s)
+BQ_SPIN_O = _BQ_SLOTS.slot()  # spin speed at the outer contact (rad/s)
+BQ_U_I = _BQ_SLOTS.slot()  # rolling (entrainment) speed at the inner contact (m/s)
+BQ_U_O = _BQ_SLOTS.slot()  # rolling (entrainment) speed at the outer contact (m/s)
+# power of the traction against the sliding at the inner contact (W; RACE_TRACTION, else 0)
+BQ_P_SLIP_I = _BQ_SLOTS.slot()
+BQ_P_SLIP_O = _BQ_SLOTS.slot()
+# traction coefficient a race-control hypothesis asks of the inner contact, |lam_i M_g/D| / Q_i (-)
+BQ_MU_REQ_I = _BQ_SLOTS.slot()
+# ... of the outer contact (-); 0 under RACE_TRACTION (its forces are the traction curve's)
+BQ_MU_REQ_O = _BQ_SLOTS.slot()
+BQ_SIZE = _BQ_SLOTS.size
 
 # rows of the per-ball contact state that the load evaluation keeps for the per-ball outputs
-CS_Q_I = 0  # inner contact load (N)
-CS_Q_O = 1  # outer contact load (N)
-CS_A_I = 2  # inner contact angle (rad)
-CS_A_O = 3  # outer contact angle (rad)
-CS_C = 4  # hybrid spin-moment ratio (-)
-CS_SIZE = 5
+_CS_SLOTS = Layout()
+CS_Q_I = _CS_SLOTS.slot()  # inner contact load (N)
+CS_Q_O = _CS_SLOTS.slot()  # outer contact load (N)
+CS_A_I = _CS_SLOTS.slot()  # inner contact angle (rad)
+CS_A_O = _CS_SLOTS.slot()  # outer contact angle (rad)
+CS_C = _CS_SLOTS.slot()  # hybrid spin-moment ratio (-)
+CS_SIZE = _CS_SLOTS.size
 
 # status codes of the solver
 QS_OK = 0
@@ -134,66 +146,70 @@ QS_NOT_FINITE = 3  # NaN or inf appeared
 # slots of the ball evaluation w (_ball_eval): residual r of the ball's force balance, ring load g and
 # friction couple m_g of the ball on the inner ring, their partial derivatives w.r.t. the ball position X
 # and the curvature-centre offset A (2x2 blocks, row-major), contact loads, angles, hybrid ratio
-EV_R1 = 0  # axial residual (N)
-EV_R2 = 1  # radial residual (N)
-EV_GZ = 2  # axial ring load g_z (N)
-EV_GR = 3  # radial ring load g_r (N)
-EV_MG = 4  # friction couple m_g (N.m)
-EV_DR1_DX1 = 5  # dr/dX (N/m)
-EV_DR1_DX2 = 6
-EV_DR2_DX1 = 7
-EV_DR2_DX2 = 8
-EV_DR1_DA1 = 9  # dr/dA (N/m)
-EV_DR1_DA2 = 10
-EV_DR2_DA1 = 11
-EV_DR2_DA2 = 12
-EV_DGZ_DX1 = 13  # dg/dX (N/m)
-EV_DGZ_DX2 = 14
-EV_DGR_DX1 = 15
-EV_DGR_DX2 = 16
-EV_DGZ_DA1 = 17  # dg/dA (N/m)
-EV_DGZ_DA2 = 18
-EV_DGR_DA1 = 19
-EV_DGR_DA2 = 20
-EV_DM_DX1 = 21  # dm_g/dX (N)
-EV_DM_DX2 = 22
-EV_DM_DA1 = 23  # dm_g/dA (N)
-EV_DM_DA2 = 24
-EV_Q_I = 25  # inner contact load (N)
-EV_Q_O = 26  # outer contact load (N)
-EV_A_I = 27  # inner contact angle (rad)
-EV_A_O = 28  # outer contact angle (rad)
-EV_C = 29  # hybrid spin-moment ratio (-)
-EV_SIZE = 30
+_EV_SLOTS = Layout()
+EV_R1 = _EV_SLOTS.slot()  # axial residual (N)
+EV_R2 = _EV_SLOTS.slot()  # radial residual (N)
+EV_GZ = _EV_SLOTS.slot()  # axial ring load g_z (N)
+EV_GR = _EV_SLOTS.slot()  # radial ring load g_r (N)
+EV_MG = _EV_SLOTS.slot()  # friction couple m_g (N.m)
+EV_DR1_DX1 = _EV_SLOTS.slot()  # dr/dX (N/m)
+EV_DR1_DX2 = _EV_SLOTS.slot()
+EV_DR2_DX1 = _EV_SLOTS.slot()
+EV_DR2_DX2 = _EV_SLOTS.slot()
+EV_DR1_DA1 = _EV_SLOTS.slot()  # dr/dA (N/m)
+EV_DR1_DA2 = _EV_SLOTS.slot()
+EV_DR2_DA1 = _EV_SLOTS.slot()
+EV_DR2_DA2 = _EV_SLOTS.slot()
+EV_DGZ_DX1 = _EV_SLOTS.slot()  # dg/dX (N/m)
+EV_DGZ_DX2 = _EV_SLOTS.slot()
+EV_DGR_DX1 = _EV_SLOTS.slot()
+EV_DGR_DX2 = _EV_SLOTS.slot()
+EV_DGZ_DA1 = _EV_SLOTS.slot()  # dg/dA (N/m)
+EV_DGZ_DA2 = _EV_SLOTS.slot()
+EV_DGR_DA1 = _EV_SLOTS.slot()
+EV_DGR_DA2 = _EV_SLOTS.slot()
+EV_DM_DX1 = _EV_SLOTS.slot()  # dm_g/dX (N)
+EV_DM_DX2 = _EV_SLOTS.slot()
+EV_DM_DA1 = _EV_SLOTS.slot()  # dm_g/dA (N)
+EV_DM_DA2 = _EV_SLOTS.slot()
+EV_Q_I = _EV_SLOTS.slot()  # inner contact load (N)
+EV_Q_O = _EV_SLOTS.slot()  # outer contact load (N)
+EV_A_I = _EV_SLOTS.slot()  # inner contact angle (rad)
+EV_A_O = _EV_SLOTS.slot()  # outer contact angle (rad)
+EV_C = _EV_SLOTS.slot()  # hybrid spin-moment ratio (-)
+EV_SIZE = _EV_SLOTS.size
 
 # slots of a solved ball (ball_equilibrium's cond): ring load, friction couple and their derivatives
 # w.r.t. A with the ball position condensed out, then the contact state
-BE_GZ = 0  # axial ring load g_z (N)
-BE_GR = 1  # radial ring load g_r (N)
-BE_MG = 2  # friction couple m_g (N.m)
-BE_DGZ_DA1 = 3  # dg/dA (N/m), row-major
-BE_DGZ_DA2 = 4
-BE_DGR_DA1 = 5
-BE_DGR_DA2 = 6
-BE_DM_DA1 = 7  # dm_g/dA (N)
-BE_DM_DA2 = 8
-BE_Q_I = 9  # inner contact load (N)
-BE_Q_O = 10  # outer contact load (N)
-BE_A_I = 11  # inner contact angle (rad)
-BE_A_O = 12  # outer contact angle (rad)
-BE_C = 13  # hybrid spin-moment ratio (-)
-BE_SIZE = 14
+_BE_SLOTS = Layout()
+BE_GZ = _BE_SLOTS.slot()  # axial ring load g_z (N)
+BE_GR = _BE_SLOTS.slot()  # radial ring load g_r (N)
+BE_MG = _BE_SLOTS.slot()  # friction couple m_g (N.m)
+BE_DGZ_DA1 = _BE_SLOTS.slot()  # dg/dA (N/m), row-major
+BE_DGZ_DA2 = _BE_SLOTS.slot()
+BE_DGR_DA1 = _BE_SLOTS.slot()
+BE_DGR_DA2 = _BE_SLOTS.slot()
+BE_DM_DA1 = _BE_SLOTS.slot()  # dm_g/dA (N)
+BE_DM_DA2 = _BE_SLOTS.slot()
+BE_Q_I = _BE_SLOTS.slot()  # inner contact load (N)
+BE_Q_O = _BE_SLOTS.slot()  # outer contact load (N)
+BE_A_I = _BE_SLOTS.slot()  # inner contact angle (rad)
+BE_A_O = _BE_SLOTS.slot()  # outer contact angle (rad)
+BE_C = _BE_SLOTS.slot()  # hybrid spin-moment ratio (-)
+BE_SIZE = _BE_SLOTS.size
 
 # rows and columns of the kinematic partials kg (_kin_grad)
-KG_FC = 0  # centrifugal force F_c (N)
-KG_MGO = 1  # lam_o M_g / D (N)
-KG_MGI = 2  # lam_i M_g / D (N)
-KG_VALUE = 0
-KG_DAI = 1  # d/da_i
-KG_DAO = 2  # d/da_o
-KG_DC = 3  # d/dC (RACE_TRACTION: d/dQ_i)
-KG_DQO = 4  # d/dQ_o (RACE_TRACTION only; 0 for the hypotheses)
-KG_SIZE = 5
+_KG_ROWS = Layout()
+KG_FC = _KG_ROWS.slot()  # centrifugal force F_c (N)
+KG_MGO = _KG_ROWS.slot()  # lam_o M_g / D (N)
+KG_MGI = _KG_ROWS.slot()  # lam_i M_g / D (N)
+_KG_SLOTS = Layout()
+KG_VALUE = _KG_SLOTS.slot()
+KG_DAI = _KG_SLOTS.slot()  # d/da_i
+KG_DAO = _KG_SLOTS.slot()  # d/da_o
+KG_DC = _KG_SLOTS.slot()  # d/dC (RACE_TRACTION: d/dQ_i)
+KG_DQO = _KG_SLOTS.slot()  # d/dQ_o (RACE_TRACTION only; 0 for the hypotheses)
+KG_SIZE = _KG_SLOTS.size
 
 _H_CSTEP = 1e-30  # complex-step increment: exact derivatives, no subtraction error
 _BALL_MAXIT = 60

@@ -11,6 +11,7 @@ The per-lubricant numbers travel in one float64 array ``lub`` whose layout is fi
 import math
 
 from bearing_fmu_common.jit import kernel
+from bearing_fmu_common.layout import Layout
 
 VISCOSITY_CONSTANT = 0
 VISCOSITY_WALTHER = 1
@@ -24,31 +25,32 @@ DENSITY_LINEAR = 0
 DENSITY_MURNAGHAN = 1
 
 # layout of the lubricant parameter array
-LUB_VISC_MODEL = 0
-LUB_ETA_CONST = 1  # Pa.s
-LUB_WALTHER_A = 2  # -
-LUB_WALTHER_B = 3  # -
-LUB_PIEZO_MODEL = 4
-LUB_XI_CONST = 5  # 1/Pa
-LUB_GOLD_S = 6  # 1/Pa
-LUB_GOLD_T = 7  # -
-LUB_DENS_MODEL = 8
-LUB_RHO_REF = 9  # kg/m^3
-LUB_T_REF = 10  # K
-LUB_EXPANSION = 11  # 1/K
-LUB_EPS_R0 = 12  # -
-LUB_WLF_MU_G = 13  # Pa.s
-LUB_WLF_TG0 = 14  # K
-LUB_WLF_A1 = 15  # K
-LUB_WLF_A2 = 16  # 1/Pa
-LUB_WLF_B1 = 17  # 1/Pa
-LUB_WLF_B2 = 18  # -
-LUB_WLF_C1 = 19  # -
-LUB_WLF_C2 = 20  # K
-LUB_MURN_BETA_K = 21  # 1/K
-LUB_MURN_K_MM = 22  # Pa
-LUB_MURN_K_PRIME = 23  # -
-LUB_SIZE = 24
+_LUB_SLOTS = Layout()
+LUB_VISC_MODEL = _LUB_SLOTS.slot()
+LUB_ETA_CONST = _LUB_SLOTS.slot()  # Pa.s
+LUB_WALTHER_A = _LUB_SLOTS.slot()  # -
+LUB_WALTHER_B = _LUB_SLOTS.slot()  # -
+LUB_PIEZO_MODEL = _LUB_SLOTS.slot()
+LUB_XI_CONST = _LUB_SLOTS.slot()  # 1/Pa
+LUB_GOLD_S = _LUB_SLOTS.slot()  # 1/Pa
+LUB_GOLD_T = _LUB_SLOTS.slot()  # -
+LUB_DENS_MODEL = _LUB_SLOTS.slot()
+LUB_RHO_REF = _LUB_SLOTS.slot()  # kg/m^3
+LUB_T_REF = _LUB_SLOTS.slot()  # K
+LUB_EXPANSION = _LUB_SLOTS.slot()  # 1/K
+LUB_EPS_R0 = _LUB_SLOTS.slot()  # -
+LUB_WLF_MU_G = _LUB_SLOTS.slot()  # Pa.s
+LUB_WLF_TG0 = _LUB_SLOTS.slot()  # K
+LUB_WLF_A1 = _LUB_SLOTS.slot()  # K
+LUB_WLF_A2 = _LUB_SLOTS.slot()  # 1/Pa
+LUB_WLF_B1 = _LUB_SLOTS.slot()  # 1/Pa
+LUB_WLF_B2 = _LUB_SLOTS.slot()  # -
+LUB_WLF_C1 = _LUB_SLOTS.slot()  # -
+LUB_WLF_C2 = _LUB_SLOTS.slot()  # K
+LUB_MURN_BETA_K = _LUB_SLOTS.slot()  # 1/K
+LUB_MURN_K_MM = _LUB_SLOTS.slot()  # Pa
+LUB_MURN_K_PRIME = _LUB_SLOTS.slot()  # -
+LUB_SIZE = _LUB_SLOTS.size
 
 KELVIN_OFFSET = 273.15
 

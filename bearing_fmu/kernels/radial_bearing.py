@@ -15,6 +15,7 @@ and the defect frequencies (FTF, BPFO, BPFI, BSF) are those of pure rolling.
 import math
 
 from bearing_fmu_common.jit import kernel
+from bearing_fmu_common.layout import Layout
 
 from .capacitance import ball_capacitance, lubricated_contact_capacitance
 from .ehl import film_parameter, lubrication_regime
@@ -26,75 +27,79 @@ from .lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubr
 from .lubrication import ball_drag_power, film_factors, mixture, temperature_viscosity_coefficient
 
 # layout of the bearing parameter array (built by bearing_fmu.models.analytic)
-B_Z = 0  # number of balls (-)
-B_D = 1  # ball diameter (m)
-B_DM = 2  # pitch diameter (m)
-B_PD = 3  # diametral clearance (m)
-B_RX_I = 4  # inner contact Rx (m)
-B_RY_I = 5  # inner contact Ry (m)
-B_RX_O = 6  # outer contact Rx (m)
-B_RY_O = 7  # outer contact Ry (m)
-B_K_I = 8  # inner ellipticity a_y/b_x (-)
-B_EE_I = 9  # inner elliptic integral E (-)
-B_KK_I = 10  # inner elliptic integral K (-)
-B_K_O = 11
-B_EE_O = 12
-B_KK_O = 13
-B_E_RED = 14  # reduced modulus E' (Pa)
-B_M_BALL = 15  # ball mass (kg)
-B_SIGMA_I = 16  # composite roughness, inner contact (m)
-B_SIGMA_O = 17  # composite roughness, outer contact (m)
-B_FILM = 18  # film formula code (kernels.ehl)
-B_PRESSURE = 19  # permittivity pressure choice (kernels.capacitance)
-B_H_FLOOR = 20  # film floor for capacitance (m)
-B_C_BACKGROUND = 21  # background capacitance (F)
-B_CENTRIFUGAL = 22  # 1 = centrifugal load on, 0 = off
-B_TOL = 23  # relative tolerance of the radial equilibrium (-)
-B_CAPACITANCE = 24  # 1 = capacitance submodel on; 0 = null submodel (O_C_BEARING and ball rows C_i, C_o not written)
-B_OIL_GAP = 25  # oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
+_B_SLOTS = Layout()
+B_Z = _B_SLOTS.slot()  # number of balls (-)
+B_D = _B_SLOTS.slot()  # ball diameter (m)
+B_DM = _B_SLOTS.slot()  # pitch diameter (m)
+B_PD = _B_SLOTS.slot()  # diametral clearance (m)
+B_RX_I = _B_SLOTS.slot()  # inner contact Rx (m)
+B_RY_I = _B_SLOTS.slot()  # inner contact Ry (m)
+B_RX_O = _B_SLOTS.slot()  # outer contact Rx (m)
+B_RY_O = _B_SLOTS.slot()  # outer contact Ry (m)
+B_K_I = _B_SLOTS.slot()  # inner ellipticity a_y/b_x (-)
+B_EE_I = _B_SLOTS.slot()  # inner elliptic integral E (-)
+B_KK_I = _B_SLOTS.slot()  # inner elliptic integral K (-)
+B_K_O = _B_SLOTS.slot()
+B_EE_O = _B_SLOTS.slot()
+B_KK_O = _B_SLOTS.slot()
+B_E_RED = _B_SLOTS.slot()  # reduced modulus E' (Pa)
+B_M_BALL = _B_SLOTS.slot()  # ball mass (kg)
+B_SIGMA_I = _B_SLOTS.slot()  # composite roughness, inner contact (m)
+B_SIGMA_O = _B_SLOTS.slot()  # composite roughness, outer contact (m)
+B_FILM = _B_SLOTS.slot()  # film formula code (kernels.ehl)
+B_PRESSURE = _B_SLOTS.slot()  # permittivity pressure choice (kernels.capacitance)
+B_H_FLOOR = _B_SLOTS.slot()  # film floor for capacitance (m)
+B_C_BACKGROUND = _B_SLOTS.slot()  # background capacitance (F)
+B_CENTRIFUGAL = _B_SLOTS.slot()  # 1 = centrifugal load on, 0 = off
+B_TOL = _B_SLOTS.slot()  # relative tolerance of the radial equilibrium (-)
+# 1 = capacitance submodel on; 0 = null submodel (O_C_BEARING and ball rows C_i, C_o not written)
+B_CAPACITANCE = _B_SLOTS.slot()
+B_OIL_GAP = _B_SLOTS.slot()  # oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
 # lubrication method (kernels.lubrication, models.lubrication); B_LUBRICATED = 0 (flooded): none of it is read
-B_LUBRICATED = 26  # 1 = film factors on (O_PHI_* written)
-B_THERMAL = 27  # 1 = inlet shear heating factor on
-B_H_OIL = 28  # inlet oil layer (m; inf = no starvation)
-B_K_OIL = 29  # oil thermal conductivity (W/(m K))
-B_DRAG = 30  # 1 = drag of the balls on (O_P_DRAG, O_TORQUE_DRAG written)
-B_DRAG_X = 31  # oil-volume fraction of the fluid the balls move through (-)
-B_DRAG_AREA = 32  # time-mean part of a ball's frontal area in it (-)
-B_FILM_TABLE = 33  # film correction table (kernels.film_correction layout, FT_SIZE slots; its FT_ON 0 = off)
-B_SIZE = B_FILM_TABLE + FT_SIZE
+B_LUBRICATED = _B_SLOTS.slot()  # 1 = film factors on (O_PHI_* written)
+B_THERMAL = _B_SLOTS.slot()  # 1 = inlet shear heating factor on
+B_H_OIL = _B_SLOTS.slot()  # inlet oil layer (m; inf = no starvation)
+B_K_OIL = _B_SLOTS.slot()  # oil thermal conductivity (W/(m K))
+B_DRAG = _B_SLOTS.slot()  # 1 = drag of the balls on (O_P_DRAG, O_TORQUE_DRAG written)
+B_DRAG_X = _B_SLOTS.slot()  # oil-volume fraction of the fluid the balls move through (-)
+B_DRAG_AREA = _B_SLOTS.slot()  # time-mean part of a ball's frontal area in it (-)
+# film correction table (kernels.film_correction layout, FT_SIZE slots; its FT_ON 0 = off)
+B_FILM_TABLE = _B_SLOTS.slot(FT_SIZE)
+B_SIZE = _B_SLOTS.size
 
 # layout of the output array
-O_LAMBDA_I = 0
-O_LAMBDA_O = 1
-O_HMIN_I = 2
-O_HMIN_O = 3
-O_REGIME = 4
-O_C_BEARING = 5
-O_QMAX_I = 6
-O_QMAX_O = 7
-O_PMAX = 8
-O_OMEGA_CAGE = 9
-O_OMEGA_BALL = 10
-O_N_LOADED = 11
-O_DELTA_R = 12
-O_EPS = 13
-O_HC_I = 14
-O_HC_O = 15
-O_ETA = 16
-O_XI = 17
-O_ITER = 18
-O_OMEGA_BALL_CAGE = 19  # ball angular speed relative to the cage (rad/s, magnitude)
-O_FTF = 20  # defect frequencies (Hz): fundamental train (cage)
-O_BPFO = 21  # ball pass, outer race
-O_BPFI = 22  # ball pass, inner race
-O_BSF = 23  # ball spin
-O_P_DRAG = 24  # drag power of the balls (W)
-O_TORQUE_DRAG = 25  # its torque O_P_DRAG/|omega| (N.m)
-O_PHI_ISH_I = 26  # film factors of the most loaded inner contact (ball 1, -): inlet shear heating ...
-O_PHI_ISH_O = 27  # ... outer contact
-O_PHI_RS_I = 28  # ... starvation (central film), inner
-O_PHI_RS_O = 29  # ... outer
-O_SIZE = 30
+_O_SLOTS = Layout()
+O_LAMBDA_I = _O_SLOTS.slot()
+O_LAMBDA_O = _O_SLOTS.slot()
+O_HMIN_I = _O_SLOTS.slot()
+O_HMIN_O = _O_SLOTS.slot()
+O_REGIME = _O_SLOTS.slot()
+O_C_BEARING = _O_SLOTS.slot()
+O_QMAX_I = _O_SLOTS.slot()
+O_QMAX_O = _O_SLOTS.slot()
+O_PMAX = _O_SLOTS.slot()
+O_OMEGA_CAGE = _O_SLOTS.slot()
+O_OMEGA_BALL = _O_SLOTS.slot()
+O_N_LOADED = _O_SLOTS.slot()
+O_DELTA_R = _O_SLOTS.slot()
+O_EPS = _O_SLOTS.slot()
+O_HC_I = _O_SLOTS.slot()
+O_HC_O = _O_SLOTS.slot()
+O_ETA = _O_SLOTS.slot()
+O_XI = _O_SLOTS.slot()
+O_ITER = _O_SLOTS.slot()
+O_OMEGA_BALL_CAGE = _O_SLOTS.slot()  # ball angular speed relative to the cage (rad/s, magnitude)
+O_FTF = _O_SLOTS.slot()  # defect frequencies (Hz): fundamental train (cage)
+O_BPFO = _O_SLOTS.slot()  # ball pass, outer race
+O_BPFI = _O_SLOTS.slot()  # ball pass, inner race
+O_BSF = _O_SLOTS.slot()  # ball spin
+O_P_DRAG = _O_SLOTS.slot()  # drag power of the balls (W)
+O_TORQUE_DRAG = _O_SLOTS.slot()  # its torque O_P_DRAG/|omega| (N.m)
+O_PHI_ISH_I = _O_SLOTS.slot()  # film factors of the most loaded inner contact (ball 1, -): inlet shear heating ...
+O_PHI_ISH_O = _O_SLOTS.slot()  # ... outer contact
+O_PHI_RS_I = _O_SLOTS.slot()  # ... starvation (central film), inner
+O_PHI_RS_O = _O_SLOTS.slot()  # ... outer
+O_SIZE = _O_SLOTS.size
 
 
 @kernel

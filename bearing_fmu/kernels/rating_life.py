@@ -28,6 +28,7 @@ or at rest for hours) is reported as LIFE_INFINITE.
 import math
 
 from bearing_fmu_common.jit import kernel
+from bearing_fmu_common.layout import Layout
 
 from .torque import iso76_f0, iso76_static_rating
 
@@ -109,21 +110,23 @@ AC_ALPHA_MIN = 15.0  # deg: below, the radial-contact row (0 deg) and the 15 deg
 # (an approximation: ISO 281's 5 and 10 deg rows are not carried; docs/rating_life.md)
 
 # layout of the life parameter array (built by the facades with rating_parameters())
-LP_C_R = 0  # basic dynamic radial load rating C_r (N)
-LP_C_0R = 1  # basic static radial load rating C_0r (N), ISO 76
-LP_F_0 = 2  # ISO 76 factor f_0 (-)
-LP_ANGULAR = 3  # 1 = angular contact (Table 3 by contact angle), 0 = radial contact groove bearing
-LP_ALPHA_DEG = 4  # nominal contact angle (deg)
-LP_Q_CI = 5  # basic dynamic load rating of an inner contact (N)
-LP_Q_CE = 6  # ... of an outer contact (N)
-LP_SIZE = 7
+_LP_SLOTS = Layout()
+LP_C_R = _LP_SLOTS.slot()  # basic dynamic radial load rating C_r (N)
+LP_C_0R = _LP_SLOTS.slot()  # basic static radial load rating C_0r (N), ISO 76
+LP_F_0 = _LP_SLOTS.slot()  # ISO 76 factor f_0 (-)
+LP_ANGULAR = _LP_SLOTS.slot()  # 1 = angular contact (Table 3 by contact angle), 0 = radial contact groove bearing
+LP_ALPHA_DEG = _LP_SLOTS.slot()  # nominal contact angle (deg)
+LP_Q_CI = _LP_SLOTS.slot()  # basic dynamic load rating of an inner contact (N)
+LP_Q_CE = _LP_SLOTS.slot()  # ... of an outer contact (N)
+LP_SIZE = _LP_SLOTS.size
 
 # layout of the life output array
-LO_L10 = 0  # basic rating life (rev)
-LO_L10_H = 1  # ... in hours at the current speed (h)
-LO_L10R = 2  # reference rating life (rev)
-LO_L10R_H = 3  # ... in hours (h)
-LO_SIZE = 4
+_LO_SLOTS = Layout()
+LO_L10 = _LO_SLOTS.slot()  # basic rating life (rev)
+LO_L10_H = _LO_SLOTS.slot()  # ... in hours at the current speed (h)
+LO_L10R = _LO_SLOTS.slot()  # reference rating life (rev)
+LO_L10R_H = _LO_SLOTS.slot()  # ... in hours (h)
+LO_SIZE = _LO_SLOTS.size
 
 
 @kernel

@@ -26,13 +26,15 @@ ISO 76 static rating C0 that enters f1.
 import math
 
 from bearing_fmu_common.jit import kernel
+from bearing_fmu_common.layout import Layout
 
 # Indices of the per-contact power array filled by contact_losses.
-TL_EHL = 0
-TL_HYST = 1
-TL_HEATHCOTE = 2
-TL_SPIN = 3
-TL_SIZE = 4
+_TL_SLOTS = Layout()
+TL_EHL = _TL_SLOTS.slot()
+TL_HYST = _TL_SLOTS.slot()
+TL_HEATHCOTE = _TL_SLOTS.slot()
+TL_SPIN = _TL_SLOTS.slot()
+TL_SIZE = _TL_SLOTS.size
 
 # Hysteresis loss factor of bearing steel. ESTIMATED (Harris, Rolling Bearing Analysis; unverified, see the
 # unverified-sources table of docs/decisions.md).

@@ -26,21 +26,24 @@ along the tangent plane: s = +-r.
 import math
 
 from bearing_fmu_common.jit import kernel
+from bearing_fmu_common.layout import Layout
 
 # truncation parameters of one bearing, float64[TP_SIZE]: per race (inner at 0, outer at TP_STRIDE)
-TP_A1 = 0  # semi-major axis of the contact at 1 N (m): a = TP_A1 Q^(1/3) (Hertz)
-TP_R = 1  # groove radius f D (m)
-TP_THRUST = 2  # angle of the thrust-side shoulder edge from the groove centre (rad, > 0)
-TP_BACK = 3  # angle of the other shoulder's edge (rad, > 0, on the side of negative contact angles)
-TP_STRIDE = 4
-TP_SIZE = 8
+_TP_SLOTS = Layout()
+TP_A1 = _TP_SLOTS.slot()  # semi-major axis of the contact at 1 N (m): a = TP_A1 Q^(1/3) (Hertz)
+TP_R = _TP_SLOTS.slot()  # groove radius f D (m)
+TP_THRUST = _TP_SLOTS.slot()  # angle of the thrust-side shoulder edge from the groove centre (rad, > 0)
+TP_BACK = _TP_SLOTS.slot()  # angle of the other shoulder's edge (rad, > 0, on the side of negative contact angles)
+TP_STRIDE = _TP_SLOTS.slot(4)
+TP_SIZE = _TP_SLOTS.size
 
 # truncation outputs, float64[TR_SIZE]
-TR_INNER = 0  # truncated fraction of the most truncated loaded inner contact (-, 0 if none)
-TR_OUTER = 1  # ... outer contact
-TR_BALL_INNER = 2  # its ball index (-1 if no contact is truncated)
-TR_BALL_OUTER = 3
-TR_SIZE = 4
+_TR_SLOTS = Layout()
+TR_INNER = _TR_SLOTS.slot()  # truncated fraction of the most truncated loaded inner contact (-, 0 if none)
+TR_OUTER = _TR_SLOTS.slot()  # ... outer contact
+TR_BALL_INNER = _TR_SLOTS.slot()  # its ball index (-1 if no contact is truncated)
+TR_BALL_OUTER = _TR_SLOTS.slot()
+TR_SIZE = _TR_SLOTS.size
 
 T_MAX = 2.0  # the whole ellipse beyond the shoulder
 

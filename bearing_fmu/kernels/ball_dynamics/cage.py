@@ -58,7 +58,7 @@ def cage_guide_contact(px, py, pz, vx, vy, vz, r_guide, z_guide, gap, K, c0):
     r = math.sqrt(px * px + py * py)
     if r == 0.0:
         return 0.0, 0.0, 0.0
-    # as contacts.groove_approach: the offset from the circle, (p_xy (r - r_guide)/r, dz), normalised with
+    # as contact_law.groove_approach: the offset from the circle, (p_xy (r - r_guide)/r, dz), normalised with
     # one division
     radial = r - r_guide
     sz = pz - z_guide

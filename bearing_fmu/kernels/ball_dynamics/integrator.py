@@ -222,7 +222,7 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
     loads F_x, F_y, F_z (N), M_x, M_y (N.m, about its centre) on the inner ring.
 
     The forces at the new positions with the predicted velocities: the 2 Z ball-race contacts
-    (contacts.ball_race_contact; springs and chatter counters updated, work[W_LOADED] counts each ball's
+    (contact_law.ball_race_contact; springs and chatter counters updated, work[W_LOADED] counts each ball's
     loaded races, acc[A_POWER_I + race] receives the power (W) dissipated in the contacts themselves) and the
     cage balls (cage.ball_cage_contact with the two steel balls around each, cage.cage_guide_contact with the
     channel). One function body for the whole step: a numba call that passes arrays costs two atomic
@@ -284,7 +284,7 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
     )
     mu_lim = par[P_MU_LIM]
     kappa = par[P_FILM_RATE] * dt / par[P_M_BALL]  # slip (m/s) a newton removes from a ball's contacts in a step
-    # the approaches and normals of both races first, in a loop of their own (contacts.ball_race_contact says why)
+    # the approaches and normals of both races first, in a loop of their own (contact_law.ball_race_contact says why)
     cxi, cyi, czi, axi, ayi, azi, rhoi = race_circle(0, ring, par)
     cxo, cyo, czo, axo, ayo, azo, rhoo = race_circle(1, ring, par)
     rgi = par[P_RG_I]

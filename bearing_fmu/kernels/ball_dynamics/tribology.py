@@ -24,6 +24,7 @@ SRR = |u_b - u_r|/u. Spin: (w - W).n.
 import math
 
 from bearing_fmu_common.jit import kernel
+from bearing_fmu_common.layout import Layout
 
 from ..capacitance import lubricated_contact_capacitance
 from ..ehl import (
@@ -66,7 +67,9 @@ from .state import (
     P_PRESSURE,
     P_RG_I,
     P_RHO_I,
+    P_RHO_O,
     P_RX_I,
+    P_RX_O,
     P_RY_I,
     P_S_TRACTION,
     P_SIGMA_I,
@@ -103,14 +106,15 @@ from .state import (
 # would pay 18 times per refresh.
 
 # rows of the per-race constants of the power laws (tribology_constants)
-TC_LN_HMIN = 0  # ln h_min = TC_LN_HMIN + 0.68 ln u - 0.073 * 1.5 ln delta (Hamrock-Dowson)
-TC_LN_HC = 1  # ln h_c = TC_LN_HC + 0.67 ln u - 0.067 * 1.5 ln delta
-TC_LN_FR = 2  # ln F_R = TC_LN_FR + 0.656 ln u + 0.466 * 1.5 ln delta (Houpert)
-TC_SIZE = 3
+_TC_SLOTS = Layout()
+TC_LN_HMIN = _TC_SLOTS.slot()  # ln h_min = TC_LN_HMIN + 0.68 ln u - 0.073 * 1.5 ln delta (Hamrock-Dowson)
+TC_LN_HC = _TC_SLOTS.slot()  # ln h_c = TC_LN_HC + 0.67 ln u - 0.067 * 1.5 ln delta
+TC_LN_FR = _TC_SLOTS.slot()  # ln F_R = TC_LN_FR + 0.656 ln u + 0.466 * 1.5 ln delta (Houpert)
+TC_SIZE = _TC_SLOTS.size
 
 # offset between the inner and the outer block of contact parameters (P_*_I -> P_*_O)
-RACE_STRIDE_HERTZ = 5  # P_RX_I .. P_KK_I
-RACE_STRIDE_GEOM = 2  # P_RHO_I, P_Z_I -> P_RHO_O, P_Z_O
+RACE_STRIDE_HERTZ = P_RX_O - P_RX_I  # P_RX_I .. P_KK_I -> P_RX_O .. P_KK_O
+RACE_STRIDE_GEOM = P_RHO_O - P_RHO_I  # P_RHO_I, P_Z_I -> P_RHO_O, P_Z_O
 
 
 @kernel(inline="always")
@@ -303,7 +307,7 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, ge
             lam = film_parameter(h_min, sigma)
             mu = friction_coefficient(lam)  # the papers' mu(Lambda): the Houpert sliding terms below
             # tangential law: the asperities' share (1 - phi) a Coulomb spring at the boundary mu, the film's
-            # share phi the EHL traction curve of the sliding speed (contacts.ball_race_contact); the Coulomb
+            # share phi the EHL traction curve of the sliding speed (contact_law.ball_race_contact); the Coulomb
             # override (traction > 0) keeps a spring alone, capped at the ramp to its full-film value
             if traction > 0.0:
                 trib[T_MU, race, j] = traction_coefficient(lam, traction)
