@@ -109,3 +109,52 @@ def test_the_product_has_no_import_cycle():
     graph = import_graph()
     assert "bearing_fmu.models.declarations" in graph and len(graph) > 50  # the walk saw the product
     assert cycles(graph) == []
+
+
+# The layers, top to bottom (docs/architecture.md, its figure: benchmarks/architecture_figure.py): a module belongs to
+# the layer of its longest matching prefix, and imports only modules of its own layer or of the layers below.
+LAYERS = (
+    ("command line", ("spindle", "spindle.cli", "spindle.check", "spindle.film_map", "spindle.configured")),
+    ("co-simulation master", ("spindle.cosim",)),
+    ("build", ("bearing_fmu.build", "bearing_fmu.compiled_code", "bearing_fmu.fmu_files", "spindle.all_fmus",
+               "bearing_fmu_common.runtime")),
+    ("FMU slaves", ("bearing_fmu.fmu", "spindle.thermal.fmu", "bearing_fmu_common.fmi",
+                    "bearing_fmu_common.first_start")),
+    ("fidelity registry", ("bearing_fmu.fidelities",)),
+    ("models (facades, declarations, scenes, parameter files)", (
+        "bearing_fmu", "bearing_fmu.models", "bearing_fmu.scene", "bearing_fmu.params", "spindle.thermal",
+        "bearing_fmu_common", "bearing_fmu_common.paramfile", "bearing_fmu_common.bearing_file",
+        "bearing_fmu_common.variables",
+    )),
+    ("kernels", ("bearing_fmu.kernels", "spindle.thermal.network", "bearing_fmu_common.jit",
+                 "bearing_fmu_common.layout")),
+)  # fmt: skip
+
+
+def layer_of(module):
+    """Index in LAYERS of a module's layer (its longest matching prefix), None if none matches."""
+    best = None
+    for i, (_, prefixes) in enumerate(LAYERS):
+        for prefix in prefixes:
+            if (module == prefix or module.startswith(prefix + ".")) and (best is None or len(prefix) > best[1]):
+                best = (i, len(prefix))
+    return best[0] if best else None
+
+
+def upward_imports(graph):
+    """The imports (module, imported) that point to a higher layer."""
+    return sorted((m, e) for m, edges in graph.items() for e in edges if layer_of(e) < layer_of(m))
+
+
+def test_every_module_has_a_layer():
+    assert [m for m in import_graph() if layer_of(m) is None] == []
+
+
+def test_imports_point_down_the_layers():
+    assert upward_imports(import_graph()) == []
+
+
+def test_an_upward_import_is_found():
+    assert upward_imports({"bearing_fmu.kernels.hertz": {"bearing_fmu.models.analytic"}}) == [
+        ("bearing_fmu.kernels.hertz", "bearing_fmu.models.analytic")
+    ]
