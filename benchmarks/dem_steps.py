@@ -1,8 +1,8 @@
 """DEM time step and tribology refresh against error and cost at three operating points, and in three transients.
 
-Steady operating points (POINTS): the 6208 of Guessasma & Machado (2018) at 3 kN, 500 rad/s; the B7214C of the
-spindle rig at 10 000 rpm under 800 N of thrust; the same bearing with cold oil (293 K) at 16 rad/s, where the
-squeeze damping of the full film, not the contact stiffness, limits the step. At each, the fixed steps are
+Steady operating points (POINTS, tests/cases/dem_points.py): the 6208 of Guessasma & Machado (2018) at 3 kN,
+500 rad/s; the B7214C of the spindle rig at 10 000 rpm under 800 N of thrust; the same bearing with cold oil (293 K)
+at 16 rad/s, where the squeeze damping of the full film, not the contact stiffness, limits the step. At each, the fixed steps are
 multiples (FACTORS) of the point's own automatic step (DemModel.automatic_time_step: safety x the stability limit of
 the stiffest contact pair, and at most DAMPING_PLAN m / c of the most damped ball), with the tribology refreshed
 every step, at the default interval (40 us) and every 100 steps; the reference is REF_FACTOR of that step with
@@ -27,22 +27,10 @@ import numpy as np
 from bearing_fmu.models.dem import REFRESH_INTERVAL, SAFETY, DemModel, DemUnstableError
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
+from tests.cases.dem_points import POINTS, warm
 
 from .render import cli, metric
 
-POINTS = {
-    "6208, 3 kN, 500 rad/s": dict(
-        bearing="6208", lubricant="guessasma_oil", T_oil=313.15, loads={"F_y": 3000.0}, omega=500.0, ramp=5e-3, settle=30e-3
-    ),
-    "B7214C, 800 N thrust, 10 000 rpm": dict(
-        bearing="B7214C", lubricant="iso_vg68_mineral", T_oil=313.15, loads={"F_z": 800.0}, omega=1047.1975511965977,
-        ramp=10e-3, settle=0.3,
-    ),
-    "B7214C, 800 N thrust, cold oil (293 K), 16 rad/s": dict(
-        bearing="B7214C", lubricant="iso_vg68_mineral", T_oil=293.15, loads={"F_z": 800.0}, omega=16.0, ramp=30e-3,
-        settle=60e-3,
-    ),
-}  # fmt: skip
 FACTORS = (0.25, 0.5, 1.0, 1.3, 1.6, 2.0, 2.5, 3.0)
 REFRESHES = ("every step", "every 40 us", "every 100 steps")
 REF_FACTOR = 0.1
@@ -60,17 +48,6 @@ TRANSIENT_SETTINGS = (
 )
 TRANSIENT_REFERENCE = {"dt": 0.1e-6, "refresh": 1}
 SAMPLE = 0.1e-3  # s between trajectory samples
-
-
-def warm(point, **settings):
-    """A DemModel of the point in steady rolling: 2 ms at rest, a ramp to the speed, held to point['settle']."""
-    model = DemModel(point["bearing"], point["lubricant"], **settings)
-    held = dict(point["loads"], T_oil=point["T_oil"])
-    model.advance(2e-3, omega=0.0, **held)
-    for k in range(1, 21):
-        model.advance(2e-3 + point["ramp"] * k / 20, omega=point["omega"] * k / 20, **held)
-    model.advance(point["settle"], omega=point["omega"], **held)
-    return model
 
 
 def monitor_cause(exc):

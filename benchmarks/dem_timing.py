@@ -24,15 +24,10 @@ import time
 from pathlib import Path
 
 import numpy as np
-from numba import njit
 
 from bearing_fmu.kernels.ball_dynamics import integrator as dyn
 from bearing_fmu.kernels.ball_dynamics import state as s
-from bearing_fmu.kernels.ball_dynamics.cage import ball_cage_contact, cage_guide_contact
-from bearing_fmu.kernels.ball_dynamics.contact_law import ball_race_contact, groove_approach
-from bearing_fmu.kernels.ball_dynamics.tribology import TC_SIZE, race_circle, refresh_tribology, tribology_constants
-from bearing_fmu.kernels.lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
-from bearing_fmu.models.dem import REFRESH_INTERVAL, DemModel
+from bearing_fmu.models.dem import REFRESH_INTERVAL, T_OIL_DEFAULT, DemModel
 
 from .dem_timing_worker import F_R, OMEGA, steady_model
 from .render import cli, metric
@@ -133,115 +128,42 @@ def side_by_side(base_tree, configurations, steps=STEPS, repeats=REPEATS):
     return dt, results
 
 
-@njit
-def _race_contacts(n, balls, ring, spring, trib, par, work, acc, dt):
-    """n passes of the 18 ball-race contact laws (contacts.groove_approach, contacts.ball_race_contact) on one state,
-    results summed (the state is not written: every pass sees the same contacts)."""
-    total = 0.0
-    steps = (0.5 * par[s.P_D], par[s.P_ALPHA_E], par[s.P_KT_RATIO], 4.0 * dt / par[s.P_I_BALL],
-             2.0 * par[s.P_V_REG] / par[s.P_D], dt)  # fmt: skip
-    kappa = par[s.P_FILM_RATE] * dt / par[s.P_M_BALL]
-    for _ in range(n):
-        for race in range(2):
-            cx, cy, cz, ax, ay, az, rho = race_circle(race, ring, par)
-            frame = (OMEGA, acc[s.A_VR], acc[s.A_VR + 1], acc[s.A_VR + 2], cx, cy, cz, par[s.P_KH_I + race], ax, ay,
-                     az, acc[s.A_WR], acc[s.A_WR + 1])  # fmt: skip
-            row = 3 * race
-            geo = s.W_GEOM + 4 * race
-            for j in range(balls.shape[1]):
-                delta, nx, ny, nz = groove_approach(
-                    balls[s.B_X, j], balls[s.B_X + 1, j], balls[s.B_X + 2, j], cx, cy, cz, ax, ay, az, rho,
-                    par[s.P_RG_I + race],
-                )  # fmt: skip
-                work[geo, j] = delta
-                work[geo + 1, j] = nx
-                work[geo + 2, j] = ny
-                work[geo + 3, j] = nz
-            for j in range(balls.shape[1]):
-                result = ball_race_contact(
-                    race, (work[geo, j], work[geo + 1, j], work[geo + 2, j], work[geo + 3, j]), balls[s.B_X, j],
-                    balls[s.B_X + 1, j], balls[s.B_X + 2, j], work[s.W_VB, j], work[s.W_VB + 1, j],
-                    work[s.W_VB + 2, j], work[s.W_WB, j], work[s.W_WB + 1, j], work[s.W_WB + 2, j], work[s.W_ORBIT, j],
-                    spring[row, j], spring[row + 1, j], spring[row + 2, j], trib[s.T_MU, race, j],
-                    int(trib[s.T_REGIME, race, j]), trib[s.T_C_N, race, j], trib[s.T_F_ROLL, race, j],
-                    trib[s.T_M_SPIN, race, j], (trib[s.T_PHI, race, j], trib[s.T_SLIP, race, j], par[s.P_MU_LIM], kappa),
-                    frame, steps,
-                )  # fmt: skip
-                total += result[1] + result[4] + result[12]
-    return total
-
-
-@njit
-def _cage_contacts(n, balls, cage, par, work):
-    """n passes of the 18 ball - cage-ball and 9 guide contact laws (cage.*) on one state, results summed."""
-    total = 0.0
-    Z = balls.shape[1]
-    R_sum = 0.5 * par[s.P_D] + par[s.P_R_CAGE]
-    for _ in range(n):
-        for k in range(Z):
-            for side in range(2):
-                j = (k + side) % Z
-                f = ball_cage_contact(
-                    cage[s.C_X, k] - balls[s.B_X, j], cage[s.C_X + 1, k] - balls[s.B_X + 1, j],
-                    cage[s.C_X + 2, k] - balls[s.B_X + 2, j], work[s.W_VB, j] - work[s.W_VC, k],
-                    work[s.W_VB + 1, j] - work[s.W_VC + 1, k], work[s.W_VB + 2, j] - work[s.W_VC + 2, k],
-                    R_sum, par[s.P_K_CB], par[s.P_C_CB],
-                )  # fmt: skip
-                total += f[0]
-            f = cage_guide_contact(
-                cage[s.C_X, k], cage[s.C_X + 1, k], cage[s.C_X + 2, k], work[s.W_VC, k], work[s.W_VC + 1, k],
-                work[s.W_VC + 2, k], par[s.P_R_GUIDE], par[s.P_Z_GUIDE], par[s.P_GUIDE_GAP], par[s.P_K_GUIDE],
-                par[s.P_C_GUIDE],
-            )  # fmt: skip
-            total += f[0]
-    return total
-
-
-# verlet_step is inlined into its caller and compiled with the caller's error model: advance's (numpy), as here
-@njit(error_model="numpy")
-def _steps(n, balls, cage, ring, spring, trib, counters, par, work, acc, dt):
-    """n Verlet steps from the state (the tribology frozen: the contact law only)."""
-    for _ in range(n):
-        dyn.verlet_step(balls, cage, ring, spring, trib, counters, par, OMEGA, 0.0, F_R, 0.0, 0.0, 0.0, dt, work, acc)
-
-
-@njit
-def _refreshes(n, balls, ring, par, trib, lub):
-    eta, xi, rho0 = lubricant_state(313.15, lub)
-    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF])
-    tc = np.empty((TC_SIZE, 2))
-    tribology_constants(par, eta, xi, tc)
-    geo = np.empty((4, balls.shape[1]))
-    for _ in range(n):
-        refresh_tribology(OMEGA, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, geo)
-
-
-def profile(model, n=20000):
-    """Time (us) of one pass of each part of a step on copies of a steady state (median of 9 runs of n)."""
+def per_step_of_advance(model, dt, refresh, n=20000, runs=9):
+    """Median CPU time (us) per step of the product's kernel advance (kernels.ball_dynamics.integrator.advance, the
+    call DemModel.advance makes) over n steps of dt (s), the tribology refreshed every `refresh` steps, on copies of
+    the model's state (each run goes on from where the last one stopped; a first call of one step compiles)."""
     m = {k: v.copy() for k, v in model.get_state().items() if isinstance(v, np.ndarray)}
-    work, acc, par = model._work.copy(), model._acc.copy(), model.par
-    dt = model.dt
-    state = (m["balls"], m["cage"], m["ring"], m["spring"], m["trib"], m["counters"], par, work, acc, dt)
-    parts = {
-        "one Verlet step (predictor, 18 ball-race and 27 cage contacts, corrector; the function advance calls)": (
-            _steps, state),
-        "of which the 18 ball-race contact laws (normal, damping, tangential spring, resistances)": (
-            _race_contacts, (m["balls"], m["ring"], m["spring"], m["trib"], par, work, acc, dt)),
-        "of which the 9 cage balls (18 ball - cage-ball pairs, 9 guide contacts)": (
-            _cage_contacts, (m["balls"], m["cage"], par, work)),
-        "tribology refresh of 18 contacts (Hertz, film, Lambda, mu, C_n, Houpert, capacitance)": (
-            _refreshes, (m["balls"], m["ring"], par, m["trib"], model.lubricant.array)),
-    }  # fmt: skip
-    rows = []
-    for name, (fn, args) in parts.items():
-        fn(1, *args)
-        samples = []
-        for _ in range(9):
-            c0 = time.thread_time()
-            fn(n, *args)
-            samples.append((time.thread_time() - c0) / n * 1e6)
-        rows.append((name, statistics.median(samples)))
-    return rows
+    par = model.par.copy()
+    par[s.P_REFRESH] = refresh
+    bodies = (m["balls"], m["cage"], m["ring"], m["spring"], m["trib"], m["counters"], par, model.lubricant.array)
+    work, acc, status = model._work.copy(), model._acc.copy(), np.zeros(s.ST_SIZE, dtype=np.int64)
+
+    def run(steps):
+        dyn.advance(*bodies, steps, dt, OMEGA, OMEGA, 0.0, F_R, 0.0, 0.0, 0.0, T_OIL_DEFAULT, math.inf, work, acc,
+                    status)  # fmt: skip
+        if status[s.ST_CODE] != s.STATUS_OK:  # a stopped run would time fewer steps than it divides by
+            raise RuntimeError(f"the monitor stopped the timed run (status {status[s.ST_CODE]})")
+
+    run(1)
+    samples = []
+    for _ in range(runs):
+        c0 = time.thread_time()
+        run(n)
+        samples.append((time.thread_time() - c0) / n * 1e6)
+    return statistics.median(samples)
+
+
+def profile(model, dt):
+    """Time (us) per step of the product's step with the tribology frozen and refreshed every step at the time
+    step dt (s), and what a refresh adds (their difference)."""
+    frozen, every = per_step_of_advance(model, dt, NEVER), per_step_of_advance(model, dt, 1)
+    return [
+        ("one step, tribology frozen (predictor, 18 ball-race and 27 cage contacts, corrector, the call's sums and "
+         "checks)", frozen),
+        ("one step with a tribology refresh", every),
+        ("the refresh of 18 contacts (Hertz, film, Lambda, mu, C_n, Houpert, capacitance, the monitor's energy and "
+         "damping checks): the difference", every - frozen),
+    ]  # fmt: skip
 
 
 def measure(base=BASE_REV, base_tree=None):
@@ -274,7 +196,7 @@ def measure(base=BASE_REV, base_tree=None):
         name="dem_timing",
         title="DEM timing (6208, 9 balls + 9 cage balls)",
         about=__doc__.split("Run:")[0],
-        blocks=page(base_tree or base, default_dt, rows, real, profile(model), default_refresh),
+        blocks=page(base_tree or base, default_dt, rows, real, profile(model, default_dt), default_refresh),
         metrics=[
             metric("step, tribology every step (CPU median)", 1e-6 * every[0], "s", "timing", target=2e-6),
             metric(
@@ -314,14 +236,13 @@ def page(base, dt, rows, real, parts, refresh):
             "{cpu_4us:.3f} ms, wall {wall_4us:.3f} ms.",
             values=real,
         ),
-        dict(text="## Where the time goes (CPU time of one pass each, jitted loops over copies of the steady state)"),
+        dict(text="## Where the time goes (CPU time per step of the product's kernel, on copies of the steady state)"),
         dict(table=dict(columns=["part", "CPU (us)"], formats=[None, "{:.3f}"], rows=parts)),
         dict(
-            text="The Verlet step is the function advance() calls once per step (run here with the tribology frozen); "
-            "the two contact rows are the contact laws alone, called on one state from a jitted loop (what the step "
-            "adds to them: reading and writing the state arrays, the predictor and corrector of the bodies, the "
-            "orbital-angle bookkeeping and the monitor's checks). A refresh at the default interval costs "
-            "1/{refresh} of its row per step.",
+            text="Each row times the kernel advance() of kernels.ball_dynamics.integrator (the call DemModel.advance "
+            "makes, without its input checks and outputs) over 20 000 steps at the default time step, median of 9 "
+            "runs: with the tribology frozen (no refresh during the run) and with a refresh before every step. Their "
+            "difference is what a refresh costs; at the default interval a step pays 1/{refresh} of it.",
             values=dict(refresh=refresh),
         ),
     ]

@@ -10,7 +10,8 @@ Run: python -m benchmarks.ehl_fields -> docs/reports/ehl_fields.md and .png
 
 import numpy as np
 
-from .ehl_solver import cases, solve
+from tests.cases.ehl_annexe_d import cases, solve
+
 from .render import cli
 
 CASES = (6, 28, 12)

@@ -18,46 +18,18 @@ import os
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 import argparse  # noqa: E402
-import csv  # noqa: E402
 import math  # noqa: E402
 import statistics  # noqa: E402
-import time  # noqa: E402
-from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
 
-from bearing_fmu.kernels import ehl_solver as es  # noqa: E402
 from bearing_fmu.models import ehl_numerical as en  # noqa: E402
+from tests.cases.ehl_annexe_d import FLUID, LEVEL, cases, richardson, solve  # noqa: E402
 
 from .render import cli, metric  # noqa: E402
 
-ROOT = Path(__file__).resolve().parent.parent
-DATA = ROOT / "tests" / "validation" / "data" / "thesis_annexe_d_ehl.csv"
-E_RED = 230.77e9  # Pa, the thesis' reduced modulus (csv header)
-ETA0 = 0.00795  # Pa.s, lubricant 2 at 313 K
-# lubricant 2 of the thesis: modified WLF (mu_G, T_g0, A1, A2, b1, b2, C1, C2) and Murnaghan (T_R, a_v, beta_K,
-# K_MM, K'), as bearing_fmu/params/lubricants/thesis_turbine_oil.toml [lubricant_2_wlf] and [density]
-WLF_2 = (1e12, 189.95, 188.86, 0.7190e-9, 8.2e-9, -0.5278, 16.09, 17.38)
-MURN = (298.0, 7.734e-4, 6.090e-3, 9.234e9, 10.545)
-FLUID = en.fluid_array(es.VISC_WLF, es.DENS_MURNAGHAN, ETA0, 0.0, 313.0, WLF_2, MURN)
-LEVEL = 3  # the default grid (docs/ehl_solver.md, Grid convergence)
 TOLERANCE = {True: 5.0, False: 10.0}  # % of the validation (tests/validation/test_ehl_annexe_d.py), k >= 1 / k < 1
 GROUPS = (("k >= 1", True, "s"), ("k < 1", False, "o"))  # (label, wide, marker)
-
-
-def cases():
-    """The csv rows as dicts of floats, numbered 1..55 in file order."""
-    with open(DATA) as f:
-        rows = [r for r in csv.DictReader(line for line in f if not line.startswith("#"))]
-    return [{key: float(v) for key, v in r.items()} | {"n": i + 1} for i, r in enumerate(rows)]
-
-
-def solve(case, level=LEVEL):
-    t = time.perf_counter()
-    sol = en.solve_contact(
-        case["Rx_mm"] * 1e-3, case["Ry_mm"] * 1e-3, case["w_N"], case["ue_m_s"], E_RED, ETA0, FLUID, finest=level
-    )
-    return sol, time.perf_counter() - t
 
 
 def _diff(got_m, want_nm):
@@ -183,16 +155,6 @@ def metrics(runs):
 def within(row):
     """A case's h_c and h_min both within the validation's tolerance of the thesis'."""
     return max(abs(row[7]), abs(row[10])) <= TOLERANCE[row[3] >= 1.0]
-
-
-def richardson(h):
-    """(observed order, estimate) from films h on three grids each twice as fine: order log2 of the ratio of
-    successive differences; the estimate extrapolates the finest with that order (2 if it is not between 1
-    and 3, i.e. the grids are not yet in the asymptotic range or the differences change sign)."""
-    d1, d2 = h[-2] - h[-3], h[-1] - h[-2]
-    order = math.log2(d1 / d2) if d1 * d2 > 0.0 else float("nan")
-    p = order if 1.0 <= order <= 3.0 else 2.0
-    return order, h[-1] + d2 / (2.0**p - 1.0)
 
 
 def study_row(c, levels):

@@ -1,6 +1,6 @@
 """Error against independent references, per fidelity: the report's first table.
 
-Each reference case of benchmarks/reference_cases (the literature and standard cases the validation tests assert
+Each reference case of tests/cases (the literature and standard cases the validation tests assert
 on) is compared here once more, by the same function, and its cost per evaluation is measured: the median wall
 time of one evaluation of the fidelity at the case's point, repeated (at least 5 repeats and 0.5 s for a fast
 evaluation, 3 for one of a second or more), with the machine's load average at the time. Each case's worst
@@ -13,8 +13,9 @@ import os
 import statistics
 import time
 
+from tests.cases import CASES, worst
+
 from .common import REPORTS
-from .reference_cases import CASES, worst
 from .render import cli, metric, page
 
 TABLE = REPORTS / "reference_table.json"  # the result as render.write writes it
@@ -73,7 +74,7 @@ def result(rows):
         "Deviation: (product - reference) / |reference| at the case's worst point, the one closest to (or beyond) "
         "its tolerance; the reference's uncertainty and the tolerance are those of that point, relative. Cost: one "
         "evaluation of the fidelity at the case's point (the DEM: the whole run the case compares, from a fresh "
-        "model). Cases and sources: `benchmarks/reference_cases/`; the validation tests assert on the same functions."
+        "model). Cases and sources: `tests/cases/`; the validation tests assert on the same functions."
     )
     title, about = "Error against independent references, per fidelity", __doc__.split("\n", 2)[2].split("Run:")[0]
     blocks = [dict(table=table), dict(text=note)]

@@ -111,6 +111,50 @@ def test_the_product_has_no_import_cycle():
     assert cycles(graph) == []
 
 
+TESTS = ROOT / "tests"
+# the tests of the report's own code: they test benchmarks/, so they import it
+REPORT_TESTS = {"tests/unit/test_report.py", "tests/unit/test_reference_table.py"}
+
+
+def imports_benchmarks(source):
+    """The import statements of a module's source (at any depth) that import the benchmarks package or a module of it,
+    by their line numbers."""
+    found = []
+    for node in ast.walk(ast.parse(source)):
+        if isinstance(node, ast.Import):
+            names = [a.name for a in node.names]
+        elif isinstance(node, ast.ImportFrom) and not node.level:
+            names = [node.module or ""]
+        else:
+            continue
+        if any(name == "benchmarks" or name.startswith("benchmarks.") for name in names):
+            found.append(node.lineno)
+    return found
+
+
+def test_the_finder_sees_every_form_of_importing_the_benchmarks():
+    source = (
+        "import os\nfrom tests.cases import cwru\nimport benchmarks\nfrom benchmarks.ehl_solver import FLUID\n"
+        "def f():\n    from benchmarks import report\n    import benchmarks.dem_steps as d\nfrom .benchmarks import x\n"
+    )
+    assert imports_benchmarks(source) == [3, 4, 6, 7]
+    assert imports_benchmarks("import benchmarking\nfrom benchmarks_old import x\n") == []
+
+
+def test_only_the_report_tests_import_the_benchmarks():
+    """The tests own their validation cases (tests/cases/, docs/architecture.md section 5): a test module imports the
+    product and tests/, and only the tests of the report's own code import benchmarks/."""
+    offenders = {}
+    for path in sorted(TESTS.rglob("*.py")):
+        name = path.relative_to(ROOT).as_posix()
+        if name not in REPORT_TESTS and (lines := imports_benchmarks(path.read_text(encoding="utf-8"))):
+            offenders[name] = lines
+    assert len(list(TESTS.rglob("test_*.py"))) > 100  # the walk saw the test suite
+    assert offenders == {}
+    for name in REPORT_TESTS:  # the exceptions are still what they are for
+        assert imports_benchmarks((ROOT / name).read_text(encoding="utf-8")), name
+
+
 # The layers, top to bottom (docs/architecture.md, its figure: benchmarks/architecture_figure.py): a module belongs to
 # the layer of its longest matching prefix, and imports only modules of its own layer or of the layers below.
 LAYERS = (

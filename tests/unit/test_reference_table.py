@@ -1,4 +1,4 @@
-"""The reference table (benchmarks/reference_table.py) and its cases (benchmarks/reference_cases): how a
+"""The reference table (benchmarks/reference_table.py) and its cases (tests/cases): how a
 comparison is judged and summarised, and that every case the report renders is one a validation test asserts on."""
 
 import ast
@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from benchmarks import reference_table
-from benchmarks.reference_cases import CASES, Comparison, ReferenceCase, worst
-from benchmarks.reference_cases.comparison import half_unit, printed_comparison
+from tests.cases import CASES, Comparison, ReferenceCase, worst
+from tests.cases.comparison import half_unit, printed_comparison
 
 VALIDATION = Path(__file__).resolve().parents[1] / "validation"
 
@@ -50,11 +50,11 @@ def test_render_gives_one_row_per_case_with_its_measured_numbers(tmp_path):
 
 
 def imported_case_modules():
-    """Names of the benchmarks.reference_cases modules the validation tests import (either import form)."""
+    """Names of the tests.cases modules the validation tests import (either import form)."""
     names = set()
     for path in VALIDATION.glob("test_*.py"):
         for node in ast.walk(ast.parse(path.read_text())):
-            if isinstance(node, ast.ImportFrom) and (node.module or "").startswith("benchmarks.reference_cases"):
+            if isinstance(node, ast.ImportFrom) and (node.module or "").startswith("tests.cases"):
                 parts = node.module.split(".")
                 names.update(parts[2:3] or [alias.name for alias in node.names])
     return names

@@ -2,7 +2,7 @@
 
 import pytest
 
-from benchmarks.reference_cases.cwru import bearing_file, rows
+from tests.cases.cwru import bearing_file, rows
 
 
 @pytest.fixture(scope="module")

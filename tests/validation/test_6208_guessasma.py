@@ -15,7 +15,7 @@ import pytest
 from bearing_fmu.kernels.geometry import defect_frequencies, free_contact_angle, free_endplay, rolling_kinematics
 from bearing_fmu.kernels.loaddist import gauss_legendre, radial_integral
 from bearing_fmu.models.analytic import AnalyticModel
-from benchmarks.reference_cases import guessasma_6208, outside
+from tests.cases import guessasma_6208, outside
 
 D, DM = 12.6e-3, 60.6e-3
 T_OIL = 313.15  # K (the Guessasma oil has constant properties: any temperature gives the same result)
@@ -59,7 +59,7 @@ def test_radial_integral_zero_clearance():
 
 def test_q_max_at_3kN(model):
     """Q_max = F_r / (Z J_r) = 1457 N at F_r = 3 kN, P_d = 0, printed to 4 digits -> +-0.5 N
-    (benchmarks/reference_cases/guessasma_6208.py: source and tolerance)."""
+    (tests/cases/guessasma_6208.py: source and tolerance)."""
     comparisons = guessasma_6208.q_max_comparisons()
     assert not outside(comparisons), outside(comparisons)
     assert model.evaluate(0.0, 3000.0, T_OIL)["epsilon"] == pytest.approx(0.5, abs=1e-12)
@@ -70,7 +70,7 @@ def test_load_parameter_vs_clearance(F_r, Pd, printed):
     """eps = (1 - P_d/(2 delta_r))/2 at rest against Guessasma App. A (3 kN) and Farah App. A (5 kN) within 1 %:
     the papers print 2-3 digits (0.40 is +-1.25 %); the analytic model uses the continuous-ball Sjovall
     integral, the papers a 9-ball DEM, so sub-percent differences are expected
-    (benchmarks/reference_cases/guessasma_6208.py)."""
+    (tests/cases/guessasma_6208.py)."""
     (comparison,) = guessasma_6208.eps_comparisons(guessasma_6208.analytic_eps, [(F_r, Pd, printed)])
     assert comparison.within, comparison
 

@@ -28,7 +28,7 @@ from bearing_fmu.kernels.geometry import (
 from bearing_fmu.models.dem import DemModel, DemUnstableError
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
-from benchmarks.reference_cases import dem_6208, outside
+from tests.cases import dem_6208, outside
 
 D, DM, Z = 12.6e-3, 60.6e-3, 9
 F_R = 3000.0

@@ -15,13 +15,13 @@ the default within 7.1e-5 of its reference at 3 kN; ten times that, far below th
 
 import pytest
 
-from benchmarks.dem_steps import POINTS, warm
+from tests.cases.dem_points import POINTS, warm
 
 OMEGA = 500.0
 
 
 def _steady(F_y):
-    """The 6208 in steady rolling at OMEGA under F_y: the step study's start-up (benchmarks.dem_steps.warm)."""
+    """The 6208 in steady rolling at OMEGA under F_y: the step study's start-up (tests.cases.dem_points.warm)."""
     return warm(dict(POINTS["6208, 3 kN, 500 rad/s"], loads={"F_y": F_y}))
 
 

@@ -9,15 +9,15 @@ narrow side constriction (grid study below and docs/reports/ehl_grid_study.md). 
 their own mesh's error (spacing 0.02) of the same order; 5 % covers both; slender contacts (k < 1) have their
 minimum film in a side constriction a few nodes wide on either mesh, hence 10 %. Cases outside are explained
 by grid studies in docs/ehl_solver.md, Validation.
-The default suite runs a subset of the light-load series (benchmarks/reference_cases/ehl_annexe_d.py, which the
+The default suite runs a subset of the light-load series (tests/cases/ehl_annexe_d.py, which the
 report's reference table renders as well); the whole table is marked slow (tests/_markers.py).
 """
 
 import pytest
 
 from bearing_fmu.models import ehl_numerical as en
-from benchmarks.ehl_solver import E_RED, ETA0, FLUID, cases, richardson
-from benchmarks.reference_cases import ehl_annexe_d, outside
+from tests.cases import ehl_annexe_d, outside
+from tests.cases.ehl_annexe_d import E_RED, ETA0, FLUID, cases, richardson
 
 CASES = {c["n"]: c for c in cases()}
 

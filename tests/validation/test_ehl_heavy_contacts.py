@@ -22,7 +22,7 @@ from bearing_fmu.kernels.lubricant import lubricant_state
 from bearing_fmu.models import ehl_numerical as en
 from bearing_fmu.models import film_table as ft
 from bearing_fmu.params import load_bearing, load_lubricant
-from benchmarks.ehl_solver import richardson
+from tests.cases.ehl_annexe_d import richardson
 
 TOLERANCE = 0.02  # the discretisation error the default grid was chosen for (docs/ehl_solver.md)
 

@@ -49,7 +49,7 @@ from scipy.special import ellipe, ellipk
 
 from bearing_fmu.kernels.hertz import hertz_coefficients_exact, hertz_contact
 from bearing_fmu.models import ehl_numerical as en
-from benchmarks.ehl_solver import E_RED, ETA0, FLUID
+from tests.cases.ehl_annexe_d import E_RED, ETA0, FLUID
 
 SPEEDS = (2.0, 0.2, 0.02, 0.005)  # m/s, entrainment speed, decreasing
 LOAD_N = 120.0

@@ -56,7 +56,7 @@ def test_light_fast_contact_converges_on_levels_2_to_4_and_level_3_is_within_1_p
     relaxes by lines (with point relaxation level 3 met the criterion at h_c = 2731.0 nm, still drifting: 2752.7
     nm after 300 cycles at a ten times tighter criterion, not converged; lines there 2751.8). 1 %: half the 2 %
     the default grid is chosen for (docs/ehl_solver.md, Grid convergence), eight times the measured error."""
-    from benchmarks.ehl_solver import richardson
+    from tests.cases.ehl_annexe_d import richardson
 
     contact = _contact()
     sols = [en.solve_contact(*contact, finest=level) for level in (2, 3, 4)]

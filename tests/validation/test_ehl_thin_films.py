@@ -1,6 +1,6 @@
 """The numerical EHL solver (models.ehl_numerical.solve_contact) on thin films at high Hertz pressure, where a
 reference solver (EHL-FBNS under Octave) failed: its film stayed pinned at its 1 nm floor. Lubricant 2 of the
-thesis at 313 K (benchmarks.ehl_solver.FLUID), entrainment along x:
+thesis at 313 K (tests.cases.ehl_annexe_d.FLUID), entrainment along x:
 - circular: Rx = Ry = 12.7 mm, 2 kN, 2 m/s (p_H = 3.17 GPa, M = 8988, L = 8.5);
 - slender: Rx = 80 mm, Ry = 10 mm, 500 N, 1 m/s (k = 0.256, p_H = 1.31 GPa, M = 379, L = 4.5).
 
@@ -23,7 +23,7 @@ import pytest
 
 from bearing_fmu.kernels import ehl_solver as es
 from bearing_fmu.models import ehl_numerical as en
-from benchmarks.ehl_solver import E_RED, ETA0, FLUID
+from tests.cases.ehl_annexe_d import E_RED, ETA0, FLUID
 
 # name: (Rx m, Ry m, load N, u_e m/s, Richardson estimate of h_c nm, tolerance)
 CASES = {

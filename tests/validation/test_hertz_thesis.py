@@ -1,15 +1,15 @@
 """Exact Hertz solution against the contact sizes and pressures published in Wheeler (2016).
 
 The case, its source rows, exclusions and tolerance (0.5 % on top of the rounding of the printed value):
-benchmarks/reference_cases/hertz_thesis.py, which the report's reference table renders as well.
+tests/cases/hertz_thesis.py, which the report's reference table renders as well.
 The Hamrock-Brewe approximation is not validated here: its error against the exact solution is
 measured and reported by benchmarks/hertz_approximation.py (docs/reports/hertz_approximation.md).
 """
 
 import pytest
 
-from benchmarks.reference_cases import hertz_thesis, outside
-from benchmarks.reference_cases.hertz_thesis import CASES, TORUS
+from tests.cases import hertz_thesis, outside
+from tests.cases.hertz_thesis import CASES, TORUS
 
 
 def test_enough_cases():

@@ -14,7 +14,7 @@ import pytest
 from bearing_fmu.kernels import jones_harris
 from bearing_fmu.models.limits import InputError
 from bearing_fmu.models.quasi_static import QuasiStaticModel
-from benchmarks.reference_cases import guessasma_6208, outside
+from tests.cases import guessasma_6208, outside
 
 T_OIL = 313.15
 RPM = 2.0 * math.pi / 60.0
@@ -30,7 +30,7 @@ def test_load_parameter_vs_clearance(F_r, Pd, printed):
     (1e-3 rad/s: speed effects ~1e-12 of the loads) against Guessasma App. A (3 kN) and Farah App. A (5 kN).
     Tolerance 1 %: the papers print 2-3 digits from a 9-ball DEM at 1 rad/s; this is the same 9-ball discrete
     bearing, so the remaining difference is their rounding and their dynamic solution
-    (benchmarks/reference_cases/guessasma_6208.py)."""
+    (tests/cases/guessasma_6208.py)."""
     (comparison,) = guessasma_6208.eps_comparisons(guessasma_6208.quasi_static_eps, [(F_r, Pd, printed)])
     assert comparison.within, comparison
 

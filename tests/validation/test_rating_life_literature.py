@@ -13,7 +13,7 @@ from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.params import load_bearing
 from bearing_fmu.scene import Scene
-from benchmarks.reference_cases import lubricant_and_rating
+from tests.cases import lubricant_and_rating
 
 DATA = Path(__file__).parent / "data" / "rating_life_cases.csv"
 

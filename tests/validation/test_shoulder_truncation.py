@@ -5,7 +5,7 @@ docs/decisions.md, unverified sources), so the reference is a hand computation, 
 on the 218 (tests/validation/data/angular_218_textbook.toml; its land diameters are estimates, 60 deg from the
 groove bottom on the thrust side):
 - the contact angle beta and ball load Q of the sources' thrust-load closed form at rest (the same closed form as
-  test_worked_examples.py, solved by brentq in benchmarks/reference_cases/thrust_218.py);
+  test_worked_examples.py, solved by brentq in tests/cases/thrust_218.py);
 - the semi-major axis a of the exact Hertz contact (the plain-Python twin tests/reference/ref_hertz.py, elliptic
   integrals of scipy) at the free-contact-angle radii, as the model's Hertz constants;
 - the shoulder angle from the groove-curvature centre: cos phi_i = (R_i - d_si/2)/(f D) for the inner ring,
@@ -15,7 +15,7 @@ groove bottom on the thrust side):
   the edge lies f D sin(phi - beta) from the contact centre along the tangent plane).
 At F_a = 150 kN: beta = 45.34 deg, Q = 13.18 kN, a = 3.88 mm (inner), phi_i = 60.68 deg: t_i = 0.251.
 Tolerance: the model and the closed form agree to 1e-13 rad and 1e-12 of the load
-(benchmarks/reference_cases/thrust_218.py); a and the angles are computed from the same exact Hertz theory; 1e-9 on
+(tests/cases/thrust_218.py); a and the angles are computed from the same exact Hertz theory; 1e-9 on
 t leaves only rounding.
 """
 
@@ -29,7 +29,7 @@ from bearing_fmu.build import SCENES_DIR
 from bearing_fmu.models.dem import DemModel
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
-from benchmarks.reference_cases.thrust_218 import BETA_F, D_E, F_CONF, NU, D, E, model, textbook_thrust
+from tests.cases.thrust_218 import BETA_F, D_E, F_CONF, NU, D, E, model, textbook_thrust
 from tests.reference import ref_hertz
 
 BEARING = Path(__file__).parent / "data" / "angular_218_textbook.toml"

@@ -14,7 +14,7 @@ import pytest
 
 from bearing_fmu.kernels.ehl import dimensionless_groups
 from bearing_fmu.kernels.hertz import reduced_modulus
-from benchmarks.reference_cases import lubricant_and_rating
+from tests.cases import lubricant_and_rating
 
 ETA0 = 0.00795  # Pa.s, thesis Table 2.2-1
 G_PRINTED = 4671.0  # thesis Annexe D header
@@ -47,6 +47,6 @@ def test_lubricant_2_at_313K(index):
     """Modified WLF law and Murnaghan density with the thesis' lubricant-2 constants (Tables 2.1-3) against the
     values the thesis quotes at 313 K (Table 2.2-1): mu0 0.00795 Pa.s within 0.5 % (measured 0.3 % apart),
     rho0 863 kg/m^3 within 0.2 %, alpha* 20.2 GPa^-1 within 1.5 % (measured 20.4: a known discrepancy, stated,
-    not hidden). Tolerances and their grounds: benchmarks/reference_cases/lubricant_and_rating.py."""
+    not hidden). Tolerances and their grounds: tests/cases/lubricant_and_rating.py."""
     comparison = lubricant_and_rating.lubricant_comparisons()[index]
     assert comparison.within, comparison

@@ -26,17 +26,17 @@ import math
 import pytest
 
 from bearing_fmu.models.quasi_static import QuasiStaticModel
-from benchmarks import fidelity_ladder
+from tests.cases import race_control
 
-B218 = fidelity_ladder.B218
+B218 = race_control.B218
 THRUST = 8900.0  # N
-SCENE = fidelity_ladder.RACE_SCENE
-COMPARED = fidelity_ladder.RACE_COMPARED
+SCENE = race_control.RACE_SCENE
+COMPARED = race_control.RACE_COMPARED
 
 
 def dem_steady(bearing, lubricant, rpm, F_z):
     """The DEM's outputs averaged over 20 samples at 0.281-0.300 s (10 ms speed ramp from rest)."""
-    return fidelity_ladder.dem_steady(bearing, lubricant, rpm, F_z)[0]
+    return race_control.dem_steady(bearing, lubricant, rpm, F_z)[0]
 
 
 def quasi_static(bearing, lubricant, rpm, F_z, race_control):
@@ -91,7 +91,7 @@ def test_two_steady_states_of_the_218_at_15000_rpm():
     traction solution's cold start is that second state, within the tolerances of the race control (measured
     0.01-0.42 %). The traction equations have further solutions there (docs/quasistatic.md, section 2)."""
     from_rest = dem_steady(B218, "guessasma_oil", 15000.0, THRUST)
-    via = fidelity_ladder.dem_steady(B218, "guessasma_oil", 15000.0, THRUST, via=12000.0)[0]
+    via = race_control.dem_steady(B218, "guessasma_oil", 15000.0, THRUST, via=12000.0)[0]
     outer = quasi_static(B218, "guessasma_oil", 15000.0, THRUST, "outer")
     traction = quasi_static(B218, "guessasma_oil", 15000.0, THRUST, "traction")
     print(f"DEM from rest {from_rest['omega_cage']:.2f}, via 12 000 rpm {via['omega_cage']:.2f} rad/s")

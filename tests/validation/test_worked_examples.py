@@ -1,14 +1,14 @@
 """Quasi-static fidelity against the textbook thrust-load case of the 218 angular-contact ball bearing (Hamrock &
 Anderson, NASA RP-1105, 1983, thrust load; Hamrock & Dowson, NASA TM-81691, 1981, ch. 3): the sources' closed form,
 solved independently of the model, against the model's five-DOF solution. The case, what is and is not compared
-and the tolerances (1e-13 rad on the angles, 1e-12 relative on the rest): benchmarks/reference_cases/thrust_218.py,
+and the tolerances (1e-13 rad on the angles, 1e-12 relative on the rest): tests/cases/thrust_218.py,
 which the report's reference table renders as well.
 """
 
 import pytest
 
-from benchmarks.reference_cases import outside, thrust_218
-from benchmarks.reference_cases.thrust_218 import THRUST_LOADS, model
+from tests.cases import outside, thrust_218
+from tests.cases.thrust_218 import THRUST_LOADS, model
 
 
 @pytest.fixture(scope="module", params=["exact", "approximate"])

@@ -3,8 +3,9 @@ tables), one function per case returning what it measured. The validation tests 
 these functions and `make report` renders them as its first table (benchmarks/reference_table.py): the
 report shows the very numbers the tests check and cannot drift from them.
 
-The cases live in benchmarks/, beside the report that renders them, not in the installed package: the report
-runs from a checkout, and several cases read the transcribed sources in tests/validation/data/.
+The cases belong to the tests, which own the validation; the report imports them from here. They are not in the
+installed package: the report runs from a checkout, and several cases read the transcribed sources in
+tests/validation/data/ or use the reference twins of tests/reference/.
 """
 
 from .comparison import Comparison, ReferenceCase, outside, worst
