@@ -244,6 +244,23 @@ def test_bad_inputs_are_refused_with_their_range_and_the_instance_recovers(dem_f
     fmu.freeInstance()
 
 
+def test_bad_input_at_initialisation_is_a_warning_and_the_first_step_refuses_it(dem_fmu):
+    """F_x = NaN set in initialisation mode: fmi2ExitInitializationMode succeeds with one fmi2Warning naming the
+    input, its value and range (as the other bearing FMUs), the first doStep refuses it (fmi2Discard) and, with
+    the input corrected, the step goes through."""
+    probe.messages.clear()
+    probe.init_statuses.clear()
+    fmu, vr, _ = probe.open_fmu(str(dem_fmu), {"F_x": math.nan})
+    assert probe.init_statuses == [0]  # fmpy raises above fmi2Warning only
+    warnings = [m["message"] for m in probe.messages if m["status"] == 1]
+    assert any("F_x = nan N" in t and "allowed range" in t and "first doStep" in t for t in warnings), warnings
+    assert step_status(fmu, 0.0, H) == 2
+    set_inputs(fmu, vr, 100.0, 3000.0)
+    assert step_status(fmu, 0.0, H) == 0
+    fmu.terminate()
+    fmu.freeInstance()
+
+
 def test_bad_parameter_fails_initialisation_with_its_range(dem_fmu):
     probe.messages.clear()
     probe.init_statuses.clear()

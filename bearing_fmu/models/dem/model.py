@@ -386,10 +386,15 @@ class DemModel:
         order (omega, F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal; SI) as advance() takes them, and fill self.values
         (self.outputs order: the declarations of models.declarations.DEM_OUTPUTS); returns self.values.
 
-        Raises InputError for inputs out of range (nothing changed) and DemUnstableError when the monitor stops
-        the step: the state is then restored to the start of the step and self.status keeps the monitor's code."""
+        Raises InputError for inputs out of range (nothing changed; also with interval 0) and DemUnstableError when
+        the monitor stops the step: the state is then restored to the start of the step and self.status keeps the
+        monitor's code."""
         if interval != 0.0:
             self._step_to(self.time + inputs.communication_interval(interval), u)
+        else:
+            # checked without a step too, as the other fidelities' update: the FMU then names an input its
+            # first step would refuse when it leaves initialisation
+            self._limits.check(tuple(float(v) for v in u))
         self._gather()
         return self.values
 
