@@ -24,6 +24,7 @@ from bearing_fmu.kernels.ball_dynamics.contacts import groove_approach
 from bearing_fmu.kernels.ball_dynamics.monitor import critical_time_step
 from bearing_fmu.kernels.ball_dynamics.tribology import ring_axis
 from bearing_fmu.kernels.hertz import hertz_contact
+from bearing_fmu.models.declarations import DEM_DT_MAX
 from bearing_fmu.models.dem import DemModel, DemUnstableError
 from bearing_fmu.models.variables import InputError
 from tests.reference import ref_ball_dynamics_integrator as ref
@@ -461,12 +462,24 @@ def test_step_settings_set_the_time_step_and_the_refresh():
 
 
 def test_too_large_time_step_is_reported():
-    """dt = 20 us is beyond the stability limit (about 6 us at 3 kN): the monitor stops the run and names a
-    time step that works at these inputs, and the automatic step (dt = 0 in the FMU), which follows the loads and
-    the film as they change (a fixed step that works now can be stopped again later in a start-up)."""
-    model = DemModel("6208", "guessasma_oil", dt=20e-6)
+    """dt = 10 us (the largest allowed) is beyond the stability limit (about 6 us at 3 kN): the monitor stops the
+    run and names a time step that works at these inputs, and the automatic step (dt = 0 in the FMU), which follows
+    the loads and the film as they change (a fixed step that works now can be stopped again later in a start-up)."""
+    model = DemModel("6208", "guessasma_oil", dt=10e-6)
     with pytest.raises(DemUnstableError, match=r"use dt <= .* s \(.*\); or use dt = 0 \(automatic"):
         model.advance(5e-3, omega=0.0, F_y=3000.0)
+
+
+@pytest.mark.parametrize(
+    "inputs", [{"omega": 0.0, "F_x": 100.0}, {"omega": 500.0, "F_x": 100.0}, {"omega": 500.0, "F_z": 100.0}]
+)
+def test_the_largest_allowed_time_step_runs_the_default_bearing_under_a_light_load(inputs):
+    """dt = DEM_DT_MAX (the declared maximum of the FMU's dt) runs the 6208 under 100 N, radial at rest or at
+    500 rad/s or axial at 500 rad/s, for 4 calls of 0.5 ms: the declared range holds a step that works."""
+    model = DemModel("6208", "guessasma_oil", dt=DEM_DT_MAX)
+    for k in range(1, 5):
+        model.advance(k * 0.5e-3, **inputs)
+    assert math.isclose(model.dt, DEM_DT_MAX, rel_tol=1e-12) and model.status[s.ST_CODE] == s.STATUS_OK
 
 
 def test_load_release_at_rest_is_not_flagged_as_energy_growth():
