@@ -16,7 +16,7 @@ from bearing_fmu_common.fmi import DeclaredSlave, check_parameters, declared_par
 from bearing_fmu_common.variables import select
 
 from .kernels.ball_dynamics.state import ST_CODE
-from .models.analytic import AnalyticModel
+from .models.analytic import AnalyticModel, models_bearing
 from .models.declarations import ANALYTIC_PARAMETERS, DEM_PARAMETERS, QUASI_STATIC_PARAMETERS
 from .models.dem import DemModel, DemUnstableError
 from .models.file_parameters import BEARING_PREFIX, LUBRICANT_PREFIX, bearing_from_values, lubricant_from_values
@@ -153,7 +153,17 @@ class BearingAnalytic(_BearingSlave):
     parameters = ANALYTIC_PARAMETERS
 
     def _make_model(self):
-        return AnalyticModel(self._bearing(), self._lubricant(), self.scene, Pd=self._clearance())
+        bearing = self._bearing()
+        if not self.bearing_from_file and not models_bearing(bearing):
+            # AnalyticModel's refusal names the bearing; from the numeric parameters, name those that made it
+            kind, alpha0 = (getattr(self, BEARING_PREFIX + name) for name in ("kind", "alpha0"))
+            raise ParameterError(
+                f"{BEARING_PREFIX}kind = {kind} ({bearing.kind}) and {BEARING_PREFIX}alpha0 = {alpha0} rad are not "
+                f"allowed: the analytic fidelity models radially loaded deep-groove bearings, allowed "
+                f"{BEARING_PREFIX}kind = 0 (deep_groove) with {BEARING_PREFIX}alpha0 = 0 rad; use the quasi-static "
+                "fidelity"
+            )
+        return AnalyticModel(bearing, self._lubricant(), self.scene, Pd=self._clearance())
 
 
 class BearingQuasiStatic(_BearingSlave):
