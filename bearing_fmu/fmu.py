@@ -17,6 +17,7 @@ from bearing_fmu_common.variables import select
 
 from .fidelities import FIDELITIES
 from .kernels.ball_dynamics.state import ST_CODE
+from .models.analytic import models_bearing
 from .models.dem import DemUnstableError
 from .models.file_parameters import BEARING_PREFIX, LUBRICANT_PREFIX, bearing_from_values, lubricant_from_values
 from .models.limits import InputError
@@ -154,6 +155,18 @@ class BearingAnalytic(_BearingSlave):
         "with clearance, exact Hertz contacts, Hamrock-Dowson EHL film, film parameter, regime, "
         "capacitance. SI units."
     )
+
+    def _make_model(self):
+        if not self.bearing_from_file and not models_bearing(self._bearing()):
+            # AnalyticModel's refusal names the bearing; from the numeric parameters, name those that made it
+            kind, alpha0 = (getattr(self, BEARING_PREFIX + name) for name in ("kind", "alpha0"))
+            raise ParameterError(
+                f"{BEARING_PREFIX}kind = {kind} ({self._bearing().kind}) and {BEARING_PREFIX}alpha0 = {alpha0} rad are "
+                f"not allowed: the analytic fidelity models radially loaded deep-groove bearings, allowed "
+                f"{BEARING_PREFIX}kind = 0 (deep_groove) with {BEARING_PREFIX}alpha0 = 0 rad; use the quasi-static "
+                "fidelity"
+            )
+        return super()._make_model()
 
 
 class BearingQuasiStatic(_BearingSlave):

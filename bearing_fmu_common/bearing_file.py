@@ -313,7 +313,9 @@ def bearing_from_document(doc, path):
     D = _value(doc, "geometry.ball_diameter", Spec("m", 0.0, 1.0, True), path)
     dm = _value(doc, "geometry.pitch_diameter", Spec("m", 0.0, 10.0, True), path)
     if dm <= D:
-        raise ParameterError(f"{path}: 'geometry.pitch_diameter' = {dm} m must exceed the ball diameter {D} m")
+        raise ParameterError(
+            f"{path}: 'geometry.pitch_diameter' = {dm} m must exceed the ball diameter 'geometry.ball_diameter' = {D} m"
+        )
     conf = Spec("-", 0.5, 1.0, low_open=True)
     Z = _value(doc, "geometry.n_balls", Spec("-", 3, 200), path)
     if Z != int(Z):
@@ -356,7 +358,9 @@ def bearing_from_document(doc, path):
     )
     if math.pi * dm < bearing.Z * D:
         raise ParameterError(
-            f"{path}: {bearing.Z} balls of {D} m do not fit on the pitch circle (pi d_m = {math.pi * dm:.4g} m)"
+            f"{path}: 'geometry.n_balls' = {bearing.Z} balls of 'geometry.ball_diameter' = {D} m do not fit on the "
+            f"pitch circle of 'geometry.pitch_diameter' = {dm} m: allowed at most {math.floor(math.pi * dm / D)} "
+            "balls (pi d_m / D)"
         )
     check_roughness(bearing.Ra_inner, bearing.Ra_outer, bearing.Ra_ball, path)
     _check_cage(bearing.cage_ball_radius, D, dm, bearing.Z, path)

@@ -38,6 +38,11 @@ GAUSS_NODES = 48  # quadrature points on the loaded arc (J_r(0.5) exact to < 1e-
 EPSILON_CAP = 1e6  # |epsilon| shown at most (a centred preloaded ring has delta_r = 0: eps is infinite)
 
 
+def models_bearing(bearing):
+    """True if the analytic fidelity models `bearing`: a deep-groove bearing of contact angle 0."""
+    return bearing.kind == "deep_groove" and bearing.alpha0 == 0.0
+
+
 class AnalyticModel:
     """Analytic bearing model for one bearing, lubricant and scene (docs/decisions.md; Harris and Kotzalas 2007).
 
@@ -54,7 +59,7 @@ class AnalyticModel:
         self.bearing = load_bearing(bearing)
         self.lubricant = load_lubricant(lubricant)
         b = self.bearing
-        if b.kind != "deep_groove" or b.alpha0 != 0.0:
+        if not models_bearing(b):
             raise InputError(
                 f"bearing '{b.name}': the analytic fidelity models radially loaded "
                 f"deep-groove bearings (contact angle 0); use the quasi-static fidelity"

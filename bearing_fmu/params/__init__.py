@@ -155,7 +155,11 @@ def lubricant_from_document(doc, path):
         nu2 = _value(doc, "viscosity.nu_2", nu_spec, path)
         T2 = _value(doc, "viscosity.T_2", TEMPERATURE, path)
         if not (T2 > T1 and nu2 < nu1):
-            raise ParameterError(f"{path}: Walther needs T_2 > T_1 and nu_2 < nu_1 (viscosity falls with temperature)")
+            raise ParameterError(
+                f"{path}: 'viscosity.T_1' = {T1} K, 'viscosity.T_2' = {T2} K, 'viscosity.nu_1' = {nu1} m^2/s and "
+                f"'viscosity.nu_2' = {nu2} m^2/s are not allowed: the Walther law needs T_2 > T_1 and nu_2 < nu_1 "
+                "(viscosity falls with temperature)"
+            )
         arr[lk.LUB_WALTHER_A], arr[lk.LUB_WALTHER_B] = lk.walther_constants(nu1, T1, nu2, T2)
     elif visc == "wlf":
         arr[lk.LUB_VISC_MODEL] = lk.VISCOSITY_WLF
@@ -188,7 +192,11 @@ def lubricant_from_document(doc, path):
     T_low = _value(doc, "temperature_range.T_low", TEMPERATURE, path, False)
     T_high = _value(doc, "temperature_range.T_high", TEMPERATURE, path, False)
     if (T_low is None) != (T_high is None) or (T_low is not None and not T_low < T_high):
-        raise ParameterError(f"{path}: [temperature_range] needs both T_low and T_high, T_low < T_high")
+        low, high = ("not given" if T is None else f"{T} K" for T in (T_low, T_high))
+        raise ParameterError(
+            f"{path}: 'temperature_range.T_low' = {low} and 'temperature_range.T_high' = {high} are not allowed: "
+            "both given (or neither), with T_low < T_high"
+        )
     return Lubricant(
         name=str(doc.get("meta", {}).get("name", Path(path).stem)),
         path=str(path),

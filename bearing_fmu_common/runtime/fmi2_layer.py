@@ -61,6 +61,12 @@ def describe(kind, value, tb):
     return head + "\n" + "".join(traceback.format_exception(kind, value, tb)).rstrip()
 
 
+def variable_name(slave, vr):
+    """The name of the slave's variable of value reference vr, with the reference, for a message."""
+    var = slave.vars.get(vr)
+    return f"value reference {vr}" if var is None else f"{var.name} (value reference {vr})"
+
+
 def dumps(state):
     return pickle.dumps(state, protocol=pickle.HIGHEST_PROTOCOL)
 

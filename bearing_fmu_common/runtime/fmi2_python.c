@@ -836,6 +836,36 @@ static fmi2Status get_variables(Instance *c, const VariableType *type, const fmi
     return status;
 }
 
+/* The name of the slave's variable of value reference vr as the model description spells it, with the
+ * reference (malloc'ed; NULL if it cannot be had). Holds the GIL; no exception is left set. */
+static char *variable_name(Instance *c, fmi2ValueReference vr)
+{
+    PyObject *name = PyObject_CallMethod(helper, "variable_name", "(Ok)", c->slave, (unsigned long)vr);
+    const char *utf8 = name ? PyUnicode_AsUTF8AndSize(name, NULL) : NULL;
+    char *copy = utf8 ? strdup(utf8) : NULL;
+    PyErr_Clear();
+    Py_XDECREF(name);
+    return copy;
+}
+
+/* FMI 2.0 knows two fmi2Boolean values, fmi2True (1) and fmi2False (0): a call with any other value sets none
+ * of its variables (fmi2Error, logged with the variable's name and the value). 1 if every value is one. */
+static int booleans_ok(Instance *c, const fmi2ValueReference vr[], size_t nvr, const fmi2Boolean value[])
+{
+    for (size_t i = 0; i < nvr; i++) {
+        if (value[i] == fmi2True || value[i] == fmi2False)
+            continue;
+        char *name = variable_name(c, vr[i]);
+        emitf(c, fmi2Error,
+              "%s: fmi2SetBoolean: %s = %d is not allowed: allowed values fmi2False (0) and fmi2True (1); no "
+              "variable of the call was set",
+              c->name, name ? name : "a variable", (int)value[i]);
+        free(name);
+        return 0;
+    }
+    return 1;
+}
+
 /* A setter: slave.set_<type>(vrs, values) with value[i] converted. A value that cannot be converted stops the
  * call (fmi2Error, logged with its value reference). Holds the GIL. */
 static fmi2Status set_variables(Instance *c, const VariableType *type, const fmi2ValueReference vr[], size_t nvr,
@@ -845,6 +875,8 @@ static fmi2Status set_variables(Instance *c, const VariableType *type, const fmi
         return fmi2Error;
     if (nvr == 0)
         return fmi2OK;
+    if (type == &BOOLEAN && !booleans_ok(c, vr, nvr, value))
+        return fmi2Error;
     PyObject *values = PyList_New((Py_ssize_t)nvr);
     if (values == NULL) {
         log_exception(c, KIND_METHODS[type->set_kind]);

@@ -501,9 +501,19 @@ class SpindleThermalModel:
                 omega = u[self._idx[nk.LS_OMEGA]]
                 raise SpindleInputError(
                     f"dPd_thermal_{k} = {values[at]} m (thermal and centrifugal growth at omega = {omega} rad/s and "
-                    f"the network's temperatures) is outside the allowed range [{low:.4g}, {high:.4g}] m ({why}); "
-                    "state left unchanged"
+                    f"the network's temperatures, of the rings of {self._ring_parameters(k)}) is outside the allowed "
+                    f"range [{low:.4g}, {high:.4g}] m ({why}); state left unchanged"
                 )
+
+    def _ring_parameters(self, k):
+        """The FMU parameters that set bearing k's growth, with their values (a refused growth names them)."""
+        b = self.net.bearings[k - 1]
+        rings = ", ".join(
+            f"bearing_{k}.{name} = {b[key]}" + ("" if unit == "1" else f" {unit}")
+            for name, unit, key, *_ in RING_DIMENSIONS
+            if name != "Pd"
+        )
+        return f"{rings} and expansion.alpha_bearing = {self.net.alpha_bearing} 1/K"
 
     @property
     def parameters(self):

@@ -40,7 +40,7 @@ FUZZED = [
     (name, v.name)
     for name, _, _, parameters, inputs, *_ in all_variables()
     for v in (*parameters, *inputs)
-    if v.kind in ("real", "string")  # a Boolean has no wrong value
+    if v.kind in ("real", "string")  # a Boolean's only wrong values are C ints, refused by the FMI layer itself
 ]
 
 

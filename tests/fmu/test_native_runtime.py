@@ -22,6 +22,8 @@
   host's logger with its text;
 - a getter stops at the first value it cannot convert and names its value reference; nvr = 0 with NULL
   arrays is fmi2OK;
+- fmi2SetBoolean with a value other than fmi2True or fmi2False is fmi2Error naming the variable and the value,
+  and sets no variable of the call;
 - the host's logger runs without the GIL (a logger waiting for a lock another host thread holds while it
   calls into an FMU does not deadlock);
 - the layer's Python code is the resources/fmi2_layer.py the FMU carries;
@@ -193,6 +195,28 @@ def test_fmpy_simulate_fmu_raises_with_the_fmu_message(analytic_fmu, how, functi
     assert proc.returncode != 0
     assert f"{function} failed with status 3 (error)" in proc.stderr, proc.stderr[-2000:]
     assert message in proc.stdout, proc.stdout
+
+
+@pytest.mark.parametrize("raw", [2, -1, 255])
+def test_a_boolean_neither_true_nor_false_is_refused_naming_the_variable(analytic_fmu, raw):
+    """fmi2SetBoolean with a raw value other than fmi2True (1) or fmi2False (0): fmi2Error, one message naming
+    the FMU variable, the value and the allowed values, and no variable of the call changes (the other one
+    set to false in the same call stays true)."""
+    probe.messages.clear()
+    fmu, vr, unzip = probe.open_fmu(str(analytic_fmu))
+    refs = [vr["bearing_from_file"], vr["Pd_from_file"]]
+    with pytest.raises(FMICallException) as refused:
+        fmu.setBoolean(refs, [0, raw])  # fmpy hands the ints to fmi2SetBoolean as they are
+    assert refused.value.status == 3
+    errors = [m["message"] for m in probe.messages if m["status"] == 3]
+    assert any(
+        f"fmi2SetBoolean: Pd_from_file (value reference {vr['Pd_from_file']}) = {raw} is not allowed: allowed values "
+        "fmi2False (0) and fmi2True (1)" in text
+        for text in errors
+    ), errors
+    assert fmu.getBoolean(refs) == [True, True]  # the start values, kept
+    fmu.freeInstance()
+    shutil.rmtree(unzip, ignore_errors=True)
 
 
 def test_bad_input_is_discarded_without_terminate_and_a_corrected_input_continues(analytic_fmu):

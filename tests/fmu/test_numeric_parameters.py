@@ -173,7 +173,7 @@ def refusal(path, parameters):
         (
             "bearing_fmu",
             {"bearing_from_file": False, "bearing_data.d_m": 0.01},
-            "bearing_data.d_m = 0.01 m must exceed the ball diameter",
+            "bearing_data.d_m = 0.01 m must exceed the ball diameter bearing_data.D = 0.015875 m",
         ),
         (
             "bearing_fmu",
@@ -183,7 +183,7 @@ def refusal(path, parameters):
         (
             "bearing_fmu",
             {"bearing_from_file": False, "bearing_data.Z": 40},
-            "40 balls of 0.015875 m do not fit on the pitch circle",
+            "bearing_data.Z = 40 balls of bearing_data.D = 0.015875 m do not fit on the pitch circle",
         ),
         (
             "bearing_fmu",
@@ -243,3 +243,80 @@ def test_bad_numeric_values_are_refused_naming_the_parameter(request, fixture, p
     status, errors = refusal(request.getfixturevalue(fixture), parameters)
     assert status == 3  # fmi2Error from fmi2ExitInitializationMode
     assert any(message in text for text in errors), errors
+
+
+def refusal_messages(path, parameters, inputs, step):
+    """The FMU's names and the error messages of a run: `parameters` set in initialisation mode, then, if
+    fmi2ExitInitializationMode accepts them, `inputs` set and one fmi2DoStep of `step` (s)."""
+    host = Host(str(path))
+    fmu = host.instance()
+    by_name = {v.name: v for v in host.md.modelVariables}
+    for name, value in parameters.items():
+        var = by_name[name]
+        {"Real": fmu.setReal, "Integer": fmu.setInteger, "Boolean": fmu.setBoolean}[var.type](
+            [var.valueReference], [value]
+        )
+    if host.call(fmu.exitInitializationMode) == 0:
+        fmu.setReal([by_name[name].valueReference for name in inputs], list(inputs.values()))
+        host.call(fmu.doStep, 0.0, step)
+    fmu.freeInstance()
+    return set(by_name), [text for level, text in host.messages if level >= 2]
+
+
+@pytest.mark.parametrize(
+    "fixture,parameters,inputs,step,message",
+    [
+        (  # the Walther law's order of its two points
+            "bearing_fmu",
+            {"lubricant_from_file": False, "lubricant_data.T_1": 400.0},
+            {},
+            0.1,
+            "lubricant_data.T_1 = 400.0 K, lubricant_data.T_2 = 373.15 K",
+        ),
+        (  # half a temperature range
+            "analytic_fmu",
+            {"lubricant_from_file": False, "lubricant_data.T_low": 350.0},
+            {},
+            0.1,
+            "lubricant_data.T_low = 350.0 K and lubricant_data.T_high = not given are not allowed",
+        ),
+        (  # balls that do not fit on the pitch circle
+            "dem_fmu",
+            {"bearing_from_file": False, "bearing_data.Z": 23},
+            {},
+            1e-4,
+            "bearing_data.Z = 23 balls of bearing_data.D = 0.0126 m do not fit on the pitch circle of "
+            "bearing_data.d_m = 0.0606 m: allowed at most 15 balls",
+        ),
+        (  # a bearing the analytic fidelity does not model
+            "analytic_fmu",
+            {"bearing_from_file": False, "bearing_data.kind": 1},
+            {},
+            0.1,
+            "bearing_data.kind = 1 (angular_contact) and bearing_data.alpha0 = 0.0 rad are not allowed",
+        ),
+        (  # a DEM step inside the declared range [0, 1e-5] s but too small to count its steps
+            "dem_fmu",
+            {"dt": 1e-300},
+            {},
+            1e-4,
+            "dt = 1e-300 s is outside the allowed range [1e-09, 1e-05] s",
+        ),
+        (  # a ring growth refused during a step: the rings' parameters that made it
+            "spindle_thermal_fmu",
+            {"network_from_file": False, "bearing_1.d_m": 1.0},
+            {"omega": OMEGA, "Q_inner_ring_1": 300.0},
+            60.0,
+            "of the rings of bearing_1.D = 0.015875 m, bearing_1.d_m = 1.0 m, bearing_1.bore = 0.07 m",
+        ),
+    ],
+)
+def test_a_refusal_names_the_fmu_variables_that_made_it(request, fixture, parameters, inputs, step, message):
+    """A parameter the model's own checks refuse (a file reader's check on the numeric values, the fidelity's,
+    the step count, a step's result): every error names a variable of the FMU with its value ("name = value"),
+    the parameter set among them; none names only a file key or a short name."""
+    names, errors = refusal_messages(request.getfixturevalue(fixture), parameters, inputs, step)
+    assert any(message in text for text in errors), errors
+    sequence = "is not allowed in state"  # the call-sequence refusals that follow a failed initialisation
+    for text in (e for e in errors if sequence not in e):
+        assert any(f"{name} = " in text for name in names), text

@@ -24,6 +24,7 @@ from bearing_fmu.kernels.ball_dynamics.contact_law import groove_approach
 from bearing_fmu.kernels.ball_dynamics.monitor import critical_time_step
 from bearing_fmu.kernels.ball_dynamics.tribology import ring_axis
 from bearing_fmu.kernels.hertz import hertz_contact
+from bearing_fmu.models.declarations import DEM_DT_MAX
 from bearing_fmu.models.dem import DemModel, DemUnstableError
 from bearing_fmu.models.limits import InputError
 from tests.reference import ref_ball_dynamics_integrator as ref
@@ -461,12 +462,40 @@ def test_step_settings_set_the_time_step_and_the_refresh():
 
 
 def test_too_large_time_step_is_reported():
-    """dt = 20 us is beyond the stability limit (about 6 us at 3 kN): the monitor stops the run and names a
-    time step that works at these inputs, and the automatic step (dt = 0 in the FMU), which follows the loads and
-    the film as they change (a fixed step that works now can be stopped again later in a start-up)."""
-    model = DemModel("6208", "guessasma_oil", dt=20e-6)
+    """dt = 10 us (the largest allowed) is beyond the stability limit (about 6 us at 3 kN): the monitor stops the
+    run and names a time step that works at these inputs, and the automatic step (dt = 0 in the FMU), which follows
+    the loads and the film as they change (a fixed step that works now can be stopped again later in a start-up)."""
+    model = DemModel("6208", "guessasma_oil", dt=10e-6)
     with pytest.raises(DemUnstableError, match=r"use dt <= .* s \(.*\); or use dt = 0 \(automatic"):
         model.advance(5e-3, omega=0.0, F_y=3000.0)
+
+
+@pytest.mark.parametrize(
+    "inputs", [{"omega": 0.0, "F_x": 100.0}, {"omega": 500.0, "F_x": 100.0}, {"omega": 500.0, "F_z": 100.0}]
+)
+def test_the_largest_allowed_time_step_runs_the_default_bearing_under_a_light_load(inputs):
+    """dt = DEM_DT_MAX (the declared maximum of the FMU's dt) runs the 6208 under 100 N, radial at rest or at
+    500 rad/s or axial at 500 rad/s, for 4 calls of 0.5 ms: the declared range holds a step that works."""
+    model = DemModel("6208", "guessasma_oil", dt=DEM_DT_MAX)
+    for k in range(1, 5):
+        model.advance(k * 0.5e-3, **inputs)
+    assert math.isclose(model.dt, DEM_DT_MAX, rel_tol=1e-12) and model.status[s.ST_CODE] == s.STATUS_OK
+
+
+def test_the_advised_time_step_holds_as_the_film_thickens():
+    """The B7214C with ISO VG 68 at 40 C started to 10 000 rpm under 2 kN of thrust at dt = 10 us: the monitor
+    stops the first call at 0.12 ms. The step it advises runs 4 ms: it keeps the damping check for the thinnest
+    full film the contacts can reach, not only for the films of the stopped state (from those, 3.57 us was
+    advised and stopped again 0.23 ms into the run, when the film turned full)."""
+    inputs = {"omega": 1047.1975511965977, "F_z": 2000.0}
+    model = DemModel("B7214C", "iso_vg68_mineral", dt=10e-6)
+    with pytest.raises(DemUnstableError) as stop:
+        model.advance(0.5e-3, **inputs)
+    advised = float(str(stop.value).split("use dt <= ")[1].split(" s")[0])
+    model = DemModel("B7214C", "iso_vg68_mineral", dt=advised)
+    for k in range(1, 9):
+        model.advance(k * 0.5e-3, **inputs)
+    assert model.status[s.ST_CODE] == s.STATUS_OK and model.out[s.O_N_LOADED] == 17
 
 
 def test_load_release_at_rest_is_not_flagged_as_energy_growth():
@@ -490,7 +519,7 @@ def test_unstable_message_without_loaded_contact_names_no_infinite_limit():
     model.balls[s.B_X : s.B_X + 2] *= 1.0 - 1e-6 / model._rest[0]  # 1 um off the outer race: every contact open
     model.status[:] = (s.STATUS_ENERGY, 3, -1)
     with pytest.raises(DemUnstableError, match=r"use dt <= 4e-06 s \(no contact is loaded") as info:
-        model._raise_unstable(8e-6, 0.0, 0.0, 0.0)
+        model._raise_unstable(8e-6, (0.0, 0.0, 0.0, 0.0, 0.0), 313.15, 0.0)
     assert "inf" not in str(info.value)
 
 

@@ -67,5 +67,5 @@ def test_half_a_range_is_refused(tmp_path):
     broken = tmp_path / "oil.toml"
     content = open(text).read()
     broken.write_text(content[: content.index("T_high")])
-    with pytest.raises(ParameterError, match=r"\[temperature_range\] needs both T_low and T_high"):
+    with pytest.raises(ParameterError, match=r"'temperature_range.T_high' = not given are not allowed: both given"):
         load_lubricant(str(broken))

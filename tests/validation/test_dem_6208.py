@@ -265,10 +265,10 @@ def test_default_time_step_starts_up_with_a_thin_hot_film():
 
 
 def test_too_large_time_step_is_detected():
-    """dt = 12 us is beyond the stability limit of the squeezed ball at 3 kN (about 6 us with the
+    """dt = 10 us is beyond the stability limit of the squeezed ball at 3 kN (about 6 us with the
     tangential springs): the monitor stops the start-up and names a time step that works, which then
     runs."""
-    model = DemModel("6208", "guessasma_oil", dt=12e-6)
+    model = DemModel("6208", "guessasma_oil", dt=10e-6)
     with pytest.raises(DemUnstableError) as info:
         dem_6208.start_up(model, 500.0)
     message = str(info.value)

@@ -7,7 +7,7 @@ from bearing_fmu_common.variables import InputLimits
 
 from ...kernels.ehl import friction_coefficient
 from ...params import SUPPORT_DAMPING, SUPPORT_MASS, SUPPORT_STIFFNESS, clearance_limits
-from ..declarations import DEM_DT_MAX, DEM_INPUTS, DEM_REFRESH_MAX, T_OIL_START
+from ..declarations import DEM_DT_MAX, DEM_DT_MIN, DEM_INPUTS, DEM_REFRESH_MAX, T_OIL_START
 from ..limits import DM_N_LIMIT, MATERIAL_LIMIT, InputError
 from .packing import CONSTANTS
 
@@ -22,8 +22,11 @@ def checked_settings(dt, refresh, safety, refresh_interval, traction_limit, supp
     """Refuse a DemModel setting out of its range (the arguments of DemModel; support = (support_stiffness,
     support_damping, support_mass), mass and inertia are ring_mass and ring_inertia); returns the ring's support
     (N/m, N.s/m, kg) and kt_ratio, params/dem_model.toml's where None."""
-    if dt is not None and not (math.isfinite(dt) and 0.0 < dt <= DEM_DT_MAX):
-        raise InputError(f"dt = {dt} s is outside the allowed range ]0, {DEM_DT_MAX:g}] s")
+    if dt is not None and not (math.isfinite(dt) and DEM_DT_MIN <= dt <= DEM_DT_MAX):
+        raise InputError(
+            f"dt = {dt} s is outside the allowed range [{DEM_DT_MIN:g}, {DEM_DT_MAX:g}] s (in the FMU also 0 = "
+            "automatic)"
+        )
     if refresh is not None and not (float(refresh) == int(refresh) and 1 <= int(refresh) <= 100000):
         raise InputError(f"refresh = {refresh} steps is outside the allowed range [1, 100000] (a whole number)")
     if not (math.isfinite(safety) and 0.0 < safety <= 1.0):

@@ -237,7 +237,7 @@ class DemModel:
             if self.status[s.ST_CODE] == s.STATUS_OK:
                 break
             if not automatic or self.step_halvings == AUTO_STEP_HALVINGS:
-                self._raise_unstable(dt, *loads)
+                self._raise_unstable(dt, loads, T_oil, max(abs(self._start["omega"]), abs(omega)))
             # the step was chosen from the state at the start of the call; the film can change within it (a
             # contact entering full film at low speed takes a squeeze damping that overdamps the ball): repeat
             # the call from its start with half the step, or the step the stopped state's film needs if smaller
@@ -327,15 +327,20 @@ class DemModel:
         self.omega = omega0 + (omega - omega0) * done / n_steps
         return omega0, orbit0
 
-    def _raise_unstable(self, dt, F_x, F_y, F_z, M_x=0.0, M_y=0.0):
-        """Raise the DemUnstableError of the monitor's stop (self.status) in a call of step dt (s) at these loads."""
+    def _raise_unstable(self, dt, loads, T_oil, omega_max):
+        """Raise the DemUnstableError of the monitor's stop (self.status) in a call of step dt (s) at these loads
+        (F_x, F_y, F_z, M_x, M_y), oil temperature T_oil (K) and largest speed omega_max (rad/s) of the call."""
+        F_x, F_y, F_z, M_x, M_y = loads
 
         def limit(include_state):
             return self.stable_time_step(F_x, F_y, F_z, self.omega, include_state=include_state, M_x=M_x, M_y=M_y)
 
+        # the films of the rest of the run are not known yet: a step that holds whatever film the contacts reach
+        Q = time_step.estimated_load(self.bearing, self.par, F_x, F_y, F_z, omega_max, M_x, M_y)
+        film_step = time_step.film_damping_step(self.par, self.lubricant.array, T_oil, Q)
         raise unstable_error(
             self.status, self.time, dt, self.bearing.Z, self.trib, self.par[s.P_M_BALL], self.dt_fixed is not None,
-            self.safety, limit,
+            self.safety, limit, film_step,
         )  # fmt: skip
 
     # -- outputs -------------------------------------------------------------------------------
@@ -387,10 +392,15 @@ class DemModel:
         order (omega, F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal; SI) as advance() takes them, and fill self.values
         (self.outputs order: the declarations of models.declarations.DEM_OUTPUTS); returns self.values.
 
-        Raises InputError for inputs out of range (nothing changed) and DemUnstableError when the monitor stops
-        the step: the state is then restored to the start of the step and self.status keeps the monitor's code."""
+        Raises InputError for inputs out of range (nothing changed; also with interval 0) and DemUnstableError when
+        the monitor stops the step: the state is then restored to the start of the step and self.status keeps the
+        monitor's code."""
         if interval != 0.0:
             self._step_to(self.time + inputs.communication_interval(interval), u)
+        else:
+            # checked without a step too, as the other fidelities' update: the FMU then names an input its
+            # first step would refuse when it leaves initialisation
+            self._limits.check(tuple(float(v) for v in u))
         self._gather()
         return self.values
 

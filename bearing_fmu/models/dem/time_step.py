@@ -8,8 +8,9 @@ import numpy as np
 from ...kernels.ball_dynamics import state as s
 from ...kernels.ball_dynamics.monitor import critical_time_step, damping_step_ratio
 from ...kernels.ball_dynamics.outputs import contact_loads
-from ...kernels.ehl import friction_coefficient
+from ...kernels.ehl import friction_coefficient, normal_damping
 from ...kernels.geometry import rolling_kinematics
+from ...kernels.lubricant import lubricant_state
 from .monitor import DAMPING_PLAN
 
 SAFETY = 0.5  # default time step over the stability limit of the stiffest pair (docs/reports/dem_steps.md)
@@ -21,21 +22,44 @@ AUTO_STEP_HALVINGS = 4
 def stable_time_step(bearing, par, balls, ring, trib, Q, F_x, F_y, F_z, omega, include_state, M_x, M_y):
     """DemModel.stable_time_step (s) of the state (balls, ring, trib) at loads F_x, F_y, F_z (N), M_x, M_y (N.m) and
     speed omega (rad/s); Q (2, Z) takes the contact loads (N) of the estimate."""
-    b = bearing
     contact_loads(balls, ring, par, Q)
     if not include_state:
         Q[:] = 0.0
-    alpha = max(par[s.P_ALPHA0], math.radians(5.0))
-    cage_speed = rolling_kinematics(abs(omega), b.D, b.dm, par[s.P_ALPHA0])[0]
-    F_c = 0.5 * par[s.P_M_BALL] * b.dm * cage_speed**2
-    axial = abs(F_z) + 2.0 * math.hypot(M_x, M_y) / par[s.P_RHO_I]
-    estimate = 5.0 * math.hypot(F_x, F_y) / b.Z + axial / (b.Z * math.sin(alpha)) + F_c
+    estimate = estimated_load(bearing, par, F_x, F_y, F_z, omega, M_x, M_y)
     Q_i = np.maximum(Q[0], estimate)
     Q_o = np.maximum(Q[1], estimate)
     C = trib[s.T_C_N]
     loaded = trib[s.T_Q] > 0.0
     mu = float(trib[s.T_MU][loaded].max()) if loaded.any() else MU_BOUNDARY
     return critical_time_step(par, Q_i, Q_o, C[0], C[1], mu * max(Q_i.max(), Q_o.max()))
+
+
+def estimated_load(bearing, par, F_x, F_y, F_z, omega, M_x, M_y):
+    """The contact load (N) of stable_time_step's estimate at loads F_x, F_y, F_z (N), M_x, M_y (N.m) and speed
+    omega (rad/s): Stribeck's 5 F_r / Z, F_a / (Z sin alpha) with alpha >= 5 deg, 2 M / (Z rho_i sin alpha) for a
+    moment, plus the centrifugal force."""
+    b = bearing
+    alpha = max(par[s.P_ALPHA0], math.radians(5.0))
+    cage_speed = rolling_kinematics(abs(omega), b.D, b.dm, par[s.P_ALPHA0])[0]
+    F_c = 0.5 * par[s.P_M_BALL] * b.dm * cage_speed**2
+    axial = abs(F_z) + 2.0 * math.hypot(M_x, M_y) / par[s.P_RHO_I]
+    return 5.0 * math.hypot(F_x, F_y) / b.Z + axial / (b.Z * math.sin(alpha)) + F_c
+
+
+def film_damping_step(par, lub, T_oil, Q):
+    """A step (s) that keeps (c_i + c_o) dt / m at DAMPING_PLAN for the largest normal damping a contact of load Q
+    (N) can take at the oil temperature T_oil (K), whatever its film becomes: the boundary's 1.5 alpha_e Q or the
+    full film's squeeze damping at its thinnest, Lambda = 3 (kernels.ehl.normal_damping: it falls as the film
+    thickens, and a mixed film's is below both)."""
+    eta = lubricant_state(T_oil, lub)[0]
+    c_max = 1.5 * par[s.P_ALPHA_E] * Q
+    for race in (0, 1):
+        delta = (Q / par[s.P_KH_I + race]) ** (2.0 / 3.0)
+        a = par[s.P_HA_I + s.P_HERTZ_SCALE_STRIDE * race] * math.sqrt(delta)
+        h_min = 3.0 * par[s.P_SIGMA_I + race]
+        # Lambda = inf selects the full film's formula, taken at the film of Lambda = 3 (its supremum)
+        c_max = max(c_max, normal_damping(math.inf, Q, par[s.P_ALPHA_E], eta, a, 0.5 * par[s.P_D], h_min))
+    return DAMPING_PLAN * par[s.P_M_BALL] / (2.0 * c_max) if c_max > 0.0 else math.inf
 
 
 def automatic_time_step(stable, safety, par, trib):
