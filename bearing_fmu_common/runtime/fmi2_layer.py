@@ -28,6 +28,10 @@ _shared = sys.modules.setdefault(_SHARED, types.ModuleType(_SHARED))
 _setup_lock = _shared.__dict__.setdefault("setup_lock", threading.RLock())
 
 
+class Refused(ImportError):
+    """An FMU that cannot run as it is in this process; the message says why (logged without a traceback)."""
+
+
 def begin_setup():
     _setup_lock.acquire()
 
@@ -39,12 +43,17 @@ def end_setup():
 def slave_class(resources):
     """The Fmi2Slave subclass of the module named in resources/slavemodule.txt (the one with the longest class
     hierarchy). resources/ is put on sys.path only if that module is not imported yet: later instances, from
-    any extraction of the FMU, reuse it."""
+    any extraction of the FMU, reuse it. Refused if the process has already imported that module or a package
+    the FMU carries with other contents (foreign_code)."""
     with open(os.path.join(resources, "slavemodule.txt"), encoding="utf-8") as fh:
         name = fh.readline().strip()
+    why = foreign_code(resources, name)
+    if why is not None:
+        raise Refused(why)
     if name not in sys.modules and resources not in sys.path:
         sys.path.insert(0, resources)
     module = importlib.import_module(name)
+    remember_code(resources, name)
     found = [
         c
         for c in vars(module).values()
@@ -57,12 +66,126 @@ def slave_class(resources):
 
 def describe(kind, value, tb):
     """An exception and its traceback as one text, the exception first: a host that shows only the start of
-    a long message still shows the cause. An exception raised by the layer's own C code has no traceback: its
-    text alone."""
+    a long message still shows the cause. An exception raised by the layer's own C code has no traceback, and a
+    refusal (Refused) says all there is to say: their text alone."""
     head = "".join(traceback.format_exception_only(kind, value)).rstrip()
-    if tb is None:
+    if tb is None or isinstance(value, Refused):
         return head
     return head + "\n" + "".join(traceback.format_exception(kind, value, tb)).rstrip()
+
+
+# -- an FMU runs its own code --------------------------------------------------------------------------------
+# Python has one module per name in a process: an FMU whose packages (bearing_fmu, bearing_fmu_common, spindle)
+# the process has already imported from elsewhere — the host's own checkout or installation, another release's
+# FMU — would run that code, not the code it carries. It is refused unless that code is the same as the FMU's.
+OWN_PACKAGES = "own_packages.txt"  # resources/ file the build writes (runtime/build.py: OWN_PACKAGES)
+_SKIPPED = ("__pycache__",)
+_CACHE_SUFFIXES = (".pyc", ".nbi", ".nbc")  # written by Python and numba beside the sources, never carried
+# What the process imported, by content, for every copy of the layer: package name -> (directory, {relative path:
+# SHA-256}) and entry module name -> SHA-256 of its file. Recorded when imported: an extraction an FMU ran from
+# may be removed by its host afterwards (fmpy's simulate_fmu does), and another copy compares against this.
+_imported = _shared.__dict__.setdefault("imported_packages", {})
+_entries = _shared.__dict__.setdefault("imported_entries", {})
+
+
+def _file_digest(path):
+    with open(path, "rb") as fh:
+        return hashlib.sha256(fh.read()).hexdigest()
+
+
+def _digests(directory):
+    """{relative path: SHA-256} of the files under `directory`, without Python's and numba's caches."""
+    out = {}
+    for root, dirs, files in os.walk(directory):
+        dirs[:] = sorted(d for d in dirs if d not in _SKIPPED)
+        for name in sorted(files):
+            if not name.endswith(_CACHE_SUFFIXES):
+                path = os.path.join(root, name)
+                out[os.path.relpath(path, directory)] = _file_digest(path)
+    return out
+
+
+def _loaded(name):
+    """(directory, {relative path: SHA-256}) of the package `name` as the process imported it; None: not
+    imported; (None, None): not from one directory (a namespace package)."""
+    module = sys.modules.get(name)
+    if module is None:
+        return None
+    path = getattr(module, "__file__", None)
+    directory = os.path.dirname(os.path.realpath(path)) if path else None
+    record = _imported.get(name)
+    if directory is not None and (record is None or record[0] != directory):
+        record = _imported[name] = (directory, _digests(directory))
+    return record if directory is not None else (None, None)
+
+
+def _own_packages(resources):
+    """The packages of the product the FMU carries (resources/own_packages.txt, one name a line, written by the
+    build; none for an FMU without it). Not pythonfmu, which it carries for hosts that lack it: a host that
+    imported its own runs the FMU on it, as it runs any pythonfmu FMU."""
+    try:
+        with open(os.path.join(resources, OWN_PACKAGES), encoding="utf-8") as fh:
+            return [line.strip() for line in fh if line.strip()]
+    except FileNotFoundError:
+        return []
+
+
+def _package_problem(name, carried, loaded):
+    """Why the package `name` imported as `loaded` (_loaded) is not the one the FMU carries in `carried`: a file
+    of another content, or a Python source it lacks. A data file it lacks is not counted: a package run from a
+    checkout can read it from elsewhere (the thermal model reads the bearing catalogue from bearing_fmu/params,
+    which the thermal FMU carries as spindle/thermal/bearings)."""
+    directory, theirs = loaded
+    if directory is None:
+        return f"package {name} not from one directory (this FMU's is {carried})"
+    if directory == carried:
+        return None
+    differ = [
+        rel
+        for rel, digest in _digests(carried).items()
+        if theirs.get(rel) != digest and (rel in theirs or rel.endswith(".py"))
+    ]
+    if not differ:
+        return None
+    return (
+        f"package {name} from {directory} ({len(differ)} of its files differ from this FMU's {carried}, "
+        f"e.g. {differ[0]})"
+    )
+
+
+def foreign_code(resources, entry):
+    """Why this FMU (its resources/ directory and entry module name) would not run its own code in this process:
+    its entry module or a package it carries already imported with another content; None if it runs its own."""
+    problems = []
+    own = os.path.join(resources, entry + ".py")
+    module = sys.modules.get(entry)
+    if module is not None:
+        path = getattr(module, "__file__", None)
+        theirs = _entries.get(entry) or (_file_digest(path) if path and os.path.isfile(path) else None)
+        if theirs != _file_digest(own):
+            problems.append(f"its module {entry} from {path} (this FMU's is {own})")
+    for name in _own_packages(resources):
+        loaded = _loaded(name)
+        problem = loaded and _package_problem(name, os.path.realpath(os.path.join(resources, name)), loaded)
+        if problem:
+            problems.append(problem)
+    if not problems:
+        return None
+    return (
+        "this FMU runs only the code it carries, but this process has already imported other code under the same "
+        "names: " + "; ".join(problems) + ". Python keeps one module per name in a process, so the FMU would run "
+        "that code instead. Instantiate it in a process that has not imported another version of these packages "
+        "(a checkout or installation of the product, or an FMU of another release)"
+    )
+
+
+def remember_code(resources, entry):
+    """Record what the FMU's set-up imported (its entry module, its packages), by content, for the checks of
+    later instances (foreign_code)."""
+    if entry not in _entries:  # this FMU's file: the module was imported from it, or checked equal to it
+        _entries[entry] = _file_digest(os.path.join(resources, entry + ".py"))
+    for name in _own_packages(resources):
+        _loaded(name)
 
 
 # -- serialised FMU states ----------------------------------------------------------------------------------
