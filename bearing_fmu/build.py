@@ -24,7 +24,7 @@ from pathlib import Path
 
 from pythonfmu.builder import FmuBuilder
 
-from bearing_fmu_common.runtime.binaries import install_runtime
+from bearing_fmu_common.runtime.binaries import OWN_PACKAGES, install_runtime
 from bearing_fmu_common.variables import select
 
 from .compiled_code import COMPILED_DIR, add_compiled_code
@@ -193,6 +193,8 @@ def build_python_fmu(
     with tempfile.TemporaryDirectory(prefix="bearing_fmu_build_") as tmp:
         stage = Path(tmp)
         packages = stage_bundle(stage, bundle)
+        own = stage / OWN_PACKAGES  # the layer refuses the FMU where these are already imported with other code
+        own.write_text("".join(f"{p}\n" for p in packages))
         compat = stage_compat(stage)
         entry = stage / f"{fmu_name.lower()}_entry.py"
         entry.write_text(
@@ -212,7 +214,7 @@ def build_python_fmu(
         path = FmuBuilder.build_FMU(
             entry,
             dest=out_dir / f"{fmu_name}.fmu",
-            project_files=[*(stage / p for p in packages), compat],
+            project_files=[*(stage / p for p in packages), compat, own],
             canGetAndSetFMUstate=True,
             canSerializeFMUstate=True,
         )

@@ -77,7 +77,7 @@ class FrictionWatch:
         message."""
         out = []
         for race in range(2):
-            above = mu_required[race] > self.mu_limit
+            above = bool(mu_required[race] > self.mu_limit)  # a Python bool: the state holds plain values
             if above and not self.exceeded[race]:
                 j = int(np.argmax(balls[jones_harris.BQ_MU_REQ_I + race]))
                 out.append(

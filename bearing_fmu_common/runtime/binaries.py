@@ -30,6 +30,7 @@ LAYER_FILE = "fmi2_python.abi3.so"  # beside the FMU's binary; the name fmi2_loa
 PLATFORM = "linux64"  # the only platform the layer is built for
 PYTHON_HINT = "python.txt"  # resources/ file read by the loader: the interpreter that built the FMU
 GUID_FILE = "guid.txt"  # resources/ file read by the layer: the GUID fmi2Instantiate must be given
+OWN_PACKAGES = "own_packages.txt"  # resources/ file read by the layer: the product's packages the FMU carries
 LIMITED_API = "0x030A0000"  # the stable ABI of Python 3.10, the oldest supported host
 
 

@@ -926,8 +926,9 @@ SETTER(String, STRING)
 /* -- state ---------------------------------------------------------------------------------- */
 
 /* An FMU state is the tuple (call-sequence state, last successful time, the slave's _get_fmu_state()
- * object): restoring it restores where the instance was in the call sequence too. Serialised with
- * pickle. NULL with the problem logged if `state` is not such a tuple. */
+ * object): restoring it restores where the instance was in the call sequence too. Serialised as named values
+ * by the helper (fmi2_layer.py: dumps, loads), never pickled. NULL with the problem logged if `state` is not
+ * such a tuple. */
 static PyObject *slave_part(Instance *c, PyObject *state, const char *call, State *where, fmi2Real *time)
 {
     if (PyTuple_Check(state) && PyTuple_Size(state) == 3 && PyLong_Check(PyTuple_GetItem(state, 0)) &&
@@ -993,9 +994,10 @@ fmi2Status fmi2FreeFMUstate(fmi2Component component, fmi2FMUstate *state)
     RETURN(fmi2OK);
 }
 
-static PyObject *pickled(Instance *c, fmi2FMUstate state)
+/* The bytes of `state` (helper.dumps: the slave's identity and its values), NULL with the problem logged. */
+static PyObject *serialised(Instance *c, fmi2FMUstate state)
 {
-    PyObject *bytes = state ? PyObject_CallMethod(helper, "dumps", "(O)", (PyObject *)state) : NULL;
+    PyObject *bytes = state ? PyObject_CallMethod(helper, "dumps", "(OO)", (PyObject *)state, c->slave) : NULL;
     if (bytes == NULL && state == NULL)
         emitf(c, fmi2Error, "%s: no FMU state to serialise", c->name);
     else if (bytes == NULL)
@@ -1006,9 +1008,9 @@ static PyObject *pickled(Instance *c, fmi2FMUstate state)
 fmi2Status fmi2SerializedFMUstateSize(fmi2Component component, fmi2FMUstate state, size_t *size)
 {
     BEGIN("fmi2SerializedFMUstateSize", MASK_FMUstate);
-    if (!given(c, size, "fmi2SerializedFMUstateSize", "size"))
+    if (!given(c, size, "fmi2SerializedFMUstateSize", "size") || !has_slave(c, "fmi2SerializedFMUstateSize"))
         RETURN(fmi2Error);
-    PyObject *bytes = pickled(c, state);
+    PyObject *bytes = serialised(c, state);
     if (bytes == NULL)
         RETURN(fmi2Error);
     *size = (size_t)PyBytes_Size(bytes);
@@ -1020,9 +1022,10 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component component, fmi2FMUstate state, fm
                                  size_t size)
 {
     BEGIN("fmi2SerializeFMUstate", MASK_FMUstate);
-    if (!given(c, serializedState, "fmi2SerializeFMUstate", "serializedState"))
+    if (!given(c, serializedState, "fmi2SerializeFMUstate", "serializedState") ||
+        !has_slave(c, "fmi2SerializeFMUstate"))
         RETURN(fmi2Error);
-    PyObject *bytes = pickled(c, state);
+    PyObject *bytes = serialised(c, state);
     if (bytes == NULL)
         RETURN(fmi2Error);
     size_t n = (size_t)PyBytes_Size(bytes);
@@ -1042,13 +1045,20 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component component, const fmi2Byte seria
 {
     BEGIN("fmi2DeSerializeFMUstate", MASK_FMUstate);
     if (!given(c, serializedState, "fmi2DeSerializeFMUstate", "serializedState") ||
-        !given(c, state, "fmi2DeSerializeFMUstate", "FMUstate"))
+        !given(c, state, "fmi2DeSerializeFMUstate", "FMUstate") || !has_slave(c, "fmi2DeSerializeFMUstate"))
         RETURN(fmi2Error);
     PyObject *bytes = PyBytes_FromStringAndSize(serializedState, (Py_ssize_t)size);
-    PyObject *loaded = bytes ? PyObject_CallMethod(helper, "loads", "(O)", bytes) : NULL;
+    PyObject *loaded = bytes ? PyObject_CallMethod(helper, "loads", "(OO)", bytes, c->slave) : NULL;
     Py_XDECREF(bytes);
     if (loaded == NULL) {
         log_exception(c, "deserialising the FMU state");
+        RETURN(fmi2Error);
+    }
+    if (PyUnicode_Check(loaded)) { /* refused: the helper says why (another FMU or version, damaged bytes) */
+        const char *why = PyUnicode_AsUTF8AndSize(loaded, NULL);
+        emitf(c, fmi2Error, "%s: fmi2DeSerializeFMUstate: %s", c->name, why ? why : "refused");
+        PyErr_Clear();
+        Py_DECREF(loaded);
         RETURN(fmi2Error);
     }
     State where;
