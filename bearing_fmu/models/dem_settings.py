@@ -119,6 +119,18 @@ DEM_SETTINGS = (
         "0 = none; the automatic step follows the support",
         slot="P_C_SUPPORT",
     ),
+    Setting(
+        "support_axial_damping",
+        "N.s/m",
+        "damping of the inner ring's support along the bearing axis (z). 0 = none: the bearing alone holds the ring "
+        "axially (a single angular-contact bearing takes the thrust); give the seat's axial damping when the "
+        "master's shaft model does not carry it. Changes no steady state",
+        0.0,
+        1e6,
+        "ring_support.axial_damping",
+        "0 = none; the automatic step follows the support",
+        slot="P_C_SUPPORT_AXIAL",
+    ),
     # a spindle shaft's modal mass at a seat is a few kilograms; 1000 kg bounds a machine's whole rotor
     Setting(
         "support_mass",
