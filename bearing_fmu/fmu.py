@@ -19,6 +19,7 @@ from .fidelities import FIDELITIES
 from .kernels.ball_dynamics.state import ST_CODE
 from .models.analytic import models_bearing
 from .models.dem import DemUnstableError
+from .models.dem_settings import DEM_SETTINGS
 from .models.file_parameters import BEARING_PREFIX, LUBRICANT_PREFIX, bearing_from_values, lubricant_from_values
 from .models.limits import InputError
 from .params import ParameterError
@@ -221,10 +222,7 @@ class BearingDEM(_BearingSlave):
             "refresh_interval": self.refresh_interval,
             "averaged": bool(self.average_outputs),
             "averaged_state": bool(self.average_state_outputs),
-            "traction_limit": self.traction_limit,
-            "support_stiffness": self.support_stiffness,
-            "support_damping": self.support_damping,
-            "support_mass": self.support_mass,
+            **{setting.name: getattr(self, setting.name) for setting in DEM_SETTINGS},  # each by its own name
         }
 
     def _advance(self, step_size):

@@ -27,8 +27,8 @@ from ..kernels import radial_bearing
 from ..kernels import rating_life as rl
 from ..kernels import truncation as tk
 from ..kernels.ball_dynamics import state as ds
-from ..params import SUPPORT_DAMPING, SUPPORT_MASS, SUPPORT_STIFFNESS, load_dem_constants
 from ..scene import LUBRICATION_METHODS, RACE_CONTROLS
+from .dem_settings import DEM_SETTINGS
 from .file_parameters import bearing_parameters
 from .limits import (
     GROOVE_MAX,
@@ -747,8 +747,6 @@ DEM_OUTPUTS = (
     ),
 )
 
-_DEM = load_dem_constants()  # the DEM's defaults (params/dem_model.toml)
-
 DEM_PARAMETERS = (
     replace(_BY_NAME_PARAMETERS["bearing"], start="6208"),
     replace(_BY_NAME_PARAMETERS["lubricant"], start="guessasma_oil"),
@@ -777,18 +775,6 @@ DEM_PARAMETERS = (
         "the ball motion (docs/reports/dem_steps.md)",
     ),
     Variable(
-        "traction_limit",
-        "1",
-        "tangential law of the ball-race contacts: 0 = the film's share of the force follows the lubricant's EHL "
-        "traction curve of the slide-to-roll ratio (the asperities' share a spring capped at 0.1); > 0 = override, "
-        "a spring alone capped at this value in a full film, ramped from 0.1 at Lambda = 1 (0.01 = the papers' "
-        "mu(Lambda))",
-        start=0.0,
-        min=0.0,
-        max=0.1,
-        limits="0 = the EHL traction curve; at most the boundary regime's 0.1",
-    ),
-    Variable(
         "average_outputs",
         "",
         "true: torque, P_loss, Q_inner_ring, Q_outer_ring and C_bearing are means over the communication step; "
@@ -806,39 +792,7 @@ DEM_PARAMETERS = (
         "boolean",
         start=False,
     ),
-    Variable(
-        "support_stiffness",
-        "N/m",
-        "stiffness of the inner ring's support (the shaft) to its rest position across the axis (x, y); in the tilts "
-        "k (d_m/2)^2/2. 0 = a free ring: the balls alone carry the loads",
-        start=_DEM.support_stiffness,
-        min=SUPPORT_STIFFNESS.low,
-        max=SUPPORT_STIFFNESS.high,
-        limits="a shaft's stiffness at a seat is 1e7-1e9 N/m; the automatic step follows the support",
-    ),
-    Variable(
-        "support_damping",
-        "N.s/m",
-        "damping of the inner ring's support (the shaft) across the axis (x, y); in the tilts c (d_m/2)^2/2. "
-        "Estimated default (a spindle shaft at a bearing seat); changes no steady state. Below about 300 N.s/m the "
-        "free ring of a "
-        "heavily thrust-loaded angular-contact bearing can whirl at speed (docs/dem.md, Ring support)",
-        start=_DEM.support_damping,
-        min=SUPPORT_DAMPING.low,
-        max=SUPPORT_DAMPING.high,
-        limits="0 = none; the automatic step follows the support",
-    ),
-    Variable(
-        "support_mass",
-        "kg",
-        "the shaft's modal mass at the seat, moving with the inner ring: added to its mass in x, y, z and, spread over "
-        "the pitch circle (m (d_m/2)^2/2), to its tilt inertia. 0 = the ring alone. Set it with the shaft's modal "
-        "stiffness in support_stiffness: a mass on the damper alone lowers the damping below which the ring whirls "
-        "(docs/dem.md, Ring support)",
-        start=_DEM.support_mass,
-        min=SUPPORT_MASS.low,
-        max=SUPPORT_MASS.high,
-        limits="a spindle shaft's modal mass at a seat is 2-10 kg; 0 = the ring alone",
-    ),
+    # the numeric settings (models.dem_settings): traction_limit and the ring's support
+    *(setting.parameter() for setting in DEM_SETTINGS),
     *bearing_parameters("6208", "guessasma_oil"),
 )

@@ -230,17 +230,6 @@ class DemConstants:
     cage_pocket_play: float  # -, pocket play of an estimated cage ball over the ball diameter
     alpha_e: float  # s/m, hysteretic damping constant (C_hyst = 1.5 alpha_e Q)
     kt_ratio: float  # -, tangential over secant normal stiffness of the asperities' spring
-    support_stiffness: float  # N/m, the inner ring's support across the axis, x and y (0 = a free ring)
-    support_damping: float  # N.s/m, its damping
-    support_mass: float  # kg, the shaft's modal mass at the seat, moving with the ring (0 = the ring alone)
-
-
-# the inner ring's support: a shaft's bending stiffness at a seat is 1e7-1e9 N/m; beyond these bounds the ring would
-# be welded to the ground (the automatic step follows the support, so any value in range is stable)
-SUPPORT_STIFFNESS = Spec("N/m", 0.0, 1e10)
-SUPPORT_DAMPING = Spec("N.s/m", 0.0, 1e6)
-# a spindle shaft's modal mass at a seat is a few kilograms; 1000 kg bounds a machine's whole rotor
-SUPPORT_MASS = Spec("kg", 0.0, 1000.0)
 
 
 def load_dem_constants(path=CATALOGUE / "dem_model.toml"):
@@ -253,7 +242,10 @@ def load_dem_constants(path=CATALOGUE / "dem_model.toml"):
         cage_pocket_play=_value(doc, "cage.pocket_play", Spec("-", 0.0, 0.1), path),
         alpha_e=_value(doc, "contact.alpha_e", Spec("s/m", 0.0, 10.0), path),
         kt_ratio=_value(doc, "contact.kt_ratio", Spec("-", 0.1, 1.5), path),
-        support_stiffness=_value(doc, "ring_support.stiffness", SUPPORT_STIFFNESS, path),
-        support_damping=_value(doc, "ring_support.damping", SUPPORT_DAMPING, path),
-        support_mass=_value(doc, "ring_support.mass", SUPPORT_MASS, path),
     )
+
+
+def dem_model_value(key, spec, path=CATALOGUE / "dem_model.toml"):
+    """Entry `key` of the DEM's constants file (e.g. 'ring_support.damping'), checked against spec (its unit and
+    range): the defaults of the DEM's settings (models.dem_settings)."""
+    return _value(read_toml(Path(path)), key, spec, path)

@@ -108,6 +108,7 @@ def test_validate_and_variables(dem_fmu):
         "average_state_outputs",
         "support_stiffness",
         "support_damping",
+        "support_axial_damping",
         "support_mass",
         "bearing_from_file",
         "lubricant_from_file",
@@ -118,6 +119,8 @@ def test_validate_and_variables(dem_fmu):
     for name in shared | inputs:
         assert (by_name[name].unit, by_name[name].type) == (quasi_static[name].unit, quasi_static[name].type), name
     assert by_name["dt"].unit == "s" and by_name["refresh_interval"].unit == "s"
+    axial = by_name["support_axial_damping"]  # the ring's axial damper: none by default, the range of the others'
+    assert axial.unit == "N.s/m" and [float(v) for v in (axial.start, axial.min, axial.max)] == [0.0, 0.0, 1e6]
     for name in ("M_x", "M_y"):  # the same input as Bearing.fmu's
         assert by_name[name].description == quasi_static[name].description, name
 

@@ -305,9 +305,9 @@ def tilt_acceleration(ring, par, omega, m_ring, tilt_rates):
 
 def ring_acceleration(ring, par, f_ring, velocity):
     """(x'', y'', z'') (m/s^2): the contacts' and the applied force plus the support's -k x - c v across the axis
-    (x, y; none along z), over the mass."""
+    (x, y) and its axial damper's -c_z v_z along it (z), over the mass."""
     support = -par[s.P_K_SUPPORT] * ring[s.R_X : s.R_X + 3] - par[s.P_C_SUPPORT] * velocity
-    support[2] = 0.0
+    support[2] = -par[s.P_C_SUPPORT_AXIAL] * velocity[2]
     return (f_ring + support) / par[s.P_M_RING]
 
 

@@ -60,7 +60,7 @@ def _scale_err(a, b):
         (1, STEPS // 3, 0.0, None, 0.0, False),
         (2, STEPS // 3, 0.0, None, 0.0, False),
         (0, STEPS // 3, 0.05, None, 0.0, False),
-        (0, STEPS // 3, 0.0, (2e7, 2e3), 0.0, False),
+        (0, STEPS // 3, 0.0, (2e7, 2e3, 1.5e3), 0.0, False),
         (0, STEPS // 3, 0.0, None, 10e-6, False),
         (0, STEPS // 3, 0.0, None, 0.0, True),
         (2, STEPS // 3, 0.0, None, 0.0, True),
@@ -69,10 +69,10 @@ def _scale_err(a, b):
 def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction, support, oil_gap, film_table):
     """Film formulas: 0 Hamrock-Dowson (the kernel's fused fast path), 1 Masjedi-Khonsari and 2 Chittenden
     (through kernels.ehl.film_thickness); the papers' mu(Lambda) and a traction limit of 0.05 (mixed film here:
-    the tangential limit differs from the Houpert terms' mu); a ring support with a spring and a damper far
-    above the defaults (N/m, N.s/m), so that their terms weigh in the ring's motion; the capacitance of the oil
-    around the contacts up to a 10 um gap (scene capacitance_region = 'lubricated'); the film correction on (a
-    table of made-up ratios) on the fused and on the general film path."""
+    the tangential limit differs from the Houpert terms' mu); a ring support with a spring, a damper across the
+    axis and one along it far above the defaults (N/m, N.s/m), so that their terms weigh in the ring's motion; the
+    capacitance of the oil around the contacts up to a 10 um gap (scene capacitance_region = 'lubricated'); the film
+    correction on (a table of made-up ratios) on the fused and on the general film path."""
     model = running_6208
     state = model.get_state()
     kernel_state = {k: (v.copy() if isinstance(v, np.ndarray) else v) for k, v in state.items()}
@@ -86,8 +86,8 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction, sup
         par[s.P_FILM_TABLE :] = made_up_table()
     if support is not None:
         lever = 0.5 * (0.5 * model.bearing.dm) ** 2
-        par[[s.P_K_SUPPORT, s.P_C_SUPPORT]] = support
-        par[[s.P_KT_SUPPORT, s.P_CT_SUPPORT]] = lever * np.array(support)
+        par[[s.P_K_SUPPORT, s.P_C_SUPPORT, s.P_C_SUPPORT_AXIAL]] = support
+        par[[s.P_KT_SUPPORT, s.P_CT_SUPPORT]] = lever * np.array(support[:2])
     lub = model.lubricant.array
     omega0, omega1, F, T_oil = 150.0, 160.0, (0.0, 3000.0, 0.0, 0.0, 0.0), 313.15  # F_y, on the line of ball 1
     if support is not None:

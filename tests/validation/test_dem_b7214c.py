@@ -130,7 +130,7 @@ def _check_outer_race_control(model, n_samples, hypotheses, torque_rel):
     }
     orc = hypotheses["outer"]
     print(
-        f"B7214C DEM, traction_limit {model.traction_limit}: cage {mean['omega_cage']:.2f} rad/s, torque "
+        f"B7214C DEM, traction_limit {model.settings['traction_limit']}: cage {mean['omega_cage']:.2f} rad/s, torque "
         f"{mean['torque']:.4f} N.m, alpha_i {math.degrees(mean['alpha_inner']):.2f} deg, alpha_o "
         f"{math.degrees(mean['alpha_outer']):.2f} deg, cage slip {samples[-1]['cage_slip']:.4f}"
     )

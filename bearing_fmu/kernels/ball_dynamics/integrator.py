@@ -59,6 +59,7 @@ from .state import (
     P_C_CB,
     P_C_GUIDE,
     P_C_SUPPORT,
+    P_C_SUPPORT_AXIAL,
     P_CAPACITANCE,
     P_CHATTER,
     P_CT_SUPPORT,
@@ -448,15 +449,19 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
     rigid_cage_torque(cage, work)
     # ---- corrector: new accelerations and velocities
     half = 0.5 * dt
-    # the ring's support across the axis (the shaft it sits on): a spring to its rest position and a damper on the
-    # predicted velocity in x and y; axially the bearing alone holds the ring
+    # the ring's support (the shaft it sits on): across the axis a spring to its rest position and a damper on the
+    # predicted velocity in x and y; along it a damper of its own, none by default (the bearing alone holds the
+    # ring axially; 0 adds no term, so the free ring's arithmetic stays as it is)
     inv_r = 1.0 / par[P_M_RING]
     k_s = par[P_K_SUPPORT]
     c_s = par[P_C_SUPPORT]
+    c_z = par[P_C_SUPPORT_AXIAL]
     for i in range(3):
         a = acc[A_FR + i]
         if i < 2:
             a -= k_s * ring[R_X + i] + c_s * acc[A_VR + i]
+        elif c_z != 0.0:
+            a -= c_z * acc[A_VR + 2]
         a *= inv_r
         ring[R_VX + i] += (ring[R_AX + i] + a) * half
         ring[R_AX + i] = a

@@ -155,10 +155,14 @@ P_I_RING = _P_SLOTS.slot()  # inner-ring moment of inertia about a diameter thro
 P_IP_RING = _P_SLOTS.slot()  # about its axis (kg.m^2): the gyroscopic moment of a tilting ring that turns at omega
 # stiffness of the inner ring's support across the axis (x, y), to its rest position (N/m)
 P_K_SUPPORT = _P_SLOTS.slot()
-P_C_SUPPORT = _P_SLOTS.slot()  # viscous damping of the support in x, y (N.s/m); none along the axis
+P_C_SUPPORT = _P_SLOTS.slot()  # viscous damping of the support in x, y (N.s/m)
+P_C_SUPPORT_AXIAL = _P_SLOTS.slot()  # and along the axis, z (N.s/m); 0 = none, the bearing alone holds the ring
 # the support's tilt stiffness (N.m/rad): P_K_SUPPORT spread over the pitch circle, k (d_m/2)^2/2
 P_KT_SUPPORT = _P_SLOTS.slot()
 P_CT_SUPPORT = _P_SLOTS.slot()  # and its tilt damping (N.m.s/rad), c (d_m/2)^2/2
+# the dampers on the ring's translations (N.s/m): the automatic step keeps each one's c / m within its plan, as a
+# contact's (models.dem.time_step)
+RING_DAMPERS = (P_C_SUPPORT, P_C_SUPPORT_AXIAL)
 P_OIL_GAP = _P_SLOTS.slot()  # oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
 # film correction table (kernels.film_correction layout, FT_SIZE slots; its FT_ON 0 = off)
 P_FILM_TABLE = _P_SLOTS.slot(FT_SIZE)

@@ -28,7 +28,8 @@ The modules, one responsibility each:
 - ``whirl``: the ring-orbit watch (a self-excited orbit of the ring on its support: monitor code 6, a warning).
 """
 
-from .inputs import COMMUNICATION_DIGITS, COMMUNICATION_RESOLUTION, T_OIL_DEFAULT, TRACTION_LIMIT_MAX
+from ..dem_settings import TRACTION_LIMIT_MAX
+from .inputs import COMMUNICATION_DIGITS, COMMUNICATION_RESOLUTION, T_OIL_DEFAULT
 from .model import REFRESH_INTERVAL, DemModel
 from .monitor import CHATTER_STEPS, DAMPING_PLAN, DAMPING_STOP, ENERGY_FACTOR, STATUS_WORDS, DemUnstableError
 from .outputs import AVERAGED_STATE

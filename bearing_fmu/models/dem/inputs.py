@@ -5,23 +5,23 @@ import math
 
 from bearing_fmu_common.variables import InputLimits
 
-from ...kernels.ehl import friction_coefficient
-from ...params import SUPPORT_DAMPING, SUPPORT_MASS, SUPPORT_STIFFNESS, clearance_limits
+from ...params import clearance_limits
 from ..declarations import DEM_DT_MAX, DEM_DT_MIN, DEM_INPUTS, DEM_REFRESH_MAX, T_OIL_START
+from ..dem_settings import checked_settings as checked_numeric_settings
 from ..limits import DM_N_LIMIT, MATERIAL_LIMIT, InputError
 from .packing import CONSTANTS
 
 T_OIL_DEFAULT = T_OIL_START  # K, the oil temperature of a call that gives none
-TRACTION_LIMIT_MAX = friction_coefficient(0.0)  # a full film carries no more than the boundary regime (0.1)
 # update()'s communication step is rounded to this grid (s), far below any DEM time step (0.1-10 us)
 COMMUNICATION_DIGITS = 12
 COMMUNICATION_RESOLUTION = 10.0**-COMMUNICATION_DIGITS
 
 
-def checked_settings(dt, refresh, safety, refresh_interval, traction_limit, support, kt_ratio, mass, inertia):
-    """Refuse a DemModel setting out of its range (the arguments of DemModel; support = (support_stiffness,
-    support_damping, support_mass), mass and inertia are ring_mass and ring_inertia); returns the ring's support
-    (N/m, N.s/m, kg) and kt_ratio, params/dem_model.toml's where None."""
+def checked_settings(dt, refresh, safety, refresh_interval, settings, kt_ratio, mass, inertia):
+    """Refuse a DemModel setting out of its range (the arguments of DemModel; settings = its keywords of
+    models.dem_settings.DEM_SETTINGS, mass and inertia are ring_mass and ring_inertia); returns those settings
+    checked (name -> value, the defaults of params/dem_model.toml where absent or None) and kt_ratio, the file's
+    where None."""
     if dt is not None and not (math.isfinite(dt) and DEM_DT_MIN <= dt <= DEM_DT_MAX):
         raise InputError(
             f"dt = {dt} s is outside the allowed range [{DEM_DT_MIN:g}, {DEM_DT_MAX:g}] s (in the FMU also 0 = "
@@ -37,17 +37,7 @@ def checked_settings(dt, refresh, safety, refresh_interval, traction_limit, supp
             f"refresh_interval = {refresh_interval} s is outside the allowed range [0, {DEM_REFRESH_MAX:g}] s "
             "(0 = every DEM step)"
         )
-    if not (math.isfinite(traction_limit) and 0.0 <= traction_limit <= TRACTION_LIMIT_MAX):
-        raise InputError(
-            f"traction_limit = {traction_limit} is outside the allowed range [0, {TRACTION_LIMIT_MAX:g}] "
-            "(0 = the lubricant's EHL traction curve; 0.01 = the papers' mu(Lambda))"
-        )
-    stiffness, damping, support_mass = support
-    support = (
-        _checked_support("support_stiffness", stiffness, CONSTANTS.support_stiffness, SUPPORT_STIFFNESS),
-        _checked_support("support_damping", damping, CONSTANTS.support_damping, SUPPORT_DAMPING),
-        _checked_support("support_mass", support_mass, CONSTANTS.support_mass, SUPPORT_MASS),
-    )
+    settings = checked_numeric_settings(settings)
     kt_ratio = CONSTANTS.kt_ratio if kt_ratio is None else kt_ratio
     if not (math.isfinite(kt_ratio) and 0.1 <= kt_ratio <= 1.5):
         raise InputError(f"kt_ratio = {kt_ratio} is outside the allowed range [0.1, 1.5]")
@@ -55,15 +45,7 @@ def checked_settings(dt, refresh, safety, refresh_interval, traction_limit, supp
         raise InputError(f"ring_mass = {mass} kg is outside the allowed range ]0, inf[ kg")
     if inertia is not None and not (math.isfinite(inertia) and inertia > 0.0):
         raise InputError(f"ring_inertia = {inertia} kg.m^2 is outside the allowed range ]0, inf[ kg.m^2")
-    return support, kt_ratio
-
-
-def _checked_support(name, value, default, spec):
-    """A support constant (spec's unit) from the argument, or the constants file's when None; checked."""
-    value = default if value is None else float(value)
-    if not (math.isfinite(value) and spec.low <= value <= spec.high):
-        raise InputError(f"{name} = {value} {spec.unit} is outside the allowed range [{spec.low:g}, {spec.high:g}]")
-    return value
+    return settings, kt_ratio
 
 
 def speed_limit(bearing):

@@ -18,6 +18,7 @@ from ...params import check_roughness, load_bearing, load_lubricant
 from ...scene import Scene
 from ..declarations import DEM_INPUTS, DEM_OUTPUTS, DEM_PARAMETERS
 from ..declarations import DEM_REFRESH_INTERVAL as REFRESH_INTERVAL
+from ..dem_settings import settings_doc
 from ..fidelity import Fidelity
 from ..input_checks import check_clearance
 from ..limits import P_MAX_ERROR, InputError, OilTemperatureWatch, pressure_warnings
@@ -43,22 +44,15 @@ class DemModel:
     estimated from the same annulus (the polar moment, for the ring's gyroscopic moment, is always the annulus's
     for the ring's mass).
     kt_ratio: tangential/normal stiffness (-) of the asperities' spring; None = params/dem_model.toml's.
-    support_stiffness (N/m), support_damping (N.s/m): the inner ring's support, a spring to its rest position and a
-    damper across the axis (x, y; none along z), the same spread over the pitch circle in the tilts (k (d_m/2)^2/2,
-    c (d_m/2)^2/2); None = params/dem_model.toml's (no spring; 1000 N.s/m, the shaft it sits on: docs/dem.md, Ring
-    support). support_mass (kg): the shaft's modal mass at the seat, added to the ring's mass in x, y, z and, spread
-    over the pitch circle (m (d_m/2)^2/2), to its tilt inertia; None = params/dem_model.toml's (0: the ring alone).
-    traction_limit: 0 (default) = the tangential force of the film is the lubricant's EHL traction curve
-    (kernels.ehl.film_traction_coefficient,
-    the film's share ehl.film_share(Lambda)), the asperities' share a spring capped at the boundary friction;
-    > 0 = override: a spring alone, capped at the ramp from 0.1 at Lambda = 1 to traction_limit in a full film
-    (kernels.ehl.traction_coefficient; 0.01 = the papers' mu(Lambda)) (docs/dem.md, Tangential force).
     averaged: True (default) reports torque, P_loss, Q_inner_ring,
     Q_outer_ring and C_bearing as means over each advance() interval (what a co-simulation partner integrates:
     the energy of the step), False their values at the interval's last step (docs/dem.md, Outputs).
     averaged_state: False (default) reports the loads, pressure, films and the ring's displacement at the end of
     each interval; True as means over it (the displacement over its steps, the others over its tribology
     refreshes): for masters that sample slower than the ball pass (docs/dem.md, Outputs).
+    The numeric settings of models.dem_settings.DEM_SETTINGS are keywords too (the FMU parameters of the same
+    names): the traction_limit of the tangential law (docs/dem.md, Tangential force) and the inner ring's support
+    (docs/dem.md, Ring support); each is listed below with its unit, range and default.
     """
 
     def __init__(
@@ -72,14 +66,11 @@ class DemModel:
         ring_mass=None,
         kt_ratio=None,
         ring_inertia=None,
-        support_stiffness=None,
-        support_damping=None,
-        support_mass=None,
         safety=SAFETY,
         refresh_interval=REFRESH_INTERVAL,
         averaged=True,
-        traction_limit=0.0,
         averaged_state=False,
+        **settings,
     ):
         self.scene = (scene or Scene(name="dem", fidelity="dem")).validate()
         if self.scene.fidelity != "dem":
@@ -89,11 +80,10 @@ class DemModel:
         check_roughness(b.Ra_inner, b.Ra_outer, b.Ra_ball, b.path)  # the reader's check, for a Bearing made by hand
         self.Pd = b.Pd if Pd is None else float(Pd)
         check_clearance(self.Pd, b, Pd is not None)
-        self.support, kt_ratio = inputs.checked_settings(
-            dt, refresh, safety, refresh_interval, traction_limit, (support_stiffness, support_damping, support_mass),
-            kt_ratio, ring_mass, ring_inertia,
-        )  # fmt: skip
-        self.traction_limit = float(traction_limit)
+        # the numeric settings of DEM_SETTINGS by name (checked, the defaults filled in)
+        self.settings, kt_ratio = inputs.checked_settings(
+            dt, refresh, safety, refresh_interval, settings, kt_ratio, ring_mass, ring_inertia
+        )
         self.averaged = bool(averaged)
         self.averaged_state = bool(averaged_state)
         self.safety = float(safety)
@@ -105,7 +95,7 @@ class DemModel:
         self.refresh_fixed = None if refresh is None else int(refresh)
         self.omega_max = inputs.speed_limit(b)
         self.par, self._truncation_parameters, self._rest = pack_parameters(
-            b, self.scene, self.lubricant, self.Pd, self.support, self.traction_limit, kt_ratio, ring_mass, ring_inertia
+            b, self.scene, self.lubricant, self.Pd, self.settings, kt_ratio, ring_mass, ring_inertia
         )
         self.load_limit = load_limit(self.par, b.Z)
         self._limits = inputs.input_limits(b, self.Pd, self.load_limit, self.omega_max)
@@ -298,13 +288,14 @@ class DemModel:
         return warning
 
     def _whirl_warning(self, v):
-        stiffness, damping, mass = self.support
+        support = self.settings
         return (
             f"the inner ring whirls ({v.kind} orbit at t = {self.time:.6g} s): {v.r * 1e6:.3g} um rms orbit and "
             f"{v.t * 1e3:.3g} mrad rms tilt at {v.f:.4g} Hz, not a shaft, cage, ball or ball-pass frequency; "
             f"{v.e / v.delta:.2g} x the contact deflection {v.delta * 1e6:.3g} um. A self-excited motion of the ring "
-            f"driven by the contacts' traction on its support (support_damping = {damping:g} N.s/m, "
-            f"support_stiffness = {stiffness:g} N/m, support_mass = {mass:g} kg): the torque, loads and "
+            f"driven by the contacts' traction on its support (support_damping = {support['support_damping']:g} N.s/m, "
+            f"support_stiffness = {support['support_stiffness']:g} N/m, support_mass = {support['support_mass']:g} "
+            "kg): the torque, loads and "
             "films describe the whirling ring. A shaft at the seat damps it: raise support_damping or give the "
             "shaft's modal stiffness and mass (thresholds in docs/dem.md, Ring support)"
         )
@@ -461,6 +452,8 @@ class DemModel:
         self._copy_state(self.__dict__, self._start)
         self.omega = self._start["omega"]
 
+
+DemModel.__doc__ = f"{DemModel.__doc__.rstrip()}\n\n{settings_doc()}"
 
 REFERENCE_STEP = 0.5e-3  # s, communication step of the DEM reference experiment
 

@@ -11,6 +11,7 @@ from ...kernels.ball_dynamics import state as s
 from ...kernels.geometry import ball_mass
 from ...kernels.hertz import hertz_contact, hertz_stiffness
 from ...params import cage_ball_room, load_dem_constants
+from ..dem_settings import pack_settings, pitch_lever
 from ..film_table import film_table_array
 from ..limits import P_MAX_ERROR, InputError
 from ..race_contacts import contact_terms, pack, race_contacts, truncation_parameters
@@ -19,7 +20,7 @@ from .placement import ball_rest_position
 
 # the contact model's constants with their units and sources (params/dem_model.toml): the cage elements' default
 # material (the papers' PA66) and pocket play, the hysteretic damping constant alpha_e, the tangential stiffness
-# ratio, the ring's support
+# ratio (the defaults of the settings a user changes are read by models.dem_settings)
 CONSTANTS = load_dem_constants()
 V_REG = 1e-3  # m/s, speed below which the resistances' directions are regularised
 # the film's traction is evaluated linearly implicitly in the slip: a force at the surface of a solid sphere
@@ -56,9 +57,9 @@ def ring_inertia(bearing, mass):
     return mass * (0.25 * radii + width**2 / 12.0), 0.5 * mass * radii
 
 
-def pack_parameters(bearing, scene, lubricant, Pd, support, traction_limit, kt_ratio, mass=None, inertia=None):
+def pack_parameters(bearing, scene, lubricant, Pd, settings, kt_ratio, mass=None, inertia=None):
     """The parameter array (float64[P_SIZE]) of a bearing with diametral clearance Pd (m) and the model's settings
-    (checked: support = (stiffness N/m, damping N.s/m, mass kg), traction_limit, kt_ratio; the ring's mass (kg) and
+    (checked: settings = name -> value of models.dem_settings.DEM_SETTINGS, kt_ratio; the ring's mass (kg) and
     inertia about a diameter (kg.m^2), None = estimated); returns it with the shoulders' truncation parameters
     (models.race_contacts.truncation_parameters) and the balls' rest position (placement.ball_rest_position).
     Raises InputError when estimated cage balls find no room between the balls."""
@@ -90,10 +91,6 @@ def pack_parameters(bearing, scene, lubricant, Pd, support, traction_limit, kt_r
     pack(p, s, "P_", contact_terms(b, sc, rc))
     p[s.P_ALPHA_E] = CONSTANTS.alpha_e
     p[s.P_KT_RATIO] = kt_ratio
-    p[s.P_K_SUPPORT], p[s.P_C_SUPPORT], support_mass = support
-    lever = 0.5 * (0.5 * b.dm) ** 2  # a support spread over the pitch circle, about a diameter (m^2)
-    p[s.P_KT_SUPPORT] = lever * p[s.P_K_SUPPORT]
-    p[s.P_CT_SUPPORT] = lever * p[s.P_C_SUPPORT]
     p[s.P_V_REG] = V_REG
     rest = ball_rest_position(b, Pd, p[s.P_KH_I], p[s.P_KH_O])
     _pack_cage(p, b, rest)
@@ -101,15 +98,14 @@ def pack_parameters(bearing, scene, lubricant, Pd, support, traction_limit, kt_r
     p[s.P_I_RING], p[s.P_IP_RING] = ring_inertia(b, p[s.P_M_RING])
     if inertia is not None:
         p[s.P_I_RING] = float(inertia)
-    # the shaft's modal mass at the seat moves with the ring: in the translations, and in the tilts spread over the
-    # pitch circle like the support's spring and damper, m (d_m/2)^2/2; its polar inertia and gyroscopic moment
-    # stay the ring's (a spinning shaft's gyroscopic coupling is the shaft model's)
-    p[s.P_M_RING] += support_mass
-    p[s.P_I_RING] += lever * support_mass
+    pack_settings(p, settings)  # after the ring's own mass and inertia, which the shaft's modal mass adds to
+    # the support in the tilts: its spring and damper spread over the pitch circle
+    lever = pitch_lever(b.dm)
+    p[s.P_KT_SUPPORT] = lever * p[s.P_K_SUPPORT]
+    p[s.P_CT_SUPPORT] = lever * p[s.P_C_SUPPORT]
     _pack_hertz_scales(p, rc)
     p[s.P_CHATTER] = CHATTER_STEPS
     p[s.P_DAMPING_STOP] = DAMPING_STOP
-    p[s.P_TRACTION] = traction_limit
     p[s.P_FILM_TABLE :] = film_table_array(b, lubricant, sc.film_correction)
     p[s.P_MU_LIM] = lubricant.traction_limit
     p[s.P_S_TRACTION] = lubricant.traction_slip

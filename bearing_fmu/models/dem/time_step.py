@@ -72,7 +72,7 @@ def automatic_time_step(stable, safety, par, trib):
     if support > 0.0:
         dt = min(dt, safety * 2.0 / math.sqrt(support))
     ratio = damping_step_ratio(trib, p, 1.0)[0]  # largest c / m (1/s)
-    ratio = max(ratio, p[s.P_C_SUPPORT] / p[s.P_M_RING], p[s.P_CT_SUPPORT] / p[s.P_I_RING])
+    ratio = max(ratio, *(p[slot] / p[s.P_M_RING] for slot in s.RING_DAMPERS), p[s.P_CT_SUPPORT] / p[s.P_I_RING])
     return min(dt, DAMPING_PLAN / ratio) if ratio > 0.0 else dt
 
 
