@@ -393,7 +393,8 @@ class _Version(argparse.Action):
         parser.exit()
 
 
-def main(argv=None):
+def _parser():
+    """The command line: the `spindle` parser and its subcommands."""
     parser = argparse.ArgumentParser(
         prog="spindle",
         description="bearing/spindle co-simulation tools",
@@ -403,6 +404,14 @@ def main(argv=None):
     parser.add_argument("--version", action=_Version)
     sub = parser.add_subparsers(dest="command", required=True)
     raw = argparse.RawDescriptionHelpFormatter
+    _add_run_commands(sub, raw)
+    _add_fmu_commands(sub)
+    _add_film_commands(sub)
+    return parser
+
+
+def _add_run_commands(sub, raw):
+    """build, run and sweep."""
     p = sub.add_parser("build", help=f"build every FMU into {FMUS}, or the configured FMUs of --config")
     p.add_argument("--out", default=str(FMUS))
     p.add_argument(
@@ -451,6 +460,10 @@ def main(argv=None):
         "note, when dask is not installed and no --scheduler is given)",
     )
     p.add_argument("--out", default="results")
+
+
+def _add_fmu_commands(sub):
+    """info, demo, validate, check and export-ssp."""
     p = sub.add_parser("info", help="what the FMUs expose")
     p.add_argument("fmus", nargs="*")
     p = sub.add_parser("demo", help="closed-loop demo (runs/closed_loop_spring.toml): CSV + PNG")
@@ -470,6 +483,10 @@ def main(argv=None):
     p.add_argument("--out", default=None, metavar="FILE", help="the .ssp file (default: <runfile stem>.ssp here)")
     p.add_argument("--set", action="append", metavar="KEY=VALUE", help="override, e.g. bearing_1.F_z=1000")
     p.add_argument("--fmus", default=None, metavar="DIR", help="folder of the FMUs the run file names")
+
+
+def _add_film_commands(sub):
+    """film and film-table: the film formulas against the numerical EHL solver, the film correction table."""
     p = sub.add_parser(
         "film",
         help="film formulas against the numerical EHL solver at the most loaded contacts of an operating point",
@@ -506,6 +523,10 @@ def main(argv=None):
     p.add_argument("bearing", help="bearing name or file (e.g. 6208, B7214C)")
     p.add_argument("--lubricant", required=True, help="lubricant name or file (e.g. iso_vg68_mineral)")
     p.add_argument("--jobs", type=int, default=1, help="processes solving the nodes (default 1)")
+
+
+def main(argv=None):
+    parser = _parser()
     args = parser.parse_args(argv)
     handler = {
         "build": cmd_build,
