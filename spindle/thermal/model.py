@@ -161,6 +161,55 @@ def load_spindle(name_or_path):
     path = _resolve(name_or_path)
     doc = read_toml(path, "spindle")
     where = str(path)
+    nodes, C, boundaries, b_inputs = _nodes_and_boundaries(doc, where)
+    everything = nodes + boundaries
+    if not nodes or not boundaries or len(set(everything)) != len(everything):
+        raise ParameterError(f"{where}: needs >= 1 [[node]] and >= 1 [[boundary]], all names distinct")
+    index = {name: i for i, name in enumerate(everything)}
+    n = len(nodes)
+    node_index = {name: i for i, name in enumerate(nodes)}
+
+    air = doc.get("air", {})
+    links, kinds, par, ends_i, ends_j = [], [], [], [], []
+    for k, entry in enumerate(doc.get("link", [])):
+        label, kind, code, row, i, j = _link(entry, k, index, everything, n, air, where)
+        links.append((label, kind))
+        kinds.append(code)
+        par.append(row)
+        ends_i.append(i)
+        ends_j.append(j)
+    _check_paths(nodes, n, ends_i, ends_j, kinds, where)
+    heat_names, heat_text, columns = _heat_inputs(doc, nodes, node_index, b_inputs, where)
+
+    exp = doc.get("expansion", {})
+    T_ref = _quantity(exp, "T_ref", "K", f"{where} [expansion]", high=T_MAX)
+    alpha_b = _quantity(exp, "alpha_bearing", "1/K", f"{where} [expansion]", low=0.0, high=1e-3, low_open=False)
+    bearings = tuple(_bearing_entry(e, k + 1, node_index, where) for k, e in enumerate(doc.get("bearing", [])))
+    axial = _axial(doc.get("axial"), node_index, len(bearings), where)
+    return Network(
+        name=str(doc.get("meta", {}).get("name", path.stem)),
+        path=str(path),
+        nodes=tuple(nodes),
+        C=np.array(C),
+        boundaries=tuple(boundaries),
+        boundary_inputs=tuple(b_inputs),
+        links=tuple(links),
+        kinds=np.array(kinds, dtype=np.int64),
+        par=np.array(par).reshape(len(par), nk.PAR_SIZE),
+        ends_i=np.array(ends_i, dtype=np.int64),
+        ends_j=np.array(ends_j, dtype=np.int64),
+        heat_names=tuple(heat_names),
+        heat_text=tuple(heat_text),
+        dist=np.array(columns).T.reshape(n, len(columns)),
+        T_ref=T_ref,
+        alpha_bearing=alpha_b,
+        bearings=bearings,
+        axial=axial,
+    )
+
+
+def _nodes_and_boundaries(doc, where):
+    """The [[node]] names and heat capacities (J/K) and the [[boundary]] names and input names of a network."""
     nodes, C = [], []
     for k, entry in enumerate(doc.get("node", [])):
         name = entry.get("name")
@@ -175,58 +224,52 @@ def load_spindle(name_or_path):
             raise ParameterError(f"{where}: [[boundary]] #{k + 1} needs a name and an input name")
         boundaries.append(name)
         b_inputs.append(inp)
-    everything = nodes + boundaries
-    if not nodes or not boundaries or len(set(everything)) != len(everything):
-        raise ParameterError(f"{where}: needs >= 1 [[node]] and >= 1 [[boundary]], all names distinct")
-    index = {name: i for i, name in enumerate(everything)}
+    return nodes, C, boundaries, b_inputs
+
+
+def _link(entry, k, index, everything, n, air, where):
+    """One [[link]] (the k-th): its label, kind, kernel code, parameter row and its ends (node first)."""
+    between = entry.get("between")
+    lw = f"{where} [[link]] #{k + 1} {between}"
+    if (
+        not isinstance(between, list)
+        or len(between) != 2
+        or between[0] == between[1]
+        or any(e not in index for e in between)
+    ):
+        raise ParameterError(f"{lw}: 'between' must name two different nodes/boundaries of {everything}")
+    i, j = index[between[0]], index[between[1]]
+    if i >= n and j >= n:
+        raise ParameterError(f"{lw}: a link between two boundaries has no effect on the network")
+    if i >= n:
+        i, j = j, i  # node first
+    kind = entry.get("kind")
+    if kind == "convection" and entry.get("correlation") == "rotating_shaft":
+        kind = "rotating_shaft"
+    elif kind == "convection" and "correlation" in entry:
+        raise ParameterError(f"{lw}: correlation = {entry['correlation']!r}, allowed: 'rotating_shaft'")
+    if kind not in LINK_KINDS:
+        raise ParameterError(
+            f"{lw}: kind = {kind!r}, allowed: {', '.join(k for k in LINK_KINDS if k != 'rotating_shaft')}"
+        )
+    if kind == "advection" and j < n:
+        raise ParameterError(f"{lw}: an advection link carries a flow from a boundary (inlet) to a node")
+    code, keys = LINK_KINDS[kind]
+    row = np.zeros(nk.PAR_SIZE)
+    for q, (key, unit) in enumerate(keys):
+        row[q] = _quantity(entry, key, unit, lw)
+    if kind == "shell" and not row[3] > row[2]:
+        raise ParameterError(f"{lw}: r_outer = {row[3]} m must exceed r_inner = {row[2]} m")
+    if kind == "rotating_shaft":
+        row[2] = _quantity(air, "conductivity", "W/m/K", f"{where} [air]")
+        row[3] = _quantity(air, "kinematic_viscosity", "m^2/s", f"{where} [air]")
+        row[4] = _quantity(air, "prandtl", "-", f"{where} [air]")
+    return entry.get("name", f"{between[0]}--{between[1]}"), kind, code, row, i, j
+
+
+def _heat_inputs(doc, nodes, node_index, b_inputs, where):
+    """The [[heat_input]] names, descriptions and their split over the nodes (a column of fractions each)."""
     n = len(nodes)
-    node_index = {name: i for i, name in enumerate(nodes)}
-
-    air = doc.get("air", {})
-    links, kinds, par, ends_i, ends_j = [], [], [], [], []
-    for k, entry in enumerate(doc.get("link", [])):
-        between = entry.get("between")
-        lw = f"{where} [[link]] #{k + 1} {between}"
-        if (
-            not isinstance(between, list)
-            or len(between) != 2
-            or between[0] == between[1]
-            or any(e not in index for e in between)
-        ):
-            raise ParameterError(f"{lw}: 'between' must name two different nodes/boundaries of {everything}")
-        i, j = index[between[0]], index[between[1]]
-        if i >= n and j >= n:
-            raise ParameterError(f"{lw}: a link between two boundaries has no effect on the network")
-        if i >= n:
-            i, j = j, i  # node first
-        kind = entry.get("kind")
-        if kind == "convection" and entry.get("correlation") == "rotating_shaft":
-            kind = "rotating_shaft"
-        elif kind == "convection" and "correlation" in entry:
-            raise ParameterError(f"{lw}: correlation = {entry['correlation']!r}, allowed: 'rotating_shaft'")
-        if kind not in LINK_KINDS:
-            raise ParameterError(
-                f"{lw}: kind = {kind!r}, allowed: {', '.join(k for k in LINK_KINDS if k != 'rotating_shaft')}"
-            )
-        if kind == "advection" and j < n:
-            raise ParameterError(f"{lw}: an advection link carries a flow from a boundary (inlet) to a node")
-        code, keys = LINK_KINDS[kind]
-        row = np.zeros(nk.PAR_SIZE)
-        for q, (key, unit) in enumerate(keys):
-            row[q] = _quantity(entry, key, unit, lw)
-        if kind == "shell" and not row[3] > row[2]:
-            raise ParameterError(f"{lw}: r_outer = {row[3]} m must exceed r_inner = {row[2]} m")
-        if kind == "rotating_shaft":
-            row[2] = _quantity(air, "conductivity", "W/m/K", f"{where} [air]")
-            row[3] = _quantity(air, "kinematic_viscosity", "m^2/s", f"{where} [air]")
-            row[4] = _quantity(air, "prandtl", "-", f"{where} [air]")
-        links.append((entry.get("name", f"{between[0]}--{between[1]}"), kind))
-        kinds.append(code)
-        par.append(row)
-        ends_i.append(i)
-        ends_j.append(j)
-    _check_paths(nodes, n, ends_i, ends_j, kinds, where)
-
     heat_names, heat_text, columns = [], [], []
     for entry in doc.get("heat_input", []):
         name, split = entry.get("name"), entry.get("split")
@@ -254,31 +297,7 @@ def load_spindle(name_or_path):
         heat_text.append(str(entry.get("description", f"heat input {name}")))
         columns.append(col)
 
-    exp = doc.get("expansion", {})
-    T_ref = _quantity(exp, "T_ref", "K", f"{where} [expansion]", high=T_MAX)
-    alpha_b = _quantity(exp, "alpha_bearing", "1/K", f"{where} [expansion]", low=0.0, high=1e-3, low_open=False)
-    bearings = tuple(_bearing_entry(e, k + 1, node_index, where) for k, e in enumerate(doc.get("bearing", [])))
-    axial = _axial(doc.get("axial"), node_index, len(bearings), where)
-    return Network(
-        name=str(doc.get("meta", {}).get("name", path.stem)),
-        path=str(path),
-        nodes=tuple(nodes),
-        C=np.array(C),
-        boundaries=tuple(boundaries),
-        boundary_inputs=tuple(b_inputs),
-        links=tuple(links),
-        kinds=np.array(kinds, dtype=np.int64),
-        par=np.array(par).reshape(len(par), nk.PAR_SIZE),
-        ends_i=np.array(ends_i, dtype=np.int64),
-        ends_j=np.array(ends_j, dtype=np.int64),
-        heat_names=tuple(heat_names),
-        heat_text=tuple(heat_text),
-        dist=np.array(columns).T.reshape(n, len(columns)),
-        T_ref=T_ref,
-        alpha_bearing=alpha_b,
-        bearings=bearings,
-        axial=axial,
-    )
+    return heat_names, heat_text, columns
 
 
 def _check_paths(nodes, n, ends_i, ends_j, kinds, where):
