@@ -140,7 +140,19 @@ class QuasiStaticModel:
         self.qs, self.cp = self._pack()
         self.groove = (b.f_i + b.f_o - 1.0) * b.D
         self.load_limit = self._load_limit()
-        Z = b.Z
+        self._allocate(b.Z)
+        self.F_preload = float(F_preload)
+        if self.F_preload and self.scene.drive != "fixed_axial":
+            raise InputError(
+                f"F_preload = {F_preload} N needs drive = 'fixed_axial' (scene '{self.scene.name}' "
+                f"has drive {self.scene.drive!r})"
+            )
+        _PARAMETERS["F_preload"].check(self.F_preload, 0.0, self.load_limit, "the upper bound is the material limit")
+        self.z0 = self.axial_approach(self.F_preload) if self.F_preload else 0.0
+        self._plan_variables()
+
+    def _allocate(self, Z):
+        """The solver's arrays for Z balls, the outputs at rest and the watches that warn once per entry."""
         self.d = np.zeros(5)
         self.X = np.zeros((jones_harris.X_SIZE, Z))
         self.F = np.zeros(5)
@@ -159,14 +171,10 @@ class QuasiStaticModel:
         self._trunc = np.zeros(tk.TR_SIZE)
         self._truncated = [0.0, 0.0]  # per race the truncated fraction at its last warning (0: not truncated)
         self._friction = FrictionWatch(self.race_control, self.lubricant.traction_limit, self.lubricant.name)
-        self.F_preload = float(F_preload)
-        if self.F_preload and self.scene.drive != "fixed_axial":
-            raise InputError(
-                f"F_preload = {F_preload} N needs drive = 'fixed_axial' (scene '{self.scene.name}' "
-                f"has drive {self.scene.drive!r})"
-            )
-        _PARAMETERS["F_preload"].check(self.F_preload, 0.0, self.load_limit, "the upper bound is the material limit")
-        self.z0 = self.axial_approach(self.F_preload) if self.F_preload else 0.0
+
+    def _plan_variables(self):
+        """The scene's inputs and outputs, where each output comes from (kernels.bearing_outputs codes) and where
+        update() finds each input in its list u (positions resolved once, not a dict per step)."""
         self.inputs = select(QUASI_STATIC_INPUTS, self.scene)
         self.input_names = tuple(v.name for v in self.inputs)
         self._input_starts = {v.name: v.start for v in self.inputs}
@@ -193,7 +201,6 @@ class QuasiStaticModel:
         self._K_flat = self.K.reshape(-1)  # a view: the solver writes K in place
         self._summary = np.zeros(bo.BS_SIZE)
         self._load_controlled = tuple(bool(c) for c in self.control)  # per DOF, as plain booleans
-        # where update() finds each input in its list u (positions resolved once, not a dict per step)
         position = {name: k for k, name in enumerate(self.input_names)}
         self._u_omega, self._u_T_oil = position["omega"], position["T_oil"]
         self._u_dPd, self._u_dz = position.get("dPd_thermal"), position.get("dz_thermal")

@@ -128,58 +128,9 @@ def lubricant_from_document(doc, path):
     piezo = doc.get("pressure_viscosity", {}).get("model", "constant")
     dens = doc.get("density", {}).get("model", "linear")
 
-    if dens == "murnaghan":
-        arr[lk.LUB_DENS_MODEL] = lk.DENSITY_MURNAGHAN
-        arr[lk.LUB_RHO_REF] = _value(doc, "density.rho_R", DENSITY, path)
-        arr[lk.LUB_T_REF] = _value(doc, "density.T_R", TEMPERATURE, path)
-        arr[lk.LUB_EXPANSION] = _value(doc, "density.a_v", Spec("1/K", 0.0, 1e-2), path)
-        arr[lk.LUB_MURN_BETA_K] = _value(doc, "density.beta_K", Spec("1/K", 0.0, 1.0), path)
-        arr[lk.LUB_MURN_K_MM] = _value(doc, "density.K_MM", Spec("Pa", 1e6, 1e13, True), path)
-        arr[lk.LUB_MURN_K_PRIME] = _value(doc, "density.K_M_prime", Spec("-", 0.0, 100.0, True), path)
-    elif dens == "linear":
-        arr[lk.LUB_DENS_MODEL] = lk.DENSITY_LINEAR
-        arr[lk.LUB_RHO_REF] = _value(doc, "density.rho_ref", DENSITY, path)
-        arr[lk.LUB_T_REF] = _value(doc, "density.T_ref", TEMPERATURE, path)
-        arr[lk.LUB_EXPANSION] = _value(doc, "density.thermal_expansion", Spec("1/K", 0.0, 1e-2), path)
-    else:
-        raise ParameterError(f"{path}: 'density.model' = {dens!r}, allowed: 'linear', 'murnaghan'")
-
-    if visc == "constant":
-        arr[lk.LUB_VISC_MODEL] = lk.VISCOSITY_CONSTANT
-        arr[lk.LUB_ETA_CONST] = _value(doc, "viscosity.dynamic_viscosity", Spec("Pa.s", 0.0, 1e4, True), path)
-    elif visc == "walther":
-        arr[lk.LUB_VISC_MODEL] = lk.VISCOSITY_WALTHER
-        nu_spec = Spec("m^2/s", 2e-6, 1.0)  # ASTM D341 holds for nu >= 2 mm^2/s
-        nu1 = _value(doc, "viscosity.nu_1", nu_spec, path)
-        T1 = _value(doc, "viscosity.T_1", TEMPERATURE, path)
-        nu2 = _value(doc, "viscosity.nu_2", nu_spec, path)
-        T2 = _value(doc, "viscosity.T_2", TEMPERATURE, path)
-        if not (T2 > T1 and nu2 < nu1):
-            raise ParameterError(
-                f"{path}: 'viscosity.T_1' = {T1} K, 'viscosity.T_2' = {T2} K, 'viscosity.nu_1' = {nu1} m^2/s and "
-                f"'viscosity.nu_2' = {nu2} m^2/s are not allowed: the Walther law needs T_2 > T_1 and nu_2 < nu_1 "
-                "(viscosity falls with temperature)"
-            )
-        arr[lk.LUB_WALTHER_A], arr[lk.LUB_WALTHER_B] = lk.walther_constants(nu1, T1, nu2, T2)
-    elif visc == "wlf":
-        arr[lk.LUB_VISC_MODEL] = lk.VISCOSITY_WLF
-        _pack_wlf(doc, arr, path)
-    else:
-        raise ParameterError(f"{path}: 'viscosity.model' = {visc!r}, allowed: 'constant', 'walther', 'wlf'")
-
-    if piezo == "constant":
-        arr[lk.LUB_PIEZO_MODEL] = lk.PIEZO_CONSTANT
-        arr[lk.LUB_XI_CONST] = _value(doc, "pressure_viscosity.coefficient", Spec("1/Pa", 0.0, 1e-6, True), path)
-    elif piezo == "gold":
-        arr[lk.LUB_PIEZO_MODEL] = lk.PIEZO_GOLD
-        arr[lk.LUB_GOLD_S] = _value(doc, "pressure_viscosity.s", Spec("1/Pa", 0.0, 1e-6, True), path)
-        arr[lk.LUB_GOLD_T] = _value(doc, "pressure_viscosity.t", Spec("-", -2.0, 2.0), path)
-    elif piezo == "wlf":
-        if visc != "wlf":
-            raise ParameterError(f"{path}: 'pressure_viscosity.model' = 'wlf' needs 'viscosity.model' = 'wlf'")
-        arr[lk.LUB_PIEZO_MODEL] = lk.PIEZO_WLF
-    else:
-        raise ParameterError(f"{path}: 'pressure_viscosity.model' = {piezo!r}, allowed: 'constant', 'gold', 'wlf'")
+    _pack_density(doc, arr, path, dens)
+    _pack_viscosity(doc, arr, path, visc)
+    _pack_pressure_viscosity(doc, arr, path, piezo, visc)
 
     arr[lk.LUB_EPS_R0] = _value(doc, "electrical.relative_permittivity", Spec("-", 1.0, 100.0, True), path)
     reference = {
@@ -207,6 +158,68 @@ def lubricant_from_document(doc, path):
         T_low=T_low,
         T_high=T_high,
     )
+
+
+def _pack_density(doc, arr, path, dens):
+    """The density model `dens` of a lubricant file into its array (kernels.lubricant LUB_*)."""
+    if dens == "murnaghan":
+        arr[lk.LUB_DENS_MODEL] = lk.DENSITY_MURNAGHAN
+        arr[lk.LUB_RHO_REF] = _value(doc, "density.rho_R", DENSITY, path)
+        arr[lk.LUB_T_REF] = _value(doc, "density.T_R", TEMPERATURE, path)
+        arr[lk.LUB_EXPANSION] = _value(doc, "density.a_v", Spec("1/K", 0.0, 1e-2), path)
+        arr[lk.LUB_MURN_BETA_K] = _value(doc, "density.beta_K", Spec("1/K", 0.0, 1.0), path)
+        arr[lk.LUB_MURN_K_MM] = _value(doc, "density.K_MM", Spec("Pa", 1e6, 1e13, True), path)
+        arr[lk.LUB_MURN_K_PRIME] = _value(doc, "density.K_M_prime", Spec("-", 0.0, 100.0, True), path)
+    elif dens == "linear":
+        arr[lk.LUB_DENS_MODEL] = lk.DENSITY_LINEAR
+        arr[lk.LUB_RHO_REF] = _value(doc, "density.rho_ref", DENSITY, path)
+        arr[lk.LUB_T_REF] = _value(doc, "density.T_ref", TEMPERATURE, path)
+        arr[lk.LUB_EXPANSION] = _value(doc, "density.thermal_expansion", Spec("1/K", 0.0, 1e-2), path)
+    else:
+        raise ParameterError(f"{path}: 'density.model' = {dens!r}, allowed: 'linear', 'murnaghan'")
+
+
+def _pack_viscosity(doc, arr, path, visc):
+    """The viscosity model `visc` of a lubricant file into its array."""
+    if visc == "constant":
+        arr[lk.LUB_VISC_MODEL] = lk.VISCOSITY_CONSTANT
+        arr[lk.LUB_ETA_CONST] = _value(doc, "viscosity.dynamic_viscosity", Spec("Pa.s", 0.0, 1e4, True), path)
+    elif visc == "walther":
+        arr[lk.LUB_VISC_MODEL] = lk.VISCOSITY_WALTHER
+        nu_spec = Spec("m^2/s", 2e-6, 1.0)  # ASTM D341 holds for nu >= 2 mm^2/s
+        nu1 = _value(doc, "viscosity.nu_1", nu_spec, path)
+        T1 = _value(doc, "viscosity.T_1", TEMPERATURE, path)
+        nu2 = _value(doc, "viscosity.nu_2", nu_spec, path)
+        T2 = _value(doc, "viscosity.T_2", TEMPERATURE, path)
+        if not (T2 > T1 and nu2 < nu1):
+            raise ParameterError(
+                f"{path}: 'viscosity.T_1' = {T1} K, 'viscosity.T_2' = {T2} K, 'viscosity.nu_1' = {nu1} m^2/s and "
+                f"'viscosity.nu_2' = {nu2} m^2/s are not allowed: the Walther law needs T_2 > T_1 and nu_2 < nu_1 "
+                "(viscosity falls with temperature)"
+            )
+        arr[lk.LUB_WALTHER_A], arr[lk.LUB_WALTHER_B] = lk.walther_constants(nu1, T1, nu2, T2)
+    elif visc == "wlf":
+        arr[lk.LUB_VISC_MODEL] = lk.VISCOSITY_WLF
+        _pack_wlf(doc, arr, path)
+    else:
+        raise ParameterError(f"{path}: 'viscosity.model' = {visc!r}, allowed: 'constant', 'walther', 'wlf'")
+
+
+def _pack_pressure_viscosity(doc, arr, path, piezo, visc):
+    """The pressure-viscosity model `piezo` of a lubricant file into its array (WLF needs the WLF viscosity)."""
+    if piezo == "constant":
+        arr[lk.LUB_PIEZO_MODEL] = lk.PIEZO_CONSTANT
+        arr[lk.LUB_XI_CONST] = _value(doc, "pressure_viscosity.coefficient", Spec("1/Pa", 0.0, 1e-6, True), path)
+    elif piezo == "gold":
+        arr[lk.LUB_PIEZO_MODEL] = lk.PIEZO_GOLD
+        arr[lk.LUB_GOLD_S] = _value(doc, "pressure_viscosity.s", Spec("1/Pa", 0.0, 1e-6, True), path)
+        arr[lk.LUB_GOLD_T] = _value(doc, "pressure_viscosity.t", Spec("-", -2.0, 2.0), path)
+    elif piezo == "wlf":
+        if visc != "wlf":
+            raise ParameterError(f"{path}: 'pressure_viscosity.model' = 'wlf' needs 'viscosity.model' = 'wlf'")
+        arr[lk.LUB_PIEZO_MODEL] = lk.PIEZO_WLF
+    else:
+        raise ParameterError(f"{path}: 'pressure_viscosity.model' = {piezo!r}, allowed: 'constant', 'gold', 'wlf'")
 
 
 def _pack_wlf(doc, arr, path):

@@ -100,7 +100,21 @@ class DemModel:
         self.load_limit = load_limit(self.par, b.Z)
         self._limits = inputs.input_limits(b, self.Pd, self.load_limit, self.omega_max)
         self._rho_outer = float(self.par[s.P_RHO_O])  # at the nominal clearance
-        Z = b.Z
+        self._allocate(b.Z)
+        self._place_bodies()
+        self._initialise(0.0, 0.0, 0.0, 0.0, T_OIL_DEFAULT)
+        self.orbit_window = whirl.new_window(self.ring)  # the ring-orbit watch's window (models.dem.whirl)
+        self.orbit_verdict = None  # whirl.Verdict of the window the last advance() closed, None if it closed none
+        self._plan_variables()
+        # state at the start of the last kernel call: an automatic-step call is repeated from it, and update()
+        # restores it when the call fails
+        self._start = self.get_state()
+        self.step_halvings = 0  # times the last call's automatic step was halved after a monitor stop
+        self._gather()
+
+    # -- set-up --------------------------------------------------------------------------------
+    def _allocate(self, Z):
+        """The state, output, status and work arrays of Z balls and cage balls (kernels.ball_dynamics.state)."""
         self.balls = np.zeros((s.B_SIZE, Z))
         self.cage = np.zeros((s.C_SIZE, Z))
         self.ring = np.zeros(s.R_SIZE)
@@ -119,11 +133,9 @@ class DemModel:
         self.truncated = np.zeros(2)  # per race the truncated fraction at its last warning (0: not truncated)
         self.dt = math.nan  # time step of the last advance() call (s)
         self.refresh = 0  # its tribology refresh interval (steps)
-        self._place_bodies()
-        self._initialise(0.0, 0.0, 0.0, 0.0, T_OIL_DEFAULT)
-        self.orbit_window = whirl.new_window(self.ring)  # the ring-orbit watch's window (models.dem.whirl)
-        self.orbit_verdict = None  # whirl.Verdict of the window the last advance() closed, None if it closed none
-        # the FMU interface (update): variables of the scene in declaration order, filled by one copy plan
+
+    def _plan_variables(self):
+        """The FMU interface (update): the scene's variables in declaration order, filled by one copy plan."""
         self.inputs = select(DEM_INPUTS, self.scene)
         self.outputs = select(DEM_OUTPUTS, self.scene)
         self.output_names = tuple(v.name for v in self.outputs)
@@ -141,13 +153,7 @@ class DemModel:
             "trunc": self.trunc,
         }
         self._plan = gather_plan(self.outputs, arrays)
-        # state at the start of the last kernel call: an automatic-step call is repeated from it, and update()
-        # restores it when the call fails
-        self._start = self.get_state()
-        self.step_halvings = 0  # times the last call's automatic step was halved after a monitor stop
-        self._gather()
 
-    # -- set-up --------------------------------------------------------------------------------
     def _bodies(self):
         """The arrays every ball_dynamics kernel call takes first: the state, the parameters and the lubricant."""
         return self.balls, self.cage, self.ring, self.spring, self.trib, self.counters, self.par, self.lubricant.array
