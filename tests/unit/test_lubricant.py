@@ -60,15 +60,6 @@ def alpha_star_tolerance(T, wlf):
     return 1.5 * SIMPSON_H**4 / 180.0 * abs(f3) * rlub.wlf_alpha_star(T, *wlf) + 1e-10
 
 
-def test_every_public_kernel_has_a_twin():
-    kernels = [
-        n
-        for n, f in vars(lk).items()
-        if hasattr(f, "py_func") and f.py_func.__module__ == lk.__name__ and not n.startswith("_")
-    ]
-    assert kernels and all(callable(getattr(rlub, n, None)) for n in kernels), kernels
-
-
 @pytest.mark.parametrize(
     "nu1, T1, nu2, T2",
     [
