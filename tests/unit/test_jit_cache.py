@@ -11,7 +11,6 @@ import json
 import os
 import shutil
 import stat
-import subprocess
 import sys
 from pathlib import Path
 
@@ -19,6 +18,7 @@ import pytest
 
 from bearing_fmu.kernels import hertz
 from bearing_fmu_common import jit
+from tests._processes import run_checked
 
 ROOT = Path(jit.__file__).resolve().parent.parent
 HERTZ_CALL = "hertz.hertz_stiffness(0.005, 0.1, 2.3e11, 8.0, 1.02, 3.2)"
@@ -45,16 +45,7 @@ def run_child(env=None, prelude="", cwd=None, umask=None):
     full.update(env or {})
     register = "jit.add_compiled_dir(os.environ['COMPILED'])" if "COMPILED" in full else ""
     code = CHILD.format(prelude=prelude, register=register)
-    proc = subprocess.run(
-        [sys.executable, "-c", code],
-        env=full,
-        cwd=cwd,
-        capture_output=True,
-        text=True,
-        check=False,
-        preexec_fn=(lambda: os.umask(umask)) if umask is not None else None,
-    )
-    assert proc.returncode == 0, proc.stderr[-3000:]
+    proc = run_checked([sys.executable, "-c", code], full, cwd=cwd, umask=umask)
     return json.loads(proc.stdout.strip().splitlines()[-1]), proc.stderr
 
 
@@ -310,13 +301,7 @@ def test_numba_disable_jit_runs_the_kernels_as_plain_python(tmp_path):
     env = {k: v for k, v in os.environ.items() if k not in UNSET}
     results = []
     for disable in ("1", "0"):
-        proc = subprocess.run(
-            [sys.executable, "-c", code],
-            env={**env, "NUMBA_DISABLE_JIT": disable, "BEARING_FMU_CACHE": str(tmp_path)},
-            cwd=ROOT,
-            capture_output=True,
-            text=True,
-        )
-        assert proc.returncode == 0, proc.stderr[-3000:]
+        child_env = {**env, "NUMBA_DISABLE_JIT": disable, "BEARING_FMU_CACHE": str(tmp_path)}
+        proc = run_checked([sys.executable, "-c", code], child_env, cwd=ROOT)
         results.append(json.loads(proc.stdout.strip().splitlines()[-1]))
     assert results[0] == pytest.approx(results[1], rel=1e-12)
