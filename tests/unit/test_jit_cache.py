@@ -105,35 +105,28 @@ def test_cache_serves_a_copy_of_the_sources_elsewhere_with_other_file_times(tmp_
     assert second["write"] == first["write"] and (second["hits"], second["misses"]) == (1, 0)
 
 
-def _falls_back(result, stderr, unusable):
-    """The child compiled into a private temporary directory and said so."""
+def _falls_back(tmp_path, variable, leaf):
+    """With `variable` set to a path through a file, the child compiles into a private temporary directory (under
+    its TMPDIR, mode 0700, ours) and says which path it could not write."""
+    blocker = tmp_path / "a_file"
+    blocker.write_text("not a directory")
+    tmp = tmp_path / "tmp"
+    tmp.mkdir()
+    unusable = blocker / leaf
+    result, stderr = run_child({variable: str(unusable), "TMPDIR": str(tmp)})
     write = Path(result["write"])
-    assert write.is_relative_to(Path(result["tmp"])), write
+    assert write.is_relative_to(tmp), write
     assert write.stat().st_mode & 0o777 == 0o700 and write.stat().st_uid == os.getuid()
     assert "cannot be written" in stderr and str(unusable) in stderr
     assert result["misses"] == 1
 
 
-def _with_tmp(result, tmp):
-    return {**result, "tmp": str(tmp)}
-
-
 def test_a_path_through_a_file_falls_back_to_a_private_temporary_directory(tmp_path):
-    blocker = tmp_path / "a_file"
-    blocker.write_text("not a directory")
-    tmp = tmp_path / "tmp"
-    tmp.mkdir()
-    result, stderr = run_child({"BEARING_FMU_CACHE": str(blocker / "cache"), "TMPDIR": str(tmp)})
-    _falls_back(_with_tmp(result, tmp), stderr, blocker / "cache")
+    _falls_back(tmp_path, "BEARING_FMU_CACHE", "cache")
 
 
 def test_no_usable_home_falls_back_to_a_private_temporary_directory(tmp_path):
-    blocker = tmp_path / "a_file"
-    blocker.write_text("not a directory")
-    tmp = tmp_path / "tmp"
-    tmp.mkdir()
-    result, stderr = run_child({"HOME": str(blocker / "home"), "TMPDIR": str(tmp)})
-    _falls_back(_with_tmp(result, tmp), stderr, blocker / "home")
+    _falls_back(tmp_path, "HOME", "home")
 
 
 # refuses writes under READ_ONLY as a read-only directory would, also for root (who may write anywhere)
