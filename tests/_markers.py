@@ -75,6 +75,15 @@ SSP_MASTERS = {
     },
 }
 
+# every list marks its tests slow; all but SLOW also with a marker of their own (the make target's selection)
+LISTS = (
+    (SLOW, None),
+    (EHL_FULL, "ehl_full"),
+    (BARE_HOST, "bare_host"),
+    (PYTHON_HOSTS, "python_hosts"),
+    (SSP_MASTERS, "ssp_masters"),
+)
+
 
 def pytest_collection_modifyitems(config, items):
     import pytest
@@ -87,17 +96,8 @@ def pytest_collection_modifyitems(config, items):
             item.add_marker(getattr(pytest.mark, marker))
         name = getattr(item, "originalname", item.name)
         relative = path.relative_to(root).as_posix()
-        if name in SLOW.get(relative, ()):
-            item.add_marker(pytest.mark.slow)
-        if name in EHL_FULL.get(relative, ()):
-            item.add_marker(pytest.mark.slow)
-            item.add_marker(pytest.mark.ehl_full)
-        if name in BARE_HOST.get(relative, ()):
-            item.add_marker(pytest.mark.slow)
-            item.add_marker(pytest.mark.bare_host)
-        if name in PYTHON_HOSTS.get(relative, ()):
-            item.add_marker(pytest.mark.slow)
-            item.add_marker(pytest.mark.python_hosts)
-        if name in SSP_MASTERS.get(relative, ()):
-            item.add_marker(pytest.mark.slow)
-            item.add_marker(pytest.mark.ssp_masters)
+        for listed, own_marker in LISTS:
+            if name in listed.get(relative, ()):
+                item.add_marker(pytest.mark.slow)
+                if own_marker:
+                    item.add_marker(getattr(pytest.mark, own_marker))

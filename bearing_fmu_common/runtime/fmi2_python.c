@@ -617,36 +617,33 @@ fmi2Status fmi2SetupExperiment(fmi2Component component, fmi2Boolean toleranceDef
     RETURN(settle(c, "setup_experiment", r, fmi2Error));
 }
 
+/* A change of mode by the FMI call `call`: the slave's `method`; if it succeeded the instance moves to `next`
+ * (called between BEGIN and RETURN: the GIL is held). */
+static fmi2Status change_mode(Instance *c, const char *call, const char *method, State next)
+{
+    if (!has_slave(c, call))
+        return fmi2Error;
+    fmi2Status status = settle(c, method, PyObject_CallMethod(c->slave, method, NULL), fmi2Error);
+    MOVE_ON(status, next);
+    return status;
+}
+
 fmi2Status fmi2EnterInitializationMode(fmi2Component component)
 {
     BEGIN("fmi2EnterInitializationMode", MASK_EnterInitializationMode);
-    if (!has_slave(c, "fmi2EnterInitializationMode"))
-        RETURN(fmi2Error);
-    fmi2Status status = settle(c, "enter_initialization_mode",
-                               PyObject_CallMethod(c->slave, "enter_initialization_mode", NULL), fmi2Error);
-    MOVE_ON(status, INITIALIZATION_MODE);
-    RETURN(status);
+    RETURN(change_mode(c, "fmi2EnterInitializationMode", "enter_initialization_mode", INITIALIZATION_MODE));
 }
 
 fmi2Status fmi2ExitInitializationMode(fmi2Component component)
 {
     BEGIN("fmi2ExitInitializationMode", MASK_ExitInitializationMode);
-    if (!has_slave(c, "fmi2ExitInitializationMode"))
-        RETURN(fmi2Error);
-    fmi2Status status = settle(c, "exit_initialization_mode",
-                               PyObject_CallMethod(c->slave, "exit_initialization_mode", NULL), fmi2Error);
-    MOVE_ON(status, STEP_COMPLETE);
-    RETURN(status);
+    RETURN(change_mode(c, "fmi2ExitInitializationMode", "exit_initialization_mode", STEP_COMPLETE));
 }
 
 fmi2Status fmi2Terminate(fmi2Component component)
 {
     BEGIN("fmi2Terminate", MASK_Terminate);
-    if (!has_slave(c, "fmi2Terminate"))
-        RETURN(fmi2Error);
-    fmi2Status status = settle(c, "terminate", PyObject_CallMethod(c->slave, "terminate", NULL), fmi2Error);
-    MOVE_ON(status, TERMINATED);
-    RETURN(status);
+    RETURN(change_mode(c, "fmi2Terminate", "terminate", TERMINATED));
 }
 
 fmi2Status fmi2Reset(fmi2Component component)
@@ -994,9 +991,13 @@ fmi2Status fmi2FreeFMUstate(fmi2Component component, fmi2FMUstate *state)
     RETURN(fmi2OK);
 }
 
-/* The bytes of `state` (helper.dumps: the slave's identity and its values), NULL with the problem logged. */
-static PyObject *serialised(Instance *c, fmi2FMUstate state)
+/* The bytes of `state` (helper.dumps: the slave's identity and its values, a new reference), or NULL with the
+ * reason logged: the call's output argument `out` (named `argument`) is NULL, there is no slave or no state, or
+ * the state cannot be written. */
+static PyObject *serialised(Instance *c, fmi2FMUstate state, const void *out, const char *call, const char *argument)
 {
+    if (!given(c, out, call, argument) || !has_slave(c, call))
+        return NULL;
     PyObject *bytes = state ? PyObject_CallMethod(helper, "dumps", "(OO)", (PyObject *)state, c->slave) : NULL;
     if (bytes == NULL && state == NULL)
         emitf(c, fmi2Error, "%s: no FMU state to serialise", c->name);
@@ -1008,9 +1009,7 @@ static PyObject *serialised(Instance *c, fmi2FMUstate state)
 fmi2Status fmi2SerializedFMUstateSize(fmi2Component component, fmi2FMUstate state, size_t *size)
 {
     BEGIN("fmi2SerializedFMUstateSize", MASK_FMUstate);
-    if (!given(c, size, "fmi2SerializedFMUstateSize", "size") || !has_slave(c, "fmi2SerializedFMUstateSize"))
-        RETURN(fmi2Error);
-    PyObject *bytes = serialised(c, state);
+    PyObject *bytes = serialised(c, state, size, "fmi2SerializedFMUstateSize", "size");
     if (bytes == NULL)
         RETURN(fmi2Error);
     *size = (size_t)PyBytes_Size(bytes);
@@ -1022,10 +1021,7 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component component, fmi2FMUstate state, fm
                                  size_t size)
 {
     BEGIN("fmi2SerializeFMUstate", MASK_FMUstate);
-    if (!given(c, serializedState, "fmi2SerializeFMUstate", "serializedState") ||
-        !has_slave(c, "fmi2SerializeFMUstate"))
-        RETURN(fmi2Error);
-    PyObject *bytes = serialised(c, state);
+    PyObject *bytes = serialised(c, state, serializedState, "fmi2SerializeFMUstate", "serializedState");
     if (bytes == NULL)
         RETURN(fmi2Error);
     size_t n = (size_t)PyBytes_Size(bytes);
@@ -1117,44 +1113,32 @@ fmi2Status fmi2CancelStep(fmi2Component component)
     if (!given(c, value, call, "value"))                                                           \
     RETURN(fmi2Error)
 
-fmi2Status fmi2GetStatus(fmi2Component component, const fmi2StatusKind s, fmi2Status *value)
-{
-    (void)s;
-    STATUS_BEGIN("fmi2GetStatus");
-    RETURN(fmi2Discard);
-}
+/* A status kind this FMU never has (no asynchronous step): fmi2Discard once the arguments are checked. */
+#define NO_STATUS(name, type)                                                                      \
+    fmi2Status name(fmi2Component component, const fmi2StatusKind s, type *value)                  \
+    {                                                                                              \
+        (void)s;                                                                                   \
+        STATUS_BEGIN(#name);                                                                       \
+        RETURN(fmi2Discard);                                                                       \
+    }
 
-fmi2Status fmi2GetRealStatus(fmi2Component component, const fmi2StatusKind s, fmi2Real *value)
-{
-    STATUS_BEGIN("fmi2GetRealStatus");
-    if (s != fmi2LastSuccessfulTime)
-        RETURN(fmi2Discard);
-    *value = c->time;
-    RETURN(fmi2OK);
-}
+/* The one kind `kind` a status function answers, with `answer`; fmi2Discard for the others. */
+#define ONE_STATUS(name, type, kind, answer)                                                       \
+    fmi2Status name(fmi2Component component, const fmi2StatusKind s, type *value)                  \
+    {                                                                                              \
+        STATUS_BEGIN(#name);                                                                       \
+        if (s != kind)                                                                             \
+            RETURN(fmi2Discard);                                                                   \
+        *value = answer;                                                                           \
+        RETURN(fmi2OK);                                                                            \
+    }
 
-fmi2Status fmi2GetIntegerStatus(fmi2Component component, const fmi2StatusKind s, fmi2Integer *value)
-{
-    (void)s;
-    STATUS_BEGIN("fmi2GetIntegerStatus");
-    RETURN(fmi2Discard);
-}
-
-fmi2Status fmi2GetBooleanStatus(fmi2Component component, const fmi2StatusKind s, fmi2Boolean *value)
-{
-    STATUS_BEGIN("fmi2GetBooleanStatus");
-    if (s != fmi2Terminated)
-        RETURN(fmi2Discard);
-    *value = fmi2False; /* a refused step never ends the simulation by itself: the host decides */
-    RETURN(fmi2OK);
-}
-
-fmi2Status fmi2GetStringStatus(fmi2Component component, const fmi2StatusKind s, fmi2String *value)
-{
-    (void)s;
-    STATUS_BEGIN("fmi2GetStringStatus");
-    RETURN(fmi2Discard);
-}
+NO_STATUS(fmi2GetStatus, fmi2Status)
+ONE_STATUS(fmi2GetRealStatus, fmi2Real, fmi2LastSuccessfulTime, c->time)
+NO_STATUS(fmi2GetIntegerStatus, fmi2Integer)
+/* a refused step never ends the simulation by itself: the host decides */
+ONE_STATUS(fmi2GetBooleanStatus, fmi2Boolean, fmi2Terminated, fmi2False)
+NO_STATUS(fmi2GetStringStatus, fmi2String)
 
 /* -- not provided by a Python slave ----------------------------------------------------------- */
 

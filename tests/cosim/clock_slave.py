@@ -14,6 +14,14 @@ from pythonfmu import Fmi2Slave
 from pythonfmu.enums import Fmi2Causality, Fmi2Initial, Fmi2Status, Fmi2Variability
 from pythonfmu.variables import Integer, Real
 
+PARAMETER = {"causality": Fmi2Causality.parameter, "variability": Fmi2Variability.fixed, "initial": Fmi2Initial.exact}
+
+
+def _output(kind, name, **accessors):
+    """An output of kind Real (continuous) or Integer (discrete) that starts at its exact start value."""
+    variability = Fmi2Variability.continuous if kind is Real else Fmi2Variability.discrete
+    return kind(name, causality=Fmi2Causality.output, variability=variability, initial=Fmi2Initial.exact, **accessors)
+
 
 class ClockSlave(Fmi2Slave):
     author = "bearing_fmu tests"
@@ -30,42 +38,11 @@ class ClockSlave(Fmi2Slave):
             Real("u", causality=Fmi2Causality.input, variability=Fmi2Variability.continuous, start=0.0)
         )
         for name in ("h_max", "fail_at"):
-            self.register_variable(
-                Real(
-                    name,
-                    causality=Fmi2Causality.parameter,
-                    variability=Fmi2Variability.fixed,
-                    initial=Fmi2Initial.exact,
-                    start=1e300,
-                )
-            )
+            self.register_variable(Real(name, start=1e300, **PARAMETER))
         for name in ("t_start", "t_end", "x"):
-            self.register_variable(
-                Real(
-                    name,
-                    causality=Fmi2Causality.output,
-                    variability=Fmi2Variability.continuous,
-                    initial=Fmi2Initial.exact,
-                )
-            )
-        self.register_variable(
-            Integer(
-                "n_steps",
-                causality=Fmi2Causality.output,
-                variability=Fmi2Variability.discrete,
-                initial=Fmi2Initial.exact,
-            )
-        )
-        self.register_variable(
-            Integer(
-                "n_calls",
-                causality=Fmi2Causality.output,
-                variability=Fmi2Variability.discrete,
-                initial=Fmi2Initial.exact,
-                getter=lambda: self._n_calls,
-                setter=lambda value: None,
-            )
-        )
+            self.register_variable(_output(Real, name))
+        self.register_variable(_output(Integer, "n_steps"))
+        self.register_variable(_output(Integer, "n_calls", getter=lambda: self._n_calls, setter=lambda value: None))
 
     def do_step(self, current_time, step_size):
         self._n_calls += 1

@@ -26,17 +26,10 @@ from spindle.cosim.libcosim_master import run_libcosim  # noqa: E402
 from spindle.cosim.master import run  # noqa: E402
 from spindle.cosim.runfile import load_run  # noqa: E402
 from tests.conftest import ROOT  # noqa: E402
+from tests.cosim.test_closed_loop import SPRING, TEMPERATURES  # noqa: E402
 
-SPRING = ROOT / "runs" / "closed_loop_spring.toml"
 COMPARED = [
-    "spindle.T_shaft",
-    "spindle.T_housing",
-    "spindle.T_inner_ring_1",
-    "spindle.T_outer_ring_1",
-    "spindle.T_inner_ring_2",
-    "spindle.T_outer_ring_2",
-    "spindle.T_oil_1",
-    "spindle.T_oil_2",
+    *TEMPERATURES,
     "bearing_1.torque",
     "bearing_2.torque",
     "spindle.dPd_thermal_1",

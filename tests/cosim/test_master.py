@@ -305,6 +305,21 @@ def test_limit_stops_the_run_with_its_message(spindle_thermal_fmu):
 
 
 # -- refused steps ---------------------------------------------------------------------------------
+def _run_refused(doc, match):
+    """Running the run file `doc` raises a MasterError whose message matches the regular expression `match`."""
+    with pytest.raises(MasterError, match=match):
+        run(spec_of(doc))
+
+
+def unknown_spindle_doc(spindle_thermal_fmu):
+    """A run file of the thermal FMU with a spindle name it does not know: its initialisation fails."""
+    return {
+        "run": {"stop": 2.0, "step": 1.0},
+        "fmus": {"spindle": str(spindle_thermal_fmu)},
+        "instances": {"spindle": {"fmu": "spindle", "parameters": {"spindle": "no_such_spindle"}}},
+    }
+
+
 def test_refused_step_raises_with_the_fmu_log(spindle_thermal_fmu):
     """-1 MW into an inner ring is an admissible input (|Q| <= 1e7 W) but would cool the ring below
     0 K within the step: the spindle refuses the step (spindle/thermal/model.py) and the master's error
@@ -314,49 +329,38 @@ def test_refused_step_raises_with_the_fmu_log(spindle_thermal_fmu):
         "fmus": {"spindle": str(spindle_thermal_fmu)},
         "instances": {"spindle": {"fmu": "spindle", "inputs": {**SPINDLE_INPUTS, "Q_inner_ring_1": -1e6}}},
     }
-    with pytest.raises(
-        MasterError,
-        match=r"spindle: doStep at t = 0 s, h = 1 s returned (Discard|Error): "
+    _run_refused(
+        doc,
+        r"spindle: doStep at t = 0 s, h = 1 s returned (Discard|Error): "
         r"\[Discard\] spindle: node \w+ would reach T = -[0-9.e+]+ K "
         r"\(non-physical\)",
-    ):
-        run(spec_of(doc))
+    )
 
 
 def test_refused_step_message_keeps_percent(clock_fmu):
     """pythonfmu logs printf formats ('%' sent as '%%'); the master shows the text as written."""
     doc = clock_doc(clock_fmu)
     doc["instances"]["c"]["parameters"] = {"fail_at": 0.5}
-    with pytest.raises(
-        MasterError,
-        match=r"c: doStep at t = 0\.5 s, h = 0\.1 s returned Discard: "
+    _run_refused(
+        doc,
+        r"c: doStep at t = 0\.5 s, h = 0\.1 s returned Discard: "
         r"\[Error\] c: t = 0\.5 s >= fail_at: refused \(100% sure\)$",
-    ):
-        run(spec_of(doc))
+    )
 
 
 def test_initialisation_failure_raises_with_the_fmu_log(spindle_thermal_fmu):
-    doc = {
-        "run": {"stop": 2.0, "step": 1.0},
-        "fmus": {"spindle": str(spindle_thermal_fmu)},
-        "instances": {"spindle": {"fmu": "spindle", "parameters": {"spindle": "no_such_spindle"}}},
-    }
-    with pytest.raises(
-        MasterError,
-        match=r"spindle: initialisation failed: \[Error\] spindle: unknown spindle "
+    doc = unknown_spindle_doc(spindle_thermal_fmu)
+    _run_refused(
+        doc,
+        r"spindle: initialisation failed: \[Error\] spindle: unknown spindle "
         r"'no_such_spindle'",
-    ):
-        run(spec_of(doc))
+    )
 
 
 def test_after_an_fmi_error_the_master_frees_the_instance_without_terminate(spindle_thermal_fmu):
     """FMI 2.0 allows only fmi2FreeInstance (or fmi2Reset) after a call returned fmi2Error: a master whose FMU
     failed its initialisation frees it without fmi2Terminate, so the FMU logs no call-sequence error."""
-    doc = {
-        "run": {"stop": 2.0, "step": 1.0},
-        "fmus": {"spindle": str(spindle_thermal_fmu)},
-        "instances": {"spindle": {"fmu": "spindle", "parameters": {"spindle": "no_such_spindle"}}},
-    }
+    doc = unknown_spindle_doc(spindle_thermal_fmu)
     master = Master(spec_of(doc))
     instance = master.instances["spindle"]
     with pytest.raises(MasterError, match="initialisation failed"):
@@ -369,12 +373,11 @@ def test_after_an_fmi_error_the_master_frees_the_instance_without_terminate(spin
 def test_rollback_gives_up_after_max_halvings_with_the_reason(clock_fmu):
     doc = clock_doc(clock_fmu, rollback=True, max_halvings=2)
     doc["instances"]["c"]["parameters"] = {"fail_at": 0.5}
-    with pytest.raises(
-        MasterError,
-        match=r"step at t = 0\.5 s rejected after 2 halvings \(h = 0\.025 s\): "
+    _run_refused(
+        doc,
+        r"step at t = 0\.5 s rejected after 2 halvings \(h = 0\.025 s\): "
         r"c: doStep .* refused \(100% sure\)",
-    ):
-        run(spec_of(doc))
+    )
 
 
 # -- rollback ----------------------------------------------------------------------------------------

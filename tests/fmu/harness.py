@@ -52,6 +52,42 @@ def opened(fmu_path, name, parameters=None):
         shutil.rmtree(unzip, ignore_errors=True)
 
 
+def read_outputs(fmu, vr, names, integers):
+    """{name: value} of the outputs `names` of an open instance: those in `integers` read with getInteger, the
+    others with getReal."""
+    reals = [n for n in names if n not in integers]
+    ints = [n for n in names if n in integers]
+    got = dict(zip(reals, fmu.getReal([vr[n] for n in reals])))
+    got.update(zip(ints, fmu.getInteger([vr[n] for n in ints])))
+    return got
+
+
+def assert_variables_documented(md):
+    """Every variable of a model description has a description, every Real a declared unit, and every output
+    is computed at initialisation (initial="calculated", which ModelStructure declares)."""
+    units = {u.name for u in md.unitDefinitions}
+    for v in md.modelVariables:
+        assert v.description, v.name
+        if v.type == "Real":
+            assert v.unit in units, v.name
+        if v.causality == "output":
+            assert v.initial == "calculated", v.name
+
+
+def refused_steps(report, recovered_output):
+    """{case: result} of the refused steps of a probe's bad-input report, each checked to be fmi2Discard (the
+    step is refused, the instance lives on); its last step, "recovered", checked fmi2OK with output number
+    `recovered_output` positive."""
+    refused = {}
+    for case, result in report["results"].items():
+        if case == "recovered":
+            assert result["status"] == 0 and result["outputs"][recovered_output] > 0.0
+            continue
+        assert result["status"] == 2, case
+        refused[case] = result
+    return refused
+
+
 def close(a, b, rel=1e-12):
     return abs(a - b) <= rel * max(abs(a), abs(b)) or a == b
 

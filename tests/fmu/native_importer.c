@@ -197,6 +197,11 @@ static int runs_mode(const Api *api, int argc, char **argv)
 
 #define SHOW(label, call) printf("%s %d\n", label, (int)(call))
 
+/* The getters and setters, each with the local variable (r, i, b, s) of its value type. */
+#define ACCESSORS(X)                                                                               \
+    X(fmi2GetReal, r) X(fmi2GetInteger, i) X(fmi2GetBoolean, b) X(fmi2GetString, s)                \
+    X(fmi2SetReal, r) X(fmi2SetInteger, i) X(fmi2SetBoolean, b) X(fmi2SetString, s)
+
 /* Every function that takes an instance, called with NULL. */
 static void null_instance(const Api *api)
 {
@@ -216,14 +221,8 @@ static void null_instance(const Api *api)
     SHOW("null:fmi2ExitInitializationMode", api->fmi2ExitInitializationMode(NULL));
     SHOW("null:fmi2Terminate", api->fmi2Terminate(NULL));
     SHOW("null:fmi2Reset", api->fmi2Reset(NULL));
-    SHOW("null:fmi2GetReal", api->fmi2GetReal(NULL, &vr, 1, &r));
-    SHOW("null:fmi2GetInteger", api->fmi2GetInteger(NULL, &vr, 1, &i));
-    SHOW("null:fmi2GetBoolean", api->fmi2GetBoolean(NULL, &vr, 1, &b));
-    SHOW("null:fmi2GetString", api->fmi2GetString(NULL, &vr, 1, &s));
-    SHOW("null:fmi2SetReal", api->fmi2SetReal(NULL, &vr, 1, &r));
-    SHOW("null:fmi2SetInteger", api->fmi2SetInteger(NULL, &vr, 1, &i));
-    SHOW("null:fmi2SetBoolean", api->fmi2SetBoolean(NULL, &vr, 1, &b));
-    SHOW("null:fmi2SetString", api->fmi2SetString(NULL, &vr, 1, &s));
+#define NULL_INSTANCE(name, value) SHOW("null:" #name, api->name(NULL, &vr, 1, &value));
+    ACCESSORS(NULL_INSTANCE)
     SHOW("null:fmi2GetFMUstate", api->fmi2GetFMUstate(NULL, &state));
     SHOW("null:fmi2SetFMUstate", api->fmi2SetFMUstate(NULL, state));
     SHOW("null:fmi2FreeFMUstate", api->fmi2FreeFMUstate(NULL, &state));
@@ -255,22 +254,10 @@ static void null_arguments(const Api *api, fmi2Component c, const char *only)
     fmi2Integer i = 0;
     fmi2Boolean b = fmi2False;
     fmi2String s = "";
-    SHOW_IF("fmi2GetReal(vr)", api->fmi2GetReal(c, NULL, 1, &r));
-    SHOW_IF("fmi2GetReal(value)", api->fmi2GetReal(c, &vr, 1, NULL));
-    SHOW_IF("fmi2GetInteger(vr)", api->fmi2GetInteger(c, NULL, 1, &i));
-    SHOW_IF("fmi2GetInteger(value)", api->fmi2GetInteger(c, &vr, 1, NULL));
-    SHOW_IF("fmi2GetBoolean(vr)", api->fmi2GetBoolean(c, NULL, 1, &b));
-    SHOW_IF("fmi2GetBoolean(value)", api->fmi2GetBoolean(c, &vr, 1, NULL));
-    SHOW_IF("fmi2GetString(vr)", api->fmi2GetString(c, NULL, 1, &s));
-    SHOW_IF("fmi2GetString(value)", api->fmi2GetString(c, &vr, 1, NULL));
-    SHOW_IF("fmi2SetReal(vr)", api->fmi2SetReal(c, NULL, 1, &r));
-    SHOW_IF("fmi2SetReal(value)", api->fmi2SetReal(c, &vr, 1, NULL));
-    SHOW_IF("fmi2SetInteger(vr)", api->fmi2SetInteger(c, NULL, 1, &i));
-    SHOW_IF("fmi2SetInteger(value)", api->fmi2SetInteger(c, &vr, 1, NULL));
-    SHOW_IF("fmi2SetBoolean(vr)", api->fmi2SetBoolean(c, NULL, 1, &b));
-    SHOW_IF("fmi2SetBoolean(value)", api->fmi2SetBoolean(c, &vr, 1, NULL));
-    SHOW_IF("fmi2SetString(vr)", api->fmi2SetString(c, NULL, 1, &s));
-    SHOW_IF("fmi2SetString(value)", api->fmi2SetString(c, &vr, 1, NULL));
+#define NULL_ARRAYS(name, value)                                                                   \
+    SHOW_IF(#name "(vr)", api->name(c, NULL, 1, &value));                                          \
+    SHOW_IF(#name "(value)", api->name(c, &vr, 1, NULL));
+    ACCESSORS(NULL_ARRAYS)
     SHOW_IF("fmi2GetFMUstate", api->fmi2GetFMUstate(c, NULL));
     SHOW_IF("fmi2SetFMUstate", api->fmi2SetFMUstate(c, NULL));
     SHOW_IF("fmi2SerializedFMUstateSize", api->fmi2SerializedFMUstateSize(c, NULL, NULL));
@@ -280,14 +267,8 @@ static void null_arguments(const Api *api, fmi2Component c, const char *only)
 /* nvr = 0 with NULL arrays (allowed: FMI 2.0), every getter and setter. */
 static void empty_arrays(const Api *api, fmi2Component c)
 {
-    SHOW("empty:fmi2GetReal", api->fmi2GetReal(c, NULL, 0, NULL));
-    SHOW("empty:fmi2GetInteger", api->fmi2GetInteger(c, NULL, 0, NULL));
-    SHOW("empty:fmi2GetBoolean", api->fmi2GetBoolean(c, NULL, 0, NULL));
-    SHOW("empty:fmi2GetString", api->fmi2GetString(c, NULL, 0, NULL));
-    SHOW("empty:fmi2SetReal", api->fmi2SetReal(c, NULL, 0, NULL));
-    SHOW("empty:fmi2SetInteger", api->fmi2SetInteger(c, NULL, 0, NULL));
-    SHOW("empty:fmi2SetBoolean", api->fmi2SetBoolean(c, NULL, 0, NULL));
-    SHOW("empty:fmi2SetString", api->fmi2SetString(c, NULL, 0, NULL));
+#define EMPTY_ARRAYS(name, value) SHOW("empty:" #name, api->name(c, NULL, 0, NULL));
+    ACCESSORS(EMPTY_ARRAYS)
 }
 
 static void host_handler(int number) { (void)number; }
@@ -529,6 +510,21 @@ static void *refused_main(void *arg)
     return NULL;
 }
 
+/* Join both threads within `seconds`, or print "<label> deadlock" and exit 5 (the threads are stuck: no orderly
+ * exit). */
+static void join_both(pthread_t threads[2], int seconds, const char *label)
+{
+    struct timespec deadline;
+    clock_gettime(CLOCK_REALTIME, &deadline);
+    deadline.tv_sec += seconds;
+    for (int k = 0; k < 2; k++)
+        if (pthread_timedjoin_np(threads[k], NULL, &deadline) == ETIMEDOUT) {
+            printf("%s deadlock\n", label);
+            fflush(stdout);
+            _exit(5);
+        }
+}
+
 static int logger_lock_mode(const Api *api, int argc, char **argv)
 {
     if (argc != 6) {
@@ -558,15 +554,7 @@ static int logger_lock_mode(const Api *api, int argc, char **argv)
     while (!__atomic_load_n(&first.holding, __ATOMIC_SEQ_CST))
         usleep(1000);
     __atomic_store_n(&second.holding, 1, __ATOMIC_SEQ_CST);
-    struct timespec deadline;
-    clock_gettime(CLOCK_REALTIME, &deadline);
-    deadline.tv_sec += 60;
-    for (int k = 0; k < 2; k++)
-        if (pthread_timedjoin_np(threads[k], NULL, &deadline) == ETIMEDOUT) {
-            printf("logger-lock deadlock\n");
-            fflush(stdout);
-            _exit(5); /* the threads are stuck: no orderly exit */
-        }
+    join_both(threads, 60, "logger-lock");
     printf("logger-lock %d %d\n", (int)first.status, (int)second.status);
     api->fmi2FreeInstance(reader);
     api->fmi2FreeInstance(refused);
@@ -624,15 +612,7 @@ static int logger_lock_instantiate_mode(const Api *api, int argc, char **argv)
     while (!__atomic_load_n(&holder.holding, __ATOMIC_SEQ_CST))
         usleep(1000);
     pthread_create(&threads[1], NULL, first_main, &first);
-    struct timespec deadline;
-    clock_gettime(CLOCK_REALTIME, &deadline);
-    deadline.tv_sec += 180;
-    for (int k = 0; k < 2; k++)
-        if (pthread_timedjoin_np(threads[k], NULL, &deadline) == ETIMEDOUT) {
-            printf("logger-lock-instantiate deadlock\n");
-            fflush(stdout);
-            _exit(5); /* the threads are stuck: no orderly exit */
-        }
+    join_both(threads, 180, "logger-lock-instantiate");
     printf("logger-lock-instantiate %s %s %s\n", holder.waited ? "waited" : "no-wait", first.got ? "ok" : "null",
            holder.got ? "ok" : "null");
     if (first.got)

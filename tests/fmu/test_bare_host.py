@@ -15,8 +15,6 @@ Marked `bare_host` (tests/_markers.py): setting up the environment takes about a
 """
 
 import json
-import os
-import subprocess
 import sys
 import zipfile
 from importlib.metadata import version
@@ -26,6 +24,7 @@ import pytest
 
 from spindle.all_fmus import reference_inputs
 from spindle.thermal.model import SpindleThermalModel
+from tests._processes import run_in_host
 from tests.conftest import pip_environment
 
 PACKAGES = ("fmpy", "numpy", "numba")
@@ -62,19 +61,7 @@ def bare_python():
 
 
 def _run(python, fmu, inputs, cache):
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "NUMBA_CACHE_DIR")}
-    env["BEARING_FMU_CACHE"] = str(cache)
-    proc = subprocess.run(
-        [str(python), "-c", CHILD, str(fmu), json.dumps(inputs), str(STEP), str(STOP)],
-        capture_output=True,
-        text=True,
-        env=env,
-        cwd="/tmp",  # nothing of the source tree on the path
-        timeout=600,
-    )
-    assert proc.returncode == 0, f"exit {proc.returncode}:\n{proc.stderr[-3000:]}"
-    line = next(x for x in proc.stdout.splitlines() if x.startswith("RESULT "))
-    return json.loads(line[len("RESULT ") :])
+    return run_in_host(python, ["-c", CHILD, fmu, json.dumps(inputs), STEP, STOP], cache, timeout=600)[0]
 
 
 @pytest.mark.parametrize(

@@ -40,6 +40,7 @@ from bearing_fmu.scene import Scene
 from tests.conftest import _fmu
 from tests.fmu import probe
 from tests.fmu.harness import opened
+from tests.fmu.harness import read_outputs as read_values
 
 H = 0.5e-3  # s, communication step of the scripted sequences
 INTEGER_OUTPUTS = ("regime", "n_loaded", "monitor_status")
@@ -61,11 +62,7 @@ def output_names(path):
 
 
 def read_outputs(fmu, vr, names):
-    reals = [n for n in names if n not in INTEGER_OUTPUTS]
-    ints = [n for n in names if n in INTEGER_OUTPUTS]
-    got = dict(zip(reals, fmu.getReal([vr[n] for n in reals])))
-    got.update(zip(ints, fmu.getInteger([vr[n] for n in ints])))
-    return got
+    return read_values(fmu, vr, names, INTEGER_OUTPUTS)
 
 
 def set_inputs(fmu, vr, omega, F_x, F_y=0.0):

@@ -5,7 +5,6 @@ nothing, wherever the FMU is extracted; the FMU's copy of its packages in a shar
 
 import json
 import os
-import subprocess
 import sys
 import zipfile
 from pathlib import Path
@@ -14,6 +13,7 @@ import pytest
 
 from bearing_fmu.compiled_code import COMPILED_DIR
 from bearing_fmu_common.jit import PORTABLE_CPU, TARGET_FILE
+from tests._processes import run_checked
 
 # fixture -> a short simulate_fmu run with the start values
 RUNS = {
@@ -29,16 +29,7 @@ def fresh_start(fmu, run, home, umask=None):
     numba's cache log on."""
     env = {k: v for k, v in os.environ.items() if k not in ("NUMBA_CACHE_DIR", "BEARING_FMU_CACHE", "NUMBA_CPU_NAME")}
     env.update(HOME=str(home), XDG_CACHE_HOME=str(Path(home) / ".cache"), NUMBA_DEBUG_CACHE="1")
-    proc = subprocess.run(
-        [sys.executable, "-c", CHILD, str(fmu), json.dumps(run)],
-        env=env,
-        capture_output=True,
-        text=True,
-        check=False,
-        preexec_fn=(lambda: os.umask(umask)) if umask is not None else None,
-    )
-    assert proc.returncode == 0, proc.stderr[-3000:]
-    return proc.stdout
+    return run_checked([sys.executable, "-c", CHILD, fmu, json.dumps(run)], env, umask=umask).stdout
 
 
 @pytest.mark.parametrize("fixture", sorted(RUNS))

@@ -447,15 +447,27 @@ def test_the_layer_runs_the_python_side_the_fmu_carries(unpacked, importer):
     assert "FileNotFoundError" in stderr
 
 
+def slave_fmu(script_name, dest):
+    """The FMU of the test slave tests/fmu/<script_name>, built by pythonfmu into dest, with the product's FMI
+    layer installed."""
+    from pythonfmu.builder import FmuBuilder
+
+    script = Path(__file__).with_name(script_name)
+    path = FmuBuilder.build_FMU(script, dest=dest)
+    sys.modules.pop(script.stem, None)
+    return install_runtime(path)
+
+
 @pytest.fixture(scope="module")
 def failing_fmu(tmp_path_factory):
     """An FMU of tests/fmu/failing_constructor_slave.py with the product's FMI layer."""
-    from pythonfmu.builder import FmuBuilder
+    return slave_fmu("failing_constructor_slave.py", tmp_path_factory.mktemp("failing"))
 
-    script = Path(__file__).with_name("failing_constructor_slave.py")
-    path = FmuBuilder.build_FMU(script, dest=tmp_path_factory.mktemp("failing"))
-    sys.modules.pop(script.stem, None)
-    return install_runtime(path)
+
+@pytest.fixture(scope="module")
+def bad_values_fmu(tmp_path_factory):
+    """An FMU of tests/fmu/bad_values_slave.py with the product's FMI layer."""
+    return slave_fmu("bad_values_slave.py", tmp_path_factory.mktemp("bad_values"))
 
 
 def failing_from(fmu_path, construction):
@@ -493,17 +505,6 @@ def test_calls_after_a_failed_reset_return_error(failing_fmu, importer):
     assert [s for _, s in statuses] == ["ok", 0, 0, 0, 0, 3, 3, 3, 3, 3, "done"]
     assert "RuntimeError: the constructor refuses on purpose (construction 2, 100% planned)" in stderr
     assert "fmi2GetReal: the instance has no model since fmi2Reset failed" in stderr
-
-
-@pytest.fixture(scope="module")
-def bad_values_fmu(tmp_path_factory):
-    """An FMU of tests/fmu/bad_values_slave.py with the product's FMI layer."""
-    from pythonfmu.builder import FmuBuilder
-
-    script = Path(__file__).with_name("bad_values_slave.py")
-    path = FmuBuilder.build_FMU(script, dest=tmp_path_factory.mktemp("bad_values"))
-    sys.modules.pop(script.stem, None)
-    return install_runtime(path)
 
 
 def test_a_getter_stops_at_the_first_value_it_cannot_convert(bad_values_fmu, importer):

@@ -21,7 +21,6 @@ the build compiles every kernel once per Python (`make test-python-hosts`); `mak
 
 import json
 import os
-import subprocess
 import sys
 from pathlib import Path
 
@@ -32,6 +31,7 @@ from bearing_fmu import build as bearing_build
 from bearing_fmu.compiled_code import KERNEL_PYTHONS_ENV
 from bearing_fmu_common.runtime.host_pythons import SUPPORTED, HostPythonError, host_python
 from spindle import all_fmus
+from tests._processes import run_in_host
 from tests.fmu.test_native_runtime import Unpacked, importer  # noqa: F401 (the importer fixture)
 
 VERSIONS = [f"{major}.{minor}" for major, minor in SUPPORTED]
@@ -112,21 +112,9 @@ def experiment(name):
 def run_fmpy(python, fmu, cache):
     """(outputs: names and rows, the index files written to the user cache, stdout) of the FMU's reference
     experiment through fmpy on `python`, in a fresh process with the user cache `cache`."""
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "NUMBA_CACHE_DIR")}
-    env["BEARING_FMU_CACHE"] = str(cache)
-    name = Path(fmu).stem
-    proc = subprocess.run(
-        [str(python), "-c", CHILD, str(fmu), json.dumps(experiment(name))],
-        capture_output=True,
-        text=True,
-        env=env,
-        cwd="/tmp",  # nothing of the source tree on the path
-        timeout=1800,
-    )
-    assert proc.returncode == 0, f"{python} {name}: exit {proc.returncode}\n{proc.stderr[-3000:]}"
-    line = next(x for x in proc.stdout.splitlines() if x.startswith("RESULT "))
+    result, stdout = run_in_host(python, ["-c", CHILD, fmu, json.dumps(experiment(Path(fmu).stem))], cache, 1800)
     compiled = sorted(p.name for p in (Path(cache) / "numba").rglob("*.nbi"))
-    return json.loads(line[len("RESULT ") :]), compiled, proc.stdout
+    return result, compiled, stdout
 
 
 def max_relative_difference(a, b):
@@ -190,18 +178,12 @@ def test_a_python_without_the_fmus_kernels_compiles_them_and_says_so(pythons, tm
     run = {"options": {"stop_time": 1.0, "output_interval": 0.1, "start_values": {"omega": 500.0, "F_y": 3000.0}}}
     outputs = {}
     for version, python in ((other, pythons[other]), ("build", sys.executable)):
-        env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "NUMBA_CACHE_DIR")}
-        env["BEARING_FMU_CACHE"] = str(tmp_path / version)
-        proc = subprocess.run(
-            [str(python), "-c", CHILD, str(fmu), json.dumps(run)], capture_output=True, text=True, env=env, cwd="/tmp"
-        )
-        assert proc.returncode == 0, proc.stderr[-3000:]
-        outputs[version] = json.loads(next(x for x in proc.stdout.splitlines() if x.startswith("RESULT "))[7:])
+        outputs[version], stdout = run_in_host(python, ["-c", CHILD, fmu, json.dumps(run)], tmp_path / version, None)
         if version == other:
-            assert f"this host runs Python {other} with numba" in proc.stdout, proc.stdout
-            assert "so the first steps compile them" in proc.stdout
-            assert "compiled kernels for" in proc.stdout and "s (wall time) in this call" in proc.stdout
+            assert f"this host runs Python {other} with numba" in stdout, stdout
+            assert "so the first steps compile them" in stdout
+            assert "compiled kernels for" in stdout and "s (wall time) in this call" in stdout
         else:
-            assert "compile" not in proc.stdout, proc.stdout
+            assert "compile" not in stdout, stdout
     differences = max_relative_difference(outputs[other], outputs["build"])
     assert all(d <= RTOL for d in differences.values()), differences

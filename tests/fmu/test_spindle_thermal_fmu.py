@@ -34,7 +34,7 @@ from fmpy.validation import validate_fmu
 
 from spindle.thermal.declarations import T_START
 from spindle.thermal.model import SpindleThermalModel
-from tests.fmu.harness import opened
+from tests.fmu.harness import assert_variables_documented, opened
 
 AXIAL_FLOAT_INPUTS = {"F_axial_1", "F_axial_2", "K_axial_1", "K_axial_2"}
 OMEGA = 10000.0 * 2.0 * math.pi / 60.0  # rad/s, the Rabreau rig's 10 000 rpm
@@ -56,13 +56,7 @@ def test_validate_fmu_and_model_description(fixture, request):
     md = read_model_description(str(path))
     assert md.coSimulation is not None
     assert md.coSimulation.canGetAndSetFMUstate and md.coSimulation.canSerializeFMUstate
-    units = {u.name for u in md.unitDefinitions}
-    for v in md.modelVariables:
-        assert v.description, v.name
-        if v.type == "Real":
-            assert v.unit in units, v.name
-        if v.causality == "output":
-            assert v.initial == "calculated", v.name  # computed at initialisation (ModelStructure declares it)
+    assert_variables_documented(md)
     parameters = {v.name for v in md.modelVariables if v.causality == "parameter"}
     assert {name for name in parameters if "." not in name} == {
         "spindle",

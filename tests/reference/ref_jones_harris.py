@@ -266,29 +266,23 @@ def _state(X1, X2, A1, A2, p, g):
     k = kinematics(c, p, g)
     axial, radial = ball_equations(c, k, p["D"])
     g_z, g_r, m_g = ring_force(c, k, p)
-    return dict(
-        X1=X1,
-        X2=X2,
-        Q_i=c["Q_i"],
-        Q_o=c["Q_o"],
-        a_i=c["a_i"],
-        a_o=c["a_o"],
-        delta_i=c["delta_i"],
-        delta_o=c["delta_o"],
-        beta=k["beta"],
-        lam_i=k["lam_i"],
-        lam_o=k["lam_o"],
-        w_m=k["w_m"],
-        w_R=k["w_R"],
-        F_c=k["F_c"],
-        M_g=k["M_g"],
-        g_z=g_z,
-        g_r=g_r,
-        m_g=m_g,
-        res_axial=axial,
-        res_radial=radial,
-        loaded=True,
-    )
+    return _ball_row(X1, X2, c, k, (k["F_c"], k["M_g"], g_z, g_r, m_g, axial, radial), True)
+
+
+# a ball's row after its centre: contact, kinematics, then loads and residuals (ROW_LOADS)
+ROW_CONTACT = ("Q_i", "Q_o", "a_i", "a_o", "delta_i", "delta_o")
+ROW_KINEMATICS = ("beta", "lam_i", "lam_o", "w_m", "w_R")
+ROW_LOADS = ("F_c", "M_g", "g_z", "g_r", "m_g", "res_axial", "res_radial")
+
+
+def _ball_row(X1, X2, c, k, loads, loaded):
+    """The row of a ball with centre X, contacts c and kinematics k; loads in the order of ROW_LOADS."""
+    row = dict(X1=X1, X2=X2)
+    row.update((n, c[n]) for n in ROW_CONTACT)
+    row.update((n, k[n]) for n in ROW_KINEMATICS)
+    row.update(zip(ROW_LOADS, loads, strict=True))
+    row["loaded"] = loaded
+    return row
 
 
 def _unloaded_state(A1, A2, p, g):
@@ -304,29 +298,7 @@ def _unloaded_state(A1, A2, p, g):
         delta_o=math.hypot(X1, X2) - g["r_o"],
     )
     k = kinematics(c, p, g)
-    return dict(
-        X1=X1,
-        X2=X2,
-        Q_i=0.0,
-        Q_o=0.0,
-        a_i=a,
-        a_o=a,
-        delta_i=c["delta_i"],
-        delta_o=c["delta_o"],
-        beta=k["beta"],
-        lam_i=k["lam_i"],
-        lam_o=k["lam_o"],
-        w_m=k["w_m"],
-        w_R=k["w_R"],
-        F_c=0.0,
-        M_g=0.0,
-        g_z=0.0,
-        g_r=0.0,
-        m_g=0.0,
-        res_axial=0.0,
-        res_radial=0.0,
-        loaded=False,
-    )
+    return _ball_row(X1, X2, c, k, (0.0,) * len(ROW_LOADS), False)
 
 
 def _starting_points(A1, A2, p, g):

@@ -49,17 +49,7 @@ def radial_integral_direct(eps):
     For eps >> 1 the integral is a small difference of O(1) contributions (J_r ~ 3/(8 eps)) and
     loses about log10(eps) digits: radial_integral uses the equivalent form without cancellation.
     """
-    psi_l = loaded_half_angle(eps)
-    if psi_l == 0.0:
-        return 0.0
-
-    def integrand(t):
-        psi = psi_l * t
-        base = 1.0 - math.sin(psi / 2.0) ** 2 / eps
-        return max(base, 0.0) ** 1.5 * math.cos(psi)
-
-    value, _ = quad(integrand, -1.0, 1.0, **DIRECT_OPTS)
-    return value * psi_l / (2.0 * math.pi)
+    return _arc_integral(loaded_half_angle(eps), _ring_base(eps), _cos_weight(1.5), lambda: 1.0, DIRECT_OPTS)
 
 
 def radial_integral(eps):
@@ -71,17 +61,36 @@ def radial_integral(eps):
     1 - cos psi is written 2 sin^2(psi/2) (accurate for tiny eps); the arc is mapped to
     t = psi/psi_l in [-1, 1]. The unit tests check this against radial_integral_direct.
     """
-    psi_l = loaded_half_angle(eps)
+    return _arc_integral(loaded_half_angle(eps), _ring_base(eps), _sin2_weight, lambda: 3.0 / (4.0 * eps), QUAD_OPTS)
+
+
+def _ring_base(eps):
+    """psi -> 1 - (1 - cos psi)/(2 eps), written 1 - sin^2(psi/2)/eps."""
+    return lambda psi: 1.0 - math.sin(psi / 2.0) ** 2 / eps
+
+
+def _cos_weight(exponent):
+    """(psi, base) -> base^exponent cos psi: the integrand as printed."""
+    return lambda psi, base: base**exponent * math.cos(psi)
+
+
+def _sin2_weight(psi, base):
+    """base^0.5 sin^2 psi: the integrand after integration by parts."""
+    return base**0.5 * math.sin(psi) ** 2
+
+
+def _arc_integral(psi_l, base, weight, factor, opts):
+    """factor()/(2 pi) int_{-psi_l}^{psi_l} weight(psi, max(base(psi), 0)) dpsi, by quad with opts on
+    t = psi/psi_l in [-1, 1]; 0 on an empty arc (psi_l = 0: factor is not evaluated)."""
     if psi_l == 0.0:
         return 0.0
 
     def integrand(t):
         psi = psi_l * t
-        base = 1.0 - math.sin(psi / 2.0) ** 2 / eps
-        return max(base, 0.0) ** 0.5 * math.sin(psi) ** 2
+        return weight(psi, max(base(psi), 0.0))
 
-    value, _ = quad(integrand, -1.0, 1.0, **QUAD_OPTS)
-    return 3.0 / (4.0 * eps) * value * psi_l / (2.0 * math.pi)
+    value, _ = quad(integrand, -1.0, 1.0, **opts)
+    return factor() * value * psi_l / (2.0 * math.pi)
 
 
 def load_parameter(delta_r, Pd):
@@ -122,33 +131,25 @@ def radial_force_direct(delta_r, Pd, K, Z):
     """F_r = Z/(2 pi) int K (delta_r cos psi - P_d/2)_+^1.5 cos psi dpsi as printed, by quad on
     t = psi/psi_l in [-1, 1] with the compression scaled by its peak delta_r - P_d/2. With preload
     and delta_r << |P_d| it is a small difference of large terms (see _radial_force)."""
-    psi_l = _loaded_arc(delta_r, Pd)
-    if psi_l == 0.0:
-        return 0.0
     peak = delta_r - Pd / 2.0
-
-    def integrand(t):
-        psi = psi_l * t
-        return max(_compression(psi, delta_r, Pd) / peak, 0.0) ** 1.5 * math.cos(psi)
-
-    value, _ = quad(integrand, -1.0, 1.0, **DIRECT_OPTS)
-    return Z * K * peak**1.5 * value * psi_l / (2.0 * math.pi)
+    base = _peak_base(delta_r, Pd, peak)
+    return _arc_integral(_loaded_arc(delta_r, Pd), base, _cos_weight(1.5), lambda: Z * K * peak**1.5, DIRECT_OPTS)
 
 
 def _radial_force(delta_r, Pd, K, Z):
     """F_r integrated by parts (c = delta_r cos psi - P_d/2, dc/dpsi = -delta_r sin psi, c^1.5 sin psi
     = 0 at both arc ends): int c^1.5 cos psi = 1.5 delta_r int c_+^0.5 sin^2 psi, a positive integrand."""
-    psi_l = _loaded_arc(delta_r, Pd)
-    if psi_l == 0.0:
-        return 0.0
     peak = delta_r - Pd / 2.0
 
-    def integrand(t):
-        psi = psi_l * t
-        return max(_compression(psi, delta_r, Pd) / peak, 0.0) ** 0.5 * math.sin(psi) ** 2
+    def factor():  # evaluated only on a loaded arc (peak > 0)
+        return Z * K * 1.5 * delta_r * peak**0.5
 
-    value, _ = quad(integrand, -1.0, 1.0, **QUAD_OPTS)
-    return Z * K * 1.5 * delta_r * peak**0.5 * value * psi_l / (2.0 * math.pi)
+    return _arc_integral(_loaded_arc(delta_r, Pd), _peak_base(delta_r, Pd, peak), _sin2_weight, factor, QUAD_OPTS)
+
+
+def _peak_base(delta_r, Pd, peak):
+    """psi -> the compression relative to its peak, (delta_r cos psi - P_d/2) / peak."""
+    return lambda psi: _compression(psi, delta_r, Pd) / peak
 
 
 def radial_force_and_slope(delta_r, Pd, K, Z):

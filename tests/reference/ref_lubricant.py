@@ -18,6 +18,18 @@ from scipy.optimize import brentq
 
 from bearing_fmu.kernels import lubricant as lk  # layout constants (LUB_*) and model codes only
 
+# the lubricant array's slots of the WLF parameters, in the order wlf_viscosity and its relatives take them
+WLF_INDEX = (
+    lk.LUB_WLF_MU_G,
+    lk.LUB_WLF_TG0,
+    lk.LUB_WLF_A1,
+    lk.LUB_WLF_A2,
+    lk.LUB_WLF_B1,
+    lk.LUB_WLF_B2,
+    lk.LUB_WLF_C1,
+    lk.LUB_WLF_C2,
+)
+
 
 def walther_constants(nu1, T1, nu2, T2):
     """(A, B) of ASTM D341 through (T1, nu1) and (T2, nu2); nu in m^2/s (the law is in cSt)."""
@@ -149,19 +161,7 @@ def lubricant_state(T, lub):
         )
     else:
         rho0 = density_linear(T, lub[lk.LUB_RHO_REF], lub[lk.LUB_T_REF], lub[lk.LUB_EXPANSION])
-    wlf = [
-        lub[i]
-        for i in (
-            lk.LUB_WLF_MU_G,
-            lk.LUB_WLF_TG0,
-            lk.LUB_WLF_A1,
-            lk.LUB_WLF_A2,
-            lk.LUB_WLF_B1,
-            lk.LUB_WLF_B2,
-            lk.LUB_WLF_C1,
-            lk.LUB_WLF_C2,
-        )
-    ]
+    wlf = [lub[i] for i in WLF_INDEX]
     model = int(lub[lk.LUB_VISC_MODEL])
     if model == lk.VISCOSITY_WALTHER:
         nu = walther_viscosity(T, lub[lk.LUB_WALTHER_A], lub[lk.LUB_WALTHER_B])

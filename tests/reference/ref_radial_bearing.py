@@ -37,6 +37,8 @@ from . import (
 )
 
 BALL_ROWS = ("Q_i", "Q_o", "h_min_i", "h_min_o", "Lambda_i", "Lambda_o", "C_i", "C_o")
+# a race's contact constant -> the stem of its slot in the bearing array (B_<stem>_I, B_<stem>_O)
+RACE_SLOTS = {"Rx": "RX", "Ry": "RY", "k": "K", "E": "EE", "K": "KK", "sigma": "SIGMA"}
 
 
 def analytic_bearing(omega, F_r, T_oil, brg, lub):
@@ -51,23 +53,10 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
         brg[radial_bearing.B_PD],
         brg[radial_bearing.B_E_RED],
     )
+    # each race's contact constants, from the slots B_RX_I ... B_SIGMA_I and B_RX_O ... B_SIGMA_O
     race = {
-        "i": dict(
-            Rx=brg[radial_bearing.B_RX_I],
-            Ry=brg[radial_bearing.B_RY_I],
-            k=brg[radial_bearing.B_K_I],
-            E=brg[radial_bearing.B_EE_I],
-            K=brg[radial_bearing.B_KK_I],
-            sigma=brg[radial_bearing.B_SIGMA_I],
-        ),
-        "o": dict(
-            Rx=brg[radial_bearing.B_RX_O],
-            Ry=brg[radial_bearing.B_RY_O],
-            k=brg[radial_bearing.B_K_O],
-            E=brg[radial_bearing.B_EE_O],
-            K=brg[radial_bearing.B_KK_O],
-            sigma=brg[radial_bearing.B_SIGMA_O],
-        ),
+        r: {key: brg[getattr(radial_bearing, f"B_{slot}_{r.upper()}")] for key, slot in RACE_SLOTS.items()}
+        for r in ("i", "o")
     }
     film_code = int(brg[radial_bearing.B_FILM])
     pressure_choice = int(brg[radial_bearing.B_PRESSURE])

@@ -14,20 +14,16 @@ import pytest
 
 from bearing_fmu import QuasiStaticModel, Scene
 from bearing_fmu.kernels.geometry import rolling_kinematics
-from bearing_fmu.models.dem import DemModel
+from tests.cases.dem_points import POINTS, warm
 
 OMEGA = 500.0  # rad/s
 QS = Scene(name="quasi_static_no_gyro", fidelity="quasi_static", gyroscopic=False)
 
 
 def started(omega, F_y):
-    """A 6208 after the validation tests' start-up: 2 ms at rest, a 5 ms ramp, steady to 30 ms."""
-    model = DemModel("6208", "guessasma_oil")
-    model.advance(2e-3, omega=0.0, F_y=F_y)
-    for k in range(1, 21):
-        model.advance(2e-3 + 5e-3 * k / 20, omega=omega * k / 20, F_y=F_y)
-    model.advance(0.03, omega=omega, F_y=F_y)
-    return model
+    """A 6208 after the validation tests' start-up (tests.cases.dem_points.warm): 2 ms at rest, a 5 ms ramp, steady
+    to 30 ms, at omega (rad/s) under F_y (N) with the oil at 313.15 K."""
+    return warm(dict(POINTS["6208, 3 kN, 500 rad/s"], omega=omega, loads={"F_y": F_y}))
 
 
 def history(model, seconds, every=1e-3, **inputs):

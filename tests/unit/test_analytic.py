@@ -54,16 +54,6 @@ OUTPUTS = {
     for name in dir(radial_bearing)
     if name.startswith("O_") and name != "O_SIZE"
 }
-WLF = (
-    lk.LUB_WLF_MU_G,
-    lk.LUB_WLF_TG0,
-    lk.LUB_WLF_A1,
-    lk.LUB_WLF_A2,
-    lk.LUB_WLF_B1,
-    lk.LUB_WLF_B2,
-    lk.LUB_WLF_C1,
-    lk.LUB_WLF_C2,
-)
 SCENES = {
     "default": Scene(),
     "masjedi_khonsari": Scene(film="masjedi_khonsari"),
@@ -104,7 +94,7 @@ def run_kernel(m, omega, F_r, T):
 def xi_tolerance(T, lub):
     if int(lub[lk.LUB_PIEZO_MODEL]) != lk.PIEZO_WLF:
         return RTOL
-    wlf = [lub[i] for i in WLF]
+    wlf = [lub[i] for i in rlub.WLF_INDEX]
     mu0 = rlub.wlf_viscosity(0.0, T, *wlf)
     h = 1e5
     f = [rlub.wlf_ratio(i * h, T, mu0, *wlf) for i in range(5)]

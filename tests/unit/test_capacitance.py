@@ -33,15 +33,6 @@ K_CM = lk.clausius_mossotti_constant(2.2, 870.0)
 H_FLOOR = 10e-9
 
 
-def test_every_public_kernel_has_a_twin():
-    kernels = [
-        n
-        for n, f in vars(ck).items()
-        if hasattr(f, "py_func") and f.py_func.__module__ == ck.__name__ and not n.startswith("_")
-    ]
-    assert kernels and all(callable(getattr(rc, n, None)) for n in kernels), kernels
-
-
 def test_constants():
     assert ck.EPSILON_0 == rc.epsilon_0
     assert abs(rc.epsilon_0 - scipy.constants.epsilon_0) <= 1e-9 * scipy.constants.epsilon_0  # CODATA 2018 vs 2022

@@ -28,15 +28,6 @@ FORMULAS = [ek.FILM_HAMROCK_DOWSON, ek.FILM_MASJEDI_KHONSARI, ek.FILM_CHITTENDEN
 SEED = dict(eta=0.04, xi=2.3e-8, E_red=E_STEEL, u=6.1, Q=1457.0, Rx=4.99e-3, Ry=0.1638, k=10.7)
 
 
-def test_every_public_kernel_has_a_twin():
-    kernels = [
-        n
-        for n, f in vars(ek).items()
-        if hasattr(f, "py_func") and f.py_func.__module__ == ek.__name__ and not n.startswith("_")
-    ]
-    assert kernels and all(callable(getattr(re_, n, None)) for n in kernels), kernels
-
-
 def test_option_codes_match_twin():
     assert (ek.FILM_HAMROCK_DOWSON, ek.FILM_MASJEDI_KHONSARI, ek.FILM_CHITTENDEN) == (
         re_.HAMROCK_DOWSON,

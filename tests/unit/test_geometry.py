@@ -50,15 +50,6 @@ def angle_tol(D, f_i, f_o, Pd):
     return RTOL + (EPS / x if x > 0.0 else 0.0)
 
 
-def test_every_public_kernel_has_a_twin():
-    kernels = [
-        n
-        for n, f in vars(gk).items()
-        if hasattr(f, "py_func") and f.py_func.__module__ == gk.__name__ and not n.startswith("_")
-    ]
-    assert kernels and all(callable(getattr(rg, n, None)) for n in kernels), kernels
-
-
 @pytest.mark.parametrize("D, dm, f_i, f_o", GEOMETRIES)
 @pytest.mark.parametrize("alpha", ANGLES)
 def test_closed_forms_on_grid(D, dm, f_i, f_o, alpha):

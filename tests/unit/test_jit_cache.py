@@ -11,7 +11,6 @@ import json
 import os
 import shutil
 import stat
-import subprocess
 import sys
 from pathlib import Path
 
@@ -19,6 +18,7 @@ import pytest
 
 from bearing_fmu.kernels import hertz
 from bearing_fmu_common import jit
+from tests._processes import run_checked
 
 ROOT = Path(jit.__file__).resolve().parent.parent
 HERTZ_CALL = "hertz.hertz_stiffness(0.005, 0.1, 2.3e11, 8.0, 1.02, 3.2)"
@@ -45,16 +45,7 @@ def run_child(env=None, prelude="", cwd=None, umask=None):
     full.update(env or {})
     register = "jit.add_compiled_dir(os.environ['COMPILED'])" if "COMPILED" in full else ""
     code = CHILD.format(prelude=prelude, register=register)
-    proc = subprocess.run(
-        [sys.executable, "-c", code],
-        env=full,
-        cwd=cwd,
-        capture_output=True,
-        text=True,
-        check=False,
-        preexec_fn=(lambda: os.umask(umask)) if umask is not None else None,
-    )
-    assert proc.returncode == 0, proc.stderr[-3000:]
+    proc = run_checked([sys.executable, "-c", code], full, cwd=cwd, umask=umask)
     return json.loads(proc.stdout.strip().splitlines()[-1]), proc.stderr
 
 
@@ -114,35 +105,28 @@ def test_cache_serves_a_copy_of_the_sources_elsewhere_with_other_file_times(tmp_
     assert second["write"] == first["write"] and (second["hits"], second["misses"]) == (1, 0)
 
 
-def _falls_back(result, stderr, unusable):
-    """The child compiled into a private temporary directory and said so."""
+def _falls_back(tmp_path, variable, leaf):
+    """With `variable` set to a path through a file, the child compiles into a private temporary directory (under
+    its TMPDIR, mode 0700, ours) and says which path it could not write."""
+    blocker = tmp_path / "a_file"
+    blocker.write_text("not a directory")
+    tmp = tmp_path / "tmp"
+    tmp.mkdir()
+    unusable = blocker / leaf
+    result, stderr = run_child({variable: str(unusable), "TMPDIR": str(tmp)})
     write = Path(result["write"])
-    assert write.is_relative_to(Path(result["tmp"])), write
+    assert write.is_relative_to(tmp), write
     assert write.stat().st_mode & 0o777 == 0o700 and write.stat().st_uid == os.getuid()
     assert "cannot be written" in stderr and str(unusable) in stderr
     assert result["misses"] == 1
 
 
-def _with_tmp(result, tmp):
-    return {**result, "tmp": str(tmp)}
-
-
 def test_a_path_through_a_file_falls_back_to_a_private_temporary_directory(tmp_path):
-    blocker = tmp_path / "a_file"
-    blocker.write_text("not a directory")
-    tmp = tmp_path / "tmp"
-    tmp.mkdir()
-    result, stderr = run_child({"BEARING_FMU_CACHE": str(blocker / "cache"), "TMPDIR": str(tmp)})
-    _falls_back(_with_tmp(result, tmp), stderr, blocker / "cache")
+    _falls_back(tmp_path, "BEARING_FMU_CACHE", "cache")
 
 
 def test_no_usable_home_falls_back_to_a_private_temporary_directory(tmp_path):
-    blocker = tmp_path / "a_file"
-    blocker.write_text("not a directory")
-    tmp = tmp_path / "tmp"
-    tmp.mkdir()
-    result, stderr = run_child({"HOME": str(blocker / "home"), "TMPDIR": str(tmp)})
-    _falls_back(_with_tmp(result, tmp), stderr, blocker / "home")
+    _falls_back(tmp_path, "HOME", "home")
 
 
 # refuses writes under READ_ONLY as a read-only directory would, also for root (who may write anywhere)
@@ -310,13 +294,7 @@ def test_numba_disable_jit_runs_the_kernels_as_plain_python(tmp_path):
     env = {k: v for k, v in os.environ.items() if k not in UNSET}
     results = []
     for disable in ("1", "0"):
-        proc = subprocess.run(
-            [sys.executable, "-c", code],
-            env={**env, "NUMBA_DISABLE_JIT": disable, "BEARING_FMU_CACHE": str(tmp_path)},
-            cwd=ROOT,
-            capture_output=True,
-            text=True,
-        )
-        assert proc.returncode == 0, proc.stderr[-3000:]
+        child_env = {**env, "NUMBA_DISABLE_JIT": disable, "BEARING_FMU_CACHE": str(tmp_path)}
+        proc = run_checked([sys.executable, "-c", code], child_env, cwd=ROOT)
         results.append(json.loads(proc.stdout.strip().splitlines()[-1]))
     assert results[0] == pytest.approx(results[1], rel=1e-12)

@@ -56,15 +56,6 @@ def conditioning(eps):
     return 8.0 * EPS * (eps + 1.0 / eps) if 0.0 < eps < math.inf else 0.0
 
 
-def test_every_public_kernel_has_a_twin():
-    kernels = [
-        n
-        for n, f in vars(ld).items()
-        if hasattr(f, "py_func") and f.py_func.__module__ == ld.__name__ and not n.startswith("_")
-    ]
-    assert kernels and all(callable(getattr(rl, n, None)) for n in kernels), kernels
-
-
 @pytest.mark.parametrize("n", [1, 2, 3, 5, 10, 20, 48, 64, 100])
 def test_gauss_legendre(n):
     x, w = ld.gauss_legendre(n)

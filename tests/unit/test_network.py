@@ -27,15 +27,6 @@ OMEGA = 10000.0 * 2.0 * math.pi / 60.0
 HEATS = dict(Q_inner_ring_1=300.0, Q_outer_ring_1=200.0, Q_inner_ring_2=300.0, Q_outer_ring_2=200.0)
 
 
-def test_every_public_kernel_has_a_twin():
-    kernels = [
-        n
-        for n, f in vars(nk).items()
-        if hasattr(f, "py_func") and f.py_func.__module__ == nk.__name__ and not n.startswith("_")
-    ]
-    assert kernels and all(callable(getattr(rn, n, None)) for n in kernels), kernels
-
-
 def random_network(seed, n=None, m=2):
     """Connected random network: a chain of nodes to boundary 0 plus random extra links (all kinds)."""
     rng = np.random.default_rng(seed)

@@ -102,48 +102,28 @@ def relative_entry_error(K, K_ref, floor=1e-6):
     return np.max(np.abs(K - K_ref)[mask] / np.abs(K_ref)[mask])
 
 
+THRUST = (0.0, 0.0, 800.0, 0.0, 0.0)  # F_x, F_y, F_z (N), M_x, M_y (N.m)
+COMBINED = (400.0, -200.0, 1500.0, 10.0, 5.0)
+
+
+def _b7214c_10k(label, race, loads=THRUST):
+    """A load case of the B7214C at 10 000 rpm with its centrifugal and gyroscopic loads, under the race control
+    `race`: (label, parameters, loads, omega rad/s)."""
+    return label, ref.params_b7214c(centrifugal=True, gyroscopic=True, race=race), loads, 10000 * RPM
+
+
 LOAD_CASES = [
     ("6208 radial at rest", ref.params_6208(), (3000.0, 0.0, 0.0, 0.0, 0.0), 0.0),
     ("6208 clearance, combined", ref.params_6208(Pd=20e-6), (2000.0, 500.0, 300.0, 0.0, 0.0), 0.0),
     ("6208 preloaded, moment", ref.params_6208(Pd=-10e-6), (1000.0, 0.0, 200.0, 5.0, -3.0), 0.0),
-    ("B7214C axial at rest", ref.params_b7214c(), (0.0, 0.0, 800.0, 0.0, 0.0), 0.0),
-    ("B7214C ORC 10k", ref.params_b7214c(centrifugal=True, race="outer"), (0.0, 0.0, 800.0, 0.0, 0.0), 10000 * RPM),
-    (
-        "B7214C ORCG 10k",
-        ref.params_b7214c(centrifugal=True, gyroscopic=True, race="outer"),
-        (0.0, 0.0, 800.0, 0.0, 0.0),
-        10000 * RPM,
-    ),
-    (
-        "B7214C hybrid 10k",
-        ref.params_b7214c(centrifugal=True, gyroscopic=True, race="hybrid"),
-        (0.0, 0.0, 800.0, 0.0, 0.0),
-        10000 * RPM,
-    ),
-    (
-        "B7214C hybrid outer-split 10k",
-        ref.params_b7214c(centrifugal=True, gyroscopic=True, race="hybrid_outer"),
-        (0.0, 0.0, 800.0, 0.0, 0.0),
-        10000 * RPM,
-    ),
-    (
-        "B7214C hybrid inner-split 10k",
-        ref.params_b7214c(centrifugal=True, gyroscopic=True, race="hybrid_inner"),
-        (0.0, 0.0, 800.0, 0.0, 0.0),
-        10000 * RPM,
-    ),
-    (
-        "B7214C hybrid equal-split 10k combined",
-        ref.params_b7214c(centrifugal=True, gyroscopic=True, race="hybrid_equal"),
-        (400.0, -200.0, 1500.0, 10.0, 5.0),
-        10000 * RPM,
-    ),
-    (
-        "B7214C IRC 10k combined",
-        ref.params_b7214c(centrifugal=True, gyroscopic=True, race="inner"),
-        (400.0, -200.0, 1500.0, 10.0, 5.0),
-        10000 * RPM,
-    ),
+    ("B7214C axial at rest", ref.params_b7214c(), THRUST, 0.0),
+    ("B7214C ORC 10k", ref.params_b7214c(centrifugal=True, race="outer"), THRUST, 10000 * RPM),
+    _b7214c_10k("B7214C ORCG 10k", "outer"),
+    _b7214c_10k("B7214C hybrid 10k", "hybrid"),
+    _b7214c_10k("B7214C hybrid outer-split 10k", "hybrid_outer"),
+    _b7214c_10k("B7214C hybrid inner-split 10k", "hybrid_inner"),
+    _b7214c_10k("B7214C hybrid equal-split 10k combined", "hybrid_equal", COMBINED),
+    _b7214c_10k("B7214C IRC 10k combined", "inner", COMBINED),
 ]
 
 

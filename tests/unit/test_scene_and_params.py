@@ -105,28 +105,35 @@ BASE = (
 ).read_text()
 
 
+def _edited_6208_is_refused(tmp_path, old, new, match):
+    """The 6208's bearing file with `old` (which it holds) replaced by `new` is refused with a ParameterError
+    whose message matches `match`."""
+    assert old in BASE
+    with pytest.raises(ParameterError, match=match):
+        load_bearing(_write(tmp_path, BASE.replace(old, new)))
+
+
 def test_missing_key_is_named(tmp_path):
-    text = BASE.replace(
-        'n_balls             = { value = 9, unit = "-", source = "Guessasma 2018 section 2: Z = 9" }\n', ""
-    )
-    with pytest.raises(ParameterError, match="missing key 'geometry.n_balls'"):
-        load_bearing(_write(tmp_path, text))
+    line = 'n_balls             = { value = 9, unit = "-", source = "Guessasma 2018 section 2: Z = 9" }\n'
+    _edited_6208_is_refused(tmp_path, line, "", "missing key 'geometry.n_balls'")
 
 
 def test_out_of_range_value_names_key_and_range(tmp_path):
-    text = BASE.replace("inner_conformity    = { value = 0.52", "inner_conformity    = { value = 0.45")
-    with pytest.raises(
-        ParameterError, match=r"'geometry.inner_conformity' = 0.45 - is outside the allowed range \]0.5, 1.0\]"
-    ):
-        load_bearing(_write(tmp_path, text))
+    _edited_6208_is_refused(
+        tmp_path,
+        "inner_conformity    = { value = 0.52",
+        "inner_conformity    = { value = 0.45",
+        r"'geometry.inner_conformity' = 0.45 - is outside the allowed range \]0.5, 1.0\]",
+    )
 
 
 def test_wrong_unit_is_named(tmp_path):
-    text = BASE.replace(
-        'ball_diameter       = { value = 12.6e-3, unit = "m"', 'ball_diameter       = { value = 12.6e-3, unit = "mm"'
+    _edited_6208_is_refused(
+        tmp_path,
+        'ball_diameter       = { value = 12.6e-3, unit = "m"',
+        'ball_diameter       = { value = 12.6e-3, unit = "mm"',
+        "'geometry.ball_diameter' has unit 'mm', expected 'm'",
     )
-    with pytest.raises(ParameterError, match="'geometry.ball_diameter' has unit 'mm', expected 'm'"):
-        load_bearing(_write(tmp_path, text))
 
 
 def test_cage_mass_is_shared_by_the_dem_cage_balls(tmp_path):
@@ -139,9 +146,12 @@ def test_cage_mass_is_shared_by_the_dem_cage_balls(tmp_path):
     assert DemModel("B7214C", "iso_vg68_mineral").par[s.P_M_CAGE] == pytest.approx(14e-3 / 17, rel=1e-15)
     solid = 1140.0 * 4.0 / 3.0 * math.pi * 4.19e-3**3  # PA66, R_z of Guessasma 2018 Table 1
     assert DemModel("6208", "guessasma_oil").par[s.P_M_CAGE] == pytest.approx(solid, rel=1e-12)
-    text = BASE.replace("[cage]\n", '[cage]\nmass = { value = 0.0, unit = "kg", source = "test" }\n')
-    with pytest.raises(ParameterError, match=r"'cage.mass' = 0.0 kg is outside the allowed range \]0.0, 1000.0\]"):
-        load_bearing(_write(tmp_path, text))
+    _edited_6208_is_refused(
+        tmp_path,
+        "[cage]\n",
+        '[cage]\nmass = { value = 0.0, unit = "kg", source = "test" }\n',
+        r"'cage.mass' = 0.0 kg is outside the allowed range \]0.0, 1000.0\]",
+    )
 
 
 def _numeric(name="6208", **changes):
@@ -171,9 +181,12 @@ def test_a_race_without_composite_roughness_is_refused_by_every_fidelity(tmp_pat
         ParameterError, match=rf"bearing_data.{key} = 0.0 m and bearing_data.Ra_ball = 0.0 m .*{allowed}"
     ):
         bearing_from_values(_numeric(**{key: 0.0}))
-    text = BASE.replace(f"{race}_race_Ra = {{ value = 0.3e-6", f"{race}_race_Ra = {{ value = 0.0")
-    with pytest.raises(ParameterError, match=rf"'surface.{race}_race_Ra' = 0.0 m and 'surface.ball_Ra' = 0.0 m"):
-        load_bearing(_write(tmp_path, text))
+    _edited_6208_is_refused(
+        tmp_path,
+        f"{race}_race_Ra = {{ value = 0.3e-6",
+        f"{race}_race_Ra = {{ value = 0.0",
+        rf"'surface.{race}_race_Ra' = 0.0 m and 'surface.ball_Ra' = 0.0 m",
+    )
     smooth = replace(load_bearing("6208"), **{key: 0.0})
     for facade in (AnalyticModel, QuasiStaticModel, DemModel):
         with pytest.raises(ParameterError, match=rf"'surface.{race}_race_Ra' = 0.0 m"):

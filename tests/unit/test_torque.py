@@ -62,15 +62,6 @@ def _seed_6208():
     return dict(Q=1457.0, u=u, Rx=Rx, Ry=Ry, D=D, dm=dm, f=f)
 
 
-def test_every_public_kernel_has_a_twin():
-    kernels = [
-        n
-        for n, f in vars(tk).items()
-        if hasattr(f, "py_func") and f.py_func.__module__ == tk.__name__ and not n.startswith("_")
-    ]
-    assert kernels and all(callable(getattr(rt, n, None)) for n in kernels), kernels
-
-
 def test_codes_match_twin():
     assert (
         (tk.TL_EHL, tk.TL_HYST, tk.TL_HEATHCOTE, tk.TL_SPIN, tk.TL_SIZE)
