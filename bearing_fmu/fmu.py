@@ -37,6 +37,15 @@ class _BearingSlave(DeclaredSlave):
     scene = Scene()
     parameters = fidelity.parameters  # declarations of the FMU's parameters (models.declarations)
 
+    def __init_subclass__(cls, **kwargs):
+        """A bearing FMU class names its fidelity; its default scene and its parameters follow from it (a class
+        that sets them itself, such as a built FMU's with its scene file, keeps its own)."""
+        super().__init_subclass__(**kwargs)
+        if "fidelity" in cls.__dict__:
+            name = cls.fidelity.name
+            cls.scene = cls.__dict__.get("scene", Scene(name=name, fidelity=name))
+            cls.parameters = cls.__dict__.get("parameters", cls.fidelity.parameters)
+
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
         self._model = None
@@ -179,8 +188,6 @@ class BearingQuasiStatic(_BearingSlave):
         "5x5 stiffness, EHL film, regime, capacitance, Houpert friction torque and ring heat. SI units."
     )
     fidelity = FIDELITIES["quasi_static"]
-    scene = Scene(name="quasi_static", fidelity="quasi_static")
-    parameters = fidelity.parameters
     F_preload = 0.0  # N: no assembly offset unless the scene's drive is fixed_axial (then a parameter)
 
     def _race_control(self):
@@ -209,8 +216,6 @@ class BearingDEM(_BearingSlave):
         "torque and ring heat from the energy dissipated over the step. SI units."
     )
     fidelity = FIDELITIES["dem"]
-    scene = Scene(name="dem", fidelity="dem")
-    parameters = fidelity.parameters
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)

@@ -96,6 +96,18 @@ FIDELITY_RULES = {
 FIDELITIES = tuple(FIDELITY_RULES)
 
 
+# the options with a set of choices, and those choices (a dict's keys are shown sorted)
+SCENE_CHOICES = {
+    "film": FILM_FORMULAS,
+    "film_correction": FILM_CORRECTIONS,
+    "hertz": HERTZ_SOLUTIONS,
+    "permittivity_pressure": PERMITTIVITY_PRESSURES,
+    "drive": DRIVES,
+    "race_control": RACE_CONTROLS,
+    "spring_constant": SPRING_CONSTANTS,
+}
+
+
 class SceneError(ValueError):
     """One or more scene options are unknown or incompatible (all are listed in the message)."""
 
@@ -201,16 +213,7 @@ class Scene:
         out = []
         if self.fidelity not in FIDELITIES:
             out.append(f"fidelity = {self.fidelity!r}: available {list(FIDELITIES)}")
-        if self.film not in FILM_FORMULAS:
-            out.append(f"film = {self.film!r}: allowed {sorted(FILM_FORMULAS)}")
-        if self.film_correction not in FILM_CORRECTIONS:
-            out.append(f"film_correction = {self.film_correction!r}: allowed {list(FILM_CORRECTIONS)}")
-        if self.hertz not in HERTZ_SOLUTIONS:
-            out.append(f"hertz = {self.hertz!r}: allowed {list(HERTZ_SOLUTIONS)}")
-        if self.permittivity_pressure not in PERMITTIVITY_PRESSURES:
-            out.append(
-                f"permittivity_pressure = {self.permittivity_pressure!r}: allowed {sorted(PERMITTIVITY_PRESSURES)}"
-            )
+        out += self._choice_problems(("film", "film_correction", "hertz", "permittivity_pressure"))
         if not 1.0 <= self.roughness_factor <= 2.0:
             out.append(f"roughness_factor = {self.roughness_factor}: allowed [1, 2]")
         if not 0.0 < self.film_floor <= 1e-6:
@@ -225,12 +228,7 @@ class Scene:
             out.append(f"oil_gap = {self.oil_gap} m: allowed ]0, 5e-5] m")
         if not 1e-15 <= self.tolerance <= 1e-3:
             out.append(f"tolerance = {self.tolerance}: allowed [1e-15, 1e-3]")
-        if self.drive not in DRIVES:
-            out.append(f"drive = {self.drive!r}: allowed {list(DRIVES)}")
-        if self.race_control not in RACE_CONTROLS:
-            out.append(f"race_control = {self.race_control!r}: allowed {list(RACE_CONTROLS)}")
-        if self.spring_constant not in SPRING_CONSTANTS:
-            out.append(f"spring_constant = {self.spring_constant!r}: allowed {list(SPRING_CONSTANTS)}")
+        out += self._choice_problems(("drive", "race_control", "spring_constant"))
         if not 5 <= self.max_iterations <= 1000:
             out.append(f"max_iterations = {self.max_iterations}: allowed [5, 1000]")
         if self.fidelity in FIDELITY_RULES:
@@ -240,6 +238,17 @@ class Scene:
         out += self._lubrication_problems()
         if self.background_capacitance > 0.0 and not self.capacitance:
             out.append("background_capacitance > 0 needs capacitance = true")
+        return out
+
+    def _choice_problems(self, options):
+        """The named options whose value is not one of their choices (SCENE_CHOICES), in the given order."""
+        out = []
+        for option in options:
+            choices = SCENE_CHOICES[option]
+            value = getattr(self, option)
+            if value not in choices:
+                shown = sorted(choices) if isinstance(choices, dict) else list(choices)
+                out.append(f"{option} = {value!r}: allowed {shown}")
         return out
 
     def _lubrication_problems(self):
