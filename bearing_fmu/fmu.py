@@ -84,9 +84,14 @@ class _BearingSlave(DeclaredSlave):
         """The facade's keyword arguments beyond bearing, lubricant, scene and clearance (from the parameters)."""
         return {}
 
+    def _check_bearing(self, bearing):
+        """Refuse a bearing the fidelity does not model, naming the FMU parameters that made it (none here)."""
+
     def _make_model(self):
+        bearing = self._bearing()
+        self._check_bearing(bearing)
         return self.fidelity.model(
-            self._bearing(), self._lubricant(), self.scene, Pd=self._clearance(), **self._model_options()
+            bearing, self._lubricant(), self.scene, Pd=self._clearance(), **self._model_options()
         )
 
     def _build_model(self):
@@ -166,17 +171,16 @@ class BearingAnalytic(_BearingSlave):
         "capacitance. SI units."
     )
 
-    def _make_model(self):
-        if not self.bearing_from_file and not models_bearing(self._bearing()):
+    def _check_bearing(self, bearing):
+        if not self.bearing_from_file and not models_bearing(bearing):
             # AnalyticModel's refusal names the bearing; from the numeric parameters, name those that made it
             kind, alpha0 = (getattr(self, BEARING_PREFIX + name) for name in ("kind", "alpha0"))
             raise ParameterError(
-                f"{BEARING_PREFIX}kind = {kind} ({self._bearing().kind}) and {BEARING_PREFIX}alpha0 = {alpha0} rad are "
+                f"{BEARING_PREFIX}kind = {kind} ({bearing.kind}) and {BEARING_PREFIX}alpha0 = {alpha0} rad are "
                 f"not allowed: the analytic fidelity models radially loaded deep-groove bearings, allowed "
                 f"{BEARING_PREFIX}kind = 0 (deep_groove) with {BEARING_PREFIX}alpha0 = 0 rad; use the quasi-static "
                 "fidelity"
             )
-        return super()._make_model()
 
 
 class BearingQuasiStatic(_BearingSlave):

@@ -105,6 +105,7 @@ SCENE_CHOICES = {
     "drive": DRIVES,
     "race_control": RACE_CONTROLS,
     "spring_constant": SPRING_CONSTANTS,
+    "lubrication": LUBRICATION_METHODS,
 }
 
 
@@ -232,8 +233,9 @@ class Scene:
         if not 5 <= self.max_iterations <= 1000:
             out.append(f"max_iterations = {self.max_iterations}: allowed [5, 1000]")
         if self.fidelity in FIDELITY_RULES:
-            choices = {"spring_constant": SPRING_CONSTANTS, "lubrication": LUBRICATION_METHODS}
-            refused = [name for name, allowed in choices.items() if getattr(self, name) not in allowed]
+            refused = [
+                name for name in ("spring_constant", "lubrication") if getattr(self, name) not in SCENE_CHOICES[name]
+            ]
             out += FIDELITY_RULES[self.fidelity].problems(self, refused)
         out += self._lubrication_problems()
         if self.background_capacitance > 0.0 and not self.capacitance:
@@ -254,7 +256,7 @@ class Scene:
     def _lubrication_problems(self):
         out = []
         if self.lubrication not in LUBRICATION_METHODS:
-            return [f"lubrication = {self.lubrication!r}: allowed {list(LUBRICATION_METHODS)}"]
+            return self._choice_problems(("lubrication",))
         checks = (
             ("oil_level", "", 0.0, 20.0, ("oil_bath",)),
             ("inlet_oil_layer", " m", 1e-8, 1e-2, LUBRICATION_METHODS[1:]),
