@@ -27,9 +27,11 @@ from pythonfmu.builder import FmuBuilder
 from bearing_fmu_common.runtime.binaries import OWN_PACKAGES, install_runtime
 from bearing_fmu_common.variables import select
 
+from .bundle import runtime_bundle
 from .compiled_code import COMPILED_DIR, add_compiled_code
 from .fidelities import FIDELITIES
 from .fmu_files import add_documentation, crosscheck_tables, entry_metadata
+from .models.film_table import CARRIED_DIR, carried_name, table_path
 from .scene import Scene
 
 PACKAGE_DIR = Path(__file__).resolve().parent
@@ -129,7 +131,13 @@ def package_hash(root, names):
     return digest.hexdigest()[:16]
 
 
-BEARING_BUNDLE = ((PACKAGE_DIR, "bearing_fmu"), (COMMON_DIR, "bearing_fmu_common"))
+# what ENTRY_TEMPLATE imports of the product whatever the FMU (bearing_fmu.bundle follows their imports)
+RUNTIME_ENTRIES = ("bearing_fmu_common.jit", "bearing_fmu_common.first_start")
+# a bearing FMU's slave module and what build_fmu's class body imports
+BEARING_ENTRIES = ("bearing_fmu.fmu", "bearing_fmu.scene", "bearing_fmu.models.file_parameters", *RUNTIME_ENTRIES)
+BEARING_BUNDLE = runtime_bundle(
+    ((PACKAGE_DIR, "bearing_fmu"), (COMMON_DIR, "bearing_fmu_common")), BEARING_ENTRIES, ("bearing_fmu/params",)
+)
 COMPAT_DIR = "_py310"  # in the FMU's resources/: standard-library modules that Python 3.10 lacks (tomllib)
 _NOT_BUNDLED = shutil.ignore_patterns("__pycache__", "*.pyc", "*.nbi", "*.nbc")
 
@@ -180,10 +188,12 @@ def build_python_fmu(
     imports="",
     runs=(),
     experiment=None,
+    data=(),
 ):
     """Build a pythonfmu FMU whose slave class `fmu_name` derives from module.base_class, bundling
-    in resources/ the files and directories of `bundle` ((source, path in resources/) pairs: whole
-    packages, or the parts of one a model needs; copied to a stable cache directory at load). Its
+    in resources/ the files and directories of `bundle` ((source, path in resources/) pairs: the modules of the
+    product it runs and their data, bearing_fmu.bundle; copied to a stable cache directory at load) and the files
+    of `data` ((source, path in resources/) pairs of files it reads from its resources/, not packages). Its
     binary is the project's FMI layer (bearing_fmu_common/runtime), not pythonfmu's. Its kernels are
     compiled for the generic CPU by running each experiment of `runs` on the FMU
     (bearing_fmu.compiled_code.compile_portable) and added to the FMU. experiment: (stop time, step) of
@@ -193,6 +203,7 @@ def build_python_fmu(
     with tempfile.TemporaryDirectory(prefix="bearing_fmu_build_") as tmp:
         stage = Path(tmp)
         packages = stage_bundle(stage, bundle)
+        carried = [stage / top for top in stage_bundle(stage, data)]
         own = stage / OWN_PACKAGES  # the layer refuses the FMU where these are already imported with other code
         own.write_text("".join(f"{p}\n" for p in packages))
         compat = stage_compat(stage)
@@ -214,7 +225,7 @@ def build_python_fmu(
         path = FmuBuilder.build_FMU(
             entry,
             dest=out_dir / f"{fmu_name}.fmu",
-            project_files=[*(stage / p for p in packages), compat, own],
+            project_files=[*(stage / p for p in packages), *carried, compat, own],
             canGetAndSetFMUstate=True,
             canSerializeFMUstate=True,
         )
@@ -260,6 +271,7 @@ def build_fmu(scene_file, out_dir=DEFAULT_OUT, configuration=None):
         + ("from bearing_fmu.models.file_parameters import configured  # noqa: E402\n" if names else ""),
         runs=compile_runs(scene),
         experiment=(stop, step),
+        data=carried_film_tables(scene, model),
     )
     out_dir = Path(out_dir)
     markdown = variables_markdown(*scene_variables(scene_file, fmu_name, names))
@@ -270,6 +282,15 @@ def build_fmu(scene_file, out_dir=DEFAULT_OUT, configuration=None):
         path, fmu_name, markdown, csv_text(inputs, reference_cell), csv_text(reference, reference_cell), stop, step
     )
     return Path(path)
+
+
+def carried_film_tables(scene, model):
+    """(cached table, path in resources/) of the film table an FMU of `scene` carries: with the film correction
+    on, the table of the bearing and lubricant its model starts with (models.film_table: the FMU reads no other)."""
+    if scene.film_correction == "none":
+        return ()
+    b, lub = model.bearing, model.lubricant
+    return ((table_path(b, lub), f"{CARRIED_DIR}/{carried_name(b, lub)}"),)
 
 
 # -- variable lists (fmus/<Name>.md), generated from the declarations -----------------------------------

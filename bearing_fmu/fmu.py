@@ -10,6 +10,8 @@ outputs keep their last valid values. A refused parameter makes exit_initializat
 (fmi2Error). Statuses: docs/fmu_runtime.md.
 """
 
+import os
+
 from pythonfmu.enums import Fmi2Status
 
 from bearing_fmu_common.fmi import DeclaredSlave, check_parameters, declared_parameter
@@ -21,6 +23,7 @@ from .models.analytic import models_bearing
 from .models.dem import DemUnstableError
 from .models.dem_settings import DEM_SETTINGS
 from .models.file_parameters import BEARING_PREFIX, LUBRICANT_PREFIX, bearing_from_values, lubricant_from_values
+from .models.film_table import CARRIED_DIR
 from .models.limits import InputError
 from .params import ParameterError
 from .scene import LUBRICATION_METHODS, RACE_CONTROLS, Scene, SceneError
@@ -87,11 +90,20 @@ class _BearingSlave(DeclaredSlave):
     def _check_bearing(self, bearing):
         """Refuse a bearing the fidelity does not model, naming the FMU parameters that made it (none here)."""
 
+    def _film_tables(self):
+        """The film tables the FMU carries (resources/film_tables): its models read no other (models.film_table)."""
+        return None if self.resources is None else os.path.join(self.resources, CARRIED_DIR)
+
     def _make_model(self):
         bearing = self._bearing()
         self._check_bearing(bearing)
         return self.fidelity.model(
-            bearing, self._lubricant(), self.scene, Pd=self._clearance(), **self._model_options()
+            bearing,
+            self._lubricant(),
+            self.scene,
+            Pd=self._clearance(),
+            film_tables=self._film_tables(),
+            **self._model_options(),
         )
 
     def _build_model(self):

@@ -6,7 +6,7 @@ is the one the table records. Random points, per bearing and race (seeded): oil 
 lubricant's range, entrainment speed and Hertz pressure log-uniform over the table's U_E_RANGE and P_H_RANGE
 (models.film_table), the load from the pressure. At each, the Hamrock-Dowson film as the fidelities compute it,
 uncorrected and corrected (kernels.film_correction, the kernel the fidelities call), against the solver as the
-table's nodes are solved (models.film_table.solve_numerical: on the grid level the contact's film needs, 3 to 5,
+table's nodes are solved (models.film_table_build.solve_numerical: on the grid level the contact's film needs, 3 to 5,
 the next finer where that one does not converge), with the fluid of models.film_check. The errors are those of the
 table (the (M, L) reduction and the interpolation) against that solver, not the solver's own discretisation (within
 about 2 % on the level chosen, docs/ehl_solver.md, Heavy contacts).
@@ -33,6 +33,7 @@ from bearing_fmu.kernels.hertz import hertz_contact  # noqa: E402
 from bearing_fmu.kernels.lubricant import lubricant_state  # noqa: E402
 from bearing_fmu.models import ehl_numerical as en  # noqa: E402
 from bearing_fmu.models import film_table as ft  # noqa: E402
+from bearing_fmu.models import film_table_build as ftb  # noqa: E402
 from bearing_fmu.params import load_bearing, load_lubricant  # noqa: E402
 
 from .render import cli, metric  # noqa: E402
@@ -95,7 +96,7 @@ def evaluate(args):
     formula = ehl.film_thickness(*film)
     corrected = corrected_film_thickness(*film, table, race)
     start = time.perf_counter()
-    solution, level = ft.solve_numerical(Rx, Ry, Q, u, E_red, eta, xi)
+    solution, level = ftb.solve_numerical(Rx, Ry, Q, u, E_red, eta, xi)
     return dict(bearing=bearing_name, race=race, T=T, u=u, Q=Q, k=c[0], M=W * (2.0 * U) ** -0.75,
                 L=G * (2.0 * U) ** 0.25, formula=formula, corrected=corrected,
                 numerical=(solution.h_c, solution.h_min), converged=bool(solution.converged), level=level,
@@ -107,7 +108,7 @@ def table_record(name, lubricant, n_points, n_clamped, seed):
     try:
         table = ft.load_film_table(name, LUBRICANT)
     except ft.FilmTableMissing:
-        table = ft.build_film_table(name, LUBRICANT, jobs=2)
+        table = ftb.build_film_table(name, LUBRICANT, jobs=2)
     record = dict(
         seconds=table.seconds,
         nodes=sum(len(r.nodes) for r in table.races),

@@ -16,6 +16,7 @@ import math
 from pathlib import Path
 
 from bearing_fmu import build as bearing_build
+from bearing_fmu.bundle import runtime_bundle
 from bearing_fmu.fidelities import FIDELITIES
 from bearing_fmu.fmu_files import add_documentation
 
@@ -75,15 +76,15 @@ def compile_runs(network, axial_float, step=60.0):
 # the axial-float inputs (axial reaction and stiffness of each bearing), which a spring-preloaded
 # spindle does not need (what a scene does not need is not exposed: docs/architecture.md, scenes).
 THERMAL_FMUS = {"SpindleThermal": (DEFAULT_SPINDLE, False), "SpindleThermalFixed": (DEFAULT_SPINDLE, True)}
-# What a thermal FMU carries: the shared package, the thermal model (not the rest of `spindle`: the master,
-# the command line) and the bearing catalogue its networks name (spindle.thermal.model.BEARING_CATALOGUES).
-# No bearing model: the host needs numpy and numba only, not scipy (docs/fmu_runtime.md).
-THERMAL_BUNDLE = (
-    (bearing_build.COMMON_DIR, "bearing_fmu_common"),
-    (SPINDLE_DIR / "__init__.py", "spindle/__init__.py"),
-    (SPINDLE_DIR / "thermal", "spindle/thermal"),
-    (bearing_build.PACKAGE_DIR / "params" / "bearings", "spindle/thermal/bearings"),
-)
+# What a thermal FMU carries: the modules of the shared package and of the thermal model its slave runs (not the rest
+# of `spindle`: the master, the command line), the networks and the bearing catalogue they name
+# (spindle.thermal.model.BEARING_CATALOGUES). No bearing model: the host needs numpy and numba only, not scipy
+# (docs/fmu_runtime.md).
+THERMAL_BUNDLE = runtime_bundle(
+    ((bearing_build.COMMON_DIR, "bearing_fmu_common"), (SPINDLE_DIR, "spindle")),
+    ("spindle.thermal.fmu", *bearing_build.RUNTIME_ENTRIES),
+    ("spindle/thermal/params",),
+) + ((bearing_build.PACKAGE_DIR / "params" / "bearings", "spindle/thermal/bearings"),)
 
 
 def build_thermal_fmu(name, network, axial_float, out_dir=DEFAULT_OUT):

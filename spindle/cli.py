@@ -363,8 +363,9 @@ def _level(text):
 
 
 def cmd_film_table(args):
-    """Build the film correction table of a bearing and lubricant into the cache (bearing_fmu.models.film_table)."""
-    from bearing_fmu.models.film_table import build_film_table, table_path
+    """Build the film correction table of a bearing and lubricant into the cache (models.film_table_build)."""
+    from bearing_fmu.models.film_table import table_path
+    from bearing_fmu.models.film_table_build import build_film_table
     from bearing_fmu.params import load_bearing, load_lubricant
 
     print(

@@ -52,10 +52,12 @@ class AnalyticModel:
     scene : Scene or None (default analytic scene).
     Pd : diametral clearance (m) overriding the bearing file (None: the file's), within
         -(f_i + f_o - 1) D <= Pd <= (f_i + f_o - 1) D (free contact angle up to 60 deg).
+    film_tables : directory of the film tables an FMU carries (models.film_table); None = this machine's cache.
     """
 
-    def __init__(self, bearing="6208", lubricant="guessasma_oil", scene=None, Pd=None):
+    def __init__(self, bearing="6208", lubricant="guessasma_oil", scene=None, Pd=None, film_tables=None):
         self.scene = (scene or Scene()).validate()
+        self.film_tables = film_tables
         self.bearing = load_bearing(bearing)
         self.lubricant = load_lubricant(lubricant)
         b = self.bearing
@@ -148,7 +150,7 @@ class AnalyticModel:
         brg[radial_bearing.B_CAPACITANCE] = 1.0 if s.capacitance else 0.0
         self.lubrication_numbers = Lubrication(s, b.D, b.dm)
         pack_lubrication(brg, radial_bearing, "B_", self.lubrication_numbers)
-        brg[radial_bearing.B_FILM_TABLE :] = film_table_array(b, self.lubricant, s.film_correction)
+        brg[radial_bearing.B_FILM_TABLE :] = film_table_array(b, self.lubricant, s.film_correction, self.film_tables)
         return brg
 
     def _race_contacts(self):

@@ -102,6 +102,7 @@ class QuasiStaticModel:
     F_preload: fixed_axial drive only, axial preload (N, >= 0) set at assembly (at rest, no thermal
         change): the model holds the axial approach z0 (m) that carries it, and the input z (and
         dz_thermal) is added to z0. 0 (default) = z is the axial approach itself.
+    film_tables: directory of the film tables an FMU carries (models.film_table); None = this machine's cache.
     """
 
     def __init__(
@@ -114,8 +115,10 @@ class QuasiStaticModel:
         F_preload=0.0,
         hybrid_split="spin_moments",
         lubrication=None,
+        film_tables=None,
     ):
         self.scene = (scene or Scene(name="quasi_static", fidelity="quasi_static")).validate()
+        self.film_tables = film_tables
         if self.scene.fidelity != "quasi_static":
             raise InputError(
                 f"scene '{self.scene.name}' has fidelity {self.scene.fidelity!r}: QuasiStaticModel needs 'quasi_static'"
@@ -271,7 +274,7 @@ class QuasiStaticModel:
         self.lubrication_numbers = Lubrication(s, b.D, b.dm)
         pack_lubrication(cp, ck, "CP_", self.lubrication_numbers, s.torque)
         cp[ck.CP_DM] = b.dm
-        cp[ck.CP_FILM_TABLE :] = film_table_array(b, self.lubricant, s.film_correction)
+        cp[ck.CP_FILM_TABLE :] = film_table_array(b, self.lubricant, s.film_correction, self.film_tables)
         return qs, cp
 
     def _rating_parameters(self):

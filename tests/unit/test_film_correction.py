@@ -16,6 +16,7 @@ from bearing_fmu.kernels import film_correction as fc
 from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.kernels.lubricant import lubricant_state
 from bearing_fmu.models import film_table as ft
+from bearing_fmu.models import film_table_build as ftb
 from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.models.dem import DemModel
 from bearing_fmu.models.quasi_static import QuasiStaticModel
@@ -97,15 +98,16 @@ def test_node_point_gives_the_node_moes_parameters():
     races, E_red = ft.race_geometry(load_bearing("6208"))
     Rx = races[0][0]
     for M, L in ((20.0, 60.0), (800.0, 12.0), (3000.0, 4.5)):
-        T, u, Q = ft.node_point(M, L, Rx, E_red, lub, ft.temperature_range(lub))
+        T, u, Q = ftb.node_point(M, L, Rx, E_red, lub, ft.temperature_range(lub))
         eta, xi, _ = lubricant_state(T, lub.array)
-        x, y = ft.table_axes(eta, xi, E_red, u, Q, Rx)
+        x, y = ftb.table_axes(eta, xi, E_red, u, Q, Rx)
         assert_close((x - 3.0 * y, y), (math.log(M), math.log(L)), rtol=1e-9)
         assert ft.temperature_range(lub)[0] <= T <= ft.temperature_range(lub)[1]
 
 
-def write_made_up_table(b, lub):
-    """Cache made-up_table() as the table of bearing b with lubricant lub; returns its array."""
+def write_made_up_table(b, lub, path=None):
+    """Write made-up_table() as the table of bearing b with lubricant lub, into the cache (or to `path`); returns its
+    array."""
     array = made_up_table()
     races = []
     for race in range(2):
@@ -114,8 +116,8 @@ def write_made_up_table(b, lub):
         ratios = array[base + fc.FT_RATIOS : base + fc.FT_RACE_STRIDE].reshape(3, 2, fc.FT_NM, fc.FT_NL)
         races.append(ft.RaceTable(1e-3, 1e-1, 9.0, *head, ratios.tolist(), []))
     table = ft.FilmTable(b.name, lub.name, ft.table_key(b, lub), (273.15, 393.15), 1.0, races)
-    path = ft.table_path(b, lub)
-    path.parent.mkdir(parents=True)
+    path = path or ft.table_path(b, lub)
+    path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(json.dumps(dataclasses.asdict(table)))
     return array
 
@@ -128,6 +130,47 @@ def test_table_is_read_back_from_the_cache_and_missing_one_names_the_command(tmp
     assert not ft.film_table_array(b, lub, "none").any()
     array = write_made_up_table(b, lub)
     assert np.array_equal(ft.film_table_array(b, lub, "table"), array)
+
+
+CORRECTED = Scene(name="corrected", fidelity="quasi_static", film_correction="table")
+
+
+def test_a_model_given_the_tables_an_fmu_carries_reads_only_those(tmp_path, monkeypatch):
+    """An FMU's models read the film tables it carries (a directory of files named by models.film_table.carried_name)
+    and never the cache of the machine they run on: the carried B7214C table is used with the cache empty; the 6306,
+    whose table is in the cache but not carried, is refused naming what the FMU carries, the parameters and the
+    commands; outside an FMU (no directory given) the cache's table serves."""
+    monkeypatch.setenv("BEARING_FMU_CACHE", str(tmp_path / "cache"))
+    carried = tmp_path / "film_tables"
+    b, lub = load_bearing("B7214C"), load_lubricant("iso_vg68_mineral")
+    array = write_made_up_table(b, lub, carried / ft.carried_name(b, lub))
+    assert np.array_equal(QuasiStaticModel(b, lub, CORRECTED, film_tables=carried).cp[ck.CP_FILM_TABLE :], array)
+    other = load_bearing("6306")
+    write_made_up_table(other, lub)
+    assert np.array_equal(QuasiStaticModel(other, lub, CORRECTED).cp[ck.CP_FILM_TABLE :], array)
+    with pytest.raises(ft.FilmTableMissing) as refused:
+        QuasiStaticModel(other, lub, CORRECTED, film_tables=carried)
+    message = str(refused.value)
+    assert "carries the film tables of B7214C with iso_vg68_mineral, not of bearing '6306'" in message
+    assert "parameters bearing and lubricant" in message and "spindle film-table 6306" in message
+
+
+def test_the_fmu_hands_its_models_the_tables_in_its_resources(tmp_path, monkeypatch):
+    """A bearing FMU's models get resources/film_tables: the table there serves (the cache is empty), and a bearing it
+    carries no table of is refused at initialisation (fmi2Error) with the model's message."""
+    from bearing_fmu.fmu import BearingQuasiStatic
+
+    monkeypatch.setenv("BEARING_FMU_CACHE", str(tmp_path / "cache"))
+    b, lub = load_bearing("B7214C"), load_lubricant("iso_vg68_mineral")
+    array = write_made_up_table(b, lub, tmp_path / ft.CARRIED_DIR / ft.carried_name(b, lub))
+    corrected = type("CorrectedBearing", (BearingQuasiStatic,), {"scene": CORRECTED})
+    slave = corrected(instance_name="corrected", resources=str(tmp_path))
+    assert slave.exit_initialization_mode() is True
+    assert np.array_equal(slave._model.cp[ck.CP_FILM_TABLE :], array)
+    other = corrected(instance_name="other", resources=str(tmp_path))
+    other.bearing = "6306"
+    assert other.exit_initialization_mode() is False
+    assert any("carries the film tables of B7214C" in m.msg for m in other.log_queue)
 
 
 FIDELITIES = (
@@ -163,7 +206,7 @@ def test_film_table_command_builds_and_names_the_file(tmp_path, monkeypatch, cap
         write_made_up_table(b, lub)
         return ft.load_film_table(b, lub)
 
-    monkeypatch.setattr(ft, "build_film_table", build)
+    monkeypatch.setattr(ftb, "build_film_table", build)
     assert main(["film-table", "6208", "--lubricant", "iso_vg68_mineral", "--jobs", "2"]) == 0
     assert calls == [("6208", "iso_vg68_mineral", 2, True)]
     path = ft.table_path(load_bearing("6208"), load_lubricant("iso_vg68_mineral"))

@@ -10,49 +10,22 @@ needs nothing of the package's own names.
 import ast
 from pathlib import Path
 
+from bearing_fmu.bundle import imports_of, package_modules
+
 ROOT = Path(__file__).resolve().parents[2]
 PACKAGES = ("bearing_fmu", "bearing_fmu_common", "spindle")
 
 
 def _modules():
     """{dotted name: source file} of every module of the product."""
-    found = {}
-    for package in PACKAGES:
-        for path in (ROOT / package).rglob("*.py"):
-            parts = list(path.relative_to(ROOT).with_suffix("").parts)
-            if parts[-1] == "__init__":
-                parts = parts[:-1]
-            found[".".join(parts)] = path
-    return found
-
-
-def _targets(name, path, node, modules):
-    """The product's modules an import statement node of module `name` (file `path`) imports."""
-    if isinstance(node, ast.Import):
-        return [a.name for a in node.names if a.name in modules]
-    base = name.split(".")
-    if node.level:  # relative: a package's own __init__ counts as the package itself
-        keep = len(base) - node.level + (1 if path.name == "__init__.py" else 0)
-        base = base[:keep]
-        target = ".".join(base + ([node.module] if node.module else []))
-    else:
-        target = node.module
-    submodules = [f"{target}.{a.name}" for a in node.names if f"{target}.{a.name}" in modules]
-    names = [target] if len(submodules) < len(node.names) and target in modules else []
-    return submodules + names
+    return package_modules([(ROOT / package, package) for package in PACKAGES])
 
 
 def import_graph():
-    """{module: set of the product's modules it imports}."""
+    """{module: set of the product's modules it imports} (bearing_fmu.bundle: the same reading decides what an FMU
+    carries)."""
     modules = _modules()
-    graph = {}
-    for name, path in modules.items():
-        edges = set()
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-            if isinstance(node, (ast.Import, ast.ImportFrom)):
-                edges.update(t for t in _targets(name, path, node, modules) if t != name)
-        graph[name] = edges
-    return graph
+    return {name: imports_of(name, path, modules) for name, path in modules.items()}
 
 
 def cycles(graph):
@@ -160,8 +133,8 @@ def test_only_the_report_tests_import_the_benchmarks():
 LAYERS = (
     ("command line", ("spindle", "spindle.cli", "spindle.check", "spindle.film_map", "spindle.configured")),
     ("co-simulation master", ("spindle.cosim",)),
-    ("build", ("bearing_fmu.build", "bearing_fmu.compiled_code", "bearing_fmu.fmu_files", "spindle.all_fmus",
-               "bearing_fmu_common.runtime")),
+    ("build", ("bearing_fmu.build", "bearing_fmu.bundle", "bearing_fmu.compiled_code", "bearing_fmu.fmu_files",
+               "spindle.all_fmus", "bearing_fmu_common.runtime")),
     ("FMU slaves", ("bearing_fmu.fmu", "spindle.thermal.fmu", "bearing_fmu_common.fmi",
                     "bearing_fmu_common.first_start")),
     ("fidelity registry", ("bearing_fmu.fidelities",)),

@@ -46,7 +46,7 @@ def test_a_table_node_whose_level_does_not_converge_is_solved_on_the_next_finer_
     """The film table's heaviest node of the B7214C's outer race (k = 5.86, iso_vg68_mineral at 329.6 K, 3.16 m/s,
     16.17 kN: M = 30000, L = 11.2, p_h ~ 4.2 GPa): on level 3 the side film closes (measured h_min 0.3 nm after 120
     cycles, not converged), which as a table ratio would have made the corrected h_min ~0.001 of the formula's
-    around that node. models.film_table.solve_numerical asked for level 3 then solves it on level 4, where it
+    around that node. models.film_table_build.solve_numerical asked for level 3 then solves it on level 4, where it
     converges (measured 46 cycles, h_c 266.1 nm, h_min 234.0 nm, ~60-80 s). Asserted: level 3 alone does not
     converge, the fallback is level 4 and converges with 0 < h_min < h_c, and its h_min is within the 30 % the
     formulas' h_min ratios span at the table's converged heavy nodes (0.7-1.0) of Hamrock-Dowson's (a positive film
@@ -55,6 +55,7 @@ def test_a_table_node_whose_level_does_not_converge_is_solved_on_the_next_finer_
     from bearing_fmu.kernels import ehl
     from bearing_fmu.kernels.lubricant import lubricant_state
     from bearing_fmu.models import film_table as ft
+    from bearing_fmu.models import film_table_build as ftb
     from bearing_fmu.params import load_bearing, load_lubricant
 
     races, E_red = ft.race_geometry(load_bearing("B7214C"))
@@ -63,7 +64,7 @@ def test_a_table_node_whose_level_does_not_converge_is_solved_on_the_next_finer_
     Q, u = 1.617e4, 3.16
     fluid = en.fluid_array(es.VISC_ROELANDS, es.DENS_DOWSON_HIGGINSON, eta, xi)
     assert en.resolving_level(Rx, Ry, Q, u, E_red, eta, fluid) == 5
-    solution, level = ft.solve_numerical(Rx, Ry, Q, u, E_red, eta, xi, level=3)
+    solution, level = ftb.solve_numerical(Rx, Ry, Q, u, E_red, eta, xi, level=3)
     assert level == 4, "level 3 converged: the fallback is not exercised by this contact any more"
     assert solution.converged, solution.reason
     assert 0.0 < solution.h_min < solution.h_c

@@ -53,6 +53,7 @@ class DemModel:
     The numeric settings of models.dem_settings.DEM_SETTINGS are keywords too (the FMU parameters of the same
     names): the traction_limit of the tangential law (docs/dem.md, Tangential force) and the inner ring's support
     (docs/dem.md, Ring support); each is listed below with its unit, range and default.
+    film_tables: directory of the film tables an FMU carries (models.film_table); None = this machine's cache.
     """
 
     def __init__(
@@ -70,6 +71,7 @@ class DemModel:
         refresh_interval=REFRESH_INTERVAL,
         averaged=True,
         averaged_state=False,
+        film_tables=None,
         **settings,
     ):
         self.scene = (scene or Scene(name="dem", fidelity="dem")).validate()
@@ -95,7 +97,7 @@ class DemModel:
         self.refresh_fixed = None if refresh is None else int(refresh)
         self.omega_max = inputs.speed_limit(b)
         self.par, self._truncation_parameters, self._rest = pack_parameters(
-            b, self.scene, self.lubricant, self.Pd, self.settings, kt_ratio, ring_mass, ring_inertia
+            b, self.scene, self.lubricant, self.Pd, self.settings, kt_ratio, ring_mass, ring_inertia, film_tables
         )
         self.load_limit = load_limit(self.par, b.Z)
         self._limits = inputs.input_limits(b, self.Pd, self.load_limit, self.omega_max)

@@ -57,10 +57,11 @@ def ring_inertia(bearing, mass):
     return mass * (0.25 * radii + width**2 / 12.0), 0.5 * mass * radii
 
 
-def pack_parameters(bearing, scene, lubricant, Pd, settings, kt_ratio, mass=None, inertia=None):
+def pack_parameters(bearing, scene, lubricant, Pd, settings, kt_ratio, mass=None, inertia=None, film_tables=None):
     """The parameter array (float64[P_SIZE]) of a bearing with diametral clearance Pd (m) and the model's settings
     (checked: settings = name -> value of models.dem_settings.DEM_SETTINGS, kt_ratio; the ring's mass (kg) and
-    inertia about a diameter (kg.m^2), None = estimated); returns it with the shoulders' truncation parameters
+    inertia about a diameter (kg.m^2), None = estimated; film_tables: the directory of an FMU's own film tables, None
+    = the cache, models.film_table); returns it with the shoulders' truncation parameters
     (models.race_contacts.truncation_parameters) and the balls' rest position (placement.ball_rest_position).
     Raises InputError when estimated cage balls find no room between the balls."""
     b, sc = bearing, scene
@@ -106,7 +107,7 @@ def pack_parameters(bearing, scene, lubricant, Pd, settings, kt_ratio, mass=None
     _pack_hertz_scales(p, rc)
     p[s.P_CHATTER] = CHATTER_STEPS
     p[s.P_DAMPING_STOP] = DAMPING_STOP
-    p[s.P_FILM_TABLE :] = film_table_array(b, lubricant, sc.film_correction)
+    p[s.P_FILM_TABLE :] = film_table_array(b, lubricant, sc.film_correction, film_tables)
     p[s.P_MU_LIM] = lubricant.traction_limit
     p[s.P_S_TRACTION] = lubricant.traction_slip
     p[s.P_FILM_RATE] = FILM_RATE
