@@ -27,7 +27,7 @@ from pythonfmu.builder import FmuBuilder
 from bearing_fmu_common.runtime.binaries import OWN_PACKAGES, install_runtime
 from bearing_fmu_common.variables import select
 
-from .bundle import runtime_bundle
+from .bundle import package_modules, runtime_bundle
 from .compiled_code import COMPILED_DIR, add_compiled_code
 from .fidelities import FIDELITIES
 from .fmu_files import add_documentation, crosscheck_tables, entry_metadata
@@ -131,8 +131,15 @@ def package_hash(root, names):
     return digest.hexdigest()[:16]
 
 
-# what ENTRY_TEMPLATE imports of the product whatever the FMU (bearing_fmu.bundle follows their imports)
-RUNTIME_ENTRIES = ("bearing_fmu_common.jit", "bearing_fmu_common.first_start")
+# What every FMU carries of bearing_fmu_common: all of it but runtime/ (the native layer's sources and build). The
+# bearing and thermal FMUs share the package and a process keeps one copy of it, the first FMU's: each FMU must carry
+# the same files of it (docs/fmu_runtime.md, Its own code), so each carries what any of them runs. It includes what
+# ENTRY_TEMPLATE imports (jit, first_start); bearing_fmu.bundle follows the imports from there.
+RUNTIME_ENTRIES = tuple(
+    name
+    for name in package_modules(((COMMON_DIR, "bearing_fmu_common"),))
+    if not name.startswith("bearing_fmu_common.runtime")
+)
 # a bearing FMU's slave module and what build_fmu's class body imports
 BEARING_ENTRIES = ("bearing_fmu.fmu", "bearing_fmu.scene", "bearing_fmu.models.file_parameters", *RUNTIME_ENTRIES)
 BEARING_BUNDLE = runtime_bundle(

@@ -45,6 +45,17 @@ def test_a_thermal_fmu_carries_no_bearing_model_nor_master():
     assert "spindle/thermal/fmu.py" in files and ("spindle/thermal/bearings" in files)
 
 
+def test_every_fmu_carries_the_same_files_of_the_shared_package():
+    """A process keeps one bearing_fmu_common, the first FMU's: an FMU of another kind set up after it must find the
+    same files there (the layer refuses it otherwise, docs/fmu_runtime.md, Its own code)."""
+
+    def common(bundle):
+        return {dest for _, dest in bundle if dest.startswith("bearing_fmu_common/")}
+
+    assert common(BEARING_BUNDLE) == common(THERMAL_BUNDLE)
+    assert "bearing_fmu_common/layout.py" in common(THERMAL_BUNDLE)  # the bearing FMUs run it, the thermal ones not
+
+
 def test_the_modules_run_are_the_imports_at_any_depth_with_the_packages_above():
     """models.film_table imports the catalogue (bearing_fmu.params) only inside a function: it is carried; so is
     each package's __init__.py above a carried module; the film-table solver, which nothing of it imports, is not."""
