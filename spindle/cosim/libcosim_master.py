@@ -62,11 +62,7 @@ import ctypes
 import math
 from pathlib import Path
 
-# Load numba's and scipy's compiled libraries before any pythonfmu FMU does: loaded first from inside an
-# FMU they can abort the process at exit (docs/decisions.md, known defects).
-import numba  # noqa: F401
 import numpy as np
-import scipy.special  # noqa: F401
 
 NANOSECONDS = 1_000_000_000
 

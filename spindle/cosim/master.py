@@ -39,10 +39,6 @@ import time as wallclock
 from dataclasses import dataclass, field
 from pathlib import Path
 
-# numba (and, where scipy is installed, the scipy BLAS bindings numba loads with it) are loaded here, by the
-# host, before any FMU: the order the teardown tests were run with. It costs no start-up time: the first FMU
-# would load it (docs/fmu_runtime.md, "The master"). Nothing of the product is imported for the FMUs' sake.
-import numba  # noqa: F401
 import numpy as np
 from fmpy import calloc, extract, free, read_model_description
 from fmpy.fmi1 import FMICallException
