@@ -20,9 +20,11 @@ def annexe_d_path():
 
 
 def _stale(path, folders):
-    """Whether the FMU at `path` is missing or older than any source it bundles (.py, .toml, .c below
+    """Whether the FMU at `path` is missing or older than any source it bundles (.py, .toml, .c, .h below
     `folders`)."""
-    newest_source = max(p.stat().st_mtime for d in folders for p in d.rglob("*") if p.suffix in (".py", ".toml", ".c"))
+    newest_source = max(
+        p.stat().st_mtime for d in folders for p in d.rglob("*") if p.suffix in (".py", ".toml", ".c", ".h")
+    )
     return not path.is_file() or path.stat().st_mtime < newest_source
 
 
