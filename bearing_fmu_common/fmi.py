@@ -95,18 +95,26 @@ def add_unit_definitions(root: Element, variables):
     return root
 
 
+def _fields(causality, variability, description, getter, setter, **more):
+    """pythonfmu's keywords of a declared variable: its causality and variability, its description, how the slave
+    reads and writes its value (getter/setter; None: the slave's attribute of that name) and `more`."""
+    return dict(
+        causality=causality, variability=variability, description=description, getter=getter, setter=setter, **more
+    )
+
+
 def parameter(name, start, description, unit=None, minimum=None, maximum=None, integer=False, getter=None, setter=None):
     """A fixed parameter variable (Real with unit and allowed range, Boolean for a bool start, Integer with
     its range when `integer`, or String when unit is None). getter/setter: how the slave reads and writes
     its value (None: the slave's attribute of that name)."""
-    kwargs = dict(
-        causality=Fmi2Causality.parameter,
-        variability=Fmi2Variability.fixed,
+    kwargs = _fields(
+        Fmi2Causality.parameter,
+        Fmi2Variability.fixed,
+        description,
+        getter,
+        setter,
         initial=Fmi2Initial.exact,
         start=start,
-        description=description,
-        getter=getter,
-        setter=setter,
     )
     if isinstance(start, bool):
         return Boolean(name, **kwargs)
@@ -119,34 +127,18 @@ def parameter(name, start, description, unit=None, minimum=None, maximum=None, i
 
 def input_variable(name, unit, start, description, getter=None, setter=None, minimum=None, maximum=None, nominal=None):
     """A continuous Real input with its unit, allowed range and typical magnitude."""
-    return UnitReal(
-        name,
-        unit,
-        minimum,
-        maximum,
-        nominal,
-        causality=Fmi2Causality.input,
-        variability=Fmi2Variability.continuous,
-        start=start,
-        description=description,
-        getter=getter,
-        setter=setter,
-    )
+    kwargs = _fields(Fmi2Causality.input, Fmi2Variability.continuous, description, getter, setter, start=start)
+    return UnitReal(name, unit, minimum, maximum, nominal, **kwargs)
 
 
 def output_variable(name, unit, description, integer=False, getter=None, setter=None):
     """Output declared initial=calculated: the slave computes it at initialisation from the parameters
     and the inputs set in initialisation mode (so it has no start value)."""
-    kwargs = dict(
-        causality=Fmi2Causality.output,
-        initial=Fmi2Initial.calculated,
-        description=description,
-        getter=getter,
-        setter=setter,
-    )
+    variability = Fmi2Variability.discrete if integer else Fmi2Variability.continuous
+    kwargs = _fields(Fmi2Causality.output, variability, description, getter, setter, initial=Fmi2Initial.calculated)
     if integer:
-        return Integer(name, variability=Fmi2Variability.discrete, **kwargs)
-    return UnitReal(name, unit, variability=Fmi2Variability.continuous, **kwargs)
+        return Integer(name, **kwargs)
+    return UnitReal(name, unit, **kwargs)
 
 
 def declare_structure(root: Element):

@@ -19,40 +19,23 @@ def annexe_d_path():
     return path
 
 
+def _stale(path, folders):
+    """Whether the FMU at `path` is missing or older than any source it bundles (.py, .toml, .c, .h below
+    `folders`)."""
+    newest_source = max(
+        p.stat().st_mtime for d in folders for p in d.rglob("*") if p.suffix in (".py", ".toml", ".c", ".h")
+    )
+    return not path.is_file() or path.stat().st_mtime < newest_source
+
+
 def _fmu(name, scene_file):
     """Path of fmus/<name>.fmu; built from the current sources if it is missing or stale."""
     from bearing_fmu.build import COMMON_DIR, PACKAGE_DIR, SCENES_DIR, build_fmu
 
     path = FMU_DIR / f"{name}.fmu"
-    newest_source = max(
-        p.stat().st_mtime for d in (PACKAGE_DIR, COMMON_DIR) for p in d.rglob("*") if p.suffix in (".py", ".toml", ".c")
-    )
-    if not path.is_file() or path.stat().st_mtime < newest_source:
+    if _stale(path, (PACKAGE_DIR, COMMON_DIR)):
         build_fmu(SCENES_DIR / scene_file, FMU_DIR)
     return path
-
-
-@pytest.fixture(scope="session")
-def analytic_fmu():
-    return _fmu("BearingAnalytic", "analytic.toml")
-
-
-@pytest.fixture(scope="session")
-def bearing_fmu():
-    """The quasi-static, load-driven Bearing.fmu."""
-    return _fmu("Bearing", "quasi_static.toml")
-
-
-@pytest.fixture(scope="session")
-def bearing_disp_fmu():
-    """The quasi-static, displacement-driven BearingDisp.fmu."""
-    return _fmu("BearingDisp", "quasi_static_displacement.toml")
-
-
-@pytest.fixture(scope="session")
-def bearing_fixed_fmu():
-    """The quasi-static BearingFixed.fmu (fixed axial position: fixed-preload pairs)."""
-    return _fmu("BearingFixed", "quasi_static_fixed_preload.toml")
 
 
 def _thermal_fmu(name):
@@ -62,28 +45,44 @@ def _thermal_fmu(name):
     from spindle.all_fmus import SPINDLE_DIR, THERMAL_FMUS, build_thermal_fmu
 
     path = FMU_DIR / f"{name}.fmu"
-    newest_source = max(
-        p.stat().st_mtime
-        for d in (PACKAGE_DIR, COMMON_DIR, SPINDLE_DIR)
-        for p in d.rglob("*")
-        if p.suffix in (".py", ".toml", ".c")
-    )
-    if not path.is_file() or path.stat().st_mtime < newest_source:
+    if _stale(path, (PACKAGE_DIR, COMMON_DIR, SPINDLE_DIR)):
         network, axial_float = THERMAL_FMUS[name]
         build_thermal_fmu(name, network, axial_float, FMU_DIR)
     return path
 
 
-@pytest.fixture(scope="session")
-def spindle_thermal_fmu():
-    """SpindleThermal.fmu: the default spindle network without the axial-float inputs (spring preload)."""
-    return _thermal_fmu("SpindleThermal")
+def _session_fixture(doc, path_of, *args):
+    """A session fixture (its docstring: doc) giving path_of(*args): the path of an FMU, built at most once."""
+
+    def fixture():
+        return path_of(*args)
+
+    fixture.__doc__ = doc
+    return pytest.fixture(scope="session")(fixture)
 
 
-@pytest.fixture(scope="session")
-def spindle_thermal_fixed_fmu():
-    """SpindleThermalFixed.fmu: the default network with the axial-float inputs (fixed preload)."""
-    return _thermal_fmu("SpindleThermalFixed")
+# The FMUs of the product's scenes and networks; each fixture is named by the variable that holds it.
+analytic_fmu = _session_fixture("The analytic BearingAnalytic.fmu.", _fmu, "BearingAnalytic", "analytic.toml")
+bearing_fmu = _session_fixture("The quasi-static, load-driven Bearing.fmu.", _fmu, "Bearing", "quasi_static.toml")
+bearing_disp_fmu = _session_fixture(
+    "The quasi-static, displacement-driven BearingDisp.fmu.", _fmu, "BearingDisp", "quasi_static_displacement.toml"
+)
+bearing_fixed_fmu = _session_fixture(
+    "The quasi-static BearingFixed.fmu (fixed axial position: fixed-preload pairs).",
+    _fmu,
+    "BearingFixed",
+    "quasi_static_fixed_preload.toml",
+)
+spindle_thermal_fmu = _session_fixture(
+    "SpindleThermal.fmu: the default spindle network without the axial-float inputs (spring preload).",
+    _thermal_fmu,
+    "SpindleThermal",
+)
+spindle_thermal_fixed_fmu = _session_fixture(
+    "SpindleThermalFixed.fmu: the default network with the axial-float inputs (fixed preload).",
+    _thermal_fmu,
+    "SpindleThermalFixed",
+)
 
 
 CONFIGURED = ("BearingDEM", "Bearing", "SpindleThermal")  # the configured FMUs the tests build (of every kind)

@@ -23,7 +23,7 @@ from xml.etree import ElementTree
 RUNTIME_DIR = Path(__file__).resolve().parent
 SOURCE = RUNTIME_DIR / "fmi2_python.c"  # the layer
 LOADER_SOURCE = RUNTIME_DIR / "fmi2_loader.c"  # the FMU's binary
-SHARED_HEADER = RUNTIME_DIR / "fmi2_shared.h"
+HEADERS = sorted(RUNTIME_DIR.glob("*.h"))  # included by both sources: part of every compiled copy's cache key
 HELPER_SOURCE = RUNTIME_DIR / "fmi2_layer.py"  # the layer's Python side
 HELPER_FILE = "fmi2_layer.py"  # resources/ file the layer loads at its first fmi2Instantiate
 LAYER_FILE = "fmi2_python.abi3.so"  # beside the FMU's binary; the name fmi2_loader.c loads
@@ -86,7 +86,8 @@ def compiled_runtime(source=SOURCE, directory=None):
     cache has no copy."""
     probe = compile_command(source, "OUT")
     digest = hashlib.sha256(Path(source).read_bytes())
-    digest.update(SHARED_HEADER.read_bytes())
+    for header in HEADERS:
+        digest.update(header.read_bytes())
     digest.update("\0".join(probe).encode())
     path = Path(directory or cache_dir()) / f"{Path(source).stem}-{digest.hexdigest()[:16]}.so"
     if path.is_file():

@@ -37,6 +37,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "fmi2_function_list.h"
 #include "fmi2_shared.h"
 
 extern char **environ;
@@ -48,19 +49,8 @@ extern char **environ;
 
 /* -- the layer's functions ------------------------------------------------------------------- */
 
-#define LAYER_FUNCTIONS(X)                                                                         \
-    X(fmi2Instantiate) X(fmi2FreeInstance) X(fmi2SetupExperiment) X(fmi2EnterInitializationMode)   \
-    X(fmi2ExitInitializationMode) X(fmi2Terminate) X(fmi2Reset) X(fmi2SetDebugLogging)             \
-    X(fmi2GetReal) X(fmi2GetInteger) X(fmi2GetBoolean) X(fmi2GetString) X(fmi2SetReal)             \
-    X(fmi2SetInteger) X(fmi2SetBoolean) X(fmi2SetString) X(fmi2GetFMUstate) X(fmi2SetFMUstate)     \
-    X(fmi2FreeFMUstate) X(fmi2SerializedFMUstateSize) X(fmi2SerializeFMUstate)                     \
-    X(fmi2DeSerializeFMUstate) X(fmi2GetDirectionalDerivative) X(fmi2SetRealInputDerivatives)      \
-    X(fmi2GetRealOutputDerivatives) X(fmi2DoStep) X(fmi2CancelStep) X(fmi2GetStatus)               \
-    X(fmi2GetRealStatus) X(fmi2GetIntegerStatus) X(fmi2GetBooleanStatus) X(fmi2GetStringStatus)
-
-#define FIELD(name) name##TYPE *name;
 static struct {
-    LAYER_FUNCTIONS(FIELD)
+    FMI2_FUNCTIONS(FMI2_POINTER)
 } layer; /* all NULL until the layer is loaded: no instance exists before that */
 
 static pthread_mutex_t load_lock = PTHREAD_MUTEX_INITIALIZER; /* this copy's: one loading at a time */
@@ -69,7 +59,7 @@ static pthread_mutex_t load_lock = PTHREAD_MUTEX_INITIALIZER; /* this copy's: on
 typedef struct Message {
     struct Message *next;
     fmi2Status status;
-    char text[];
+    char *text;
 } Message;
 
 /* The host's logger and the instance it is about. Messages are kept (`kept`, in order) while the loader holds
@@ -98,23 +88,20 @@ static void log_text(fmi2CallbackLogger logger, fmi2ComponentEnvironment env, co
 /* Keep a message for the host's logger (passed on by pass_on). */
 static void say(Host *host, fmi2Status status, const char *fmt, ...)
 {
-    if (host->logger == NULL || (status == fmi2OK && !host->logging_on))
-        return;
-    va_list args, again;
+    va_list args;
     va_start(args, fmt);
-    va_copy(again, args);
-    int n = vsnprintf(NULL, 0, fmt, args);
-    /* sized to the message, on the heap: a host thread's stack may be small */
-    Message *message = n >= 0 ? malloc(sizeof *message + (size_t)n + 1) : NULL;
-    if (message != NULL) {
-        vsnprintf(message->text, (size_t)n + 1, fmt, again);
-        message->status = status;
-        message->next = NULL;
-        *host->last = message;
-        host->last = &message->next;
-    }
-    va_end(again);
+    char *text = wanted_message(host->logger, host->logging_on, status, fmt, args);
     va_end(args);
+    Message *message = text != NULL ? malloc(sizeof *message) : NULL;
+    if (message == NULL) {
+        free(text);
+        return;
+    }
+    message->text = text;
+    message->status = status;
+    message->next = NULL;
+    *host->last = message;
+    host->last = &message->next;
 }
 
 /* Pass the kept messages to the host's logger, in order; the loader holds none of its locks. */
@@ -124,6 +111,7 @@ static void pass_on(Host *host)
         next = message->next;
         log_text(host->logger, host->env, host->name, message->status,
                  message->status >= fmi2Error ? "logStatusError" : "logAll", message->text);
+        free(message->text);
         free(message);
     }
     host->kept = NULL;
@@ -669,7 +657,7 @@ static int load_layer(Host *host)
         free(path);                                                                                \
         return 0;                                                                                  \
     }
-    LAYER_FUNCTIONS(LOOKUP)
+    FMI2_FUNCTIONS(LOOKUP)
     free(path);
     layer = loaded;
     /* keep this library (and so `layer`) loaded when a host unloads it after fmi2FreeInstance (fmpy does) */

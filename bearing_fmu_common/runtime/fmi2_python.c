@@ -142,7 +142,7 @@ static void gil_give(PyGILState_STATE state)
  * message and category are copied into C memory first, so nothing of Python is touched meanwhile. */
 static void emit(const Instance *c, fmi2Status status, const char *category, const char *text)
 {
-    if (c->logger == NULL || (status == fmi2OK && !c->logging_on))
+    if (!wanted(c->logger, c->logging_on, status))
         return;
     char *format = printf_safe(text), *cat = strdup(category);
     if (format != NULL && cat != NULL) {
@@ -157,16 +157,9 @@ static void emit(const Instance *c, fmi2Status status, const char *category, con
 
 static void emitf(const Instance *c, fmi2Status status, const char *fmt, ...)
 {
-    if (c->logger == NULL || (status == fmi2OK && !c->logging_on))
-        return;
-    va_list args, again;
+    va_list args;
     va_start(args, fmt);
-    va_copy(again, args);
-    int n = vsnprintf(NULL, 0, fmt, args);
-    char *text = n >= 0 ? malloc((size_t)n + 1) : NULL; /* sized to the message, on the heap: small host stacks */
-    if (text != NULL)
-        vsnprintf(text, (size_t)n + 1, fmt, again);
-    va_end(again);
+    char *text = wanted_message(c->logger, c->logging_on, status, fmt, args);
     va_end(args);
     if (text != NULL)
         emit(c, status, status >= fmi2Error ? "logStatusError" : "logAll", text);

@@ -1,5 +1,5 @@
-/* What the FMU's entry library (fmi2_loader.c) and its Python layer (fmi2_python.c) both need: the FMI
- * logger's format, the resources/ hint files and the resource URI. Each includes it once; every function is
+/* What the FMU's entry library (fmi2_loader.c) and its Python layer (fmi2_python.c) both need: which messages
+ * the host's logger takes and in which format, the resources/ hint files and the resource URI. Each includes it once; every function is
  * static, so each library keeps its own copy and exports nothing of it.
  *
  * SPDX-License-Identifier: MIT.
@@ -7,6 +7,7 @@
 #ifndef BEARING_FMU_FMI2_SHARED_H
 #define BEARING_FMU_FMI2_SHARED_H
 
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,6 +36,30 @@ static char *printf_safe(const char *text)
     }
     *out = '\0';
     return format;
+}
+
+/* Whether the host's logger takes a message of this status: warnings and errors always, the others (debug
+ * messages) only with logging on. */
+static int wanted(fmi2CallbackLogger logger, int logging_on, fmi2Status status)
+{
+    return logger != NULL && (status != fmi2OK || logging_on);
+}
+
+/* The message of the printf format `fmt` with `args` if the host's logger takes it (wanted), malloc'ed; NULL if
+ * not wanted or without memory. Sized to the message, on the heap: a host thread's stack may be small. */
+static char *wanted_message(fmi2CallbackLogger logger, int logging_on, fmi2Status status, const char *fmt,
+                            va_list args)
+{
+    if (!wanted(logger, logging_on, status))
+        return NULL;
+    va_list again;
+    va_copy(again, args);
+    int n = vsnprintf(NULL, 0, fmt, args);
+    char *text = n >= 0 ? malloc((size_t)n + 1) : NULL;
+    if (text != NULL)
+        vsnprintf(text, (size_t)n + 1, fmt, again);
+    va_end(again);
+    return text;
 }
 
 /* Read the first line of resources/<name> into buf; 0 if absent. */

@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from bearing_fmu_common.bearing_file import check_ring_sections, clearance_limits, read_bearing
-from bearing_fmu_common.paramfile import ParameterError, read_toml, resolve_toml
+from bearing_fmu_common.paramfile import ParameterError, Spec, checked_value, read_toml, resolve_toml
 from bearing_fmu_common.variables import THERMAL_SHIFT_MAX, InputError
 
 from . import network as nk
@@ -76,24 +76,9 @@ def load_ring_bearing(name_or_path):
 
 
 def _quantity(table, key, unit, where, low=0.0, high=math.inf, low_open=True):
-    """Checked value of `table[key]` = { value, unit, source [, estimated] } (where: for messages)."""
-    if key not in table:
-        raise ParameterError(f"{where}: missing key '{key}' ({unit})")
-    node = table[key]
-    if not isinstance(node, dict) or "value" not in node:
-        raise ParameterError(f"{where}: '{key}' must be a table {{ value = ..., unit = \"{unit}\", source = ... }}")
-    if node.get("unit") != unit:
-        raise ParameterError(f"{where}: '{key}' has unit '{node.get('unit')}', expected '{unit}'")
-    if "source" not in node:
-        raise ParameterError(f"{where}: '{key}' has no 'source'")
-    value = node["value"]
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-        raise ParameterError(f"{where}: '{key}' = {value!r} is not a finite number")
-    if not ((value > low if low_open else value >= low) and value <= high):
-        raise ParameterError(
-            f"{where}: '{key}' = {value} {unit} is outside the allowed range {']' if low_open else '['}{low}, {high}]"
-        )
-    return float(value)
+    """Checked value of `table[key]` = { value, unit, source [, estimated] } (where: for messages): the bearing
+    and lubricant files' check, one key deep."""
+    return checked_value(table, key, Spec(unit, low, high, low_open), where)
 
 
 # link kind -> (code, [(TOML key, unit)] in the order of the kernel's parameter row)

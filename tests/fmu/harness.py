@@ -10,6 +10,8 @@ from pathlib import Path
 from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Slave
 
+from tests.fmu.probe import set_values
+
 PROBE = Path(__file__).with_name("probe.py")
 
 
@@ -25,8 +27,8 @@ def probe(fmu_path, scenario):
 @contextmanager
 def opened(fmu_path, name, parameters=None):
     """An initialised FMU2Slave instance (own extraction), with a name -> value reference map;
-    terminated, freed and its extraction removed on exit. Parameters: str -> setString,
-    bool -> setBoolean, number -> setReal."""
+    terminated, freed and its extraction removed on exit. Parameters: set by their declared type
+    (probe.set_values)."""
     md = read_model_description(str(fmu_path))
     vr = {v.name: v.valueReference for v in md.modelVariables}
     unzip = extract(str(fmu_path))
@@ -37,13 +39,7 @@ def opened(fmu_path, name, parameters=None):
         fmu.instantiate()
         fmu.setupExperiment(startTime=0.0)
         fmu.enterInitializationMode()
-        for key, value in (parameters or {}).items():
-            if isinstance(value, str):
-                fmu.setString([vr[key]], [value])
-            elif isinstance(value, bool):
-                fmu.setBoolean([vr[key]], [value])
-            else:
-                fmu.setReal([vr[key]], [value])
+        set_values(fmu, md, parameters)
         fmu.exitInitializationMode()
         yield fmu, vr
         fmu.terminate()

@@ -55,7 +55,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "fmi2Functions.h"
+#include "fmi2_function_list.h" /* bearing_fmu_common/runtime: the FMI 2.0 functions a host looks up */
 
 #define MAX_VARS 64
 
@@ -74,19 +74,8 @@ static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status sta
 }
 
 /* The FMU's functions (dlsym), one table per loaded library. */
-#define FUNCTIONS(X)                                                                               \
-    X(fmi2Instantiate) X(fmi2FreeInstance) X(fmi2SetupExperiment) X(fmi2EnterInitializationMode)   \
-    X(fmi2ExitInitializationMode) X(fmi2Terminate) X(fmi2Reset) X(fmi2SetDebugLogging)             \
-    X(fmi2GetReal) X(fmi2GetInteger) X(fmi2GetBoolean) X(fmi2GetString) X(fmi2SetReal)             \
-    X(fmi2SetInteger) X(fmi2SetBoolean) X(fmi2SetString) X(fmi2GetFMUstate) X(fmi2SetFMUstate)     \
-    X(fmi2FreeFMUstate) X(fmi2SerializedFMUstateSize) X(fmi2SerializeFMUstate)                     \
-    X(fmi2DeSerializeFMUstate) X(fmi2GetDirectionalDerivative) X(fmi2SetRealInputDerivatives)      \
-    X(fmi2GetRealOutputDerivatives) X(fmi2DoStep) X(fmi2CancelStep) X(fmi2GetStatus)               \
-    X(fmi2GetRealStatus) X(fmi2GetIntegerStatus) X(fmi2GetBooleanStatus) X(fmi2GetStringStatus)
-
-#define FIELD(name) name##TYPE *name;
 typedef struct {
-    FUNCTIONS(FIELD)
+    FMI2_FUNCTIONS(FMI2_POINTER)
 } Api;
 
 static int load(const char *path, Api *api)
@@ -101,7 +90,7 @@ static int load(const char *path, Api *api)
         fprintf(stderr, "missing %s\n", #name);                                                    \
         return 0;                                                                                  \
     }
-    FUNCTIONS(LOOKUP)
+    FMI2_FUNCTIONS(LOOKUP)
     return 1;
 }
 

@@ -21,6 +21,15 @@ def _logger(component, instance, status, category, message):
     messages.append({"status": status, "message": message.decode(errors="replace")})
 
 
+def set_values(fmu, md, values):
+    """Set the variables of {name: value} `values` (None: none) of an instance of the FMU of model description
+    `md`, each with the setter of its declared type (Real, Integer, Boolean, String)."""
+    variables = {v.name: v for v in md.modelVariables}
+    setters = {"Real": fmu.setReal, "Integer": fmu.setInteger, "Boolean": fmu.setBoolean, "String": fmu.setString}
+    for name, value in (values or {}).items():
+        setters[variables[name].type]([variables[name].valueReference], [value])
+
+
 def open_fmu(path, parameters=None):
     md = read_model_description(path)
     unzip = extract(path)
@@ -38,13 +47,7 @@ def open_fmu(path, parameters=None):
     vr = {v.name: v.valueReference for v in md.modelVariables}
     fmu.setupExperiment(startTime=0.0)
     fmu.enterInitializationMode()
-    for name, value in (parameters or {}).items():
-        if isinstance(value, str):
-            fmu.setString([vr[name]], [value])
-        elif isinstance(value, int):
-            fmu.setInteger([vr[name]], [value])
-        else:
-            fmu.setReal([vr[name]], [value])
+    set_values(fmu, md, parameters)
     try:
         fmu.exitInitializationMode()
         init_statuses.append(0)

@@ -45,7 +45,7 @@ from fmpy import extract, read_model_description
 from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import fmi2Terminated
 
-from bearing_fmu_common.runtime.binaries import fmi_headers, install_runtime
+from bearing_fmu_common.runtime.binaries import RUNTIME_DIR, fmi_headers, install_runtime
 from tests.fmu import probe
 from tests.fmu.harness import opened
 
@@ -66,7 +66,8 @@ CASES = {
 @pytest.fixture(scope="module")
 def importer(tmp_path_factory):
     exe = tmp_path_factory.mktemp("native") / "native_importer"
-    cmd = ["gcc", "-O1", "-Wall", "-Wextra", "-Werror", f"-I{fmi_headers()}", str(IMPORTER), "-o", str(exe)]
+    cmd = ["gcc", "-O1", "-Wall", "-Wextra", "-Werror", f"-I{fmi_headers()}", f"-I{RUNTIME_DIR}", str(IMPORTER)]
+    cmd += ["-o", str(exe)]
     cmd += ["-ldl", "-lpthread"]
     proc = subprocess.run(cmd, capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
