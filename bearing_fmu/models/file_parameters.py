@@ -106,7 +106,7 @@ SHOULDERS = (
 )
 ROUGHNESS_RULE = " (a race's Ra or the balls' Ra > 0: Lambda = h_min / sigma needs sigma > 0)"
 # the bearing file's values (docs/parameters.md, bearing file); ranges are those the bearing file's reader
-# accepts, closed at 0 where the reader's bound is open (it refuses the 0 with the parameter's name)
+# accepts, closed at a value some bearing takes where the reader's bound is open (bearing_file.BALL_DIAMETER_MIN ...)
 BEARING_QUANTITIES = (
     _choice(B + "kind", "meta.kind", ("deep_groove", "angular_contact"), "bearing kind", "deep_groove"),
     _real(B + "D", "m", "geometry.ball_diameter", "ball diameter", BALL_DIAMETER_MIN, 1.0),
