@@ -10,6 +10,7 @@ FMU parameters it comes from (the models' side of tests/fmu/test_fuzz.py::test_f
 
 import pytest
 
+from bearing_fmu.build import SCENES_DIR
 from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.models.declarations import ANALYTIC_PARAMETERS
 from bearing_fmu.models.file_parameters import (
@@ -21,7 +22,9 @@ from bearing_fmu.models.file_parameters import (
     lubricant_values,
 )
 from bearing_fmu.models.limits import InputError
+from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.params import ParameterError, catalogue, clearance_for_angle
+from bearing_fmu.scene import Scene
 from spindle.thermal.declarations import dimension_declarations
 from spindle.thermal.model import load_spindle, with_dimensions
 
@@ -167,6 +170,13 @@ def test_a_law_chosen_without_its_constants_is_refused_naming_the_choice(values,
 def test_a_clearance_beyond_the_groove_names_the_bearing():
     with pytest.raises(InputError, match=r"Pd = 0.01 m \(set\) .* D = 0.0126 m of bearing '6208'"):
         AnalyticModel("6208", Pd=0.01)
+
+
+def test_a_preload_beyond_the_material_limit_names_the_bearing():
+    """The declared 1e8 N is the static bound of every bearing; the refusal names the bearing whose limit is lower."""
+    scene = Scene.from_toml(SCENES_DIR / "quasi_static_fixed_preload.toml")
+    with pytest.raises(InputError, match=r"F_preload = 100000000.0 N .* material limit of bearing 'B7214C': p_max"):
+        QuasiStaticModel("B7214C", scene=scene, F_preload=1e8)
 
 
 def test_the_analytic_fmu_declares_the_deep_groove_bearing_it_models():
