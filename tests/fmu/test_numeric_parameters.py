@@ -235,7 +235,7 @@ def refusal(path, parameters):
         (
             "spindle_thermal_fmu",
             {"axial.spacing": 11.0},
-            "axial.spacing = 11.0 m is outside the allowed range [0, 10] m",
+            "axial.spacing = 11.0 m is outside the allowed range [0.001, 10] m",
         ),
     ],
 )
