@@ -19,7 +19,6 @@ from bearing_fmu_common.variables import select
 
 from .fidelities import FIDELITIES
 from .kernels.ball_dynamics.state import ST_CODE
-from .models.analytic import models_bearing
 from .models.dem import DemUnstableError
 from .models.dem_settings import DEM_SETTINGS
 from .models.file_parameters import BEARING_PREFIX, LUBRICANT_PREFIX, bearing_from_values, lubricant_from_values
@@ -87,18 +86,13 @@ class _BearingSlave(DeclaredSlave):
         """The facade's keyword arguments beyond bearing, lubricant, scene and clearance (from the parameters)."""
         return {}
 
-    def _check_bearing(self, bearing):
-        """Refuse a bearing the fidelity does not model, naming the FMU parameters that made it (none here)."""
-
     def _film_tables(self):
         """The film tables the FMU carries (resources/film_tables): its models read no other (models.film_table)."""
         return None if self.resources is None else os.path.join(self.resources, CARRIED_DIR)
 
     def _make_model(self):
-        bearing = self._bearing()
-        self._check_bearing(bearing)
         return self.fidelity.model(
-            bearing,
+            self._bearing(),
             self._lubricant(),
             self.scene,
             Pd=self._clearance(),
@@ -182,17 +176,6 @@ class BearingAnalytic(_BearingSlave):
         "with clearance, exact Hertz contacts, Hamrock-Dowson EHL film, film parameter, regime, "
         "capacitance. SI units."
     )
-
-    def _check_bearing(self, bearing):
-        if not self.bearing_from_file and not models_bearing(bearing):
-            # AnalyticModel's refusal names the bearing; from the numeric parameters, name those that made it
-            kind, alpha0 = (getattr(self, BEARING_PREFIX + name) for name in ("kind", "alpha0"))
-            raise ParameterError(
-                f"{BEARING_PREFIX}kind = {kind} ({bearing.kind}) and {BEARING_PREFIX}alpha0 = {alpha0} rad are "
-                f"not allowed: the analytic fidelity models radially loaded deep-groove bearings, allowed "
-                f"{BEARING_PREFIX}kind = 0 (deep_groove) with {BEARING_PREFIX}alpha0 = 0 rad; use the quasi-static "
-                "fidelity"
-            )
 
 
 class BearingQuasiStatic(_BearingSlave):

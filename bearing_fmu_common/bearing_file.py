@@ -24,6 +24,17 @@ BALL_RING_MODULUS = Spec("Pa", 1e10, 1e12)
 # conformities 0.52 (beyond any catalogue ball); the bearing's own groove clearance applies within it
 GROOVE_MAX = 1e-2
 ROUGHNESS = Spec("m", 0.0, 1e-4)
+# Declared ranges of the numeric parameters (FMU parameters) whose file values have an open bound: the file accepts
+# any ball diameter, pitch diameter and conformity above 0 (0.5), a declared range is closed, so its end is a value
+# some bearing can take. Ball diameters from 0.1 mm (below the balls of the smallest miniature bearings, 0.3 mm),
+# pitch diameters from 0.5 mm (room for three 0.1 mm balls), conformities from 0.501 (a groove 0.1 % wider than the
+# ball: tighter than any ball bearing's, 0.505-0.53; at 0.5 the groove fits the ball and the contact is the whole
+# groove); the bore and the inner lands below 9.99 m, so that a 10 m pitch circle with balls up to 10 mm still
+# leaves them room (they lie below the inner groove bottom d_m - D and the pitch circle).
+BALL_DIAMETER_MIN = 1e-4
+PITCH_DIAMETER_MIN = 5e-4
+CONFORMITY_MIN = 0.501
+INNER_DIAMETER_MAX = 9.99
 POISSON = Spec("-", 0.0, 0.5, low_open=False)
 DENSITY = Spec("kg/m^3", 100.0, 30000.0)
 
@@ -119,7 +130,8 @@ def _shoulders(doc, kind, D, dm, f_i, f_o, path):
         if value is not None and not low < value < high:
             raise ParameterError(
                 f"{path}: 'geometry.{key}' = {value} m is outside the allowed range ]{low:.6g}, {high:.6g}[ m "
-                f"(between the {ring} groove bottom d_m {'-' if ring == 'inner' else '+'} D and the pitch circle)"
+                f"(between the {ring} groove bottom d_m {'-' if ring == 'inner' else '+'} D and the pitch circle d_m, "
+                f"with 'geometry.pitch_diameter' = {dm} m and 'geometry.ball_diameter' = {D} m)"
             )
         if value is None:
             estimated.append(key)
@@ -161,14 +173,27 @@ def angle_for_clearance(D, f_i, f_o, Pd):
     return math.acos(1.0 - Pd / (2.0 * groove_clearance(D, f_i, f_o))) if Pd > 0.0 else 0.0
 
 
+def _check_clearance(Pd, D, f_i, f_o, path):
+    """Raise ParameterError unless -A <= P_d <= A (clearance_limits), naming the values A comes from."""
+    low, high = clearance_limits(D, f_i, f_o)
+    if not low <= Pd <= high:
+        raise ParameterError(
+            f"{path}: 'geometry.diametral_clearance' = {Pd} m is outside the allowed range [{low:.6g}, {high:.6g}] m: "
+            f"|P_d| <= (f_i + f_o - 1) D with 'geometry.inner_conformity' = {f_i}, 'geometry.outer_conformity' = "
+            f"{f_o} and 'geometry.ball_diameter' = {D} m (a larger clearance puts the free contact angle past 60 deg, "
+            "a larger preload presses every ball by more than the groove clearance)"
+        )
+
+
 def _clearance_and_angle(doc, D, f_i, f_o, kind, path):
     """(P_d (m), contact angle (rad): the file's nominal one, else the free one) from the file's
     'geometry.diametral_clearance' and/or 'geometry.contact_angle' (docs/parameters.md, clearance and
     contact angle): one gives the other by cos alpha0 = 1 - P_d/(2A); given both, they must agree to
     ANGLE_MATCH. A deep-groove file's contact angle 0 is its nominal (radial) angle and leaves the
     clearance free."""
-    low, high = clearance_limits(D, f_i, f_o)
-    Pd = _value(doc, "geometry.diametral_clearance", Spec("m", low, high), path, required=False)
+    Pd = _value(doc, "geometry.diametral_clearance", Spec("m", -math.inf, math.inf), path, required=False)
+    if Pd is not None:
+        _check_clearance(Pd, D, f_i, f_o, path)
     alpha = _value(doc, "geometry.contact_angle", Spec("rad", 0.0, ALPHA_MAX), path, required=False)
     if Pd is None and alpha is None:
         raise ParameterError(
@@ -183,7 +208,9 @@ def _clearance_and_angle(doc, D, f_i, f_o, kind, path):
             f"{path}: 'geometry.contact_angle' = {alpha} rad ({math.degrees(alpha):.3f} deg) and "
             f"'geometry.diametral_clearance' = {Pd} m (free contact angle {math.degrees(free):.3f} deg) disagree: "
             f"the clearance for {math.degrees(alpha):.3f} deg is {clearance_for_angle(D, f_i, f_o, alpha):.6g} m "
-            f"(cos alpha0 = 1 - P_d / (2 (f_i + f_o - 1) D)); give one of them, or both consistent"
+            f"(cos alpha0 = 1 - P_d / (2 (f_i + f_o - 1) D) with 'geometry.inner_conformity' = {f_i}, "
+            f"'geometry.outer_conformity' = {f_o} and 'geometry.ball_diameter' = {D} m); give one of them, or both "
+            "consistent"
         )
     return Pd, free if alpha is None else alpha
 

@@ -24,7 +24,7 @@ from pathlib import Path
 FOLDER_MARKERS = {"fmu": "fmu", "cosim": "cosim", "validation": "validation", "stability": "stability"}
 SLOW = {  # test file -> test function names (every parametrisation of them)
     "tests/fmu/test_bearing_analytic_fmu.py": {"test_thirty_fresh_processes_exit_cleanly"},
-    "tests/fmu/test_fuzz.py": {"test_fuzz_full"},
+    "tests/fmu/test_fuzz.py": {"test_fuzz_full", "test_fuzz_inside"},
     "tests/fmu/test_native_runtime.py": {"test_a_hundred_native_hosts_set_up_two_fmus_from_two_threads"},
     "tests/cosim/test_closed_loop.py": {
         "test_fixed_6000_preload_rises_with_temperature_and_settles",

@@ -272,12 +272,29 @@ ANALYTIC_OUTPUTS = (
     *LIFE_OUTPUTS,
 )
 
+DEEP_GROOVE_ONLY = (
+    "the analytic fidelity models radially loaded deep-groove bearings (kind 0, contact angle 0); the quasi-static "
+    "and DEM fidelities model the others"
+)
+
+
+def deep_groove_only(parameters):
+    """`parameters` with bearing_data.kind and bearing_data.alpha0 declared [0, 0]: the only bearing the analytic
+    fidelity models (analytic.models_bearing), so that the declared range is the range it accepts."""
+    names = ("bearing_data.kind", "bearing_data.alpha0")
+    return tuple(
+        replace(v, max=0 if v.kind == "integer" else 0.0, limits=DEEP_GROOVE_ONLY) if v.name in names else v
+        for v in parameters
+    )
+
+
 ANALYTIC_PARAMETERS = (
     Variable("bearing", "", BEARING_NAME.format("6208, 6306"), "string", start="6208"),
     Variable("lubricant", "", LUBRICANT_NAME, "string", start="guessasma_oil"),
     PD_FROM_FILE,
     PD,
-    *bearing_parameters("6208", "guessasma_oil"),  # the numeric bearing and lubricant (models.file_parameters)
+    # the numeric bearing and lubricant (models.file_parameters)
+    *deep_groove_only(bearing_parameters("6208", "guessasma_oil")),
 )
 
 # -- quasi-static fidelity --------------------------------------------------------------------------

@@ -23,8 +23,12 @@ from bearing_fmu_common.variables import Variable
 
 from ..params import (
     ALPHA_MAX,
+    BALL_DIAMETER_MIN,
     BALL_RING_MODULUS,
+    CONFORMITY_MIN,
     GROOVE_MAX,
+    INNER_DIAMETER_MAX,
+    PITCH_DIAMETER_MIN,
     ROUGHNESS,
     TRACTION_LIMIT_DEFAULT,
     TRACTION_SLIP_DEFAULT,
@@ -61,7 +65,8 @@ class Quantity:
 
 
 FILE_LIMITS = (
-    "the range of the {} file's value (docs/parameters.md), 0 included where 0 means not given or unused; "
+    "the range of the {} file's value (docs/parameters.md), closed at a value some set can take where the file's "
+    "bound is open, 0 included where 0 means not given or unused; "
     "in use, the file's own checks apply (open bounds, d_m > D, the balls fit, clearance and angle agree, the rings' "
     "sections and width, a rough race, the cage balls fit)"
 )
@@ -101,13 +106,13 @@ SHOULDERS = (
 )
 ROUGHNESS_RULE = " (a race's Ra or the balls' Ra > 0: Lambda = h_min / sigma needs sigma > 0)"
 # the bearing file's values (docs/parameters.md, bearing file); ranges are those the bearing file's reader
-# accepts, closed at 0 where the reader's bound is open (it refuses the 0 with the parameter's name)
+# accepts, closed at a value some bearing takes where the reader's bound is open (bearing_file.BALL_DIAMETER_MIN ...)
 BEARING_QUANTITIES = (
     _choice(B + "kind", "meta.kind", ("deep_groove", "angular_contact"), "bearing kind", "deep_groove"),
-    _real(B + "D", "m", "geometry.ball_diameter", "ball diameter", 0.0, 1.0),
-    _real(B + "d_m", "m", "geometry.pitch_diameter", "pitch diameter (> D)", 0.0, 10.0),
-    _real(B + "f_i", "1", "geometry.inner_conformity", "inner groove conformity r_i / D", 0.5, 1.0),
-    _real(B + "f_o", "1", "geometry.outer_conformity", "outer groove conformity r_o / D", 0.5, 1.0),
+    _real(B + "D", "m", "geometry.ball_diameter", "ball diameter", BALL_DIAMETER_MIN, 1.0),
+    _real(B + "d_m", "m", "geometry.pitch_diameter", "pitch diameter (> D)", PITCH_DIAMETER_MIN, 10.0),
+    _real(B + "f_i", "1", "geometry.inner_conformity", "inner groove conformity r_i / D", CONFORMITY_MIN, 1.0),
+    _real(B + "f_o", "1", "geometry.outer_conformity", "outer groove conformity r_o / D", CONFORMITY_MIN, 1.0),
     Quantity(Variable(B + "Z", "1", "number of balls", "integer", min=3, max=200), "geometry.n_balls", "-"),
     _real(
         B + "Pd",
@@ -133,7 +138,7 @@ BEARING_QUANTITIES = (
         "m",
         "geometry.bore",
         "bore diameter, below the inner groove bottom (the DEM's inner-ring mass)",
-        10.0,
+        INNER_DIAMETER_MAX,
     ),
     _optional(
         B + "outer_diameter", "m", "geometry.outer_diameter", "outer diameter, above the outer groove bottom", 10.0
@@ -146,7 +151,13 @@ BEARING_QUANTITIES = (
         10.0,
     ),
     *(
-        _optional(B + name, "m", f"geometry.{key}", f"land (shoulder) diameter, {words}", 10.0)
+        _optional(
+            B + name,
+            "m",
+            f"geometry.{key}",
+            f"land (shoulder) diameter, {words}",
+            INNER_DIAMETER_MAX if "inner" in name else 10.0,
+        )
         for name, key, words in SHOULDERS
     ),
     *(
@@ -202,8 +213,8 @@ LAWS = {
     (VISCOSITY_MODEL, 0): (("eta", "Pa.s", "viscosity.dynamic_viscosity", "dynamic viscosity", 0.0, 1e4),),
     (VISCOSITY_MODEL, 1): (
         ("nu_1", "m^2/s", "viscosity.nu_1", "kinematic viscosity at T_1", 0.0, 1.0),
-        ("T_1", "K", "viscosity.T_1", "temperature of nu_1", 0.0, 700.0),
-        ("nu_2", "m^2/s", "viscosity.nu_2", "kinematic viscosity at T_2 > T_1", 0.0, 1.0),
+        ("T_1", "K", "viscosity.T_1", "temperature of nu_1 (below T_2, at most 700 K)", 0.0, 699.0),
+        ("nu_2", "m^2/s", "viscosity.nu_2", "kinematic viscosity at T_2 > T_1 (below nu_1, at most 1)", 0.0, 0.999),
         ("T_2", "K", "viscosity.T_2", "temperature of nu_2", 0.0, 700.0),
     ),
     (VISCOSITY_MODEL, 2): (
@@ -289,16 +300,23 @@ def _law_constants(choice):
     )
 
 
+# Declared lower ends of lubricant values whose file bound is open (the file accepts any value above 1, 0, 0): a
+# liquid's relative permittivity from 1.5 (below the PFPE oils' 1.9, the lowest of lubricants), a limiting traction
+# coefficient from 0.005 (below the water-glycols' and silicones' 0.01-0.03), a traction curve's knee from a
+# slide-to-roll ratio of 1e-5 (oils: 1e-3 to 1e-2)
+EPS_R_MIN = 1.5
+TRACTION_MIN = 0.005
+TRACTION_SLIP_MIN = 1e-5
 # the lubricant file's values (docs/parameters.md, lubricant file)
 LUBRICANT_QUANTITIES = (
     *(quantity for choice in LAW_CHOICES for quantity in _law_constants(choice)),
-    _real(L + "eps_r", "1", "electrical.relative_permittivity", "static relative permittivity", 0.0, 100.0),
+    _real(L + "eps_r", "1", "electrical.relative_permittivity", "static relative permittivity", EPS_R_MIN, 100.0),
     _real(
         L + "limiting_traction",
         "1",
         "traction.limiting_coefficient",
         "limiting EHL traction coefficient",
-        0.0,
+        TRACTION_MIN,
         0.2,
         default=TRACTION_LIMIT_DEFAULT,
     ),
@@ -307,7 +325,7 @@ LUBRICANT_QUANTITIES = (
         "1",
         "traction.slip_scale",
         "slide-to-roll ratio of the traction curve's knee",
-        0.0,
+        TRACTION_SLIP_MIN,
         1.0,
         default=TRACTION_SLIP_DEFAULT,
     ),
@@ -315,9 +333,9 @@ LUBRICANT_QUANTITIES = (
         L + "T_low",
         "K",
         "temperature_range.T_low",
-        "lowest temperature of the data (0, with T_high 0: no range given)",
+        "lowest temperature of the data (0, with T_high 0: no range given; below T_high, at most 700 K)",
         0.0,
-        700.0,
+        699.0,
         absent=0.0,
     ),
     _real(
@@ -406,7 +424,25 @@ def _from_values(reader, quantities, prefix, values):
         text = str(exc)
         for q in quantities:
             text = text.replace(f"'{q.key}'", q.variable.name)
-        raise ParameterError(text) from None
+        raise ParameterError(_in_parameter_terms(quantities, values, text)) from None
+
+
+def _in_parameter_terms(quantities, values, text):
+    """`text` in the parameters' values: a choice shown as its code (name = 1 ('walther')), a value meaning 'not
+    given' as the value (name = 0.0 (not given)) and, when it names a constant of a law, the choice that put the law
+    in effect: the parameter a master set may be the choice, not the constant."""
+    for q in quantities:
+        if q.absent is not None:  # a value meaning 'not given' is shown as the parameter's value
+            text = text.replace(f"{q.variable.name} = not given", f"{q.variable.name} = {q.absent} (not given)")
+        if q.choices:
+            code = int(values[q.variable.name])
+            text = text.replace(
+                f"{q.variable.name} = '{q.choices[code]}'", f"{q.variable.name} = {code} ('{q.choices[code]}')"
+            )
+    laws = {q.used_when for q in quantities if q.used_when and f"{q.variable.name} = " in text}
+    for choice, code in sorted(laws):
+        text += f" (a constant of the {LAW_NAMES[choice, code]} law, chosen by {choice} = {code})"
+    return text
 
 
 def bearing_from_values(values):

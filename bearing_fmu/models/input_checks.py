@@ -28,5 +28,11 @@ def check_clearance(Pd, bearing, given):
         origin = "set" if given else f"read from {bearing.path}"
         raise InputError(
             f"Pd = {Pd} m ({origin}) is outside the allowed range [{low:.4g}, {high:.4g}] m "
-            f"(|Pd| <= (f_i + f_o - 1) D: free contact angle up to 60 deg)"
+            f"(|Pd| <= (f_i + f_o - 1) D with f_i = {bearing.f_i}, f_o = {bearing.f_o} and D = {bearing.D} m of "
+            f"{named_bearing(bearing)}: a larger clearance puts the free contact angle past 60 deg)"
         )
+
+
+def named_bearing(bearing):
+    """How a message names the bearing: 'bearing <name>' for a file, else where its values came from."""
+    return bearing.path if bearing.path == bearing.name else f"bearing '{bearing.name}'"

@@ -38,7 +38,7 @@ from .declarations import (
 from .fidelity import Fidelity
 from .film_table import film_table_array
 from .friction import FrictionWatch
-from .input_checks import check_clearance
+from .input_checks import check_clearance, named_bearing
 from .limits import (
     DM_N_LIMIT,
     MATERIAL_LIMIT,
@@ -150,7 +150,13 @@ class QuasiStaticModel:
                 f"F_preload = {F_preload} N needs drive = 'fixed_axial' (scene '{self.scene.name}' "
                 f"has drive {self.scene.drive!r})"
             )
-        _PARAMETERS["F_preload"].check(self.F_preload, 0.0, self.load_limit, "the upper bound is the material limit")
+        _PARAMETERS["F_preload"].check(
+            self.F_preload,
+            0.0,
+            self.load_limit,
+            f"the upper bound is the material limit of {named_bearing(self.bearing)}: p_max = 6 GPa with the load on "
+            "all balls",
+        )
         self.z0 = self.axial_approach(self.F_preload) if self.F_preload else 0.0
         self._plan_variables()
 

@@ -6,7 +6,13 @@ array in the order of output_declarations(), the FMU class (spindle.thermal.fmu)
 variables from the same declarations, and fmus/<Name>.md is generated from them (spindle.all_fmus).
 """
 
-from bearing_fmu_common.bearing_file import BALL_RING_MODULUS, GROOVE_MAX
+from bearing_fmu_common.bearing_file import (
+    BALL_DIAMETER_MIN,
+    BALL_RING_MODULUS,
+    GROOVE_MAX,
+    INNER_DIAMETER_MAX,
+    PITCH_DIAMETER_MIN,
+)
 from bearing_fmu_common.paramfile import ParameterError
 from bearing_fmu_common.variables import LOAD_MAX, OMEGA_MAX, THERMAL_SHIFT_MAX, Variable
 
@@ -22,6 +28,10 @@ T_LIMITS = (
     "meaningless below 150 K, and 1000 K is past the austenite transformation of bearing steel"
 )
 K_AXIAL_MAX = 1e11  # N/m: 100 x the axial stiffness of the stiffest spindle bearing sets (~1e9 N/m)
+# a bore of 0.05 mm (below a 0.5 mm pitch circle's 0.1 mm balls), bearing centres 1 mm apart (two of the smallest
+# bearings side by side): the declared ends a network can take (a bore and a spacing must be > 0)
+BORE_MIN = 5e-5
+SPACING_MIN = 1e-3
 AXIAL_FLOAT_MAX = THERMAL_SHIFT_MAX  # m: |axial float| of the shaft; a bearing FMU refuses |dz_thermal| beyond it
 
 
@@ -39,15 +49,15 @@ NETWORK_FROM_FILE = Variable(
 # file's are bearing_fmu_common.bearing_file's, as the bearing FMUs declare them), closed where those are open
 # (model.with_dimensions refuses a 0 that the file would refuse).
 RING_DIMENSIONS = (
-    ("D", "m", "D", "ball diameter (< d_m)", 0.0, 1.0),
-    ("d_m", "m", "dm", "pitch diameter", 0.0, 10.0),
+    ("D", "m", "D", "ball diameter (< d_m)", BALL_DIAMETER_MIN, 1.0),
+    ("d_m", "m", "dm", "pitch diameter", PITCH_DIAMETER_MIN, 10.0),
     (
         "Pd", "m", "Pd",
         "diametral clearance at assembly (negative = preload), |Pd| <= (f_i + f_o - 1) D with the bearing file's "
         "conformities; grooves d_m -+ (D + Pd/2)",
         -GROOVE_MAX, GROOVE_MAX,
     ),
-    ("bore", "m", "bore", "bore diameter (> 0, below the inner groove bottom)", 0.0, 10.0),
+    ("bore", "m", "bore", "bore diameter (below the inner groove bottom)", BORE_MIN, INNER_DIAMETER_MAX),
     (
         "E_ring", "Pa", "E", "Young's modulus of the rings (centrifugal growth; steels and ceramics)",
         BALL_RING_MODULUS.low, BALL_RING_MODULUS.high,
@@ -60,15 +70,16 @@ EXPANSION = (
     ("expansion.alpha_bearing", "1/K", "alpha_bearing", "thermal expansion coefficient of rings and balls", 0.0, 1e-3),
 )  # fmt: skip
 AXIAL = (
-    ("axial.spacing", "m", "spacing", "distance between the bearing centres (> 0)", 0.0, 10.0),
+    ("axial.spacing", "m", "spacing", "distance between the bearing centres", SPACING_MIN, 10.0),
     ("axial.alpha_shaft", "1/K", "alpha_shaft", "thermal expansion coefficient of the shaft", 0.0, 1e-3),
     ("axial.alpha_housing", "1/K", "alpha_housing", "thermal expansion coefficient of the housing", 0.0, 1e-3),
 )
 
 
 DIMENSION_LIMITS = (
-    "the range the network and bearing files accept; in use also 0 < D < d_m, |Pd| <= (f_i + f_o - 1) D, "
-    "0 < bore < d_m - D - max(Pd, 0)/2 and spacing > 0 (spindle.thermal.model.with_dimensions)"
+    "the range the network and bearing files accept, closed at a value a bearing can take where theirs is open; in "
+    "use also D < d_m, |Pd| <= (f_i + f_o - 1) D and bore < d_m - D - max(Pd, 0)/2 "
+    "(spindle.thermal.model.with_dimensions)"
 )
 
 

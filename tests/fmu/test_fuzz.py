@@ -13,10 +13,11 @@ too long for a file, near-misses of an allowed value. Required of every case:
   start value the step is accepted (the thermal FMUs as the bearing FMUs).
 
 test_fuzz_fast (CI) takes NaN and just-above-range for each Real and two Strings; test_fuzz_full (slow,
-tests/_markers.py) every case.
+tests/_markers.py) every case. test_fuzz_inside (slow) takes values inside the declared ranges (its docstring).
 """
 
 import json
+import re
 import subprocess
 import sys
 from functools import cache
@@ -27,6 +28,7 @@ import pytest
 from spindle.all_fmus import all_variables
 
 FUZZ = Path(__file__).with_name("fuzz.py")
+TIMEOUT = {"fast": 900, "full": 900, "inside": 7200}  # s per FMU: the inside cases step the models
 FIXTURES = {
     "BearingAnalytic": "analytic_fmu",
     "Bearing": "bearing_fmu",
@@ -44,6 +46,20 @@ FUZZED = [
 ]
 
 
+INSIDE = [
+    (name, v.name)
+    for name, _, _, parameters, *_ in all_variables()
+    for v in parameters
+    if v.kind in ("real", "integer")
+]
+PARAMETERS = {name: tuple(v.name for v in parameters) for name, _, _, parameters, *_ in all_variables()}
+# a lubricant law's constant is 0 when its law is not chosen (its start value in an FMU that starts with another law):
+# its 0 is accepted with another law, refused with its own
+UNUSED_ZERO = {
+    v.name for _, _, _, parameters, *_ in all_variables() for v in parameters if "law is not chosen" in v.description
+}
+
+
 @pytest.fixture(scope="session")
 def dem_fmu():
     from tests.conftest import _fmu
@@ -54,7 +70,9 @@ def dem_fmu():
 @cache
 def fuzz(path, which):
     """The case reports of one FMU (one fresh process), by variable name; fails if the host died."""
-    proc = subprocess.run([sys.executable, str(FUZZ), str(path), which], capture_output=True, text=True, timeout=900)
+    proc = subprocess.run(
+        [sys.executable, str(FUZZ), str(path), which], capture_output=True, text=True, timeout=TIMEOUT[which]
+    )
     lines = [json.loads(line) for line in proc.stdout.splitlines() if line.startswith("{")]
     running = lines[-1] if lines and lines[-1].get("running") else None
     assert proc.returncode == 0, (proc.returncode, running, proc.stderr[-3000:])
@@ -98,6 +116,41 @@ def problems(case):
     return out
 
 
+def names(text, variable):
+    """True if `text` names the FMU variable `variable` (not as part of a longer name such as bearing_data.Pd)."""
+    return re.search(rf"(?<![\w.]){re.escape(variable)}(?![\w.\[])", text) is not None
+
+
+def names_value(case):
+    """True if an error of the case names its variable and its value, followed by a reason."""
+    value = case["value"]
+    shown = {value, f"{float(value):.6g}", f"{float(value):g}"}
+    return any(
+        names(e, case["variable"]) and any(f"{case['variable']} = {s}" in e for s in shown) for e in case["errors"]
+    )
+
+
+def inside_problems(fmu_name, case):
+    """What is wrong with one value inside the declared range (an empty list if nothing)."""
+    refused = case["exit_init"] > 1 or case["steps"][0] > 1  # at initialisation or the first step (fmi2Warning: runs)
+    if refused:  # say why
+        if not names_value(case):
+            return [f"refused without naming {case['variable']} and its value: {case['errors']}"]
+        others = [n for n in PARAMETERS[fmu_name] if n != case["variable"] and any(names(e, n) for e in case["errors"])]
+        unused = case["variable"] in UNUSED_ZERO and float(case["value"]) == 0.0
+        if case["label"] in ("min", "max") and not others and not unused:
+            return [f"the declared {case['label']} is refused whatever the other parameters: {case['errors']}"]
+        return []
+    out = [f"absurd output: {text}" for text in case["absurd"][:3]]
+    if not case["finite"]:
+        out.append("silent NaN: a step accepted with a non-finite output")
+    if any(status > 1 for status in case["steps"]):  # refused at the operating point: an input or the parameter
+        inputs = ("omega", "F_", "x =", "y =", "z =", "Q_", "K_axial")
+        if not (names_value(case) or any(e.split(": ", 1)[-1].startswith(inputs) for e in case["errors"])):
+            out.append(f"a step refused without naming {case['variable']} or an input: {case['errors']}")
+    return out
+
+
 def check(request, fmu_name, variable, which):
     path = request.getfixturevalue(FIXTURES[fmu_name])
     cases = fuzz(path, which)[variable]
@@ -117,6 +170,22 @@ def test_fuzz_fast(request, fmu_name, variable):
 @pytest.mark.parametrize("fmu_name,variable", FUZZED, ids=[f"{f}.{v}" for f, v in FUZZED])
 def test_fuzz_full(request, fmu_name, variable):
     check(request, fmu_name, variable, "full")
+
+
+@pytest.mark.parametrize("fmu_name,variable", INSIDE, ids=[f"{f}.{v}" for f, v in INSIDE])
+def test_fuzz_inside(request, fmu_name, variable):
+    """Every Real and Integer parameter of every FMU at values inside its declared range (both ends, just inside
+    each, interior points; tests/fmu/fuzz.py inside_values), one at a time from the FMU's start values with the
+    switch that puts it in effect, then a few steps at an operating point (a speed and a load). Each value either
+    runs (every output finite, no absurd output: a negative film, contact load, pressure or loss, a thermal growth
+    beyond the part) or is refused at initialisation or the first step by a message naming the FMU variable, its
+    value and why; a declared end is not refused whatever the other parameters are (the declared range is the
+    accepted range); a step refused later names the parameter or the input the bearing cannot take."""
+    path = request.getfixturevalue(FIXTURES[fmu_name])
+    cases = fuzz(path, "inside")[variable]
+    assert cases, f"{fmu_name}.{variable}: no case ran"
+    wrong = {f"{case['label']} = {case['value']}": inside_problems(fmu_name, case) for case in cases}
+    assert not any(wrong.values()), {label: p for label, p in wrong.items() if p}
 
 
 def test_every_input_and_real_parameter_declares_its_range():

@@ -178,7 +178,7 @@ def refusal(path, parameters):
         (
             "bearing_fmu",
             {"bearing_from_file": False, "bearing_data.D": 0.0},
-            "bearing_data.D = 0.0 m is outside the allowed range ]0.0, 1.0]",
+            "bearing_data.D = 0.0 m is outside the allowed range [0.0001, 1] m",
         ),
         (
             "bearing_fmu",
@@ -235,7 +235,7 @@ def refusal(path, parameters):
         (
             "spindle_thermal_fmu",
             {"axial.spacing": 11.0},
-            "axial.spacing = 11.0 m is outside the allowed range [0, 10] m",
+            "axial.spacing = 11.0 m is outside the allowed range [0.001, 10] m",
         ),
     ],
 )
@@ -278,7 +278,7 @@ def refusal_messages(path, parameters, inputs, step):
             {"lubricant_from_file": False, "lubricant_data.T_low": 350.0},
             {},
             0.1,
-            "lubricant_data.T_low = 350.0 K and lubricant_data.T_high = not given are not allowed",
+            "lubricant_data.T_low = 350.0 K and lubricant_data.T_high = 0.0 (not given) are not allowed",
         ),
         (  # balls that do not fit on the pitch circle
             "dem_fmu",
@@ -293,7 +293,8 @@ def refusal_messages(path, parameters, inputs, step):
             {"bearing_from_file": False, "bearing_data.kind": 1},
             {},
             0.1,
-            "bearing_data.kind = 1 (angular_contact) and bearing_data.alpha0 = 0.0 rad are not allowed",
+            "bearing_data.kind = 1 is outside the allowed range [0, 0] (the analytic fidelity models radially loaded "
+            "deep-groove bearings",
         ),
         (  # a DEM step inside the declared range [0, 1e-5] s but too small to count its steps
             "dem_fmu",
