@@ -213,9 +213,6 @@ COVERED_THROUGH |= _pieces(
     BD + "integrator.advance",
     {
         "start_call": "the call's integrals and status cleared",
-        "watch_refresh": "the monitor's energy and damping checks at a refresh (the status compared)",
-        "book_step": "the dissipated energy and the averaged state's integrals of a step",
-        "step_stops": "the monitor's checks after a step (the status compared)",
     },
 )
 # compared through advance's refreshes (trib compared), three film formulas and both tangential laws
