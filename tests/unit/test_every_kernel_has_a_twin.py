@@ -169,24 +169,71 @@ COVERED_THROUGH = {
         "the fused film and Houpert constants; their own equality with kernels.ehl and kernels.torque is tested "
         "to 1e-12 in test_ball_dynamics.py",
     ),
-    BD + "tribology.race_circle": (BD + "integrator.verlet_step", "the groove-centre circle of each race"),
+    BD + "tribology.race_circle": (BD + "integrator.race_approaches", "the groove-centre circle of each race"),
     BD + "tribology.ring_axis": (
-        BD + "integrator.verlet_step",
+        BD + "integrator.correct_ring",
         "the tilted inner ring's axis: compared through advance with a tilting ring, and against the twin's Rodrigues "
         "rotation from 1e-9 to 0.3 rad in test_ball_dynamics.py",
     ),
     BD + "stiffness._contact_spring": (BD + "stiffness.stiffness_matrix", "the in-plane spring of each loaded contact"),
-    BD + "cage.ball_cage_contact": (BD + "integrator.verlet_step", "ball - cage-ball contacts of a step"),
-    BD + "cage.cage_guide_contact": (BD + "integrator.verlet_step", "cage ball - channel contacts of a step"),
+    BD + "cage.ball_cage_contact": (BD + "integrator.cage_forces", "ball - cage-ball contacts of a step"),
+    BD + "cage.cage_guide_contact": (BD + "integrator.cage_forces", "cage ball - channel contacts of a step"),
     BD + "cage.damped_hertz": (BD + "cage.ball_cage_contact", "the damped Hertz law of both cage contacts"),
     BD + "integrator.rigid_cage_torque": (BD + "integrator.verlet_step", "the cage's torque shared by its elements"),
     BD + "integrator.slip_power_correction": (
-        BD + "integrator.verlet_step",
+        BD + "integrator.correct_balls",
         "the slip power at the velocities a step ends with, in the dissipated energy compared every step (the twin "
         "evaluates it from the end velocities directly, ref_ball_dynamics_integrator.slip_power)",
     ),
-    BD + "integrator.sample_refresh": (BD + "integrator.advance", "the averaged state outputs' refresh samples"),
+    BD + "tribology.sample_refresh": (BD + "integrator.advance", "the averaged state outputs' refresh samples"),
+    BD + "tribology.film_losses": (BD + "integrator.advance", "the film's losses in the power booked every step"),
 }
+
+
+def _pieces(caller, why_by_piece):
+    """COVERED_THROUGH entries of the pieces a kernel is written in, each inlined into it (one function body to the
+    compiler), so that its comparison covers them as it covered the body: {module.piece: (caller, why)}."""
+    module = caller.rsplit(".", 1)[0]
+    return {f"{module}.{piece}": (caller, why) for piece, why in why_by_piece.items()}
+
+
+# compared through advance, every state array after each of the 300 steps (test_ball_dynamics.py)
+COVERED_THROUGH |= _pieces(
+    BD + "integrator.verlet_step",
+    {
+        "predict": "the predictor: positions and predicted velocities",
+        "race_approaches": "the approaches and normals of every contact",
+        "ball_race_forces": "the ball-race contacts' forces, springs, chatter counts and powers",
+        "cage_forces": "the cage balls' contacts",
+        "correct_ring": "the ring's corrector, translation and tilts",
+        "correct_balls": "the balls' and cage balls' corrector and the slip power at the step's end",
+    },
+)
+COVERED_THROUGH |= _pieces(
+    BD + "integrator.advance",
+    {
+        "start_call": "the call's integrals and status cleared",
+    },
+)
+# compared through advance's refreshes (trib compared), three film formulas and both tangential laws
+COVERED_THROUGH |= _pieces(
+    BD + "tribology.refresh_tribology",
+    {
+        "surface_speeds": "each contact's entrainment, sliding and spin speeds",
+        "film_and_rolling": "each contact's films and Houpert rolling force",
+        "tangential_law": "each contact's mu, film share and slip scale",
+    },
+)
+# compared through its own twin, every output of random contacts (test_dem_contact_law.py: both races, open and
+# closed, sticking and slipping, with and without film)
+COVERED_THROUGH |= _pieces(
+    BD + "contact_law.ball_race_contact",
+    {
+        "contact_slip": "the normal and tangential slip speeds",
+        "film_traction": "the film's implicit traction",
+        "resistance_moments": "the Houpert rolling and pivoting moments",
+    },
+)
 
 
 def kernels():

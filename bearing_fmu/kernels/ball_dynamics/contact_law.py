@@ -131,6 +131,106 @@ def tangential_spring(ox, oy, oz, nx, ny, nz, vtx, vty, vtz, dt, kt, f_limit):
 
 
 @kernel(inline="always")
+def contact_slip(race, p, v, w, rc, n, frame):
+    """(vn, vtx, vty, vtz, wrx, wry, wrz): the approach speed vn (m/s, > 0 approaching) and the tangential slip
+    velocity v_t (m/s) of the ball's surface over the race's at the contact point rc (m, from the ball's centre
+    p, m) with unit normal n, and the race's angular velocity W (rad/s). v, w: the ball's velocity (m/s) and
+    angular velocity (rad/s); frame as ball_race_contact's (race 0 inner: translating, turning at omega about its
+    axis and tilting; 1 outer: fixed)."""
+    px, py, pz = p
+    vx, vy, vz = v
+    wx, wy, wz = w
+    rcx, rcy, rcz = rc
+    nx, ny, nz = n
+    omega, vrx0, vry0, vrz0, cx, cy, cz, _, ax, ay, az, wtx, wty = frame
+    vbx = vx + wy * rcz - wz * rcy
+    vby = vy + wz * rcx - wx * rcz
+    vbz = vz + wx * rcy - wy * rcx
+    if race == 0:
+        # inner-race surface: ring translation + its angular velocity W = omega a + tilt rates, about its centre
+        wrx = omega * ax + wtx
+        wry = omega * ay + wty
+        wrz = omega * az
+        lx = px + rcx - cx
+        ly = py + rcy - cy
+        lz = pz + rcz - cz
+        vrx = vrx0 + wry * lz - wrz * ly
+        vry = vry0 + wrz * lx - wrx * lz
+        vrz = vrz0 + wrx * ly - wry * lx
+    else:
+        vrx = 0.0
+        vry = 0.0
+        vrz = 0.0
+        wrx = 0.0
+        wry = 0.0
+        wrz = 0.0
+    ux = vbx - vrx
+    uy = vby - vry
+    uz = vbz - vrz
+    vn = ux * nx + uy * ny + uz * nz  # > 0: approaching
+    return vn, ux - vn * nx, uy - vn * ny, uz - vn * nz, wrx, wry, wrz
+
+
+@kernel(inline="always")
+def film_traction(ft, dissipating, vt, film_force, slip, kappa):
+    """(ftx, fty, ftz, dtx, dty, dtz): the tangential force ft and its dissipating part (N, on the ball) with the
+    film's traction of the slip velocity vt (m/s) added, linearly implicit in the slip (unchanged without film force
+    or slip). film_force: the plateau phi mu_lim F_n (N); slip = 1/v_s (s/m); kappa = 7 dt / m (s/kg).
+
+    Linearly implicit: F = F(v) / (1 + kappa dF/dv), kappa the slip a force at the surface of a solid sphere removes
+    per newton in a step (3.5 dt / m) for both contacts of the ball. Where the curve is steep (low speed, dF/dv dt
+    >> m) the film stops at most half the slip in a step (no overshoot, no chatter) and holds what rolling needs, as
+    a stick; elsewhere F = F(v)."""
+    ftx, fty, ftz = ft
+    dtx, dty, dtz = dissipating
+    vtx, vty, vtz = vt
+    if film_force > 0.0:
+        v = math.sqrt(vtx * vtx + vty * vty + vtz * vtz)
+        if v > 0.0:
+            g = math.exp(-v * slip)  # 1 - g rather than expm1 (twice as fast): its error, 1e-16 film_force, is no force
+            scale = film_force * (1.0 - g) / ((1.0 + kappa * film_force * slip * g) * v)  # F(v) / v, one division
+            ftx -= scale * vtx
+            fty -= scale * vty
+            ftz -= scale * vtz
+            dtx -= scale * vtx
+            dty -= scale * vty
+            dtz -= scale * vtz
+    return ftx, fty, ftz, dtx, dty, dtz
+
+
+@kernel(inline="always")
+def resistance_moments(m, w, w_orbit, n, w_race, f_roll_surface, m_s, half_d, w_reg, rate_inv):
+    """m = (mx, my, mz) (N.m) plus the Houpert resistances' moments on the ball: the rolling resistance
+    f_roll_surface (D/2) against its rolling relative to the contact frame (which turns with the ball's orbit,
+    w_orbit about z, rad/s) and the pivoting moment m_s against its spin relative to the race (angular velocity
+    w_race). w: the ball's angular velocity (rad/s); n: the contact's unit normal.
+
+    Below the regularisation speed w_reg (rad/s) a resistance acts as a viscous damper M/w_reg; its rate is kept
+    within a quarter of I/dt (rate_inv = 4 dt / I) so that the explicit step cannot overshoot (with four resistances
+    on the ball their sum stays below I/dt: no sign reversal, no chatter)."""
+    mx, my, mz = m
+    wx, wy, wz = w
+    nx, ny, nz = n
+    wrx, wry, wrz = w_race
+    qx = wx
+    qy = wy
+    qz = wz - w_orbit
+    qn = qx * nx + qy * ny + qz * nz
+    qx -= qn * nx
+    qy -= qn * ny
+    qz -= qn * nz
+    q = math.sqrt(qx * qx + qy * qy + qz * qz)
+    f_roll = f_roll_surface * half_d
+    m_roll = f_roll / max(q, w_reg, f_roll * rate_inv)
+    spin = (wx - wrx) * nx + (wy - wry) * ny + (wz - wrz) * nz
+    m_spin = m_s / max(abs(spin), w_reg, m_s * rate_inv)
+    mx = mx - m_roll * qx - m_spin * spin * nx
+    my = my - m_roll * qy - m_spin * spin * ny
+    mz = mz - m_roll * qz - m_spin * spin * nz
+    return mx, my, mz
+
+
+@kernel(inline="always")
 def ball_race_contact(
     race,
     geometry,
@@ -187,45 +287,20 @@ def ball_race_contact(
     point from the ball's centre (m): with them the integrator books the slip's power at the velocities the step
     ends with (integrator.verlet_step says why).
     """
-    omega, vrx0, vry0, vrz0, cx, cy, cz, K_h, ax, ay, az, wtx, wty = frame
     half_d, alpha_e, kt_ratio, rate_inv, w_reg, dt = steps
     delta, nx, ny, nz = geometry
     if delta <= 0.0:  # open: the spring and the chatter count start again at the next touch
         return delta, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, False, False, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    K_h = frame[7]
     root = math.sqrt(delta)
     Q = K_h * delta * root
-    # contact point relative to the ball centre and surface velocities there
+    # contact point relative to the ball centre and the surfaces' relative velocity there
     rcx = half_d * nx
     rcy = half_d * ny
     rcz = half_d * nz
-    vbx = vx + wy * rcz - wz * rcy
-    vby = vy + wz * rcx - wx * rcz
-    vbz = vz + wx * rcy - wy * rcx
-    if race == 0:
-        # inner-race surface: ring translation + its angular velocity W = omega a + tilt rates, about its centre
-        wrx = omega * ax + wtx
-        wry = omega * ay + wty
-        wrz = omega * az
-        lx = px + rcx - cx
-        ly = py + rcy - cy
-        lz = pz + rcz - cz
-        vrx = vrx0 + wry * lz - wrz * ly
-        vry = vry0 + wrz * lx - wrx * lz
-        vrz = vrz0 + wrx * ly - wry * lx
-    else:
-        vrx = 0.0
-        vry = 0.0
-        vrz = 0.0
-        wrx = 0.0
-        wry = 0.0
-        wrz = 0.0
-    ux = vbx - vrx
-    uy = vby - vry
-    uz = vbz - vrz
-    vn = ux * nx + uy * ny + uz * nz  # > 0: approaching
-    vtx = ux - vn * nx
-    vty = uy - vn * ny
-    vtz = uz - vn * nz
+    vn, vtx, vty, vtz, wrx, wry, wrz = contact_slip(
+        race, (px, py, pz), (vx, vy, vz), (wx, wy, wz), (rcx, rcy, rcz), (nx, ny, nz), frame
+    )
     c_n = contact_damping(regime, c_frozen, alpha_e, Q)
     F_n = Q + c_n * vn
     if F_n < 0.0:  # a damper cannot pull the surfaces together
@@ -245,47 +320,24 @@ def ball_race_contact(
     power = c_n * vn * vn if F_n > 0.0 else 0.0
     # the tangential forces that dissipate: a slipping spring's and the film's traction (a sticking spring stores)
     dtx, dty, dtz = (ftx, fty, ftz) if slipping else (0.0, 0.0, 0.0)
-    if film_force > 0.0:
-        v = math.sqrt(vtx * vtx + vty * vty + vtz * vtz)
-        if v > 0.0:
-            # linearly implicit in the slip: F = F(v) / (1 + kappa dF/dv) with kappa = 7 dt / m, the slip a force
-            # at the surface of a solid sphere removes per newton in a step (3.5 dt / m) for both contacts of the
-            # ball. Where the curve is steep (low speed, dF/dv dt >> m) the film stops at most half the slip in a
-            # step (no overshoot, no chatter) and holds what rolling needs, as a stick; elsewhere F = F(v)
-            g = math.exp(-v * slip)  # 1 - g rather than expm1 (twice as fast): its error, 1e-16 film_force, is no force
-            scale = film_force * (1.0 - g) / ((1.0 + kappa * film_force * slip * g) * v)  # F(v) / v, one division
-            ftx -= scale * vtx
-            fty -= scale * vty
-            ftz -= scale * vtz
-            dtx -= scale * vtx
-            dty -= scale * vty
-            dtz -= scale * vtz
+    ftx, fty, ftz, dtx, dty, dtz = film_traction(
+        (ftx, fty, ftz), (dtx, dty, dtz), (vtx, vty, vtz), film_force, slip, kappa
+    )
     power -= dtx * vtx + dty * vty + dtz * vtz
     # force on the ball: normal push back towards the curvature centre, tangential traction
     fx = -F_n * nx + ftx
     fy = -F_n * ny + fty
     fz = -F_n * nz + ftz
-    mx = rcy * ftz - rcz * fty
-    my = rcz * ftx - rcx * ftz
-    mz = rcx * fty - rcy * ftx
-    # Houpert resistances: rolling relative to the contact frame (which turns with the ball's orbit)
-    # and spin relative to the race
-    qx = wx
-    qy = wy
-    qz = wz - w_orbit
-    qn = qx * nx + qy * ny + qz * nz
-    qx -= qn * nx
-    qy -= qn * ny
-    qz -= qn * nz
-    q = math.sqrt(qx * qx + qy * qy + qz * qz)
-    # below the regularisation speed a resistance acts as a viscous damper M/w_reg; its rate is kept
-    # within a quarter of I/dt so that the explicit step cannot overshoot (with four resistances on the
-    # ball their sum stays below I/dt: no sign reversal, no chatter)
-    f_roll = f_roll_surface * half_d
-    m_roll = f_roll / max(q, w_reg, f_roll * rate_inv)
-    spin = (wx - wrx) * nx + (wy - wry) * ny + (wz - wrz) * nz
-    m_spin = m_s / max(abs(spin), w_reg, m_s * rate_inv)
-    mx = mx - m_roll * qx - m_spin * spin * nx
-    my = my - m_roll * qy - m_spin * spin * ny
-    mz = mz - m_roll * qz - m_spin * spin * nz
+    mx, my, mz = resistance_moments(
+        (rcy * ftz - rcz * fty, rcz * ftx - rcx * ftz, rcx * fty - rcy * ftx),
+        (wx, wy, wz),
+        w_orbit,
+        (nx, ny, nz),
+        (wrx, wry, wrz),
+        f_roll_surface,
+        m_s,
+        half_d,
+        w_reg,
+        rate_inv,
+    )
     return delta, fx, fy, fz, mx, my, mz, sx, sy, sz, slipping, reversed_, power, dtx, dty, dtz, rcx, rcy, rcz

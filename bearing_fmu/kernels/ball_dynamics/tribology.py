@@ -43,6 +43,12 @@ from ..film_correction import FT_ON, film_ratios
 from ..torque import heathcote_force, hysteresis_force, spin_moment
 from .contact_law import groove_approach
 from .state import (
+    A_S_HC_I,
+    A_S_HMIN_I,
+    A_S_LAMBDA_I,
+    A_S_PMAX,
+    A_S_QMAX_I,
+    A_SAMPLES,
     B_VX,
     B_WX,
     B_X,
@@ -173,6 +179,101 @@ def tribology_constants(par, eta, xi, tc):
         )
 
 
+# refresh_tribology's pieces: scalar functions inlined into its contact loop (inline="always"), which keeps reading
+# and writing the arrays itself.
+@kernel(inline="always")
+def surface_speeds(p, v_xy, w, n, c, w_race, v_race, half_d):
+    """(u, slide, spin): the entrainment speed u = |u_b + u_r|/2 and the sliding speed |u_b - u_r| (m/s) of the
+    tangential surface velocities, and the spin (w - W).n (rad/s) of a contact with unit normal n = (nx, ny, nz), in
+    the frame that turns with the ball's orbit about z (module docstring).
+
+    p = (px, py, pz): the ball's centre (m); v_xy = (vx, vy): its velocity across the axis (m/s); w = (wx, wy, wz):
+    its angular velocity (rad/s); c: the race's curvature-centre circle's centre (m); w_race = W, the race's angular
+    velocity (rad/s), v_race its centre's velocity (m/s); half_d = D/2 (m)."""
+    px, py, pz = p
+    vx, vy = v_xy
+    wx, wy, wz = w
+    nx, ny, nz = n
+    cx, cy, cz = c
+    wrx, wry, wrz = w_race
+    ring_vx, ring_vy, ring_vz = v_race
+    w_orbit = (px * vy - py * vx) / (px * px + py * py)
+    # ball surface relative to the orbiting contact frame
+    qz = wz - w_orbit
+    ubx = half_d * (wy * nz - qz * ny)
+    uby = half_d * (qz * nx - wx * nz)
+    ubz = half_d * (wx * ny - wy * nx)
+    # race surface relative to the same frame (the race turns about the ring centre, which moves)
+    rx = px + half_d * nx - cx
+    ry = py + half_d * ny - cy
+    rz = pz + half_d * nz - cz
+    s = wrz - w_orbit
+    urx = wry * rz - s * ry + ring_vx
+    ury = s * rx - wrx * rz + ring_vy
+    urz = wrx * ry - wry * rx + ring_vz
+    # tangential parts
+    un = urx * nx + ury * ny + urz * nz
+    urx -= un * nx
+    ury -= un * ny
+    urz -= un * nz
+    un = ubx * nx + uby * ny + ubz * nz
+    ubx -= un * nx
+    uby -= un * ny
+    ubz -= un * nz
+    sx = ubx + urx
+    sy = uby + ury
+    sz = ubz + urz
+    u = 0.5 * math.sqrt(sx * sx + sy * sy + sz * sz)
+    sx = ubx - urx
+    sy = uby - ury
+    sz = ubz - urz
+    slide = math.sqrt(sx * sx + sy * sy + sz * sz)
+    spin = (wx - wrx) * nx + (wy - wry) * ny + (wz - wrz) * nz
+    return u, slide, spin
+
+
+@kernel(inline="always")
+def film_and_rolling(u, delta, Q, eta, xi, E_red, contact, film, film_table, race, ln_fr, ln_hmin, ln_hc):
+    """(F_R, h_c, h_min): Houpert's EHL rolling force (N) and the central and minimum films (m) of a contact at
+    entrainment speed u (m/s), approach delta (m) and load Q (N); contact = (Rx, Ry, k) (m, m, -); film: the
+    scene's formula code, film_table: its correction table (film_correction, FT_ON off: none); ln_fr, ln_hmin,
+    ln_hc: the race's power-law constants (tribology_constants). No entrainment: no film, no EHL rolling force (as
+    the kernels of ehl and torque)."""
+    Rx, Ry, k = contact
+    if not (u > 0.0 and eta > 0.0):
+        return 0.0, 0.0, 0.0
+    ln_u = math.log(u)
+    ln_d = math.log(delta)
+    F_R = math.exp(ln_fr + 0.656 * ln_u + 0.699 * ln_d)
+    if film == FILM_HAMROCK_DOWSON:
+        h_min = math.exp(ln_hmin + 0.68 * ln_u - 0.1095 * ln_d)
+        h_c = math.exp(ln_hc + 0.67 * ln_u - 0.1005 * ln_d)
+    else:
+        h_c, h_min = film_thickness(film, eta, xi, E_red, u, Q, Rx, Ry, k)
+    if film_table[FT_ON] > 0.5:  # the scene's film correction: the numerical / formula ratios of the film table
+        U, G, W = dimensionless_groups(eta, xi, E_red, u, Q, Rx)
+        r_c, r_min = film_ratios(film_table, race, film, U, G, W)
+        h_c *= r_c
+        h_min *= r_min
+    return F_R, h_c, h_min
+
+
+@kernel(inline="always")
+def tangential_law(lam, traction, mu_boundary, mu_lim, s_0, u, spin, a):
+    """(mu, phi, slip) of the contact law's tangential force at film parameter lam: the asperities' share (1 - phi)
+    a Coulomb spring at the boundary mu, the film's share phi the EHL traction curve of the sliding speed
+    (contact_law.ball_race_contact) with slip = 1/v_s (s/m); the Coulomb override (traction > 0) keeps a spring
+    alone, capped at the ramp to its full-film value."""
+    if traction > 0.0:
+        return traction_coefficient(lam, traction), 0.0, 0.0
+    phi = film_share(lam)
+    # the sliding speed that sets the curve's slope: the creep scale s_0 u, or, in a contact that spins, the spin's
+    # own sliding across the ellipse (SPIN_SLIP |spin| a, ehl.film_slip_speed)
+    v_s = film_slip_speed(s_0, u, spin, a)
+    slip = 1.0 / v_s if v_s > 0.0 else 0.0  # (0: no entrainment, or one that underflows)
+    return (1.0 - phi) * mu_boundary + phi * mu_lim, phi, slip
+
+
 @kernel
 def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, geo):
     """Recompute trib[:, race, ball] of every ball-race contact from the current state (positions and
@@ -187,7 +288,6 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, ge
     half_d = 0.5 * D
     film = int(par[P_FILM])
     film_table = par[P_FILM_TABLE:]
-    corrected = film_table[FT_ON] > 0.5
     capacitance = par[P_CAPACITANCE] > 0.5
     pressure = int(par[P_PRESSURE])
     traction = par[P_TRACTION]
@@ -200,21 +300,24 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, ge
         rg = par[P_RG_I + race]
         K_h = par[P_KH_I + race]
         Rx = par[P_RX_I + h]
-        Ry = par[P_RY_I + h]
-        k = par[P_K_I + h]
         ell_E = par[P_EE_I + h]
+        contact = (Rx, par[P_RY_I + h], par[P_K_I + h])
         scale_a = par[P_HA_I + P_HERTZ_SCALE_STRIDE * race]
         scale_b = par[P_HB_I + P_HERTZ_SCALE_STRIDE * race]
         scale_p = par[P_HP_I + P_HERTZ_SCALE_STRIDE * race]
         sigma = par[P_SIGMA_I + race]
         f_groove = par[P_F_I + race]
         # the race's angular velocity: omega about its (tilted) axis plus the tilt rates; the outer race is fixed
-        wrx = omega * ax + ring[R_VTH] if race == 0 else 0.0
-        wry = omega * ay + ring[R_VTH + 1] if race == 0 else 0.0
-        wrz = omega * az if race == 0 else 0.0
-        ring_vx = ring[R_VX] if race == 0 else 0.0
-        ring_vy = ring[R_VX + 1] if race == 0 else 0.0
-        ring_vz = ring[R_VX + 2] if race == 0 else 0.0
+        w_race = (
+            omega * ax + ring[R_VTH] if race == 0 else 0.0,
+            omega * ay + ring[R_VTH + 1] if race == 0 else 0.0,
+            omega * az if race == 0 else 0.0,
+        )
+        v_race = (
+            ring[R_VX] if race == 0 else 0.0,
+            ring[R_VX + 1] if race == 0 else 0.0,
+            ring[R_VX + 2] if race == 0 else 0.0,
+        )
         ln_fr = tc[TC_LN_FR, race]
         ln_hmin = tc[TC_LN_HMIN, race]
         ln_hc = tc[TC_LN_HC, race]
@@ -229,13 +332,7 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, ge
             geo[2, j] = ny
             geo[3, j] = nz
         for j in range(balls.shape[1]):
-            px = balls[B_X, j]
-            py = balls[B_X + 1, j]
-            pz = balls[B_X + 2, j]
             delta = geo[0, j]
-            nx = geo[1, j]
-            ny = geo[2, j]
-            nz = geo[3, j]
             if delta <= 0.0:
                 for t in range(T_SIZE):
                     trib[t, race, j] = 0.0
@@ -249,78 +346,25 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, ge
             a = scale_a * root
             b = scale_b * root
             p_max = scale_p * root
-            vx = balls[B_VX, j]
-            vy = balls[B_VX + 1, j]
-            wx = balls[B_WX, j]
-            wy = balls[B_WX + 1, j]
-            wz = balls[B_WX + 2, j]
-            w_orbit = (px * vy - py * vx) / (px * px + py * py)
-            # ball surface relative to the orbiting contact frame
-            qz = wz - w_orbit
-            ubx = half_d * (wy * nz - qz * ny)
-            uby = half_d * (qz * nx - wx * nz)
-            ubz = half_d * (wx * ny - wy * nx)
-            # race surface relative to the same frame (the race turns about the ring centre, which moves)
-            rx = px + half_d * nx - cx
-            ry = py + half_d * ny - cy
-            rz = pz + half_d * nz - cz
-            s = wrz - w_orbit
-            urx = wry * rz - s * ry + ring_vx
-            ury = s * rx - wrx * rz + ring_vy
-            urz = wrx * ry - wry * rx + ring_vz
-            # tangential parts
-            un = urx * nx + ury * ny + urz * nz
-            urx -= un * nx
-            ury -= un * ny
-            urz -= un * nz
-            un = ubx * nx + uby * ny + ubz * nz
-            ubx -= un * nx
-            uby -= un * ny
-            ubz -= un * nz
-            sx = ubx + urx
-            sy = uby + ury
-            sz = ubz + urz
-            u = 0.5 * math.sqrt(sx * sx + sy * sy + sz * sz)
-            sx = ubx - urx
-            sy = uby - ury
-            sz = ubz - urz
-            slide = math.sqrt(sx * sx + sy * sy + sz * sz)
-            spin = (wx - wrx) * nx + (wy - wry) * ny + (wz - wrz) * nz
-            F_R = 0.0
-            if u > 0.0 and eta > 0.0:
-                ln_u = math.log(u)
-                ln_d = math.log(delta)
-                F_R = math.exp(ln_fr + 0.656 * ln_u + 0.699 * ln_d)
-                if film == FILM_HAMROCK_DOWSON:
-                    h_min = math.exp(ln_hmin + 0.68 * ln_u - 0.1095 * ln_d)
-                    h_c = math.exp(ln_hc + 0.67 * ln_u - 0.1005 * ln_d)
-                else:
-                    h_c, h_min = film_thickness(film, eta, xi, E_red, u, Q, Rx, Ry, k)
-                if corrected:  # the scene's film correction: the numerical / formula ratios of the film table
-                    U, G, W = dimensionless_groups(eta, xi, E_red, u, Q, Rx)
-                    r_c, r_min = film_ratios(film_table, race, film, U, G, W)
-                    h_c *= r_c
-                    h_min *= r_min
-            else:  # no entrainment: no film, no EHL rolling force (as the kernels of ehl and torque)
-                h_c = 0.0
-                h_min = 0.0
+            u, slide, spin = surface_speeds(
+                (balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j]),
+                (balls[B_VX, j], balls[B_VX + 1, j]),
+                (balls[B_WX, j], balls[B_WX + 1, j], balls[B_WX + 2, j]),
+                (geo[1, j], geo[2, j], geo[3, j]),
+                (cx, cy, cz),
+                w_race,
+                v_race,
+                half_d,
+            )
+            F_R, h_c, h_min = film_and_rolling(
+                u, delta, Q, eta, xi, E_red, contact, film, film_table, race, ln_fr, ln_hmin, ln_hc
+            )
             lam = film_parameter(h_min, sigma)
             mu = friction_coefficient(lam)  # the papers' mu(Lambda): the Houpert sliding terms below
-            # tangential law: the asperities' share (1 - phi) a Coulomb spring at the boundary mu, the film's
-            # share phi the EHL traction curve of the sliding speed (contact_law.ball_race_contact); the Coulomb
-            # override (traction > 0) keeps a spring alone, capped at the ramp to its full-film value
-            if traction > 0.0:
-                trib[T_MU, race, j] = traction_coefficient(lam, traction)
-                trib[T_PHI, race, j] = 0.0
-                trib[T_SLIP, race, j] = 0.0
-            else:
-                phi = film_share(lam)
-                trib[T_PHI, race, j] = phi
-                trib[T_MU, race, j] = (1.0 - phi) * mu_boundary + phi * mu_lim
-                # the sliding speed that sets the curve's slope: the creep scale s_0 u, or, in a contact that spins,
-                # the spin's own sliding across the ellipse (SPIN_SLIP |spin| a, ehl.film_slip_speed)
-                v_s = film_slip_speed(s_0, u, spin, a)
-                trib[T_SLIP, race, j] = 1.0 / v_s if v_s > 0.0 else 0.0  # (0: no entrainment, or one that underflows)
+            mu_t, phi, slip = tangential_law(lam, traction, mu_boundary, mu_lim, s_0, u, spin, a)
+            trib[T_MU, race, j] = mu_t
+            trib[T_PHI, race, j] = phi
+            trib[T_SLIP, race, j] = slip
             trib[T_C_N, race, j] = normal_damping(lam, Q, par[P_ALPHA_E], eta, a, half_d, h_min)
             trib[T_REGIME, race, j] = lubrication_regime(lam)
             # Houpert forces (F_R above, the others from kernels.torque); the contact's power as
@@ -348,3 +392,46 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, ge
                 )
             else:
                 trib[T_CAP, race, j] = 0.0
+
+
+# What advance takes from each refresh, inlined into it.
+@kernel(inline="always")  # called once per refresh from advance: no array-passing call
+def film_losses(trib):
+    """(inner, outer): the film's own losses (W, Houpert) summed over each race's contacts, constant between two
+    refreshes."""
+    film_i = 0.0
+    film_o = 0.0
+    for j in range(trib.shape[2]):
+        film_i += trib[T_P_FILM, 0, j]
+        film_o += trib[T_P_FILM, 1, j]
+    return film_i, film_o
+
+
+@kernel(inline="always")  # called once per refresh from advance: no array-passing call
+def sample_refresh(trib, acc):
+    """Add this refresh's loads, pressure and films to the sums acc[A_S_*] (one sample, acc[A_SAMPLES] += 1): per
+    race the largest load, the smallest Lambda and h_min and the central film of the most loaded contact among
+    the loaded ones (0 without one), and the largest Hertz pressure; their means over a call are the averaged
+    state outputs (models.dem, averaged_state)."""
+    p_max = 0.0
+    for race in range(2):
+        q_max = 0.0
+        lam = math.inf
+        h_min = math.inf
+        h_c = 0.0
+        for j in range(trib.shape[2]):
+            q = trib[T_Q, race, j]
+            if q > 0.0:
+                p_max = max(p_max, trib[T_P_MAX, race, j])
+                lam = min(lam, trib[T_LAMBDA, race, j])
+                h_min = min(h_min, trib[T_H_MIN, race, j])
+                if q > q_max:
+                    q_max = q
+                    h_c = trib[T_H_C, race, j]
+        acc[A_S_QMAX_I + race] += q_max
+        if q_max > 0.0:
+            acc[A_S_LAMBDA_I + race] += lam
+            acc[A_S_HMIN_I + race] += h_min
+            acc[A_S_HC_I + race] += h_c
+    acc[A_S_PMAX] += p_max
+    acc[A_SAMPLES] += 1.0
