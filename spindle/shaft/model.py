@@ -25,7 +25,7 @@ SEAT_MATRIX_MAX = 1.0e13  # N/m, N/rad, N.m/rad or N.s/m: a bearing's entries ar
 RESIDUE_FLOOR = 1e-9  # share of the largest modal residue of H_xx below which a mode does not show in it
 RIGID_RATIO = 1.0e-8  # a mode whose strain-energy frequency^2 is below this share of the model's largest is rigid
 OSCILLATING = 1e-9  # Im lambda / |lambda| above which a root is an oscillating mode, not a real (overdamped) root
-WHIRL_FORWARD, WHIRL_NONE, WHIRL_BACKWARD = 1, 0, -1
+WHIRL_FORWARD, WHIRL_NONE, WHIRL_BACKWARD, WHIRL_AXIAL = 1, 0, -1, 2
 
 __all__ = ["ShaftInputError", "ShaftModel", "shaft_path", "DEFAULT_SHAFT"]
 
@@ -71,12 +71,13 @@ def craig_bampton(K, M, boundary, modes):
 
 def whirl_sense(phys):
     """Whirl of a complex mode shape over the full dofs (e^{lambda t}, Im lambda > 0): +1 forward (the orbit of
-    the translations turns with the spin, +z), -1 backward, 0 none (axial, or a planar shape of a degenerate pair
-    at rest); the mean of -2 Im(conj(x) y) / (|x|^2 + |y|^2) over the nodes, weighted by amplitude, decides."""
+    the translations turns with the spin, +z), -1 backward, 0 none (a planar shape of a degenerate pair at rest),
+    2 axial (the axial translations outweigh the radial ones); the mean of -2 Im(conj(x) y) / (|x|^2 + |y|^2) over
+    the nodes, weighted by amplitude, decides (+1 for a circular forward orbit, -1 backward, 0 planar)."""
     x, y, z = phys[0::5], phys[1::5], phys[2::5]
     radial = np.sum(np.abs(x) ** 2 + np.abs(y) ** 2)
     if radial <= np.sum(np.abs(z) ** 2):
-        return WHIRL_NONE
+        return WHIRL_AXIAL
     s = -2.0 * np.sum(np.imag(np.conj(x) * y)) / radial
     return WHIRL_FORWARD if s > 0.5 else WHIRL_BACKWARD if s < -0.5 else WHIRL_NONE
 
@@ -95,7 +96,8 @@ class ShaftModel:
         self._T = craig_bampton(K, M, boundary, modes)
         self._K, self._M, self._G = (self._T.T @ A @ self._T for A in (K, M, G))
         self._Minv = np.linalg.inv(self._M)
-        self._seat_dofs = np.array([[beam.NDOF * k + i for i in range(beam.NDOF)] for k in range(len(sf.seat_nodes))])
+        seat_dofs = [[beam.NDOF * k + i for i in range(beam.NDOF)] for k in range(len(sf.seat_nodes))]
+        self._seat_dofs = np.array(seat_dofs, dtype=np.int64).reshape(-1, beam.NDOF)
         self._tip = beam.NDOF * interface.index(sf.tip_node)
         self._scale = float(np.max(np.abs(np.diag(self._Minv @ self._K))))
         self.n_dofs = self._K.shape[0]
@@ -168,7 +170,7 @@ class ShaftModel:
         """Outputs at speed omega (rad/s) with the seats' 5x5 stiffness K_seats (N/m, N/rad, N.m/m, N.m/rad) and
         damping C_seats (N.s/m, ...; None: undamped), in the seat order of the shaft file:
         - frequencies (Hz): the first six damped natural frequencies Im(lambda) / 2 pi of the elastic modes,
-          whirl: +1 forward, -1 backward, 0 none (axial, or planar at rest), damping_ratios -Re(lambda) / |lambda|;
+          whirl: +1 forward, -1 backward, 0 none (planar at rest), 2 axial, damping_ratios -Re(lambda) / |lambda|;
           NaN where the model has fewer elastic modes; rigid_modes: rigid-body modes passed over;
         - compliance_radial, compliance_axial (m/N): static x and z deflection of the tool tip under a unit
           force there (NaN without supports against that motion);
