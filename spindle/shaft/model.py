@@ -24,6 +24,8 @@ OMEGA_MAX = 1.0e4  # rad/s (95 500 rpm): above any spindle's speed
 SEAT_MATRIX_MAX = 1.0e13  # N/m, N/rad, N.m/rad or N.s/m: a bearing's entries are orders of magnitude below
 RESIDUE_FLOOR = 1e-9  # share of the largest modal residue of H_xx below which a mode does not show in it
 RIGID_RATIO = 1.0e-8  # a mode whose strain-energy frequency^2 is below this share of the model's largest is rigid
+# |mean sense| below which a shape is planar: anisotropic seats make elliptic orbits, whose sense still counts
+PLANAR = 1.0e-3
 OSCILLATING = 1e-9  # Im lambda / |lambda| above which a root is an oscillating mode, not a real (overdamped) root
 WHIRL_FORWARD, WHIRL_NONE, WHIRL_BACKWARD, WHIRL_AXIAL = 1, 0, -1, 2
 
@@ -73,13 +75,15 @@ def whirl_sense(phys):
     """Whirl of a complex mode shape over the full dofs (e^{lambda t}, Im lambda > 0): +1 forward (the orbit of
     the translations turns with the spin, +z), -1 backward, 0 none (a planar shape of a degenerate pair at rest),
     2 axial (the axial translations outweigh the radial ones); the mean of -2 Im(conj(x) y) / (|x|^2 + |y|^2) over
-    the nodes, weighted by amplitude, decides (+1 for a circular forward orbit, -1 backward, 0 planar)."""
+    the nodes, weighted by amplitude, decides (+1 for a circular forward orbit, -1 backward, 0 planar). At rest
+    the facade reports no whirl: a pair of an axisymmetric shaft is degenerate, any combination of its shapes
+    (planar, forward, backward) is a mode."""
     x, y, z = phys[0::5], phys[1::5], phys[2::5]
     radial = np.sum(np.abs(x) ** 2 + np.abs(y) ** 2)
     if radial <= np.sum(np.abs(z) ** 2):
         return WHIRL_AXIAL
     s = -2.0 * np.sum(np.imag(np.conj(x) * y)) / radial
-    return WHIRL_FORWARD if s > 0.5 else WHIRL_BACKWARD if s < -0.5 else WHIRL_NONE
+    return WHIRL_FORWARD if s > PLANAR else WHIRL_BACKWARD if s < -PLANAR else WHIRL_NONE
 
 
 class ShaftModel:
@@ -146,7 +150,7 @@ class ShaftModel:
         A[n:, n:] = -self._Minv @ D
         return np.linalg.eig(A)
 
-    def _elastic(self, lam, V, K, count):
+    def _elastic(self, lam, V, K, count, spinning):
         """Indices (by rising Im lambda) of the first `count` elastic modes with Im lambda > 0, their whirl, and
         the number of rigid-body modes passed over (a shape without strain energy: the free rotor's translation,
         tilt and gyroscopic nutation)."""
@@ -160,7 +164,8 @@ class ShaftModel:
                 rigid += 1
                 continue
             kept.append(r)
-            whirls.append(whirl_sense(self._T @ q))
+            whirl = whirl_sense(self._T @ q)
+            whirls.append(whirl if spinning or whirl == WHIRL_AXIAL else WHIRL_NONE)
             if len(kept) == count:
                 break
         return kept, whirls, rigid
@@ -170,7 +175,8 @@ class ShaftModel:
         """Outputs at speed omega (rad/s) with the seats' 5x5 stiffness K_seats (N/m, N/rad, N.m/m, N.m/rad) and
         damping C_seats (N.s/m, ...; None: undamped), in the seat order of the shaft file:
         - frequencies (Hz): the first six damped natural frequencies Im(lambda) / 2 pi of the elastic modes,
-          whirl: +1 forward, -1 backward, 0 none (planar at rest), 2 axial, damping_ratios -Re(lambda) / |lambda|;
+          whirl: +1 forward, -1 backward, 0 none (at rest, or a planar shape), 2 axial;
+          damping_ratios -Re(lambda) / |lambda|;
           NaN where the model has fewer elastic modes; rigid_modes: rigid-body modes passed over;
         - compliance_radial, compliance_axial (m/N): static x and z deflection of the tool tip under a unit
           force there (NaN without supports against that motion);
@@ -180,7 +186,7 @@ class ShaftModel:
         omega = self._check_omega(omega)
         K, C = self.matrices(K_seats, C_seats)
         lam, V = self._state_eig(K, C + omega * self._G)
-        kept, whirls, rigid = self._elastic(lam, V, K, N_FREQUENCIES)
+        kept, whirls, rigid = self._elastic(lam, V, K, N_FREQUENCIES, omega > 0.0)
         out = {
             "frequencies": np.full(N_FREQUENCIES, math.nan),
             "whirl": np.zeros(N_FREQUENCIES, dtype=int),
