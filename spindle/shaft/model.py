@@ -152,23 +152,20 @@ class ShaftModel:
 
     def _elastic(self, lam, V, K, count, spinning):
         """Indices (by rising Im lambda) of the first `count` elastic modes with Im lambda > 0, their whirl, and
-        the number of rigid-body modes passed over (a shape without strain energy: the free rotor's translation,
-        tilt and gyroscopic nutation)."""
+        the number of rigid-body modes among the oscillating ones (a shape without strain energy: the free rotor's
+        translation, tilt and gyroscopic nutation), which are not reported."""
         n = K.shape[0]
-        kept, whirls, rigid = [], [], 0
-        for r in np.argsort(lam.imag):
-            if lam[r].imag <= OSCILLATING * abs(lam[r]):  # each oscillating pair once; an overdamped mode has none
-                continue
-            q = V[:n, r]
-            if np.real(np.conj(q) @ K @ q) < RIGID_RATIO * self._scale * np.real(np.conj(q) @ self._M @ q):
-                rigid += 1
-                continue
-            kept.append(r)
-            whirl = whirl_sense(self._T @ q)
-            whirls.append(whirl if spinning or whirl == WHIRL_AXIAL else WHIRL_NONE)
-            if len(kept) == count:
-                break
-        return kept, whirls, rigid
+        order = np.argsort(lam.imag)
+        order = order[lam.imag[order] > OSCILLATING * np.abs(lam[order])]  # each pair once; overdamped ones out
+        Q = V[:n, order]
+        strain = np.real(np.sum(Q.conj() * (K @ Q), axis=0))
+        kinetic = np.real(np.sum(Q.conj() * (self._M @ Q), axis=0))
+        elastic = strain >= RIGID_RATIO * self._scale * kinetic
+        kept = order[elastic][:count]
+        shapes = self._T @ V[:n, kept]
+        whirls = [whirl_sense(shapes[:, j]) for j in range(kept.size)]
+        whirls = [w if spinning or w == WHIRL_AXIAL else WHIRL_NONE for w in whirls]
+        return kept, whirls, int(np.count_nonzero(~elastic))
 
     # -------------------------------------------------------------------------------------- outputs
     def evaluate(self, omega, K_seats, C_seats=None, critical_speeds=True):
@@ -214,10 +211,10 @@ class ShaftModel:
             return math.nan, math.nan
         return float(u[self._tip, 0]), float(u[self._tip + 2, 1])
 
-    def receptance(self, lam, V, frequencies):
+    def receptance(self, lam, V, frequencies, residues=None):
         """Tool tip's H_xx (m/N, complex) at the frequencies (rad/s) from the state-space modes (lam, V):
-        H(w) = sum_r V[tip, r] c_r / (i w - lambda_r), c = V^-1 (0, M^-1 e_tip)."""
-        residues = self._residues(V)
+        H(w) = sum_r V[tip, r] c_r / (i w - lambda_r), c = V^-1 (0, M^-1 e_tip) (residues: these products, if known)."""
+        residues = self._residues(V) if residues is None else residues
         w = np.asarray(frequencies, dtype=float)
         return (residues[None, :] / (1j * w[:, None] - lam[None, :])).sum(axis=1)
 
@@ -228,23 +225,26 @@ class ShaftModel:
         return V[self._tip, :] * np.linalg.solve(V, b.astype(V.dtype))
 
     def _peak_receptance(self, lam, V, kept):
-        best, where = 0.0, math.nan
-        residues = np.abs(self._residues(V))
-        for r in kept:
-            wd, sigma = lam[r].imag, abs(lam[r].real)
-            if residues[r] <= RESIDUE_FLOOR * residues.max():
-                continue  # a mode the tool tip's x force does not excite (axial, or whirling in y only)
-            if sigma <= 1e-12 * wd:
-                return math.inf, wd / (2.0 * math.pi)
-            grid = wd + np.linspace(-3.0, 3.0, 121) * sigma
-            for _ in range(2):  # a coarse pass over +-3 sigma, then +-1 step around its best point
-                H = np.abs(self.receptance(lam, V, grid))
-                k = int(np.argmax(H))
-                step = grid[1] - grid[0]
-                grid = grid[k] + np.linspace(-1.0, 1.0, 41) * step
-            if H[k] > best:
-                best, where = float(H[k]), grid[20] / (2.0 * math.pi)
-        return best, where
+        """(largest |H_xx|, its frequency in Hz) over +-3 half-power widths of each reported mode the tool tip's x
+        force excites, on a grid of 121 points per mode and then of 41 points over +-1 step about the best."""
+        residues = self._residues(V)
+        size = np.abs(residues)
+        modes = [r for r in kept if size[r] > RESIDUE_FLOOR * size.max()]  # not axial, not whirling in y only
+        if not modes:
+            return math.nan, math.nan
+        wd, sigma = lam[modes].imag, np.abs(lam[modes].real)
+        if np.any(sigma <= 1e-12 * wd):
+            r = int(np.argmax(sigma <= 1e-12 * wd))
+            return math.inf, wd[r] / (2.0 * math.pi)
+        grid = wd[:, None] + np.linspace(-3.0, 3.0, 121)[None, :] * sigma[:, None]
+        for _ in range(2):
+            H = np.abs(self.receptance(lam, V, grid.ravel(), residues)).reshape(grid.shape)
+            best = np.argmax(H, axis=1)
+            step = grid[:, 1] - grid[:, 0]
+            centre = grid[np.arange(len(modes)), best]
+            grid = centre[:, None] + np.linspace(-1.0, 1.0, 41)[None, :] * step[:, None]
+        m = int(np.argmax(H[np.arange(len(modes)), best]))
+        return float(H[m, best[m]]), float(centre[m] / (2.0 * math.pi))
 
     def critical_speeds(self, K_seats, C_seats=None, count=2):
         """The first `count` synchronous forward critical speeds (rad/s): speeds Omega at which a forward whirl
