@@ -10,6 +10,8 @@ interface, receptance from the modes against a direct solve) they agree to round
 """
 
 import math
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -107,3 +109,23 @@ def test_a_seat_between_nodes_is_refused(tmp_path):
     path = sb.shaft_file(tmp_path / "off.toml", [(1.0, 0.05, 0.0, 4)], seats=(0.3,), tip=0.0)
     with pytest.raises(ParameterError, match=r"seat 'seat\[0\]' at z = 0.3 m is on no node \(nearest node at 0.25 m\)"):
         ShaftModel(path)
+
+
+CHILD = """
+import sys
+sys.modules["scipy"] = None  # as in a host without scipy: importing it raises ImportError (numba copes)
+sys.modules["ross"] = None  # a test-only dependency: the model must not need it
+import numpy as np
+from spindle.shaft import ShaftModel
+out = ShaftModel().evaluate(1000.0, np.array([np.diag([2e8, 2e8, 5e7, 0.0, 0.0])] * 2))
+print(out["frequencies"][0], out["critical_speeds"][0])
+"""
+
+
+def test_the_model_runs_without_scipy_and_ross():
+    """An FMU host may have numpy and numba only (docs/fmu_runtime.md): the whole call, kernels compiled or loaded
+    from the cache included, runs with scipy and ross unimportable."""
+    proc = subprocess.run([sys.executable, "-c", CHILD], capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    frequency, critical = (float(v) for v in proc.stdout.split())
+    assert 400.0 < frequency < 500.0 and critical > 2.0 * math.pi * frequency
