@@ -49,7 +49,12 @@ JIT_OPTIONS = {"cache": True, "fastmath": False}
 
 _ROOT = Path(__file__).resolve().parent.parent
 # every module that defines kernels (the FMU bundles carry the ones they need; absent ones are skipped)
-KERNEL_SOURCES = ("bearing_fmu/kernels/**/*.py", "bearing_fmu_common/*.py", "spindle/thermal/network.py")
+KERNEL_SOURCES = (
+    "bearing_fmu/kernels/**/*.py",
+    "bearing_fmu_common/*.py",
+    "spindle/thermal/network.py",
+    "spindle/shaft/beam.py",
+)
 PORTABLE_CPU = "generic"  # the CPU name of the compiled code shipped in the FMUs
 TARGET_FILE = "target.json"  # in a compiled-code directory: numba's codegen description it was built with
 

@@ -11,8 +11,9 @@ A few small helpers have no twin of their own: COVERED_THROUGH names, for each, 
 (checked: the caller's source names the helper, or the caller was built around it, as jones_harris'
 line searches are), on a chain that ends at a twinned kernel, and says why that comparison covers it.
 A package of kernels (kernels/ball_dynamics/) has one twin module per kernel module it twins.
-The walk covers every numba dispatcher defined in bearing_fmu.kernels (packages included), bearing_fmu_common and
-spindle.thermal.network, and fails naming each kernel without a twin or without a comparison test.
+The walk covers every numba dispatcher defined in bearing_fmu.kernels (packages included), bearing_fmu_common,
+spindle.thermal.network and spindle.shaft.beam, and fails naming each kernel without a twin or without a comparison
+test.
 """
 
 import ast
@@ -31,7 +32,7 @@ TESTS = Path(__file__).resolve().parent.parent
 KERNEL_MODULES = (
     [m.name for m in pkgutil.walk_packages(bearing_fmu.kernels.__path__, "bearing_fmu.kernels.")]
     + [f"bearing_fmu_common.{m.name}" for m in pkgutil.iter_modules(bearing_fmu_common.__path__)]
-    + ["spindle.thermal.network"]
+    + ["spindle.thermal.network", "spindle.shaft.beam"]
 )
 JH = "bearing_fmu.kernels.jones_harris."
 ES = "bearing_fmu.kernels.ehl_solver."

@@ -140,10 +140,11 @@ LAYERS = (
     ("fidelity registry", ("bearing_fmu.fidelities",)),
     ("models (facades, declarations, scenes, parameter files)", (
         "bearing_fmu", "bearing_fmu.models", "bearing_fmu.scene", "bearing_fmu.params", "spindle.thermal",
+        "spindle.shaft",
         "bearing_fmu_common", "bearing_fmu_common.paramfile", "bearing_fmu_common.bearing_file",
         "bearing_fmu_common.variables",
     )),
-    ("kernels", ("bearing_fmu.kernels", "spindle.thermal.network", "bearing_fmu_common.jit",
+    ("kernels", ("bearing_fmu.kernels", "spindle.thermal.network", "spindle.shaft.beam", "bearing_fmu_common.jit",
                  "bearing_fmu_common.layout")),
 )  # fmt: skip
 

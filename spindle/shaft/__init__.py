@@ -1,0 +1,6 @@
+"""Rotor finite-element model of a spindle shaft (docs/shaft.md): Timoshenko beam elements with the axial bar,
+rigid disks and bearing seats taking a bearing's 5x5 stiffness and damping."""
+
+from .model import ShaftInputError, ShaftModel, shaft_path
+
+__all__ = ["ShaftInputError", "ShaftModel", "shaft_path"]

@@ -1,0 +1,280 @@
+"""ShaftModel: facade of the rotor finite-element model of a spindle shaft (docs/shaft.md).
+
+Reads a shaft file (spindle.shaft.params), assembles the shaft's M, K and gyroscopic G once with the kernels of
+spindle.shaft.beam and reduces them once (Craig & Bampton 1968, AIAA J. 6, 1313-1319): the seat nodes and the
+tool-tip node keep their 5 physical degrees of freedom (the interface), the rest is represented by the lowest
+`modes` modes of the shaft clamped at the interface plus the interface's static constraint modes. A bearing's
+5x5 stiffness and damping then add to the reduced matrices directly, and a call (speed, seat matrices) solves
+a state-space eigenproblem of 2 (5 n_interface + modes) unknowns with numpy.linalg.eig: no scipy on this path
+(an FMU host may lack it). `modes=None` keeps every degree of freedom (no reduction).
+"""
+
+import math
+
+import numpy as np
+
+from bearing_fmu_common.variables import InputError
+
+from . import beam
+from .params import DEFAULT_SHAFT, read_shaft, shaft_path
+
+N_FREQUENCIES = 6
+MODES_DEFAULT = 12
+OMEGA_MAX = 1.0e4  # rad/s (95 500 rpm): above any spindle's speed
+SEAT_MATRIX_MAX = 1.0e13  # N/m, N/rad, N.m/rad or N.s/m: a bearing's entries are orders of magnitude below
+RESIDUE_FLOOR = 1e-9  # share of the largest modal residue of H_xx below which a mode does not show in it
+RIGID_RATIO = 1.0e-8  # a mode whose strain-energy frequency^2 is below this share of the model's largest is rigid
+# |mean sense| below which a shape is planar: anisotropic seats make elliptic orbits, whose sense still counts
+PLANAR = 1.0e-3
+OSCILLATING = 1e-9  # Im lambda / |lambda| above which a root is an oscillating mode, not a real (overdamped) root
+WHIRL_FORWARD, WHIRL_NONE, WHIRL_BACKWARD, WHIRL_AXIAL = 1, 0, -1, 2
+
+__all__ = ["ShaftInputError", "ShaftModel", "shaft_path", "DEFAULT_SHAFT"]
+
+
+class ShaftInputError(InputError):
+    """An input of the shaft model is outside its allowed range (the message names it and the range)."""
+
+
+def full_matrices(shaft):
+    """(K, M, G) of the whole shaft without seats (N = 5 n_nodes square; G per unit speed), shear coefficients
+    filled in from each element's Poisson's ratio."""
+    elements = shaft.elements.copy()
+    for e in range(elements.shape[0]):
+        elements[e, 3] = beam.shear_coefficient(shaft.poisson[e], elements[e, 5], elements[e, 6])
+    n = beam.NDOF * shaft.z.size
+    K, M, G = np.empty((n, n)), np.empty((n, n)), np.empty((n, n))
+    beam.assemble_shaft(elements, K, M, G)
+    beam.add_disks(shaft.disks, M, G)
+    return K, M, G
+
+
+def craig_bampton(K, M, boundary, modes):
+    """Basis T (N x (n_b + modes)) of the Craig-Bampton reduction: the boundary dofs first (identity on them,
+    their static constraint modes -K_ii^-1 K_ib inside), then the lowest `modes` fixed-interface modes
+    (mass-normalised); modes=None: the identity, boundary first, then the other dofs in order."""
+    n = K.shape[0]
+    inner = np.setdiff1d(np.arange(n), boundary)
+    if modes is None:
+        order = np.concatenate([boundary, inner])
+        return np.eye(n)[:, order]
+    modes = min(modes, inner.size)
+    Kii, Kib, Mii = K[np.ix_(inner, inner)], K[np.ix_(inner, boundary)], M[np.ix_(inner, inner)]
+    Lc = np.linalg.cholesky(Mii)
+    A = np.linalg.solve(Lc, np.linalg.solve(Lc, Kii).T).T  # L^-1 K L^-T, symmetric
+    w2, Y = np.linalg.eigh(0.5 * (A + A.T))
+    Phi = np.linalg.solve(Lc.T, Y[:, :modes])
+    T = np.zeros((n, boundary.size + modes))
+    T[boundary, np.arange(boundary.size)] = 1.0
+    T[np.ix_(inner, np.arange(boundary.size))] = -np.linalg.solve(Kii, Kib)
+    T[np.ix_(inner, boundary.size + np.arange(modes))] = Phi
+    return T
+
+
+def whirl_sense(phys):
+    """Whirl of a complex mode shape over the full dofs (e^{lambda t}, Im lambda > 0): +1 forward (the orbit of
+    the translations turns with the spin, +z), -1 backward, 0 none (a planar shape of a degenerate pair at rest),
+    2 axial (the axial translations outweigh the radial ones); the mean of -2 Im(conj(x) y) / (|x|^2 + |y|^2) over
+    the nodes, weighted by amplitude, decides (+1 for a circular forward orbit, -1 backward, 0 planar). At rest
+    the facade reports no whirl: a pair of an axisymmetric shaft is degenerate, any combination of its shapes
+    (planar, forward, backward) is a mode."""
+    x, y, z = phys[0::5], phys[1::5], phys[2::5]
+    radial = np.sum(np.abs(x) ** 2 + np.abs(y) ** 2)
+    if radial <= np.sum(np.abs(z) ** 2):
+        return WHIRL_AXIAL
+    s = -2.0 * np.sum(np.imag(np.conj(x) * y)) / radial
+    return WHIRL_FORWARD if s > PLANAR else WHIRL_BACKWARD if s < -PLANAR else WHIRL_NONE
+
+
+class ShaftModel:
+    """Rotor finite-element model of a shaft file (catalogue name or path), reduced once to `modes` fixed-interface
+    modes plus the seat and tool-tip nodes (None: no reduction). `evaluate(omega, K_seats, C_seats)` gives the
+    modal outputs at speed omega (rad/s) with the bearings' 5x5 matrices at the seats, in the file's seat order."""
+
+    def __init__(self, shaft=DEFAULT_SHAFT, modes=MODES_DEFAULT):
+        self.shaft = read_shaft(shaft)
+        K, M, G = full_matrices(self.shaft)
+        sf = self.shaft
+        interface = list(sf.seat_nodes) + ([sf.tip_node] if sf.tip_node not in sf.seat_nodes else [])
+        boundary = np.array([beam.NDOF * node + i for node in interface for i in range(beam.NDOF)])
+        self._T = craig_bampton(K, M, boundary, modes)
+        self._K, self._M, self._G = (self._T.T @ A @ self._T for A in (K, M, G))
+        self._Minv = np.linalg.inv(self._M)
+        seat_dofs = [[beam.NDOF * k + i for i in range(beam.NDOF)] for k in range(len(sf.seat_nodes))]
+        self._seat_dofs = np.array(seat_dofs, dtype=np.int64).reshape(-1, beam.NDOF)
+        self._tip = beam.NDOF * interface.index(sf.tip_node)
+        self._scale = float(np.max(np.abs(np.diag(self._Minv @ self._K))))
+        self.n_dofs = self._K.shape[0]
+
+    # --------------------------------------------------------------------------------------- inputs
+    def _seat_matrices(self, name, value):
+        n = len(self.shaft.seat_nodes)
+        if value is None:
+            return np.zeros((n, beam.NDOF, beam.NDOF))
+        A = np.asarray(value, dtype=float)
+        if A.shape != (n, beam.NDOF, beam.NDOF):
+            raise ShaftInputError(f"{name}: shape {A.shape}, expected ({n}, 5, 5) (seats {self.shaft.seat_names})")
+        for s, i, j in zip(*np.nonzero(~(np.abs(A) <= SEAT_MATRIX_MAX)), strict=True):
+            raise ShaftInputError(
+                f"{name}[{s}][{i},{j}] = {A[s, i, j]} is outside the allowed range [-{SEAT_MATRIX_MAX:g}, "
+                f"{SEAT_MATRIX_MAX:g}] (seat '{self.shaft.seat_names[s]}')"
+            )
+        for s, i in zip(*np.nonzero(np.diagonal(A, axis1=1, axis2=2) < 0.0), strict=True):
+            raise ShaftInputError(
+                f"{name}[{s}][{i},{i}] = {A[s, i, i]} is outside the allowed range [0, {SEAT_MATRIX_MAX:g}] "
+                f"(a diagonal entry; seat '{self.shaft.seat_names[s]}')"
+            )
+        return A
+
+    def _check_omega(self, omega):
+        omega = float(omega)
+        if not 0.0 <= omega <= OMEGA_MAX:
+            raise ShaftInputError(f"omega = {omega} rad/s is outside the allowed range [0, {OMEGA_MAX:g}]")
+        return omega
+
+    def matrices(self, K_seats, C_seats=None):
+        """(K, C) of the reduced model with the seats' stiffness and damping added."""
+        K = self._K.copy()
+        C = np.zeros_like(K)
+        beam.add_seats(self._seat_dofs, self._seat_matrices("K_seats", K_seats), K)
+        beam.add_seats(self._seat_dofs, self._seat_matrices("C_seats", C_seats), C)
+        return K, C
+
+    # ---------------------------------------------------------------------------------------- modes
+    def _state_eig(self, K, D):
+        """Eigenvalues and vectors of the first-order form of M q'' + D q' + K q = 0."""
+        n = K.shape[0]
+        A = np.zeros((2 * n, 2 * n), dtype=np.result_type(D, K))
+        A[:n, n:] = np.eye(n)
+        A[n:, :n] = -self._Minv @ K
+        A[n:, n:] = -self._Minv @ D
+        return np.linalg.eig(A)
+
+    def _elastic(self, lam, V, K, count, spinning):
+        """Indices (by rising Im lambda) of the first `count` elastic modes with Im lambda > 0, their whirl, and
+        the number of rigid-body modes among the oscillating ones (a shape without strain energy: the free rotor's
+        translation, tilt and gyroscopic nutation), which are not reported."""
+        n = K.shape[0]
+        order = np.argsort(lam.imag)
+        order = order[lam.imag[order] > OSCILLATING * np.abs(lam[order])]  # each pair once; overdamped ones out
+        Q = V[:n, order]
+        strain = np.real(np.sum(Q.conj() * (K @ Q), axis=0))
+        kinetic = np.real(np.sum(Q.conj() * (self._M @ Q), axis=0))
+        elastic = strain >= RIGID_RATIO * self._scale * kinetic
+        kept = order[elastic][:count]
+        shapes = self._T @ V[:n, kept]
+        whirls = [whirl_sense(shapes[:, j]) for j in range(kept.size)]
+        whirls = [w if spinning or w == WHIRL_AXIAL else WHIRL_NONE for w in whirls]
+        return kept, whirls, int(np.count_nonzero(~elastic))
+
+    # -------------------------------------------------------------------------------------- outputs
+    def evaluate(self, omega, K_seats, C_seats=None, critical_speeds=True):
+        """Outputs at speed omega (rad/s) with the seats' 5x5 stiffness K_seats (N/m, N/rad, N.m/m, N.m/rad) and
+        damping C_seats (N.s/m, ...; None: undamped), in the seat order of the shaft file:
+        - frequencies (Hz): the first six damped natural frequencies Im(lambda) / 2 pi of the elastic modes,
+          whirl: +1 forward, -1 backward, 0 none (at rest, or a planar shape), 2 axial;
+          damping_ratios -Re(lambda) / |lambda|;
+          NaN where the model has fewer elastic modes; rigid_modes: rigid-body modes passed over;
+        - compliance_radial, compliance_axial (m/N): static x and z deflection of the tool tip under a unit
+          force there (NaN without supports against that motion);
+        - peak_compliance (m/N), peak_frequency (Hz): the largest |H_xx(omega)| of the tool tip's receptance and
+          where it is, searched about each reported mode (inf for an undamped mode);
+        - critical_speeds (rad/s): the first two synchronous forward critical speeds (critical_speeds())."""
+        omega = self._check_omega(omega)
+        K, C = self.matrices(K_seats, C_seats)
+        lam, V = self._state_eig(K, C + omega * self._G)
+        kept, whirls, rigid = self._elastic(lam, V, K, N_FREQUENCIES, omega > 0.0)
+        out = {
+            "frequencies": np.full(N_FREQUENCIES, math.nan),
+            "whirl": np.zeros(N_FREQUENCIES, dtype=int),
+            "damping_ratios": np.full(N_FREQUENCIES, math.nan),
+            "rigid_modes": rigid,
+        }
+        out["frequencies"][: len(kept)] = lam[kept].imag / (2.0 * math.pi)
+        out["whirl"][: len(kept)] = whirls
+        out["damping_ratios"][: len(kept)] = -lam[kept].real / np.abs(lam[kept])
+        out["compliance_radial"], out["compliance_axial"] = self._static_compliance(K, rigid)
+        out["peak_compliance"], out["peak_frequency"] = self._peak_receptance(lam, V, kept)
+        if critical_speeds:
+            out["critical_speeds"] = self._critical_speeds(K, C, 2)
+        return out
+
+    def _static_compliance(self, K, rigid):
+        if rigid:
+            return math.nan, math.nan
+        try:
+            F = np.zeros((K.shape[0], 2))
+            F[self._tip, 0] = 1.0
+            F[self._tip + 2, 1] = 1.0
+            u = np.linalg.solve(K, F)
+        except np.linalg.LinAlgError:
+            return math.nan, math.nan
+        return float(u[self._tip, 0]), float(u[self._tip + 2, 1])
+
+    def receptance(self, lam, V, frequencies, residues=None):
+        """Tool tip's H_xx (m/N, complex) at the frequencies (rad/s) from the state-space modes (lam, V):
+        H(w) = sum_r V[tip, r] c_r / (i w - lambda_r), c = V^-1 (0, M^-1 e_tip) (residues: these products, if known)."""
+        residues = self._residues(V) if residues is None else residues
+        w = np.asarray(frequencies, dtype=float)
+        return (residues[None, :] / (1j * w[:, None] - lam[None, :])).sum(axis=1)
+
+    def _residues(self, V):
+        n = self._K.shape[0]
+        b = np.zeros(2 * n)
+        b[n:] = self._Minv[:, self._tip]
+        return V[self._tip, :] * np.linalg.solve(V, b.astype(V.dtype))
+
+    def _peak_receptance(self, lam, V, kept):
+        """(largest |H_xx|, its frequency in Hz) over +-3 half-power widths of each reported mode the tool tip's x
+        force excites, on a grid of 121 points per mode and then of 41 points over +-1 step about the best."""
+        residues = self._residues(V)
+        size = np.abs(residues)
+        modes = [r for r in kept if size[r] > RESIDUE_FLOOR * size.max()]  # not axial, not whirling in y only
+        if not modes:
+            return math.nan, math.nan
+        wd, sigma = lam[modes].imag, np.abs(lam[modes].real)
+        if np.any(sigma <= 1e-12 * wd):
+            r = int(np.argmax(sigma <= 1e-12 * wd))
+            return math.inf, wd[r] / (2.0 * math.pi)
+        grid = wd[:, None] + np.linspace(-3.0, 3.0, 121)[None, :] * sigma[:, None]
+        for _ in range(2):
+            H = np.abs(self.receptance(lam, V, grid.ravel(), residues)).reshape(grid.shape)
+            best = np.argmax(H, axis=1)
+            step = grid[:, 1] - grid[:, 0]
+            centre = grid[np.arange(len(modes)), best]
+            grid = centre[:, None] + np.linspace(-1.0, 1.0, 41)[None, :] * step[:, None]
+        m = int(np.argmax(H[np.arange(len(modes)), best]))
+        return float(H[m, best[m]]), float(centre[m] / (2.0 * math.pi))
+
+    def critical_speeds(self, K_seats, C_seats=None, count=2):
+        """The first `count` synchronous forward critical speeds (rad/s): speeds Omega at which a forward whirl
+        frequency equals Omega. With Omega = omega and q ~ e^{lambda t}, lambda = i omega, the gyroscopic term
+        Omega G q' is -i lambda^2 G q, so the critical speeds are the eigenvalues of the quadratic problem
+        (lambda^2 (M - i G) + lambda C + K) q = 0 with Im lambda > 0 and a forward whirling shape: one complex
+        eigen-solution instead of an iteration on the speed (Friswell et al. 2010, ch. 3 and 5: the synchronous
+        critical speed map)."""
+        K, C = self.matrices(K_seats, C_seats)
+        return self._critical_speeds(K, C, count)
+
+    def _critical_speeds(self, K, C, count):
+        n = K.shape[0]
+        Ms_inv = np.linalg.inv(self._M - 1j * self._G)
+        A = np.zeros((2 * n, 2 * n), dtype=complex)
+        A[:n, n:] = np.eye(n)
+        A[n:, :n] = -Ms_inv @ K
+        A[n:, n:] = -Ms_inv @ C
+        lam, V = np.linalg.eig(A)
+        speeds = []
+        for r in np.argsort(lam.imag):
+            # a critical speed whirls (Im lambda > |Re lambda|); a real root e^{lambda t} of a disk with I_p > I_d
+            # is a divergence of the synchronous problem, not a speed
+            if lam[r].imag <= abs(lam[r].real):
+                continue
+            q = V[:n, r]
+            if np.real(np.conj(q) @ K @ q) < RIGID_RATIO * self._scale * np.real(np.conj(q) @ self._M @ q):
+                continue
+            if whirl_sense(self._T @ q) == WHIRL_FORWARD:
+                speeds.append(lam[r].imag)
+                if len(speeds) == count:
+                    break
+        return np.array(speeds + [math.nan] * (count - len(speeds)))

@@ -1,0 +1,145 @@
+"""Shaft parameter files (TOML, docs/shaft.md "Parameter file"): sections, materials, disks, seats, tool tip.
+
+Every physical value is an inline table { value, unit, source [, estimated] } (bearing_fmu_common.paramfile).
+Positions are axial coordinates z (m) from the shaft's first end (the nose); nodes are put at the ends of the
+sections and at their equal subdivisions, and every disk, seat and the tool tip must sit on a node.
+"""
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from bearing_fmu_common.paramfile import ParameterError, Spec, checked_value, read_toml, resolve_toml
+
+CATALOGUE = Path(__file__).resolve().parent / "params"
+DEFAULT_SHAFT = "rabreau_b7214c"
+NODE_TOLERANCE = 1e-9  # m: a disk, seat or tool tip this close to a node is on it
+ELEMENTS_MAX = 200  # per section: beyond it the eigen-solution, not the element, limits the accuracy
+
+LENGTH = Spec("m", 0.0, 10.0, low_open=True)
+DIAMETER = Spec("m", 0.0, 2.0, low_open=True)
+BORE = Spec("m", 0.0, 2.0)
+POSITION = Spec("m", 0.0, 10.0)
+MATERIAL = {
+    "youngs_modulus": Spec("Pa", 1e9, 1e12),
+    "density": Spec("kg/m^3", 100.0, 30000.0),
+}
+POISSON = Spec("-", 0.0, 0.5, low_open=True)
+SHEAR_MODULUS = Spec("Pa", 1e8, 1e12)
+DISK = {
+    "mass": Spec("kg", 0.0, 1e4),
+    "polar_inertia": Spec("kg.m^2", 0.0, 1e3),
+    "diametral_inertia": Spec("kg.m^2", 0.0, 1e3),
+}
+
+
+@dataclass(frozen=True)
+class ShaftFile:
+    """A shaft file packed for the kernels: node positions (m), element rows (E, G, rho, kappa placeholder 0,
+    L, outer and inner diameter; the facade fills kappa), Poisson's ratios per element, disk rows (node, mass,
+    polar and diametral inertia), seat nodes and names, and the tool-tip node."""
+
+    path: Path
+    name: str
+    z: np.ndarray
+    elements: np.ndarray
+    poisson: np.ndarray
+    disks: np.ndarray
+    disk_names: tuple
+    seat_nodes: tuple
+    seat_names: tuple
+    tip_node: int
+
+
+def shaft_path(name_or_path):
+    """Path of a shaft TOML file from its catalogue name (spindle/shaft/params/) or its path."""
+    return resolve_toml(name_or_path, CATALOGUE, "shaft")
+
+
+def _materials(doc, path):
+    materials = {}
+    for i, entry in enumerate(doc.get("material", [])):
+        name = entry.get("name", f"material[{i}]")
+        values = {key: checked_value(entry, key, spec, path) for key, spec in MATERIAL.items()}
+        nu = checked_value(entry, "poisson_ratio", POISSON, path, required=False)
+        G = checked_value(entry, "shear_modulus", SHEAR_MODULUS, path, required=False)
+        if (nu is None) == (G is None):
+            raise ParameterError(f"{path}: material '{name}' needs exactly one of poisson_ratio and shear_modulus")
+        if nu is None:
+            nu = values["youngs_modulus"] / (2.0 * G) - 1.0
+            if not 0.0 < nu <= 0.5:
+                raise ParameterError(f"{path}: material '{name}': E / (2 G) - 1 = {nu} is outside ]0, 0.5]")
+        else:
+            G = values["youngs_modulus"] / (2.0 * (1.0 + nu))
+        materials[name] = (values["youngs_modulus"], G, values["density"], nu)
+    return materials
+
+
+def _sections(doc, path, materials):
+    """(node positions, element rows, Poisson's ratio per element) from the [[section]] list."""
+    z, rows, nus = [0.0], [], []
+    if not doc.get("section"):
+        raise ParameterError(f"{path}: no [[section]]: a shaft needs at least one section")
+    for i, sec in enumerate(doc["section"]):
+        where = f"section[{i}] ('{sec.get('name', '')}')"
+        length = checked_value(sec, "length", LENGTH, path)
+        d_o = checked_value(sec, "outer_diameter", DIAMETER, path)
+        d_i = checked_value(sec, "inner_diameter", BORE, path)
+        n = sec.get("elements", 1)
+        if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= ELEMENTS_MAX:
+            raise ParameterError(f"{path}: {where}: elements = {n!r} must be an integer in [1, {ELEMENTS_MAX}]")
+        if d_i >= d_o:
+            raise ParameterError(f"{path}: {where}: inner_diameter {d_i} m must be below outer_diameter {d_o} m")
+        if sec.get("material") not in materials:
+            raise ParameterError(f"{path}: {where}: material {sec.get('material')!r} is not one of {sorted(materials)}")
+        E, G, rho, nu = materials[sec["material"]]
+        for _ in range(n):
+            z.append(z[-1] + length / n)
+            rows.append((E, G, rho, 0.0, length / n, d_o, d_i))
+            nus.append(nu)
+    return np.array(z), np.array(rows), np.array(nus)
+
+
+def _node_at(z, position, what, path):
+    node = int(np.argmin(np.abs(z - position)))
+    if abs(z[node] - position) > NODE_TOLERANCE:
+        raise ParameterError(
+            f"{path}: {what} at z = {position} m is on no node (nearest node at {z[node]:.6g} m): "
+            "subdivide the sections so that a node falls on it"
+        )
+    return node
+
+
+def read_shaft(name_or_path):
+    """The shaft file (catalogue name or path) read, checked and packed (ShaftFile)."""
+    path = shaft_path(name_or_path)
+    doc = read_toml(path)
+    materials = _materials(doc, path)
+    z, elements, poisson = _sections(doc, path, materials)
+    disks, disk_names = [], []
+    for i, d in enumerate(doc.get("disk", [])):
+        name = d.get("name", f"disk[{i}]")
+        node = _node_at(z, checked_value(d, "position", POSITION, path), f"disk '{name}'", path)
+        disks.append((node, *(checked_value(d, key, spec, path) for key, spec in DISK.items())))
+        disk_names.append(name)
+    seat_nodes, seat_names = [], []
+    for i, s in enumerate(doc.get("seat", [])):
+        name = s.get("name", f"seat[{i}]")
+        seat_nodes.append(_node_at(z, checked_value(s, "position", POSITION, path), f"seat '{name}'", path))
+        seat_names.append(name)
+    if len(set(seat_nodes)) != len(seat_nodes):
+        raise ParameterError(f"{path}: two seats on one node ({seat_names}): give one seat per bearing node")
+    tip = _node_at(z, checked_value(doc, "tool_tip.position", POSITION, path), "tool_tip", path)
+    return ShaftFile(
+        path=path,
+        name=doc.get("meta", {}).get("name", path.stem),
+        z=z,
+        elements=elements,
+        poisson=poisson,
+        disks=np.array(disks, dtype=float).reshape(-1, 4),
+        disk_names=tuple(disk_names),
+        seat_nodes=tuple(seat_nodes),
+        seat_names=tuple(seat_names),
+        tip_node=tip,
+    )
