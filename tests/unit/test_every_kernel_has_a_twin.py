@@ -39,7 +39,22 @@ BD = "bearing_fmu.kernels.ball_dynamics."
 # helper -> (twinned caller, why the caller's comparison covers it)
 BT = "bearing_fmu.kernels.ball_traction."
 BC = "bearing_fmu.kernels.ball_coupled_newton."
+RB = "bearing_fmu.kernels.radial_bearing."
+CO = "bearing_fmu.kernels.contact_outputs."
+EC = "bearing_fmu.kernels.ehl_contact."
 COVERED_THROUGH = {
+    EC + "oil_state": (CO + "contact_outputs", "the oil's state at its temperature, eta and xi compared as outputs"),
+    EC + "lubricated_contact": (
+        CO + "_contact",
+        "one contact's Hertz, film, film factors, Lambda and capacitance: every contact of both static fidelities "
+        "compared (the analytic's through _race_contact)",
+    ),
+    EC + "contact_method": (CO + "contact_outputs", "the contact constants, read from the parameter array"),
+    CO + "_start_sums": (CO + "contact_outputs", "the starting values of the compared sums and extremes"),
+    CO + "_contact": (CO + "contact_outputs", "one contact's outputs, every contact's per_contact row compared"),
+    CO + "_contact_loss": (CO + "_contact", "one loaded contact's loss, compared per contact and summed"),
+    RB + "_ball_contacts": (RB + "analytic_bearing", "every ball's contacts and the races' summaries, all compared"),
+    RB + "_race_contact": (RB + "_ball_contacts", "one contact into the ball rows and summaries, both races compared"),
     BT + "_surfaces": (BT + "_contact", "one contact's sliding, spin and entrainment speeds"),
     BT + "_contact": (BT + "_residual", "one contact's forces and moments, both contacts compared"),
     BT + "_residual": (BT + "traction_eval", "the residuals with the contacts' terms given"),
