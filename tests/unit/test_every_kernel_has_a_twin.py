@@ -90,6 +90,7 @@ COVERED_THROUGH = {
     ),
     BC + "_evaluate": (BC + "coupled_newton", "its residuals, and the Jacobian checked against central differences"),
     BC + "ball_contacts": (JH + "_ball_eval", "a ball's contact loads and directions at its position"),
+    BC + "hertz_load": (BC + "ball_contacts", "one contact's load and its derivative"),
     BC + "_norm6": (BC + "coupled_newton", "the residual norm of the line search"),
     BC + "coupled_work": (JH + "traction_work", "the work arrays of the coupled Newton"),
     JH + "_traction_grad": (JH + "_ball_eval", "the traction kinematics' terms, as _kin_grad's for a hypothesis"),
