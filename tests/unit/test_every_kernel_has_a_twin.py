@@ -43,6 +43,10 @@ RB = "bearing_fmu.kernels.radial_bearing."
 CO = "bearing_fmu.kernels.contact_outputs."
 EC = "bearing_fmu.kernels.ehl_contact."
 COVERED_THROUGH = {
+    "bearing_fmu.kernels.lubricant.wlf_constants": (
+        "bearing_fmu.kernels.lubricant.lubricant_state",
+        "the WLF constants of the array, read for the compared viscosity and pressure-viscosity coefficient",
+    ),
     EC + "oil_state": (CO + "contact_outputs", "the oil's state at its temperature, eta and xi compared as outputs"),
     EC + "lubricated_contact": (
         CO + "_contact",
