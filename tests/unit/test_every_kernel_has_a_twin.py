@@ -47,6 +47,10 @@ COVERED_THROUGH = {
         "bearing_fmu.kernels.lubricant.lubricant_state",
         "the WLF constants of the array, read for the compared viscosity and pressure-viscosity coefficient",
     ),
+    "bearing_fmu.kernels.roots.illinois_update": (
+        "bearing_fmu.kernels.lubrication.inlet_meniscus",
+        "the bracket of the compared root (also of capacitance._bound_crossing's)",
+    ),
     EC + "oil_state": (CO + "contact_outputs", "the oil's state at its temperature, eta and xi compared as outputs"),
     EC + "lubricated_contact": (
         CO + "_contact",
