@@ -171,6 +171,7 @@ COVERED_THROUGH = {
     JH + "_loads_line_search": (JH + "_damped_newton", "the damping of the last-resort Newton"),
     JH + "_newton_system": (JH + "_global_newton", "the scaled, regularised Newton system of both ring solvers"),
     JH + "_max_abs": (JH + "_global_newton", "the size of a Newton step, the small-step convergence test"),
+    JH + "_full_step": (JH + "_global_newton", "the five DOFs' step from the scaled step of the load-controlled ones"),
     JH + "_iteration_end": (JH + "_global_newton", "the convergence test of both ring solvers"),
     JH + "_dogleg": (JH + "_global_newton", "the step of the trust-region iteration whose result is compared"),
     JH + "_model_decrease": (JH + "_dogleg", "the quadratic model's decrease, two sums"),
