@@ -163,7 +163,7 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
     out[CO_XI] = xi
 
 
-@kernel
+@kernel(inline="always")  # see _contact
 def _start_sums(cp, out):
     """The starting values of the sums and extremes that the contacts add to (those of a submodel that is off are
     left untouched): 0, the minima of the races at inf, the film factors at 1 and the capacitance at the
@@ -184,7 +184,7 @@ def _start_sums(cp, out):
             out[k] = 1.0
 
 
-@kernel
+@kernel(inline="always")  # as kernels.ehl_contact's, for the time of a call per contact
 def _contact(j, race, balls, cp, oil, method, out, per_contact, losses):
     """Ball j's contact with race 0 (inner) or 1 (outer): its film, Lambda, loss and capacitance into per_contact,
     its share of the race's sums and extremes into out (the races' slots are neighbours: CO_<name>_I + race)."""
@@ -214,7 +214,7 @@ def _contact(j, race, balls, cp, oil, method, out, per_contact, losses):
         per_contact[PC_C_I + race, j] = C
 
 
-@kernel
+@kernel(inline="always")  # see _contact
 def _contact_loss(j, race, balls, cp, oil, method, shape, a, b, lam, phi_t, phi_c, out, losses):
     """The loss (W) of ball j's loaded contact with the race (Houpert's components, kernels.torque, into losses and
     summed into out[CO_P_EHL..]; with the sliding's) and the heat it gives its ring (out[CO_Q_*_RING])."""

@@ -21,12 +21,15 @@ from .hertz import hertz_contact
 from .lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
 from .lubrication import film_factors, temperature_viscosity_coefficient
 
+# The kernels here are inlined into their callers: called once per contact with their tuples (one holding the film
+# table, an array) they would cost the quasi-static contact outputs about 40 % more time.
+
 # where lubricated_contact's `method` holds the submodel switches its callers read as well
 METHOD_LUBRICATED = 3
 METHOD_CAPACITANCE = 7
 
 
-@kernel
+@kernel(inline="always")
 def oil_state(T_oil, lub, lubricated, thermal, capacitance):
     """(eta, xi, rho0, beta, K_cm) of the oil at T_oil (K): viscosity (Pa.s), pressure-viscosity coefficient (1/Pa),
     density (kg/m^3), temperature-viscosity coefficient (1/K; 0 unless the lubrication method (lubricated) heats the
@@ -40,7 +43,7 @@ def oil_state(T_oil, lub, lubricated, thermal, capacitance):
     return eta, xi, rho0, beta, K_cm
 
 
-@kernel
+@kernel(inline="always")
 def contact_method(arr, slots):
     """lubricated_contact's `method` from a fidelity's parameter array arr, in which slots gives the index of each of
     its constants (E_red, film formula code, the film correction table's first slot, lubricated, k_oil, thermal,
@@ -50,7 +53,7 @@ def contact_method(arr, slots):
             arr[capacitance] > 0.5, int(arr[pressure]), arr[h_floor], arr[oil_gap])  # fmt: skip
 
 
-@kernel
+@kernel(inline="always")
 def lubricated_contact(Q, u, race, shape, oil, method):
     """One contact under the load Q (N) at the entrainment speed u (m/s) of race 0 (inner) or 1 (outer).
 
