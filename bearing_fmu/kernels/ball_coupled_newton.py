@@ -31,6 +31,16 @@ _KIN_TOL = 1e-12  # the kinematics' residual relative to the contact loads (kern
 
 
 @kernel(inline="always")
+def hertz_load(delta, K):
+    """A point contact's load K delta^1.5 (N) at the approach delta (m; open at delta <= 0) and its derivative in
+    delta (N/m), of the Hertz constant K (N/m^1.5)."""
+    if delta > 0.0:
+        sq = math.sqrt(delta)
+        return K * delta * sq, 1.5 * K * sq
+    return 0.0, 0.0
+
+
+@kernel(inline="always")
 def ball_contacts(X1, X2, A1, A2, r_i, r_o, K_i, K_o):
     """The contacts of a ball at X = (X1, X2) (m) with the inner curvature centre at (A1, A2) (m): (L_o, so, co,
     L_i, si, ci, Q_o, dQ_o, Q_i, dQ_i): the distances to the outer and inner curvature centres (m), the sines and
@@ -42,18 +52,8 @@ def ball_contacts(X1, X2, A1, A2, r_i, r_o, K_i, K_o):
     L_i = math.hypot(V1, V2)
     d_o = L_o - r_o
     d_i = L_i - r_i
-    Q_o = 0.0
-    dQ_o = 0.0
-    if d_o > 0.0:
-        sq = math.sqrt(d_o)
-        Q_o = K_o * d_o * sq
-        dQ_o = 1.5 * K_o * sq
-    Q_i = 0.0
-    dQ_i = 0.0
-    if d_i > 0.0:
-        sq = math.sqrt(d_i)
-        Q_i = K_i * d_i * sq
-        dQ_i = 1.5 * K_i * sq
+    Q_o, dQ_o = hertz_load(d_o, K_o)
+    Q_i, dQ_i = hertz_load(d_i, K_i)
     return L_o, X1 / L_o, X2 / L_o, L_i, V1 / L_i, V2 / L_i, Q_o, dQ_o, Q_i, dQ_i
 
 

@@ -18,6 +18,7 @@ import math
 from bearing_fmu_common.jit import kernel
 
 from .lubricant import dowson_higginson_density, permittivity_from_density
+from .roots import illinois_update
 
 EPSILON_0 = 8.8541878128e-12  # F/m, vacuum permittivity (CODATA 2018)
 
@@ -151,16 +152,7 @@ def _bound_crossing(T0, q0, F0, m0, T1, m1, H, k2, s, last):
         T = (lo * m_hi - hi * m_lo) / (m_hi - m_lo)
         A, B, F, q = _gap_coefficients(T0, q0, T, F0, k2, s)
         m = (min(A, B) if last else max(A, B)) - H
-        if m >= 0.0:
-            hi, m_hi = T, m
-            if side == 1:
-                m_lo *= 0.5
-            side = 1
-        else:
-            lo, m_lo = T, m
-            if side == -1:
-                m_hi *= 0.5
-            side = -1
+        lo, m_lo, hi, m_hi, side = illinois_update(T, m, lo, m_lo, hi, m_hi, side)
     return T, A, B, F, q
 
 

@@ -16,13 +16,12 @@ import math
 from bearing_fmu_common.jit import kernel
 from bearing_fmu_common.layout import Layout
 
-from .capacitance import ball_capacitance, lubricated_contact_capacitance
-from .ehl import film_parameter, friction_coefficient, lubrication_regime
-from .film_correction import FT_SIZE, corrected_film_thickness
-from .hertz import hertz_contact
+from .capacitance import ball_capacitance
+from .ehl import friction_coefficient, lubrication_regime
+from .ehl_contact import METHOD_CAPACITANCE, METHOD_LUBRICATED, contact_method, lubricated_contact, oil_state
+from .film_correction import FT_SIZE
 from .jones_harris import BQ_P_SLIP_I, BQ_Q_I, BQ_Q_O, BQ_SPIN_I, BQ_SPIN_O, BQ_U_I, BQ_U_O, BQ_W_M
-from .lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
-from .lubrication import ball_drag_power, film_factors, mixture, rolling_force_factor, temperature_viscosity_coefficient
+from .lubrication import ball_drag_power, mixture, rolling_force_factor
 from .torque import TL_EHL, TL_SIZE, contact_losses
 
 # layout of the contact parameter array (built by the model)
@@ -93,9 +92,15 @@ CO_PHI_ISH_O = _CO_SLOTS.slot()  # ... outer contact
 CO_PHI_RS_I = _CO_SLOTS.slot()  # ... starvation (central film), inner
 CO_PHI_RS_O = _CO_SLOTS.slot()  # ... outer
 CO_SIZE = _CO_SLOTS.size
+
+# the slots of kernels.ehl_contact.contact_method's constants in the contact parameter array
+_METHOD_SLOTS = (CP_E_RED, CP_FILM, CP_FILM_TABLE, CP_LUBRICATED, CP_K_OIL, CP_THERMAL, CP_H_OIL, CP_CAPACITANCE,
+                 CP_PRESSURE, CP_H_FLOOR, CP_OIL_GAP)  # fmt: skip
 # sums started at 0 whatever the options, and those of the loss submodel (with its TL_SIZE components at CO_P_EHL)
 _SUMS = (CO_QMAX_I, CO_QMAX_O, CO_PMAX, CO_N_LOADED, CO_HC_I, CO_HC_O)
 _LOSS_SUMS = (CO_Q_INNER_RING, CO_Q_OUTER_RING)
+# the races' minima over their loaded contacts, started at inf (0 at the end on a race without any)
+_MINIMA = (CO_LAMBDA_I, CO_LAMBDA_O, CO_HMIN_I, CO_HMIN_O)
 
 # rows of the per-contact array
 _PC_SLOTS = Layout()
@@ -124,124 +129,22 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
     Z = balls.shape[1]
     capacitance = cp[CP_CAPACITANCE] > 0.5
     torque = cp[CP_TORQUE] > 0.5
-    lubricated = cp[CP_LUBRICATED] > 0.5
-    eta, xi, rho0 = lubricant_state(T_oil, lub)
-    beta = 0.0
-    if lubricated and cp[CP_THERMAL] > 0.5:
-        beta = temperature_viscosity_coefficient(T_oil, lub)
-    phi_t = 1.0
-    phi_c = 1.0
-    phi_m = 1.0
-    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF]) if capacitance else 0.0
-    E_red = cp[CP_E_RED]
-    film = int(cp[CP_FILM])
-    film_table = cp[CP_FILM_TABLE:]
-    lam_i = math.inf
-    lam_o = math.inf
-    hmin_i = math.inf
-    hmin_o = math.inf
-    loaded_i = False
-    loaded_o = False
-    for k in _SUMS:
-        out[k] = 0.0
-    if torque:
-        for k in _LOSS_SUMS:
-            out[k] = 0.0
-        for t in range(TL_SIZE):
-            out[CO_P_EHL + t] = 0.0
-    if capacitance:
-        out[CO_C_BEARING] = cp[CP_C_BACKGROUND]
-    if lubricated:
-        for k in range(CO_PHI_ISH_I, CO_PHI_RS_O + 1):
-            out[k] = 1.0
+    method = contact_method(cp, _METHOD_SLOTS)
+    oil = oil_state(T_oil, lub, method[METHOD_LUBRICATED], cp[CP_THERMAL] > 0.5, capacitance)
+    eta, xi, rho0 = oil[0], oil[1], oil[2]
+    _start_sums(cp, out)
     for j in range(Z):
         for race in range(2):
-            o = 5 * race  # inner at CP_RX_I.., outer at CP_RX_O..
-            Q = balls[BQ_Q_I + race, j]
-            u = balls[BQ_U_I, j] if race == 0 else balls[BQ_U_O, j]
-            Rx = cp[CP_RX_I + o]
-            Ry = cp[CP_RY_I + o]
-            k = cp[CP_K_I + o]
-            a, b, _, p = hertz_contact(Q, Rx, Ry, E_red, k, cp[CP_EE_I + o], cp[CP_KK_I + o])
-            # the fully flooded isothermal film (the formula, times the numerical solver's ratio where the film
-            # table is on), then the lubrication method's inlet heating and starvation factors
-            hc, hm = corrected_film_thickness(film, eta, xi, E_red, u, Q, Rx, Ry, k, film_table, race)
-            if lubricated and Q > 0.0:
-                phi_t, phi_c, phi_m = film_factors(
-                    hc, hm, abs(u), p, b, Rx, E_red, eta, beta, cp[CP_K_OIL], cp[CP_THERMAL], cp[CP_H_OIL]
-                )
-                hc *= phi_t * phi_c
-                hm *= phi_t * phi_m
-            lam = film_parameter(hm, cp[CP_SIGMA_I + race])
-            C = 0.0
-            P = 0.0
-            if Q > 0.0:
-                if capacitance:
-                    C = lubricated_contact_capacitance(
-                        K_cm, rho0, p, int(cp[CP_PRESSURE]), a, b, hc, cp[CP_H_FLOOR], E_red, cp[CP_OIL_GAP]
-                    )
-                if torque:
-                    spin = balls[BQ_SPIN_I, j] if race == 0 else balls[BQ_SPIN_O, j]
-                    mu = friction_coefficient(lam)
-                    f = cp[CP_F_I + race]
-                    P = contact_losses(
-                        Q,
-                        u,
-                        spin,
-                        Rx,
-                        Ry,
-                        a,
-                        b,
-                        cp[CP_EE_I + o],
-                        f,
-                        cp[CP_D],
-                        E_red,
-                        eta,
-                        xi,
-                        mu,
-                        cp[CP_ALPHA_H],
-                        losses,
-                    )
-                    if lubricated:  # the EHL rolling force follows the central film (kernels.lubrication)
-                        f_R = rolling_force_factor(phi_t, phi_c)
-                        P -= (1.0 - f_R) * losses[TL_EHL]
-                        losses[TL_EHL] *= f_R
-                    for t in range(TL_SIZE):
-                        out[CO_P_EHL + t] += losses[t]
-                    # the film's traction against the balls' sliding (race control "traction"; 0 under a
-                    # hypothesis, whose kinematics roll without slip): in the contact's loss, not in a component
-                    P += balls[BQ_P_SLIP_I + race, j]
-                    out[CO_Q_INNER_RING + race] += P
-                out[CO_PMAX] = max(out[CO_PMAX], p)
-                if Q > out[CO_QMAX_I + race]:  # the central film of the most loaded contact (first of equals)
-                    out[CO_QMAX_I + race] = Q
-                    out[CO_HC_I + race] = hc
-                    if lubricated:
-                        out[CO_PHI_ISH_I + race] = phi_t
-                        out[CO_PHI_RS_I + race] = phi_c
-                if race == 0:
-                    loaded_i = True
-                    lam_i = min(lam_i, lam)
-                    hmin_i = min(hmin_i, hm)
-                else:
-                    loaded_o = True
-                    lam_o = min(lam_o, lam)
-                    hmin_o = min(hmin_o, hm)
-            per_contact[PC_HMIN_I + race, j] = hm
-            per_contact[PC_LAMBDA_I + race, j] = lam
-            if torque:
-                per_contact[PC_P_I + race, j] = P
-            if capacitance:
-                per_contact[PC_C_I + race, j] = C
+            _contact(j, race, balls, cp, oil, method, out, per_contact, losses)
         if balls[BQ_Q_I, j] > 0.0 and balls[BQ_Q_O, j] > 0.0:
             out[CO_N_LOADED] += 1.0
         if capacitance:
             out[CO_C_BEARING] += ball_capacitance(per_contact[PC_C_I, j], per_contact[PC_C_O, j])
     # a race without any loaded contact reports 0 film (as the analytic fidelity, docs/decisions.md)
-    out[CO_LAMBDA_I] = lam_i if loaded_i else 0.0
-    out[CO_LAMBDA_O] = lam_o if loaded_o else 0.0
-    out[CO_HMIN_I] = hmin_i if loaded_i else 0.0
-    out[CO_HMIN_O] = hmin_o if loaded_o else 0.0
+    for race in range(2):
+        if not out[CO_QMAX_I + race] > 0.0:
+            out[CO_LAMBDA_I + race] = 0.0
+            out[CO_HMIN_I + race] = 0.0
     out[CO_REGIME] = lubrication_regime(min(out[CO_LAMBDA_I], out[CO_LAMBDA_O]))
     if torque and cp[CP_DRAG] > 0.5:  # the drag heats the oil, which passes it to both rings: half each
         rho_e, eta_e = mixture(cp[CP_DRAG_X], rho0, eta)
@@ -258,3 +161,79 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
         out[CO_TORQUE] = out[CO_P_LOSS] / abs(omega) if omega != 0.0 else 0.0
     out[CO_ETA] = eta
     out[CO_XI] = xi
+
+
+@kernel(inline="always")  # see _contact
+def _start_sums(cp, out):
+    """The starting values of the sums and extremes that the contacts add to (those of a submodel that is off are
+    left untouched): 0, the minima of the races at inf, the film factors at 1 and the capacitance at the
+    background's."""
+    for k in _SUMS:
+        out[k] = 0.0
+    for k in _MINIMA:
+        out[k] = math.inf
+    if cp[CP_TORQUE] > 0.5:
+        for k in _LOSS_SUMS:
+            out[k] = 0.0
+        for t in range(TL_SIZE):
+            out[CO_P_EHL + t] = 0.0
+    if cp[CP_CAPACITANCE] > 0.5:
+        out[CO_C_BEARING] = cp[CP_C_BACKGROUND]
+    if cp[CP_LUBRICATED] > 0.5:
+        for k in range(CO_PHI_ISH_I, CO_PHI_RS_O + 1):
+            out[k] = 1.0
+
+
+@kernel(inline="always")  # as kernels.ehl_contact's, for the time of a call per contact
+def _contact(j, race, balls, cp, oil, method, out, per_contact, losses):
+    """Ball j's contact with race 0 (inner) or 1 (outer): its film, Lambda, loss and capacitance into per_contact,
+    its share of the race's sums and extremes into out (the races' slots are neighbours: CO_<name>_I + race)."""
+    o = 5 * race  # inner at CP_RX_I.., outer at CP_RX_O..
+    Q = balls[BQ_Q_I + race, j]
+    u = balls[BQ_U_I, j] if race == 0 else balls[BQ_U_O, j]
+    shape = (cp[CP_RX_I + o], cp[CP_RY_I + o], cp[CP_K_I + o], cp[CP_EE_I + o], cp[CP_KK_I + o], cp[CP_SIGMA_I + race])
+    a, b, p, hc, hm, lam, C, phi_t, phi_c = lubricated_contact(Q, u, race, shape, oil, method)
+    P = 0.0
+    if Q > 0.0:
+        if cp[CP_TORQUE] > 0.5:
+            P = _contact_loss(j, race, balls, cp, oil, method, shape, a, b, lam, phi_t, phi_c, out, losses)
+        out[CO_PMAX] = max(out[CO_PMAX], p)
+        if Q > out[CO_QMAX_I + race]:  # the central film of the most loaded contact (first of equals)
+            out[CO_QMAX_I + race] = Q
+            out[CO_HC_I + race] = hc
+            if method[METHOD_LUBRICATED]:
+                out[CO_PHI_ISH_I + race] = phi_t
+                out[CO_PHI_RS_I + race] = phi_c
+        out[CO_LAMBDA_I + race] = min(out[CO_LAMBDA_I + race], lam)
+        out[CO_HMIN_I + race] = min(out[CO_HMIN_I + race], hm)
+    per_contact[PC_HMIN_I + race, j] = hm
+    per_contact[PC_LAMBDA_I + race, j] = lam
+    if cp[CP_TORQUE] > 0.5:
+        per_contact[PC_P_I + race, j] = P
+    if method[METHOD_CAPACITANCE]:
+        per_contact[PC_C_I + race, j] = C
+
+
+@kernel(inline="always")  # see _contact
+def _contact_loss(j, race, balls, cp, oil, method, shape, a, b, lam, phi_t, phi_c, out, losses):
+    """The loss (W) of ball j's loaded contact with the race (Houpert's components, kernels.torque, into losses and
+    summed into out[CO_P_EHL..]; with the sliding's) and the heat it gives its ring (out[CO_Q_*_RING])."""
+    u = balls[BQ_U_I, j] if race == 0 else balls[BQ_U_O, j]
+    spin = balls[BQ_SPIN_I, j] if race == 0 else balls[BQ_SPIN_O, j]
+    Q = balls[BQ_Q_I + race, j]
+    Rx, Ry, _, ell_E, _, _ = shape
+    eta, xi = oil[0], oil[1]
+    mu = friction_coefficient(lam)
+    f = cp[CP_F_I + race]
+    P = contact_losses(Q, u, spin, Rx, Ry, a, b, ell_E, f, cp[CP_D], cp[CP_E_RED], eta, xi, mu, cp[CP_ALPHA_H], losses)
+    if method[METHOD_LUBRICATED]:  # the EHL rolling force follows the central film (kernels.lubrication)
+        f_R = rolling_force_factor(phi_t, phi_c)
+        P -= (1.0 - f_R) * losses[TL_EHL]
+        losses[TL_EHL] *= f_R
+    for t in range(TL_SIZE):
+        out[CO_P_EHL + t] += losses[t]
+    # the film's traction against the balls' sliding (race control "traction"; 0 under a hypothesis, whose
+    # kinematics roll without slip): in the contact's loss, not in a component
+    P += balls[BQ_P_SLIP_I + race, j]
+    out[CO_Q_INNER_RING + race] += P
+    return P

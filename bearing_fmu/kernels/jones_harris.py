@@ -56,6 +56,7 @@ from .ball_traction import (
     solve_work,
     traction_eval,
 )
+from .elimination import gauss_solve
 from .geometry import ball_direction
 
 # layout of the quasi-static bearing array (built by bearing_fmu.models.analytic)
@@ -944,41 +945,6 @@ def _traction_ball(omega, qs, X, contact, j):
 
 
 @kernel
-def _solve_small(Kr, R, n, out):
-    """Solve Kr[:n,:n] out = R[:n] by Gaussian elimination with partial pivoting (in place on Kr, R).
-
-    Returns False when the matrix is numerically singular."""
-    for c in range(n):
-        p = c
-        best = abs(Kr[c, c])
-        for r in range(c + 1, n):
-            if abs(Kr[r, c]) > best:
-                best = abs(Kr[r, c])
-                p = r
-        if best == 0.0 or not math.isfinite(best):
-            return False
-        if p != c:
-            for k in range(n):
-                tmp = Kr[c, k]
-                Kr[c, k] = Kr[p, k]
-                Kr[p, k] = tmp
-            tmp = R[c]
-            R[c] = R[p]
-            R[p] = tmp
-        for r in range(c + 1, n):
-            f = Kr[r, c] / Kr[c, c]
-            for k in range(c, n):
-                Kr[r, k] -= f * Kr[c, k]
-            R[r] -= f * R[c]
-    for c in range(n - 1, -1, -1):
-        s = R[c]
-        for k in range(c + 1, n):
-            s -= Kr[c, k] * out[k]
-        out[c] = s / Kr[c, c]
-    return True
-
-
-@kernel
 def solve_quasistatic(F_applied, control, d, qs, dPd, omega, X, F, K, balls):
     """Global equilibrium by trust-region Newton with the analytic Jacobian (_global_newton).
 
@@ -1083,9 +1049,8 @@ def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
     F, J, contact and X belong to the solution; a failed solve leaves them at its last trial."""
     A, tol, maxit, scale, k_floor = _newton_settings(qs, dPd)
     radius = _TR_RADIUS * A  # trust radius (m, scaled DOFs); the first trial is the full Newton step inside it
-    Kr = np.empty((5, 5))
+    Kr = np.empty((5, 6))  # the Newton system (_newton_system), then the Newton step in its column n
     Ks = np.empty((5, 5))  # symmetric part of the regularised Newton matrix: the curvature of the model
-    R = np.empty(5)
     g = np.empty(5)  # scaled unbalanced load at the iterate (N): minus the gradient of the potential energy
     Rw = np.empty(5)  # Newton step (m, scaled DOFs)
     p = np.empty(5)  # trial step (m, scaled DOFs)
@@ -1100,22 +1065,21 @@ def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
             return end, status[1], res
         if it == maxit:
             break
-        _newton_system(F_applied, F, J, idx, n, scale, k_floor, Kr, R)
+        _newton_system(F_applied, F, J, idx, n, scale, k_floor, Kr)
         for a in range(n):
-            g[a] = R[a]
+            g[a] = Kr[a, n]
             for b in range(n):
                 Ks[a, b] = 0.5 * (Kr[a, b] + Kr[b, a])
-        if not _solve_small(Kr, R, n, Rw):
+        if not gauss_solve(Kr, n, n + 1):
             return QS_NOT_FINITE, it, res
+        for a in range(n):
+            Rw[a] = Kr[a, n]
         if _max_abs(Rw, n) < 1e-15 * A:
             return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), status[1], res
         accepted = False
         while radius >= _TR_COLLAPSE * A:
             predicted = _dogleg(Rw, g, Ks, n, radius, p)
-            for a in range(5):
-                step[a] = 0.0
-            for a in range(n):
-                step[idx[a]] = p[a] / scale[idx[a]]
+            _full_step(p, 1.0, idx, n, scale, step)
             trial = _loads_residual_at(d, 1.0, step, loads)  # d_try, X_try, F, J, contact: at the trial
             # work of the unbalanced load along the step (trapezoidal rule): at rest the decrease of the
             # potential energy, to third order in the step; the model predicts it exactly when K is constant
@@ -1139,10 +1103,7 @@ def _global_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
             # docs/quasistatic.md section 3): step across it with the Newton step, capped at the first radius,
             # and start afresh from there
             f = min(1.0, _TR_RADIUS * A / math.sqrt(_sum_squares(Rw, n)))
-            for a in range(5):
-                step[a] = 0.0
-            for a in range(n):
-                step[idx[a]] = f * Rw[a] / scale[idx[a]]
+            _full_step(Rw, f, idx, n, scale, step)
             trial = _loads_residual_at(d, 1.0, step, loads)
             radius = _TR_RADIUS * A
         res = trial
@@ -1166,20 +1127,31 @@ def _iteration_end(res, tol, f_ref, contact, n, ball_status):
 
 
 @kernel(inline="always")
-def _newton_system(F_applied, F, J, idx, n, scale, k_floor, Kr, R):
+def _newton_system(F_applied, F, J, idx, n, scale, k_floor, Kr):
     """The ring's Newton system on the n load-controlled DOFs idx[:n], in scaled DOFs (rotations as arc lengths,
-    moments as forces: scale): the unbalanced load R (N) and the stiffness Kr (N/m), its diagonal raised by 1e-12 of
-    its largest entry and the floor k_floor (N/m) so that a ring with no loaded ball still has a step."""
+    moments as forces: scale), into Kr[:n, :n + 1] (kernels.elimination's layout): the stiffness (N/m), its diagonal
+    raised by 1e-12 of its largest entry and the floor k_floor (N/m) so that a ring with no loaded ball still has a
+    step, and in column n the unbalanced load (N)."""
     kmax = 0.0
     for a in range(n):
         kmax = max(kmax, J[idx[a], idx[a]] / (scale[idx[a]] ** 2))
     for a in range(n):
         ia = idx[a]
-        R[a] = (F_applied[ia] - F[ia]) / scale[ia]
+        Kr[a, n] = (F_applied[ia] - F[ia]) / scale[ia]
         for b in range(n):
             ib = idx[b]
             Kr[a, b] = J[ia, ib] / (scale[ia] * scale[ib])
         Kr[a, a] += 1e-12 * kmax + k_floor
+
+
+@kernel(inline="always")
+def _full_step(p, f, idx, n, scale, step):
+    """The step of the five DOFs (m and rad) from f times the step p[:n] of the n load-controlled DOFs idx[:n] in
+    scaled DOFs (m; scale as in _newton_system); 0 on the displacement-controlled DOFs."""
+    for a in range(5):
+        step[a] = 0.0
+    for a in range(n):
+        step[idx[a]] = f * p[a] / scale[idx[a]]
 
 
 @kernel(inline="always")
@@ -1202,8 +1174,7 @@ def _damped_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
     evaluation is always that of the returned d, so F, J, contact and X belong to the solution."""
     A, tol, maxit, scale, k_floor = _newton_settings(qs, dPd)
     step_cap = 0.05 * A
-    Kr = np.empty((5, 5))
-    R = np.empty(5)
+    Kr = np.empty((5, 6))  # the Newton system (_newton_system), then the Newton step in its column n
     Rw = np.empty(5)
     step = np.empty(5)
     d_try = np.empty(5)
@@ -1216,17 +1187,16 @@ def _damped_newton(F_applied, idx, n, d, qs, dPd, omega, X, F, J, contact, jacob
             return end, status[1], res
         if it == maxit:
             break
-        _newton_system(F_applied, F, J, idx, n, scale, k_floor, Kr, R)
-        if not _solve_small(Kr, R, n, Rw):
+        _newton_system(F_applied, F, J, idx, n, scale, k_floor, Kr)
+        if not gauss_solve(Kr, n, n + 1):
             return QS_NOT_FINITE, it, res
+        for a in range(n):
+            Rw[a] = Kr[a, n]
         big = _max_abs(Rw, n)
         if big < 1e-15 * A:
             return (QS_BALL_NOT_CONVERGED if ball_status == 2 else QS_OK), status[1], res
         f = 1.0 if big <= step_cap else step_cap / big
-        for a in range(5):
-            step[a] = 0.0
-        for a in range(n):
-            step[idx[a]] = f * Rw[a] / scale[idx[a]]
+        _full_step(Rw, f, idx, n, scale, step)
         _, res = _loads_line_search(d, step, res, _LOADS_TRIES, loads)  # d_try, X_try, F, J, contact: at the step
         for a in range(5):
             d[a] = d_try[a]

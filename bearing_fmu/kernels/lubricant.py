@@ -161,6 +161,14 @@ def permittivity_from_density(K_cm, rho):
 
 
 @kernel
+def wlf_constants(lub):
+    """The WLF law's constants (mu_G, T_g0, A1, A2, b1, b2, C1, C2) in the lubricant array, in the order of
+    wlf_viscosity's and wlf_alpha_star's arguments."""
+    return (lub[LUB_WLF_MU_G], lub[LUB_WLF_TG0], lub[LUB_WLF_A1], lub[LUB_WLF_A2], lub[LUB_WLF_B1], lub[LUB_WLF_B2],
+            lub[LUB_WLF_C1], lub[LUB_WLF_C2])  # fmt: skip
+
+
+@kernel
 def lubricant_state(T, lub):
     """Ambient-pressure state of the lubricant at temperature T (K).
 
@@ -185,18 +193,7 @@ def lubricant_state(T, lub):
         nu = walther_viscosity(T, lub[LUB_WALTHER_A], lub[LUB_WALTHER_B])
         eta = nu * rho0
     elif visc == VISCOSITY_WLF:
-        eta = wlf_viscosity(
-            0.0,
-            T,
-            lub[LUB_WLF_MU_G],
-            lub[LUB_WLF_TG0],
-            lub[LUB_WLF_A1],
-            lub[LUB_WLF_A2],
-            lub[LUB_WLF_B1],
-            lub[LUB_WLF_B2],
-            lub[LUB_WLF_C1],
-            lub[LUB_WLF_C2],
-        )
+        eta = wlf_viscosity(0.0, T, *wlf_constants(lub))
         nu = eta / rho0
     else:
         eta = lub[LUB_ETA_CONST]
@@ -205,17 +202,7 @@ def lubricant_state(T, lub):
     if piezo == PIEZO_GOLD:
         xi = gold_pressure_viscosity(nu, lub[LUB_GOLD_S], lub[LUB_GOLD_T])
     elif piezo == PIEZO_WLF:
-        xi = wlf_alpha_star(
-            T,
-            lub[LUB_WLF_MU_G],
-            lub[LUB_WLF_TG0],
-            lub[LUB_WLF_A1],
-            lub[LUB_WLF_A2],
-            lub[LUB_WLF_B1],
-            lub[LUB_WLF_B2],
-            lub[LUB_WLF_C1],
-            lub[LUB_WLF_C2],
-        )
+        xi = wlf_alpha_star(T, *wlf_constants(lub))
     else:
         xi = lub[LUB_XI_CONST]
     return eta, xi, rho0

@@ -37,6 +37,7 @@ import math
 from bearing_fmu_common.jit import kernel
 
 from .lubricant import lubricant_state
+from .roots import illinois_update
 
 # lubrication method codes (models.lubrication.METHODS)
 METHOD_FLOODED = 0
@@ -131,16 +132,7 @@ def inlet_meniscus(h_c, m_star, m_cap, Rx, b, h_oil):
         f = h_c * starvation_factor(m, m_star, 0.29) + hertz_inlet_gap(m, b, Rx) - h_oil
         if f == 0.0 or hi - lo <= 1e-13 * hi:
             break
-        if f > 0.0:
-            hi, f_hi = m, f
-            if side == 1:
-                f_lo *= 0.5
-            side = 1
-        else:
-            lo, f_lo = m, f
-            if side == -1:
-                f_hi *= 0.5
-            side = -1
+        lo, f_lo, hi, f_hi, side = illinois_update(m, f, lo, f_lo, hi, f_hi, side)  # (f = 0 stopped the search above)
     return m
 
 

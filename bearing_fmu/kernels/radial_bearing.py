@@ -17,14 +17,14 @@ import math
 from bearing_fmu_common.jit import kernel
 from bearing_fmu_common.layout import Layout
 
-from .capacitance import ball_capacitance, lubricated_contact_capacitance
-from .ehl import film_parameter, lubrication_regime
-from .film_correction import FT_SIZE, corrected_film_thickness
+from .capacitance import ball_capacitance
+from .ehl import lubrication_regime
+from .ehl_contact import METHOD_CAPACITANCE, METHOD_LUBRICATED, contact_method, lubricated_contact, oil_state
+from .film_correction import FT_SIZE
 from .geometry import centrifugal_force, pass_frequencies, rolling_kinematics
-from .hertz import hertz_contact, hertz_stiffness, series_stiffness
+from .hertz import hertz_stiffness, series_stiffness
 from .loaddist import load_parameter, solve_radial_shift
-from .lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
-from .lubrication import ball_drag_power, film_factors, mixture, temperature_viscosity_coefficient
+from .lubrication import ball_drag_power, mixture
 
 # layout of the bearing parameter array (built by bearing_fmu.models.analytic)
 _B_SLOTS = Layout()
@@ -101,6 +101,14 @@ O_PHI_RS_I = _O_SLOTS.slot()  # ... starvation (central film), inner
 O_PHI_RS_O = _O_SLOTS.slot()  # ... outer
 O_SIZE = _O_SLOTS.size
 
+# the slots of kernels.ehl_contact.contact_method's constants in the bearing array
+_METHOD_SLOTS = (B_E_RED, B_FILM, B_FILM_TABLE, B_LUBRICATED, B_K_OIL, B_THERMAL, B_H_OIL, B_CAPACITANCE, B_PRESSURE,
+                 B_H_FLOOR, B_OIL_GAP)  # fmt: skip
+
+# the races' summaries of _ball_contacts: minima over the loaded contacts, maxima and counts
+_MINIMA = (O_LAMBDA_I, O_LAMBDA_O, O_HMIN_I, O_HMIN_O, O_HC_I, O_HC_O)
+_MAXIMA = (O_QMAX_I, O_QMAX_O, O_PMAX, O_N_LOADED)
+
 
 @kernel
 def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
@@ -118,135 +126,24 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     dm = brg[B_DM]
     Pd = brg[B_PD]
     E_red = brg[B_E_RED]
-    Rx_i = brg[B_RX_I]
-    Ry_i = brg[B_RY_I]
-    Rx_o = brg[B_RX_O]
-    Ry_o = brg[B_RY_O]
-
-    capacitance = brg[B_CAPACITANCE] > 0.5
-    lubricated = brg[B_LUBRICATED] > 0.5
-    film = int(brg[B_FILM])
-    film_table = brg[B_FILM_TABLE:]
-    eta, xi, rho0 = lubricant_state(T_oil, lub)
-    beta = 0.0
-    if lubricated and brg[B_THERMAL] > 0.5:
-        beta = temperature_viscosity_coefficient(T_oil, lub)
-    K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF]) if capacitance else 0.0
+    method = contact_method(brg, _METHOD_SLOTS)
+    oil = oil_state(T_oil, lub, method[METHOD_LUBRICATED], brg[B_THERMAL] > 0.5, method[METHOD_CAPACITANCE])
     w_cage, w_ball_rel, w_ball_fixed, u = rolling_kinematics(omega, D, dm, 0.0)
     F_c = 0.0
     if brg[B_CENTRIFUGAL] > 0.5:
         F_c = centrifugal_force(brg[B_M_BALL], dm, w_cage)
 
-    K_i = hertz_stiffness(Rx_i, Ry_i, E_red, brg[B_K_I], brg[B_EE_I], brg[B_KK_I])
-    K_o = hertz_stiffness(Rx_o, Ry_o, E_red, brg[B_K_O], brg[B_EE_O], brg[B_KK_O])
+    K_i = hertz_stiffness(brg[B_RX_I], brg[B_RY_I], E_red, brg[B_K_I], brg[B_EE_I], brg[B_KK_I])
+    K_o = hertz_stiffness(brg[B_RX_O], brg[B_RY_O], E_red, brg[B_K_O], brg[B_EE_O], brg[B_KK_O])
     K = series_stiffness(K_i, K_o)
     delta_r, iters = solve_radial_shift(F_r, Pd, K, Z, nodes, weights, brg[B_TOL])
+    _ball_contacts(delta_r, K, F_c, u, brg, oil, method, out, ball)
 
-    if lubricated:
-        for k in range(O_PHI_ISH_I, O_PHI_RS_O + 1):
-            out[k] = 1.0
-    loaded_i = False
-    loaded_o = False
-    # cos(2 pi j / Z) is not exactly 0 at 90 deg: a compression below this is rounding, not contact
-    d_zero = 1e-12 * (abs(delta_r) + abs(Pd))
-    lam_i = math.inf
-    lam_o = math.inf
-    hmin_i = math.inf
-    hmin_o = math.inf
-    hc_i_min = math.inf
-    hc_o_min = math.inf
-    p_max = 0.0
-    q_max_i = 0.0
-    q_max_o = 0.0
-    n_loaded = 0
-    c_total = brg[B_C_BACKGROUND]
-    for j in range(Z):
-        psi = 2.0 * math.pi * min(j, Z - j) / Z  # mirror balls get bit-identical angles
-        d = delta_r * math.cos(psi) - 0.5 * Pd
-        Q_i = K * d**1.5 if d > d_zero else 0.0
-        Q_o = Q_i + F_c
-        a_i, b_i, _, p_i = hertz_contact(Q_i, Rx_i, Ry_i, E_red, brg[B_K_I], brg[B_EE_I], brg[B_KK_I])
-        a_o, b_o, _, p_o = hertz_contact(Q_o, Rx_o, Ry_o, E_red, brg[B_K_O], brg[B_EE_O], brg[B_KK_O])
-        hc_i, hm_i = corrected_film_thickness(film, eta, xi, E_red, u, Q_i, Rx_i, Ry_i, brg[B_K_I], film_table, 0)
-        hc_o, hm_o = corrected_film_thickness(film, eta, xi, E_red, u, Q_o, Rx_o, Ry_o, brg[B_K_O], film_table, 1)
-        if lubricated:  # the method's film factors (kernels.lubrication); ball 0 is the most loaded
-            k_f, thermal, h_oil = brg[B_K_OIL], brg[B_THERMAL], brg[B_H_OIL]
-            if Q_i > 0.0:
-                t_i, c_i, m_i = film_factors(hc_i, hm_i, abs(u), p_i, b_i, Rx_i, E_red, eta, beta, k_f, thermal, h_oil)
-                hc_i *= t_i * c_i
-                hm_i *= t_i * m_i
-                if j == 0:
-                    out[O_PHI_ISH_I], out[O_PHI_RS_I] = t_i, c_i
-            if Q_o > 0.0:
-                t_o, c_o, m_o = film_factors(hc_o, hm_o, abs(u), p_o, b_o, Rx_o, E_red, eta, beta, k_f, thermal, h_oil)
-                hc_o *= t_o * c_o
-                hm_o *= t_o * m_o
-                if j == 0:
-                    out[O_PHI_ISH_O], out[O_PHI_RS_O] = t_o, c_o
-        L_i = film_parameter(hm_i, brg[B_SIGMA_I])
-        L_o = film_parameter(hm_o, brg[B_SIGMA_O])
-        C_i = 0.0
-        C_o = 0.0
-        if Q_i > 0.0:
-            loaded_i = True
-            if capacitance:
-                C_i = lubricated_contact_capacitance(
-                    K_cm, rho0, p_i, int(brg[B_PRESSURE]), a_i, b_i, hc_i, brg[B_H_FLOOR], E_red, brg[B_OIL_GAP]
-                )
-            lam_i = min(lam_i, L_i)
-            hmin_i = min(hmin_i, hm_i)
-            hc_i_min = min(hc_i_min, hc_i)
-        if Q_o > 0.0:
-            loaded_o = True
-            if capacitance:
-                C_o = lubricated_contact_capacitance(
-                    K_cm, rho0, p_o, int(brg[B_PRESSURE]), a_o, b_o, hc_o, brg[B_H_FLOOR], E_red, brg[B_OIL_GAP]
-                )
-            lam_o = min(lam_o, L_o)
-            hmin_o = min(hmin_o, hm_o)
-            hc_o_min = min(hc_o_min, hc_o)
-        if Q_i > 0.0 and Q_o > 0.0:
-            n_loaded += 1
-        if capacitance:
-            c_total += ball_capacitance(C_i, C_o)
-            ball[6, j] = C_i
-            ball[7, j] = C_o
-        p_max = max(p_max, p_i, p_o)
-        q_max_i = max(q_max_i, Q_i)
-        q_max_o = max(q_max_o, Q_o)
-        ball[0, j] = Q_i
-        ball[1, j] = Q_o
-        ball[2, j] = hm_i
-        ball[3, j] = hm_o
-        ball[4, j] = L_i
-        ball[5, j] = L_o
-
-    # a race without any loaded contact reports 0 film (documented: no EHL contact to speak of)
-    if not loaded_i:
-        lam_i = 0.0
-        hmin_i = 0.0
-        hc_i_min = 0.0
-    if not loaded_o:
-        lam_o = 0.0
-        hmin_o = 0.0
-        hc_o_min = 0.0
-    out[O_LAMBDA_I] = lam_i
-    out[O_LAMBDA_O] = lam_o
-    out[O_HMIN_I] = hmin_i
-    out[O_HMIN_O] = hmin_o
-    out[O_REGIME] = lubrication_regime(min(lam_i, lam_o))
-    if capacitance:
-        out[O_C_BEARING] = c_total
-    out[O_QMAX_I] = q_max_i
-    out[O_QMAX_O] = q_max_o
-    out[O_PMAX] = p_max
+    eta, xi, rho0 = oil[0], oil[1], oil[2]
     out[O_OMEGA_CAGE] = w_cage
     out[O_OMEGA_BALL] = w_ball_fixed
-    out[O_N_LOADED] = n_loaded
     out[O_DELTA_R] = delta_r
     out[O_EPS] = load_parameter(delta_r, Pd)
-    out[O_HC_I] = hc_i_min
-    out[O_HC_O] = hc_o_min
     out[O_ETA] = eta
     out[O_XI] = xi
     out[O_ITER] = iters
@@ -257,3 +154,68 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
         P_drag = Z * ball_drag_power(0.5 * dm * w_cage, D, rho_e, eta_e, brg[B_DRAG_AREA])
         out[O_P_DRAG] = P_drag
         out[O_TORQUE_DRAG] = P_drag / abs(omega) if omega != 0.0 else 0.0
+
+
+@kernel
+def _ball_contacts(delta_r, K, F_c, u, brg, oil, method, out, ball):
+    """Every ball's two contacts with the inner ring shifted by delta_r (m) (Hertz constant K of both contacts in
+    series, N/m^1.5; centrifugal force F_c, N; entrainment speed u, m/s): the ball rows (analytic_bearing) and the
+    races' summaries in out: O_LAMBDA_*, O_HMIN_*, O_HC_* (minimum over the loaded contacts, 0 on a race without
+    any), O_QMAX_*, O_PMAX, O_N_LOADED, O_REGIME, the film factors O_PHI_* of ball 0 (the most loaded) with the
+    lubrication method and O_C_BEARING with the capacitance submodel."""
+    Z = int(brg[B_Z])
+    Pd = brg[B_PD]
+    capacitance = method[METHOD_CAPACITANCE]
+    shape_i = (brg[B_RX_I], brg[B_RY_I], brg[B_K_I], brg[B_EE_I], brg[B_KK_I], brg[B_SIGMA_I])
+    shape_o = (brg[B_RX_O], brg[B_RY_O], brg[B_K_O], brg[B_EE_O], brg[B_KK_O], brg[B_SIGMA_O])
+    for k in _MINIMA:
+        out[k] = math.inf
+    for k in _MAXIMA:
+        out[k] = 0.0
+    if method[METHOD_LUBRICATED]:
+        for k in range(O_PHI_ISH_I, O_PHI_RS_O + 1):
+            out[k] = 1.0
+    if capacitance:
+        out[O_C_BEARING] = brg[B_C_BACKGROUND]
+    # cos(2 pi j / Z) is not exactly 0 at 90 deg: a compression below this is rounding, not contact
+    d_zero = 1e-12 * (abs(delta_r) + abs(Pd))
+    for j in range(Z):
+        psi = 2.0 * math.pi * min(j, Z - j) / Z  # mirror balls get bit-identical angles
+        d = delta_r * math.cos(psi) - 0.5 * Pd
+        Q_i = K * d**1.5 if d > d_zero else 0.0
+        Q_o = Q_i + F_c
+        _race_contact(j, 0, Q_i, u, shape_i, oil, method, out, ball)
+        _race_contact(j, 1, Q_o, u, shape_o, oil, method, out, ball)
+        if Q_i > 0.0 and Q_o > 0.0:
+            out[O_N_LOADED] += 1.0
+        if capacitance:
+            out[O_C_BEARING] += ball_capacitance(ball[6, j], ball[7, j])
+    # a race without any loaded contact reports 0 film (documented: no EHL contact to speak of)
+    for race in range(2):
+        if not out[O_QMAX_I + race] > 0.0:
+            out[O_LAMBDA_I + race] = 0.0
+            out[O_HMIN_I + race] = 0.0
+            out[O_HC_I + race] = 0.0
+    out[O_REGIME] = lubrication_regime(min(out[O_LAMBDA_I], out[O_LAMBDA_O]))
+
+
+@kernel
+def _race_contact(j, race, Q, u, shape, oil, method, out, ball):
+    """Ball j's contact with race 0 (inner) or 1 (outer) under the load Q (N): its load, h_min, Lambda and
+    capacitance into the ball rows, its share of the race's summaries into out (the races' slots of each
+    summary are neighbours: O_<name>_I + race)."""
+    a, b, p, hc, hm, lam, C, phi_t, phi_c = lubricated_contact(Q, u, race, shape, oil, method)
+    if Q > 0.0:
+        out[O_LAMBDA_I + race] = min(out[O_LAMBDA_I + race], lam)
+        out[O_HMIN_I + race] = min(out[O_HMIN_I + race], hm)
+        out[O_HC_I + race] = min(out[O_HC_I + race], hc)
+        if j == 0 and method[METHOD_LUBRICATED]:  # ball 0 is the most loaded
+            out[O_PHI_ISH_I + race] = phi_t
+            out[O_PHI_RS_I + race] = phi_c
+    out[O_PMAX] = max(out[O_PMAX], p)
+    out[O_QMAX_I + race] = max(out[O_QMAX_I + race], Q)
+    ball[race, j] = Q  # rows Q_i, Q_o; h_min_i, h_min_o; Lambda_i, Lambda_o; C_i, C_o
+    ball[2 + race, j] = hm
+    ball[4 + race, j] = lam
+    if method[METHOD_CAPACITANCE]:
+        ball[6 + race, j] = C

@@ -62,6 +62,8 @@ PALMGREN_ANGULAR_CONTACT = 1
 LUB_OIL_MIST = 0
 LUB_OIL_BATH = 1
 LUB_OIL_JET = 2  # also oil bath with a vertical shaft
+# Palmgren's f0 (-): a row per bearing kind (PALMGREN_* order), a column per lubrication (LUB_OIL_* order)
+PALMGREN_F0 = ((1.0, 2.0, 4.0), (1.7, 3.3, 6.6))
 
 # ISO 76:2006 Table 1, f0 (N/mm^2) of radial and angular-contact groove ball bearings at
 # gamma = D cos(alpha)/d_m = 0.00, 0.01, ..., 0.40, linear interpolation in between. UNVERIFIED
@@ -203,20 +205,8 @@ def palmgren_f0(kind, lubrication):
     PALMGREN_ANGULAR_CONTACT single row (1.7, 3.3, 6.6; low confidence). lubrication: LUB_OIL_MIST,
     LUB_OIL_BATH, LUB_OIL_JET. Grease (0.7-2 deep groove, ~2 angular) is a range, not offered.
     """
-    if kind == PALMGREN_DEEP_GROOVE:
-        if lubrication == LUB_OIL_MIST:
-            return 1.0
-        if lubrication == LUB_OIL_BATH:
-            return 2.0
-        if lubrication == LUB_OIL_JET:
-            return 4.0
-    elif kind == PALMGREN_ANGULAR_CONTACT:
-        if lubrication == LUB_OIL_MIST:
-            return 1.7
-        if lubrication == LUB_OIL_BATH:
-            return 3.3
-        if lubrication == LUB_OIL_JET:
-            return 6.6
+    if 0 <= kind < len(PALMGREN_F0) and 0 <= lubrication < len(PALMGREN_F0[0]):
+        return PALMGREN_F0[kind][lubrication]
     raise ValueError("palmgren_f0: unknown bearing kind or lubrication code")
 
 

@@ -582,14 +582,6 @@ def params_b7214c(**overrides):
     return make_params(**kw)
 
 
-def solve_small(A, b):
-    """Solution of the square system A x = b by numpy's LU solver; None when A is singular."""
-    try:
-        return np.linalg.solve(np.asarray(A, float), np.asarray(b, float))
-    except np.linalg.LinAlgError:
-        return None
-
-
 # the kernels this module twins (tests/unit/test_every_kernel_has_a_twin.py); the twin's names follow
 # the model's parts, not the kernel's
 KERNEL_MODULE = "bearing_fmu.kernels.jones_harris"
@@ -602,5 +594,4 @@ TWINS = {
     "bearing_loads": bearing_loads,
     "solve_quasistatic": solve_loads,
     "_free_ring_start": zero_load_position,
-    "_solve_small": solve_small,
 }

@@ -40,7 +40,30 @@ BD = "bearing_fmu.kernels.ball_dynamics."
 # helper -> (twinned caller, why the caller's comparison covers it)
 BT = "bearing_fmu.kernels.ball_traction."
 BC = "bearing_fmu.kernels.ball_coupled_newton."
+RB = "bearing_fmu.kernels.radial_bearing."
+CO = "bearing_fmu.kernels.contact_outputs."
+EC = "bearing_fmu.kernels.ehl_contact."
 COVERED_THROUGH = {
+    "bearing_fmu.kernels.lubricant.wlf_constants": (
+        "bearing_fmu.kernels.lubricant.lubricant_state",
+        "the WLF constants of the array, read for the compared viscosity and pressure-viscosity coefficient",
+    ),
+    "bearing_fmu.kernels.roots.illinois_update": (
+        "bearing_fmu.kernels.lubrication.inlet_meniscus",
+        "the bracket of the compared root (also of capacitance._bound_crossing's)",
+    ),
+    EC + "oil_state": (CO + "contact_outputs", "the oil's state at its temperature, eta and xi compared as outputs"),
+    EC + "lubricated_contact": (
+        CO + "_contact",
+        "one contact's Hertz, film, film factors, Lambda and capacitance: every contact of both static fidelities "
+        "compared (the analytic's through _race_contact)",
+    ),
+    EC + "contact_method": (CO + "contact_outputs", "the contact constants, read from the parameter array"),
+    CO + "_start_sums": (CO + "contact_outputs", "the starting values of the compared sums and extremes"),
+    CO + "_contact": (CO + "contact_outputs", "one contact's outputs, every contact's per_contact row compared"),
+    CO + "_contact_loss": (CO + "_contact", "one loaded contact's loss, compared per contact and summed"),
+    RB + "_ball_contacts": (RB + "analytic_bearing", "every ball's contacts and the races' summaries, all compared"),
+    RB + "_race_contact": (RB + "_ball_contacts", "one contact into the ball rows and summaries, both races compared"),
     BT + "_surfaces": (BT + "_contact", "one contact's sliding, spin and entrainment speeds"),
     BT + "_contact": (BT + "_residual", "one contact's forces and moments, both contacts compared"),
     BT + "_residual": (BT + "traction_eval", "the residuals with the contacts' terms given"),
@@ -76,6 +99,7 @@ COVERED_THROUGH = {
     ),
     BC + "_evaluate": (BC + "coupled_newton", "its residuals, and the Jacobian checked against central differences"),
     BC + "ball_contacts": (JH + "_ball_eval", "a ball's contact loads and directions at its position"),
+    BC + "hertz_load": (BC + "ball_contacts", "one contact's load and its derivative"),
     BC + "_norm6": (BC + "coupled_newton", "the residual norm of the line search"),
     BC + "coupled_work": (JH + "traction_work", "the work arrays of the coupled Newton"),
     JH + "_traction_grad": (JH + "_ball_eval", "the traction kinematics' terms, as _kin_grad's for a hypothesis"),
@@ -148,6 +172,7 @@ COVERED_THROUGH = {
     JH + "_loads_line_search": (JH + "_damped_newton", "the damping of the last-resort Newton"),
     JH + "_newton_system": (JH + "_global_newton", "the scaled, regularised Newton system of both ring solvers"),
     JH + "_max_abs": (JH + "_global_newton", "the size of a Newton step, the small-step convergence test"),
+    JH + "_full_step": (JH + "_global_newton", "the five DOFs' step from the scaled step of the load-controlled ones"),
     JH + "_iteration_end": (JH + "_global_newton", "the convergence test of both ring solvers"),
     JH + "_dogleg": (JH + "_global_newton", "the step of the trust-region iteration whose result is compared"),
     JH + "_model_decrease": (JH + "_dogleg", "the quadratic model's decrease, two sums"),

@@ -130,20 +130,3 @@ def test_ring_loads_and_bearing_loads_match_twin(label, p, d):
     for j, b in enumerate(twin_balls):
         assert balls[jones_harris.BQ_Q_I, j] == pytest.approx(b["Q_i"], abs=1e-8 * q_scale), (label, j)
         assert balls[jones_harris.BQ_Q_O, j] == pytest.approx(b["Q_o"], abs=1e-8 * q_scale), (label, j)
-
-
-def test_small_solver_matches_twin():
-    rng = np.random.default_rng(7)
-    for n in range(1, 6):
-        for _ in range(20):
-            A = rng.normal(size=(n, n)) + n * np.eye(n)  # diagonally weighted: condition number < 1e3
-            b = rng.normal(size=n)
-            assert np.linalg.cond(A) < 1e3
-            Kr, R, out = np.zeros((5, 5)), np.zeros(5), np.zeros(5)
-            Kr[:n, :n], R[:n] = A, b
-            assert jones_harris._solve_small(Kr, R, n, out)
-            assert_close(out[:n], ref.solve_small(A, b), 1e-12, f"n = {n}")
-    singular = np.zeros((5, 5))
-    singular[:2, :2] = [[1.0, 2.0], [2.0, 4.0]]
-    assert not jones_harris._solve_small(singular, np.ones(5), 2, np.zeros(5))
-    assert ref.solve_small([[1.0, 2.0], [2.0, 4.0]], [1.0, 1.0]) is None

@@ -4,9 +4,10 @@ The options reach the kernels as integer codes in the parameter arrays (CP_CAPAC
 QS_STIFFNESS, B_CAPACITANCE). Each test
 - pre-fills the outputs with a NaN sentinel: the slots of an option that is off stay NaN, every other
   slot equals (bit for bit) the run with the option on;
-- counts the work: the kernel's own source (``py_func``) runs as Python against counting wrappers of the
-  jitted callees that do the option's work (numba compiles calls to its module globals, so only the
-  Python run can be counted), and the callees are not called when the option is off.
+- counts the work: the kernel's own source (``py_func``), and that of the kernels it calls on the way to the
+  option's work (PYTHON_CHAIN), runs as Python against counting wrappers of the jitted callees that do the
+  option's work (numba compiles calls to its module globals, so only the Python run can be counted), and the
+  callees are not called when the option is off.
 """
 
 import math
@@ -18,7 +19,7 @@ import pytest
 
 from bearing_fmu.kernels import capacitance as cap
 from bearing_fmu.kernels import contact_outputs as ck
-from bearing_fmu.kernels import jones_harris, radial_bearing
+from bearing_fmu.kernels import ehl_contact, jones_harris, radial_bearing
 from bearing_fmu.kernels.ball_dynamics import state as ds
 from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.models.dem import DemModel
@@ -47,6 +48,23 @@ def counting(monkeypatch, module, names, calls):
             return _original(*args)
 
         monkeypatch.setattr(module, name, wrapper)
+
+
+# the kernels a fidelity's contact kernel calls on its way to the counted work, by the module whose name calls them
+PYTHON_CHAIN = {
+    ck: ("_start_sums", "_contact", "_contact_loss", "lubricated_contact", "oil_state"),
+    radial_bearing: ("_ball_contacts", "_race_contact", "lubricated_contact", "oil_state"),
+}
+
+
+def counting_in_python(monkeypatch, module, names, calls):
+    """Run module's contact kernels down to the counted work as Python (PYTHON_CHAIN), and count the calls of names
+    where they are made: in module or in kernels.ehl_contact (the lubricated contact of both static fidelities)."""
+    for name in PYTHON_CHAIN[module]:
+        monkeypatch.setattr(module, name, getattr(module, name).py_func)
+    for name in names:
+        owner = module if hasattr(module, name) else ehl_contact
+        counting(monkeypatch, owner, (name,), calls)
 
 
 @pytest.fixture(scope="module")
@@ -103,7 +121,7 @@ def test_contact_submodel_off_skips_its_work(solved, monkeypatch, option, out_sl
     assert np.array_equal(off_out[others], on_out[others]) and np.array_equal(off_pc[kept], on_pc[kept])
     for code, expect_work in ((0.0, False), (1.0, True)):
         calls = Counter()
-        counting(monkeypatch, ck, work, calls)
+        counting_in_python(monkeypatch, ck, work, calls)
         out, _ = contacts_run(m, balls, with_code(m.cp, option, code), ck.contact_outputs.py_func)
         assert (sum(calls.values()) > 0) == expect_work, (code, calls)
         if expect_work:
@@ -125,7 +143,7 @@ def test_flooded_method_skips_its_work(solved, monkeypatch):
     work = ("film_factors", "rolling_force_factor", "temperature_viscosity_coefficient", "ball_drag_power")
     for cp, expect_work in ((off_cp, False), (m.cp, True)):
         calls = Counter()
-        counting(monkeypatch, ck, work, calls)
+        counting_in_python(monkeypatch, ck, work, calls)
         contacts_run(m, balls, cp, ck.contact_outputs.py_func)
         assert (sum(calls.values()) > 0) == expect_work, calls
         monkeypatch.undo()
@@ -230,7 +248,7 @@ def test_analytic_capacitance_off_skips_its_work(monkeypatch):
     assert np.array_equal(off_out[others], on_out[others]) and np.array_equal(off_ball[:6], on_ball[:6])
     for m, expect_work in ((off, False), (on, True)):
         calls = Counter()
-        counting(monkeypatch, radial_bearing, ("lubricated_contact_capacitance", "ball_capacitance"), calls)
+        counting_in_python(monkeypatch, radial_bearing, ("lubricated_contact_capacitance", "ball_capacitance"), calls)
         run(m, radial_bearing.analytic_bearing.py_func)
         assert (sum(calls.values()) > 0) == expect_work, calls
         monkeypatch.undo()
