@@ -130,10 +130,15 @@ SHAFT_BUNDLE = runtime_bundle(
 SHAFT_STEP, SHAFT_STOP = 0.25, 1.0  # s
 
 
+def shaft_reference_inputs(shaft=DEFAULT_SHAFT):
+    """The shaft FMU's constant reference inputs: its start values at the reference speed."""
+    return {v.name: v.start for v in ShaftStepper(shaft).inputs} | {"omega": REFERENCE_OMEGA}
+
+
 def shaft_reference_rows(shaft=DEFAULT_SHAFT, step=SHAFT_STEP, stop=SHAFT_STOP):
     """The shaft FMU's reference result (rows of time and outputs) from the Python model, and its constant inputs."""
     stepper = ShaftStepper(shaft)
-    inputs = {v.name: v.start for v in stepper.inputs} | {"omega": REFERENCE_OMEGA}
+    inputs = shaft_reference_inputs(shaft)
     u = list(inputs.values())
     rows = [{"time": n * step, **stepper.outputs_values(u)} for n in range(int(round(stop / step)) + 1)]
     return rows, inputs
@@ -156,6 +161,7 @@ def build_shaft_fmu(out_dir=DEFAULT_OUT, shaft=DEFAULT_SHAFT, name=SHAFT_FMU):
     )
     computed = bearing_build.csv_text(rows, lambda v: repr(float(v)))
     markdown = bearing_build.variables_markdown(*shaft_variables(name, shaft))
+    bearing_build.write_if_changed(Path(out_dir) / f"{name}_shaft.toml", shaft_path(shaft).read_text())
     reference = bearing_build.write_reference_if_changed(Path(out_dir) / f"{name}_ref.csv", computed)
     bearing_build.write_if_changed(Path(out_dir) / f"{name}.md", markdown)
     add_documentation(path, name, markdown, in_csv, reference, SHAFT_STOP, SHAFT_STEP)
@@ -167,7 +173,7 @@ def shaft_variables(name=SHAFT_FMU, shaft=DEFAULT_SHAFT):
     stepper = ShaftStepper(shaft)
     seats = ", ".join(f"{k} `{s}`" for k, s in enumerate(stepper.model.shaft.seat_names, start=1))
     about = [
-        f"Shaft `{shaft}` (`{shaft_path(shaft).relative_to(SPINDLE_DIR.parent).as_posix()}`), seats {seats}: connect "
+        f"Shaft `{shaft}` (`{name}_shaft.toml`), seats {seats}: connect "
         "each seat's `K_<seat>[i,j]` to its bearing FMU's `K[i,j]`. Reference result of the Python model: "
         f"`{name}_ref.csv`. Variables declared in `spindle/shaft/declarations.py`; SI units."
     ]

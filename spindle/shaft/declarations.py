@@ -11,7 +11,7 @@ from bearing_fmu_common.variables import Variable
 from .model import N_FREQUENCIES, OMEGA_MAX, SEAT_MATRIX_MAX
 from .params import DEFAULT_SHAFT
 
-DOF_WORDS = ("F_x", "F_y", "F_z", "M_x", "M_y"), ("x", "y", "z", "theta_x", "theta_y")
+DOF_WORDS = "(F_x, F_y, F_z, M_x, M_y)", "(x, y, z, theta_x, theta_y)"
 SEAT_LIMITS = "orders of magnitude above any bearing's stiffness; a diagonal entry is >= 0 (a bearing resists motion)"
 DAMPING_MIN, DAMPING_MAX = 1.0, 1.0e8  # N.s/m
 DAMPING_LIMITS = (

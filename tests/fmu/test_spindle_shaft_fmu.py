@@ -13,6 +13,7 @@
 
 import json
 import math
+import shutil
 import subprocess
 import sys
 import textwrap
@@ -160,3 +161,13 @@ def test_bad_inputs_are_refused_with_their_range_and_the_host_survives(spindle_s
     unknown = report["unknown_shaft"]
     assert unknown["init_status"] == 3  # fmi2Error from fmi2ExitInitializationMode
     assert any("no_such_100%%_shaft" in m["message"] and "rabreau_b7214c" in m["message"] for m in unknown["messages"])
+
+
+def test_spindle_check_runs_the_reference_experiment(spindle_shaft_fmu, tmp_path):
+    """`spindle check` finds the shaft FMU's experiment from the shaft file beside it and matches its reference."""
+    from spindle.check import check_fmu
+
+    for suffix in (".fmu", "_ref.csv", "_shaft.toml"):
+        shutil.copy(spindle_shaft_fmu.with_name(f"SpindleShaft{suffix}"), tmp_path)
+    result = check_fmu(tmp_path / "SpindleShaft.fmu")
+    assert result.differences == [] and result.rows == 5 and result.outputs == 24
