@@ -16,6 +16,7 @@ from operator import itemgetter
 from xml.etree.ElementTree import Element, SubElement
 
 from pythonfmu import Boolean, Fmi2Causality, Fmi2Initial, Fmi2Slave, Fmi2Variability, Integer, Real, String
+from pythonfmu.enums import Fmi2Status
 
 # SI base-unit exponents (FMI 2.0 BaseUnit attributes) of the units the FMUs use
 BASE_UNITS = {
@@ -36,6 +37,7 @@ BASE_UNITS = {
     "Hz": {"s": -1},
     "N/m": {"kg": 1, "s": -2},
     "N.s/m": {"kg": 1, "s": -1},
+    "m/N": {"kg": -1, "s": 2},
     "h": {"s": 1, "factor": 3600},  # hour: rating lives in hours, as catalogues give them
     "kg": {"kg": 1},
     "kg/m^3": {"kg": 1, "m": -3},
@@ -226,6 +228,36 @@ class DeclaredSlave(Fmi2Slave):
             )
             self.register_variable(fmi_var)
             (self._integer_slot if integer else self._real_slot)[fmi_var.value_reference] = k
+
+    def _guarded(self, action, status=Fmi2Status.error, note=""):
+        """Run action(); on an exception log its message (with the FMI status that the calling function returns,
+        and `note` appended) and return False: the host never sees an exception."""
+        try:
+            action()
+            return True
+        except Exception as exc:  # logged as the model's own message, not a traceback
+            self.log(f"{self.instance_name}: {exc}{note}", status)
+            return False
+
+    def _initialised(self, build, start):
+        """fmi2ExitInitializationMode's result: build() makes the model for the parameters (a refusal: False, i.e.
+        fmi2Error), then start() computes the outputs from the inputs set so far; a bad input is logged once as a
+        warning (fmi2Warning returned) and refused by the first doStep unless corrected. self._ready says whether
+        the parameters were accepted."""
+        self._ready = self._guarded(build)
+        if not self._ready:
+            return False
+        if not self._guarded(start, Fmi2Status.warning, " (refused at the first doStep unless corrected)"):
+            return Fmi2Status.warning
+        return True
+
+    def _stepped(self, step):
+        """fmi2DoStep's result: step() run, a refusal logged and returned as False (fmi2Discard); an instance whose
+        parameters were refused at initialisation refuses every step."""
+        if not self._ready:
+            self.log(f"{self.instance_name}: not initialised (see the error at initialisation)", Fmi2Status.discard)
+            return False
+        return self._guarded(step, Fmi2Status.discard)
 
     def to_xml(self, model_options=None):
         root = add_unit_definitions(super().to_xml(model_options or {}), self.vars.values())

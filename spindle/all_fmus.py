@@ -1,10 +1,11 @@
-"""Build every FMU: the bearing FMUs (one per scene, bearing_fmu.build) and SpindleThermal.fmu.
+"""Build every FMU: the bearing FMUs (one per scene, bearing_fmu.build), SpindleThermal.fmu and SpindleShaft.fmu.
 
 SpindleThermal.fmu bundles `bearing_fmu_common`, the thermal model `spindle.thermal` and the bearing
 catalogue (THERMAL_BUNDLE; the thermal model reads bearing files with bearing_fmu_common.bearing_file),
 never the bearing model; next to it go the network it was built with, a reference result (the Python
 model's step response, regression data for users) and its variable list (<Name>.md, generated from
-spindle/thermal/declarations.py).
+spindle/thermal/declarations.py). SpindleShaft.fmu (SHAFT_BUNDLE) carries the shaft model and its catalogue, with
+its reference result and variable list beside it.
 
 `python -m spindle.all_fmus readme` rewrites the FMU variable block of README.md (between the markers
 README_BEGIN and README_END) from the same declarations; tests/fmu/test_variable_docs.py fails when
@@ -20,6 +21,10 @@ from bearing_fmu.bundle import runtime_bundle
 from bearing_fmu.fidelities import FIDELITIES
 from bearing_fmu.fmu_files import add_documentation
 
+from .shaft.declarations import parameter_declarations as shaft_parameter_declarations
+from .shaft.fmu import SpindleShaft
+from .shaft.params import DEFAULT_SHAFT, shaft_path
+from .shaft.stepper import ShaftStepper
 from .thermal.declarations import parameter_declarations
 from .thermal.fmu import SpindleThermal
 from .thermal.model import DEFAULT_SPINDLE, SpindleThermalModel, network_path
@@ -112,6 +117,70 @@ def build_thermal_fmu(name, network, axial_float, out_dir=DEFAULT_OUT):
     return path
 
 
+SHAFT_FMU = "SpindleShaft"
+# What the shaft FMU carries: the shared package's modules and the shaft model its slave runs, and the shaft catalogue.
+# No bearing model and no scipy (the model solves its eigenproblems with numpy).
+SHAFT_BUNDLE = runtime_bundle(
+    ((bearing_build.COMMON_DIR, "bearing_fmu_common"), (SPINDLE_DIR, "spindle")),
+    ("spindle.shaft.fmu", *bearing_build.RUNTIME_ENTRIES),
+    ("spindle/shaft/params",),
+)
+# reference experiment of the shaft FMU: the start values (the Bearing.fmu reference K at both seats, 2000 N.s/m)
+# at 10 000 rpm, held for one second at 0.25 s steps (the outputs follow the inputs without history)
+SHAFT_STEP, SHAFT_STOP = 0.25, 1.0  # s
+
+
+def shaft_reference_inputs(shaft=DEFAULT_SHAFT):
+    """The shaft FMU's constant reference inputs: its start values at the reference speed."""
+    return {v.name: v.start for v in ShaftStepper(shaft).inputs} | {"omega": REFERENCE_OMEGA}
+
+
+def shaft_reference_rows(shaft=DEFAULT_SHAFT, step=SHAFT_STEP, stop=SHAFT_STOP):
+    """The shaft FMU's reference result (rows of time and outputs) from the Python model, and its constant inputs."""
+    stepper = ShaftStepper(shaft)
+    inputs = shaft_reference_inputs(shaft)
+    u = list(inputs.values())
+    rows = [{"time": n * step, **stepper.outputs_values(u)} for n in range(int(round(stop / step)) + 1)]
+    return rows, inputs
+
+
+def build_shaft_fmu(out_dir=DEFAULT_OUT, shaft=DEFAULT_SHAFT, name=SHAFT_FMU):
+    """Build the shaft FMU `name` exposing the seats of `shaft` (a catalogue name: the start value of `shaft`)."""
+    rows, inputs = shaft_reference_rows(shaft)
+    held = [{"time": 0.0, **inputs}, {"time": SHAFT_STOP, **inputs}]
+    in_csv = bearing_build.csv_text(held, lambda v: repr(float(v)))
+    path = bearing_build.build_python_fmu(
+        name,
+        "spindle.shaft.fmu",
+        "SpindleShaft",
+        out_dir,
+        bundle=SHAFT_BUNDLE,
+        body=f"default_shaft = {shaft!r}",
+        runs=[{"options": {"stop_time": SHAFT_STOP, "output_interval": SHAFT_STEP}}],
+        experiment=(SHAFT_STOP, SHAFT_STEP),
+    )
+    computed = bearing_build.csv_text(rows, lambda v: repr(float(v)))
+    markdown = bearing_build.variables_markdown(*shaft_variables(name, shaft))
+    bearing_build.write_if_changed(Path(out_dir) / f"{name}_shaft.toml", shaft_path(shaft).read_text())
+    reference = bearing_build.write_reference_if_changed(Path(out_dir) / f"{name}_ref.csv", computed)
+    bearing_build.write_if_changed(Path(out_dir) / f"{name}.md", markdown)
+    add_documentation(path, name, markdown, in_csv, reference, SHAFT_STOP, SHAFT_STEP)
+    return path
+
+
+def shaft_variables(name=SHAFT_FMU, shaft=DEFAULT_SHAFT):
+    """variables_markdown() arguments of the shaft FMU `name` built with `shaft`."""
+    stepper = ShaftStepper(shaft)
+    seats = ", ".join(f"{k} `{s}`" for k, s in enumerate(stepper.model.shaft.seat_names, start=1))
+    about = [
+        f"Shaft `{shaft}` (`{name}_shaft.toml`), seats {seats}: connect "
+        "each seat's `K_<seat>[i,j]` to its bearing FMU's `K[i,j]`. Reference result of the Python model: "
+        f"`{name}_ref.csv`. Variables declared in `spindle/shaft/declarations.py`; SI units."
+    ]
+    parameters = shaft_parameter_declarations(shaft)
+    return name, SpindleShaft.description, about, parameters, stepper.inputs, stepper.outputs
+
+
 def thermal_variables(name, built=None):
     """variables_markdown() arguments of the thermal FMU `name`, built with `built` = (network, axial_float)
     (default: THERMAL_FMUS[name])."""
@@ -135,7 +204,7 @@ def thermal_variables(name, built=None):
 def all_variables():
     """variables_markdown() arguments of every FMU, bearing scenes first."""
     out = [bearing_build.scene_variables(f) for f in bearing_build.scene_files()]
-    return out + [thermal_variables(name) for name in THERMAL_FMUS]
+    return out + [thermal_variables(name) for name in THERMAL_FMUS] + [shaft_variables()]
 
 
 def _names(variables, units=True):
@@ -143,9 +212,10 @@ def _names(variables, units=True):
     (`bearing_data.*`: the numeric bearing parameters) once, with its size."""
     shown = []
     for v in variables:
-        if v.name.startswith("K["):
-            if v.name == "K[1,1]":
-                shown.append("`K[i,j]` (i, j = 1..5)")
+        if v.name.startswith("K") and v.name.endswith("]"):  # K[i,j] of a bearing, K_<seat>[i,j] of a shaft seat
+            head = v.name.split("[")[0]
+            if v.name == f"{head}[1,1]":
+                shown.append(f"`{head}[i,j]` (i, j = 1..5)")
             continue
         if "." in v.name:
             group = v.name.split(".")[0]
@@ -161,6 +231,8 @@ def _summary(name, scene):
     """A few words on what the FMU models: its fidelity's summary (with its drive), or its network options."""
     if scene:
         return FIDELITIES[scene[0].fidelity].summary(scene[0])
+    if name == SHAFT_FMU:
+        return "rotor finite-element shaft on bearing seats"
     return "thermal spindle" + (", axial float of a fixed-preload pair" if THERMAL_FMUS[name][1] else "")
 
 
@@ -203,7 +275,7 @@ def build_all(out_dir=DEFAULT_OUT):
     """Build every FMU into out_dir; returns their paths."""
     paths = [bearing_build.build_fmu(scene, out_dir) for scene in bearing_build.scene_files()]
     paths += [build_thermal_fmu(name, network, axial, out_dir) for name, (network, axial) in THERMAL_FMUS.items()]
-    return paths
+    return paths + [build_shaft_fmu(out_dir)]
 
 
 def main(argv=None):

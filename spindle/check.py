@@ -68,9 +68,11 @@ def experiment(fmu_path, model_name):
     """The reference experiment of an FMU from the files next to it: (input dicts, one per point, the
     communication step ending at each point (s), whether the reference has the initialisation's point).
     Point 0 is the state after initialisation (its step is 0; inputs None: the start values).
-    Thermal FMUs: (None, None, True), their experiment comes from the reference's time column."""
+    Thermal and shaft FMUs: (None, None, True), their experiment comes from the reference's time column."""
     folder = Path(fmu_path).resolve().parent
     scene_file, network_file = folder / f"{model_name}_scene.toml", folder / f"{model_name}_network.toml"
+    if (folder / f"{model_name}_shaft.toml").is_file():
+        return None, None, True
     if scene_file.is_file():
         from bearing_fmu.build import reference_inputs
         from bearing_fmu.scene import Scene
@@ -84,7 +86,9 @@ def experiment(fmu_path, model_name):
         return rows, [0.0] + [1.0] * (len(rows) - 1), True  # a static model: the step length does not matter
     if network_file.is_file():
         return None, None, True
-    raise FileNotFoundError(f"{fmu_path}: neither {scene_file.name} nor {network_file.name} next to it")
+    raise FileNotFoundError(
+        f"{fmu_path}: none of {scene_file.name}, {network_file.name}, {model_name}_shaft.toml next to it"
+    )
 
 
 def simulate(fmu_path, inputs, steps):
@@ -168,11 +172,12 @@ def check_fmu(fmu_path, reference_csv=None):
     output_names = {v.name for v in md.modelVariables if v.causality == "output"}
     compared = [c for c in columns if c in output_names and c not in NOT_COMPARED]
     inputs, steps, initial = experiment(fmu_path, name)
-    if inputs is None:  # thermal FMU: constant reference inputs, the reference's own time step
-        from spindle.all_fmus import reference_inputs
+    if inputs is None:  # thermal or shaft FMU: constant reference inputs, the reference's own time step
+        from spindle.all_fmus import reference_inputs, shaft_reference_inputs
 
+        shaft_file = folder / f"{name}_shaft.toml"
         model = SimpleNamespace(inputs=[v for v in md.modelVariables if v.causality == "input"])
-        constant = reference_inputs(model)
+        constant = shaft_reference_inputs(shaft_file) if shaft_file.is_file() else reference_inputs(model)
         times = reference["time"]
         inputs = [constant] * len(times)
         steps = [0.0, *np.diff(times)]

@@ -51,6 +51,18 @@ def _thermal_fmu(name):
     return path
 
 
+def _shaft_fmu():
+    """Path of fmus/SpindleShaft.fmu; rebuilt if it is missing or older than any source it bundles (the spindle
+    package and the shared one)."""
+    from bearing_fmu.build import COMMON_DIR
+    from spindle.all_fmus import SHAFT_FMU, SPINDLE_DIR, build_shaft_fmu
+
+    path = FMU_DIR / f"{SHAFT_FMU}.fmu"
+    if _stale(path, (COMMON_DIR, SPINDLE_DIR)):
+        build_shaft_fmu(FMU_DIR)
+    return path
+
+
 def _session_fixture(doc, path_of, *args):
     """A session fixture (its docstring: doc) giving path_of(*args): the path of an FMU, built at most once."""
 
@@ -82,6 +94,10 @@ spindle_thermal_fixed_fmu = _session_fixture(
     "SpindleThermalFixed.fmu: the default network with the axial-float inputs (fixed preload).",
     _thermal_fmu,
     "SpindleThermalFixed",
+)
+
+spindle_shaft_fmu = _session_fixture(
+    "SpindleShaft.fmu: the default shaft's rotor model with its two bearing seats.", _shaft_fmu
 )
 
 

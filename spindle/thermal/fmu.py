@@ -13,8 +13,6 @@ logged there and refused again by the first doStep (fmi2Discard): the network st
 the first doStep that accepts them, so the host can correct an input and continue.
 """
 
-from pythonfmu.enums import Fmi2Status
-
 from bearing_fmu_common.fmi import DeclaredSlave, check_parameters, declared_parameter
 
 from .declarations import parameter_declarations
@@ -52,16 +50,6 @@ class SpindleThermal(DeclaredSlave):
     def _inputs(self):
         return dict(zip(self._input_names, self._u))
 
-    def _guarded(self, action, status=Fmi2Status.error, note=""):
-        """Run action(); on an exception log its message (with the FMI status that the calling function returns,
-        and `note` appended) and return False."""
-        try:
-            action()
-            return True
-        except Exception as exc:  # logged as the model's own message, not a traceback
-            self.log(f"{self.instance_name}: {exc}{note}", status)
-            return False
-
     def _build(self):
         """The model for the parameters (raises on a refused one)."""
         check_parameters(self, self._parameters)
@@ -96,19 +84,9 @@ class SpindleThermal(DeclaredSlave):
         self._started = True
 
     def exit_initialization_mode(self):
-        self._ready = self._guarded(self._build)
-        if not self._ready:
-            return False  # fmi2Error from fmi2ExitInitializationMode
-        # a bad input is logged once as a warning (fmi2Warning returned) and refused by the first doStep
-        if not self._guarded(self._start, Fmi2Status.warning, " (refused at the first doStep unless corrected)"):
-            return Fmi2Status.warning
-        return True
+        return self._initialised(self._build, self._start)
 
     def do_step(self, current_time, step_size):
-        if not self._ready:
-            self.log(f"{self.instance_name}: not initialised (see the error at initialisation)", Fmi2Status.discard)
-            return False
-
         def step():
             if not self._started:  # the inputs at initialisation were refused: start from the current ones
                 self._start()
@@ -116,7 +94,7 @@ class SpindleThermal(DeclaredSlave):
             # (libcosim counts integer nanoseconds, fmpy multiplies n H) then integrate the same step, bit for bit
             self._y = self._model.update(round(step_size, COMMUNICATION_DIGITS), self._u).tolist()
 
-        return self._guarded(step, Fmi2Status.discard)  # False: fmi2Discard
+        return self._stepped(step)
 
     def _get_fmu_state(self):
         state = super()._get_fmu_state()

@@ -16,7 +16,7 @@ from spindle.check import ATOL_SCALE, RTOL, compare
 from tests.conftest import FMU_DIR, ROOT, _fmu
 
 SHIPPED = ["Bearing", "BearingAnalytic", "BearingDEM", "BearingDisp", "BearingFixed"]
-THERMAL = ["SpindleThermal", "SpindleThermalFixed"]
+THERMAL = ["SpindleThermal", "SpindleThermalFixed", "SpindleShaft"]
 
 
 def recipe():
@@ -34,7 +34,7 @@ def run_recipe(folder):
 
 
 @pytest.fixture(scope="module")
-def user_folder(tmp_path_factory, spindle_thermal_fmu, spindle_thermal_fixed_fmu):
+def user_folder(tmp_path_factory, spindle_thermal_fmu, spindle_thermal_fixed_fmu, spindle_shaft_fmu):
     """A user's checkout: fmus/ with every shipped FMU and the files the check reads beside it."""
     scenes = {"Bearing": "quasi_static", "BearingAnalytic": "analytic", "BearingDEM": "dem"}
     scenes |= {"BearingDisp": "quasi_static_displacement", "BearingFixed": "quasi_static_fixed_preload"}
@@ -43,7 +43,7 @@ def user_folder(tmp_path_factory, spindle_thermal_fmu, spindle_thermal_fixed_fmu
     folder = tmp_path_factory.mktemp("user") / "fmus"
     folder.mkdir()
     for name in SHIPPED + THERMAL:
-        for suffix in (".fmu", "_ref.csv", "_scene.toml", "_network.toml"):
+        for suffix in (".fmu", "_ref.csv", "_scene.toml", "_network.toml", "_shaft.toml"):
             if (FMU_DIR / f"{name}{suffix}").is_file():
                 shutil.copy(FMU_DIR / f"{name}{suffix}", folder)
     return folder.parent

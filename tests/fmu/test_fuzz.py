@@ -37,6 +37,7 @@ FIXTURES = {
     "BearingDEM": "dem_fmu",
     "SpindleThermal": "spindle_thermal_fmu",
     "SpindleThermalFixed": "spindle_thermal_fixed_fmu",
+    "SpindleShaft": "spindle_shaft_fmu",
 }
 FUZZED = [
     (name, v.name)

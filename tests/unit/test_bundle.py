@@ -6,7 +6,7 @@ from pathlib import Path
 
 from bearing_fmu.build import BEARING_BUNDLE, COMMON_DIR, PACKAGE_DIR
 from bearing_fmu.bundle import run_modules
-from spindle.all_fmus import THERMAL_BUNDLE
+from spindle.all_fmus import SHAFT_BUNDLE, THERMAL_BUNDLE
 
 # modules an FMU never runs: building FMUs and film tables, the numerical EHL solver, the native layer's build and
 # its hosts, the command line, the master
@@ -45,6 +45,15 @@ def test_a_thermal_fmu_carries_no_bearing_model_nor_master():
     assert "spindle/thermal/fmu.py" in files and ("spindle/thermal/bearings" in files)
 
 
+def test_the_shaft_fmu_carries_its_model_and_catalogue_only():
+    """No bearing model, no thermal model, nothing offline: the shaft model (numpy only) and its shaft files."""
+    files = carried(SHAFT_BUNDLE)
+    assert not files & set(OFFLINE)
+    assert not any(f.startswith(("bearing_fmu/", "spindle/thermal/", "spindle/cosim/")) for f in files)
+    assert {"spindle/shaft/fmu.py", "spindle/shaft/model.py", "spindle/shaft/beam.py"} <= files
+    assert "spindle/shaft/params/rabreau_b7214c.toml" in files
+
+
 def test_every_fmu_carries_the_same_files_of_the_shared_package():
     """A process keeps one bearing_fmu_common, the first FMU's: an FMU of another kind set up after it must find the
     same files there (the layer refuses it otherwise, docs/fmu_runtime.md, Its own code)."""
@@ -52,7 +61,7 @@ def test_every_fmu_carries_the_same_files_of_the_shared_package():
     def common(bundle):
         return {dest for _, dest in bundle if dest.startswith("bearing_fmu_common/")}
 
-    assert common(BEARING_BUNDLE) == common(THERMAL_BUNDLE)
+    assert common(BEARING_BUNDLE) == common(THERMAL_BUNDLE) == common(SHAFT_BUNDLE)
     assert "bearing_fmu_common/layout.py" in common(THERMAL_BUNDLE)  # the bearing FMUs run it, the thermal ones not
 
 

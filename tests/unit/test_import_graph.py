@@ -135,7 +135,7 @@ LAYERS = (
     ("co-simulation master", ("spindle.cosim",)),
     ("build", ("bearing_fmu.build", "bearing_fmu.bundle", "bearing_fmu.compiled_code", "bearing_fmu.fmu_files",
                "spindle.all_fmus", "bearing_fmu_common.runtime")),
-    ("FMU slaves", ("bearing_fmu.fmu", "spindle.thermal.fmu", "bearing_fmu_common.fmi",
+    ("FMU slaves", ("bearing_fmu.fmu", "spindle.thermal.fmu", "spindle.shaft.fmu", "bearing_fmu_common.fmi",
                     "bearing_fmu_common.first_start")),
     ("fidelity registry", ("bearing_fmu.fidelities",)),
     ("models (facades, declarations, scenes, parameter files)", (

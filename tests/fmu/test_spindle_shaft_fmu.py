@@ -1,0 +1,173 @@
+"""SpindleShaft.fmu (docs/shaft.md): the shaft's rotor model packaged as an FMI 2.0 co-simulation FMU.
+
+- fmpy.validate_fmu finds no problem; every variable has a description, every Real a unit; the variables are the
+  declarations of spindle/shaft/declarations.py (registered from spindle.shaft.stepper's tables);
+- fmpy.simulate_fmu of the built FMU, and a hand-written loop changing the speed and the seats' stiffness, equal the
+  Python model (spindle.shaft.stepper.ShaftStepper) bit for bit: the FMU runs the same code in the same interpreter;
+- a stiffer front seat raises f_1 as the model says;
+- the critical speeds (a second eigenproblem) are computed again only when a seat's K or c changes;
+- bad inputs (NaN speed, a negative diagonal stiffness, seats that leave the shaft free) are refused with fmi2Discard
+  and a message naming the input, its value and the allowed range; a corrected input steps again; an unknown `shaft`
+  fails fmi2ExitInitializationMode with fmi2Error. Run in a fresh process (tests/fmu/probe.py).
+"""
+
+import json
+import math
+import shutil
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+import pytest
+from fmpy import read_model_description, simulate_fmu
+from fmpy.validation import validate_fmu
+
+from spindle.shaft.stepper import ShaftStepper
+from tests.fmu.harness import assert_variables_documented, opened, read_outputs
+
+OMEGA = 10000.0 * 2.0 * math.pi / 60.0  # rad/s
+
+
+@pytest.fixture(scope="module")
+def stepper():
+    return ShaftStepper()
+
+
+def start_inputs(stepper):
+    return {v.name: v.start for v in stepper.inputs}
+
+
+def test_validate_fmu_and_variables_are_the_declarations(spindle_shaft_fmu, stepper):
+    assert validate_fmu(str(spindle_shaft_fmu)) == []
+    md = read_model_description(str(spindle_shaft_fmu))
+    assert md.coSimulation is not None
+    assert_variables_documented(md)
+    by_causality = {
+        c: [v.name for v in md.modelVariables if v.causality == c] for c in ("parameter", "input", "output")
+    }
+    assert by_causality == {
+        "parameter": ["shaft"],
+        "input": [v.name for v in stepper.inputs],
+        "output": [v.name for v in stepper.outputs],
+    }
+    # one stiffness input per entry of a bearing FMU's K[i,j], per seat
+    assert {f"K_{s}[{i},{j}]" for s in (1, 2) for i in range(1, 6) for j in range(1, 6)} <= set(by_causality["input"])
+
+
+def test_simulate_fmu_equals_the_python_model(spindle_shaft_fmu, stepper):
+    """fmpy's simulate_fmu with the start values and the reference speed: every output row is the model's."""
+    result = simulate_fmu(str(spindle_shaft_fmu), stop_time=1.0, output_interval=0.25, start_values={"omega": OMEGA})
+    ref = stepper.outputs_values(list((start_inputs(stepper) | {"omega": OMEGA}).values()))
+    assert len(result) == 5
+    for row in result:
+        assert {n: row[n] for n in ref} == ref
+    assert ref["f_1"] > 100.0 and ref["critical_speed_1"] > OMEGA  # a stiff spindle: first critical above 10 000 rpm
+
+
+def test_hand_written_loop_with_seat_changes_equals_the_model(spindle_shaft_fmu, stepper):
+    """Speed and seat stiffness change between steps; a stiffer front seat (radial and tilt) raises f_1 as the model
+    says, and the FMU's outputs are the model's bit for bit."""
+    inputs = start_inputs(stepper)
+    changes = [
+        {"omega": OMEGA},
+        {"K_1[1,1]": 5e8, "K_1[2,2]": 5e8, "K_1[4,4]": 1e5, "K_1[5,5]": 1e5},
+        {"omega": 2.0 * OMEGA, "c_2": 5000.0},
+    ]
+    integers = {v.name for v in stepper.outputs if v.kind == "integer"}
+    names = [v.name for v in stepper.outputs]
+    f_1 = []
+    with opened(spindle_shaft_fmu, "loop") as (fmu, vr):
+        for k, change in enumerate(changes):
+            inputs.update(change)
+            fmu.setReal([vr[n] for n in inputs], list(inputs.values()))
+            fmu.doStep(0.1 * k, 0.1)
+            ref = stepper.outputs_values(list(inputs.values()))
+            assert read_outputs(fmu, vr, names, integers) == ref, k
+            f_1.append(ref["f_1"])
+    assert f_1[1] > f_1[0]
+
+
+def test_critical_speeds_are_kept_until_a_seat_changes():
+    stepper = ShaftStepper()
+    u = list((start_inputs(stepper) | {"omega": OMEGA}).values())
+    first = stepper.evaluate(u)
+    assert stepper.critical_evaluations == 1
+    u[0] = 2.0 * OMEGA  # the speed does not enter the synchronous critical speeds
+    stepper.evaluate(u)
+    u[1] *= 1.0 + 1e-12  # K_1[1,1]: below the relative change of 1e-9
+    again = stepper.evaluate(u)
+    assert stepper.critical_evaluations == 1
+    assert again[-2:] == first[-2:]
+    u[1] *= 1.5
+    changed = stepper.evaluate(u)
+    assert stepper.critical_evaluations == 2
+    assert changed[-2] != first[-2]
+    u[26] *= 2.0  # c_1
+    stepper.evaluate(u)
+    assert stepper.critical_evaluations == 3
+
+
+BAD_INPUT_SCRIPT = textwrap.dedent("""
+    import json, shutil, sys
+    sys.path.insert(0, {fmu_tests!r})
+    import probe
+    path = {path!r}
+    report = {{}}
+    fmu, vr, unzip = probe.open_fmu(path)
+    fmu.setReal([vr["omega"]], [{omega!r}])
+    report["good"] = probe.step_status(fmu, 0.0, 0.1)
+    before = fmu.getReal([vr["f_1"], vr["compliance_radial"]])
+    free = {{f"K_{{s}}[{{i}},{{j}}]": 0.0 for s in (1, 2) for i in range(1, 6) for j in range(1, 6)}}
+    for n, bad in enumerate([{{"omega": float("nan")}}, {{"K_1[3,3]": -5.0}}, free]):
+        del probe.messages[:]
+        fmu.setReal([vr[k] for k in bad], list(bad.values()))
+        status = probe.step_status(fmu, 0.1 * (n + 1), 0.1)
+        report[str(n)] = dict(status=status, outputs=fmu.getReal([vr["f_1"], vr["compliance_radial"]]),
+                              messages=list(probe.messages))
+        fmu.setReal([vr[k] for k in bad], [{start}[k] for k in bad])
+    report["recovered"] = dict(status=probe.step_status(fmu, 0.5, 0.1), outputs=fmu.getReal([vr["f_1"]]))
+    report["before"] = before
+    fmu.terminate(); fmu.freeInstance(); shutil.rmtree(unzip, ignore_errors=True)
+    del probe.messages[:]
+    fmu, vr, unzip = probe.open_fmu(path, {{"shaft": "no_such_100%_shaft"}})
+    report["unknown_shaft"] = dict(init_status=probe.init_statuses[-1], messages=list(probe.messages))
+    fmu.freeInstance(); shutil.rmtree(unzip, ignore_errors=True)
+    print(json.dumps(report))
+""")
+
+
+def test_bad_inputs_are_refused_with_their_range_and_the_host_survives(spindle_shaft_fmu, stepper):
+    start = {v.name: v.start for v in stepper.inputs} | {"omega": OMEGA}
+    script = BAD_INPUT_SCRIPT.format(
+        fmu_tests=str(Path(__file__).parent), path=str(spindle_shaft_fmu), omega=OMEGA, start=start
+    )
+    proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, (proc.returncode, proc.stderr[-3000:])
+    report = json.loads(proc.stdout.strip().splitlines()[-1])
+    assert report["good"] == 0
+    for case, text in (
+        ("0", "omega = nan rad/s is outside the allowed range [0, 10000] rad/s"),
+        ("1", "K_1[3,3] = -5.0 N/m is outside the allowed range [0, 1e+13] N/m"),
+        ("2", "the seat stiffness leaves the shaft free"),
+    ):
+        refused = report[case]
+        assert refused["status"] == 2, case  # fmi2Discard: the step is refused, the instance lives on
+        assert refused["outputs"] == report["before"], case  # the last accepted outputs, never NaN
+        errors = [m["message"] for m in refused["messages"] if m["status"] == 2]
+        assert any(text in m for m in errors), (case, refused["messages"])
+    assert "K_1[1,1] = 0" in str(report["2"]["messages"]) and "allowed" in str(report["2"]["messages"])
+    assert report["recovered"]["status"] == 0 and report["recovered"]["outputs"] == report["before"][:1]
+    unknown = report["unknown_shaft"]
+    assert unknown["init_status"] == 3  # fmi2Error from fmi2ExitInitializationMode
+    assert any("no_such_100%%_shaft" in m["message"] and "rabreau_b7214c" in m["message"] for m in unknown["messages"])
+
+
+def test_spindle_check_runs_the_reference_experiment(spindle_shaft_fmu, tmp_path):
+    """`spindle check` finds the shaft FMU's experiment from the shaft file beside it and matches its reference."""
+    from spindle.check import check_fmu
+
+    for suffix in (".fmu", "_ref.csv", "_shaft.toml"):
+        shutil.copy(spindle_shaft_fmu.with_name(f"SpindleShaft{suffix}"), tmp_path)
+    result = check_fmu(tmp_path / "SpindleShaft.fmu")
+    assert result.differences == [] and result.rows == 5 and result.outputs == 24
