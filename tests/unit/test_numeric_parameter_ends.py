@@ -74,6 +74,8 @@ def with_companions(base, name, end):
 
 @pytest.mark.parametrize("name,end", ends(BEARING_QUANTITIES))
 def test_every_declared_end_of_a_bearing_parameter_is_a_bearing(name, end):
+    """The 6208 with this one value at a declared end (and the companions that end needs) is accepted as a bearing:
+    bearing_from_values raises ParameterError, failing the test, for a value it refuses."""
     values = with_companions(B6208, name, end)
     if values.get("bearing_data.Pd") is None:  # the clearance of the contact angle (the file's rule)
         D, f_i, f_o = (values[f"bearing_data.{k}"] for k in ("D", "f_i", "f_o"))
@@ -121,6 +123,8 @@ NETWORK_COMPANIONS = {  # (dimension, end) -> the other dimensions of a bearing 
 
 @pytest.mark.parametrize("var", dimension_declarations(NETWORK)[1:], ids=lambda v: v.name)
 def test_every_declared_end_of_a_network_dimension_is_a_network(var):
+    """The rig's network with this dimension at each declared end is accepted: with_dimensions raises, failing the
+    test, for a value it refuses."""
     for end in (var.min, var.max):
         values = dict(DIMENSIONS)
         if var.name.startswith("bearing_"):
