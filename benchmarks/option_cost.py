@@ -19,6 +19,7 @@ import numpy as np
 
 from bearing_fmu.kernels import contact_outputs as ck
 from bearing_fmu.kernels import jones_harris, radial_bearing
+from bearing_fmu.kernels.capacitance import CAP_ON
 from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.models.quasi_static import DOF_NAMES, LOAD_NAMES, QuasiStaticModel
 from bearing_fmu.scene import Scene
@@ -96,7 +97,7 @@ def quasi_static_steps(label, bearing, drive, rpm, inputs, gyroscopic):
     fns = []
     for codes in VARIANTS.values():
         qs, cp = m.qs.copy(), m.cp.copy()
-        cp[ck.CP_CAPACITANCE], cp[ck.CP_TORQUE], qs[jones_harris.QS_STIFFNESS] = codes
+        cp[ck.CP_CAPACITANCE_BLOCK + CAP_ON], cp[ck.CP_TORQUE], qs[jones_harris.QS_STIFFNESS] = codes
         work = (np.zeros(5), np.zeros((2, Z)), np.zeros(5), np.zeros((5, 5)), np.zeros((jones_harris.BQ_SIZE, Z)))
         outs = (np.zeros(ck.CO_SIZE), np.zeros((ck.PC_SIZE, Z)), np.zeros(4))
         args = (F_applied, m.control, d0, X0, qs, omega, T_OIL, cp, m.lubricant.array, *work, *outs)

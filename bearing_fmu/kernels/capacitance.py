@@ -11,19 +11,39 @@ Outside the Hertz ellipse (scene option capacitance_region = "lubricated", docs/
 around the contact, h_c plus the separation of the Hertz-loaded surfaces (Johnson 1985, Contact Mechanics,
 section 3.4: the displacement of an elliptical Hertz pressure at any point of the surface), holds oil up to the
 oil-availability gap h_oil; outside_hertz_capacitance integrates eps_0 eps_r / h over that region.
+
+The capacitance submodel is a block of CAP_SIZE numbers (models.race_contacts.capacitance_block) that each
+fidelity's parameter array embeds at one offset; capacitance off is the null block, all 0, with which no
+permittivity or capacitance is computed and the capacitance outputs are left untouched.
+
+Layout of the block (float64[CAP_SIZE]):
+  CAP_ON: 1 = capacitance submodel on; 0 = off: nothing else is read
+  CAP_PRESSURE: where the film's permittivity is taken (PRESSURE_MAX, PRESSURE_MEAN)
+  CAP_H_FLOOR: film floor of the parallel plates (m)
+  CAP_BACKGROUND: background capacitance added to the balls' (F)
+  CAP_OIL_GAP: oil-availability gap (m) outside the Hertz zones; 0 = the Hertz zones only (region 'hertz')
 """
 
 import math
 
 from bearing_fmu_common.jit import kernel
+from bearing_fmu_common.layout import Layout
 
 from .lubricant import dowson_higginson_density, permittivity_from_density
 from .roots import illinois_update
 
 EPSILON_0 = 8.8541878128e-12  # F/m, vacuum permittivity (CODATA 2018)
 
+# the submodel's block (layout in the module docstring), with the codes of its CAP_PRESSURE
+_CAP_SLOTS = Layout()
+CAP_ON = _CAP_SLOTS.slot()
+CAP_PRESSURE = _CAP_SLOTS.slot()
 PRESSURE_MAX = 0  # eps_r evaluated at the Hertz maximum pressure (default, Farah)
 PRESSURE_MEAN = 1  # eps_r evaluated at the mean Hertz pressure (2/3 p_max)
+CAP_H_FLOOR = _CAP_SLOTS.slot()
+CAP_BACKGROUND = _CAP_SLOTS.slot()
+CAP_OIL_GAP = _CAP_SLOTS.slot()
+CAP_SIZE = _CAP_SLOTS.size
 
 
 @kernel

@@ -16,12 +16,22 @@ import math
 from bearing_fmu_common.jit import kernel
 from bearing_fmu_common.layout import Layout
 
-from .capacitance import ball_capacitance
+from .capacitance import CAP_BACKGROUND, CAP_ON, CAP_SIZE, ball_capacitance
 from .ehl import friction_coefficient, lubrication_regime
 from .ehl_contact import METHOD_CAPACITANCE, METHOD_LUBRICATED, contact_method, lubricated_contact, oil_state
 from .film_correction import FT_SIZE
 from .jones_harris import BQ_P_SLIP_I, BQ_Q_I, BQ_Q_O, BQ_SPIN_I, BQ_SPIN_O, BQ_U_I, BQ_U_O, BQ_W_M
-from .lubrication import ball_drag_power, mixture, rolling_force_factor
+from .lubrication import (
+    LM_DRAG,
+    LM_DRAG_AREA,
+    LM_DRAG_X,
+    LM_ON,
+    LM_SIZE,
+    LM_THERMAL,
+    ball_drag_power,
+    mixture,
+    rolling_force_factor,
+)
 from .torque import TL_EHL, TL_SIZE, contact_losses
 
 # layout of the contact parameter array (built by the model)
@@ -40,26 +50,16 @@ CP_E_RED = _CP_SLOTS.slot()  # reduced modulus (Pa)
 CP_SIGMA_I = _CP_SLOTS.slot()  # composite roughness (m)
 CP_SIGMA_O = _CP_SLOTS.slot()
 CP_FILM = _CP_SLOTS.slot()  # film formula code
-CP_PRESSURE = _CP_SLOTS.slot()
-CP_H_FLOOR = _CP_SLOTS.slot()  # capacitance film floor (m)
-CP_C_BACKGROUND = _CP_SLOTS.slot()
 CP_ALPHA_H = _CP_SLOTS.slot()  # hysteresis loss factor (-)
 CP_F_I = _CP_SLOTS.slot()  # inner conformity (-)
 CP_F_O = _CP_SLOTS.slot()
 CP_D = _CP_SLOTS.slot()  # ball diameter (m)
-CP_CAPACITANCE = _CP_SLOTS.slot()  # 1 = capacitance submodel on; 0 = null submodel (its slots are not written)
 CP_TORQUE = _CP_SLOTS.slot()  # 1 = loss (torque and heat) submodel on; 0 = null submodel (its slots are not written)
-# oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
-CP_OIL_GAP = _CP_SLOTS.slot()
-# lubrication method (kernels.lubrication, models.lubrication); CP_LUBRICATED = 0 (flooded): none of it is read
-CP_LUBRICATED = _CP_SLOTS.slot()  # 1 = film factors on (CO_PHI_* written); 0 = flooded, isothermal
-CP_THERMAL = _CP_SLOTS.slot()  # 1 = inlet shear heating factor on
-CP_H_OIL = _CP_SLOTS.slot()  # inlet oil layer (m; inf = no starvation)
-CP_K_OIL = _CP_SLOTS.slot()  # oil thermal conductivity (W/(m K))
-CP_DRAG = _CP_SLOTS.slot()  # 1 = drag of the balls on (with CP_TORQUE; CO_P_DRAG, CO_TORQUE_DRAG written)
-CP_DRAG_X = _CP_SLOTS.slot()  # oil-volume fraction of the fluid the balls move through (-)
-CP_DRAG_AREA = _CP_SLOTS.slot()  # time-mean part of a ball's frontal area in it (-)
 CP_DM = _CP_SLOTS.slot()  # pitch diameter (m)
+# capacitance submodel (kernels.capacitance layout, CAP_SIZE slots; CAP_ON 0 = off: CO_C_BEARING, PC_C_* not written)
+CP_CAPACITANCE_BLOCK = _CP_SLOTS.slot(CAP_SIZE)
+# lubrication method (kernels.lubrication layout, LM_SIZE slots; LM_ON 0 = flooded: CO_PHI_*, CO_*_DRAG not written)
+CP_LUBRICATION_BLOCK = _CP_SLOTS.slot(LM_SIZE)
 # film correction table (kernels.film_correction layout, FT_SIZE slots; its FT_ON 0 = off)
 CP_FILM_TABLE = _CP_SLOTS.slot(FT_SIZE)
 CP_SIZE = _CP_SLOTS.size
@@ -94,8 +94,7 @@ CO_PHI_RS_O = _CO_SLOTS.slot()  # ... outer
 CO_SIZE = _CO_SLOTS.size
 
 # the slots of kernels.ehl_contact.contact_method's constants in the contact parameter array
-_METHOD_SLOTS = (CP_E_RED, CP_FILM, CP_FILM_TABLE, CP_LUBRICATED, CP_K_OIL, CP_THERMAL, CP_H_OIL, CP_CAPACITANCE,
-                 CP_PRESSURE, CP_H_FLOOR, CP_OIL_GAP)  # fmt: skip
+_METHOD_SLOTS = (CP_E_RED, CP_FILM, CP_FILM_TABLE, CP_LUBRICATION_BLOCK, CP_CAPACITANCE_BLOCK)
 # sums started at 0 whatever the options, and those of the loss submodel (with its TL_SIZE components at CO_P_EHL)
 _SUMS = (CO_QMAX_I, CO_QMAX_O, CO_PMAX, CO_N_LOADED, CO_HC_I, CO_HC_O)
 _LOSS_SUMS = (CO_Q_INNER_RING, CO_Q_OUTER_RING)
@@ -122,15 +121,16 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
     omega: inner-ring speed (rad/s); T_oil: oil temperature (K); cp: CP_* array; lub: lubricant
     array; balls: per-ball rows of kernels.jones_harris (BQ_*); out: CO_* outputs (filled);
     per_contact: float64[PC_SIZE, Z] (filled); losses: float64[TL_SIZE] work array.
-    The capacitance and loss submodels run only when cp[CP_CAPACITANCE] / cp[CP_TORQUE] is set; a
+    The capacitance and loss submodels run only when the capacitance block's CAP_ON / cp[CP_TORQUE] is set; a
     submodel that is off does none of its work and leaves its slots of out and per_contact untouched
     (capacitance: CO_C_BEARING, PC_C_*; losses: CO_P_LOSS, CO_Q_*_RING, CO_TORQUE, CO_P_EHL.., PC_P_*).
     """
     Z = balls.shape[1]
-    capacitance = cp[CP_CAPACITANCE] > 0.5
     torque = cp[CP_TORQUE] > 0.5
     method = contact_method(cp, _METHOD_SLOTS)
-    oil = oil_state(T_oil, lub, method[METHOD_LUBRICATED], cp[CP_THERMAL] > 0.5, capacitance)
+    capacitance = method[METHOD_CAPACITANCE]
+    lm = CP_LUBRICATION_BLOCK
+    oil = oil_state(T_oil, lub, method[METHOD_LUBRICATED], cp[lm + LM_THERMAL] > 0.5, capacitance)
     eta, xi, rho0 = oil[0], oil[1], oil[2]
     _start_sums(cp, out)
     for j in range(Z):
@@ -146,12 +146,12 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
             out[CO_LAMBDA_I + race] = 0.0
             out[CO_HMIN_I + race] = 0.0
     out[CO_REGIME] = lubrication_regime(min(out[CO_LAMBDA_I], out[CO_LAMBDA_O]))
-    if torque and cp[CP_DRAG] > 0.5:  # the drag heats the oil, which passes it to both rings: half each
-        rho_e, eta_e = mixture(cp[CP_DRAG_X], rho0, eta)
+    if torque and cp[lm + LM_DRAG] > 0.5:  # the drag heats the oil, which passes it to both rings: half each
+        rho_e, eta_e = mixture(cp[lm + LM_DRAG_X], rho0, eta)
         P_drag = 0.0
         for j in range(Z):
             v = 0.5 * cp[CP_DM] * balls[BQ_W_M, j]
-            P_drag += ball_drag_power(v, cp[CP_D], rho_e, eta_e, cp[CP_DRAG_AREA])
+            P_drag += ball_drag_power(v, cp[CP_D], rho_e, eta_e, cp[lm + LM_DRAG_AREA])
         out[CO_P_DRAG] = P_drag
         out[CO_TORQUE_DRAG] = P_drag / abs(omega) if omega != 0.0 else 0.0
         out[CO_Q_INNER_RING] += 0.5 * P_drag
@@ -177,9 +177,9 @@ def _start_sums(cp, out):
             out[k] = 0.0
         for t in range(TL_SIZE):
             out[CO_P_EHL + t] = 0.0
-    if cp[CP_CAPACITANCE] > 0.5:
-        out[CO_C_BEARING] = cp[CP_C_BACKGROUND]
-    if cp[CP_LUBRICATED] > 0.5:
+    if cp[CP_CAPACITANCE_BLOCK + CAP_ON] > 0.5:
+        out[CO_C_BEARING] = cp[CP_CAPACITANCE_BLOCK + CAP_BACKGROUND]
+    if cp[CP_LUBRICATION_BLOCK + LM_ON] > 0.5:
         for k in range(CO_PHI_ISH_I, CO_PHI_RS_O + 1):
             out[k] = 1.0
 

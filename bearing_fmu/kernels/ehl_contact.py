@@ -9,17 +9,18 @@ give the same contact for the same load (docs/quasistatic.md, docs/lubrication_m
 3. the lubrication method's inlet shear heating and starvation factors on a loaded contact (kernels.lubrication);
 4. the film parameter Λ (kernels.ehl) and, on a loaded contact with the capacitance submodel on, its capacitance
    (kernels.capacitance).
-Each fidelity packs its own parameter array; it hands over the constants these steps read as tuples (SI units).
+Each fidelity packs its own parameter array, which embeds the film correction, lubrication method and capacitance
+blocks at offsets of its own; it hands over the constants these steps read as tuples (SI units).
 """
 
 from bearing_fmu_common.jit import kernel
 
-from .capacitance import lubricated_contact_capacitance
+from .capacitance import CAP_H_FLOOR, CAP_OIL_GAP, CAP_ON, CAP_PRESSURE, lubricated_contact_capacitance
 from .ehl import film_parameter
 from .film_correction import corrected_film_thickness
 from .hertz import hertz_contact
 from .lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
-from .lubrication import film_factors, temperature_viscosity_coefficient
+from .lubrication import LM_H_OIL, LM_K_OIL, LM_ON, LM_THERMAL, film_factors, temperature_viscosity_coefficient
 
 # The kernels here are inlined into their callers: called once per contact with their tuples (one holding the film
 # table, an array) they would cost the quasi-static contact outputs about 40 % more time.
@@ -45,12 +46,14 @@ def oil_state(T_oil, lub, lubricated, thermal, capacitance):
 
 @kernel(inline="always")
 def contact_method(arr, slots):
-    """lubricated_contact's `method` from a fidelity's parameter array arr, in which slots gives the index of each of
-    its constants (E_red, film formula code, the film correction table's first slot, lubricated, k_oil, thermal,
-    h_oil, capacitance, permittivity pressure choice, film floor, oil gap): each fidelity has its own layout."""
-    e_red, film, table, lubricated, k_oil, thermal, h_oil, capacitance, pressure, h_floor, oil_gap = slots
-    return (arr[e_red], int(arr[film]), arr[table:], arr[lubricated] > 0.5, arr[k_oil], arr[thermal], arr[h_oil],
-            arr[capacitance] > 0.5, int(arr[pressure]), arr[h_floor], arr[oil_gap])  # fmt: skip
+    """lubricated_contact's `method` from a fidelity's parameter array arr, in which slots gives the index of E_red
+    and of the film formula code, then the offsets of the blocks the fidelity embeds: the film correction table
+    (kernels.film_correction FT_*; read from its offset to the end of arr), the lubrication method (kernels.lubrication
+    LM_*) and the capacitance submodel (kernels.capacitance CAP_*)."""
+    e_red, film, table, lm, cap = slots
+    return (arr[e_red], int(arr[film]), arr[table:], arr[lm + LM_ON] > 0.5, arr[lm + LM_K_OIL], arr[lm + LM_THERMAL],
+            arr[lm + LM_H_OIL], arr[cap + CAP_ON] > 0.5, int(arr[cap + CAP_PRESSURE]), arr[cap + CAP_H_FLOOR],
+            arr[cap + CAP_OIL_GAP])  # fmt: skip
 
 
 @kernel(inline="always")

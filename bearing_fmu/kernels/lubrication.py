@@ -1,8 +1,18 @@
 """Lubrication method: starved and thermally reduced EHL film, and the drag of the balls in the oil.
 
 docs/lubrication_method.md gives the sources, the choices and the comparison with the SKF model. SI units.
-The scene's lubrication method (models.lubrication) sets the parameters that these kernels read from the
-facades' arrays; the flooded method (today's isothermal, fully flooded contact without drag) calls none of them.
+The scene's lubrication method (models.lubrication.lubrication_block) is a block of LM_SIZE numbers that each
+fidelity's parameter array embeds at one offset; the flooded method (the isothermal, fully flooded contact without
+drag) is the null block, all 0, with which none of these kernels is called.
+
+Layout of the method's block (float64[LM_SIZE]):
+  LM_ON: 1 = a method other than flooded (film factors on); 0 = flooded: nothing else is read
+  LM_THERMAL: 1 = inlet shear heating factor on
+  LM_H_OIL: inlet oil layer (m; inf = no starvation)
+  LM_K_OIL: oil thermal conductivity (W/(m K))
+  LM_DRAG: 1 = drag of the balls on (with the loss submodel)
+  LM_DRAG_X: oil-volume fraction of the fluid the balls move through (-)
+  LM_DRAG_AREA: time-mean part of a ball's frontal area in it (-)
 
 Film factors of one contact (multiplying the flooded Hamrock-Dowson film of kernels.ehl):
 - inlet shear heating, phi_ish: the thermal reduction factor of Gupta, Cheng, Zhu, Forster & Schrand (1992,
@@ -35,6 +45,7 @@ Re = 1000, 0.44 above (Clift, Grace & Weber 1978, Bubbles, Drops and Particles, 
 import math
 
 from bearing_fmu_common.jit import kernel
+from bearing_fmu_common.layout import Layout
 
 from .lubricant import lubricant_state
 from .roots import illinois_update
@@ -46,9 +57,20 @@ METHOD_OIL_JET = 2
 METHOD_OIL_AIR = 3
 METHOD_GREASE = 4
 
+# the method's block (layout in the module docstring) and the constants of its terms: the film factors ...
+_LM_SLOTS = Layout()
+LM_ON = _LM_SLOTS.slot()
+LM_THERMAL = _LM_SLOTS.slot()
+LM_H_OIL = _LM_SLOTS.slot()
+LM_K_OIL = _LM_SLOTS.slot()
 F_R_FILM_EXPONENT = 0.656 / 0.67  # F_R ~ U^0.656 (Houpert), h_c ~ U^0.67 (Hamrock-Dowson): effective viscosity
 BETA_STEP = 0.5  # K: step of the central difference of ln(eta) in T
+# ... and the drag of the balls
+LM_DRAG = _LM_SLOTS.slot()
+LM_DRAG_X = _LM_SLOTS.slot()
+LM_DRAG_AREA = _LM_SLOTS.slot()
 REYNOLDS_NEWTON = 1000.0  # sphere drag: Schiller-Naumann below, Newton's regime (C_D = 0.44) above
+LM_SIZE = _LM_SLOTS.size
 
 
 @kernel

@@ -17,14 +17,14 @@ import math
 from bearing_fmu_common.jit import kernel
 from bearing_fmu_common.layout import Layout
 
-from .capacitance import ball_capacitance
+from .capacitance import CAP_BACKGROUND, CAP_SIZE, ball_capacitance
 from .ehl import lubrication_regime
 from .ehl_contact import METHOD_CAPACITANCE, METHOD_LUBRICATED, contact_method, lubricated_contact, oil_state
 from .film_correction import FT_SIZE
 from .geometry import centrifugal_force, pass_frequencies, rolling_kinematics
 from .hertz import hertz_stiffness, series_stiffness
 from .loaddist import load_parameter, solve_radial_shift
-from .lubrication import ball_drag_power, mixture
+from .lubrication import LM_DRAG, LM_DRAG_AREA, LM_DRAG_X, LM_SIZE, LM_THERMAL, ball_drag_power, mixture
 
 # layout of the bearing parameter array (built by bearing_fmu.models.analytic)
 _B_SLOTS = Layout()
@@ -47,22 +47,13 @@ B_M_BALL = _B_SLOTS.slot()  # ball mass (kg)
 B_SIGMA_I = _B_SLOTS.slot()  # composite roughness, inner contact (m)
 B_SIGMA_O = _B_SLOTS.slot()  # composite roughness, outer contact (m)
 B_FILM = _B_SLOTS.slot()  # film formula code (kernels.ehl)
-B_PRESSURE = _B_SLOTS.slot()  # permittivity pressure choice (kernels.capacitance)
-B_H_FLOOR = _B_SLOTS.slot()  # film floor for capacitance (m)
-B_C_BACKGROUND = _B_SLOTS.slot()  # background capacitance (F)
 B_CENTRIFUGAL = _B_SLOTS.slot()  # 1 = centrifugal load on, 0 = off
 B_TOL = _B_SLOTS.slot()  # relative tolerance of the radial equilibrium (-)
-# 1 = capacitance submodel on; 0 = null submodel (O_C_BEARING and ball rows C_i, C_o not written)
-B_CAPACITANCE = _B_SLOTS.slot()
-B_OIL_GAP = _B_SLOTS.slot()  # oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
-# lubrication method (kernels.lubrication, models.lubrication); B_LUBRICATED = 0 (flooded): none of it is read
-B_LUBRICATED = _B_SLOTS.slot()  # 1 = film factors on (O_PHI_* written)
-B_THERMAL = _B_SLOTS.slot()  # 1 = inlet shear heating factor on
-B_H_OIL = _B_SLOTS.slot()  # inlet oil layer (m; inf = no starvation)
-B_K_OIL = _B_SLOTS.slot()  # oil thermal conductivity (W/(m K))
-B_DRAG = _B_SLOTS.slot()  # 1 = drag of the balls on (O_P_DRAG, O_TORQUE_DRAG written)
-B_DRAG_X = _B_SLOTS.slot()  # oil-volume fraction of the fluid the balls move through (-)
-B_DRAG_AREA = _B_SLOTS.slot()  # time-mean part of a ball's frontal area in it (-)
+# capacitance submodel (kernels.capacitance layout, CAP_SIZE slots; its CAP_ON 0 = off: O_C_BEARING and the ball
+# rows C_i, C_o not written)
+B_CAPACITANCE_BLOCK = _B_SLOTS.slot(CAP_SIZE)
+# lubrication method (kernels.lubrication layout, LM_SIZE slots; its LM_ON 0 = flooded: O_PHI_*, O_*_DRAG not written)
+B_LUBRICATION_BLOCK = _B_SLOTS.slot(LM_SIZE)
 # film correction table (kernels.film_correction layout, FT_SIZE slots; its FT_ON 0 = off)
 B_FILM_TABLE = _B_SLOTS.slot(FT_SIZE)
 B_SIZE = _B_SLOTS.size
@@ -102,8 +93,7 @@ O_PHI_RS_O = _O_SLOTS.slot()  # ... outer
 O_SIZE = _O_SLOTS.size
 
 # the slots of kernels.ehl_contact.contact_method's constants in the bearing array
-_METHOD_SLOTS = (B_E_RED, B_FILM, B_FILM_TABLE, B_LUBRICATED, B_K_OIL, B_THERMAL, B_H_OIL, B_CAPACITANCE, B_PRESSURE,
-                 B_H_FLOOR, B_OIL_GAP)  # fmt: skip
+_METHOD_SLOTS = (B_E_RED, B_FILM, B_FILM_TABLE, B_LUBRICATION_BLOCK, B_CAPACITANCE_BLOCK)
 
 # the races' summaries of _ball_contacts: minima over the loaded contacts, maxima and counts
 _MINIMA = (O_LAMBDA_I, O_LAMBDA_O, O_HMIN_I, O_HMIN_O, O_HC_I, O_HC_O)
@@ -118,7 +108,7 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     brg: bearing array (B_* layout); lub: lubricant array (kernels.lubricant LUB_* layout);
     nodes, weights: Gauss-Legendre rule; out: float64[O_SIZE] (filled); ball: float64[8, Z] work
     array filled per ball with rows Q_i, Q_o (N), h_min_i, h_min_o (m), Lambda_i, Lambda_o (-),
-    C_i, C_o (F). With brg[B_CAPACITANCE] = 0 the capacitance submodel is null: no permittivity or
+    C_i, C_o (F). With the capacitance block off (CAP_ON = 0) the submodel is null: no permittivity or
     capacitance is computed and out[O_C_BEARING] and the rows C_i, C_o are left untouched.
     """
     Z = int(brg[B_Z])
@@ -127,7 +117,8 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     Pd = brg[B_PD]
     E_red = brg[B_E_RED]
     method = contact_method(brg, _METHOD_SLOTS)
-    oil = oil_state(T_oil, lub, method[METHOD_LUBRICATED], brg[B_THERMAL] > 0.5, method[METHOD_CAPACITANCE])
+    lm = B_LUBRICATION_BLOCK
+    oil = oil_state(T_oil, lub, method[METHOD_LUBRICATED], brg[lm + LM_THERMAL] > 0.5, method[METHOD_CAPACITANCE])
     w_cage, w_ball_rel, w_ball_fixed, u = rolling_kinematics(omega, D, dm, 0.0)
     F_c = 0.0
     if brg[B_CENTRIFUGAL] > 0.5:
@@ -149,9 +140,9 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     out[O_ITER] = iters
     out[O_OMEGA_BALL_CAGE] = abs(w_ball_rel)
     out[O_FTF], out[O_BPFO], out[O_BPFI], out[O_BSF] = pass_frequencies(omega, w_cage, w_ball_rel, Z)
-    if brg[B_DRAG] > 0.5:  # every ball orbits at the cage speed
-        rho_e, eta_e = mixture(brg[B_DRAG_X], rho0, eta)
-        P_drag = Z * ball_drag_power(0.5 * dm * w_cage, D, rho_e, eta_e, brg[B_DRAG_AREA])
+    if brg[lm + LM_DRAG] > 0.5:  # every ball orbits at the cage speed
+        rho_e, eta_e = mixture(brg[lm + LM_DRAG_X], rho0, eta)
+        P_drag = Z * ball_drag_power(0.5 * dm * w_cage, D, rho_e, eta_e, brg[lm + LM_DRAG_AREA])
         out[O_P_DRAG] = P_drag
         out[O_TORQUE_DRAG] = P_drag / abs(omega) if omega != 0.0 else 0.0
 
@@ -176,7 +167,7 @@ def _ball_contacts(delta_r, K, F_c, u, brg, oil, method, out, ball):
         for k in range(O_PHI_ISH_I, O_PHI_RS_O + 1):
             out[k] = 1.0
     if capacitance:
-        out[O_C_BEARING] = brg[B_C_BACKGROUND]
+        out[O_C_BEARING] = brg[B_CAPACITANCE_BLOCK + CAP_BACKGROUND]
     # cos(2 pi j / Z) is not exactly 0 at 90 deg: a compression below this is rounding, not contact
     d_zero = 1e-12 * (abs(delta_r) + abs(Pd))
     for j in range(Z):

@@ -18,7 +18,8 @@ from ..kernels.geometry import ball_mass, curvature_radii
 from ..kernels.hertz import hertz_coefficients_approx, hertz_coefficients_exact, reduced_modulus
 from ..kernels.loaddist import gauss_legendre
 from ..params import check_roughness, load_bearing, load_lubricant
-from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES, Scene
+from ..scene import FILM_FORMULAS, Scene
+from .blocks import capacitance_block, write_blocks
 from .declarations import ANALYTIC_INPUTS, ANALYTIC_OUTPUTS, ANALYTIC_PARAMETERS
 from .fidelity import Fidelity
 from .film_table import film_table_array
@@ -31,7 +32,7 @@ from .limits import (
     material_load_limit,
     pressure_warnings,
 )
-from .lubrication import Lubrication, LubricationWatch, pack_lubrication
+from .lubrication import Lubrication, LubricationWatch, lubrication_block
 from .race_contacts import RaceContacts, truncation_parameters, truncation_warnings
 
 GAUSS_NODES = 48  # quadrature points on the loaded arc (J_r(0.5) exact to < 1e-8)
@@ -141,16 +142,17 @@ class AnalyticModel:
         brg[radial_bearing.B_SIGMA_I] = s.roughness_factor * math.hypot(b.Ra_inner, b.Ra_ball)
         brg[radial_bearing.B_SIGMA_O] = s.roughness_factor * math.hypot(b.Ra_outer, b.Ra_ball)
         brg[radial_bearing.B_FILM] = FILM_FORMULAS[s.film]
-        brg[radial_bearing.B_PRESSURE] = PERMITTIVITY_PRESSURES[s.permittivity_pressure]
-        brg[radial_bearing.B_H_FLOOR] = s.film_floor
-        brg[radial_bearing.B_C_BACKGROUND] = s.background_capacitance
-        brg[radial_bearing.B_OIL_GAP] = s.oil_gap if s.capacitance_region == "lubricated" else 0.0
         brg[radial_bearing.B_CENTRIFUGAL] = 1.0 if s.centrifugal else 0.0
         brg[radial_bearing.B_TOL] = s.tolerance
-        brg[radial_bearing.B_CAPACITANCE] = 1.0 if s.capacitance else 0.0
         self.lubrication_numbers = Lubrication(s, b.D, b.dm)
-        pack_lubrication(brg, radial_bearing, "B_", self.lubrication_numbers)
-        brg[radial_bearing.B_FILM_TABLE :] = film_table_array(b, self.lubricant, s.film_correction, self.film_tables)
+        write_blocks(
+            brg,
+            (
+                (radial_bearing.B_FILM_TABLE, film_table_array(b, self.lubricant, s.film_correction, self.film_tables)),
+                (radial_bearing.B_LUBRICATION_BLOCK, lubrication_block(self.lubrication_numbers)),
+                (radial_bearing.B_CAPACITANCE_BLOCK, capacitance_block(s)),
+            ),
+        )
         return brg
 
     def _race_contacts(self):

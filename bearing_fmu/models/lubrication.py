@@ -17,6 +17,14 @@ import numpy as np
 
 from ..kernels.lubricant import LUB_VISC_MODEL, VISCOSITY_CONSTANT
 from ..kernels.lubrication import (
+    LM_DRAG,
+    LM_DRAG_AREA,
+    LM_DRAG_X,
+    LM_H_OIL,
+    LM_K_OIL,
+    LM_ON,
+    LM_SIZE,
+    LM_THERMAL,
     METHOD_FLOODED,
     METHOD_GREASE,
     METHOD_OIL_AIR,
@@ -151,21 +159,19 @@ def immersed_area_fraction(H, D, dm, points=3600):
     return float(np.mean((theta - np.sin(theta)) / (2.0 * np.pi)))
 
 
-def pack_lubrication(array, slots, prefix, lubrication, losses=True):
-    """Write the method's slots <prefix>LUBRICATED, THERMAL, H_OIL, K_OIL, DRAG, DRAG_X, DRAG_AREA of `array`
-    (slots: the kernel module naming them); the drag only with the losses submodel on (`losses`). The flooded
-    method leaves them all 0: nothing of the method is computed."""
+def lubrication_block(lubrication, losses=True):
+    """The method's block (kernels.lubrication LM_* layout, float64[LM_SIZE]) that a fidelity's parameter array
+    embeds; the drag only with the losses submodel on (`losses`). The flooded method is the null block, all 0:
+    nothing of the method is computed."""
     lub = lubrication
+    block = np.zeros(LM_SIZE)
     if not lub.on:
-        return
-    values = {
-        "LUBRICATED": 1.0,
-        "THERMAL": 1.0 if lub.thermal else 0.0,
-        "H_OIL": lub.h_oil,
-        "K_OIL": lub.k_f,
-        "DRAG": 1.0 if lub.drag and losses else 0.0,
-        "DRAG_X": lub.X,
-        "DRAG_AREA": lub.area_fraction,
-    }
-    for name, value in values.items():
-        array[getattr(slots, prefix + name)] = value
+        return block
+    block[LM_ON] = 1.0
+    block[LM_THERMAL] = 1.0 if lub.thermal else 0.0
+    block[LM_H_OIL] = lub.h_oil
+    block[LM_K_OIL] = lub.k_f
+    block[LM_DRAG] = 1.0 if lub.drag and losses else 0.0
+    block[LM_DRAG_X] = lub.X
+    block[LM_DRAG_AREA] = lub.area_fraction
+    return block

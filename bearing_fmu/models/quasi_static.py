@@ -25,6 +25,7 @@ from ..kernels.lubricant import lubricant_state
 from ..kernels.torque import TL_SIZE
 from ..params import check_roughness, load_bearing, load_lubricant
 from ..scene import LUBRICATION_METHODS, RACE_CONTROLS, Scene
+from .blocks import capacitance_block, write_blocks
 from .declarations import (
     DEFAULT_FIXED_PRELOAD,
     DISPLACEMENT_LIMIT,
@@ -48,7 +49,7 @@ from .limits import (
     material_load_limit,
     pressure_warnings,
 )
-from .lubrication import Lubrication, LubricationWatch, pack_lubrication
+from .lubrication import Lubrication, LubricationWatch, lubrication_block
 from .race_contacts import (
     contact_terms,
     pack,
@@ -268,19 +269,23 @@ class QuasiStaticModel:
         qs[jones_harris.QS_STIFFNESS] = 1.0 if s.stiffness else 0.0
         self._traction = self.race_control == "traction"
         if self._traction:
-            qs[jones_harris.QS_TRACTION :] = traction_block(b, s, rc, self.lubricant)
+            write_blocks(qs, ((jones_harris.QS_TRACTION, traction_block(b, s, rc, self.lubricant)),))
         cp = np.zeros(ck.CP_SIZE)
         pack(cp, ck, "CP_", contact_terms(b, s, rc))
-        cp[ck.CP_C_BACKGROUND] = s.background_capacitance
         cp[ck.CP_D] = b.D
-        cp[ck.CP_CAPACITANCE] = 1.0 if s.capacitance else 0.0
         cp[ck.CP_TORQUE] = 1.0 if s.torque else 0.0
+        cp[ck.CP_DM] = b.dm
         if self.lubrication != s.lubrication:  # the parameter's method at its defaults
             s = replace(s, lubrication=self.lubrication, oil_level=None, inlet_oil_layer=None, cavity_oil_fraction=None)
         self.lubrication_numbers = Lubrication(s, b.D, b.dm)
-        pack_lubrication(cp, ck, "CP_", self.lubrication_numbers, s.torque)
-        cp[ck.CP_DM] = b.dm
-        cp[ck.CP_FILM_TABLE :] = film_table_array(b, self.lubricant, s.film_correction, self.film_tables)
+        write_blocks(
+            cp,
+            (
+                (ck.CP_FILM_TABLE, film_table_array(b, self.lubricant, s.film_correction, self.film_tables)),
+                (ck.CP_LUBRICATION_BLOCK, lubrication_block(self.lubrication_numbers, s.torque)),
+                (ck.CP_CAPACITANCE_BLOCK, capacitance_block(s)),
+            ),
+        )
         return qs, cp
 
     def _rating_parameters(self):

@@ -13,7 +13,7 @@ from ..kernels import truncation as tk
 from ..kernels.geometry import curvature_radii, free_contact_angle
 from ..kernels.hertz import hertz_coefficients_approx, hertz_coefficients_exact, hertz_contact, reduced_modulus
 from ..kernels.torque import ALPHA_HYSTERESIS_STEEL
-from ..scene import FILM_FORMULAS, PERMITTIVITY_PRESSURES
+from ..scene import FILM_FORMULAS
 
 
 class RaceContacts(NamedTuple):
@@ -40,8 +40,7 @@ def race_contacts(bearing, scene, Pd):
 
 def contact_terms(bearing, scene, rc):
     """Slot name (without its array's prefix) -> value of the contact terms both fidelities' arrays hold:
-    radii (m), Hertz coefficients, reduced modulus (Pa), composite roughness (m), film and permittivity
-    options (codes), film floor (m), oil-availability gap of the capacitance (m, 0: Hertz zones only), hysteresis
+    radii (m), Hertz coefficients, reduced modulus (Pa), composite roughness (m), film formula (code), hysteresis
     factor, conformities."""
     b = bearing
     return {
@@ -59,9 +58,6 @@ def contact_terms(bearing, scene, rc):
         "SIGMA_I": scene.roughness_factor * math.hypot(b.Ra_inner, b.Ra_ball),
         "SIGMA_O": scene.roughness_factor * math.hypot(b.Ra_outer, b.Ra_ball),
         "FILM": FILM_FORMULAS[scene.film],
-        "PRESSURE": PERMITTIVITY_PRESSURES[scene.permittivity_pressure],
-        "H_FLOOR": scene.film_floor,
-        "OIL_GAP": scene.oil_gap if scene.capacitance_region == "lubricated" else 0.0,
         "ALPHA_H": ALPHA_HYSTERESIS_STEEL,
         "F_I": b.f_i,
         "F_O": b.f_o,

@@ -39,6 +39,7 @@ import numpy as np
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
+from bearing_fmu.kernels import capacitance as capk  # layout constants (CAP_*) only
 from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.kernels.lubricant import LUB_EPS_R0, LUB_RHO_REF
 from tests.reference import ref_ball_dynamics_contact_law as contacts
@@ -156,18 +157,18 @@ def refresh(st, par, lub, omega, T_oil):
             trib[s.T_H_MIN, race, j] = h_min
             trib[s.T_H_C, race, j] = h_c
             trib[s.T_LAMBDA, race, j] = lam
-            if par[s.P_CAPACITANCE]:
+            if par[s.P_CAPACITANCE_BLOCK + capk.CAP_ON]:
                 trib[s.T_CAP, race, j] = ref_capacitance.lubricated_contact_capacitance(
                     K_cm,
                     rho0,
                     p_max,
-                    int(par[s.P_PRESSURE]),
+                    int(par[s.P_CAPACITANCE_BLOCK + capk.CAP_PRESSURE]),
                     a,
                     b,
                     h_c,
-                    par[s.P_H_FLOOR],
+                    par[s.P_CAPACITANCE_BLOCK + capk.CAP_H_FLOOR],
                     par[s.P_E_RED],
-                    par[s.P_OIL_GAP],
+                    par[s.P_CAPACITANCE_BLOCK + capk.CAP_OIL_GAP],
                     outside=ref_capacitance.assembly_outside,
                 )
 

@@ -12,19 +12,21 @@ Summaries (docs/quasistatic.md): minimum Lambda and h_min over the loaded contac
 central film h_c of its most loaded contact (0 when a race has none), regime of the worse race, largest
 loads and pressure, balls loaded on both races, bearing capacitance = background + balls (inner and outer
 contacts in series) in parallel, power loss = both rings' heats, torque = power / |omega| (0 at rest).
-Lubrication method (cp[CP_LUBRICATED] set; ref_lubrication): the flooded films of a loaded contact times the
-inlet-shear-heating and starvation factors before Lambda, mu, capacitance; the EHL loss times the rolling-force
-factor; the factors of the most loaded contact of each race; with the losses, the drag of every ball at its
-orbital speed, half its heat to each ring.
+Lubrication method (its block at CP_LUBRICATION_BLOCK on; ref_lubrication): the flooded films of a loaded contact
+times the inlet-shear-heating and starvation factors before Lambda, mu, capacitance; the EHL loss times the
+rolling-force factor; the factors of the most loaded contact of each race; with the losses, the drag of every ball
+at its orbital speed, half its heat to each ring.
 The cp, lub and balls arrays are read through the kernels' layout constants only. A submodel that is
 off is a null submodel: its outputs are NaN here (the kernel does not write them).
 """
 
 import numpy as np
 
+from bearing_fmu.kernels import capacitance as capk  # layout constants (CAP_*) only
 from bearing_fmu.kernels import contact_outputs as ck  # layout constants (CP_*, CO_*, PC_*) only
 from bearing_fmu.kernels import jones_harris  # layout constants (BQ_*) only
 from bearing_fmu.kernels import lubricant as lk  # layout constants (LUB_*) only
+from bearing_fmu.kernels import lubrication as lmk  # layout constants (LM_*) only
 
 from . import ref_capacitance, ref_ehl, ref_film_correction, ref_hertz, ref_lubricant, ref_lubrication, ref_torque
 
@@ -34,6 +36,9 @@ RACES = (  # (name, cp offsets of Rx, Ry, k, E, K; sigma; conformity; load, roll
     ("outer", (ck.CP_RX_O, ck.CP_RY_O, ck.CP_K_O, ck.CP_EE_O, ck.CP_KK_O), ck.CP_SIGMA_O, ck.CP_F_O,
      jones_harris.BQ_Q_O, jones_harris.BQ_U_O, jones_harris.BQ_SPIN_O),
 )  # fmt: skip
+# the lubrication method's and the capacitance submodel's blocks in the contact array
+LM = ck.CP_LUBRICATION_BLOCK
+CAP = ck.CP_CAPACITANCE_BLOCK
 
 
 def contact(Q, u, spin, Rx, Ry, k, ell_E, ell_K, sigma, f, cp, race, eta, xi, rho0, lub, capacitance, torque, beta):
@@ -45,8 +50,19 @@ def contact(Q, u, spin, Rx, Ry, k, ell_E, ell_K, sigma, f, cp, race, eta, xi, rh
         int(cp[ck.CP_FILM]), eta, xi, E_red, u, Q, Rx, Ry, k, cp[ck.CP_FILM_TABLE :], race
     )
     phi = (1.0, 1.0, 1.0)
-    if cp[ck.CP_LUBRICATED] > 0.5 and Q > 0.0:
-        args = (abs(u), p_max, b, Rx, E_red, eta, beta, cp[ck.CP_K_OIL], cp[ck.CP_THERMAL], cp[ck.CP_H_OIL])
+    if cp[LM + lmk.LM_ON] > 0.5 and Q > 0.0:
+        args = (
+            abs(u),
+            p_max,
+            b,
+            Rx,
+            E_red,
+            eta,
+            beta,
+            cp[LM + lmk.LM_K_OIL],
+            cp[LM + lmk.LM_THERMAL],
+            cp[LM + lmk.LM_H_OIL],
+        )
         phi = ref_lubrication.film_factors(h_c, h_min, *args)
         h_c, h_min = h_c * phi[0] * phi[1], h_min * phi[0] * phi[2]
     lam = ref_ehl.film_parameter(h_min, sigma)
@@ -58,30 +74,30 @@ def contact(Q, u, spin, Rx, Ry, k, ell_E, ell_K, sigma, f, cp, race, eta, xi, rh
             K_cm,
             rho0,
             p_max,
-            int(cp[ck.CP_PRESSURE]),
+            int(cp[CAP + capk.CAP_PRESSURE]),
             a,
             b,
             h_c,
-            cp[ck.CP_H_FLOOR],
+            cp[CAP + capk.CAP_H_FLOOR],
             E_red,
-            cp[ck.CP_OIL_GAP],
+            cp[CAP + capk.CAP_OIL_GAP],
             outside=ref_capacitance.assembly_outside,
         )
     if Q > 0.0 and torque:
         mu = ref_ehl.friction_coefficient(lam)
         args = (Q, u, spin, Rx, Ry, a, b, ell_E, f, cp[ck.CP_D], E_red, eta, xi, mu, cp[ck.CP_ALPHA_H])
         ref_torque.contact_losses(*args, losses)
-        if cp[ck.CP_LUBRICATED] > 0.5:
+        if cp[LM + lmk.LM_ON] > 0.5:
             losses[ref_torque.TL_EHL] *= ref_lubrication.rolling_force_factor(phi[0], phi[1])
     return {"p_max": p_max, "h_c": h_c, "h_min": h_min, "Lambda": lam, "C": C, "losses": losses, "phi": phi[:2]}
 
 
 def contact_outputs(omega, T_oil, cp, lub, balls):
     """Returns (out, per_contact): arrays in the kernel's CO_* and PC_* layouts (NaN where a submodel is off)."""
-    capacitance = cp[ck.CP_CAPACITANCE] > 0.5
+    capacitance = cp[CAP + capk.CAP_ON] > 0.5
     torque = cp[ck.CP_TORQUE] > 0.5
     eta, xi, rho0 = ref_lubricant.lubricant_state(T_oil, lub)
-    lubricated = cp[ck.CP_LUBRICATED] > 0.5
+    lubricated = cp[LM + lmk.LM_ON] > 0.5
     beta = ref_lubrication.temperature_viscosity_coefficient(T_oil, lub) if lubricated else 0.0
     Z = balls.shape[1]
     res = {}  # (race name, j) -> contact dict
@@ -117,18 +133,24 @@ def contact_outputs(omega, T_oil, cp, lub, balls):
     out[ck.CO_N_LOADED] = sum(1 for j in range(Z) if res["inner", j]["Q"] > 0.0 and res["outer", j]["Q"] > 0.0)
     if capacitance:
         out[ck.CO_C_BEARING] = ref_capacitance.bearing_capacitance(
-            [res["inner", j]["C"] for j in range(Z)], [res["outer", j]["C"] for j in range(Z)], cp[ck.CP_C_BACKGROUND]
+            [res["inner", j]["C"] for j in range(Z)],
+            [res["outer", j]["C"] for j in range(Z)],
+            cp[CAP + capk.CAP_BACKGROUND],
         )
     if torque:
         for t in range(ref_torque.TL_SIZE):
             out[ck.CO_P_EHL + t] = sum(c["losses"][t] for c in everything)
         out[ck.CO_Q_INNER_RING] = sum(sum(res["inner", j]["losses"]) for j in range(Z))
         out[ck.CO_Q_OUTER_RING] = sum(sum(res["outer", j]["losses"]) for j in range(Z))
-        if cp[ck.CP_DRAG] > 0.5:
-            rho_e, eta_e = ref_lubrication.mixture(cp[ck.CP_DRAG_X], rho0, eta)
+        if cp[LM + lmk.LM_DRAG] > 0.5:
+            rho_e, eta_e = ref_lubrication.mixture(cp[LM + lmk.LM_DRAG_X], rho0, eta)
             P = sum(
                 ref_lubrication.ball_drag_power(
-                    balls[jones_harris.BQ_W_M, j] * cp[ck.CP_DM] / 2.0, cp[ck.CP_D], rho_e, eta_e, cp[ck.CP_DRAG_AREA]
+                    balls[jones_harris.BQ_W_M, j] * cp[ck.CP_DM] / 2.0,
+                    cp[ck.CP_D],
+                    rho_e,
+                    eta_e,
+                    cp[LM + lmk.LM_DRAG_AREA],
                 )
                 for j in range(Z)
             )

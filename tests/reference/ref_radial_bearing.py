@@ -12,8 +12,8 @@ fixed, radial load along psi = 0 (docs/decisions.md):
 4. race summaries over the loaded contacts (minimum film parameter and film thickness; 0 when a
    race has no loaded contact), worst regime, largest loads and pressure, count of balls loaded
    on both races.
-Lubrication method (brg[B_LUBRICATED] set; ref_lubrication): the flooded films of each loaded contact times
-its inlet-shear-heating and starvation factors (those of ball 1, the most loaded, are outputs); the drag of the
+Lubrication method (its block at B_LUBRICATION_BLOCK on; ref_lubrication): the flooded films of each loaded contact
+times its inlet-shear-heating and starvation factors (those of ball 1, the most loaded, are outputs); the drag of the
 Z balls at the cage's orbital speed. Flooded: the factors are 1 and the drag 0 here (the kernel writes neither).
 The brg and lub arrays are read through the kernels' layout constants (B_*, LUB_*) only; the Hertz
 coefficients (k, E, K) are taken from brg as the kernel does (they are its inputs; the unit test
@@ -22,7 +22,9 @@ checks them separately against ref_hertz).
 
 import math
 
+from bearing_fmu.kernels import capacitance as capk  # layout constants (CAP_*) only
 from bearing_fmu.kernels import lubricant as lk  # layout constants (LUB_*) only
+from bearing_fmu.kernels import lubrication as lmk  # layout constants (LM_*) only
 from bearing_fmu.kernels import radial_bearing  # layout constants (B_*) only
 
 from . import (
@@ -39,6 +41,9 @@ from . import (
 BALL_ROWS = ("Q_i", "Q_o", "h_min_i", "h_min_o", "Lambda_i", "Lambda_o", "C_i", "C_o")
 # a race's contact constant -> the stem of its slot in the bearing array (B_<stem>_I, B_<stem>_O)
 RACE_SLOTS = {"Rx": "RX", "Ry": "RY", "k": "K", "E": "EE", "K": "KK", "sigma": "SIGMA"}
+# the lubrication method's and the capacitance submodel's blocks in the bearing array
+LM = radial_bearing.B_LUBRICATION_BLOCK
+CAP = radial_bearing.B_CAPACITANCE_BLOCK
 
 
 def analytic_bearing(omega, F_r, T_oil, brg, lub):
@@ -59,12 +64,12 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
         for r in ("i", "o")
     }
     film_code = int(brg[radial_bearing.B_FILM])
-    pressure_choice = int(brg[radial_bearing.B_PRESSURE])
-    h_floor = brg[radial_bearing.B_H_FLOOR]
+    pressure_choice = int(brg[CAP + capk.CAP_PRESSURE])
+    h_floor = brg[CAP + capk.CAP_H_FLOOR]
 
     eta, xi, rho0 = ref_lubricant.lubricant_state(T_oil, lub)
     K_cm = ref_lubricant.clausius_mossotti_constant(lub[lk.LUB_EPS_R0], lub[lk.LUB_RHO_REF])
-    lubricated = brg[radial_bearing.B_LUBRICATED] > 0.5
+    lubricated = brg[LM + lmk.LM_ON] > 0.5
     beta = ref_lubrication.temperature_viscosity_coefficient(T_oil, lub) if lubricated else 0.0
     phis = {"i": (1.0, 1.0), "o": (1.0, 1.0)}
     omega_cage, omega_ball_cage, omega_ball, u = ref_geometry.rolling_kinematics(omega, D, dm, 0.0)
@@ -81,7 +86,7 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
     balls = {name: [] for name in BALL_ROWS}
     loaded = {"i": [], "o": []}  # (Lambda, h_min, h_c) of the loaded contacts of each race
     pressures = []
-    C_bearing = brg[radial_bearing.B_C_BACKGROUND]
+    C_bearing = brg[CAP + capk.CAP_BACKGROUND]
     n_loaded = 0
     for j in range(Z):
         psi = 2.0 * math.pi * j / Z
@@ -110,7 +115,7 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
                 "io".index(s),
             )
             if lubricated and Q > 0.0:
-                method = (brg[radial_bearing.B_K_OIL], brg[radial_bearing.B_THERMAL], brg[radial_bearing.B_H_OIL])
+                method = (brg[LM + lmk.LM_K_OIL], brg[LM + lmk.LM_THERMAL], brg[LM + lmk.LM_H_OIL])
                 phi = ref_lubrication.film_factors(h_c, h_min, abs(u), p_max, b_x, c["Rx"], E_red, eta, beta, *method)
                 h_c, h_min = h_c * phi[0] * phi[1], h_min * phi[0] * phi[2]
                 if j == 0:
@@ -128,7 +133,7 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
                     h_c,
                     h_floor,
                     E_red,
-                    brg[radial_bearing.B_OIL_GAP],
+                    brg[CAP + capk.CAP_OIL_GAP],
                     outside=ref_capacitance.assembly_outside,
                 )
                 loaded[s].append((lam, h_min, h_c))
@@ -175,9 +180,9 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub):
     out["ftf"], out["bpfo"], out["bpfi"], out["bsf"] = frequencies
     (out["phi_ish_i"], out["phi_rs_i"]), (out["phi_ish_o"], out["phi_rs_o"]) = phis["i"], phis["o"]
     P = 0.0
-    if brg[radial_bearing.B_DRAG] > 0.5:
-        rho_e, eta_e = ref_lubrication.mixture(brg[radial_bearing.B_DRAG_X], rho0, eta)
-        P = Z * ref_lubrication.ball_drag_power(omega_cage * dm / 2.0, D, rho_e, eta_e, brg[radial_bearing.B_DRAG_AREA])
+    if brg[LM + lmk.LM_DRAG] > 0.5:
+        rho_e, eta_e = ref_lubrication.mixture(brg[LM + lmk.LM_DRAG_X], rho0, eta)
+        P = Z * ref_lubrication.ball_drag_power(omega_cage * dm / 2.0, D, rho_e, eta_e, brg[LM + lmk.LM_DRAG_AREA])
     out["p_drag"] = P
     out["torque_drag"] = P / abs(omega) if omega != 0.0 else 0.0
     return out, balls

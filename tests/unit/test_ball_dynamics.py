@@ -23,6 +23,7 @@ from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.kernels.ball_dynamics.contact_law import groove_approach
 from bearing_fmu.kernels.ball_dynamics.monitor import critical_time_step
 from bearing_fmu.kernels.ball_dynamics.tribology import ring_axis
+from bearing_fmu.kernels.capacitance import CAP_OIL_GAP
 from bearing_fmu.kernels.hertz import hertz_contact
 from bearing_fmu.models.declarations import DEM_DT_MAX
 from bearing_fmu.models.dem import DemModel, DemUnstableError
@@ -81,7 +82,7 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction, sup
     par[s.P_REFRESH] = 10
     par[s.P_FILM] = film
     par[s.P_TRACTION] = traction
-    par[s.P_OIL_GAP] = oil_gap
+    par[s.P_CAPACITANCE_BLOCK + CAP_OIL_GAP] = oil_gap
     if film_table:
         par[s.P_FILM_TABLE :] = made_up_table()
     if support is not None:

@@ -1,7 +1,8 @@
 """Scene options that are off are null submodels: their work is not done and their output slots are not written.
 
-The options reach the kernels as integer codes in the parameter arrays (CP_CAPACITANCE, CP_TORQUE,
-QS_STIFFNESS, B_CAPACITANCE). Each test
+The options reach the kernels as integer codes in the parameter arrays (CP_TORQUE, QS_STIFFNESS) or as blocks
+embedded in them (models.blocks: the capacitance's CAP_*, the lubrication method's LM_*, whose "off" is the null
+block). Each test
 - pre-fills the outputs with a NaN sentinel: the slots of an option that is off stay NaN, every other
   slot equals (bit for bit) the run with the option on;
 - counts the work: the kernel's own source (``py_func``), and that of the kernels it calls on the way to the
@@ -20,9 +21,12 @@ import pytest
 from bearing_fmu.kernels import capacitance as cap
 from bearing_fmu.kernels import contact_outputs as ck
 from bearing_fmu.kernels import ehl_contact, jones_harris, radial_bearing
+from bearing_fmu.kernels import lubrication as lm
 from bearing_fmu.kernels.ball_dynamics import state as ds
 from bearing_fmu.models.analytic import AnalyticModel
+from bearing_fmu.models.blocks import capacitance_block
 from bearing_fmu.models.dem import DemModel
+from bearing_fmu.models.lubrication import Lubrication, lubrication_block
 from bearing_fmu.models.quasi_static import QuasiStaticModel
 from bearing_fmu.scene import Scene
 
@@ -36,6 +40,7 @@ LOSS_OUT = (ck.CO_P_LOSS, ck.CO_Q_INNER_RING, ck.CO_Q_OUTER_RING, ck.CO_TORQUE) 
 )
 DRAG_OUT = (ck.CO_P_DRAG, ck.CO_TORQUE_DRAG)  # the lubrication method's drag: part of the loss submodel
 LUBRICATION_OUT = (ck.CO_PHI_ISH_I, ck.CO_PHI_ISH_O, ck.CO_PHI_RS_I, ck.CO_PHI_RS_O)
+CP_CAP_ON = ck.CP_CAPACITANCE_BLOCK + cap.CAP_ON  # the capacitance block's switch in the contact array
 
 
 def counting(monkeypatch, module, names, calls):
@@ -100,7 +105,7 @@ def with_code(array, slot, value):
 @pytest.mark.parametrize(
     "option, out_slots, rows, work",
     [
-        (ck.CP_CAPACITANCE, CAPACITANCE_OUT, (ck.PC_C_I, ck.PC_C_O), ("lubricated_contact_capacitance",)),
+        (CP_CAP_ON, CAPACITANCE_OUT, (ck.PC_C_I, ck.PC_C_O), ("lubricated_contact_capacitance",)),
         (
             ck.CP_TORQUE,
             LOSS_OUT + DRAG_OUT,
@@ -130,12 +135,15 @@ def test_contact_submodel_off_skips_its_work(solved, monkeypatch, option, out_sl
 
 
 def test_flooded_method_skips_its_work(solved, monkeypatch):
-    """The flooded method (CP_LUBRICATED = CP_DRAG = 0) is the former model bit for bit: the oil bath's contact
-    array with both codes 0 gives exactly the flooded model's outputs, leaves the method's slots unwritten and
-    calls none of its kernels."""
+    """The flooded method is the null lubrication block: the oil bath's contact array with its block replaced by the
+    flooded one (all 0) gives exactly the flooded model's outputs, leaves the method's slots unwritten and calls
+    none of its kernels."""
     m, balls = solved
     flooded = QuasiStaticModel("B7214C", "iso_vg68_mineral", replace(m.scene, lubrication="flooded"))
-    off_cp = with_code(with_code(m.cp, ck.CP_LUBRICATED, 0.0), ck.CP_DRAG, 0.0)
+    block = lubrication_block(flooded.lubrication_numbers)
+    assert not block.any() and block.size == lm.LM_SIZE
+    off_cp = m.cp.copy()
+    off_cp[ck.CP_LUBRICATION_BLOCK : ck.CP_LUBRICATION_BLOCK + lm.LM_SIZE] = block
     off_out, off_pc = contacts_run(m, balls, off_cp)
     ref_out, ref_pc = contacts_run(flooded, balls, flooded.cp)
     assert np.array_equal(off_out, ref_out, equal_nan=True) and np.array_equal(off_pc, ref_pc)
@@ -232,7 +240,8 @@ def test_per_ball_outputs_computed_once_after_convergence(solved, python_newton)
 def test_analytic_capacitance_off_skips_its_work(monkeypatch):
     on = AnalyticModel("6208", "guessasma_oil", Scene(capacitance=True, lubrication="oil_bath"))
     off = AnalyticModel("6208", "guessasma_oil", Scene(capacitance=False, lubrication="oil_bath"))
-    assert on.brg[radial_bearing.B_CAPACITANCE] == 1.0 and off.brg[radial_bearing.B_CAPACITANCE] == 0.0
+    cap_on = radial_bearing.B_CAPACITANCE_BLOCK + cap.CAP_ON
+    assert on.brg[cap_on] == 1.0 and off.brg[cap_on] == 0.0
 
     def run(m, kernel=radial_bearing.analytic_bearing):
         out = np.full(radial_bearing.O_SIZE, np.nan)
@@ -259,9 +268,7 @@ def test_facade_packs_the_option_codes():
         cap, tor, stf = flags
         scene = Scene(name="codes", fidelity="quasi_static", capacitance=cap, torque=tor, stiffness=stf)
         m = QuasiStaticModel("6208", "iso_vg68_mineral", scene)
-        assert (m.cp[ck.CP_CAPACITANCE], m.cp[ck.CP_TORQUE], m.qs[jones_harris.QS_STIFFNESS]) == tuple(
-            map(float, flags)
-        )
+        assert (m.cp[CP_CAP_ON], m.cp[ck.CP_TORQUE], m.qs[jones_harris.QS_STIFFNESS]) == tuple(map(float, flags))
 
 
 @pytest.mark.parametrize("region", ["hertz", "lubricated"])
@@ -270,11 +277,87 @@ def test_capacitance_region_packs_the_oil_gap_and_hertz_skips_the_outside_term(m
     outside-Hertz term; 'lubricated' packs the scene's oil_gap (m) and computes it."""
     scene = dict(capacitance_region=region, oil_gap=7e-6)
     expect = 7e-6 if region == "lubricated" else 0.0
-    assert AnalyticModel("6208", "guessasma_oil", Scene(**scene)).brg[radial_bearing.B_OIL_GAP] == expect
+    gap = cap.CAP_OIL_GAP
+    analytic = AnalyticModel("6208", "guessasma_oil", Scene(**scene))
+    assert analytic.brg[radial_bearing.B_CAPACITANCE_BLOCK + gap] == expect
     qs = QuasiStaticModel("6208", "iso_vg68_mineral", Scene(name="q", fidelity="quasi_static", **scene))
-    assert qs.cp[ck.CP_OIL_GAP] == expect
-    assert DemModel("6208", "guessasma_oil", scene=Scene(name="d", fidelity="dem", **scene)).par[ds.P_OIL_GAP] == expect
+    assert qs.cp[ck.CP_CAPACITANCE_BLOCK + gap] == expect
+    dem = DemModel("6208", "guessasma_oil", scene=Scene(name="d", fidelity="dem", **scene))
+    assert dem.par[ds.P_CAPACITANCE_BLOCK + gap] == expect
     calls = Counter()
     counting(monkeypatch, cap, ("outside_hertz_capacitance",), calls)
     C = cap.lubricated_contact_capacitance.py_func(1.5e-4, 870.0, 1.9e9, 0, 1.5e-3, 1.6e-4, 3e-7, 1e-8, 2.3e11, expect)
     assert C > 0.0 and calls["outside_hertz_capacitance"] == (1 if expect else 0)
+
+
+def test_analytic_flooded_method_skips_its_work(monkeypatch):
+    """The analytic fidelity's flooded method is the null lubrication block too: the oil bath's bearing array with
+    the flooded block gives the flooded model's outputs bit for bit, leaves the method's outputs unwritten and calls
+    none of its kernels."""
+    bath = AnalyticModel("6208", "guessasma_oil", Scene(lubrication="oil_bath"))
+    flooded = AnalyticModel("6208", "guessasma_oil", Scene())
+    off_brg = bath.brg.copy()
+    start = radial_bearing.B_LUBRICATION_BLOCK
+    off_brg[start : start + lm.LM_SIZE] = lubrication_block(flooded.lubrication_numbers)
+    assert np.array_equal(off_brg, flooded.brg)
+
+    def run(brg, kernel=radial_bearing.analytic_bearing):
+        out = np.full(radial_bearing.O_SIZE, np.nan)
+        ball = np.full((8, bath.bearing.Z), np.nan)
+        kernel(700.0, 3000.0, 313.0, brg, bath.lubricant.array, bath.nodes, bath.weights, out, ball)
+        return out, ball
+
+    method_out = [radial_bearing.O_P_DRAG, radial_bearing.O_TORQUE_DRAG]
+    method_out += list(range(radial_bearing.O_PHI_ISH_I, radial_bearing.O_PHI_RS_O + 1))
+    assert np.all(np.isnan(run(off_brg)[0][method_out])) and not np.any(np.isnan(run(bath.brg)[0][method_out]))
+    work = ("film_factors", "temperature_viscosity_coefficient", "ball_drag_power")
+    for brg, expect_work in ((off_brg, False), (bath.brg, True)):
+        calls = Counter()
+        counting_in_python(monkeypatch, radial_bearing, work, calls)
+        run(brg, radial_bearing.analytic_bearing.py_func)
+        assert (sum(calls.values()) > 0) == expect_work, calls
+        monkeypatch.undo()
+
+
+def embedded(array, offset, size):
+    return array[offset : offset + size]
+
+
+def test_every_fidelity_embeds_the_blocks_its_options_pack():
+    """Each facade writes the blocks of models.blocks at its kernel's offsets: the packing function's block with the
+    option on, the null block (all 0) with it off (flooded lubrication, capacitance off, film correction 'none')."""
+    on = dict(lubrication="oil_bath", capacitance=True, capacitance_region="lubricated", oil_gap=5e-6)
+    off = dict(lubrication="flooded", capacitance=False)
+    for options in (on, off):
+        analytic = AnalyticModel("6208", "guessasma_oil", Scene(**options))
+        qs = QuasiStaticModel("6208", "iso_vg68_mineral", Scene(name="q", fidelity="quasi_static", **options))
+        dem_options = dict(options, lubrication="flooded")  # the DEM has no lubrication method (scene refuses one)
+        dem = DemModel("6208", "guessasma_oil", scene=Scene(name="d", fidelity="dem", **dem_options))
+        lubrication = Lubrication(analytic.scene, analytic.bearing.D, analytic.bearing.dm)
+        blocks = (
+            (analytic.brg, radial_bearing.B_LUBRICATION_BLOCK, lubrication_block(lubrication)),
+            (analytic.brg, radial_bearing.B_CAPACITANCE_BLOCK, capacitance_block(analytic.scene)),
+            (qs.cp, ck.CP_LUBRICATION_BLOCK, lubrication_block(qs.lubrication_numbers, qs.scene.torque)),
+            (qs.cp, ck.CP_CAPACITANCE_BLOCK, capacitance_block(qs.scene)),
+            (dem.par, ds.P_CAPACITANCE_BLOCK, capacitance_block(dem.scene)),
+        )
+        for array, offset, block in blocks:
+            assert np.array_equal(embedded(array, offset, block.size), block)
+            assert block.any() == (options is on)
+        for array, offset in ((analytic.brg, radial_bearing.B_FILM_TABLE), (qs.cp, ck.CP_FILM_TABLE)):
+            assert not array[offset:].any()  # film correction 'none': the null table
+        assert not dem.par[ds.P_FILM_TABLE :].any()
+
+
+def test_capacitance_off_is_the_null_block_that_skips_its_work(solved, monkeypatch):
+    """The contact array of a scene without capacitance holds the null block (all 0, even the background and the oil
+    gap), and with it the contacts compute no capacitance and write none."""
+    m, balls = solved
+    off = QuasiStaticModel("B7214C", "iso_vg68_mineral", replace(m.scene, capacitance=False))
+    assert not embedded(off.cp, ck.CP_CAPACITANCE_BLOCK, cap.CAP_SIZE).any()
+    out, per_contact = contacts_run(off, balls, off.cp)
+    assert np.isnan(out[ck.CO_C_BEARING]) and np.all(np.isnan(per_contact[[ck.PC_C_I, ck.PC_C_O]]))
+    calls = Counter()
+    counting_in_python(monkeypatch, ck, ("lubricated_contact_capacitance", "ball_capacitance"), calls)
+    contacts_run(off, balls, off.cp, ck.contact_outputs.py_func)
+    assert sum(calls.values()) == 0, calls

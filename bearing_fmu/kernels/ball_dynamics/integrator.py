@@ -20,7 +20,7 @@ import numpy as np
 
 from bearing_fmu_common.jit import kernel
 
-from ..capacitance import ball_capacitance
+from ..capacitance import CAP_ON, ball_capacitance
 from ..lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
 from .cage import ball_cage_contact, cage_guide_contact
 from .contact_law import ball_race_contact, groove_approach
@@ -54,7 +54,7 @@ from .state import (
     P_C_GUIDE,
     P_C_SUPPORT,
     P_C_SUPPORT_AXIAL,
-    P_CAPACITANCE,
+    P_CAPACITANCE_BLOCK,
     P_CHATTER,
     P_CT_SUPPORT,
     P_D,
@@ -625,7 +625,7 @@ def advance(
     refresh = max(int(par[P_REFRESH]), 1)
     chatter_limit = int(par[P_CHATTER])
     damping_stop = par[P_DAMPING_STOP]
-    capacitance = par[P_CAPACITANCE] > 0.5
+    capacitance = par[P_CAPACITANCE_BLOCK + CAP_ON] > 0.5
     start_call(acc, status)
     film_i, film_o = film_losses(trib)
     ball_capacitances(trib, work)

@@ -14,6 +14,7 @@ a load F_x > 0 on the inner ring loads the ball at psi = 0. Ball 1 (index 0) sta
 
 from bearing_fmu_common.layout import Layout
 
+from ..capacitance import CAP_SIZE
 from ..film_correction import FT_SIZE
 
 # ---- steel balls: float64[B_SIZE, Z] ------------------------------------------------------------
@@ -111,8 +112,6 @@ P_E_RED = _P_SLOTS.slot()  # Hamrock's reduced modulus E' of the ball-race pair 
 P_SIGMA_I = _P_SLOTS.slot()  # composite roughness (m)
 P_SIGMA_O = _P_SLOTS.slot()
 P_FILM = _P_SLOTS.slot()  # film formula code (kernels.ehl FILM_*)
-P_PRESSURE = _P_SLOTS.slot()  # permittivity pressure code (kernels.capacitance PRESSURE_*)
-P_H_FLOOR = _P_SLOTS.slot()  # capacitance film floor (m)
 P_ALPHA_H = _P_SLOTS.slot()  # hysteresis loss factor (-)
 P_F_I = _P_SLOTS.slot()  # groove conformities (-)
 P_F_O = _P_SLOTS.slot()
@@ -143,7 +142,6 @@ P_HP_I = _P_SLOTS.slot()
 P_HA_O = _P_SLOTS.slot()  # the same for the outer contact
 P_HB_O = _P_SLOTS.slot()
 P_HP_O = _P_SLOTS.slot()
-P_CAPACITANCE = _P_SLOTS.slot()  # 1: compute the contact capacitances; 0: the scene turned them off (not computed, 0)
 P_DAMPING_STOP = _P_SLOTS.slot()  # largest (c_i + c_o) dt / m of a ball at a refresh before the monitor stops (-)
 # Coulomb override: the full-film cap of a spring-only tangential law (-); 0 = the EHL traction curve
 P_TRACTION = _P_SLOTS.slot()
@@ -163,7 +161,9 @@ P_CT_SUPPORT = _P_SLOTS.slot()  # and its tilt damping (N.m.s/rad), c (d_m/2)^2/
 # the dampers on the ring's translations (N.s/m): the automatic step keeps each one's c / m within its plan, as a
 # contact's (models.dem.time_step)
 RING_DAMPERS = (P_C_SUPPORT, P_C_SUPPORT_AXIAL)
-P_OIL_GAP = _P_SLOTS.slot()  # oil-availability gap (m) of the capacitance outside the Hertz zones; 0 = Hertz zones only
+# capacitance submodel (kernels.capacitance layout, CAP_SIZE slots; its CAP_ON 0 = off: no contact capacitance is
+# computed, they stay 0)
+P_CAPACITANCE_BLOCK = _P_SLOTS.slot(CAP_SIZE)
 # film correction table (kernels.film_correction layout, FT_SIZE slots; its FT_ON 0 = off)
 P_FILM_TABLE = _P_SLOTS.slot(FT_SIZE)
 P_SIZE = _P_SLOTS.size

@@ -26,7 +26,7 @@ import math
 from bearing_fmu_common.jit import kernel
 from bearing_fmu_common.layout import Layout
 
-from ..capacitance import lubricated_contact_capacitance
+from ..capacitance import CAP_H_FLOOR, CAP_OIL_GAP, CAP_ON, CAP_PRESSURE, lubricated_contact_capacitance
 from ..ehl import (
     FILM_HAMROCK_DOWSON,
     dimensionless_groups,
@@ -54,14 +54,13 @@ from .state import (
     B_X,
     P_ALPHA_E,
     P_ALPHA_H,
-    P_CAPACITANCE,
+    P_CAPACITANCE_BLOCK,
     P_D,
     P_E_RED,
     P_EE_I,
     P_F_I,
     P_FILM,
     P_FILM_TABLE,
-    P_H_FLOOR,
     P_HA_I,
     P_HB_I,
     P_HERTZ_SCALE_STRIDE,
@@ -69,8 +68,6 @@ from .state import (
     P_K_I,
     P_KH_I,
     P_MU_LIM,
-    P_OIL_GAP,
-    P_PRESSURE,
     P_RG_I,
     P_RHO_I,
     P_RHO_O,
@@ -288,8 +285,9 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, ge
     half_d = 0.5 * D
     film = int(par[P_FILM])
     film_table = par[P_FILM_TABLE:]
-    capacitance = par[P_CAPACITANCE] > 0.5
-    pressure = int(par[P_PRESSURE])
+    cb = P_CAPACITANCE_BLOCK
+    capacitance = par[cb + CAP_ON] > 0.5
+    pressure = int(par[cb + CAP_PRESSURE])
     traction = par[P_TRACTION]
     mu_lim = par[P_MU_LIM]
     s_0 = par[P_S_TRACTION]
@@ -388,7 +386,7 @@ def refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, ge
             trib[T_LAMBDA, race, j] = lam
             if capacitance:
                 trib[T_CAP, race, j] = lubricated_contact_capacitance(
-                    K_cm, rho0, p_max, pressure, a, b, h_c, par[P_H_FLOOR], E_red, par[P_OIL_GAP]
+                    K_cm, rho0, p_max, pressure, a, b, h_c, par[cb + CAP_H_FLOOR], E_red, par[cb + CAP_OIL_GAP]
                 )
             else:
                 trib[T_CAP, race, j] = 0.0

@@ -13,6 +13,7 @@ from ...kernels.ball_dynamics import integrator as dyn
 from ...kernels.ball_dynamics import state as s
 from ...kernels.ball_dynamics.outputs import bearing_outputs
 from ...kernels.ball_dynamics.stiffness import stiffness_matrix
+from ...kernels.capacitance import CAP_BACKGROUND
 from ...kernels.geometry import pass_frequencies
 from ...params import check_roughness, load_bearing, load_lubricant
 from ...scene import Scene
@@ -253,7 +254,7 @@ class DemModel:
             self.omega,
             interval,
             orbit0,
-            self.scene.background_capacitance,
+            self.par[s.P_CAPACITANCE_BLOCK + CAP_BACKGROUND],
             self.averaged,
             self._Q,
             self._alpha,

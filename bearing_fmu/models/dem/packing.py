@@ -11,6 +11,7 @@ from ...kernels.ball_dynamics import state as s
 from ...kernels.geometry import ball_mass
 from ...kernels.hertz import hertz_contact, hertz_stiffness
 from ...params import cage_ball_room, load_dem_constants
+from ..blocks import capacitance_block, write_blocks
 from ..dem_settings import pack_settings, pitch_lever
 from ..film_table import film_table_array
 from ..limits import P_MAX_ERROR, InputError
@@ -107,11 +108,16 @@ def pack_parameters(bearing, scene, lubricant, Pd, settings, kt_ratio, mass=None
     _pack_hertz_scales(p, rc)
     p[s.P_CHATTER] = CHATTER_STEPS
     p[s.P_DAMPING_STOP] = DAMPING_STOP
-    p[s.P_FILM_TABLE :] = film_table_array(b, lubricant, sc.film_correction, film_tables)
+    write_blocks(
+        p,
+        (
+            (s.P_FILM_TABLE, film_table_array(b, lubricant, sc.film_correction, film_tables)),
+            (s.P_CAPACITANCE_BLOCK, capacitance_block(sc)),
+        ),
+    )
     p[s.P_MU_LIM] = lubricant.traction_limit
     p[s.P_S_TRACTION] = lubricant.traction_slip
     p[s.P_FILM_RATE] = FILM_RATE
-    p[s.P_CAPACITANCE] = 1.0 if sc.capacitance else 0.0
     p[s.P_REFRESH] = 1
     return p, truncation, rest
 
