@@ -268,8 +268,7 @@ class QuasiStaticModel:
         qs[jones_harris.QS_MAXIT] = s.max_iterations
         qs[jones_harris.QS_STIFFNESS] = 1.0 if s.stiffness else 0.0
         self._traction = self.race_control == "traction"
-        if self._traction:
-            write_blocks(qs, ((jones_harris.QS_TRACTION, traction_block(b, s, rc, self.lubricant)),))
+        write_blocks(qs, ((jones_harris.QS_TRACTION, traction_block(b, s, rc, self.lubricant, self._traction)),))
         cp = np.zeros(ck.CP_SIZE)
         pack(cp, ck, "CP_", contact_terms(b, s, rc))
         cp[ck.CP_D] = b.D

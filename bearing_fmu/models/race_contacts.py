@@ -64,14 +64,17 @@ def contact_terms(bearing, scene, rc):
     }
 
 
-def traction_block(bearing, scene, rc, lubricant):
+def traction_block(bearing, scene, rc, lubricant, used=True):
     """kernels.ball_traction TR_* block of the quasi-static race control "traction": per race the Hertz ellipse at
     1 N, its elliptic integral, radii, ellipticity, conformity and composite roughness, then the lubricant's traction
     curve (the DEM's: limiting coefficient and knee), the reduced modulus, the hysteresis factor and the film formula.
-    The viscosity and pressure-viscosity slots are the facade's to set at each evaluation's oil temperature."""
+    The viscosity and pressure-viscosity slots are the facade's to set at each evaluation's oil temperature. Not
+    `used` (a race-control hypothesis, which reads none of it): the null block, all 0."""
     b = bearing
-    terms = contact_terms(b, scene, rc)
     tr = np.zeros(bt.TR_SIZE)
+    if not used:
+        return tr
+    terms = contact_terms(b, scene, rc)
     for race, (Rx, Ry, c, f, sigma) in enumerate(
         ((rc.Rx_i, rc.Ry_i, rc.ci, b.f_i, terms["SIGMA_I"]), (rc.Rx_o, rc.Ry_o, rc.co, b.f_o, terms["SIGMA_O"]))
     ):

@@ -18,6 +18,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from bearing_fmu.kernels import ball_traction as bt
 from bearing_fmu.kernels import capacitance as cap
 from bearing_fmu.kernels import contact_outputs as ck
 from bearing_fmu.kernels import ehl_contact, jones_harris, radial_bearing
@@ -361,3 +362,23 @@ def test_capacitance_off_is_the_null_block_that_skips_its_work(solved, monkeypat
     counting_in_python(monkeypatch, ck, ("lubricated_contact_capacitance", "ball_capacitance"), calls)
     contacts_run(off, balls, off.cp, ck.contact_outputs.py_func)
     assert sum(calls.values()) == 0, calls
+
+
+def test_a_race_control_hypothesis_is_the_null_traction_block(solved, monkeypatch):
+    """A race-control hypothesis packs the null traction block (all 0) and its ring loads never build the work of
+    the traction kinematics (traction_work, which hands the block to them); the race control "traction" packs the
+    block and builds it."""
+    m, _ = solved
+    traction = QuasiStaticModel("B7214C", "iso_vg68_mineral", m.scene, race_control="traction")
+    traction.evaluate(omega=OMEGA, T_oil=T_OIL, **dict(zip(("F_x", "F_y", "F_z", "M_x", "M_y"), LOADS)))
+    assert m.race_control != "traction" and not embedded(m.qs, jones_harris.QS_TRACTION, bt.TR_SIZE).any()
+    assert embedded(traction.qs, jones_harris.QS_TRACTION, bt.TR_SIZE).any()
+    Z = m.bearing.Z
+    for model, expect_work in ((m, False), (traction, True)):
+        calls = Counter()
+        counting(monkeypatch, jones_harris, ("traction_work",), calls)
+        F, K, contact = np.zeros(5), np.zeros((5, 5)), np.zeros((jones_harris.CS_SIZE, Z))
+        jones_harris.ring_loads.py_func(model.d.copy(), model.qs, 0.0, OMEGA, model.X.copy(), F, K, contact, False)
+        assert (calls["traction_work"] > 0) == expect_work, calls
+        assert np.all(np.isfinite(F)) and F[2] != 0.0
+        monkeypatch.undo()
