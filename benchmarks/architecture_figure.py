@@ -22,9 +22,10 @@ WHERE = {
     "fidelity registry": "new fidelity: its FIDELITY beside its facade, one entry here,\n"
     "its scene rules in scene.FIDELITY_RULES; FMU layer and build unchanged",
     "models (facades, declarations, scenes, parameter files)": "new parameter or output: one Variable in\n"
-    "models/declarations.py (range, unit, source slot); new block: a module whose\n"
-    "'off' variant computes nothing, switched by a scene option",
-    "kernels": "new array entry: one Layout slot (no number written);\n"
+    "models/declarations.py (range, unit, source slot); new block: its packing\n"
+    "function ('off': the null block) and one write_blocks pair per fidelity",
+    "kernels": "new array entry: one Layout slot (no number written); new block: its Layout\n"
+    "in the kernel that reads it, one slot of its size per fidelity;\n"
     "every jitted kernel has a plain-Python twin in tests/reference",
 }
 
