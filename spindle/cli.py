@@ -344,6 +344,9 @@ def cmd_campbell(args):
 
     from .campbell import OptionError, campbell_command
 
+    if _kernels_not_compiled("jones_harris"):
+        print("note: the first run compiles the quasi-static bearing's kernels (a few minutes); later runs reuse them",
+              file=sys.stderr)  # fmt: skip
     try:
         return campbell_command(args)
     except OptionError as exc:

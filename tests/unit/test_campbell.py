@@ -193,3 +193,12 @@ def test_the_command_writes_the_csv_and_the_png(tmp_path, capsys):
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert f"wrote {csv_path}, {png}" in text
     assert len(printed_critical_speeds(text)) == 1  # 1856 rad/s (17 722 rpm) below 30 000 rpm, 3876 rad/s above
+
+
+def test_a_first_run_says_it_compiles(tmp_path, capsys, monkeypatch):
+    """Without the quasi-static kernels in the compiled-code cache the command says that it compiles them first."""
+    from spindle import cli
+
+    monkeypatch.setattr(cli, "_kernels_not_compiled", lambda module: module == "jones_harris")
+    code, text, _ = run(["--points", "1"], tmp_path, capsys)
+    assert code == EXIT_INVALID and "first run compiles the quasi-static bearing's kernels" in text
