@@ -10,6 +10,8 @@
     spindle validate [FMU|RUNFILE ...]            fmpy's validator on the FMUs; run files (.toml) checked
     spindle check [FMU ...] [--ref CSV]           simulate each FMU's reference experiment, compare with <Name>_ref.csv
     spindle export-ssp RUNFILE [--out FILE.ssp]   the run's FMUs, connections and parameters as an SSP 1.0 package
+    spindle campbell [--shaft S] [--bearing B] [--preload N] [--radial N] [--speed RPM] [--max-speed RPM]
+                     [--points N] [--stiffness operating|speed] [--out results]   Campbell diagram: CSV + PNG
     spindle --version
 
 Exit codes: 0 done; 1 error (message on stderr); 2 usage error or an FMU with validation problems;
@@ -335,6 +337,26 @@ def cmd_film(args):
     return EXIT_OK if converged else EXIT_UNCONVERGED
 
 
+def cmd_campbell(args):
+    """The shaft's Campbell diagram on quasi-static bearings (spindle.campbell): CSV, PNG, critical speeds printed."""
+    from bearing_fmu.models.limits import InputError
+    from bearing_fmu_common.paramfile import ParameterError
+
+    from .campbell import OptionError, campbell_command
+
+    if _kernels_not_compiled("jones_harris"):
+        print("note: the first run compiles the quasi-static bearing's kernels (a few minutes); later runs reuse them",
+              file=sys.stderr)  # fmt: skip
+    try:
+        return campbell_command(args)
+    except OptionError as exc:
+        print(f"spindle campbell: {exc}", file=sys.stderr)
+        return EXIT_INVALID
+    except (InputError, ParameterError) as exc:
+        print(f"spindle campbell: {exc}", file=sys.stderr)
+        return EXIT_ERROR
+
+
 def _kernels_not_compiled(module):
     """Whether the user cache holds no compiled kernel of bearing_fmu.kernels.<module> (a first run compiles)."""
     from bearing_fmu_common.jit import user_cache_dir
@@ -408,6 +430,7 @@ def _parser():
     _add_run_commands(sub, raw)
     _add_fmu_commands(sub)
     _add_film_commands(sub)
+    _add_shaft_commands(sub)
     return parser
 
 
@@ -526,6 +549,40 @@ def _add_film_commands(sub):
     p.add_argument("--jobs", type=int, default=1, help="processes solving the nodes (default 1)")
 
 
+def _add_shaft_commands(sub):
+    """campbell: the shaft's natural frequencies over speed on quasi-static bearings."""
+    from .campbell import STIFFNESS_MODES
+
+    p = sub.add_parser(
+        "campbell",
+        help="Campbell diagram of the shaft on quasi-static bearings: first six frequencies with their whirl over "
+        "speed, the 1x line and the forward critical speeds (CSV + PNG)",
+    )
+    p.add_argument("--shaft", default=None, help="shaft name or file (default: the default shaft, rabreau_b7214c)")
+    p.add_argument("--bearing", default="B7214C", help="bearing at every seat, name or file (default B7214C)")
+    p.add_argument("--lubricant", default="iso_vg68_mineral", help="lubricant name or file (default iso_vg68_mineral)")
+    p.add_argument("--preload", type=float, default=800.0, metavar="N",
+                   help="axial load F_z on each bearing (N, default 800)")  # fmt: skip
+    p.add_argument("--radial", type=float, default=0.0, metavar="N",
+                   help="radial load F_x on each bearing (N, default 0)")  # fmt: skip
+    p.add_argument("--damping", type=float, default=2000.0, metavar="N.s/m",
+                   help="viscous damping of each seat in x and y (N.s/m, default 2000 as SpindleShaft.fmu's c_s; "
+                   "0: undamped)")  # fmt: skip
+    p.add_argument("--speed", type=float, default=10000.0, metavar="RPM",
+                   help="operating speed at which the bearings' K is computed (rpm, default 10000)")  # fmt: skip
+    p.add_argument("--max-speed", type=float, default=30000.0, metavar="RPM",
+                   help="end of the speed range, from 0 (rpm, default 30000)")  # fmt: skip
+    p.add_argument("--points", type=int, default=61, help="speeds in the range (default 61)")
+    p.add_argument(
+        "--stiffness",
+        choices=STIFFNESS_MODES,
+        default="operating",
+        help="operating: K at --speed held over the range (the classical diagram); speed: K recomputed by the "
+        "quasi-static bearing at each speed",
+    )
+    p.add_argument("--out", default="results", help="folder of the CSV and PNG (default results)")
+
+
 def main(argv=None):
     parser = _parser()
     args = parser.parse_args(argv)
@@ -540,6 +597,7 @@ def main(argv=None):
         "export-ssp": cmd_export_ssp,
         "film": cmd_film,
         "film-table": cmd_film_table,
+        "campbell": cmd_campbell,
     }
     try:
         return handler[args.command](args)
