@@ -292,14 +292,20 @@ def ball_race_forces(balls, ring, spring, trib, counters, par, omega, F_x, F_y, 
         for j in range(Z):
             delta, fx, fy, fz, mx, my, mz, sx, sy, sz, slipping, reversed_, p, dtx, dty, dtz, rcx, rcy, rcz = (
                 ball_race_contact(
-                    race, (work[geo, j], work[geo + 1, j], work[geo + 2, j], work[geo + 3, j]),
-                    balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j],
-                    work[W_VB, j], work[W_VB + 1, j], work[W_VB + 2, j],
-                    work[W_WB, j], work[W_WB + 1, j], work[W_WB + 2, j], work[W_ORBIT, j],
-                    spring[row, j], spring[row + 1, j], spring[row + 2, j],
-                    trib[T_MU, race, j], int(trib[T_REGIME, race, j]), trib[T_C_N, race, j], trib[T_F_ROLL, race, j],
-                    trib[T_M_SPIN, race, j], (trib[T_PHI, race, j], trib[T_SLIP, race, j], mu_lim, kappa),
-                    frame, steps,
+                    race,
+                    (work[geo, j], work[geo + 1, j], work[geo + 2, j], work[geo + 3, j]),
+                    (
+                        (balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j]),
+                        (work[W_VB, j], work[W_VB + 1, j], work[W_VB + 2, j]),
+                        (work[W_WB, j], work[W_WB + 1, j], work[W_WB + 2, j]),
+                        work[W_ORBIT, j],
+                    ),
+                    (spring[row, j], spring[row + 1, j], spring[row + 2, j]),
+                    (trib[T_MU, race, j], int(trib[T_REGIME, race, j]), trib[T_C_N, race, j], trib[T_F_ROLL, race, j],
+                     trib[T_M_SPIN, race, j]),
+                    (trib[T_PHI, race, j], trib[T_SLIP, race, j], mu_lim, kappa),
+                    frame,
+                    steps,
                 )
             )  # fmt: skip
             spring[row, j] = sx
