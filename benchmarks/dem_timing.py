@@ -135,12 +135,13 @@ def per_step_of_advance(model, dt, refresh, n=20000, runs=9):
     m = {k: v.copy() for k, v in model.get_state().items() if isinstance(v, np.ndarray)}
     par = model.par.copy()
     par[s.P_REFRESH] = refresh
-    bodies = (m["balls"], m["cage"], m["ring"], m["spring"], m["trib"], m["counters"], par, model.lubricant.array)
-    work, acc, status = model._work.copy(), model._acc.copy(), np.zeros(s.ST_SIZE, dtype=np.int64)
+    state, params = tuple(m[k] for k in s.STATE_GROUP), (par, model.lubricant.array)
+    status = np.zeros(s.ST_SIZE, dtype=np.int64)
+    space = (model._work.copy(), model._acc.copy(), status)
+    loads = (0.0, F_R, 0.0, 0.0, 0.0)
 
     def run(steps):
-        dyn.advance(*bodies, steps, dt, OMEGA, OMEGA, 0.0, F_R, 0.0, 0.0, 0.0, T_OIL_DEFAULT, math.inf, work, acc,
-                    status)  # fmt: skip
+        dyn.advance(state, params, (steps, dt, OMEGA, OMEGA, loads, T_OIL_DEFAULT, math.inf), space)
         if status[s.ST_CODE] != s.STATUS_OK:  # a stopped run would time fewer steps than it divides by
             raise RuntimeError(f"the monitor stopped the timed run (status {status[s.ST_CODE]})")
 

@@ -96,24 +96,10 @@ def test_kernel_matches_twin_over_steps(running_6208, film, steps, traction, sup
     acc = np.zeros(s.A_SIZE)
     status = np.zeros(s.ST_SIZE, dtype=np.int64)
     dyn.advance(
-        kernel_state["balls"],
-        kernel_state["cage"],
-        kernel_state["ring"],
-        kernel_state["spring"],
-        kernel_state["trib"],
-        kernel_state["counters"],
-        par,
-        lub,
-        steps,
-        DT,
-        omega0,
-        omega1,
-        *F,
-        T_oil,
-        1e9,
-        np.zeros((s.W_SIZE, model.bearing.Z)),
-        acc,
-        status,
+        tuple(kernel_state[k] for k in s.STATE_GROUP),
+        (par, lub),
+        (steps, DT, omega0, omega1, F, T_oil, 1e9),
+        (np.zeros((s.W_SIZE, model.bearing.Z)), acc, status),
     )
     assert status[s.ST_CODE] == s.STATUS_OK
     if traction:  # some loaded contact above Lambda = 1, where the traction limit changes the Coulomb limit
@@ -180,11 +166,12 @@ def test_kernel_matches_twin_with_a_tilting_ring():
     steps, dt, T_oil = 200, model.dt, 313.15
     status = np.zeros(s.ST_SIZE, dtype=np.int64)
     acc = np.zeros(s.A_SIZE)
-    arrays = (kernel_state[k] for k in ("balls", "cage", "ring", "spring", "trib", "counters"))
     dyn.advance(
-        *arrays, par, model.lubricant.array, steps, dt, 300.0, 320.0, *F, T_oil, 1e9,
-        np.zeros((s.W_SIZE, model.bearing.Z)), acc, status,
-    )  # fmt: skip
+        tuple(kernel_state[k] for k in s.STATE_GROUP),
+        (par, model.lubricant.array),
+        (steps, dt, 300.0, 320.0, F, T_oil, 1e9),
+        (np.zeros((s.W_SIZE, model.bearing.Z)), acc, status),
+    )
     assert status[s.ST_CODE] == s.STATUS_OK
     ref.advance(twin_state, par, model.lubricant.array, steps, dt, 300.0, 320.0, np.array(F), T_oil)
     a, b = kernel_state["ring"], twin_state["ring"]

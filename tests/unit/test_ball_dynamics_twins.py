@@ -56,14 +56,12 @@ def test_initialise_accelerations_matches_twin(models, name):
     F, omega, T_oil = (-50.0, 3000.0, 800.0, 15.0, -8.0), model.omega, 313.15
     Z = model.bearing.Z
     dyn.initialise_accelerations(
-        *(kernel_state[k] for k in ("balls", "cage", "ring", "spring", "trib", "counters")),
-        model.par,
-        model.lubricant.array,
+        tuple(kernel_state[k] for k in s.STATE_GROUP),
+        (model.par, model.lubricant.array),
         omega,
-        *F,
+        F,
         T_oil,
-        np.zeros((s.W_SIZE, Z)),
-        np.zeros(s.A_SIZE),
+        (np.zeros((s.W_SIZE, Z)), np.zeros(s.A_SIZE), np.zeros(s.ST_SIZE, dtype=np.int64)),
     )
     ref.initialise_accelerations(twin_state, model.par, model.lubricant.array, omega, np.array(F), T_oil)
     # one scale per quantity: the balls' accelerations (a cage ball resting in its channel carries round-off)

@@ -64,7 +64,7 @@ def _state(rng, race, regime, phi, spring_scale):
     mu, phi_, slip, regime_, c_frozen, f_roll, m_s = trib
     frame = (omega, *v_ring, *centre, K_H, *axis, *tilt)
     steps = (0.5 * D, law["alpha_e"], law["kt_ratio"], 4.0 * DT / I_BALL, law["w_reg"], DT)
-    kernel = (race, geometry, *p, *v, *w, w_orbit, *old, mu, regime_, c_frozen, f_roll, m_s,
+    kernel = (race, geometry, (tuple(p), tuple(v), tuple(w), w_orbit), tuple(old), (mu, regime_, c_frozen, f_roll, m_s),
               (phi_, slip, law["mu_lim"], law["kappa"]), frame, steps)  # fmt: skip
     twin = (race, p, v, w, w_orbit, old, trib, (W, v_ring, centre), law, DT)
     # the surface speeds whose difference is the sliding: their rounding (1e-16 of them) bounds the sliding's

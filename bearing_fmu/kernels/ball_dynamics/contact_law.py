@@ -231,31 +231,7 @@ def resistance_moments(m, w, w_orbit, n, w_race, f_roll_surface, m_s, half_d, w_
 
 
 @kernel(inline="always")
-def ball_race_contact(
-    race,
-    geometry,
-    px,
-    py,
-    pz,
-    vx,
-    vy,
-    vz,
-    wx,
-    wy,
-    wz,
-    w_orbit,
-    ox,
-    oy,
-    oz,
-    mu,
-    regime,
-    c_frozen,
-    f_roll_surface,
-    m_s,
-    film,
-    frame,
-    steps,
-):
+def ball_race_contact(race, geometry, ball, spring, refreshed, film, frame, steps):
     """Forces of the contact of a ball with one race.
 
     geometry = (delta, nx, ny, nz): the contact's approach (m) and unit normal, groove_approach of the ball's centre.
@@ -265,19 +241,21 @@ def ball_race_contact(
     contacts took a sixth less time).
 
     race 0 inner (turning at omega about its axis a through its centre c, tilting at (wtx, wty) about x and y,
-    translating at (vrx0, vry0, vrz0)),
-    1 outer (fixed). Ball: centre (px, py, pz) (m), predicted velocity v (m/s) and angular velocity w (rad/s),
-    orbital speed w_orbit (rad/s); (ox, oy, oz): the contact's tangential spring (m). From the last tribology
-    refresh: mu (-), regime code, c_frozen (N.s/m), f_roll_surface = F_R + (F_h + F_H)/2 (N) and the pivoting
-    moment m_s (N.m). film = (phi (-), slip = 1/v_s (s/m), mu_lim (-), kappa (s/kg)): the film's share of
-    the tangential force, its traction curve mu_lim (1 - exp(-v_t / v_s)) (ehl.film_slip_speed) and the slip a
-    newton removes from the ball's two contacts in a step (7 dt / m), for the curve's implicit evaluation.
+    translating at (vrx0, vry0, vrz0)), 1 outer (fixed).
+    ball = (p, v, w, w_orbit): the ball's centre p = (px, py, pz) (m), predicted velocity v = (vx, vy, vz) (m/s)
+    and angular velocity w = (wx, wy, wz) (rad/s), orbital speed w_orbit (rad/s).
+    spring = (ox, oy, oz): the contact's tangential spring (m).
+    refreshed = (mu (-), regime code, c_frozen (N.s/m), f_roll_surface = F_R + (F_h + F_H)/2 (N), m_s (N.m)): the
+    last tribology refresh's friction coefficient, regime, normal damping, rolling resistance and pivoting moment.
+    film = (phi (-), slip = 1/v_s (s/m), mu_lim (-), kappa (s/kg)): the film's share of the tangential force, its
+    traction curve mu_lim (1 - exp(-v_t / v_s)) (ehl.film_slip_speed) and the slip a newton removes from the ball's
+    two contacts in a step (7 dt / m), for the curve's implicit evaluation.
     frame = (omega (rad/s), vrx0, vry0, vrz0 (m/s), cx, cy, cz (m), K_h (N/m^1.5), ax, ay, az (-), wtx, wty (rad/s)):
     the race's motion, the centre c of its groove's curvature-centre circle and its axis a, Hertz constant and tilt
-    rates. steps = (half_d
-    = D/2 (m), alpha_e (s/m), kt_ratio (-), rate_inv = 4 dt / I (1/(N.m.s)), the inverse of the largest viscous
-    rate of a regularised moment, w_reg = v_reg / (D/2) (rad/s), dt (s)). (Tuples keep the argument count
-    within what numba's IR inliner takes.)
+    rates.
+    steps = (half_d = D/2 (m), alpha_e (s/m), kt_ratio (-), rate_inv = 4 dt / I (1/(N.m.s)), the inverse of the
+    largest viscous rate of a regularised moment, w_reg = v_reg / (D/2) (rad/s), dt (s)).
+    The groups are tuples: inlined into the step, they cost nothing over separate arguments.
 
     Returns (delta, fx, fy, fz, mx, my, mz, sx, sy, sz, slipping, reversed, power, dtx, dty, dtz, rcx, rcy, rcz):
     approach (m, <= 0 open: everything else 0, spring reset), force (N) and moment (N.m) on the ball, the new spring
@@ -289,6 +267,9 @@ def ball_race_contact(
     """
     half_d, alpha_e, kt_ratio, rate_inv, w_reg, dt = steps
     delta, nx, ny, nz = geometry
+    p, v, w, w_orbit = ball
+    ox, oy, oz = spring
+    mu, regime, c_frozen, f_roll_surface, m_s = refreshed
     if delta <= 0.0:  # open: the spring and the chatter count start again at the next touch
         return delta, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, False, False, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
     K_h = frame[7]
@@ -298,9 +279,7 @@ def ball_race_contact(
     rcx = half_d * nx
     rcy = half_d * ny
     rcz = half_d * nz
-    vn, vtx, vty, vtz, wrx, wry, wrz = contact_slip(
-        race, (px, py, pz), (vx, vy, vz), (wx, wy, wz), (rcx, rcy, rcz), (nx, ny, nz), frame
-    )
+    vn, vtx, vty, vtz, wrx, wry, wrz = contact_slip(race, p, v, w, (rcx, rcy, rcz), (nx, ny, nz), frame)
     c_n = contact_damping(regime, c_frozen, alpha_e, Q)
     F_n = Q + c_n * vn
     if F_n < 0.0:  # a damper cannot pull the surfaces together
@@ -330,7 +309,7 @@ def ball_race_contact(
     fz = -F_n * nz + ftz
     mx, my, mz = resistance_moments(
         (rcy * ftz - rcz * fty, rcz * ftx - rcx * ftz, rcx * fty - rcy * ftx),
-        (wx, wy, wz),
+        w,
         w_orbit,
         (nx, ny, nz),
         (wrx, wry, wrz),

@@ -248,22 +248,21 @@ def race_approaches(balls, ring, par, work):
 
 
 @kernel(error_model="numpy", inline="always")
-def ball_race_forces(balls, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, M_x, M_y, dt, work, acc):
+def ball_race_forces(state, par, omega, loads, dt, work, acc):
     """The 2 Z ball-race contacts at the predicted state (contact_law.ball_race_contact, approaches from
     race_approaches): the forces and moments on the balls added to work[W_FB], work[W_MB], the springs and chatter
     counters updated, each contact's dissipating force and arm in work[W_DISS], work[W_ARM], each ball's loaded
     races counted in work[W_LOADED], the power (W) dissipated in each race's contacts in acc[A_POWER_I + race].
 
     Returns (worst penetration ratio, its contact, longest chatter, its contact, the ring's force (N) and moment
-    (N.m, about its centre) x, y, z: the loads F_x, F_y, F_z, M_x, M_y and the opposite of the inner contacts')."""
+    (N.m, about its centre) x, y, z: the loads and the opposite of the inner contacts').
+
+    state, par, loads, work and acc as advance's."""
+    balls, _, ring, spring, trib, counters = state
     Z = balls.shape[1]
     # the ring's force and moment are summed in locals, not in acc: a store to an array that may alias the state
     # arrays would be reloaded and stored again at every contact
-    fr_x = F_x
-    fr_y = F_y
-    fr_z = F_z
-    mr_x = M_x
-    mr_y = M_y
+    fr_x, fr_y, fr_z, mr_x, mr_y = loads
     mr_z = 0.0
     worst_pen = 0.0
     worst_pen_at = -1
@@ -292,14 +291,20 @@ def ball_race_forces(balls, ring, spring, trib, counters, par, omega, F_x, F_y, 
         for j in range(Z):
             delta, fx, fy, fz, mx, my, mz, sx, sy, sz, slipping, reversed_, p, dtx, dty, dtz, rcx, rcy, rcz = (
                 ball_race_contact(
-                    race, (work[geo, j], work[geo + 1, j], work[geo + 2, j], work[geo + 3, j]),
-                    balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j],
-                    work[W_VB, j], work[W_VB + 1, j], work[W_VB + 2, j],
-                    work[W_WB, j], work[W_WB + 1, j], work[W_WB + 2, j], work[W_ORBIT, j],
-                    spring[row, j], spring[row + 1, j], spring[row + 2, j],
-                    trib[T_MU, race, j], int(trib[T_REGIME, race, j]), trib[T_C_N, race, j], trib[T_F_ROLL, race, j],
-                    trib[T_M_SPIN, race, j], (trib[T_PHI, race, j], trib[T_SLIP, race, j], mu_lim, kappa),
-                    frame, steps,
+                    race,
+                    (work[geo, j], work[geo + 1, j], work[geo + 2, j], work[geo + 3, j]),
+                    (
+                        (balls[B_X, j], balls[B_X + 1, j], balls[B_X + 2, j]),
+                        (work[W_VB, j], work[W_VB + 1, j], work[W_VB + 2, j]),
+                        (work[W_WB, j], work[W_WB + 1, j], work[W_WB + 2, j]),
+                        work[W_ORBIT, j],
+                    ),
+                    (spring[row, j], spring[row + 1, j], spring[row + 2, j]),
+                    (trib[T_MU, race, j], int(trib[T_REGIME, race, j]), trib[T_C_N, race, j], trib[T_F_ROLL, race, j],
+                     trib[T_M_SPIN, race, j]),
+                    (trib[T_PHI, race, j], trib[T_SLIP, race, j], mu_lim, kappa),
+                    frame,
+                    steps,
                 )
             )  # fmt: skip
             spring[row, j] = sx
@@ -511,9 +516,10 @@ def correct_balls(balls, cage, ring, par, dt, work, acc, total):
 # callers (which take the same error model: the inlined code is compiled with the caller's): a call that passes the
 # nine state arrays costs two atomic reference-count updates per array, about 5 % of a step.
 @kernel(error_model="numpy", inline="always")
-def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, M_x, M_y, dt, work, acc):
-    """One velocity-Verlet step of every body (see the module docstring) at inner-ring speed omega (rad/s) and
-    loads F_x, F_y, F_z (N), M_x, M_y (N.m, about its centre) on the inner ring.
+def verlet_step(state, par, omega, loads, dt, work, acc):
+    """One velocity-Verlet step of every body of state (see the module docstring) at inner-ring speed omega
+    (rad/s) and loads (F_x, F_y, F_z (N), M_x, M_y (N.m, about its centre)) on the inner ring; state, par, work
+    and acc as advance's.
 
     The forces at the new positions with the predicted velocities: the 2 Z ball-race contacts
     (ball_race_forces) and the cage balls (cage_forces, the cage's torque shared by rigid_cage_torque), then the
@@ -522,10 +528,11 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
     penetration ratio, its contact, longest chatter, its contact, sum of the force components): the last is
     non-finite as soon as any force is.
     """
+    balls, cage, ring, _, _, counters = state
     predict(balls, cage, ring, work, acc, dt)
     race_approaches(balls, ring, par, work)
     worst_pen, worst_pen_at, worst_chat, worst_chat_at, fr_x, fr_y, fr_z, mr_x, mr_y, mr_z = ball_race_forces(
-        balls, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, M_x, M_y, dt, work, acc
+        state, par, omega, loads, dt, work, acc
     )
     acc[A_FR] = fr_x
     acc[A_FR + 1] = fr_y
@@ -546,11 +553,14 @@ def verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y,
 
 
 @kernel(error_model="numpy")  # (verlet_step is inlined: its error model)
-def initialise_accelerations(
-    balls, cage, ring, spring, trib, counters, par, lub, omega, F_x, F_y, F_z, M_x, M_y, T_oil, work, acc
-):
+def initialise_accelerations(state, params, omega, loads, T_oil, space):
     """Tribology and accelerations of a new state (the a_n that the first Verlet step needs), without
-    moving anything: call once after the facade sets positions and velocities."""
+    moving anything: call once after the facade sets positions and velocities. Inner-ring speed omega (rad/s),
+    loads (F_x, F_y, F_z (N), M_x, M_y (N.m)), oil temperature T_oil (K); state, params and space as advance's
+    (space's status is not used)."""
+    balls, _, ring, spring, trib, counters = state
+    par, lub = params
+    work, acc, _ = space
     eta, xi, rho0 = lubricant_state(T_oil, lub)
     K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF])
     tc = np.empty((TC_SIZE, 2))
@@ -558,7 +568,7 @@ def initialise_accelerations(
     refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, np.empty((4, balls.shape[1])))
     # a step of zero length: positions and velocities stay, the accelerations become those of the forces
     saved = spring.copy()
-    verlet_step(balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, M_x, M_y, 0.0, work, acc)
+    verlet_step(state, par, omega, loads, 0.0, work, acc)
     spring[:, :] = saved  # (the springs' projection on the tangent planes waits for the first real step)
     counters[K_STEP] -= 1  # not a step: the refresh phase stays
 
@@ -580,33 +590,15 @@ def start_call(acc, status):
 
 
 @kernel(error_model="numpy")  # (verlet_step is inlined: its error model)
-def advance(
-    balls,
-    cage,
-    ring,
-    spring,
-    trib,
-    counters,
-    par,
-    lub,
-    n_steps,
-    dt,
-    omega0,
-    omega1,
-    F_x,
-    F_y,
-    F_z,
-    M_x,
-    M_y,
-    T_oil,
-    energy_limit,
-    work,
-    acc,
-    status,
-):
-    """Run n_steps steps of dt (s) with the inner-ring speed going linearly from omega0 to omega1 (rad/s),
-    constant loads F_x, F_y, F_z (N) and M_x, M_y (N.m, about its centre) on the inner ring and oil temperature
-    T_oil (K).
+def advance(state, params, call, space):
+    """Run n_steps steps of dt (s) with the inner-ring speed going linearly from omega0 to omega1
+    (rad/s), constant loads F_x, F_y, F_z (N) and M_x, M_y (N.m, about its centre) on the inner ring and oil
+    temperature T_oil (K).
+
+    The arguments are four tuples (kernels.ball_dynamics.state, "argument groups"): state = (balls, cage, ring,
+    spring, trib, counters), the state arrays; params = (par, lub), the parameter and lubricant arrays; call =
+    (n_steps, dt, omega0, omega1, loads, T_oil, energy_limit) with loads = (F_x, F_y, F_z, M_x, M_y); space =
+    (work, acc, status), the scratch, the call's sums and the monitor's verdict.
 
     Stops early with status[ST_CODE] != STATUS_OK (monitor) after the offending step; status[ST_STEP]
     holds the steps done, status[ST_INDEX] the ball or contact (race * Z + ball). energy_limit (J)
@@ -616,6 +608,10 @@ def advance(
     acc[A_POWER_O] the power (W) of the last step, and acc[A_CAP] the bearing capacitance of every step (the
     loaded balls' capacitances at the last refresh, without a background term) integrated over the call (F.s).
     """
+    balls, cage, ring, _, trib, counters = state
+    par, lub = params
+    n_steps, dt, omega0, omega1, loads, T_oil, energy_limit = call
+    work, acc, status = space
     eta, xi, rho0 = lubricant_state(T_oil, lub)
     K_cm = clausius_mossotti_constant(lub[LUB_EPS_R0], lub[LUB_RHO_REF])
     tc = np.empty((TC_SIZE, 2))
@@ -651,9 +647,7 @@ def advance(
                 return
         countdown -= 1
         omega = omega0 + d_omega * (n + 1)
-        pen, pen_at, chat, chat_at, total = verlet_step(
-            balls, cage, ring, spring, trib, counters, par, omega, F_x, F_y, F_z, M_x, M_y, dt, work, acc
-        )
+        pen, pen_at, chat, chat_at, total = verlet_step(state, par, omega, loads, dt, work, acc)
         power_i = acc[A_POWER_I] + film_i
         power_o = acc[A_POWER_O] + film_o
         acc[A_POWER_I] = power_i

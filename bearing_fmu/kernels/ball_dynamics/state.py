@@ -265,3 +265,15 @@ A_S_HC_O = _A_SLOTS.slot()
 #   squared (rad^2/s) integrated over the call's steps, 6 entries: the orbit watch's variances (models.dem.whirl)
 A_RING_SQ = _A_SLOTS.slot(6)
 A_SIZE = _A_SLOTS.size
+
+# ---- the argument groups of the integrator's kernels (integrator.advance, initialise_accelerations) ---------
+# Plain tuples in these orders; each kernel unpacks them into named locals:
+#   state = (balls, cage, ring, spring, trib, counters): the state arrays above, owned by the facade
+#   params = (par, lub): the parameter array (P_*) and the lubricant's (kernels.lubricant)
+#   loads = (F_x, F_y, F_z, M_x, M_y): forces (N) and moments (N.m, about its centre) on the inner ring
+#   call = (n_steps, dt, omega0, omega1, loads, T_oil, energy_limit): n_steps steps of dt (s), the inner ring's
+#       speed from omega0 to omega1 (rad/s), loads, oil temperature T_oil (K), the kinetic energy's bound (J)
+#   space = (work, acc, status): float64[W_SIZE, Z], float64[A_SIZE] (scratch and the call's sums), int64[ST_SIZE]
+# Not namedtuples: numba takes them too, but its dispatcher types each one about 0.7 us slower than a plain tuple
+# (it reads the fields' names at every call), which made a facade call of advance (about 100 us) 7 us slower.
+STATE_GROUP = ("balls", "cage", "ring", "spring", "trib", "counters")  # the names of state's arrays, in order

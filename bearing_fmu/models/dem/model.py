@@ -157,16 +157,22 @@ class DemModel:
         }
         self._plan = gather_plan(self.outputs, arrays)
 
-    def _bodies(self):
-        """The arrays every ball_dynamics kernel call takes first: the state, the parameters and the lubricant."""
-        return self.balls, self.cage, self.ring, self.spring, self.trib, self.counters, self.par, self.lubricant.array
+    def _groups(self):
+        """The arrays of the integrator's kernels in their groups (kernels.ball_dynamics.state, "argument groups"):
+        state, params and space."""
+        return (
+            (self.balls, self.cage, self.ring, self.spring, self.trib, self.counters),
+            (self.par, self.lubricant.array),
+            (self._work, self._acc, self.status),
+        )
 
     def _place_bodies(self):
         place_bodies(self.balls, self.cage, self.ring, self.spring, self.trib, self.counters, self.par, self._rest)
         self.omega = 0.0
 
     def _initialise(self, omega, F_x, F_y, F_z, T_oil, M_x=0.0, M_y=0.0):
-        dyn.initialise_accelerations(*self._bodies(), omega, F_x, F_y, F_z, M_x, M_y, T_oil, self._work, self._acc)
+        state, params, space = self._groups()
+        dyn.initialise_accelerations(state, params, omega, (F_x, F_y, F_z, M_x, M_y), T_oil, space)
 
     # -- time step -----------------------------------------------------------------------------
     def stable_time_step(self, F_x=0.0, F_y=0.0, F_z=0.0, omega=None, include_state=True, M_x=0.0, M_y=0.0):
@@ -320,9 +326,8 @@ class DemModel:
         limit = energy_limit(
             self.bearing, self.par, self.balls, self.cage, self.ring, self._Q, max(abs(omega0), abs(omega)), loads
         )
-        dyn.advance(
-            *self._bodies(), n_steps, dt, omega0, omega, *loads, T_oil, limit, self._work, self._acc, self.status
-        )
+        state, params, space = self._groups()
+        dyn.advance(state, params, (n_steps, dt, omega0, omega, loads, T_oil, limit), space)
         done = int(self.status[s.ST_STEP])
         self.omega = omega0 + (omega - omega0) * done / n_steps
         return omega0, orbit0
