@@ -177,7 +177,7 @@ def shaft_variables(name=SHAFT_FMU, shaft=DEFAULT_SHAFT):
         "each seat's `K_<seat>[i,j]` to its bearing FMU's `K[i,j]`. Reference result of the Python model: "
         f"`{name}_ref.csv`. Variables declared in `spindle/shaft/declarations.py`; SI units."
     ]
-    parameters = shaft_parameter_declarations(shaft)
+    parameters = shaft_parameter_declarations(shaft, stepper.model.shaft.seat_names)
     return name, SpindleShaft.description, about, parameters, stepper.inputs, stepper.outputs
 
 

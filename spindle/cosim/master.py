@@ -167,7 +167,11 @@ class Instance:
         self.slave = FMU2Slave(
             guid=md.guid, unzipDirectory=unzip_dir, modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name
         )
-        self.slave.instantiate(callbacks=self._callbacks, loggingOn=True)
+        try:
+            self.slave.instantiate(callbacks=self._callbacks, loggingOn=True)
+        except Exception as exc:  # fmpy raises a bare Exception: name the instance and what it logged
+            lines = "; ".join(self.log) or "no message logged"
+            raise MasterError(f"{name}: fmi2Instantiate failed ({exc}): {lines}") from None
         self._do_step = self._checked("fmi2DoStep")
         self.cache = {}  # output name -> last value read
         self._reads = []  # (getter, names, value references) read into the cache at each refresh

@@ -28,6 +28,11 @@ Format (every time in s; values SI in the units each FMU declares):
     from = "spindle.T_oil_1"
     to = "bearing_1.T_oil"
 
+    [[connections]]             # every element of an array: bearing_1.K[1,1] -> shaft.K_1[1,1], ..., [5,5]
+    from = "bearing_1.K"
+    to = "shaft.K_1"
+    shape = [5, 5]
+
     [[limits]]                  # stop the run with a clear message when a variable leaves a range
     variable = "bearing_1.F_z"
     max = 4000.0
@@ -221,13 +226,7 @@ def parse_run(doc, path, overrides=None, fmu_dir=None):
         )
     for key, value in (overrides or {}).items():
         _apply_override(run, instances, key, value)
-    connections = []
-    for c in doc.get("connections", []):
-        if not (isinstance(c, dict) and set(c) == {"from", "to"}):
-            raise RunFileError(
-                f'connection {c}: write [[connections]] with from = "source.output" and to = "target.input"'
-            )
-        connections.append((c["from"], c["to"]))
+    connections = [pair for c in doc.get("connections", []) for pair in _connection_pairs(c)]
     sources = {target: source for source, target in connections}
     for key in overrides or {}:
         if key in sources:  # the connection sets this input at every step: the override would be dropped
@@ -254,6 +253,28 @@ def parse_run(doc, path, overrides=None, fmu_dir=None):
     )
     check(spec)
     return spec
+
+
+def _connection_pairs(c):
+    """The (source, target) pairs of one [[connections]] entry: one pair, or with `shape = [n]` or `[n, m]` one
+    per element of an array variable, `from = "bearing_1.K"`, `to = "shaft.K_1"`, `shape = [5, 5]` standing for
+    bearing_1.K[1,1] -> shaft.K_1[1,1] ... K[5,5] -> K_1[5,5] (FMI's structured names, indices from 1)."""
+    if not (isinstance(c, dict) and {"from", "to"} <= set(c) <= {"from", "to", "shape"}):
+        raise RunFileError(
+            f'connection {c}: write [[connections]] with from = "source.output" and to = "target.input" (and '
+            "shape = [n] or [n, m] to connect every element of an array)"
+        )
+    if "shape" not in c:
+        return [(c["from"], c["to"])]
+    shape = c["shape"]
+    if not (
+        isinstance(shape, list) and len(shape) in (1, 2) and all(isinstance(n, int) and 1 <= n <= 100 for n in shape)
+    ):
+        raise RunFileError(f"connection {c['from']} -> {c['to']}: shape = {shape!r}; allowed [n] or [n, m], 1..100")
+    indices = [(i,) for i in range(1, shape[0] + 1)]
+    if len(shape) == 2:
+        indices = [(i, j) for i in range(1, shape[0] + 1) for j in range(1, shape[1] + 1)]
+    return [(f"{c['from']}[{','.join(map(str, k))}]", f"{c['to']}[{','.join(map(str, k))}]") for k in indices]
 
 
 def _no_unknown_keys(where, table, allowed):

@@ -9,11 +9,11 @@ generated from them (spindle.all_fmus).
 from bearing_fmu_common.variables import Variable
 
 from .model import N_FREQUENCIES, OMEGA_MAX, SEAT_MATRIX_MAX
-from .params import DEFAULT_SHAFT
 
 DOF_WORDS = "(F_x, F_y, F_z, M_x, M_y)", "(x, y, z, theta_x, theta_y)"
 SEAT_LIMITS = "orders of magnitude above any bearing's stiffness; a diagonal entry is >= 0 (a bearing resists motion)"
 DAMPING_MIN, DAMPING_MAX = 1.0, 1.0e8  # N.s/m
+TOLERANCE_MAX = 0.1  # relative change of the inputs below which outputs are kept
 DAMPING_LIMITS = (
     "> 0: an undamped shaft has an infinite receptance peak; 1e8 N.s/m is far above a bearing's or a squeeze film's"
 )
@@ -43,13 +43,43 @@ def seat_stiffness_name(seat, i, j):
     return f"K_{seat}[{i + 1},{j + 1}]"
 
 
-def parameter_declarations(shaft=DEFAULT_SHAFT):
-    """The FMU's parameters; `shaft` is the start value of `shaft` (the file it was built with)."""
-    return (
+def parameter_declarations(shaft, seat_names):
+    """The FMU's parameters: `shaft` (start: the file it was built with, whose seats are `seat_names`), then per
+    seat whether its outer ring floats axially, and the inputs' change below which a step keeps its outputs."""
+    out = [
         Variable(
-            "shaft", "", "shaft: catalogue name or path of a shaft TOML file (docs/shaft.md)", "string", start=shaft
-        ),
+            "shaft",
+            "",
+            "shaft: catalogue name or path of a shaft TOML file (docs/shaft.md)",
+            "string",
+            start=shaft,
+        )
+    ]
+    out.append(
+        Variable(
+            "tolerance",
+            "1",
+            "relative change of the seats' K and damping (Frobenius norm over the seats) and of omega since the last "
+            "solution below which a step keeps the last outputs; 0: every step solves (docs/shaft.md, The warm-up)",
+            start=0.0,
+            min=0.0,
+            max=TOLERANCE_MAX,
+            limits="0 solves every step; above 0.1 the kept outputs could lag the seats by several per cent",
+        )
     )
+    for seat, name in enumerate(seat_names, start=1):
+        out.append(
+            Variable(
+                f"floating_{seat}",
+                "",
+                f"seat {seat} ('{name}'): true if the bearing's outer ring floats axially under a constant preload "
+                "force (springs or an actuator): the bearing then carries no axial stiffness (its z row and column "
+                "condensed out); false if the ring is held axially (fixed preload or the locating bearing)",
+                "boolean",
+                start=False,
+            )
+        )
+    return tuple(out)
 
 
 def _seat_inputs(seat, name):

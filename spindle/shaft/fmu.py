@@ -32,10 +32,10 @@ class SpindleShaft(DeclaredSlave):
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
-        self._parameters = parameter_declarations(self.default_shaft)
+        self._stepper = ShaftStepper(self.default_shaft)
+        self._parameters = parameter_declarations(self.default_shaft, self._stepper.model.shaft.seat_names)
         for var in self._parameters:
             self.register_variable(declared_parameter(var, self))
-        self._stepper = ShaftStepper(self.default_shaft)
         self._ready = False  # parameters accepted (exit_initialization_mode)
         self.register_declared(self._stepper.inputs, self._stepper.outputs)
         self._y = self._stepper.evaluate(self._u)
@@ -43,13 +43,16 @@ class SpindleShaft(DeclaredSlave):
     def _build(self):
         """The stepper for the parameters (raises on a refused one)."""
         check_parameters(self, self._parameters)
-        stepper = ShaftStepper(self.shaft)
+        # the file it was built with: its reduction is done (the costly part of the set-up)
+        stepper = self._stepper if self.shaft == self.default_shaft else ShaftStepper(self.shaft)
         if [v.name for v in stepper.inputs] != [v.name for v in self._stepper.inputs]:
             raise ValueError(
                 f"shaft = {self.shaft!r} has other seats ({', '.join(stepper.model.shaft.seat_names)}) than the shaft "
                 f"this FMU was built with ({self.default_shaft!r}: "
                 f"{', '.join(self._stepper.model.shaft.seat_names)}); allowed: a shaft file with as many seats"
             )
+        seats = range(1, len(stepper.model.shaft.seat_names) + 1)
+        stepper.configure([getattr(self, f"floating_{seat}") for seat in seats], float(self.tolerance))
         self._stepper = stepper
 
     def _evaluate(self):

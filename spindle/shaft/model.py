@@ -13,6 +13,7 @@ import math
 
 import numpy as np
 
+from bearing_fmu_common.blas_threads import single_blas_thread
 from bearing_fmu_common.variables import InputError
 
 from . import beam
@@ -89,10 +90,13 @@ def whirl_sense(phys):
 class ShaftModel:
     """Rotor finite-element model of a shaft file (catalogue name or path), reduced once to `modes` fixed-interface
     modes plus the seat and tool-tip nodes (None: no reduction). `evaluate(omega, K_seats, C_seats)` gives the
-    modal outputs at speed omega (rad/s) with the bearings' 5x5 matrices at the seats, in the file's seat order."""
+    modal outputs at speed omega (rad/s) with the bearings' 5x5 matrices at the seats, in the file's seat order and
+    each in its bearing's frame (the seat's bearing_axis turns it into the shaft's); `floating` (one boolean per
+    seat) marks the seats whose outer ring floats axially under a constant preload force (seat_stiffness)."""
 
-    def __init__(self, shaft=DEFAULT_SHAFT, modes=MODES_DEFAULT):
+    def __init__(self, shaft=DEFAULT_SHAFT, modes=MODES_DEFAULT, floating=None):
         self.shaft = read_shaft(shaft)
+        self.set_floating(floating)
         K, M, G = full_matrices(self.shaft)
         sf = self.shaft
         interface = list(sf.seat_nodes) + ([sf.tip_node] if sf.tip_node not in sf.seat_nodes else [])
@@ -126,6 +130,35 @@ class ShaftModel:
             )
         return A
 
+    def set_floating(self, floating):
+        """Per seat whether its bearing's outer ring floats axially (booleans, one per seat; None: none floats)."""
+        n = len(self.shaft.seat_nodes)
+        flags = (False,) * n if floating is None else tuple(bool(f) for f in floating)
+        if len(flags) != n:
+            raise ShaftInputError(f"floating: {len(flags)} values, expected one per seat ({self.shaft.seat_names})")
+        self.floating = flags
+
+    def seat_frame(self, A):
+        """Seat matrices (n_seats, 5, 5) from the bearings' frames into the shaft's: a bearing whose z axis points
+        against the shaft's (bearing_axis = "-z") is the mirror image of one along it, and the mirror z -> -z turns
+        (x, y, z, theta_x, theta_y) into (x, y, -z, -theta_x, -theta_y) (a rotation vector is a pseudovector), so
+        its matrix becomes T A T with T = diag(1, 1, -1, -1, -1)."""
+        t = np.ones((len(self.shaft.seat_axes), beam.NDOF))
+        t[:, 2:] = np.array(self.shaft.seat_axes, dtype=float)[:, None]
+        return A * t[:, :, None] * t[:, None, :]
+
+    def seat_stiffness(self, K_seats):
+        """The seats' stiffness in the shaft's frame (seat_frame) with each floating seat's axial freedom condensed
+        out. A floating outer ring (preload by springs or an actuator: a constant axial force) is free in z, so
+        the bearing in series with it carries no axial stiffness: with the ring's axial balance
+        K_zj d_j - K_zz u = 0 eliminated, K' = K - K[:, z] K[z, :] / K_zz (row and column z become 0)."""
+        K = self.seat_frame(self._seat_matrices("K_seats", K_seats))
+        for s, floats in enumerate(self.floating):
+            k = K[s]
+            if floats and k[2, 2] > 0.0:
+                K[s] = k - np.outer(k[:, 2], k[2, :]) / k[2, 2]
+        return K
+
     def _check_omega(self, omega):
         omega = float(omega)
         if not 0.0 <= omega <= OMEGA_MAX:
@@ -136,8 +169,8 @@ class ShaftModel:
         """(K, C) of the reduced model with the seats' stiffness and damping added."""
         K = self._K.copy()
         C = np.zeros_like(K)
-        beam.add_seats(self._seat_dofs, self._seat_matrices("K_seats", K_seats), K)
-        beam.add_seats(self._seat_dofs, self._seat_matrices("C_seats", C_seats), C)
+        beam.add_seats(self._seat_dofs, self.seat_stiffness(K_seats), K)
+        beam.add_seats(self._seat_dofs, self.seat_frame(self._seat_matrices("C_seats", C_seats)), C)
         return K, C
 
     # ---------------------------------------------------------------------------------------- modes
@@ -182,6 +215,10 @@ class ShaftModel:
         - critical_speeds (rad/s): the first two synchronous forward critical speeds (critical_speeds())."""
         omega = self._check_omega(omega)
         K, C = self.matrices(K_seats, C_seats)
+        with single_blas_thread():  # tens of unknowns: BLAS threads cost more than they bring
+            return self._outputs(omega, K, C, critical_speeds)
+
+    def _outputs(self, omega, K, C, critical_speeds):
         lam, V = self._state_eig(K, C + omega * self._G)
         kept, whirls, rigid = self._elastic(lam, V, K, N_FREQUENCIES, omega > 0.0)
         out = {
@@ -254,7 +291,8 @@ class ShaftModel:
         eigen-solution instead of an iteration on the speed (Friswell et al. 2010, ch. 3 and 5: the synchronous
         critical speed map)."""
         K, C = self.matrices(K_seats, C_seats)
-        return self._critical_speeds(K, C, count)
+        with single_blas_thread():
+            return self._critical_speeds(K, C, count)
 
     def _critical_speeds(self, K, C, count):
         n = K.shape[0]

@@ -21,6 +21,7 @@ LENGTH = Spec("m", 0.0, 10.0, low_open=True)
 DIAMETER = Spec("m", 0.0, 2.0, low_open=True)
 BORE = Spec("m", 0.0, 2.0)
 POSITION = Spec("m", 0.0, 10.0)
+BEARING_AXES = {"+z": 1, "-z": -1}
 MATERIAL = {
     "youngs_modulus": Spec("Pa", 1e9, 1e12),
     "density": Spec("kg/m^3", 100.0, 30000.0),
@@ -38,7 +39,7 @@ DISK = {
 class ShaftFile:
     """A shaft file packed for the kernels: node positions (m), element rows (E, G, rho, kappa placeholder 0,
     L, outer and inner diameter; the facade fills kappa), Poisson's ratios per element, disk rows (node, mass,
-    polar and diametral inertia), seat nodes and names, and the tool-tip node."""
+    polar and diametral inertia), seat nodes, names and bearing axes, and the tool-tip node."""
 
     path: Path
     name: str
@@ -49,6 +50,7 @@ class ShaftFile:
     disk_names: tuple
     seat_nodes: tuple
     seat_names: tuple
+    seat_axes: tuple  # per seat +1 or -1: the bearing model's z axis along or against the shaft's z
     tip_node: int
 
 
@@ -111,6 +113,18 @@ def _node_at(z, position, what, path):
     return node
 
 
+def _bearing_axis(seat, name, path):
+    """+1 or -1 from a seat's `bearing_axis` ("+z" or "-z", default "+z"): whether the bearing model's own z axis
+    (its F_z and the third row and column of its K) points along the shaft's z (nose to rear) or against it."""
+    axis = seat.get("bearing_axis", "+z")
+    if axis not in BEARING_AXES:
+        raise ParameterError(
+            f"{path}: seat '{name}': bearing_axis = {axis!r} is not allowed; allowed {list(BEARING_AXES)} (the "
+            "bearing model's z axis along the shaft's z, from the nose to the rear, or against it)"
+        )
+    return BEARING_AXES[axis]
+
+
 def read_shaft(name_or_path):
     """The shaft file (catalogue name or path) read, checked and packed (ShaftFile)."""
     path = shaft_path(name_or_path)
@@ -123,11 +137,12 @@ def read_shaft(name_or_path):
         node = _node_at(z, checked_value(d, "position", POSITION, path), f"disk '{name}'", path)
         disks.append((node, *(checked_value(d, key, spec, path) for key, spec in DISK.items())))
         disk_names.append(name)
-    seat_nodes, seat_names = [], []
+    seat_nodes, seat_names, seat_axes = [], [], []
     for i, s in enumerate(doc.get("seat", [])):
         name = s.get("name", f"seat[{i}]")
         seat_nodes.append(_node_at(z, checked_value(s, "position", POSITION, path), f"seat '{name}'", path))
         seat_names.append(name)
+        seat_axes.append(_bearing_axis(s, name, path))
     if len(set(seat_nodes)) != len(seat_nodes):
         raise ParameterError(f"{path}: two seats on one node ({seat_names}): give one seat per bearing node")
     tip = _node_at(z, checked_value(doc, "tool_tip.position", POSITION, path), "tool_tip", path)
@@ -141,5 +156,6 @@ def read_shaft(name_or_path):
         disk_names=tuple(disk_names),
         seat_nodes=tuple(seat_nodes),
         seat_names=tuple(seat_names),
+        seat_axes=tuple(seat_axes),
         tip_node=tip,
     )

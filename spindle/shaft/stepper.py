@@ -37,6 +37,15 @@ class ShaftStepper:
         self._seats = len(self.model.shaft.seat_nodes)
         self._critical = None  # (K, C, critical speeds) of the last computation
         self.critical_evaluations = 0  # how many times the critical speeds were computed
+        self.tolerance = 0.0  # relative change of the inputs below which evaluate keeps its outputs (moved())
+        self._last = None  # (inputs, their bounds (_bounds), outputs) of the last solution
+        self.solutions = 0  # how many times the modes were solved
+
+    def configure(self, floating, tolerance):
+        """Set the seats' floating flags (ShaftModel.set_floating) and the tolerance; forget the kept solutions."""
+        self.model.set_floating(floating)
+        self.tolerance = tolerance
+        self._critical = self._last = None
 
     def seat_matrices(self, u):
         """(K, C) of the seats, shape (n_seats, 5, 5), from the inputs u (omega first)."""
@@ -64,9 +73,37 @@ class ShaftStepper:
             "radial ones > 0 at two seats, an axial one > 0 at one)"
         )
 
+    def moved(self, u):
+        """Whether inputs u moved by more than `tolerance` since the last solution (its bounds: _bounds())."""
+        if self._last is None or self.tolerance == 0.0:
+            return True
+        return bool(np.any(np.abs(np.asarray(u, dtype=float) - self._last[0]) > self._last[1]))
+
+    def _bounds(self, u):
+        """Per input, the change from u beyond which a step solves again: an entry of a seat's K by tolerance
+        sqrt(K_ii K_jj) (each entry against its own diagonal's scale, so that the tilt entries count as much as the
+        radial ones whatever their units), a seat's damping and omega by tolerance of their value (any change
+        from 0)."""
+        u = np.asarray(u, dtype=float)
+        rows = np.abs(u[1:].reshape(self._seats, PER_SEAT))
+        diagonal = rows[:, :25].reshape(self._seats, 5, 5).diagonal(axis1=1, axis2=2)
+        bounds = np.empty_like(rows)
+        bounds[:, :25] = np.sqrt(diagonal[:, :, None] * diagonal[:, None, :]).reshape(self._seats, 25)
+        bounds[:, 25] = rows[:, 25]
+        return u, self.tolerance * np.concatenate(([abs(u[0])], bounds.ravel()))
+
     def evaluate(self, u):
-        """Outputs (a list) for the inputs u; InputError naming the input when they are refused."""
+        """Outputs (a list) for the inputs u; InputError naming the input when they are refused. With a tolerance,
+        the last outputs while the inputs have not moved (moved())."""
         self._limits.check(u)
+        if not self.moved(u):
+            return list(self._last[2])
+        values = self._solve(u)
+        self._last = (*self._bounds(u), values)
+        self.solutions += 1
+        return list(values)
+
+    def _solve(self, u):
         K, C = self.seat_matrices(u)
         out = self.model.evaluate(u[0], K, C, critical_speeds=False)
         if out["rigid_modes"] or not math.isfinite(out["compliance_radial"] * out["compliance_axial"]):

@@ -125,6 +125,22 @@ def test_run_file_errors_name_the_key(mutate, message, bearing_fmu, spindle_ther
         spec_of(doc)
 
 
+def test_an_array_connection_is_one_per_element(bearing_fmu, spindle_thermal_fmu, spindle_shaft_fmu):
+    """shape = [5, 5] connects K[i,j] to K_1[i,j] for i, j in 1..5 (FMI's structured names, indices from 1)."""
+    doc = {
+        "run": {"stop": 10.0, "step": 5.0},
+        "fmus": {"bearing": str(bearing_fmu), "shaft": str(spindle_shaft_fmu)},
+        "instances": {"bearing_1": {"fmu": "bearing"}, "shaft": {"fmu": "shaft"}},
+        "connections": [{"from": "bearing_1.K", "to": "shaft.K_1", "shape": [5, 5]}],
+    }
+    pairs = spec_of(doc).connections
+    assert len(pairs) == 25 and pairs[0] == ("bearing_1.K[1,1]", "shaft.K_1[1,1]")
+    assert pairs[7] == ("bearing_1.K[2,3]", "shaft.K_1[2,3]") and pairs[-1] == ("bearing_1.K[5,5]", "shaft.K_1[5,5]")
+    doc["connections"][0]["shape"] = [5, 0]
+    with pytest.raises(RunFileError, match=r"bearing_1\.K -> shaft\.K_1: shape = \[5, 0\]; allowed \[n\] or"):
+        spec_of(doc)
+
+
 def test_bad_override_names_the_key(bearing_fmu, spindle_thermal_fmu):
     with pytest.raises(RunFileError, match=r"override 'bearing_9\.F_z'.*instances: \['bearing_1', 'spindle'\]"):
         spec_of(loop_doc(bearing_fmu, spindle_thermal_fmu), {"bearing_9.F_z": 1.0})

@@ -4,7 +4,7 @@
   declarations of spindle/shaft/declarations.py (registered from spindle.shaft.stepper's tables);
 - fmpy.simulate_fmu of the built FMU, and a hand-written loop changing the speed and the seats' stiffness, equal the
   Python model (spindle.shaft.stepper.ShaftStepper) bit for bit: the FMU runs the same code in the same interpreter;
-- a stiffer front seat raises f_1 as the model says;
+- a stiffer front seat raises f_1 as the model says; a floating seat (`floating_<seat>`) is the model's;
 - the critical speeds (a second eigenproblem) are computed again only when a seat's K or c changes;
 - bad inputs (NaN speed, a negative diagonal stiffness, seats that leave the shaft free) are refused with fmi2Discard
   and a message naming the input, its value and the allowed range; a corrected input steps again; an unknown `shaft`
@@ -47,7 +47,7 @@ def test_validate_fmu_and_variables_are_the_declarations(spindle_shaft_fmu, step
         c: [v.name for v in md.modelVariables if v.causality == c] for c in ("parameter", "input", "output")
     }
     assert by_causality == {
-        "parameter": ["shaft"],
+        "parameter": ["shaft", "tolerance", "floating_1", "floating_2"],
         "input": [v.name for v in stepper.inputs],
         "output": [v.name for v in stepper.outputs],
     }
@@ -86,6 +86,42 @@ def test_hand_written_loop_with_seat_changes_equals_the_model(spindle_shaft_fmu,
             assert read_outputs(fmu, vr, names, integers) == ref, k
             f_1.append(ref["f_1"])
     assert f_1[1] > f_1[0]
+
+
+def test_a_floating_seat_is_the_models(spindle_shaft_fmu, stepper):
+    """floating_2 = true (the rear outer ring on preload springs) gives the model's outputs with that seat's axial
+    freedom condensed out: the front bearing alone holds the shaft axially."""
+    floating = ShaftStepper()
+    floating.model.set_floating((False, True))
+    inputs = start_inputs(stepper) | {"omega": OMEGA}
+    names = [v.name for v in stepper.outputs]
+    integers = {v.name for v in stepper.outputs if v.kind == "integer"}
+    with opened(spindle_shaft_fmu, "floating", {"floating_2": True, "tolerance": 0.0}) as (fmu, vr):
+        fmu.setReal([vr[n] for n in inputs], list(inputs.values()))
+        fmu.doStep(0.0, 0.1)
+        assert read_outputs(fmu, vr, names, integers) == floating.outputs_values(list(inputs.values()))
+    held = stepper.outputs_values(list(inputs.values()))
+    assert floating.outputs_values(list(inputs.values()))["compliance_axial"] > 1.8 * held["compliance_axial"]
+
+
+def test_a_tolerance_keeps_the_outputs_while_the_inputs_stay_within_it():
+    """tolerance t: an entry K_ij may move by t sqrt(K_ii K_jj) of the last solved inputs, a damping and omega by t
+    of theirs, before a step solves again; 0 solves every step."""
+    stepper = ShaftStepper()
+    stepper.configure((False, False), 1e-2)
+    u = list((start_inputs(stepper) | {"omega": OMEGA}).values())
+    first = stepper.evaluate(u)
+    tilt = 1 + 3 * 5 + 3  # K_1[4,4]: 2.4e4 N.m/rad among entries of 1e8 N/m
+    for index, factor in ((1, 1.009), (0, 1.009), (tilt, 1.009)):  # K_1[1,1], omega, K_1[4,4] within 1 %
+        u[index] *= factor
+        assert stepper.evaluate(u) == first and stepper.solutions == 1
+    u[tilt] *= 1.02  # now 2.9 % from the solved K_1[4,4]: the tilt entry counts on its own scale
+    moved = stepper.evaluate(u)
+    assert stepper.solutions == 2 and moved != first
+    stepper.configure((False, False), 0.0)
+    stepper.evaluate(u)
+    stepper.evaluate(u)
+    assert stepper.solutions == 4
 
 
 def test_critical_speeds_are_kept_until_a_seat_changes():
