@@ -188,6 +188,7 @@ cost in the table."""
 
 def figure(runs, stride=5):
     """Modes, compliances, preload and temperatures over time for both runs."""
+
     def series(key, scale=1.0, label_of=None):
         out = []
         for label, (c, _, cold) in runs.items():

@@ -192,7 +192,7 @@ def test_the_command_writes_the_csv_and_the_png(tmp_path, capsys):
     assert len(rows) == 11 and png.stat().st_size > 10000
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert f"wrote {csv_path}, {png}" in text
-    assert len(printed_critical_speeds(text)) == 1  # 1856 rad/s (17 722 rpm) below 30 000 rpm, 3876 rad/s above
+    assert len(printed_critical_speeds(text)) == 1  # 1593 rad/s (15 209 rpm) below 30 000 rpm, the second above
 
 
 def test_a_first_run_says_it_compiles(tmp_path, capsys, monkeypatch):
