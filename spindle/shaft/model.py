@@ -143,9 +143,15 @@ class ShaftModel:
         against the shaft's (bearing_axis = "-z") is the mirror image of one along it, and the mirror z -> -z turns
         (x, y, z, theta_x, theta_y) into (x, y, -z, -theta_x, -theta_y) (a rotation vector is a pseudovector), so
         its matrix becomes T A T with T = diag(1, 1, -1, -1, -1)."""
+        t = self.seat_signs()
+        return A * t[:, :, None] * t[:, None, :]
+
+    def seat_signs(self):
+        """Per seat the diagonal of T (n_seats, 5) of seat_frame: (1, 1, s, s, s), s = +1 for a bearing along the
+        shaft's z, -1 against it. T is its own inverse: a seat vector T v is in the other frame."""
         t = np.ones((len(self.shaft.seat_axes), beam.NDOF))
         t[:, 2:] = np.array(self.shaft.seat_axes, dtype=float)[:, None]
-        return A * t[:, :, None] * t[:, None, :]
+        return t
 
     def seat_stiffness(self, K_seats):
         """The seats' stiffness in the shaft's frame (seat_frame) with each floating seat's axial freedom condensed
