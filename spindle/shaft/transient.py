@@ -50,9 +50,9 @@ class ShaftTransient:
                 f"substeps = {substeps} is outside the allowed range [1, {SUBSTEPS_MAX}] (an integer)"
             )
         self.substeps = int(substeps)
-        self.K, C = model.matrices(K_seats, C_seats)
+        self.K, self._C = model.matrices(K_seats, C_seats)
         self.M = model._M
-        self.D = C + self.omega * model._G
+        self.D = self._C + self.omega * model._G
         self._t = model.seat_signs()
         self._seat_dofs = model._seat_dofs
         self._tip = model._tip
@@ -60,6 +60,13 @@ class ShaftTransient:
         n = self.K.shape[0]
         self.q, self.v = np.zeros(n), np.zeros(n)
         self.time = 0.0
+
+    def set_speed(self, omega):
+        """Change the speed (rad/s, 0 to 1e4) from the next step on: the gyroscopic term follows it, the state is
+        kept (a run-up as a sequence of constant speeds)."""
+        self.omega = self.model._check_omega(omega)
+        self.D = self._C + self.omega * self.model._G
+        self._solver = (None, None)
 
     # ------------------------------------------------------------------------------------------ frames
     def to_shaft(self, seat_values):

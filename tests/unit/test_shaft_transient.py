@@ -205,4 +205,25 @@ def test_bad_inputs_are_refused_with_their_name_and_range(model):
         ShaftTransient(model, 0.0, substeps=0)
     with pytest.raises(ShaftInputError, match=r"omega = -1.0 rad/s"):
         ShaftTransient(model, -1.0)
+    with pytest.raises(
+        ShaftInputError, match=r"seat_stiffness\[0\]\[2,2\] = -1.0 is outside the allowed range \[0, 1e\+13\]"
+    ):
+        transient.step(1e-4, zero, zero, seat_stiffness=np.where(np.arange(50).reshape(2, 5, 5) == 12, -1.0, 0.0))
+    with pytest.raises(ShaftInputError, match=r"v: shape \(3,\), expected \(27,\) finite values"):
+        transient.set_state(np.zeros(model.n_dofs), np.zeros(3))
     assert transient.time == 0.0 and not np.any(transient.q)  # a refused step leaves the state
+    assert transient.held_force_step(K_BEARING, None) == 0.0  # held forces without damping: no stable step
+
+
+def test_a_new_speed_acts_as_a_model_built_at_it(model):
+    rng = np.random.default_rng(4)
+    q, v = 1e-6 * rng.standard_normal(model.n_dofs), 1e-3 * rng.standard_normal(model.n_dofs)
+    changed, built = ShaftTransient(model, 0.0, K_seats=K_SYMMETRIC), ShaftTransient(model, OMEGA, K_seats=K_SYMMETRIC)
+    zero = no_seat_forces(model)
+    changed.step(1e-4, zero, zero)  # the solver of the old speed is kept, then dropped by set_speed
+    changed.set_speed(OMEGA)
+    for transient in (changed, built):
+        transient.set_state(q, v)
+    assert np.array_equal(
+        changed.step(1e-4, zero, zero)["tip_displacement"], built.step(1e-4, zero, zero)["tip_displacement"]
+    )
