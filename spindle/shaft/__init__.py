@@ -2,5 +2,6 @@
 rigid disks and bearing seats taking a bearing's 5x5 stiffness and damping."""
 
 from .model import ShaftInputError, ShaftModel, shaft_path
+from .transient import ShaftTransient
 
-__all__ = ["ShaftInputError", "ShaftModel", "shaft_path"]
+__all__ = ["ShaftInputError", "ShaftModel", "ShaftTransient", "shaft_path"]

@@ -22,6 +22,9 @@ import math
 import numpy as np
 import pytest
 
+from bearing_fmu.build import SCENES_DIR
+from bearing_fmu.models.quasi_static import QuasiStaticModel
+from bearing_fmu.scene import Scene
 from spindle.shaft import ShaftInputError, ShaftModel
 from spindle.shaft.declarations import K_START
 from spindle.shaft.transient import ShaftTransient
@@ -186,6 +189,24 @@ def test_seat_forces_enter_in_the_bearings_frame_and_sign(model):
     f = transient.load_vector(np.einsum("sij,sj->si", K_BEARING, d))
     K_with_seats, _ = model.matrices(K_BEARING)
     assert f == pytest.approx(-(K_with_seats - model._K) @ transient.q, rel=1e-12, abs=1e-9 * np.max(np.abs(f)))
+
+
+def test_a_displacement_driven_bearing_pushes_the_seat_back(model):
+    """The quasi-static B7214C driven by displacement (BearingDisp.fmu's scene) outputs the load holding its inner
+    ring, K d: at the rear seat (bearing along +z) displaced by +20 um in y the shaft receives the reverse, a force
+    toward -y of the bearing's F_y."""
+    bearing = QuasiStaticModel(scene=Scene.from_toml(SCENES_DIR / "quasi_static_displacement.toml"))
+    transient = ShaftTransient(model, 0.0)
+    q = np.zeros(model.n_dofs)
+    q[model._seat_dofs[1, 1]] = 20e-6
+    transient.set_state(q, np.zeros_like(q))
+    d = transient.outputs()["seat_displacement"]
+    F = np.zeros((2, 5))
+    out = bearing.evaluate(omega=0.0, **dict(zip(("x", "y", "z", "theta_x", "theta_y"), d[1], strict=True)))
+    F[1] = [out[name] for name in ("F_x", "F_y", "F_z", "M_x", "M_y")]
+    assert F[1, 1] > 1000.0  # the load holding the ring at +y is along +y
+    f = transient.load_vector(F)
+    assert f[model._seat_dofs[1, 1]] == -F[1, 1]
 
 
 def test_bad_inputs_are_refused_with_their_name_and_range(model):
