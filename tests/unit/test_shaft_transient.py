@@ -191,6 +191,24 @@ def test_seat_forces_enter_in_the_bearings_frame_and_sign(model):
     assert f == pytest.approx(-(K_with_seats - model._K) @ transient.q, rel=1e-12, abs=1e-9 * np.max(np.abs(f)))
 
 
+def test_substeps_follow_the_seat_forces_linearly(model):
+    """Four substeps of a step whose seat forces go from F0 to F1 are four steps of a quarter with the forces in
+    between (to rounding: the acceleration at a step's start is recomputed from its forces, not carried)."""
+    rng = np.random.default_rng(5)
+    F0, F1 = 100.0 * rng.standard_normal((2, 2, 5))
+    split, single = (
+        ShaftTransient(model, OMEGA, K_seats=K_BEARING, substeps=4),
+        ShaftTransient(model, OMEGA, K_seats=K_BEARING),
+    )
+    h = 2e-4
+    end = split.step(h, F0, F1)
+    for i in range(4):
+        single.step(h / 4, F0 + (F1 - F0) * i / 4, F0 + (F1 - F0) * (i + 1) / 4)
+    assert end["seat_displacement"] == pytest.approx(single.outputs()["seat_displacement"], rel=1e-9, abs=1e-20)
+    assert np.max(np.abs(end["seat_displacement"])) > 1e-9  # the forces moved the seats
+    assert split.time == pytest.approx(single.time, rel=1e-15)
+
+
 def test_a_displacement_driven_bearing_pushes_the_seat_back(model):
     """The quasi-static B7214C driven by displacement (BearingDisp.fmu's scene) outputs the load holding its inner
     ring, K d: at the rear seat (bearing along +z) displaced by +20 um in y the shaft receives the reverse, a force
