@@ -1,11 +1,10 @@
 """Build every FMU: the bearing FMUs (one per scene, bearing_fmu.build), SpindleThermal.fmu and SpindleShaft.fmu.
 
-SpindleThermal.fmu bundles `bearing_fmu_common`, the thermal model `spindle.thermal` and the bearing
-catalogue (THERMAL_BUNDLE; the thermal model reads bearing files with bearing_fmu_common.bearing_file),
-never the bearing model; next to it go the network it was built with, a reference result (the Python
-model's step response, regression data for users) and its variable list (<Name>.md, generated from
-spindle/thermal/declarations.py). SpindleShaft.fmu (SHAFT_BUNDLE) carries the shaft model and its catalogue, with
-its reference result and variable list beside it.
+SpindleThermal.fmu and SpindleShaft.fmu bundle `bearing_fmu_common` and one copy of `spindle`'s FMU models: the
+thermal model with the networks and the bearing catalogue (the thermal model reads bearing files with
+bearing_fmu_common.bearing_file), the shaft model with its catalogue (SPINDLE_BUNDLE), never the bearing model;
+next to each go the network or shaft it was built with, a reference result (the Python model's response,
+regression data for users) and its variable list (<Name>.md, generated from its declarations).
 
 `python -m spindle.all_fmus readme` rewrites the FMU variable block of README.md (between the markers
 README_BEGIN and README_END) from the same declarations; tests/fmu/test_variable_docs.py fails when
@@ -81,15 +80,18 @@ def compile_runs(network, axial_float, step=60.0):
 # the axial-float inputs (axial reaction and stiffness of each bearing), which a spring-preloaded
 # spindle does not need (what a scene does not need is not exposed: docs/architecture.md, scenes).
 THERMAL_FMUS = {"SpindleThermal": (DEFAULT_SPINDLE, False), "SpindleThermalFixed": (DEFAULT_SPINDLE, True)}
-# What a thermal FMU carries: the modules of the shared package and of the thermal model its slave runs (not the rest
-# of `spindle`: the master, the command line), the networks and the bearing catalogue they name
-# (spindle.thermal.model.BEARING_CATALOGUES). No bearing model: the host needs numpy and numba only, not scipy
-# (docs/fmu_runtime.md).
-THERMAL_BUNDLE = runtime_bundle(
+# What a thermal or shaft FMU carries: the modules of the shared package and of the FMU models of `spindle` (the
+# thermal model and the shaft model; not the rest of `spindle`: the master, the command line), the networks, the
+# bearing catalogue they name (spindle.thermal.model.BEARING_CATALOGUES) and the shaft catalogue. Both carry the same
+# copy of `spindle`, as every FMU carries the same bearing_fmu_common: a process keeps one module per name, so in a
+# host that loads both (the warm-up system) the second FMU finds its own files in the copy the first one put in
+# place. No bearing model: the host needs numpy and numba only, not scipy (docs/fmu_runtime.md).
+SPINDLE_BUNDLE = runtime_bundle(
     ((bearing_build.COMMON_DIR, "bearing_fmu_common"), (SPINDLE_DIR, "spindle")),
-    ("spindle.thermal.fmu", *bearing_build.RUNTIME_ENTRIES),
-    ("spindle/thermal/params",),
+    ("spindle.thermal.fmu", "spindle.shaft.fmu", *bearing_build.RUNTIME_ENTRIES),
+    ("spindle/thermal/params", "spindle/shaft/params"),
 ) + ((bearing_build.PACKAGE_DIR / "params" / "bearings", "spindle/thermal/bearings"),)
+THERMAL_BUNDLE = SPINDLE_BUNDLE
 
 
 def build_thermal_fmu(name, network, axial_float, out_dir=DEFAULT_OUT):
@@ -118,13 +120,7 @@ def build_thermal_fmu(name, network, axial_float, out_dir=DEFAULT_OUT):
 
 
 SHAFT_FMU = "SpindleShaft"
-# What the shaft FMU carries: the shared package's modules and the shaft model its slave runs, and the shaft catalogue.
-# No bearing model and no scipy (the model solves its eigenproblems with numpy).
-SHAFT_BUNDLE = runtime_bundle(
-    ((bearing_build.COMMON_DIR, "bearing_fmu_common"), (SPINDLE_DIR, "spindle")),
-    ("spindle.shaft.fmu", *bearing_build.RUNTIME_ENTRIES),
-    ("spindle/shaft/params",),
-)
+SHAFT_BUNDLE = SPINDLE_BUNDLE  # the same copy of `spindle` as the thermal FMUs
 # reference experiment of the shaft FMU: the start values (the Bearing.fmu reference K at both seats, 2000 N.s/m)
 # at 10 000 rpm, held for one second at 0.25 s steps (the outputs follow the inputs without history)
 SHAFT_STEP, SHAFT_STOP = 0.25, 1.0  # s

@@ -206,6 +206,7 @@ OPERATING = {
     "BearingDEM": BEARING_POINT,
     "SpindleThermal": THERMAL_POINT,
     "SpindleThermalFixed": {**THERMAL_POINT, "K_axial_1": 1e8, "K_axial_2": 1e8},
+    "SpindleShaft": {"omega": 1000.0},  # the seats keep their start values, a B7214C's K
 }
 # outputs that cannot be negative (a film, a compressive contact load, a pressure, a count, a loss, a frequency, a
 # life, an absolute temperature: T_* > 0 is checked as >= 0 and finite)

@@ -199,6 +199,34 @@ def test_bad_inputs_are_refused_with_their_range_and_the_host_survives(spindle_s
     assert any("no_such_100%%_shaft" in m["message"] and "rabreau_b7214c" in m["message"] for m in unknown["messages"])
 
 
+BESIDE_THERMAL_SCRIPT = textwrap.dedent("""
+    import json, shutil, sys
+    sys.path.insert(0, {fmu_tests!r})
+    import probe
+    report = {{}}
+    for name, path in (("thermal", {thermal!r}), ("shaft", {shaft!r})):
+        del probe.messages[:]
+        fmu, vr, unzip = probe.open_fmu(path)
+        report[name] = dict(init=probe.init_statuses[-1], step=probe.step_status(fmu, 0.0, 0.25),
+                            messages=list(probe.messages))
+    print(json.dumps(report))
+""")
+
+
+def test_a_host_loads_the_shaft_fmu_after_a_thermal_fmu(spindle_shaft_fmu, spindle_thermal_fmu):
+    """A host that imports no product code and loads the thermal FMU first, as the warm-up system's masters do:
+    the shaft FMU finds its own files in the copy of `spindle` the thermal FMU put in place (both carry the same one),
+    and both initialise and step."""
+    script = BESIDE_THERMAL_SCRIPT.format(
+        fmu_tests=str(Path(__file__).parent), thermal=str(spindle_thermal_fmu), shaft=str(spindle_shaft_fmu)
+    )
+    proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, (proc.returncode, proc.stderr[-3000:])
+    report = json.loads(proc.stdout.strip().splitlines()[-1])
+    for name in ("thermal", "shaft"):
+        assert report[name]["init"] == 0 and report[name]["step"] == 0, (name, report[name]["messages"])
+
+
 def test_spindle_check_runs_the_reference_experiment(spindle_shaft_fmu, tmp_path):
     """`spindle check` finds the shaft FMU's experiment from the shaft file beside it and matches its reference."""
     from spindle.check import check_fmu

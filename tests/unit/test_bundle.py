@@ -45,12 +45,20 @@ def test_a_thermal_fmu_carries_no_bearing_model_nor_master():
     assert "spindle/thermal/fmu.py" in files and ("spindle/thermal/bearings" in files)
 
 
-def test_the_shaft_fmu_carries_its_model_and_catalogue_only():
-    """No bearing model, no thermal model, nothing offline: the shaft model (numpy only) and its shaft files."""
+def test_the_shaft_and_thermal_fmus_carry_one_copy_of_spindle():
+    """A process keeps one `spindle`, the first FMU's: the shaft FMU set up after a thermal FMU (the warm-up system in
+    a host such as ecos) must find its own files there, so both carry the same copy: the two FMU models and their
+    catalogues, no bearing model, nothing offline, not the master or the command line."""
+
+    def spindle_files(bundle):
+        return {dest for _, dest in bundle if dest.startswith("spindle/")}
+
+    assert spindle_files(SHAFT_BUNDLE) == spindle_files(THERMAL_BUNDLE)
     files = carried(SHAFT_BUNDLE)
     assert not files & set(OFFLINE)
-    assert not any(f.startswith(("bearing_fmu/", "spindle/thermal/", "spindle/cosim/")) for f in files)
+    assert not any(f.startswith(("bearing_fmu/", "spindle/cosim/")) for f in files) and "spindle/cli.py" not in files
     assert {"spindle/shaft/fmu.py", "spindle/shaft/model.py", "spindle/shaft/beam.py"} <= files
+    assert "spindle/thermal/fmu.py" in files
     assert "spindle/shaft/params/rabreau_b7214c.toml" in files
 
 
