@@ -51,7 +51,6 @@ SLOW = {  # test file -> test function names (every parametrisation of them)
 EHL_FULL = {
     "tests/validation/test_ehl_annexe_d.py": {"test_every_case_matches_annexe_d"},
     "tests/validation/test_ehl_heavy_contacts.py": {"test_a_heavy_contact_is_solved_on_the_level_its_film_needs"},
-    "tests/validation/test_ehl_fine_grids.py": {"test_level_4_converges_without_a_diverging_cycle"},
 }
 BARE_HOST = {  # test file -> test function names that build a pip environment of their own
     "tests/fmu/test_bare_host.py": {"test_thermal_fmu_runs_in_a_host_with_only_fmpy_numpy_numba"},

@@ -576,16 +576,6 @@ XI_LINES = 10.0
 # diverged; with 0.4 every contact of the k = 9 grid M = 5-1000 x L = 20-40 converges (M = 1000, L = 40 in 94
 # cycles, the others in 4-25), within 0.4 % of the films of 0.6 where both converge
 LINES_OMEGA_GS = 0.4
-# The finest level from which the relaxation takes the density's derivative at every contact of Moes L >= LINES_MIN_L
-# (SolverSettings.density_jac; the lines' contacts take it on every level). The Jacobi distributive step's elastic
-# derivative halves with each level (a cell's deflection is proportional to its size), the density's, 2 H d rho_r/dP,
-# does not: at a heavy contact (k = 9, M = 13600, L = 18, p_h = 3.5 GPa, H_c = 0.033) the left-out part is 0.2-0.7
-# times the elastic one on level 3, 0.45-1.4 on level 4 and 0.9-2.8 on level 5 (P = 1 and 0.5), the step overshoots
-# by 1 plus that ratio, and the cycles there blew up on level 4 (h_c 6e14 nm at cycle 8, converged after a cut of the
-# damping; with the derivative 19 cycles, no jump). Not below LINES_MIN_L: the B7214C's outer race at M = 30000,
-# L = 11.2 (k = 5.86, p_h = 4.2 GPa, film 0.011) converges on level 4 without it and diverged with it. Level 3 keeps
-# the solver the Annexe D cases were validated with.
-DENSITY_JAC_LEVEL = 4
 
 
 def contact_box(H_c):
@@ -687,8 +677,7 @@ def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=3, coarsest=0, s
     default contact_box of the film estimate (film_estimate: Hamrock-Dowson's central film, or the rigid
     regimes' where larger). Without settings, the relaxation runs along lines and takes the density's
     derivative where that box grows or the film is thick at large Moes L (LINES_MIN_L; SolverSettings.xi_lines,
-    density_jac), and by points elsewhere; from level DENSITY_JAC_LEVEL on it takes the density's derivative at
-    every contact of Moes L >= LINES_MIN_L."""
+    density_jac), and by points elsewhere."""
     _, U, G, _, b, h_c_guess = contact_estimate(Rx, Ry, load, u_e, E_red, eta0, fluid)
     H_c = h_c_guess * Rx / b**2  # in Hertz units
     own_box = contact_box(H_c)
@@ -697,10 +686,9 @@ def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=3, coarsest=0, s
     rigid = own_box[2] >= 2.0 * BOX_GROWTH_MAX  # the largest box: a nearly rigid contact
     box = box or own_box
     if settings is None:
-        large_L = G * (2.0 * U) ** 0.25 >= LINES_MIN_L
-        lines = thick or (large_L and H_c >= LINES_MIN_H)
+        lines = thick or (G * (2.0 * U) ** 0.25 >= LINES_MIN_L and H_c >= LINES_MIN_H)
         settings = SolverSettings(
-            density_jac=lines or (large_L and finest >= DENSITY_JAC_LEVEL),
+            density_jac=lines,
             xi_lines=XI_LINES if lines else math.inf,
             omega_gs=RIGID_OMEGA_GS if rigid else (LINES_OMEGA_GS if lines else SolverSettings.omega_gs),
         )
