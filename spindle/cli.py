@@ -338,11 +338,11 @@ def cmd_film(args):
 
 
 def cmd_campbell(args):
-    """The shaft's Campbell diagram on quasi-static bearings (spindle.campbell): CSV, PNG, critical speeds printed."""
+    """The shaft's Campbell diagram on quasi-static bearings (spindle.campbell_cli): CSV, PNG, critical speeds."""
     from bearing_fmu.models.limits import InputError
     from bearing_fmu_common.paramfile import ParameterError
 
-    from .campbell import OptionError, campbell_command
+    from .campbell_cli import OptionError, campbell_command
 
     if _kernels_not_compiled("jones_harris"):
         print("note: the first run compiles the quasi-static bearing's kernels (a few minutes); later runs reuse them",
@@ -551,7 +551,7 @@ def _add_film_commands(sub):
 
 def _add_shaft_commands(sub):
     """campbell: the shaft's natural frequencies over speed on quasi-static bearings."""
-    from .campbell import STIFFNESS_MODES
+    from .campbell_cli import STIFFNESS_MODES
 
     p = sub.add_parser(
         "campbell",

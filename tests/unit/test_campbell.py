@@ -1,6 +1,6 @@
-"""`spindle campbell` (spindle/campbell.py) and the Campbell diagram (spindle/shaft/campbell.py): the diagram against
-ShaftModel at each speed, its critical speeds against the synchronous eigen-solution, the gyroscopic splitting of the
-default shaft, the refused options and the files written.
+"""`spindle campbell` (spindle/campbell_cli.py) and the Campbell diagram (spindle/shaft/campbell.py): the diagram
+against ShaftModel at each speed, its critical speeds against the synchronous eigen-solution, the gyroscopic splitting
+of the default shaft, the refused options and the files written.
 
 Default shaft on two B7214C under 800 N axial, K of the quasi-static bearing at 10 000 rpm unless said. The diagram
 calls ShaftModel.evaluate with the same inputs, so its frequencies are equal bit for bit; through the command the seat
@@ -18,7 +18,7 @@ import re
 import numpy as np
 import pytest
 
-from spindle.campbell import RPM, bearing_stiffness, quasi_static_bearing
+from spindle.campbell_cli import RPM, bearing_stiffness, quasi_static_bearing
 from spindle.cli import EXIT_INVALID, EXIT_OK, main
 from spindle.shaft import ShaftModel
 from spindle.shaft.campbell import SPEED_TOLERANCE, campbell, forward_below
