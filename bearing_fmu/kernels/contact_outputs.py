@@ -94,7 +94,7 @@ CO_PHI_RS_O = _CO_SLOTS.slot()  # ... outer
 CO_SIZE = _CO_SLOTS.size
 
 # the slots of kernels.ehl_contact.contact_method's constants in the contact parameter array
-_METHOD_SLOTS = (CP_E_RED, CP_FILM, CP_FILM_TABLE, CP_LUBRICATION_BLOCK, CP_CAPACITANCE_BLOCK)
+_METHOD_SLOTS = (CP_E_RED, CP_FILM, CP_LUBRICATION_BLOCK, CP_CAPACITANCE_BLOCK)
 # sums started at 0 whatever the options, and those of the loss submodel (with its TL_SIZE components at CO_P_EHL)
 _SUMS = (CO_QMAX_I, CO_QMAX_O, CO_PMAX, CO_N_LOADED, CO_HC_I, CO_HC_O)
 _LOSS_SUMS = (CO_Q_INNER_RING, CO_Q_OUTER_RING)
@@ -128,6 +128,7 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
     Z = balls.shape[1]
     torque = cp[CP_TORQUE] > 0.5
     method = contact_method(cp, _METHOD_SLOTS)
+    film_table = cp[CP_FILM_TABLE:]
     capacitance = method[METHOD_CAPACITANCE]
     lm = CP_LUBRICATION_BLOCK
     oil = oil_state(T_oil, lub, method[METHOD_LUBRICATED], cp[lm + LM_THERMAL] > 0.5, capacitance)
@@ -135,7 +136,7 @@ def contact_outputs(omega, T_oil, cp, lub, balls, out, per_contact, losses):
     _start_sums(cp, out)
     for j in range(Z):
         for race in range(2):
-            _contact(j, race, balls, cp, oil, method, out, per_contact, losses)
+            _contact(j, race, balls, cp, oil, method, film_table, out, per_contact, losses)
         if balls[BQ_Q_I, j] > 0.0 and balls[BQ_Q_O, j] > 0.0:
             out[CO_N_LOADED] += 1.0
         if capacitance:
@@ -185,14 +186,14 @@ def _start_sums(cp, out):
 
 
 @kernel(inline="always")  # as kernels.ehl_contact's, for the time of a call per contact
-def _contact(j, race, balls, cp, oil, method, out, per_contact, losses):
+def _contact(j, race, balls, cp, oil, method, film_table, out, per_contact, losses):
     """Ball j's contact with race 0 (inner) or 1 (outer): its film, Lambda, loss and capacitance into per_contact,
     its share of the race's sums and extremes into out (the races' slots are neighbours: CO_<name>_I + race)."""
     o = 5 * race  # inner at CP_RX_I.., outer at CP_RX_O..
     Q = balls[BQ_Q_I + race, j]
     u = balls[BQ_U_I, j] if race == 0 else balls[BQ_U_O, j]
     shape = (cp[CP_RX_I + o], cp[CP_RY_I + o], cp[CP_K_I + o], cp[CP_EE_I + o], cp[CP_KK_I + o], cp[CP_SIGMA_I + race])
-    a, b, p, hc, hm, lam, C, phi_t, phi_c = lubricated_contact(Q, u, race, shape, oil, method)
+    a, b, p, hc, hm, lam, C, phi_t, phi_c = lubricated_contact(Q, u, race, shape, oil, method, film_table)
     P = 0.0
     if Q > 0.0:
         if cp[CP_TORQUE] > 0.5:

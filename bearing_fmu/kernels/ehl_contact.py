@@ -22,12 +22,13 @@ from .hertz import hertz_contact
 from .lubricant import LUB_EPS_R0, LUB_RHO_REF, clausius_mossotti_constant, lubricant_state
 from .lubrication import LM_H_OIL, LM_K_OIL, LM_ON, LM_THERMAL, film_factors, temperature_viscosity_coefficient
 
-# The kernels here are inlined into their callers: called once per contact with their tuples (one holding the film
-# table, an array) they would cost the quasi-static contact outputs about 40 % more time.
+# The kernels here are inlined into their callers: called once per contact with their tuples they would cost the
+# quasi-static contact outputs about 40 % more time. The film table travels beside the tuples, not in one: an array
+# inside a tuple unpacked per contact cost the quasi-static contact outputs another 2 %.
 
 # where lubricated_contact's `method` holds the submodel switches its callers read as well
-METHOD_LUBRICATED = 3
-METHOD_CAPACITANCE = 7
+METHOD_LUBRICATED = 2
+METHOD_CAPACITANCE = 6
 
 
 @kernel(inline="always")
@@ -47,30 +48,31 @@ def oil_state(T_oil, lub, lubricated, thermal, capacitance):
 @kernel(inline="always")
 def contact_method(arr, slots):
     """lubricated_contact's `method` from a fidelity's parameter array arr, in which slots gives the index of E_red
-    and of the film formula code, then the offsets of the blocks the fidelity embeds: the film correction table
-    (kernels.film_correction FT_*; read from its offset to the end of arr), the lubrication method (kernels.lubrication
-    LM_*) and the capacitance submodel (kernels.capacitance CAP_*)."""
-    e_red, film, table, lm, cap = slots
-    return (arr[e_red], int(arr[film]), arr[table:], arr[lm + LM_ON] > 0.5, arr[lm + LM_K_OIL], arr[lm + LM_THERMAL],
+    and of the film formula code, then the offsets of the blocks the fidelity embeds: the lubrication method
+    (kernels.lubrication LM_*) and the capacitance submodel (kernels.capacitance CAP_*). The film correction table
+    (kernels.film_correction FT_*) is the caller's slice of arr from its offset to the end."""
+    e_red, film, lm, cap = slots
+    return (arr[e_red], int(arr[film]), arr[lm + LM_ON] > 0.5, arr[lm + LM_K_OIL], arr[lm + LM_THERMAL],
             arr[lm + LM_H_OIL], arr[cap + CAP_ON] > 0.5, int(arr[cap + CAP_PRESSURE]), arr[cap + CAP_H_FLOOR],
             arr[cap + CAP_OIL_GAP])  # fmt: skip
 
 
 @kernel(inline="always")
-def lubricated_contact(Q, u, race, shape, oil, method):
+def lubricated_contact(Q, u, race, shape, oil, method, film_table):
     """One contact under the load Q (N) at the entrainment speed u (m/s) of race 0 (inner) or 1 (outer).
 
     shape = (Rx, Ry, k, E, K, sigma): radii (m), ellipticity and elliptic integrals (-), composite roughness (m) of
-    the race's contact; oil = oil_state(...); method = (E_red (Pa), film formula code, film correction table,
-    lubricated, k_oil (W/(m K)), thermal (1 = inlet heating on), h_oil (m), capacitance, permittivity pressure
-    choice, capacitance film floor (m), oil-availability gap (m)), lubricated and capacitance booleans.
+    the race's contact; oil = oil_state(...); method = (E_red (Pa), film formula code, lubricated, k_oil (W/(m K)),
+    thermal (1 = inlet heating on), h_oil (m), capacitance, permittivity pressure choice, capacitance film floor (m),
+    oil-availability gap (m)), lubricated and capacitance booleans; film_table: the film correction table
+    (kernels.film_correction FT_*).
     Returns (a, b, p, h_c, h_min, Lambda, C, phi_t, phi_c): Hertz semi-axes (m) and pressure (Pa), the films (m)
     with the method's factors, the film parameter (-), the capacitance (F; 0 on an unloaded contact or without the
     submodel) and the inlet heating and starvation factors of the central film (-; 1 on an unloaded contact or
     without the method)."""
     Rx, Ry, k, ell_E, ell_K, sigma = shape
     eta, xi, rho0, beta, K_cm = oil
-    E_red, film, film_table, lubricated, k_oil, thermal, h_oil, capacitance, pressure, h_floor, oil_gap = method
+    E_red, film, lubricated, k_oil, thermal, h_oil, capacitance, pressure, h_floor, oil_gap = method
     a, b, _, p = hertz_contact(Q, Rx, Ry, E_red, k, ell_E, ell_K)
     hc, hm = corrected_film_thickness(film, eta, xi, E_red, u, Q, Rx, Ry, k, film_table, race)
     phi_t = 1.0

@@ -93,7 +93,7 @@ O_PHI_RS_O = _O_SLOTS.slot()  # ... outer
 O_SIZE = _O_SLOTS.size
 
 # the slots of kernels.ehl_contact.contact_method's constants in the bearing array
-_METHOD_SLOTS = (B_E_RED, B_FILM, B_FILM_TABLE, B_LUBRICATION_BLOCK, B_CAPACITANCE_BLOCK)
+_METHOD_SLOTS = (B_E_RED, B_FILM, B_LUBRICATION_BLOCK, B_CAPACITANCE_BLOCK)
 
 # the races' summaries of _ball_contacts: minima over the loaded contacts, maxima and counts
 _MINIMA = (O_LAMBDA_I, O_LAMBDA_O, O_HMIN_I, O_HMIN_O, O_HC_I, O_HC_O)
@@ -128,7 +128,7 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
     K_o = hertz_stiffness(brg[B_RX_O], brg[B_RY_O], E_red, brg[B_K_O], brg[B_EE_O], brg[B_KK_O])
     K = series_stiffness(K_i, K_o)
     delta_r, iters = solve_radial_shift(F_r, Pd, K, Z, nodes, weights, brg[B_TOL])
-    _ball_contacts(delta_r, K, F_c, u, brg, oil, method, out, ball)
+    _ball_contacts(delta_r, K, F_c, u, brg, oil, method, brg[B_FILM_TABLE:], out, ball)
 
     eta, xi, rho0 = oil[0], oil[1], oil[2]
     out[O_OMEGA_CAGE] = w_cage
@@ -148,7 +148,7 @@ def analytic_bearing(omega, F_r, T_oil, brg, lub, nodes, weights, out, ball):
 
 
 @kernel
-def _ball_contacts(delta_r, K, F_c, u, brg, oil, method, out, ball):
+def _ball_contacts(delta_r, K, F_c, u, brg, oil, method, film_table, out, ball):
     """Every ball's two contacts with the inner ring shifted by delta_r (m) (Hertz constant K of both contacts in
     series, N/m^1.5; centrifugal force F_c, N; entrainment speed u, m/s): the ball rows (analytic_bearing) and the
     races' summaries in out: O_LAMBDA_*, O_HMIN_*, O_HC_* (minimum over the loaded contacts, 0 on a race without
@@ -175,8 +175,8 @@ def _ball_contacts(delta_r, K, F_c, u, brg, oil, method, out, ball):
         d = delta_r * math.cos(psi) - 0.5 * Pd
         Q_i = K * d**1.5 if d > d_zero else 0.0
         Q_o = Q_i + F_c
-        _race_contact(j, 0, Q_i, u, shape_i, oil, method, out, ball)
-        _race_contact(j, 1, Q_o, u, shape_o, oil, method, out, ball)
+        _race_contact(j, 0, Q_i, u, shape_i, oil, method, film_table, out, ball)
+        _race_contact(j, 1, Q_o, u, shape_o, oil, method, film_table, out, ball)
         if Q_i > 0.0 and Q_o > 0.0:
             out[O_N_LOADED] += 1.0
         if capacitance:
@@ -191,11 +191,11 @@ def _ball_contacts(delta_r, K, F_c, u, brg, oil, method, out, ball):
 
 
 @kernel
-def _race_contact(j, race, Q, u, shape, oil, method, out, ball):
+def _race_contact(j, race, Q, u, shape, oil, method, film_table, out, ball):
     """Ball j's contact with race 0 (inner) or 1 (outer) under the load Q (N): its load, h_min, Lambda and
     capacitance into the ball rows, its share of the race's summaries into out (the races' slots of each
     summary are neighbours: O_<name>_I + race)."""
-    a, b, p, hc, hm, lam, C, phi_t, phi_c = lubricated_contact(Q, u, race, shape, oil, method)
+    a, b, p, hc, hm, lam, C, phi_t, phi_c = lubricated_contact(Q, u, race, shape, oil, method, film_table)
     if Q > 0.0:
         out[O_LAMBDA_I + race] = min(out[O_LAMBDA_I + race], lam)
         out[O_HMIN_I + race] = min(out[O_HMIN_I + race], hm)
