@@ -5,6 +5,7 @@ quasi-static model under the axial preload and the radial load, passed to ShaftM
 `operating`: K at the operating speed, held over the range (the classical diagram); `speed`: K recomputed at each
 speed (the bearings' stiffness changes with the balls' centrifugal force and gyroscopic moment). The diagram itself
 is spindle.shaft.campbell; this module checks the options, builds the seats' K and writes the CSV and the figure.
+`--floating SEAT` frees a seat's outer ring axially (a spring- or actuator-preloaded ring: ShaftModel's floating).
 """
 
 import csv
@@ -80,6 +81,19 @@ def stiffness_function(args, qs, n_seats):
     return lambda omega: np.array([bearing_stiffness(qs, omega, args.preload, args.radial)] * n_seats)
 
 
+def floating_seats(args, model):
+    """Per seat whether --floating names it (by name or number from 1); OptionError for a seat the shaft lacks."""
+    names = model.shaft.seat_names
+    flags = [False] * len(names)
+    for given in args.floating or ():
+        k = int(given) - 1 if given.isdigit() else (names.index(given) if given in names else -1)
+        if not 0 <= k < len(names):
+            seats = ", ".join(f"{i + 1} = {name}" for i, name in enumerate(names))
+            raise OptionError(f"--floating = {given} is not a seat of the shaft (its seats: {seats})")
+        flags[k] = True
+    return flags
+
+
 def compute(args):
     """(ShaftModel, CampbellDiagram, seconds) of the command's options; OptionError naming a bad option."""
     from .shaft import ShaftModel
@@ -90,6 +104,7 @@ def compute(args):
     start = time.perf_counter()
     args.shaft = args.shaft or DEFAULT_SHAFT
     model = ShaftModel(args.shaft)
+    model.set_floating(floating_seats(args, model))
     qs = quasi_static_bearing(args.bearing, args.lubricant)
     check_options(args, qs, OMEGA_MAX)
     n_seats = len(model.shaft.seat_nodes)
@@ -109,9 +124,10 @@ def write_csv(diagram, path):
 
 def title(args):
     held = f"K at {args.speed:g} rpm" if args.stiffness == "operating" else "K at each speed"
+    floating = f", floating: {', '.join(args.floating)}" if args.floating else ""
     return (
         f"{Path(args.shaft).stem}: {args.bearing} seats, {args.preload:g} N axial, {args.radial:g} N radial, "
-        f"{args.damping:g} N.s/m; {held}"
+        f"{args.damping:g} N.s/m{floating}; {held}"
     )
 
 

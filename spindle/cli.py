@@ -580,6 +580,9 @@ def _add_shaft_commands(sub):
         help="operating: K at --speed held over the range (the classical diagram); speed: K recomputed by the "
         "quasi-static bearing at each speed",
     )
+    p.add_argument("--floating", action="append", metavar="SEAT",
+                   help="a seat (name or number from 1) whose outer ring floats axially, preloaded by springs or an "
+                   "actuator: its axial stiffness is condensed out (repeatable; default: none)")  # fmt: skip
     p.add_argument("--out", default="results", help="folder of the CSV and PNG (default results)")
 
 

@@ -23,7 +23,7 @@ from spindle.cli import EXIT_INVALID, EXIT_OK, main
 from spindle.shaft import ShaftModel
 from spindle.shaft.campbell import SPEED_TOLERANCE, campbell, forward_below
 from spindle.shaft.declarations import K_START
-from spindle.shaft.model import WHIRL_BACKWARD, WHIRL_FORWARD
+from spindle.shaft.model import WHIRL_AXIAL, WHIRL_BACKWARD, WHIRL_FORWARD
 
 MODES = 6
 
@@ -202,3 +202,29 @@ def test_a_first_run_says_it_compiles(tmp_path, capsys, monkeypatch):
     monkeypatch.setattr(cli, "_kernels_not_compiled", lambda module: module == "jones_harris")
     code, text, _ = run(["--points", "1"], tmp_path, capsys)
     assert code == EXIT_INVALID and "first run compiles the quasi-static bearing's kernels" in text
+
+
+def test_a_floating_seat_is_the_model_with_that_seat_floating(seats, tmp_path, capsys):
+    """--floating rear_bearing (and its number, 2): every CSV row is ShaftModel.evaluate with the rear seat floating
+    (its axial stiffness condensed out), whose axial mode lies below the fixed seats' (the front bearing alone holds
+    the shaft axially)."""
+    floating = ShaftModel(floating=(False, True))
+    fixed = ShaftModel()
+    C = np.zeros((2, 5, 5))
+    C[:, 0, 0] = C[:, 1, 1] = 2000.0
+    for given in ("rear_bearing", "2"):
+        code, text, rows = run(["--points", "3", "--floating", given], tmp_path, capsys)
+        assert code == EXIT_OK, text
+        assert "floating: " + given in text
+        for r in rows:
+            out = floating.evaluate(float(r["omega_rad_s"]), seats, C, critical_speeds=False)
+            assert [float(r[f"f_{k}_Hz"]) for k in range(1, MODES + 1)] == pytest.approx(out["frequencies"], rel=1e-8)
+    axial = [m.evaluate(0.0, seats, critical_speeds=False) for m in (floating, fixed)]
+    f_axial = [out["frequencies"][out["whirl"] == WHIRL_AXIAL] for out in axial]
+    assert f_axial[0].size and f_axial[1].size and f_axial[0][0] < f_axial[1][0]
+
+
+def test_a_floating_seat_the_shaft_lacks_is_refused(tmp_path, capsys):
+    code, text, _ = run(["--floating", "middle"], tmp_path, capsys)
+    assert code == EXIT_INVALID
+    assert "--floating = middle is not a seat of the shaft (its seats: 1 = front_bearing, 2 = rear_bearing)" in text
