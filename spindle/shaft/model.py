@@ -104,6 +104,8 @@ class ShaftModel:
         self._T = craig_bampton(K, M, boundary, modes)
         self._K, self._M, self._G = (self._T.T @ A @ self._T for A in (K, M, G))
         self._Minv = np.linalg.inv(self._M)
+        self._Ms = self._M - 1j * self._G  # the synchronous problem's mass (critical_speeds)
+        self._Ms_inv = np.linalg.inv(self._Ms)
         seat_dofs = [[beam.NDOF * k + i for i in range(beam.NDOF)] for k in range(len(sf.seat_nodes))]
         self._seat_dofs = np.array(seat_dofs, dtype=np.int64).reshape(-1, beam.NDOF)
         self._tip = beam.NDOF * interface.index(sf.tip_node)
@@ -302,19 +304,20 @@ class ShaftModel:
 
     def _critical_speeds(self, K, C, count):
         n = K.shape[0]
-        Ms_inv = np.linalg.inv(self._M - 1j * self._G)
         A = np.zeros((2 * n, 2 * n), dtype=complex)
         A[:n, n:] = np.eye(n)
-        A[n:, :n] = -Ms_inv @ K
-        A[n:, n:] = -Ms_inv @ C
-        lam, V = np.linalg.eig(A)
+        A[n:, :n] = -self._Ms_inv @ K
+        A[n:, n:] = -self._Ms_inv @ C
+        # the eigenvalues alone (half the time of eig with its 2n vectors); the shape of the few roots examined
+        # comes from one inverse-iteration solve each
+        lam = np.linalg.eigvals(A)
         speeds = []
         for r in np.argsort(lam.imag):
             # a critical speed whirls (Im lambda > |Re lambda|); a real root e^{lambda t} of a disk with I_p > I_d
             # is a divergence of the synchronous problem, not a speed
             if lam[r].imag <= abs(lam[r].real):
                 continue
-            q = V[:n, r]
+            q = self._null_vector(lam[r] ** 2 * self._Ms + lam[r] * C + K)
             if np.real(np.conj(q) @ K @ q) < RIGID_RATIO * self._scale * np.real(np.conj(q) @ self._M @ q):
                 continue
             if whirl_sense(self._T @ q) == WHIRL_FORWARD:
@@ -322,3 +325,17 @@ class ShaftModel:
                 if len(speeds) == count:
                     break
         return np.array(speeds + [math.nan] * (count - len(speeds)))
+
+    @staticmethod
+    def _null_vector(Q):
+        """The shape q with Q q = 0 of a matrix Q singular to rounding (the quadratic problem at one of its roots):
+        inverse iteration, two solves from a vector with every component (the root's error is rounding, so the
+        solves grow q's share along the null direction by about 1e15 each)."""
+        q = np.ones(Q.shape[0], dtype=complex)
+        for _ in range(2):
+            try:
+                q = np.linalg.solve(Q, q)
+            except np.linalg.LinAlgError:  # exactly singular: that column's unit vector is not enough; take the SVD
+                return np.linalg.svd(Q)[2][-1].conj()
+            q /= np.linalg.norm(q)
+        return q
