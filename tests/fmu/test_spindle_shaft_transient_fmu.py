@@ -9,7 +9,8 @@ co-simulation FMU, for bearings driven by the inner ring's displacement.
 - the FMU state restores the shaft's motion (a master's rejected step);
 - bad inputs (NaN speed, a seat reaction or a K entry out of range) are refused with fmi2Discard and a message naming
   the variable, its value and the allowed range, the outputs keep their last values and a corrected input steps
-  again; a refused parameter fails fmi2ExitInitializationMode. Run in a fresh process (tests/fmu/probe.py).
+  again; at initialisation a bad input is a warning and the first doStep refuses it; a refused parameter fails
+  fmi2ExitInitializationMode. Run in a fresh process (tests/fmu/probe.py).
 """
 
 import math
@@ -185,6 +186,13 @@ BAD_INPUT_SCRIPT = textwrap.dedent("""
     fmu, vr, unzip = probe.open_fmu(path, {{"substeps": 0}})
     report["substeps"] = dict(init_status=probe.init_statuses[-1], messages=list(probe.messages))
     fmu.freeInstance(); shutil.rmtree(unzip, ignore_errors=True)
+    del probe.messages[:]
+    fmu, vr, unzip = probe.open_fmu(path, {{"F_x_1": float("nan")}})
+    at_init = list(probe.messages)
+    first = probe.step_status(fmu, 0.0, 1e-4)
+    fmu.setReal([vr["F_x_1"]], [0.0])
+    report["at_init"] = dict(messages=at_init, first=first, corrected=probe.step_status(fmu, 0.0, 1e-4))
+    fmu.terminate(); fmu.freeInstance(); shutil.rmtree(unzip, ignore_errors=True)
     print(json.dumps(report))
 """)
 
@@ -204,6 +212,10 @@ def test_bad_inputs_are_refused_with_their_range_and_the_host_survives(spindle_s
     substeps = report["substeps"]
     assert substeps["init_status"] == 3  # fmi2Error from fmi2ExitInitializationMode
     assert any("substeps = 0" in m["message"] and "[1, 100000]" in m["message"] for m in substeps["messages"])
+    # a bad input at initialisation: logged as a warning there, refused by the first doStep, accepted once corrected
+    at_init = report["at_init"]
+    assert any(m["status"] == 1 and "F_x_1 = nan N is outside" in m["message"] for m in at_init["messages"]), at_init
+    assert at_init["first"] == 2 and at_init["corrected"] == 0
 
 
 def test_spindle_check_runs_the_reference_experiment(spindle_shaft_transient_fmu, tmp_path):
