@@ -1,4 +1,5 @@
-"""Build every FMU: the bearing FMUs (one per scene, bearing_fmu.build), SpindleThermal.fmu and SpindleShaft.fmu.
+"""Build every FMU: the bearing FMUs (one per scene, bearing_fmu.build), SpindleThermal.fmu, SpindleShaft.fmu and
+SpindleShaftTransient.fmu.
 
 SpindleThermal.fmu and SpindleShaft.fmu bundle `bearing_fmu_common` and one copy of `spindle`'s FMU models: the
 thermal model with the networks and the bearing catalogue (the thermal model reads bearing files with
@@ -20,10 +21,12 @@ from bearing_fmu.bundle import runtime_bundle
 from bearing_fmu.fidelities import FIDELITIES
 from bearing_fmu.fmu_files import add_documentation
 
+from .shaft.declarations import SEAT_DAMPING, transient_parameter_declarations
 from .shaft.declarations import parameter_declarations as shaft_parameter_declarations
-from .shaft.fmu import SpindleShaft
+from .shaft.fmu import SpindleShaft, SpindleShaftTransient
 from .shaft.params import DEFAULT_SHAFT, shaft_path
 from .shaft.stepper import ShaftStepper
+from .shaft.transient_stepper import TransientStepper
 from .thermal.declarations import parameter_declarations
 from .thermal.fmu import SpindleThermal
 from .thermal.model import DEFAULT_SPINDLE, SpindleThermalModel, network_path
@@ -140,41 +143,95 @@ def shaft_reference_rows(shaft=DEFAULT_SHAFT, step=SHAFT_STEP, stop=SHAFT_STOP):
     return rows, inputs
 
 
+TRANSIENT_FMU = "SpindleShaftTransient"
+# reference experiment of the time-domain shaft FMU: its start values (the seats' reactions 0, the Bearing.fmu
+# reference K at both seats, the seats' own damping) at the reference speed with TRANSIENT_TIP_FORCE on the tool tip,
+# 20 steps of 0.5 ms. Unconnected, a seat's reaction stays 0 and its K acts within each step only, so the shaft drifts
+# on its seats' damping: regression data of the integration, not a bearing-supported response (runs/ couples bearings)
+TRANSIENT_STEP, TRANSIENT_STOP = 5e-4, 1e-2  # s
+TRANSIENT_TIP_FORCE = {"F_x_tip": 10.0}  # N
+
+
+def transient_reference_inputs(shaft=DEFAULT_SHAFT):
+    """The time-domain shaft FMU's constant reference inputs."""
+    stepper = TransientStepper(shaft)
+    return {v.name: v.start for v in stepper.inputs} | {"omega": REFERENCE_OMEGA} | TRANSIENT_TIP_FORCE
+
+
+def transient_reference_rows(shaft=DEFAULT_SHAFT, step=TRANSIENT_STEP, stop=TRANSIENT_STOP):
+    """The time-domain shaft FMU's reference result (rows of time and outputs, from the initialisation on) with its
+    parameters' start values, and its constant inputs."""
+    stepper = TransientStepper(shaft)
+    parameters = {v.name: v.start for v in transient_parameter_declarations(shaft, stepper.model.shaft.seat_names)}
+    damping = [[parameters[f"c_{kind}_{s}"] for kind, *_ in SEAT_DAMPING] for s in (1, 2)]
+    stepper.configure(parameters["substeps"], damping, parameters["implicit_coupling"])
+    inputs = transient_reference_inputs(shaft)
+    u = list(inputs.values())
+    names = [v.name for v in stepper.outputs]
+    rows = [{"time": 0.0, **dict(zip(names, stepper.start(u), strict=True))}]
+    for n in range(int(round(stop / step))):
+        rows.append({"time": (n + 1) * step, **dict(zip(names, stepper.step(step, u), strict=True))})
+    return rows, inputs
+
+
+# shaft FMUs: name -> (slave class name in spindle.shaft.fmu, reference rows, reference experiment (stop, step))
+SHAFT_FMUS = {
+    SHAFT_FMU: ("SpindleShaft", shaft_reference_rows, (SHAFT_STOP, SHAFT_STEP)),
+    TRANSIENT_FMU: ("SpindleShaftTransient", transient_reference_rows, (TRANSIENT_STOP, TRANSIENT_STEP)),
+}
+
+
+def shaft_reference_inputs_of(name, shaft=DEFAULT_SHAFT):
+    """The constant reference inputs of the shaft FMU `name` (spindle check)."""
+    return transient_reference_inputs(shaft) if name == TRANSIENT_FMU else shaft_reference_inputs(shaft)
+
+
 def build_shaft_fmu(out_dir=DEFAULT_OUT, shaft=DEFAULT_SHAFT, name=SHAFT_FMU):
-    """Build the shaft FMU `name` exposing the seats of `shaft` (a catalogue name: the start value of `shaft`)."""
-    rows, inputs = shaft_reference_rows(shaft)
-    held = [{"time": 0.0, **inputs}, {"time": SHAFT_STOP, **inputs}]
+    """Build the shaft FMU `name` (SHAFT_FMUS) exposing the seats of `shaft` (a catalogue name: the start value of
+    `shaft`)."""
+    class_name, reference_rows_of, (stop, step) = SHAFT_FMUS[name]
+    rows, inputs = reference_rows_of(shaft)
+    held = [{"time": 0.0, **inputs}, {"time": stop, **inputs}]
     in_csv = bearing_build.csv_text(held, lambda v: repr(float(v)))
     path = bearing_build.build_python_fmu(
         name,
         "spindle.shaft.fmu",
-        "SpindleShaft",
+        class_name,
         out_dir,
         bundle=SHAFT_BUNDLE,
         body=f"default_shaft = {shaft!r}",
-        runs=[{"options": {"stop_time": SHAFT_STOP, "output_interval": SHAFT_STEP}}],
-        experiment=(SHAFT_STOP, SHAFT_STEP),
+        runs=[{"options": {"stop_time": stop, "output_interval": step}}],
+        experiment=(stop, step),
     )
     computed = bearing_build.csv_text(rows, lambda v: repr(float(v)))
     markdown = bearing_build.variables_markdown(*shaft_variables(name, shaft))
     bearing_build.write_if_changed(Path(out_dir) / f"{name}_shaft.toml", shaft_path(shaft).read_text())
     reference = bearing_build.write_reference_if_changed(Path(out_dir) / f"{name}_ref.csv", computed)
     bearing_build.write_if_changed(Path(out_dir) / f"{name}.md", markdown)
-    add_documentation(path, name, markdown, in_csv, reference, SHAFT_STOP, SHAFT_STEP)
+    add_documentation(path, name, markdown, in_csv, reference, stop, step)
     return path
 
 
 def shaft_variables(name=SHAFT_FMU, shaft=DEFAULT_SHAFT):
     """variables_markdown() arguments of the shaft FMU `name` built with `shaft`."""
-    stepper = ShaftStepper(shaft)
+    if name == TRANSIENT_FMU:
+        stepper = TransientStepper(shaft)
+        declare, slave = transient_parameter_declarations, SpindleShaftTransient
+        connect = (
+            "connect each bearing FMU's `F_x` ... `M_y` and `K[i,j]` to its seat's `F_x_<seat>` ... `M_y_<seat>` and "
+            "`K_<seat>[i,j]`, and the seat's `x_<seat>` ... `theta_y_<seat>` to the bearing's `x` ... `theta_y`"
+        )
+    else:
+        stepper = ShaftStepper(shaft)
+        declare, slave = shaft_parameter_declarations, SpindleShaft
+        connect = "connect each seat's `K_<seat>[i,j]` to its bearing FMU's `K[i,j]`"
     seats = ", ".join(f"{k} `{s}`" for k, s in enumerate(stepper.model.shaft.seat_names, start=1))
     about = [
-        f"Shaft `{shaft}` (`{name}_shaft.toml`), seats {seats}: connect "
-        "each seat's `K_<seat>[i,j]` to its bearing FMU's `K[i,j]`. Reference result of the Python model: "
+        f"Shaft `{shaft}` (`{name}_shaft.toml`), seats {seats}: {connect}. Reference result of the Python model: "
         f"`{name}_ref.csv`. Variables declared in `spindle/shaft/declarations.py`; SI units."
     ]
-    parameters = shaft_parameter_declarations(shaft, stepper.model.shaft.seat_names)
-    return name, SpindleShaft.description, about, parameters, stepper.inputs, stepper.outputs
+    parameters = declare(shaft, stepper.model.shaft.seat_names)
+    return name, slave.description, about, parameters, stepper.inputs, stepper.outputs
 
 
 def thermal_variables(name, built=None):
@@ -200,7 +257,7 @@ def thermal_variables(name, built=None):
 def all_variables():
     """variables_markdown() arguments of every FMU, bearing scenes first."""
     out = [bearing_build.scene_variables(f) for f in bearing_build.scene_files()]
-    return out + [thermal_variables(name) for name in THERMAL_FMUS] + [shaft_variables()]
+    return out + [thermal_variables(name) for name in THERMAL_FMUS] + [shaft_variables(name) for name in SHAFT_FMUS]
 
 
 def _names(variables, units=True):
@@ -229,6 +286,8 @@ def _summary(name, scene):
         return FIDELITIES[scene[0].fidelity].summary(scene[0])
     if name == SHAFT_FMU:
         return "rotor finite-element shaft on bearing seats"
+    if name == TRANSIENT_FMU:
+        return "rotor finite-element shaft in time, on bearings driven by displacement"
     return "thermal spindle" + (", axial float of a fixed-preload pair" if THERMAL_FMUS[name][1] else "")
 
 
@@ -271,7 +330,7 @@ def build_all(out_dir=DEFAULT_OUT):
     """Build every FMU into out_dir; returns their paths."""
     paths = [bearing_build.build_fmu(scene, out_dir) for scene in bearing_build.scene_files()]
     paths += [build_thermal_fmu(name, network, axial, out_dir) for name, (network, axial) in THERMAL_FMUS.items()]
-    return paths + [build_shaft_fmu(out_dir)]
+    return paths + [build_shaft_fmu(out_dir, name=name) for name in SHAFT_FMUS]
 
 
 def main(argv=None):

@@ -173,11 +173,11 @@ def check_fmu(fmu_path, reference_csv=None):
     compared = [c for c in columns if c in output_names and c not in NOT_COMPARED]
     inputs, steps, initial = experiment(fmu_path, name)
     if inputs is None:  # thermal or shaft FMU: constant reference inputs, the reference's own time step
-        from spindle.all_fmus import reference_inputs, shaft_reference_inputs
+        from spindle.all_fmus import reference_inputs, shaft_reference_inputs_of
 
         shaft_file = folder / f"{name}_shaft.toml"
         model = SimpleNamespace(inputs=[v for v in md.modelVariables if v.causality == "input"])
-        constant = shaft_reference_inputs(shaft_file) if shaft_file.is_file() else reference_inputs(model)
+        constant = shaft_reference_inputs_of(name, shaft_file) if shaft_file.is_file() else reference_inputs(model)
         times = reference["time"]
         inputs = [constant] * len(times)
         steps = [0.0, *np.diff(times)]

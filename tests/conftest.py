@@ -51,15 +51,15 @@ def _thermal_fmu(name):
     return path
 
 
-def _shaft_fmu():
-    """Path of fmus/SpindleShaft.fmu; rebuilt if it is missing or older than any source it bundles (the spindle
-    package and the shared one)."""
+def _shaft_fmu(name="SpindleShaft"):
+    """Path of fmus/<name>.fmu (a shaft FMU of spindle.all_fmus.SHAFT_FMUS); rebuilt if it is missing or older than
+    any source it bundles (the spindle package and the shared one)."""
     from bearing_fmu.build import COMMON_DIR
-    from spindle.all_fmus import SHAFT_FMU, SPINDLE_DIR, build_shaft_fmu
+    from spindle.all_fmus import SPINDLE_DIR, build_shaft_fmu
 
-    path = FMU_DIR / f"{SHAFT_FMU}.fmu"
+    path = FMU_DIR / f"{name}.fmu"
     if _stale(path, (COMMON_DIR, SPINDLE_DIR)):
-        build_shaft_fmu(FMU_DIR)
+        build_shaft_fmu(FMU_DIR, name=name)
     return path
 
 
@@ -98,6 +98,11 @@ spindle_thermal_fixed_fmu = _session_fixture(
 
 spindle_shaft_fmu = _session_fixture(
     "SpindleShaft.fmu: the default shaft's rotor model with its two bearing seats.", _shaft_fmu
+)
+spindle_shaft_transient_fmu = _session_fixture(
+    "SpindleShaftTransient.fmu: the default shaft's time-domain mode with its two bearing seats.",
+    _shaft_fmu,
+    "SpindleShaftTransient",
 )
 
 

@@ -9,6 +9,7 @@ generated from them (spindle.all_fmus).
 from bearing_fmu_common.variables import Variable
 
 from .model import N_FREQUENCIES, OMEGA_MAX, SEAT_MATRIX_MAX
+from .transient import FORCE_MAX, SUBSTEPS_MAX
 
 DOF_WORDS = "(F_x, F_y, F_z, M_x, M_y)", "(x, y, z, theta_x, theta_y)"
 SEAT_LIMITS = "orders of magnitude above any bearing's stiffness; a diagonal entry is >= 0 (a bearing resists motion)"
@@ -82,8 +83,8 @@ def parameter_declarations(shaft, seat_names):
     return tuple(out)
 
 
-def _seat_inputs(seat, name):
-    """The 25 stiffness entries and the radial damping of seat `seat` (1-based) named `name` in the shaft file."""
+def _stiffness_inputs(seat, name):
+    """The 25 stiffness entries of seat `seat` (1-based) named `name` in the shaft file."""
     out = []
     for i in range(5):
         for j in range(5):
@@ -101,6 +102,12 @@ def _seat_inputs(seat, name):
                     nominal={"N/m": 1e8, "N": 1e6, "N.m": 1e4}[unit],
                 )
             )
+    return out
+
+
+def _seat_inputs(seat, name):
+    """The 25 stiffness entries and the radial damping of seat `seat` (1-based) named `name` in the shaft file."""
+    out = _stiffness_inputs(seat, name)
     out.append(
         Variable(
             f"c_{seat}",
@@ -116,18 +123,20 @@ def _seat_inputs(seat, name):
     return out
 
 
+def _omega_input(words):
+    return Variable(
+        "omega",
+        "rad/s",
+        f"shaft angular speed ({words})",
+        min=0.0,
+        max=OMEGA_MAX,
+        limits="above any spindle's speed (95 500 rpm); >= 0: the model's spin sense is +z",
+    )
+
+
 def input_declarations(shaft_file):
     """Inputs of a shaft (spindle.shaft.params.ShaftFile): the speed, then per seat its K entries and damping."""
-    out = [
-        Variable(
-            "omega",
-            "rad/s",
-            "shaft angular speed (gyroscopic coupling of the modes)",
-            min=0.0,
-            max=OMEGA_MAX,
-            limits="above any spindle's speed (95 500 rpm); >= 0: the model's spin sense is +z",
-        )
-    ]
+    out = [_omega_input("gyroscopic coupling of the modes")]
     for seat, name in enumerate(shaft_file.seat_names, start=1):
         out += _seat_inputs(seat, name)
     return tuple(out)
@@ -154,5 +163,119 @@ def output_declarations():
             "relative 1e-9 since its last computation (a second eigenproblem), else the last value",
         )
         for k in (1, 2)
+    ]
+    return tuple(out)
+
+
+# ---------------------------------------------------------------------------------------------------------------------
+# SpindleShaftTransient.fmu: the time-domain mode (spindle.shaft.transient, docs/shaft.md "Time-domain mode"). Each
+# seat's variables are the bearing FMU's names with the seat's number appended (F_x -> F_x_1, x -> x_1, K[i,j] ->
+# K_1[i,j]), so that a run file connects bearing_1.F_x -> shaft.F_x_1 and shaft.x_1 -> bearing_1.x.
+FORCE_NAMES = ("F_x", "F_y", "F_z", "M_x", "M_y")
+FORCE_UNITS = ("N", "N", "N", "N.m", "N.m")
+MOTION_NAMES = ("x", "y", "z", "theta_x", "theta_y")
+MOTION_UNITS = ("m", "m", "m", "rad", "rad")
+RATE_UNITS = ("m/s", "m/s", "m/s", "rad/s", "rad/s")
+MOTION_WORDS = ("displacement along x", "displacement along y", "axial displacement", "tilt about x", "tilt about y")
+# the shaft's own damping at a seat (radial x and y, axial z, tilt theta_x and theta_y): its start values are those
+# of the coupling's example in docs/shaft.md (a bearing's radial damping, 1e3-1e4 N.s/m in measurements)
+SEAT_DAMPING = (("radial", "N.s/m", 2000.0, DAMPING_MAX), ("axial", "N.s/m", 2000.0, DAMPING_MAX))
+SEAT_DAMPING += (("tilt", "N.m.s/rad", 0.2, 1.0e4),)
+SEAT_DAMPING_LIMITS = "0: none; the upper end is far above a bearing's or a squeeze film's damping"
+FORCE_LIMITS = "far above a spindle bearing's load limit"
+
+
+def transient_parameter_declarations(shaft, seat_names):
+    """SpindleShaftTransient.fmu's parameters: `shaft`, the Newmark substeps per communication step, whether the
+    bearings' K is used over a step, and per seat the shaft's own damping there."""
+    out = [
+        parameter_declarations(shaft, seat_names)[0],
+        Variable(
+            "substeps",
+            "",
+            "Newmark steps per communication step (the seat forces are held over the step, so more substeps only "
+            "resolve the shaft's own motion)",
+            "integer",
+            start=1,
+            min=1,
+            max=SUBSTEPS_MAX,
+            limits="1e5 steps of a 27-dof model per communication step is seconds of work",
+        ),
+        Variable(
+            "implicit_coupling",
+            "",
+            "true: each seat's force over a step is the held force plus K_<seat> (d(t) - d_start), integrated "
+            "implicitly with the shaft (stable whatever the step for a linear bearing); false: the force is held "
+            "and the K inputs are not used (stable below 2 c / k, docs/shaft.md)",
+            "boolean",
+            start=True,
+        ),
+    ]
+    for seat, name in enumerate(seat_names, start=1):
+        for kind, unit, start, high in SEAT_DAMPING:
+            dofs = {"radial": "x and y", "axial": "z", "tilt": "theta_x and theta_y"}[kind]
+            out.append(
+                Variable(
+                    f"c_{kind}_{seat}",
+                    unit,
+                    f"seat {seat} ('{name}'): the shaft's own viscous damping at the seat in {dofs} (a bearing "
+                    "driven by displacement carries none)",
+                    start=start,
+                    min=0.0,
+                    max=high,
+                    limits=SEAT_DAMPING_LIMITS,
+                )
+            )
+    return tuple(out)
+
+
+def _force_inputs(suffix, words, start=0.0):
+    return [
+        Variable(
+            f"{name}_{suffix}",
+            unit,
+            f"{words}: {name}",
+            start=start,
+            min=-FORCE_MAX,
+            max=FORCE_MAX,
+            limits=FORCE_LIMITS,
+            nominal=1e3 if unit == "N" else 10.0,
+        )
+        for name, unit in zip(FORCE_NAMES, FORCE_UNITS, strict=True)
+    ]
+
+
+def transient_input_declarations(shaft_file):
+    """Inputs of SpindleShaftTransient.fmu: the speed, per seat the bearing's reaction (F_x ... M_y) and K, then the
+    external force on the tool tip."""
+    out = [_omega_input("gyroscopic term; a change between steps keeps the state")]
+    for seat, name in enumerate(shaft_file.seat_names, start=1):
+        out += _force_inputs(
+            seat,
+            f"seat {seat} ('{name}'): the bearing's reaction in its own frame, the load on its inner ring that holds "
+            "it at the seat's displacement (the shaft receives its reverse); connect the bearing FMU's output",
+        )
+        out += _stiffness_inputs(seat, name)
+    out += _force_inputs("tip", "external force on the tool tip, shaft's frame, on the shaft")
+    return tuple(out)
+
+
+def transient_output_declarations(shaft_file):
+    """Outputs: per seat the inner ring's displacement and tilts and their rates in the bearing's frame (relative to
+    the outer ring, fixed to the housing), then the tool tip's displacement (shaft's frame)."""
+    out = []
+    for seat, name in enumerate(shaft_file.seat_names, start=1):
+        where = f"seat {seat} ('{name}'): inner ring's"
+        out += [
+            Variable(f"{m}_{seat}", u, f"{where} {w}, bearing's frame: connect to the bearing FMU's {m}")
+            for m, u, w in zip(MOTION_NAMES, MOTION_UNITS, MOTION_WORDS, strict=True)
+        ]
+        out += [
+            Variable(f"{m}_rate_{seat}", u, f"{where} rate of its {w}, bearing's frame")
+            for m, u, w in zip(MOTION_NAMES, RATE_UNITS, MOTION_WORDS, strict=True)
+        ]
+    out += [
+        Variable(f"{m}_tip", u, f"tool tip's {w}, shaft's frame")
+        for m, u, w in zip(MOTION_NAMES, MOTION_UNITS, MOTION_WORDS, strict=True)
     ]
     return tuple(out)

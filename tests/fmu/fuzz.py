@@ -42,7 +42,7 @@ from fmpy.fmi2 import (
 )
 
 # communication step per FMU kind: a thermal network steps in seconds, the DEM integrates every step
-STEP = {"SpindleThermal": 1.0, "SpindleThermalFixed": 1.0, "BearingDEM": 1e-4}
+STEP = {"SpindleThermal": 1.0, "SpindleThermalFixed": 1.0, "BearingDEM": 1e-4, "SpindleShaftTransient": 1e-4}
 STRING_CASES = ("", "no_such_name", "%s%n%d", "x" * 300)  # empty, unknown, printf format, too long for a file name
 CHOICE_CASES = ("OUTER", " outer", "implicit euler")  # near-misses of a choice (wrong case, space, spelling)
 
@@ -207,6 +207,8 @@ OPERATING = {
     "SpindleThermal": THERMAL_POINT,
     "SpindleThermalFixed": {**THERMAL_POINT, "K_axial_1": 1e8, "K_axial_2": 1e8},
     "SpindleShaft": {"omega": 1000.0},  # the seats keep their start values, a B7214C's K
+    # the seats' reactions of a B7214C pair at rest under 500 N, its K at their start values, a tool-tip force
+    "SpindleShaftTransient": {"omega": 1000.0, "F_x_1": 500.0, "F_x_2": -100.0, "F_x_tip": 400.0},
 }
 # outputs that cannot be negative (a film, a compressive contact load, a pressure, a count, a loss, a frequency, a
 # life, an absolute temperature: T_* > 0 is checked as >= 0 and finite)

@@ -84,6 +84,34 @@ def refused_steps(report, recovered_output):
     return refused
 
 
+def probe_report(script):
+    """The JSON report (last line of stdout) of a probe script run in a fresh process, which must exit 0."""
+    proc = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, (proc.returncode, proc.stderr[-3000:])
+    return json.loads(proc.stdout.strip().splitlines()[-1])
+
+
+def bad_input_report(template, fmu_path, omega, start):
+    """The report of a bad-input probe script (`template` formatted with the tests' folder, the FMU's path, the
+    speed and the inputs' start values), whose first step, with good inputs, was accepted."""
+    script = template.format(fmu_tests=str(Path(__file__).parent), path=str(fmu_path), omega=omega, start=start)
+    report = probe_report(script)
+    assert report["good"] == 0
+    return report
+
+
+def assert_refused_with(report, cases):
+    """Each (case, text) of `cases` in a probe's report was refused with fmi2Discard (the instance lives on), kept
+    the outputs it had before (report["before"]: the last accepted ones, never NaN) and logged an error holding
+    `text`."""
+    for case, text in cases:
+        refused = report[case]
+        assert refused["status"] == 2, case
+        assert refused["outputs"] == report["before"], case
+        errors = [m["message"] for m in refused["messages"] if m["status"] == 2]
+        assert any(text in m for m in errors), (case, refused["messages"])
+
+
 def close(a, b, rel=1e-12):
     return abs(a - b) <= rel * max(abs(a), abs(b)) or a == b
 

@@ -38,6 +38,7 @@ FIXTURES = {
     "SpindleThermal": "spindle_thermal_fmu",
     "SpindleThermalFixed": "spindle_thermal_fixed_fmu",
     "SpindleShaft": "spindle_shaft_fmu",
+    "SpindleShaftTransient": "spindle_shaft_transient_fmu",
 }
 FUZZED = [
     (name, v.name)
