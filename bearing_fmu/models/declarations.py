@@ -17,6 +17,7 @@ facade's defect frequencies (FTF, BPFO, BPFI, BSF, kernels.geometry.pass_frequen
 "life" (analytic and quasi-static fidelities) is the rating-life array (kernels.rating_life LO_*).
 """
 
+import math
 from dataclasses import replace
 
 from bearing_fmu_common.variables import Variable
@@ -650,6 +651,39 @@ DEM_INPUTS = (
     T_OIL,
     replace(_BY_NAME["dPd_thermal"], option=""),  # the DEM always has it
 )
+
+# the prescribed ring (DemModel drive = "displacement"): its displacement, tilts and their rates at the end of each
+# call. The rates' bound: the largest displacement or tilt vibrating at PATH_RATE_FREQUENCY, beyond the ball-pass
+# frequencies of any bearing that the DEM's steps resolve
+PATH_RATE_FREQUENCY = 1e4  # Hz
+DOF_RATE_UNITS = ("m/s", "m/s", "m/s", "rad/s", "rad/s")
+PATH_RATE_LIMITS = "the largest displacement (tilt) vibrating at 10 kHz"
+
+
+def _path_inputs():
+    """x ... theta_y and their rates x_rate ... theta_y_rate, each at the end of the call (the ring follows the cubic
+    from its current state to them)."""
+    out = [
+        Variable(name, unit, f"imposed {words} of the inner ring at the end of the step", **_displacement_range(i))
+        for i, (name, unit, words) in enumerate(zip(DOF_NAMES, DOF_UNITS, DOF_WORDS))
+    ]
+    for i in range(5):
+        bound = _displacement_range(i)["max"] * 2.0 * math.pi * PATH_RATE_FREQUENCY
+        out.append(
+            Variable(
+                f"{DOF_NAMES[i]}_rate",
+                DOF_RATE_UNITS[i],
+                f"rate of the imposed {DOF_WORDS[i]} of the inner ring at the end of the step",
+                min=-bound,
+                max=bound,
+                limits=PATH_RATE_LIMITS,
+                nominal=1e-3 if i < 3 else 1.0,
+            )
+        )
+    return tuple(out)
+
+
+DEM_PATH_INPUTS = _path_inputs()
 
 DEM_OUTPUTS = (
     *(

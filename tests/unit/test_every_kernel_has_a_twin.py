@@ -232,6 +232,7 @@ COVERED_THROUGH |= _pieces(
         "ball_race_forces": "the ball-race contacts' forces, springs, chatter counts and powers",
         "cage_forces": "the cage balls' contacts",
         "correct_ring": "the ring's corrector, translation and tilts",
+        "follow_path": "the prescribed ring on its cubic path (test_kernel_matches_twin_with_a_prescribed_ring)",
         "correct_balls": "the balls' and cage balls' corrector and the slip power at the step's end",
     },
 )

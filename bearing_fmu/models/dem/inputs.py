@@ -6,7 +6,16 @@ import math
 from bearing_fmu_common.variables import InputLimits
 
 from ...params import clearance_limits
-from ..declarations import DEM_DT_MAX, DEM_DT_MIN, DEM_INPUTS, DEM_REFRESH_MAX, T_OIL_START
+from ..declarations import (
+    DEM_DT_MAX,
+    DEM_DT_MIN,
+    DEM_INPUTS,
+    DEM_PATH_INPUTS,
+    DEM_REFRESH_MAX,
+    DISPLACEMENT_LIMIT,
+    PATH_RATE_FREQUENCY,
+    T_OIL_START,
+)
 from ..dem_settings import checked_settings as checked_numeric_settings
 from ..limits import DM_N_LIMIT, MATERIAL_LIMIT, InputError
 from .packing import CONSTANTS
@@ -71,6 +80,55 @@ def input_limits(bearing, Pd, load, omega_max):
         f"Pd + dPd_thermal within [{low:.4g}, {high:.4g}] m (|Pd| <= (f_i + f_o - 1) D)",
     )
     return InputLimits(DEM_INPUTS, narrowed)
+
+
+DRIVES = ("load", "displacement")  # DemModel's drive: the loads move the inner ring, or its path is prescribed
+PATH_NAMES = tuple(v.name for v in DEM_PATH_INPUTS)
+
+
+def checked_drive(drive):
+    """The drive of a DemModel, refused unless one of DRIVES."""
+    if drive not in DRIVES:
+        raise InputError(f"drive = {drive!r} is not one of the allowed {list(DRIVES)}")
+    return drive
+
+
+def path_limits(bearing):
+    """The InputLimits of DEM_PATH_INPUTS narrowed to the bearing: displacements within half its groove clearance
+    A = (f_i + f_o - 1) D, their rates within that amplitude vibrating at PATH_RATE_FREQUENCY."""
+    bound = DISPLACEMENT_LIMIT * (bearing.f_i + bearing.f_o - 1.0) * bearing.D
+    why = "|d| <= 0.5 (f_i + f_o - 1) D: beyond it past any material limit"
+    narrowed = {name: (-bound, bound, why) for name in PATH_NAMES[:3]}
+    rate = bound * 2.0 * math.pi * PATH_RATE_FREQUENCY
+    narrowed |= {name: (-rate, rate, f"{why}, vibrating at 10 kHz") for name in PATH_NAMES[5:8]}
+    return InputLimits(DEM_PATH_INPUTS, narrowed)
+
+
+def path_values(limits, motion, displacement_driven):
+    """The prescribed ring's end values of a call (x ... theta_y, then their rates; SI) from the keywords `motion`
+    (name -> value, absent = 0), checked against limits (path_limits). Refused when the model is load-driven, or
+    for a name that is not one of PATH_NAMES."""
+    unknown = sorted(set(motion) - set(PATH_NAMES))
+    if unknown:
+        raise InputError(f"unknown input(s) {unknown}: allowed the loads, or with drive = 'displacement' {PATH_NAMES}")
+    if motion and not displacement_driven:
+        raise InputError(
+            f"{sorted(motion)[0]} = {motion[sorted(motion)[0]]} is an input of drive = 'displacement' only (this "
+            "model is load-driven: give F_x ... M_y)"
+        )
+    values = tuple(float(motion.get(name, 0.0)) for name in PATH_NAMES)
+    limits.check(values)
+    return values
+
+
+def check_no_loads(loads):
+    """A ring on a prescribed path takes no loads (the shaft holds it): refuse a non-zero one."""
+    for name, value in zip(("F_x", "F_y", "F_z", "M_x", "M_y"), loads):
+        if value != 0.0:
+            raise InputError(
+                f"{name} = {value} is outside the allowed range [0, 0] with drive = 'displacement' (the ring's "
+                "path is prescribed: its reaction loads are outputs)"
+            )
 
 
 def check_inputs(limits, t, t_end, omega, loads, T_oil, dPd_thermal):
