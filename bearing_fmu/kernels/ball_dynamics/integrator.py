@@ -563,11 +563,12 @@ def correct_balls(balls, cage, ring, par, dt, work, acc, total):
 # callers (which take the same error model: the inlined code is compiled with the caller's): a call that passes the
 # nine state arrays costs two atomic reference-count updates per array, about 5 % of a step.
 @kernel(error_model="numpy", inline="always")
-def verlet_step(state, par, omega, loads, dt, work, acc, s):
+def verlet_step(state, par, omega, loads, dt, work, acc, s, prescribed):
     """One velocity-Verlet step of every body of state (see the module docstring) at inner-ring speed omega
     (rad/s) and loads (F_x, F_y, F_z (N), M_x, M_y (N.m, about its centre)) on the inner ring; state, par, work
-    and acc as advance's. A prescribed ring (par[P_DRIVE]) is put at the fraction s of its path at the step's end
-    (follow_path) instead of being predicted and corrected.
+    and acc as advance's. A prescribed ring (prescribed, par[P_DRIVE] != 0) is put at the fraction s of its path at
+    the step's end (follow_path) instead of being predicted and corrected; advance passes prescribed as a constant,
+    so that the load-driven step is compiled without the switch.
 
     The forces at the new positions with the predicted velocities: the 2 Z ball-race contacts
     (ball_race_forces) and the cage balls (cage_forces, the cage's torque shared by rigid_cage_torque), then the
@@ -578,7 +579,6 @@ def verlet_step(state, par, omega, loads, dt, work, acc, s):
     """
     balls, cage, ring, _, _, counters = state
     predict(balls, cage, ring, work, acc, dt)
-    prescribed = par[P_DRIVE] != 0.0
     if prescribed:
         follow_path(ring, par, s, acc)
     race_approaches(balls, ring, par, work)
@@ -620,7 +620,7 @@ def initialise_accelerations(state, params, omega, loads, T_oil, space):
     refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, np.empty((4, balls.shape[1])))
     # a step of zero length: positions and velocities stay, the accelerations become those of the forces
     saved = spring.copy()
-    verlet_step(state, par, omega, loads, 0.0, work, acc, 0.0)
+    verlet_step(state, par, omega, loads, 0.0, work, acc, 0.0, par[P_DRIVE] != 0.0)
     spring[:, :] = saved  # (the springs' projection on the tangent planes waits for the first real step)
     counters[K_STEP] -= 1  # not a step: the refresh phase stays
 
@@ -641,27 +641,12 @@ def start_call(acc, status):
     status[ST_INDEX] = -1
 
 
-@kernel(error_model="numpy")  # (verlet_step is inlined: its error model)
-def advance(state, params, call, space):
-    """Run n_steps steps of dt (s) with the inner-ring speed going linearly from omega0 to omega1
-    (rad/s), constant loads F_x, F_y, F_z (N) and M_x, M_y (N.m, about its centre) on the inner ring and oil
-    temperature T_oil (K).
-
-    The arguments are four tuples (kernels.ball_dynamics.state, "argument groups"): state = (balls, cage, ring,
-    spring, trib, counters), the state arrays; params = (par, lub), the parameter and lubricant arrays; call =
-    (n_steps, dt, omega0, omega1, loads, T_oil, energy_limit) with loads = (F_x, F_y, F_z, M_x, M_y); space =
-    (work, acc, status), the scratch, the call's sums and the monitor's verdict.
-
-    Stops early with status[ST_CODE] != STATUS_OK (monitor) after the offending step; status[ST_STEP]
-    holds the steps done, status[ST_INDEX] the ball or contact (race * Z + ball). energy_limit (J)
-    bounds the kinetic energy and par[P_DAMPING_STOP] the damping ratio of a step (monitor.damping_step_ratio),
-    both checked at each tribology refresh. acc[A_DISS_I], acc[A_DISS_O]
-    receive the energy (J) dissipated in the inner and outer contacts during the call, acc[A_POWER_I],
-    acc[A_POWER_O] the power (W) of the last step, and acc[A_CAP] the bearing capacitance of every step (the
-    loaded balls' capacitances at the last refresh, without a background term) integrated over the call (F.s).
-    With par[P_DRIVE] = 1 the inner ring follows the path of par[P_PATH] over the call (follow_path: its support and
-    the loads move it no more) and acc[A_REACTION] receives the load that holds it there integrated over the call.
-    """
+# advance's body, inlined into two kernels with prescribed a constant: the load-driven loop is then compiled without
+# the prescribed ring's branches, which in the loop cost it 4 %. (Both inlined into advance itself, the function
+# twice as long, the load-driven call took half as long again.)
+@kernel(error_model="numpy", inline="always")
+def run_call(state, params, call, space, prescribed):
+    """advance's call, the inner ring prescribed (prescribed, a constant) or load-driven."""
     balls, cage, ring, _, trib, counters = state
     par, lub = params
     n_steps, dt, omega0, omega1, loads, T_oil, energy_limit = call
@@ -676,8 +661,6 @@ def advance(state, params, call, space):
     chatter_limit = int(par[P_CHATTER])
     damping_stop = par[P_DAMPING_STOP]
     capacitance = par[P_CAPACITANCE_BLOCK + CAP_ON] > 0.5
-    prescribed = par[P_DRIVE] != 0.0
-    F_x, F_y, F_z, M_x, M_y = loads
     start_call(acc, status)
     film_i, film_o = film_losses(trib)
     ball_capacitances(trib, work)
@@ -703,7 +686,8 @@ def advance(state, params, call, space):
                 return
         countdown -= 1
         omega = omega0 + d_omega * (n + 1)
-        pen, pen_at, chat, chat_at, total = verlet_step(state, par, omega, loads, dt, work, acc, (n + 1) / n_steps)
+        s = (n + 1) / n_steps if prescribed else 0.0
+        pen, pen_at, chat, chat_at, total = verlet_step(state, par, omega, loads, dt, work, acc, s, prescribed)
         power_i = acc[A_POWER_I] + film_i
         power_o = acc[A_POWER_O] + film_o
         acc[A_POWER_I] = power_i
@@ -723,6 +707,7 @@ def advance(state, params, call, space):
         acc[A_RING_SQ + 4] += (ring[R_VX] * ring[R_VX] + ring[R_VX + 1] * ring[R_VX + 1]) * dt
         acc[A_RING_SQ + 5] += (ring[R_VTH] * ring[R_VTH] + ring[R_VTH + 1] * ring[R_VTH + 1]) * dt
         if prescribed:  # the load that holds the ring on its path: the loads less the ring's force and moment
+            F_x, F_y, F_z, M_x, M_y = loads
             acc[A_REACTION] += (F_x - acc[A_FR]) * dt
             acc[A_REACTION + 1] += (F_y - acc[A_FR + 1]) * dt
             acc[A_REACTION + 2] += (F_z - acc[A_FR + 2]) * dt
@@ -746,3 +731,43 @@ def advance(state, params, call, space):
             status[ST_CODE] = STATUS_CHATTER
             status[ST_INDEX] = chat_at
             return
+
+
+@kernel(error_model="numpy")  # (verlet_step is inlined: its error model)
+def load_driven_call(state, params, call, space):
+    """advance's call with the inner ring under its loads and support."""
+    run_call(state, params, call, space, False)
+
+
+@kernel(error_model="numpy")  # (verlet_step is inlined: its error model)
+def prescribed_call(state, params, call, space):
+    """advance's call with the inner ring on the path of par[P_PATH]."""
+    run_call(state, params, call, space, True)
+
+
+# one call per advance (not per step): its reference counts cost nothing measurable
+@kernel(error_model="numpy")
+def advance(state, params, call, space):
+    """Run n_steps steps of dt (s) with the inner-ring speed going linearly from omega0 to omega1
+    (rad/s), constant loads F_x, F_y, F_z (N) and M_x, M_y (N.m, about its centre) on the inner ring and oil
+    temperature T_oil (K).
+
+    The arguments are four tuples (kernels.ball_dynamics.state, "argument groups"): state = (balls, cage, ring,
+    spring, trib, counters), the state arrays; params = (par, lub), the parameter and lubricant arrays; call =
+    (n_steps, dt, omega0, omega1, loads, T_oil, energy_limit) with loads = (F_x, F_y, F_z, M_x, M_y); space =
+    (work, acc, status), the scratch, the call's sums and the monitor's verdict.
+
+    Stops early with status[ST_CODE] != STATUS_OK (monitor) after the offending step; status[ST_STEP]
+    holds the steps done, status[ST_INDEX] the ball or contact (race * Z + ball). energy_limit (J)
+    bounds the kinetic energy and par[P_DAMPING_STOP] the damping ratio of a step (monitor.damping_step_ratio),
+    both checked at each tribology refresh. acc[A_DISS_I], acc[A_DISS_O]
+    receive the energy (J) dissipated in the inner and outer contacts during the call, acc[A_POWER_I],
+    acc[A_POWER_O] the power (W) of the last step, and acc[A_CAP] the bearing capacitance of every step (the
+    loaded balls' capacitances at the last refresh, without a background term) integrated over the call (F.s).
+    With par[P_DRIVE] = 1 the inner ring follows the path of par[P_PATH] over the call (follow_path: its support and
+    the loads move it no more) and acc[A_REACTION] receives the load that holds it there integrated over the call.
+    """
+    if params[0][P_DRIVE] != 0.0:
+        prescribed_call(state, params, call, space)
+    else:
+        load_driven_call(state, params, call, space)

@@ -280,8 +280,10 @@ class DemModel:
         omega = self.omega if omega is None else float(omega)
         loads = (float(F_x), float(F_y), float(F_z), float(M_x), float(M_y))
         t_end = float(t_end)
-        end = inputs.path_values(self._path_limits, path, self.displacement_driven)
-        if self.displacement_driven:
+        if path and not self.displacement_driven:  # (refused: the path's inputs are a prescribed ring's)
+            inputs.path_values(self._path_limits, path, False)
+        if self.displacement_driven:  # (only then: the path's checks are 3 % of a load-driven call)
+            end = inputs.path_values(self._path_limits, path, True)
             inputs.check_no_loads(loads)
             inputs.check_inputs(self._limits, self.time, t_end, omega, loads, float(T_oil), float(dPd_thermal))
             self._set_path(t_end - self.time, end)
