@@ -5,6 +5,7 @@ The operating point: a 6208 under F_y = 2 kN, F_z = 300 N at 300 rad/s (the cage
 on the outer ring at about 170 Hz), 22 ms after a start from rest, the speed ramped over 4 ms."""
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -12,6 +13,7 @@ import pytest
 from bearing_fmu.kernels.ball_dynamics import state as s
 from bearing_fmu.models.dem import DemModel
 from bearing_fmu.models.limits import InputError
+from bearing_fmu.scene import Scene, SceneError
 
 LOADS = {"F_x": 0.0, "F_y": 2000.0, "F_z": 300.0, "M_x": 0.0, "M_y": 0.0}
 DOFS = ("x", "y", "z", "theta_x", "theta_y")
@@ -31,8 +33,7 @@ def _start(model, **inputs):
         model.advance(t, omega=OMEGA, **inputs)
 
 
-@pytest.fixture(scope="module")
-def equilibrium():
+def load_driven_equilibrium():
     """The load-driven DEM's ring displacement (x, y, z in m, theta_x, theta_y in rad) under LOADS: its mean over the
     WINDOW calls after SETTLED (averaged state outputs: each call's mean over its steps)."""
     model = DemModel("6208", averaged_state=True)
@@ -42,6 +43,11 @@ def equilibrium():
         model.advance(SETTLED + (k + 1) * CALL, omega=OMEGA, **LOADS)
         means.append(model.out[s.O_X : s.O_X + 5].copy())
     return np.mean(means, axis=0)
+
+
+@pytest.fixture(scope="module")
+def equilibrium():
+    return load_driven_equilibrium()
 
 
 @pytest.fixture(scope="module")
@@ -159,3 +165,73 @@ def test_prescribed_ring_inputs_are_checked():
         DemModel("6208").advance(1e-4, x=1e-6)
     with pytest.raises(InputError, match=r"drive = 'shaft' is not one of the allowed \['load', 'displacement'\]"):
         DemModel("6208", drive="shaft")
+
+
+DISPLACEMENT_SCENE = Scene(name="dem_displacement", fidelity="dem", drive="displacement", stiffness=True)
+
+
+def test_scene_drive_sets_the_variables():
+    """The scene option drive = 'displacement' makes the DEM's FMU variables those of a prescribed ring: the inputs
+    the ring's path (x ... theta_y and their rates, no loads), the outputs the reaction loads and every other output
+    of the load-driven DEM but the ring's displacement (an input now). A drive the DEM has not is refused by the
+    scene. Before the scene option the DEM's scene refused every drive but 'load'."""
+    model = DemModel("6208", scene=DISPLACEMENT_SCENE)
+    load_driven = DemModel("6208", scene=replace(DISPLACEMENT_SCENE, drive="load"))
+    assert model.drive == "displacement" and model.displacement_driven
+    names = [v.name for v in model.inputs]
+    assert names == ["omega", *DOFS, *(f"{d}_rate" for d in DOFS), "T_oil", "dPd_thermal"]
+    outputs = [v.name for v in model.outputs]
+    assert outputs[:5] == list(LOADS)
+    assert outputs[5:] == [v.name for v in load_driven.outputs if v.name not in DOFS]
+    with pytest.raises(SceneError, match=r"drive = 'fixed_axial' is not a DEM drive"):
+        replace(DISPLACEMENT_SCENE, drive="fixed_axial").validate()
+    # a drive given to the model replaces the scene's
+    assert DemModel("6208", scene=DISPLACEMENT_SCENE, drive="load").inputs == load_driven.inputs
+
+
+def test_update_follows_the_path_as_advance_does():
+    """update(), the FMU's step, takes the path in its inputs' order and gives what advance() gives with the same
+    path, bit for bit; its reaction outputs are the model's reaction. Before, update() refused this drive."""
+    path = {"x": 3e-6, "y": 12e-6, "z": 2e-6, "theta_x": 1e-5, "theta_y": -2e-5, "y_rate": 1e-3}
+    by_advance = DemModel("6208", scene=DISPLACEMENT_SCENE)
+    by_update = DemModel("6208", scene=DISPLACEMENT_SCENE)
+    u = [path.get(v.name, 0.0) for v in by_update.inputs]
+    u[0], u[-2] = 200.0, 323.15  # omega, T_oil
+    for _ in range(3):
+        expected = by_advance.advance(by_advance.time + 2e-4, omega=200.0, T_oil=323.15, **path)
+        values = by_update.update(u, 2e-4)
+    got = dict(zip(by_update.output_names, values.tolist()))
+    assert abs(expected["F_y"]) > 100.0  # the ring is pressed into the balls
+    shared = [name for name in by_update.output_names if name in expected]
+    assert set(LOADS) <= set(shared) and "torque" in shared
+    for name in shared:
+        assert got[name] == expected[name], name
+    assert np.array_equal(by_update.ring, by_advance.ring)
+
+
+def test_update_refuses_a_path_input_out_of_range():
+    """A refused input of the prescribed ring's update() names the input, its value and its range, with or without a
+    step, and changes nothing."""
+    model = DemModel("6208", scene=DISPLACEMENT_SCENE)
+    u = [0.0] * len(model.inputs)
+    u[-2] = 313.15
+    u[2] = 1e-3  # y
+    for interval in (0.0, 1e-4):
+        with pytest.raises(InputError, match=r"y = 0\.001 m is outside the allowed range \[-0\.000252, 0\.000252\]"):
+            model.update(u, interval)
+    u[2], u[9] = 0.0, 1e3  # theta_x_rate
+    with pytest.raises(InputError, match=r"theta_x_rate = 1000\.0 rad/s is outside the allowed range"):
+        model.update(u, 1e-4)
+    assert model.time == 0.0
+
+
+def test_prescribed_ring_has_no_support():
+    """The prescribed ring's support is the caller's shaft model: the support settings are 0 and a non-zero one is
+    refused naming it (the FMU has no such parameters: scene drive 'displacement'). Before, they were taken and
+    moved nothing."""
+    model = DemModel("6208", drive="displacement")
+    assert all(model.settings[name] == 0.0 for name in model.settings if name.startswith("support_"))
+    assert model.par[s.P_C_SUPPORT] == 0.0
+    with pytest.raises(InputError, match=r"support_damping = 500\.0 N\.s/m is outside the allowed range \[0, 0\]"):
+        DemModel("6208", drive="displacement", support_damping=500.0)
+    DemModel("6208", drive="displacement", support_damping=0.0)  # 0: what it is anyway

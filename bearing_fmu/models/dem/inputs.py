@@ -9,7 +9,7 @@ from ...params import clearance_limits
 from ..declarations import (
     DEM_DT_MAX,
     DEM_DT_MIN,
-    DEM_INPUTS,
+    DEM_LOAD_INPUTS,
     DEM_PATH_INPUTS,
     DEM_REFRESH_MAX,
     DISPLACEMENT_LIMIT,
@@ -26,11 +26,11 @@ COMMUNICATION_DIGITS = 12
 COMMUNICATION_RESOLUTION = 10.0**-COMMUNICATION_DIGITS
 
 
-def checked_settings(dt, refresh, safety, refresh_interval, settings, kt_ratio, mass, inertia):
+def checked_settings(dt, refresh, safety, refresh_interval, settings, kt_ratio, mass, inertia, drive="load"):
     """Refuse a DemModel setting out of its range (the arguments of DemModel; settings = its keywords of
     models.dem_settings.DEM_SETTINGS, mass and inertia are ring_mass and ring_inertia); returns those settings
     checked (name -> value, the defaults of params/dem_model.toml where absent or None) and kt_ratio, the file's
-    where None."""
+    where None. drive: the model's (the ring's support is none with a prescribed ring)."""
     if dt is not None and not (math.isfinite(dt) and DEM_DT_MIN <= dt <= DEM_DT_MAX):
         raise InputError(
             f"dt = {dt} s is outside the allowed range [{DEM_DT_MIN:g}, {DEM_DT_MAX:g}] s (in the FMU also 0 = "
@@ -46,7 +46,7 @@ def checked_settings(dt, refresh, safety, refresh_interval, settings, kt_ratio, 
             f"refresh_interval = {refresh_interval} s is outside the allowed range [0, {DEM_REFRESH_MAX:g}] s "
             "(0 = every DEM step)"
         )
-    settings = checked_numeric_settings(settings)
+    settings = checked_numeric_settings(settings, drive)
     kt_ratio = CONSTANTS.kt_ratio if kt_ratio is None else kt_ratio
     if not (math.isfinite(kt_ratio) and 0.1 <= kt_ratio <= 1.5):
         raise InputError(f"kt_ratio = {kt_ratio} is outside the allowed range [0.1, 1.5]")
@@ -63,7 +63,8 @@ def speed_limit(bearing):
 
 
 def input_limits(bearing, Pd, load, omega_max):
-    """The InputLimits of DEM_INPUTS narrowed to a bearing of diametral clearance Pd (m) with the load limit `load`
+    """The InputLimits of DEM_LOAD_INPUTS (the load-driven DEM's inputs) narrowed to a bearing of diametral
+    clearance Pd (m) with the load limit `load`
     (N) and the speed limit omega_max (rad/s)."""
     narrowed = {name: (-load, load, MATERIAL_LIMIT) for name in ("F_x", "F_y", "F_z")}
     # moments: the load limit at the pitch radius, as the quasi-static fidelity's
@@ -79,7 +80,7 @@ def input_limits(bearing, Pd, load, omega_max):
         high - Pd,
         f"Pd + dPd_thermal within [{low:.4g}, {high:.4g}] m (|Pd| <= (f_i + f_o - 1) D)",
     )
-    return InputLimits(DEM_INPUTS, narrowed)
+    return InputLimits(DEM_LOAD_INPUTS, narrowed)
 
 
 DRIVES = ("load", "displacement")  # DemModel's drive: the loads move the inner ring, or its path is prescribed
@@ -136,7 +137,7 @@ def check_inputs(limits, t, t_end, omega, loads, T_oil, dPd_thermal):
     (input_limits)."""
     if not (math.isfinite(t_end) and t_end > t):
         raise InputError(f"t_end = {t_end} s is outside the allowed range ]{t:.9g}, inf[ s (after the current time)")
-    limits.check((omega, *loads, T_oil, dPd_thermal))  # the order of DEM_INPUTS
+    limits.check((omega, *loads, T_oil, dPd_thermal))  # the order of DEM_LOAD_INPUTS
 
 
 def communication_interval(interval):

@@ -3,6 +3,7 @@ start of a call) and the FMU protocol (update, evaluate, get_state/set_state); t
 sibling modules (the package's docstring lists them)."""
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -30,6 +31,8 @@ from .packing import load_limit, pack_parameters
 from .placement import place_bodies
 from .time_step import AUTO_STEP_HALVINGS, SAFETY
 
+NO_LOADS = (0.0, 0.0, 0.0, 0.0, 0.0)  # the loads of a prescribed ring (its reaction is an output)
+
 
 class DemModel:
     """DEM bearing: Z balls + Z cage balls + translating inner ring.
@@ -55,10 +58,11 @@ class DemModel:
     names): the traction_limit of the tangential law (docs/dem.md, Tangential force) and the inner ring's support
     (docs/dem.md, Ring support); each is listed below with its unit, range and default.
     film_tables: directory of the film tables an FMU carries (models.film_table); None = this machine's cache.
-    drive: 'load' (default: the loads F_x ... M_y move the inner ring on its support) or 'displacement' (the inner
-    ring's displacement x, y, z and tilts theta_x, theta_y are prescribed: each advance() gives their values and
-    rates at its end and the ring follows the cubic from its state to them; the outputs add the reaction loads
-    F_x ... M_y averaged over the call; docs/dem.md, Prescribed ring).
+    drive: None (default: the scene's drive), 'load' (the loads F_x ... M_y move the inner ring on its support) or
+    'displacement' (the inner ring's displacement x, y, z and tilts theta_x, theta_y are prescribed: each call gives
+    their values and rates at its end and the ring follows the cubic from its state to them; the outputs add the
+    reaction loads F_x ... M_y averaged over the call, and the ring has no support of its own, the support settings
+    0; docs/dem.md, Prescribed ring). A drive given here replaces the scene's.
     """
 
     def __init__(
@@ -77,12 +81,14 @@ class DemModel:
         averaged=True,
         averaged_state=False,
         film_tables=None,
-        drive="load",
+        drive=None,
         **settings,
     ):
-        self.scene = (scene or Scene(name="dem", fidelity="dem")).validate()
-        if self.scene.fidelity != "dem":
-            raise InputError(f"scene '{self.scene.name}' has fidelity {self.scene.fidelity!r}: DemModel needs 'dem'")
+        scene = (scene or Scene(name="dem", fidelity="dem")).validate()
+        if scene.fidelity != "dem":
+            raise InputError(f"scene '{scene.name}' has fidelity {scene.fidelity!r}: DemModel needs 'dem'")
+        self.drive = inputs.checked_drive(scene.drive if drive is None else drive)
+        self.scene = replace(scene, drive=self.drive)  # its variables follow the drive in effect
         self.bearing = b = load_bearing(bearing)
         self.lubricant = load_lubricant(lubricant)
         check_roughness(b.Ra_inner, b.Ra_outer, b.Ra_ball, b.path)  # the reader's check, for a Bearing made by hand
@@ -90,7 +96,7 @@ class DemModel:
         check_clearance(self.Pd, b, Pd is not None)
         # the numeric settings of DEM_SETTINGS by name (checked, the defaults filled in)
         self.settings, kt_ratio = inputs.checked_settings(
-            dt, refresh, safety, refresh_interval, settings, kt_ratio, ring_mass, ring_inertia
+            dt, refresh, safety, refresh_interval, settings, kt_ratio, ring_mass, ring_inertia, self.drive
         )
         self.averaged = bool(averaged)
         self.averaged_state = bool(averaged_state)
@@ -105,8 +111,7 @@ class DemModel:
         self.par, self._truncation_parameters, self._rest = pack_parameters(
             b, self.scene, self.lubricant, self.Pd, self.settings, kt_ratio, ring_mass, ring_inertia, film_tables
         )
-        self.drive = inputs.checked_drive(drive)
-        self.displacement_driven = drive == "displacement"
+        self.displacement_driven = self.drive == "displacement"
         self.par[s.P_DRIVE] = float(self.displacement_driven)
         self._path_limits = inputs.path_limits(b)
         # the load that held the prescribed ring over the last call (F_x, F_y, F_z in N, M_x, M_y in N.m), averaged
@@ -167,6 +172,7 @@ class DemModel:
             "K": self.K.reshape(-1),
             "freq": self.frequencies,
             "trunc": self.trunc,
+            "reaction": self.reaction,
         }
         self._plan = gather_plan(self.outputs, arrays)
 
@@ -285,11 +291,16 @@ class DemModel:
         if self.displacement_driven:  # (only then: the path's checks are 3 % of a load-driven call)
             end = inputs.path_values(self._path_limits, path, True)
             inputs.check_no_loads(loads)
-            inputs.check_inputs(self._limits, self.time, t_end, omega, loads, float(T_oil), float(dPd_thermal))
-            self._set_path(t_end - self.time, end)
-            self._path_estimate = self._path_load_bound(end)
+            self._prepare_path(t_end, omega, end, float(T_oil), float(dPd_thermal))
         self._advance(t_end, omega, loads, float(T_oil), float(dPd_thermal))
         return self.outputs_dict()
+
+    def _prepare_path(self, t_end, omega, end, T_oil, dPd_thermal):
+        """A prescribed ring's call to t_end (s) with the path's end values `end` (x ... theta_y, then their rates; SI,
+        checked): the call's other inputs checked (nothing changes on a refusal), then its path set."""
+        inputs.check_inputs(self._limits, self.time, t_end, omega, NO_LOADS, T_oil, dPd_thermal)
+        self._set_path(t_end - self.time, end)
+        self._path_estimate = self._path_load_bound(end)
 
     def _advance(self, t_end, omega, loads, T_oil, dPd_thermal):
         """advance() without building the output dict (floats in SI units, omega given; loads = (F_x, F_y, F_z,
@@ -479,8 +490,9 @@ class DemModel:
     # -- FMU interface ---------------------------------------------------------------------------
     def update(self, u, interval=0.0):
         """Advance by `interval` (s; 0 = only report the current state) with the input values u in self.inputs
-        order (omega, F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal; SI) as advance() takes them, and fill self.values
-        (self.outputs order: the declarations of models.declarations.DEM_OUTPUTS); returns self.values.
+        order (omega, F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal; with drive = 'displacement' omega, x ... theta_y,
+        x_rate ... theta_y_rate, T_oil, dPd_thermal; SI) as advance() takes them, and fill self.values (self.outputs
+        order: the declarations of models.declarations.DEM_OUTPUTS); returns self.values.
 
         Raises InputError for inputs out of range (nothing changed; also with interval 0) and DemUnstableError when
         the monitor stops the step: the state is then restored to the start of the step and self.status keeps the
@@ -490,24 +502,39 @@ class DemModel:
         else:
             # checked without a step too, as the other fidelities' update: the FMU then names an input its
             # first step would refuse when it leaves initialisation
-            self._limits.check(tuple(float(v) for v in u))
+            if self.displacement_driven:
+                omega, end, T_oil, dPd_thermal = self._prescribed_inputs(u)
+                self._limits.check((omega, *NO_LOADS, T_oil, dPd_thermal))
+            else:
+                self._limits.check(tuple(float(v) for v in u))
         self._gather()
         return self.values
 
     def _step_to(self, t_end, u):
         """update()'s step to t_end (s): advance, or on a monitor stop restore the state and raise."""
-        if self.displacement_driven:  # (its FMU variables are the load-driven DEM's)
-            raise InputError("drive = 'displacement': a prescribed ring steps through advance(), not update()")
-        omega, F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal = (float(v) for v in u)
-        loads = (F_x, F_y, F_z, M_x, M_y)
         self.status[s.ST_CODE] = s.STATUS_OK  # a refused input leaves no stale monitor code
         self.warnings = []  # nor stale warnings
-        inputs.check_inputs(self._limits, self.time, t_end, omega, loads, T_oil, dPd_thermal)
+        if self.displacement_driven:
+            omega, end, T_oil, dPd_thermal = self._prescribed_inputs(u)
+            loads = NO_LOADS
+            self._prepare_path(t_end, omega, end, T_oil, dPd_thermal)
+        else:
+            omega, F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal = (float(v) for v in u)
+            loads = (F_x, F_y, F_z, M_x, M_y)
+            inputs.check_inputs(self._limits, self.time, t_end, omega, loads, T_oil, dPd_thermal)
         try:
             self._advance(t_end, omega, loads, T_oil, dPd_thermal)
         except DemUnstableError:
             self._restore_start()
             raise
+
+    def _prescribed_inputs(self, u):
+        """A prescribed ring's update() inputs u (omega, x ... theta_y, x_rate ... theta_y_rate, T_oil, dPd_thermal;
+        SI) as omega, the path's end (checked), T_oil and dPd_thermal."""
+        values = tuple(float(v) for v in u)
+        end = values[1 : 1 + len(inputs.PATH_NAMES)]
+        self._path_limits.check(end)
+        return values[0], end, values[-2], values[-1]
 
     def _gather(self):
         if self.scene.stiffness:
@@ -561,14 +588,24 @@ REFERENCE_STEP = 0.5e-3  # s, communication step of the DEM reference experiment
 
 def reference_inputs(scene=None):
     """The DEM reference experiment, one dict per communication point (time = end of the step, s): the 6208
-    at 3 kN radial, 40 C, speed ramp 0 -> 500 rad/s over 5 ms, steady to 6 ms, then a load step to 4 kN
-    held to 8 ms (a step of 0.5 ms). Each row's inputs hold over the step that ends at its time."""
+    at 40 C, speed ramp 0 -> 500 rad/s over 5 ms, steady to 6 ms, held to 8 ms (a step of 0.5 ms); load-driven at
+    3 kN radial, then a load step to 4 kN; with drive = 'displacement' the inner ring moved along x to 15 um in the
+    first step and held there, then moved to 20 um in the step after 6 ms (each end at rest). Each row's inputs hold
+    over the step that ends at its time."""
+    displacement = scene is not None and scene.drive == "displacement"
     rows = []
     for n in range(1, 17):
         t = n * REFERENCE_STEP
-        omega = 500.0 * min(t / 5e-3, 1.0)
-        rows.append({"time": t, "omega": omega, "F_x": 3000.0 if t <= 6e-3 else 4000.0, "T_oil": 313.15})
+        row = {"time": t, "omega": 500.0 * min(t / 5e-3, 1.0)}
+        if displacement:
+            row["x"] = 15e-6 if t <= 6e-3 else 20e-6
+        else:
+            row["F_x"] = 3000.0 if t <= 6e-3 else 4000.0
+        rows.append({**row, "T_oil": 313.15})
     return rows
+
+
+DRIVE_WORDS = {"load": "loads in, displacements out", "displacement": "the inner ring's path in, reaction loads out"}
 
 
 FIDELITY = Fidelity(
@@ -578,5 +615,5 @@ FIDELITY = Fidelity(
     choices=("bearing", "lubricant"),
     reference_step=REFERENCE_STEP,
     reference_inputs=reference_inputs,
-    summary=lambda scene: "DEM (ball dynamics) bearing, loads in, displacements out",
+    summary=lambda scene: f"DEM (ball dynamics) bearing, {DRIVE_WORDS[scene.drive]}",
 )
