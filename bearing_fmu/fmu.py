@@ -54,6 +54,7 @@ class _BearingSlave(DeclaredSlave):
         self._built_for = None
         self._ready = False
         self._parameters = select(self.parameters, self.scene)
+        self._names = {var.name for var in self._parameters}
         for var in self._parameters:
             self.register_variable(declared_parameter(var, self, self.scene))
         self._build_model()
@@ -205,7 +206,9 @@ class BearingDEM(_BearingSlave):
     """DEM (ball dynamics) ball bearing: one doStep integrates the communication step in one jitted call.
 
     The speed goes linearly from its value at the previous communication point to the input over the
-    step; loads, oil temperature and clearance change are held (DemModel.update). A step the stability
+    step; loads, oil temperature and clearance change are held (DemModel.update). With the scene's drive
+    'displacement' the inner ring follows the cubic from its state to the inputs x ... theta_y and their rates at
+    the step's end, and the reaction loads F_x ... M_y, means over the step, are outputs. A step the stability
     monitor stops returns fmi2Discard with the monitor's message, the instance back at the start of
     the step and `monitor_status` naming the cause; the master may retry with a smaller step."""
 
@@ -226,7 +229,8 @@ class BearingDEM(_BearingSlave):
             "refresh_interval": self.refresh_interval,
             "averaged": bool(self.average_outputs),
             "averaged_state": bool(self.average_state_outputs),
-            **{setting.name: getattr(self, setting.name) for setting in DEM_SETTINGS},  # each by its own name
+            # each by its own name; those the scene's drive has not (a prescribed ring has no support) stay out
+            **{setting.name: getattr(self, setting.name) for setting in DEM_SETTINGS if setting.name in self._names},
         }
 
     def _advance(self, step_size):

@@ -79,7 +79,10 @@ FIDELITY_RULES = {
             "spring_constant": (("hertz",), _QUASI_STATIC_ONLY),
             "life": ((False,), "life = true needs fidelity = 'analytic' or 'quasi_static'"),
             **{option: ((False,), _IN_THE_DEM) for option in ("gyroscopic", "torque", "thermal_inputs")},
-            "drive": (("load",), _QUASI_STATIC_ONLY + " (the DEM is load-driven)"),
+            "drive": (
+                ("load", "displacement"),
+                "drive = {value} is not a DEM drive: allowed 'load' or 'displacement' with fidelity = 'dem'",
+            ),
             "centrifugal": (
                 (True,),
                 "centrifugal = false is not possible with fidelity = 'dem' (the balls' orbit makes it)",
@@ -119,12 +122,13 @@ class Scene:
 
     fidelity: 'analytic' (Stribeck/Sjovall + Hertz + EHL) |
         'quasi_static' (Jones/Harris 5-DOF ball equilibrium, docs/quasistatic.md) |
-        'dem' (ball dynamics, docs/dem.md: load-driven; the gyroscopic and centrifugal effects, the friction
-        torque and the thermal clearance input come from the dynamics, so the options that switch them are
-        quasi-static ones; film, film_correction, hertz, roughness_factor and the capacitance options apply).
-    drive (quasi_static): 'load' (loads in, displacements out), 'displacement' (displacements in,
-        reaction loads out) or 'fixed_axial' (radial loads and tilting moments in, axial position in:
-        a fixed-preload bearing).
+        'dem' (ball dynamics, docs/dem.md: load- or displacement-driven; the gyroscopic and centrifugal effects,
+        the friction torque and the thermal clearance input come from the dynamics, so the options that switch them
+        are quasi-static ones; film, film_correction, hertz, roughness_factor and the capacitance options apply).
+    drive (quasi_static, dem): 'load' (loads in, displacements out), 'displacement' (displacements in,
+        reaction loads out; in the DEM the inner ring's path, its displacements and their rates at each step's end)
+        or 'fixed_axial' (quasi_static only: radial loads and tilting moments in, axial position in: a
+        fixed-preload bearing).
     race_control (quasi_static): default of the FMU parameter race_control, 'outer' | 'inner' | 'hybrid' | 'traction'.
     gyroscopic (quasi_static): ball gyroscopic moment on.
     torque (quasi_static): friction torque, power loss and ring heat outputs (Houpert components).

@@ -24,6 +24,7 @@ BASE_UNITS = {
     "m": {"m": 1},
     "rad": {"rad": 1},
     "rad/s": {"rad": 1, "s": -1},
+    "m/s": {"m": 1, "s": -1},
     "N": {"kg": 1, "m": 1, "s": -2},
     "N.m": {"kg": 1, "m": 2, "s": -2},
     "Pa": {"kg": 1, "m": -1, "s": -2},
@@ -38,7 +39,6 @@ BASE_UNITS = {
     "N/m": {"kg": 1, "s": -2},
     "N.s/m": {"kg": 1, "s": -1},
     "N.m.s/rad": {"kg": 1, "m": 2, "s": -1, "rad": -1},
-    "m/s": {"m": 1, "s": -1},
     "m/N": {"kg": -1, "s": 2},
     "h": {"s": 1, "factor": 3600},  # hour: rating lives in hours, as catalogues give them
     "kg": {"kg": 1},

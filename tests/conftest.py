@@ -85,6 +85,9 @@ bearing_fixed_fmu = _session_fixture(
     "BearingFixed",
     "quasi_static_fixed_preload.toml",
 )
+dem_disp_fmu = _session_fixture(
+    "The DEM BearingDEMDisp.fmu (the inner ring's motion prescribed).", _fmu, "BearingDEMDisp", "dem_displacement.toml"
+)
 spindle_thermal_fmu = _session_fixture(
     "SpindleThermal.fmu: the default spindle network without the axial-float inputs (spring preload).",
     _thermal_fmu,

@@ -17,6 +17,7 @@ facade's defect frequencies (FTF, BPFO, BPFI, BSF, kernels.geometry.pass_frequen
 "life" (analytic and quasi-static fidelities) is the rating-life array (kernels.rating_life LO_*).
 """
 
+import math
 from dataclasses import replace
 
 from bearing_fmu_common.variables import Variable
@@ -640,16 +641,57 @@ def _dem_output(name, source, description=None, option=""):
     return replace(var, source=source, option=option, description=description or var.description)
 
 
+# the prescribed ring (DemModel drive = "displacement"): its displacement, tilts and their rates at the end of each
+# call. The rates' bound: the largest displacement or tilt vibrating at PATH_RATE_FREQUENCY, beyond the ball-pass
+# frequencies of any bearing that the DEM's steps resolve
+PATH_RATE_FREQUENCY = 1e4  # Hz
+DOF_RATE_UNITS = ("m/s", "m/s", "m/s", "rad/s", "rad/s")
+PATH_RATE_LIMITS = "the largest displacement (tilt) vibrating at 10 kHz"
+
+
+def _path_inputs():
+    """x ... theta_y and their rates x_rate ... theta_y_rate, each at the end of the call (the ring follows the cubic
+    from its current state to them)."""
+    out = [
+        Variable(
+            name,
+            unit,
+            f"imposed {words} of the inner ring at the end of the step (the ring follows the cubic from its state "
+            "to it and its rate)",
+            drives=("displacement",),
+            **_displacement_range(i),
+        )
+        for i, (name, unit, words) in enumerate(zip(DOF_NAMES, DOF_UNITS, DOF_WORDS))
+    ]
+    for i in range(5):
+        bound = _displacement_range(i)["max"] * 2.0 * math.pi * PATH_RATE_FREQUENCY
+        out.append(
+            Variable(
+                f"{DOF_NAMES[i]}_rate",
+                DOF_RATE_UNITS[i],
+                f"rate of the imposed {DOF_WORDS[i]} of the inner ring at the end of the step",
+                min=-bound,
+                max=bound,
+                limits=PATH_RATE_LIMITS,
+                nominal=1e-3 if i < 3 else 1.0,
+                drives=("displacement",),
+            )
+        )
+    return tuple(out)
+
+
+DEM_PATH_INPUTS = _path_inputs()
+
+# the DEM's inputs in both drives: the loads (drive "load", the load-driven DEM's own F_x ... M_y) or the ring's path
+# (drive "displacement"), in the order DemModel.update() takes them
 DEM_INPUTS = (
     OMEGA,
-    _BY_NAME["F_x"],
-    _BY_NAME["F_y"],
-    _BY_NAME["F_z"],
-    _BY_NAME["M_x"],
-    _BY_NAME["M_y"],
+    *(replace(_BY_NAME[name], drives=("load",)) for name in LOAD_NAMES),
+    *DEM_PATH_INPUTS,
     T_OIL,
     replace(_BY_NAME["dPd_thermal"], option=""),  # the DEM always has it
 )
+DEM_LOAD_INPUTS = tuple(v for v in DEM_INPUTS if "load" in (v.drives or ("load",)))
 
 DEM_OUTPUTS = (
     *(
@@ -664,6 +706,17 @@ DEM_OUTPUTS = (
     *(
         _dem_output(name, ("ring", ds.R_TH + i), f"{DOF_WORDS[3 + i]} of the inner ring at the end of the step")
         for i, name in enumerate(("theta_x", "theta_y"))
+    ),
+    *(
+        Variable(
+            LOAD_NAMES[i],
+            LOAD_UNITS[i],
+            f"reaction: {LOAD_WORDS[i]} that holds the inner ring on its imposed path (minus the balls' force"
+            f"{' and moment about its centre' if i >= 3 else ''}), mean over the communication step",
+            drives=("displacement",),
+            source=("reaction", i),
+        )
+        for i in range(5)
     ),
     *(
         _dem_output(

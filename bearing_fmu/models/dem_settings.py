@@ -52,6 +52,9 @@ class Setting:
     slot: str = ""  # name of the kernels.ball_dynamics.state parameter slot that takes the value as it is
     pack: Callable = None  # else pack(par, value): writes what the value implies, after the ring's mass and inertia
     hint: str = ""  # appended to a refusal: what the notable values mean
+    # the scene drives in which it acts (() = every drive): the ring's support acts on a ring the loads move, not on
+    # one whose path is prescribed (there the master's shaft model is the support)
+    drives: tuple = ()
 
     def default(self):
         """The default from params/dem_model.toml, checked against the range."""
@@ -75,7 +78,7 @@ class Setting:
         """The FMU parameter (a Real of this name, unit, range and default)."""
         return Variable(
             self.name, self.unit, self.description, start=DEFAULTS[self.name], min=self.low, max=self.high,
-            limits=self.limits,
+            limits=self.limits, drives=self.drives,
         )  # fmt: skip
 
 
@@ -106,6 +109,7 @@ DEM_SETTINGS = (
         "ring_support.stiffness",
         "a shaft's stiffness at a seat is 1e7-1e9 N/m; the automatic step follows the support",
         slot="P_K_SUPPORT",
+        drives=("load",),
     ),
     Setting(
         "support_damping",
@@ -118,6 +122,7 @@ DEM_SETTINGS = (
         "ring_support.damping",
         "0 = none; the automatic step follows the support",
         slot="P_C_SUPPORT",
+        drives=("load",),
     ),
     Setting(
         "support_axial_damping",
@@ -130,6 +135,7 @@ DEM_SETTINGS = (
         "ring_support.axial_damping",
         "0 = none; the automatic step follows the support",
         slot="P_C_SUPPORT_AXIAL",
+        drives=("load",),
     ),
     # a spindle shaft's modal mass at a seat is a few kilograms; 1000 kg bounds a machine's whole rotor
     Setting(
@@ -144,20 +150,33 @@ DEM_SETTINGS = (
         "ring_support.mass",
         "a spindle shaft's modal mass at a seat is 2-10 kg; 0 = the ring alone",
         pack=add_shaft_mass,
+        drives=("load",),
     ),
 )
 
 DEFAULTS = {setting.name: setting.default() for setting in DEM_SETTINGS}
 
 
-def checked_settings(values):
+def checked_settings(values, drive="load"):
     """The settings given as keywords (name -> value; a missing one or None = its default), checked, as a dict in
-    the order of DEM_SETTINGS. An unknown name is refused as Python refuses an unknown keyword (TypeError)."""
+    the order of DEM_SETTINGS. An unknown name is refused as Python refuses an unknown keyword (TypeError). A setting
+    that does not act in `drive` (the DemModel's drive) is 0, and refused unless absent, None or 0."""
     known = {setting.name: setting for setting in DEM_SETTINGS}
     unknown = sorted(set(values) - set(known))
     if unknown:
         raise TypeError(f"DemModel() got an unexpected keyword argument {unknown[0]!r}")
-    return {name: setting.checked(values.get(name)) for name, setting in known.items()}
+    out = {}
+    for name, setting in known.items():
+        if not setting.drives or drive in setting.drives:
+            out[name] = setting.checked(values.get(name))
+        elif values.get(name) in (None, 0.0):
+            out[name] = 0.0
+        else:
+            raise InputError(
+                f"{name} = {values[name]} {setting.unit} is outside the allowed range [0, 0] with drive = {drive!r} "
+                "(the ring's path is prescribed: its support is the caller's shaft model)"
+            )
+    return out
 
 
 def pack_settings(par, settings):

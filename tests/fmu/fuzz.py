@@ -42,7 +42,8 @@ from fmpy.fmi2 import (
 )
 
 # communication step per FMU kind: a thermal network steps in seconds, the DEM integrates every step
-STEP = {"SpindleThermal": 1.0, "SpindleThermalFixed": 1.0, "BearingDEM": 1e-4, "SpindleShaftTransient": 1e-4}
+STEP = {"SpindleThermal": 1.0, "SpindleThermalFixed": 1.0, "BearingDEM": 1e-4, "BearingDEMDisp": 1e-4,
+        "SpindleShaftTransient": 1e-4}  # fmt: skip
 STRING_CASES = ("", "no_such_name", "%s%n%d", "x" * 300)  # empty, unknown, printf format, too long for a file name
 CHOICE_CASES = ("OUTER", " outer", "implicit euler")  # near-misses of a choice (wrong case, space, spelling)
 
@@ -204,6 +205,7 @@ OPERATING = {
     "BearingFixed": {"omega": 200.0, "F_y": 500.0},
     "BearingDisp": {"omega": 200.0, "y": 1e-5, "z": 4e-5},
     "BearingDEM": BEARING_POINT,
+    "BearingDEMDisp": {"omega": 200.0, "y": 5e-6, "z": 1e-5},  # about BEARING_POINT's loads on the 6208
     "SpindleThermal": THERMAL_POINT,
     "SpindleThermalFixed": {**THERMAL_POINT, "K_axial_1": 1e8, "K_axial_2": 1e8},
     "SpindleShaft": {"omega": 1000.0},  # the seats keep their start values, a B7214C's K

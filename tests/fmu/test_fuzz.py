@@ -35,6 +35,7 @@ FIXTURES = {
     "BearingDisp": "bearing_disp_fmu",
     "BearingFixed": "bearing_fixed_fmu",
     "BearingDEM": "dem_fmu",
+    "BearingDEMDisp": "dem_disp_fmu",
     "SpindleThermal": "spindle_thermal_fmu",
     "SpindleThermalFixed": "spindle_thermal_fixed_fmu",
     "SpindleShaft": "spindle_shaft_fmu",

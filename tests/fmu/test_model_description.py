@@ -32,6 +32,7 @@ from bearing_fmu.build import SCENES_DIR
 from bearing_fmu.fidelities import FIDELITIES
 from bearing_fmu.scene import Scene
 from bearing_fmu_common.variables import TYPICAL_MAGNITUDE
+from spindle.all_fmus import all_variables
 from spindle.check import NOT_COMPARED, compare
 from tests.conftest import CONFIGURED as CONFIGURED_KINDS
 from tests.conftest import ROOT, _fmu
@@ -42,10 +43,12 @@ BEARINGS = {
     "BearingDisp": "quasi_static_displacement.toml",
     "BearingFixed": "quasi_static_fixed_preload.toml",
     "BearingDEM": "dem.toml",
+    "BearingDEMDisp": "dem_displacement.toml",
 }
 THERMAL = {"SpindleThermal": "spindle_thermal_fmu", "SpindleThermalFixed": "spindle_thermal_fixed_fmu"}
 CONFIGURED = [f"{name}_B7214C" for name in CONFIGURED_KINDS]  # `spindle build --config configs/rabreau_rig.toml`
 ALL = sorted(BEARINGS) + sorted(THERMAL)
+DECLARED_INPUTS = {name: inputs for name, _, _, _, inputs, *_ in all_variables()}
 
 
 @pytest.fixture
@@ -81,11 +84,14 @@ def test_model_description_as_tools_expect(fmu):
     assert [(u.get("index"), u.get("dependencies")) for u in structure.find("InitialUnknowns")] == [
         (i, "") for i in outputs
     ]
+    # an input's nominal: its declared one (the rates of a prescribed ring), else its unit's typical magnitude
+    declared = {v.name: v.nominal for v in DECLARED_INPUTS[root.get("modelName").split("_")[0]] if v.nominal}
     for v in variables:
         if v.get("causality") == "output":
             assert v.get("initial") == "calculated" and v[0].get("start") is None, v.get("name")
         if v.get("causality") == "input" and v[0].tag == "Real":
-            assert float(v[0].get("nominal")) == TYPICAL_MAGNITUDE[v[0].get("unit")] > 0, v.get("name")
+            typical = declared.get(v.get("name"), TYPICAL_MAGNITUDE.get(v[0].get("unit")))
+            assert float(v[0].get("nominal")) == typical > 0, v.get("name")
     stop, step = expected_experiment(root.get("modelName"))
     experiment = root.find("DefaultExperiment").attrib
     assert float(experiment["startTime"]) == 0.0

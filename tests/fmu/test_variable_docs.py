@@ -50,6 +50,7 @@ def test_readme_variable_block_is_up_to_date():
         ("bearing_fmu", "Bearing"),
         ("bearing_disp_fmu", "BearingDisp"),
         ("bearing_fixed_fmu", "BearingFixed"),
+        ("dem_disp_fmu", "BearingDEMDisp"),
         ("spindle_thermal_fmu", "SpindleThermal"),
         ("spindle_thermal_fixed_fmu", "SpindleThermalFixed"),
     ],

@@ -312,8 +312,24 @@ def ring_acceleration(ring, par, f_ring, velocity):
     return (f_ring + support) / par[s.P_M_RING]
 
 
-def step(st, par, omega, F_ring, dt):
-    """One velocity-Verlet step at inner-ring speed omega (rad/s, end of the step)."""
+def path_point(par, fraction):
+    """The prescribed ring's (x, y, z, theta_x, theta_y), their rates and accelerations at `fraction` of the call's
+    path (par[P_PATH]: values and rates at its start, then at its end, over par[P_PATH_T] s): the cubic polynomial
+    in time through both ends' values and rates, its coefficients solved from the 4 x 4 system of those conditions."""
+    T = par[s.P_PATH_T]
+    path = par[s.P_PATH : s.P_PATH + 20].reshape(4, 5)
+    system = np.array([[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [1.0, T, T * T, T**3], [0.0, 1.0, 2 * T, 3 * T * T]])
+    c = np.linalg.solve(system, path)  # c[k] multiplies t^k, one column per degree of freedom
+    t = fraction * T
+    value = c[0] + c[1] * t + c[2] * t * t + c[3] * t**3
+    rate = c[1] + 2 * c[2] * t + 3 * c[3] * t * t
+    return value, rate, 2 * c[2] + 6 * c[3] * t
+
+
+def step(st, par, omega, F_ring, dt, fraction=1.0):
+    """One velocity-Verlet step at inner-ring speed omega (rad/s, end of the step); a prescribed ring
+    (par[P_DRIVE]) is put on its path at `fraction` of the call instead. Returns (the power dissipated per race
+    (W), the load that holds the ring: F_ring less the contacts' force and moment on it)."""
     balls, cage, ring = st["balls"], st["cage"], st["ring"]
     x, v, a = (balls[r : r + 3] for r in (s.B_X, s.B_VX, s.B_AX))
     w, alpha = balls[s.B_WX : s.B_WX + 3], balls[s.B_ALX : s.B_ALX + 3]
@@ -326,8 +342,16 @@ def step(st, par, omega, F_ring, dt):
     xr += vr * dt + 0.5 * ar * dt * dt
     th, vth, ath = (ring[r : r + 2] for r in (s.R_TH, s.R_VTH, s.R_ATH))
     th += vth * dt + 0.5 * ath * dt * dt
-    vel = (v + a * dt, w + alpha * dt, vc + ac * dt, vr + ar * dt, vth + ath * dt)
+    prescribed = par[s.P_DRIVE] != 0.0
+    if prescribed:
+        value, rate, acceleration = path_point(par, fraction)
+        xr[...], vr[...], ar[...] = value[:3], rate[:3], acceleration[:3]
+        th[...], vth[...], ath[...] = value[3:], rate[3:], acceleration[3:]
+        vel = (v + a * dt, w + alpha * dt, vc + ac * dt, vr.copy(), vth.copy())
+    else:
+        vel = (v + a * dt, w + alpha * dt, vc + ac * dt, vr + ar * dt, vth + ath * dt)
     f_b, m_b, f_c, f_r, m_r, power, slips = forces(st, par, omega, F_ring, vel, dt)
+    reaction = np.asarray(F_ring, dtype=float) - np.concatenate((f_r, m_r[:2]))
     new = (
         f_b / par[s.P_M_BALL],
         m_b / par[s.P_I_BALL],
@@ -335,7 +359,9 @@ def step(st, par, omega, F_ring, dt):
         ring_acceleration(ring, par, f_r, vel[3]),
         tilt_acceleration(ring, par, omega, m_r, vel[4]),
     )
-    pairs = ((v, a, new[0]), (w, alpha, new[1]), (vc, ac, new[2]), (vr, ar, new[3]), (vth, ath, new[4]))
+    pairs = ((v, a, new[0]), (w, alpha, new[1]), (vc, ac, new[2]))
+    if not prescribed:
+        pairs += ((vr, ar, new[3]), (vth, ath, new[4]))
     for vel_now, acc_now, acc_new in pairs:
         vel_now += 0.5 * (acc_now + acc_new) * dt
         acc_now[...] = acc_new
@@ -343,7 +369,7 @@ def step(st, par, omega, F_ring, dt):
     st["counters"][s.K_STEP] += 1
     # velocity Verlet pairs the step's forces with the velocities it ends with (the kernel's
     # integrator.slip_power_correction says why the predicted ones are not used)
-    return power + slip_power(st, par, omega, slips)
+    return power + slip_power(st, par, omega, slips), reaction
 
 
 def initialise_accelerations(st, par, lub, omega, F_ring, T_oil):
@@ -352,6 +378,13 @@ def initialise_accelerations(st, par, lub, omega, F_ring, T_oil):
     refresh(st, par, lub, omega, T_oil)
     balls, cage, ring = st["balls"], st["cage"], st["ring"]
     saved = st["spring"].copy()
+    prescribed = par[s.P_DRIVE] != 0.0
+    if prescribed:  # on its path's start
+        value, rate, acceleration = path_point(par, 0.0)
+        for rows, k in ((slice(s.R_X, s.R_X + 3), slice(0, 3)), (slice(s.R_TH, s.R_TH + 2), slice(3, 5))):
+            ring[rows] = value[k]
+        ring[s.R_VX : s.R_VX + 3], ring[s.R_VTH : s.R_VTH + 2] = rate[:3], rate[3:]
+        ring[s.R_AX : s.R_AX + 3], ring[s.R_ATH : s.R_ATH + 2] = acceleration[:3], acceleration[3:]
     vel = tuple(a[r : r + 3].copy() for a, r in ((balls, s.B_VX), (balls, s.B_WX), (cage, s.C_VX), (ring, s.R_VX)))
     vel += (ring[s.R_VTH : s.R_VTH + 2].copy(),)
     f_b, m_b, f_c, f_r, m_r, _, _ = forces(st, par, omega, F_ring, vel, 0.0)
@@ -359,8 +392,9 @@ def initialise_accelerations(st, par, lub, omega, F_ring, T_oil):
     balls[s.B_AX : s.B_AX + 3] = f_b / par[s.P_M_BALL]
     balls[s.B_ALX : s.B_ALX + 3] = m_b / par[s.P_I_BALL]
     cage[s.C_AX : s.C_AX + 3] = f_c / par[s.P_M_CAGE]
-    ring[s.R_AX : s.R_AX + 3] = ring_acceleration(ring, par, f_r, vel[3])
-    ring[s.R_ATH : s.R_ATH + 2] = tilt_acceleration(ring, par, omega, m_r, vel[4])
+    if not prescribed:
+        ring[s.R_AX : s.R_AX + 3] = ring_acceleration(ring, par, f_r, vel[3])
+        ring[s.R_ATH : s.R_ATH + 2] = tilt_acceleration(ring, par, omega, m_r, vel[4])
 
 
 def step_capacitance(st, par):
@@ -403,7 +437,8 @@ def advance(st, par, lub, n_steps, dt, omega0, omega1, F_ring, T_oil):
     dissipated per race in the last step (W), capacitance of every step integrated over time (F.s), the averaged
     state outputs' sums in the layout of acc[A_XT:A_SIZE]: the ring's displacement and tilts integrated over the steps,
     the number of refreshes and the sums of their samples, then the orbit watch's integrals of the squares of x, y,
-    theta_x, theta_y and of |v_xy|^2 and |theta'|^2)."""
+    theta_x, theta_y and of |v_xy|^2 and |theta'|^2, then the load that holds a prescribed ring integrated over the
+    steps (0 for a ring the loads move))."""
     refresh_every = int(par[s.P_REFRESH])
     energy = np.zeros(2)
     last = np.zeros(2)
@@ -411,15 +446,17 @@ def advance(st, par, lub, n_steps, dt, omega0, omega1, F_ring, T_oil):
     position = np.zeros(5)
     samples = np.zeros(9)
     squares = np.zeros(6)
+    reaction = np.zeros(5)
     count = 0
     for n in range(n_steps):
         if st["counters"][s.K_STEP] % refresh_every == 0:
             refresh(st, par, lub, omega0 + (omega1 - omega0) * n / n_steps, T_oil)
             samples += refresh_sample(st["trib"])
             count += 1
-        last = step(st, par, omega0 + (omega1 - omega0) * (n + 1) / n_steps, F_ring, dt) + st["trib"][s.T_P_FILM].sum(
-            axis=1
-        )
+        last, held = step(st, par, omega0 + (omega1 - omega0) * (n + 1) / n_steps, F_ring, dt, (n + 1) / n_steps)
+        last = last + st["trib"][s.T_P_FILM].sum(axis=1)
+        if par[s.P_DRIVE] != 0.0:
+            reaction += held * dt
         energy += last * dt
         capacitance += step_capacitance(st, par) * dt
         position += np.concatenate((st["ring"][s.R_X : s.R_X + 3], st["ring"][s.R_TH : s.R_TH + 2])) * dt
@@ -427,7 +464,7 @@ def advance(st, par, lub, n_steps, dt, omega0, omega1, F_ring, T_oil):
         v_xy, rates = ring[s.R_VX : s.R_VX + 2], ring[s.R_VTH : s.R_VTH + 2]
         across = np.concatenate((ring[s.R_X : s.R_X + 2], ring[s.R_TH : s.R_TH + 2]))
         squares += np.concatenate((across**2, [v_xy @ v_xy, rates @ rates])) * dt
-    return energy, last, capacitance, np.concatenate((position, [count], samples, squares))
+    return energy, last, capacitance, np.concatenate((position, [count], samples, squares, reaction))
 
 
 KERNEL_MODULE = "bearing_fmu.kernels.ball_dynamics.integrator"

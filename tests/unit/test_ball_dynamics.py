@@ -189,6 +189,57 @@ def test_kernel_matches_twin_with_a_tilting_ring():
     assert np.array_equal(kernel_state["counters"], twin_state["counters"])
 
 
+def test_kernel_matches_twin_with_a_prescribed_ring(running_6208):
+    """The inner ring on a prescribed path (par[P_DRIVE] = 1): from the running 6208's state (3 kN, 150 rad/s) the
+    ring moves 300 steps along the cubic to 2 um further along y, 1 um along x and z, tilts of 0.2 and -0.1 mrad,
+    with end rates; the kernel's state, its sums and the load that held the ring (acc[A_REACTION]) against the
+    twin's (the cubic solved as a 4 x 4 system in time), same RTOL. The ring ends exactly on the given values, and
+    the reaction is of the order of the 3 kN the ring carried (the comparison is not trivial)."""
+    model = running_6208
+    kernel_state, twin_state = (model.get_state() for _ in range(2))  # (get_state copies every array)
+    par = model.par.copy()
+    par[s.P_DRIVE] = 1.0
+    par[s.P_REFRESH] = 10
+    ring = kernel_state["ring"].copy()
+    start = np.concatenate((ring[s.R_X : s.R_X + 3], ring[s.R_TH : s.R_TH + 2]))
+    rates0 = np.concatenate((ring[s.R_VX : s.R_VX + 3], ring[s.R_VTH : s.R_VTH + 2]))
+    end = start + np.array([1e-6, 2e-6, 1e-6, 2e-4, -1e-4])
+    rates1 = np.array([1e-3, -2e-3, 0.0, 0.1, 0.05])
+    par[s.P_PATH_T] = STEPS * DT
+    par[s.P_PATH : s.P_PATH + 20] = np.concatenate((start, rates0, end, rates1))
+    acc = np.zeros(s.A_SIZE)
+    status = np.zeros(s.ST_SIZE, dtype=np.int64)
+    F = (0.0, 0.0, 0.0, 0.0, 0.0)
+    dyn.advance(
+        tuple(kernel_state[k] for k in s.STATE_GROUP),
+        (par, model.lubricant.array),
+        (STEPS, DT, 150.0, 160.0, F, 313.15, 1e9),
+        (np.zeros((s.W_SIZE, model.bearing.Z)), acc, status),
+    )
+    assert status[s.ST_CODE] == s.STATUS_OK
+    energy, _, _, sums = ref.advance(
+        twin_state, par, model.lubricant.array, STEPS, DT, 150.0, 160.0, np.array(F), 313.15
+    )
+    a = kernel_state["ring"]
+    assert np.array_equal(np.concatenate((a[s.R_X : s.R_X + 3], a[s.R_TH : s.R_TH + 2])), end)
+    assert np.array_equal(np.concatenate((a[s.R_VX : s.R_VX + 3], a[s.R_VTH : s.R_VTH + 2])), rates1)
+    errors = {"ring": max(_ring_errors(a, twin_state["ring"]))}
+    a, b = kernel_state["balls"], twin_state["balls"]
+    errors["balls"] = max(_scale_err(a[r : r + 3], b[r : r + 3]) for r in range(0, s.B_SIZE - 1, 3))
+    for name in ("cage", "spring"):
+        errors[name] = _scale_err(kernel_state[name], twin_state[name])
+    errors["trib"] = max(_scale_err(kernel_state["trib"][r], twin_state["trib"][r]) for r in range(s.T_SIZE))
+    errors["dissipated"] = _scale_err(acc[s.A_DISS_I : s.A_DISS_O + 1], energy)
+    held = acc[s.A_REACTION : s.A_REACTION + 5]
+    errors["reaction forces"] = _scale_err(held[:3], sums[21:24])
+    errors["reaction moments"] = _scale_err(held[3:], sums[24:29])
+    print("prescribed ring, kernel vs twin:", {k: f"{v:.2e}" for k, v in errors.items()})
+    for name, err in errors.items():
+        assert err < RTOL, f"{name}: kernel and twin differ by {err:.3g} (scaled)"
+    assert np.array_equal(kernel_state["counters"], twin_state["counters"])
+    assert 2000.0 < held[1] / (STEPS * DT) < 10000.0  # N: the 3 kN the ring carried, and more as it moves on
+
+
 @pytest.mark.parametrize("theta", [(0.0, 0.0), (1e-9, -2e-9), (3e-5, 7e-5), (-2e-3, 1e-3), (0.3, -0.1)])
 def test_ring_axis_is_the_exact_rotation_of_z(theta):
     """The tilted ring's axis (tribology.ring_axis: its series below 1e-4 rad, sin and cos above) equals the

@@ -184,14 +184,14 @@ COVERED_THROUGH = {
     # the DEM step's pieces: compared through advance over 300 steps of a 6208 in a speed ramp under 3 kN
     # (test_ball_dynamics.py: loaded and open contacts, boundary and mixed regimes, slipping springs, cage
     # balls pressed by the balls and by their channel), three film formulas
-    BD + "integrator.verlet_step": (BD + "integrator.advance", "the step that advance repeats"),
-    BD + "tribology.refresh_tribology": (BD + "integrator.advance", "the refresh every 10 steps (trib compared)"),
+    BD + "integrator.verlet_step": (BD + "integrator.run_call", "the step that advance repeats"),
+    BD + "tribology.refresh_tribology": (BD + "integrator.run_call", "the refresh every 10 steps (trib compared)"),
     BD + "integrator.ball_capacitances": (
-        BD + "integrator.advance",
+        BD + "integrator.run_call",
         "each ball's series capacitance after a refresh (the integrated capacitance is compared)",
     ),
     BD + "tribology.tribology_constants": (
-        BD + "integrator.advance",
+        BD + "integrator.run_call",
         "the fused film and Houpert constants; their own equality with kernels.ehl and kernels.torque is tested "
         "to 1e-12 in test_ball_dynamics.py",
     ),
@@ -211,8 +211,8 @@ COVERED_THROUGH = {
         "the slip power at the velocities a step ends with, in the dissipated energy compared every step (the twin "
         "evaluates it from the end velocities directly, ref_ball_dynamics_integrator.slip_power)",
     ),
-    BD + "tribology.sample_refresh": (BD + "integrator.advance", "the averaged state outputs' refresh samples"),
-    BD + "tribology.film_losses": (BD + "integrator.advance", "the film's losses in the power booked every step"),
+    BD + "tribology.sample_refresh": (BD + "integrator.run_call", "the averaged state outputs' refresh samples"),
+    BD + "tribology.film_losses": (BD + "integrator.run_call", "the film's losses in the power booked every step"),
 }
 
 
@@ -232,15 +232,22 @@ COVERED_THROUGH |= _pieces(
         "ball_race_forces": "the ball-race contacts' forces, springs, chatter counts and powers",
         "cage_forces": "the cage balls' contacts",
         "correct_ring": "the ring's corrector, translation and tilts",
+        "follow_path": "the prescribed ring on its cubic path (test_kernel_matches_twin_with_a_prescribed_ring)",
         "correct_balls": "the balls' and cage balls' corrector and the slip power at the step's end",
     },
 )
 COVERED_THROUGH |= _pieces(
     BD + "integrator.advance",
     {
-        "start_call": "the call's integrals and status cleared",
+        "load_driven_call": "its call with the ring under its loads (every state array after each step)",
+        "prescribed_call": "its call with a prescribed ring (test_kernel_matches_twin_with_a_prescribed_ring)",
     },
 )
+COVERED_THROUGH |= _pieces(
+    BD + "integrator.load_driven_call",
+    {"run_call": "its body, also prescribed_call's (test_kernel_matches_twin_with_a_prescribed_ring)"},
+)
+COVERED_THROUGH |= _pieces(BD + "integrator.run_call", {"start_call": "the call's integrals and status cleared"})
 # compared through advance's refreshes (trib compared), three film formulas and both tangential laws
 COVERED_THROUGH |= _pieces(
     BD + "tribology.refresh_tribology",

@@ -89,8 +89,8 @@ def test_a_choice_the_fidelity_does_not_take_is_left_out():
 def test_a_fidelitys_rules_refuse_what_it_cannot_do():
     with pytest.raises(SceneError, match="torque = true needs fidelity = 'quasi_static'"):
         Scene(fidelity="analytic", torque=True).validate()
-    with pytest.raises(SceneError, match="drive = 'displacement' needs fidelity = 'quasi_static' \\(the DEM is"):
-        Scene(name="d", fidelity="dem", drive="displacement").validate()
+    with pytest.raises(SceneError, match="drive = 'fixed_axial' is not a DEM drive: allowed 'load' or 'displacement'"):
+        Scene(name="d", fidelity="dem", drive="fixed_axial").validate()
     with pytest.raises(SceneError, match="lubrication = 'oil_bath' is not in the DEM yet"):
         Scene(name="d", fidelity="dem", lubrication="oil_bath").validate()
     Scene(name="q", fidelity="quasi_static", torque=True, drive="displacement", lubrication="oil_bath").validate()

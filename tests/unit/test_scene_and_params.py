@@ -42,7 +42,7 @@ def test_capacitance_region_options_are_checked(options, word):
         ({"gyroscopic": True}, "gyroscopic"),
         ({"torque": True}, "torque"),
         ({"thermal_inputs": True}, "thermal_inputs"),
-        ({"drive": "displacement"}, "load-driven"),
+        ({"drive": "fixed_axial"}, "not a DEM drive"),
         ({"centrifugal": False}, "centrifugal"),
     ],
 )
@@ -54,6 +54,7 @@ def test_dem_scene_rejects_quasi_static_options(option, word):
 def test_dem_scene_takes_the_physics_options():
     scene = Scene(name="d", fidelity="dem", film="chittenden", hertz="approximate", capacitance=False).validate()
     assert scene.fidelity == "dem"
+    assert Scene(name="d", fidelity="dem", drive="displacement").validate().drive == "displacement"
 
 
 def test_dem_scene_takes_the_stiffness_option():

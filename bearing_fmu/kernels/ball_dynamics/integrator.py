@@ -10,7 +10,9 @@ from omega0 to omega1 over the call (a ramp is a sequence of calls). Its tilts (
 through its centre) follow I_d dtheta_rate/dt = M_perp + gyroscopic moment: M_perp the part across the ring's
 axis of the applied moments and of the contacts' moments about the centre (the drive holds the part along
 the axis), the gyroscopic moment -I_p omega (theta_rate x a) of a ring turning at omega whose axis a turns at the
-tilt rates (taken, as the damping, at the predicted rates). The tribology (film, Lambda, mu, C_n,
+tilt rates (taken, as the damping, at the predicted rates). Or the ring's displacement and tilts are prescribed
+(par[P_DRIVE]): they follow a cubic through the values and rates the caller gives at both ends of the call, and the
+call integrates the load that holds the ring on that path. The tribology (film, Lambda, mu, C_n,
 capacitance, Houpert resistances) is refreshed from the state at the start of every N-th step.
 """
 
@@ -33,6 +35,7 @@ from .state import (
     A_MR,
     A_POWER_I,
     A_POWER_O,
+    A_REACTION,
     A_RING_SQ,
     A_SIZE,
     A_VR,
@@ -60,6 +63,7 @@ from .state import (
     P_D,
     P_DAMPING_STOP,
     P_DELTA_LIM_I,
+    P_DRIVE,
     P_FILM_RATE,
     P_GUIDE_GAP,
     P_I_BALL,
@@ -75,6 +79,8 @@ from .state import (
     P_M_CAGE,
     P_M_RING,
     P_MU_LIM,
+    P_PATH,
+    P_PATH_T,
     P_R_CAGE,
     P_R_GUIDE,
     P_REFRESH,
@@ -405,6 +411,47 @@ def cage_forces(balls, cage, par, work):
 
 
 @kernel(error_model="numpy", inline="always")
+def follow_path(ring, par, s, acc):
+    """The prescribed inner ring (par[P_DRIVE] = 1) at the fraction s (0 at the call's start, 1 at its end) of its
+    path: displacement, tilts, their rates (also as the predicted ones, acc[A_VR], acc[A_WR]) and accelerations on
+    the cubic Hermite curve through the path's ends (par[P_PATH], the start's and the end's values and rates, over
+    par[P_PATH_T] s). The cubic takes the rates the caller gives at both ends, so the ring's velocity, which the
+    contacts' damping and traction see, is continuous from one call to the next; at s = 1 its weights are exactly
+    (0, 0, 1, 0): the call ends on the given end values."""
+    T = par[P_PATH_T]
+    s2 = s * s
+    s3 = s2 * s
+    h00 = 2.0 * s3 - 3.0 * s2 + 1.0
+    h10 = s3 - 2.0 * s2 + s
+    h01 = 3.0 * s2 - 2.0 * s3
+    h11 = s3 - s2
+    d00 = (6.0 * s2 - 6.0 * s) / T
+    d10 = 3.0 * s2 - 4.0 * s + 1.0
+    d11 = 3.0 * s2 - 2.0 * s
+    e00 = (12.0 * s - 6.0) / (T * T)
+    e10 = (6.0 * s - 4.0) / T
+    e11 = (6.0 * s - 2.0) / T
+    for k in range(5):
+        x0 = par[P_PATH + k]
+        r0 = par[P_PATH + 5 + k]
+        x1 = par[P_PATH + 10 + k]
+        r1 = par[P_PATH + 15 + k]
+        x = h00 * x0 + h10 * T * r0 + h01 * x1 + h11 * T * r1
+        v = d00 * (x0 - x1) + d10 * r0 + d11 * r1
+        a = e00 * (x0 - x1) + e10 * r0 + e11 * r1
+        if k < 3:
+            ring[R_X + k] = x
+            ring[R_VX + k] = v
+            ring[R_AX + k] = a
+            acc[A_VR + k] = v
+        else:
+            ring[R_TH + k - 3] = x
+            ring[R_VTH + k - 3] = v
+            ring[R_ATH + k - 3] = a
+            acc[A_WR + k - 3] = v
+
+
+@kernel(error_model="numpy", inline="always")
 def correct_ring(ring, par, omega, dt, acc):
     """Corrector of the inner ring: its new accelerations and velocities in translation and tilt from the contacts'
     force acc[A_FR] and moment acc[A_MR] (with the loads), its support and, in the tilts, its gyroscopic moment."""
@@ -516,10 +563,12 @@ def correct_balls(balls, cage, ring, par, dt, work, acc, total):
 # callers (which take the same error model: the inlined code is compiled with the caller's): a call that passes the
 # nine state arrays costs two atomic reference-count updates per array, about 5 % of a step.
 @kernel(error_model="numpy", inline="always")
-def verlet_step(state, par, omega, loads, dt, work, acc):
+def verlet_step(state, par, omega, loads, dt, work, acc, s, prescribed):
     """One velocity-Verlet step of every body of state (see the module docstring) at inner-ring speed omega
     (rad/s) and loads (F_x, F_y, F_z (N), M_x, M_y (N.m, about its centre)) on the inner ring; state, par, work
-    and acc as advance's.
+    and acc as advance's. A prescribed ring (prescribed, par[P_DRIVE] != 0) is put at the fraction s of its path at
+    the step's end (follow_path) instead of being predicted and corrected; advance passes prescribed as a constant,
+    so that the load-driven step is compiled without the switch.
 
     The forces at the new positions with the predicted velocities: the 2 Z ball-race contacts
     (ball_race_forces) and the cage balls (cage_forces, the cage's torque shared by rigid_cage_torque), then the
@@ -530,6 +579,8 @@ def verlet_step(state, par, omega, loads, dt, work, acc):
     """
     balls, cage, ring, _, _, counters = state
     predict(balls, cage, ring, work, acc, dt)
+    if prescribed:
+        follow_path(ring, par, s, acc)
     race_approaches(balls, ring, par, work)
     worst_pen, worst_pen_at, worst_chat, worst_chat_at, fr_x, fr_y, fr_z, mr_x, mr_y, mr_z = ball_race_forces(
         state, par, omega, loads, dt, work, acc
@@ -542,7 +593,8 @@ def verlet_step(state, par, omega, loads, dt, work, acc):
     acc[A_MR + 2] = mr_z
     cage_forces(balls, cage, par, work)
     rigid_cage_torque(cage, work)
-    correct_ring(ring, par, omega, dt, acc)
+    if not prescribed:
+        correct_ring(ring, par, omega, dt, acc)
     # a NaN or inf anywhere (positions, velocities, springs) reaches the contact forces within a step; the moments
     # follow from the same quantities. The sum only feeds the finiteness check, so it is taken in the loop that
     # reads the forces anyway, in an order that keeps the additions' chain short.
@@ -568,7 +620,7 @@ def initialise_accelerations(state, params, omega, loads, T_oil, space):
     refresh_tribology(omega, eta, xi, K_cm, rho0, balls, ring, par, trib, tc, np.empty((4, balls.shape[1])))
     # a step of zero length: positions and velocities stay, the accelerations become those of the forces
     saved = spring.copy()
-    verlet_step(state, par, omega, loads, 0.0, work, acc)
+    verlet_step(state, par, omega, loads, 0.0, work, acc, 0.0, par[P_DRIVE] != 0.0)
     spring[:, :] = saved  # (the springs' projection on the tangent planes waits for the first real step)
     counters[K_STEP] -= 1  # not a step: the refresh phase stays
 
@@ -589,25 +641,12 @@ def start_call(acc, status):
     status[ST_INDEX] = -1
 
 
-@kernel(error_model="numpy")  # (verlet_step is inlined: its error model)
-def advance(state, params, call, space):
-    """Run n_steps steps of dt (s) with the inner-ring speed going linearly from omega0 to omega1
-    (rad/s), constant loads F_x, F_y, F_z (N) and M_x, M_y (N.m, about its centre) on the inner ring and oil
-    temperature T_oil (K).
-
-    The arguments are four tuples (kernels.ball_dynamics.state, "argument groups"): state = (balls, cage, ring,
-    spring, trib, counters), the state arrays; params = (par, lub), the parameter and lubricant arrays; call =
-    (n_steps, dt, omega0, omega1, loads, T_oil, energy_limit) with loads = (F_x, F_y, F_z, M_x, M_y); space =
-    (work, acc, status), the scratch, the call's sums and the monitor's verdict.
-
-    Stops early with status[ST_CODE] != STATUS_OK (monitor) after the offending step; status[ST_STEP]
-    holds the steps done, status[ST_INDEX] the ball or contact (race * Z + ball). energy_limit (J)
-    bounds the kinetic energy and par[P_DAMPING_STOP] the damping ratio of a step (monitor.damping_step_ratio),
-    both checked at each tribology refresh. acc[A_DISS_I], acc[A_DISS_O]
-    receive the energy (J) dissipated in the inner and outer contacts during the call, acc[A_POWER_I],
-    acc[A_POWER_O] the power (W) of the last step, and acc[A_CAP] the bearing capacitance of every step (the
-    loaded balls' capacitances at the last refresh, without a background term) integrated over the call (F.s).
-    """
+# advance's body, inlined into two kernels with prescribed a constant: the load-driven loop is then compiled without
+# the prescribed ring's branches, which in the loop cost it 4 %. (Both inlined into advance itself, the function
+# twice as long, the load-driven call took half as long again.)
+@kernel(error_model="numpy", inline="always")
+def run_call(state, params, call, space, prescribed):
+    """advance's call, the inner ring prescribed (prescribed, a constant) or load-driven."""
     balls, cage, ring, _, trib, counters = state
     par, lub = params
     n_steps, dt, omega0, omega1, loads, T_oil, energy_limit = call
@@ -647,7 +686,8 @@ def advance(state, params, call, space):
                 return
         countdown -= 1
         omega = omega0 + d_omega * (n + 1)
-        pen, pen_at, chat, chat_at, total = verlet_step(state, par, omega, loads, dt, work, acc)
+        s = (n + 1) / n_steps if prescribed else 0.0
+        pen, pen_at, chat, chat_at, total = verlet_step(state, par, omega, loads, dt, work, acc, s, prescribed)
         power_i = acc[A_POWER_I] + film_i
         power_o = acc[A_POWER_O] + film_o
         acc[A_POWER_I] = power_i
@@ -666,6 +706,13 @@ def advance(state, params, call, space):
         acc[A_RING_SQ + 3] += ring[R_TH + 1] * ring[R_TH + 1] * dt
         acc[A_RING_SQ + 4] += (ring[R_VX] * ring[R_VX] + ring[R_VX + 1] * ring[R_VX + 1]) * dt
         acc[A_RING_SQ + 5] += (ring[R_VTH] * ring[R_VTH] + ring[R_VTH + 1] * ring[R_VTH + 1]) * dt
+        if prescribed:  # the load that holds the ring on its path: the loads less the ring's force and moment
+            F_x, F_y, F_z, M_x, M_y = loads
+            acc[A_REACTION] += (F_x - acc[A_FR]) * dt
+            acc[A_REACTION + 1] += (F_y - acc[A_FR + 1]) * dt
+            acc[A_REACTION + 2] += (F_z - acc[A_FR + 2]) * dt
+            acc[A_REACTION + 3] += (M_x - acc[A_MR]) * dt
+            acc[A_REACTION + 4] += (M_y - acc[A_MR + 1]) * dt
         if capacitance:  # the balls loaded on both races in this step, in parallel
             c = 0.0
             for j in range(Z):
@@ -684,3 +731,43 @@ def advance(state, params, call, space):
             status[ST_CODE] = STATUS_CHATTER
             status[ST_INDEX] = chat_at
             return
+
+
+@kernel(error_model="numpy")  # (verlet_step is inlined: its error model)
+def load_driven_call(state, params, call, space):
+    """advance's call with the inner ring under its loads and support."""
+    run_call(state, params, call, space, False)
+
+
+@kernel(error_model="numpy")  # (verlet_step is inlined: its error model)
+def prescribed_call(state, params, call, space):
+    """advance's call with the inner ring on the path of par[P_PATH]."""
+    run_call(state, params, call, space, True)
+
+
+# one call per advance (not per step): its reference counts cost nothing measurable
+@kernel(error_model="numpy")
+def advance(state, params, call, space):
+    """Run n_steps steps of dt (s) with the inner-ring speed going linearly from omega0 to omega1
+    (rad/s), constant loads F_x, F_y, F_z (N) and M_x, M_y (N.m, about its centre) on the inner ring and oil
+    temperature T_oil (K).
+
+    The arguments are four tuples (kernels.ball_dynamics.state, "argument groups"): state = (balls, cage, ring,
+    spring, trib, counters), the state arrays; params = (par, lub), the parameter and lubricant arrays; call =
+    (n_steps, dt, omega0, omega1, loads, T_oil, energy_limit) with loads = (F_x, F_y, F_z, M_x, M_y); space =
+    (work, acc, status), the scratch, the call's sums and the monitor's verdict.
+
+    Stops early with status[ST_CODE] != STATUS_OK (monitor) after the offending step; status[ST_STEP]
+    holds the steps done, status[ST_INDEX] the ball or contact (race * Z + ball). energy_limit (J)
+    bounds the kinetic energy and par[P_DAMPING_STOP] the damping ratio of a step (monitor.damping_step_ratio),
+    both checked at each tribology refresh. acc[A_DISS_I], acc[A_DISS_O]
+    receive the energy (J) dissipated in the inner and outer contacts during the call, acc[A_POWER_I],
+    acc[A_POWER_O] the power (W) of the last step, and acc[A_CAP] the bearing capacitance of every step (the
+    loaded balls' capacitances at the last refresh, without a background term) integrated over the call (F.s).
+    With par[P_DRIVE] = 1 the inner ring follows the path of par[P_PATH] over the call (follow_path: its support and
+    the loads move it no more) and acc[A_REACTION] receives the load that holds it there integrated over the call.
+    """
+    if params[0][P_DRIVE] != 0.0:
+        prescribed_call(state, params, call, space)
+    else:
+        load_driven_call(state, params, call, space)

@@ -161,10 +161,18 @@ P_CT_SUPPORT = _P_SLOTS.slot()  # and its tilt damping (N.m.s/rad), c (d_m/2)^2/
 # the dampers on the ring's translations (N.s/m): the automatic step keeps each one's c / m within its plan, as a
 # contact's (models.dem.time_step)
 RING_DAMPERS = (P_C_SUPPORT, P_C_SUPPORT_AXIAL)
+# how the inner ring moves across and along its axis: 0 = integrated under the loads and its support; 1 = prescribed,
+#   it follows P_PATH over the call (the shaft holds it: no support, no loads; integrator.follow_path)
+P_DRIVE = _P_SLOTS.slot()
+P_PATH_T = _P_SLOTS.slot()  # duration of the call's path (s), written by the facade at each call
+# the call's path: displacement x, y, z (m), tilts theta_x, theta_y (rad) at its start, their rates (m/s, rad/s) at
+#   its start, the displacement and tilts at its end and their rates at its end: 4 x 5 entries
+P_PATH = _P_SLOTS.slot(20)
 # capacitance submodel (kernels.capacitance layout, CAP_SIZE slots; its CAP_ON 0 = off: no contact capacitance is
 # computed, they stay 0)
 P_CAPACITANCE_BLOCK = _P_SLOTS.slot(CAP_SIZE)
-# film correction table (kernels.film_correction layout, FT_SIZE slots; its FT_ON 0 = off)
+# film correction table (kernels.film_correction layout, FT_SIZE slots; its FT_ON 0 = off), the last block: the
+# kernels read it as par[P_FILM_TABLE:]
 P_FILM_TABLE = _P_SLOTS.slot(FT_SIZE)
 P_SIZE = _P_SLOTS.size
 P_HERTZ_SCALE_STRIDE = P_HA_O - P_HA_I  # inner -> outer block of the Hertz scaling
@@ -264,6 +272,9 @@ A_S_HC_O = _A_SLOTS.slot()
 # the ring's x^2, y^2 (m^2.s), theta_x^2, theta_y^2 (rad^2.s), vx^2 + vy^2 (m^2/s) and tilt rates
 #   squared (rad^2/s) integrated over the call's steps, 6 entries: the orbit watch's variances (models.dem.whirl)
 A_RING_SQ = _A_SLOTS.slot(6)
+# with a prescribed ring (P_DRIVE): the load on the inner ring that holds it on its path, minus the balls' force and
+#   moment on it (N; N.m about its centre), F_x, F_y, F_z, M_x, M_y integrated over the call's steps (N.s, N.m.s)
+A_REACTION = _A_SLOTS.slot(5)
 A_SIZE = _A_SLOTS.size
 
 # ---- the argument groups of the integrator's kernels (integrator.advance, initialise_accelerations) ---------

@@ -6,7 +6,16 @@ import math
 from bearing_fmu_common.variables import InputLimits
 
 from ...params import clearance_limits
-from ..declarations import DEM_DT_MAX, DEM_DT_MIN, DEM_INPUTS, DEM_REFRESH_MAX, T_OIL_START
+from ..declarations import (
+    DEM_DT_MAX,
+    DEM_DT_MIN,
+    DEM_LOAD_INPUTS,
+    DEM_PATH_INPUTS,
+    DEM_REFRESH_MAX,
+    DISPLACEMENT_LIMIT,
+    PATH_RATE_FREQUENCY,
+    T_OIL_START,
+)
 from ..dem_settings import checked_settings as checked_numeric_settings
 from ..limits import DM_N_LIMIT, MATERIAL_LIMIT, InputError
 from .packing import CONSTANTS
@@ -17,11 +26,11 @@ COMMUNICATION_DIGITS = 12
 COMMUNICATION_RESOLUTION = 10.0**-COMMUNICATION_DIGITS
 
 
-def checked_settings(dt, refresh, safety, refresh_interval, settings, kt_ratio, mass, inertia):
+def checked_settings(dt, refresh, safety, refresh_interval, settings, kt_ratio, mass, inertia, drive="load"):
     """Refuse a DemModel setting out of its range (the arguments of DemModel; settings = its keywords of
     models.dem_settings.DEM_SETTINGS, mass and inertia are ring_mass and ring_inertia); returns those settings
     checked (name -> value, the defaults of params/dem_model.toml where absent or None) and kt_ratio, the file's
-    where None."""
+    where None. drive: the model's (the ring's support is none with a prescribed ring)."""
     if dt is not None and not (math.isfinite(dt) and DEM_DT_MIN <= dt <= DEM_DT_MAX):
         raise InputError(
             f"dt = {dt} s is outside the allowed range [{DEM_DT_MIN:g}, {DEM_DT_MAX:g}] s (in the FMU also 0 = "
@@ -37,7 +46,7 @@ def checked_settings(dt, refresh, safety, refresh_interval, settings, kt_ratio, 
             f"refresh_interval = {refresh_interval} s is outside the allowed range [0, {DEM_REFRESH_MAX:g}] s "
             "(0 = every DEM step)"
         )
-    settings = checked_numeric_settings(settings)
+    settings = checked_numeric_settings(settings, drive)
     kt_ratio = CONSTANTS.kt_ratio if kt_ratio is None else kt_ratio
     if not (math.isfinite(kt_ratio) and 0.1 <= kt_ratio <= 1.5):
         raise InputError(f"kt_ratio = {kt_ratio} is outside the allowed range [0.1, 1.5]")
@@ -54,7 +63,8 @@ def speed_limit(bearing):
 
 
 def input_limits(bearing, Pd, load, omega_max):
-    """The InputLimits of DEM_INPUTS narrowed to a bearing of diametral clearance Pd (m) with the load limit `load`
+    """The InputLimits of DEM_LOAD_INPUTS (the load-driven DEM's inputs) narrowed to a bearing of diametral
+    clearance Pd (m) with the load limit `load`
     (N) and the speed limit omega_max (rad/s)."""
     narrowed = {name: (-load, load, MATERIAL_LIMIT) for name in ("F_x", "F_y", "F_z")}
     # moments: the load limit at the pitch radius, as the quasi-static fidelity's
@@ -70,7 +80,56 @@ def input_limits(bearing, Pd, load, omega_max):
         high - Pd,
         f"Pd + dPd_thermal within [{low:.4g}, {high:.4g}] m (|Pd| <= (f_i + f_o - 1) D)",
     )
-    return InputLimits(DEM_INPUTS, narrowed)
+    return InputLimits(DEM_LOAD_INPUTS, narrowed)
+
+
+DRIVES = ("load", "displacement")  # DemModel's drive: the loads move the inner ring, or its path is prescribed
+PATH_NAMES = tuple(v.name for v in DEM_PATH_INPUTS)
+
+
+def checked_drive(drive):
+    """The drive of a DemModel, refused unless one of DRIVES."""
+    if drive not in DRIVES:
+        raise InputError(f"drive = {drive!r} is not one of the allowed {list(DRIVES)}")
+    return drive
+
+
+def path_limits(bearing):
+    """The InputLimits of DEM_PATH_INPUTS narrowed to the bearing: displacements within half its groove clearance
+    A = (f_i + f_o - 1) D, their rates within that amplitude vibrating at PATH_RATE_FREQUENCY."""
+    bound = DISPLACEMENT_LIMIT * (bearing.f_i + bearing.f_o - 1.0) * bearing.D
+    why = "|d| <= 0.5 (f_i + f_o - 1) D: beyond it past any material limit"
+    narrowed = {name: (-bound, bound, why) for name in PATH_NAMES[:3]}
+    rate = bound * 2.0 * math.pi * PATH_RATE_FREQUENCY
+    narrowed |= {name: (-rate, rate, f"{why}, vibrating at 10 kHz") for name in PATH_NAMES[5:8]}
+    return InputLimits(DEM_PATH_INPUTS, narrowed)
+
+
+def path_values(limits, motion, displacement_driven):
+    """The prescribed ring's end values of a call (x ... theta_y, then their rates; SI) from the keywords `motion`
+    (name -> value, absent = 0), checked against limits (path_limits). Refused when the model is load-driven, or
+    for a name that is not one of PATH_NAMES."""
+    unknown = sorted(set(motion) - set(PATH_NAMES))
+    if unknown:
+        raise InputError(f"unknown input(s) {unknown}: allowed the loads, or with drive = 'displacement' {PATH_NAMES}")
+    if motion and not displacement_driven:
+        raise InputError(
+            f"{sorted(motion)[0]} = {motion[sorted(motion)[0]]} is an input of drive = 'displacement' only (this "
+            "model is load-driven: give F_x ... M_y)"
+        )
+    values = tuple(float(motion.get(name, 0.0)) for name in PATH_NAMES)
+    limits.check(values)
+    return values
+
+
+def check_no_loads(loads):
+    """A ring on a prescribed path takes no loads (the shaft holds it): refuse a non-zero one."""
+    for name, value in zip(("F_x", "F_y", "F_z", "M_x", "M_y"), loads):
+        if value != 0.0:
+            raise InputError(
+                f"{name} = {value} is outside the allowed range [0, 0] with drive = 'displacement' (the ring's "
+                "path is prescribed: its reaction loads are outputs)"
+            )
 
 
 def check_inputs(limits, t, t_end, omega, loads, T_oil, dPd_thermal):
@@ -78,7 +137,7 @@ def check_inputs(limits, t, t_end, omega, loads, T_oil, dPd_thermal):
     (input_limits)."""
     if not (math.isfinite(t_end) and t_end > t):
         raise InputError(f"t_end = {t_end} s is outside the allowed range ]{t:.9g}, inf[ s (after the current time)")
-    limits.check((omega, *loads, T_oil, dPd_thermal))  # the order of DEM_INPUTS
+    limits.check((omega, *loads, T_oil, dPd_thermal))  # the order of DEM_LOAD_INPUTS
 
 
 def communication_interval(interval):

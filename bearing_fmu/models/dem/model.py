@@ -3,6 +3,7 @@ start of a call) and the FMU protocol (update, evaluate, get_state/set_state); t
 sibling modules (the package's docstring lists them)."""
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -30,6 +31,8 @@ from .packing import load_limit, pack_parameters
 from .placement import place_bodies
 from .time_step import AUTO_STEP_HALVINGS, SAFETY
 
+NO_LOADS = (0.0, 0.0, 0.0, 0.0, 0.0)  # the loads of a prescribed ring (its reaction is an output)
+
 
 class DemModel:
     """DEM bearing: Z balls + Z cage balls + translating inner ring.
@@ -55,6 +58,11 @@ class DemModel:
     names): the traction_limit of the tangential law (docs/dem.md, Tangential force) and the inner ring's support
     (docs/dem.md, Ring support); each is listed below with its unit, range and default.
     film_tables: directory of the film tables an FMU carries (models.film_table); None = this machine's cache.
+    drive: None (default: the scene's drive), 'load' (the loads F_x ... M_y move the inner ring on its support) or
+    'displacement' (the inner ring's displacement x, y, z and tilts theta_x, theta_y are prescribed: each call gives
+    their values and rates at its end and the ring follows the cubic from its state to them; the outputs add the
+    reaction loads F_x ... M_y averaged over the call, and the ring has no support of its own, the support settings
+    0; docs/dem.md, Prescribed ring). A drive given here replaces the scene's.
     """
 
     def __init__(
@@ -73,11 +81,14 @@ class DemModel:
         averaged=True,
         averaged_state=False,
         film_tables=None,
+        drive=None,
         **settings,
     ):
-        self.scene = (scene or Scene(name="dem", fidelity="dem")).validate()
-        if self.scene.fidelity != "dem":
-            raise InputError(f"scene '{self.scene.name}' has fidelity {self.scene.fidelity!r}: DemModel needs 'dem'")
+        scene = (scene or Scene(name="dem", fidelity="dem")).validate()
+        if scene.fidelity != "dem":
+            raise InputError(f"scene '{scene.name}' has fidelity {scene.fidelity!r}: DemModel needs 'dem'")
+        self.drive = inputs.checked_drive(scene.drive if drive is None else drive)
+        self.scene = replace(scene, drive=self.drive)  # its variables follow the drive in effect
         self.bearing = b = load_bearing(bearing)
         self.lubricant = load_lubricant(lubricant)
         check_roughness(b.Ra_inner, b.Ra_outer, b.Ra_ball, b.path)  # the reader's check, for a Bearing made by hand
@@ -85,7 +96,7 @@ class DemModel:
         check_clearance(self.Pd, b, Pd is not None)
         # the numeric settings of DEM_SETTINGS by name (checked, the defaults filled in)
         self.settings, kt_ratio = inputs.checked_settings(
-            dt, refresh, safety, refresh_interval, settings, kt_ratio, ring_mass, ring_inertia
+            dt, refresh, safety, refresh_interval, settings, kt_ratio, ring_mass, ring_inertia, self.drive
         )
         self.averaged = bool(averaged)
         self.averaged_state = bool(averaged_state)
@@ -100,11 +111,18 @@ class DemModel:
         self.par, self._truncation_parameters, self._rest = pack_parameters(
             b, self.scene, self.lubricant, self.Pd, self.settings, kt_ratio, ring_mass, ring_inertia, film_tables
         )
+        self.displacement_driven = self.drive == "displacement"
+        self.par[s.P_DRIVE] = float(self.displacement_driven)
+        self._path_limits = inputs.path_limits(b)
+        # the load that held the prescribed ring over the last call (F_x, F_y, F_z in N, M_x, M_y in N.m), averaged
+        self.reaction = np.zeros(5)
+        self._path_estimate = 0.0  # N, _path_load_bound of the current call
         self.load_limit = load_limit(self.par, b.Z)
         self._limits = inputs.input_limits(b, self.Pd, self.load_limit, self.omega_max)
         self._rho_outer = float(self.par[s.P_RHO_O])  # at the nominal clearance
         self._allocate(b.Z)
         self._place_bodies()
+        self._hold_path()
         self._initialise(0.0, 0.0, 0.0, 0.0, T_OIL_DEFAULT)
         self.orbit_window = whirl.new_window(self.ring)  # the ring-orbit watch's window (models.dem.whirl)
         self.orbit_verdict = None  # whirl.Verdict of the window the last advance() closed, None if it closed none
@@ -154,6 +172,7 @@ class DemModel:
             "K": self.K.reshape(-1),
             "freq": self.frequencies,
             "trunc": self.trunc,
+            "reaction": self.reaction,
         }
         self._plan = gather_plan(self.outputs, arrays)
 
@@ -169,6 +188,39 @@ class DemModel:
     def _place_bodies(self):
         place_bodies(self.balls, self.cage, self.ring, self.spring, self.trib, self.counters, self.par, self._rest)
         self.omega = 0.0
+
+    def _hold_path(self):
+        """A prescribed ring's path that holds it where it is (its rates 0) until the first call gives one."""
+        if self.displacement_driven:
+            current = self._ring_motion()
+            self._set_path(1.0, (*current[:5], 0.0, 0.0, 0.0, 0.0, 0.0))
+
+    def _ring_motion(self):
+        """The ring's x, y, z (m), theta_x, theta_y (rad) and their rates (m/s, rad/s) in the state."""
+        r = self.ring
+        return np.concatenate(
+            (r[s.R_X : s.R_X + 3], r[s.R_TH : s.R_TH + 2], r[s.R_VX : s.R_VX + 3], r[s.R_VTH : s.R_VTH + 2])
+        )
+
+    def _path_load_bound(self, end):
+        """Bound (N) of the load the balls put on a ring at the path's end `end` (x ... theta_y first): every ball
+        pressed by the whole displacement |(x, y, z)| + |(theta_x, theta_y)| rho_i through its two contacts in
+        series (Q = K delta^1.5 each, K^(-2/3) adding), plus the contact loads now. The automatic step and the
+        energy bound take it as the load of a call: the drive does work on the bearing the loads do not show."""
+        p = self.par
+        delta = math.hypot(*end[:3]) + math.hypot(*end[3:5]) * p[s.P_RHO_I]
+        K = (p[s.P_KH_I] ** (-2.0 / 3.0) + p[s.P_KH_O] ** (-2.0 / 3.0)) ** -1.5
+        return self.bearing.Z * K * delta**1.5 + float(self._Q.sum())
+
+    def _set_path(self, duration, end):
+        """The prescribed ring's path of a call of `duration` (s): from its state now to `end` (x ... theta_y, then
+        their rates; SI), in the kernel's layout (state.P_PATH)."""
+        start = self._ring_motion()
+        p = s.P_PATH
+        self.par[s.P_PATH_T] = duration
+        self.par[p : p + 5] = start[:5]
+        self.par[p + 5 : p + 10] = start[5:]
+        self.par[p + 10 : p + 20] = end
 
     def _initialise(self, omega, F_x, F_y, F_z, T_oil, M_x=0.0, M_y=0.0):
         state, params, space = self._groups()
@@ -205,7 +257,17 @@ class DemModel:
 
     # -- stepping ------------------------------------------------------------------------------
     def advance(
-        self, t_end, omega=None, F_x=0.0, F_y=0.0, F_z=0.0, T_oil=T_OIL_DEFAULT, dPd_thermal=0.0, M_x=0.0, M_y=0.0
+        self,
+        t_end,
+        omega=None,
+        F_x=0.0,
+        F_y=0.0,
+        F_z=0.0,
+        T_oil=T_OIL_DEFAULT,
+        dPd_thermal=0.0,
+        M_x=0.0,
+        M_y=0.0,
+        **path,
     ):
         """Integrate to t_end (s): inner-ring speed from its current value linearly to omega (rad/s; None =
         hold), loads F_x, F_y, F_z (N) and moments M_x, M_y (N.m, about the ring's centre, that of its
@@ -214,18 +276,43 @@ class DemModel:
         moves by half of it; the Hertz constants stay those of the nominal geometry, as in the quasi-static
         fidelity). Returns outputs_dict().
 
+        With drive = 'displacement' the loads stay 0 and `path` gives the inner ring's x, y, z (m), theta_x,
+        theta_y (rad) at t_end and their rates x_rate ... theta_y_rate (m/s, rad/s; each absent = 0): the ring
+        follows the cubic Hermite curve from its state to them, and the outputs add the load that holds it there,
+        F_x, F_y, F_z (N), M_x, M_y (N.m about its centre), averaged over the call.
+
         Raises InputError for inputs out of range, DemUnstableError when the monitor stops the run (the
         state is then left at the offending step: restore a saved state to retry)."""
         omega = self.omega if omega is None else float(omega)
         loads = (float(F_x), float(F_y), float(F_z), float(M_x), float(M_y))
-        self._advance(float(t_end), omega, loads, float(T_oil), float(dPd_thermal))
+        t_end = float(t_end)
+        if path and not self.displacement_driven:  # (refused: the path's inputs are a prescribed ring's)
+            inputs.path_values(self._path_limits, path, False)
+        if self.displacement_driven:  # (only then: the path's checks are 3 % of a load-driven call)
+            end = inputs.path_values(self._path_limits, path, True)
+            inputs.check_no_loads(loads)
+            self._prepare_path(t_end, omega, end, float(T_oil), float(dPd_thermal))
+        self._advance(t_end, omega, loads, float(T_oil), float(dPd_thermal))
         return self.outputs_dict()
+
+    def _prepare_path(self, t_end, omega, end, T_oil, dPd_thermal):
+        """A prescribed ring's call to t_end (s) with the path's end values `end` (x ... theta_y, then their rates; SI,
+        checked): the call's other inputs checked (nothing changes on a refusal), then its path set."""
+        inputs.check_inputs(self._limits, self.time, t_end, omega, NO_LOADS, T_oil, dPd_thermal)
+        self._set_path(t_end - self.time, end)
+        self._path_estimate = self._path_load_bound(end)
 
     def _advance(self, t_end, omega, loads, T_oil, dPd_thermal):
         """advance() without building the output dict (floats in SI units, omega given; loads = (F_x, F_y, F_z,
         M_x, M_y))."""
         inputs.check_inputs(self._limits, self.time, t_end, omega, loads, T_oil, dPd_thermal)
-        F_x, F_y, F_z, M_x, M_y = loads
+        # the automatic step and the energy bound take the loads the contacts carry: a prescribed ring's are those
+        # that held it in the last call
+        estimate = loads
+        if self.displacement_driven:  # the larger of the last call's reaction and the bound of the path's end
+            bound = self._path_estimate
+            estimate = (max(math.hypot(*self.reaction[:3]), bound), 0.0, 0.0, 0.0, 0.0)
+        F_x, F_y, F_z, M_x, M_y = estimate
         self.par[s.P_RHO_O] = self._rho_outer + 0.5 * dPd_thermal
         interval = t_end - self.time
         self._copy_state(self._start, self.__dict__)
@@ -238,11 +325,11 @@ class DemModel:
         self.step_halvings = 0
         while True:
             dt = interval / n_steps  # land exactly on t_end
-            omega0, orbit0 = self._run(n_steps, dt, omega, loads, T_oil)
+            omega0, orbit0 = self._run(n_steps, dt, omega, loads, T_oil, estimate)
             if self.status[s.ST_CODE] == s.STATUS_OK:
                 break
             if not automatic or self.step_halvings == AUTO_STEP_HALVINGS:
-                self._raise_unstable(dt, loads, T_oil, max(abs(self._start["omega"]), abs(omega)))
+                self._raise_unstable(dt, estimate, T_oil, max(abs(self._start["omega"]), abs(omega)))
             # the step was chosen from the state at the start of the call; the film can change within it (a
             # contact entering full film at low speed takes a squeeze damping that overdamps the ball): repeat
             # the call from its start with half the step, or the step the stopped state's film needs if smaller
@@ -276,7 +363,11 @@ class DemModel:
             self.balls, self.ring, self.par, self._truncation_parameters, self._Q, self._signed_alpha, self.trunc,
             self.truncated,
         )  # fmt: skip
-        self.warnings += self._watch_orbit(interval)
+        if self.displacement_driven:
+            # (the orbit watch judges a ring the contacts move: a prescribed ring's orbit is its caller's)
+            self.reaction[:] = self._acc[s.A_REACTION : s.A_REACTION + 5] / interval
+        else:
+            self.warnings += self._watch_orbit(interval)
 
     def _watch_orbit(self, interval):
         """The ring-orbit watch (models.dem.whirl) after a call of `interval` (s): closes its window when it is full;
@@ -315,16 +406,17 @@ class DemModel:
             "shaft's modal stiffness and mass (thresholds in docs/dem.md, Ring support)"
         )
 
-    def _run(self, n_steps, dt, omega, loads, T_oil):
-        """One kernel call of n_steps steps of dt (s) to the inner-ring speed omega; returns the speed and the sum
-        of the orbital angles at its start. self.status holds the monitor's verdict."""
+    def _run(self, n_steps, dt, omega, loads, T_oil, estimate):
+        """One kernel call of n_steps steps of dt (s) to the inner-ring speed omega under `loads`, its energy bound
+        from the loads the contacts carry, `estimate`; returns the speed and the sum of the orbital angles at its
+        start. self.status holds the monitor's verdict."""
         refresh = time_step.refresh_steps(self.refresh_fixed, self.refresh_interval, dt)
         self.par[s.P_REFRESH] = refresh
         self.dt, self.refresh = dt, refresh
         omega0 = self.omega
         orbit0 = float(self.balls[s.B_ORBIT].sum())
         limit = energy_limit(
-            self.bearing, self.par, self.balls, self.cage, self.ring, self._Q, max(abs(omega0), abs(omega)), loads
+            self.bearing, self.par, self.balls, self.cage, self.ring, self._Q, max(abs(omega0), abs(omega)), estimate
         )
         state, params, space = self._groups()
         dyn.advance(state, params, (n_steps, dt, omega0, omega, loads, T_oil, limit), space)
@@ -350,8 +442,12 @@ class DemModel:
 
     # -- outputs -------------------------------------------------------------------------------
     def outputs_dict(self):
-        """Bearing-level outputs of the last advance() (names as the quasi-static fidelity), SI units."""
-        return outputs.outputs_dict(self.out, self.scene.capacitance)
+        """Bearing-level outputs of the last advance() (names as the quasi-static fidelity), SI units; with drive =
+        'displacement' also the reaction loads F_x, F_y, F_z (N), M_x, M_y (N.m), means over the call."""
+        result = outputs.outputs_dict(self.out, self.scene.capacitance)
+        if self.displacement_driven:
+            result.update(zip(("F_x", "F_y", "F_z", "M_x", "M_y"), self.reaction.tolist()))
+        return result
 
     def contacts(self):
         """Per-ball arrays (Z,): azimuth psi (rad, in [0, 2 pi)), orbital and spin speeds (rad/s), and per race
@@ -394,8 +490,9 @@ class DemModel:
     # -- FMU interface ---------------------------------------------------------------------------
     def update(self, u, interval=0.0):
         """Advance by `interval` (s; 0 = only report the current state) with the input values u in self.inputs
-        order (omega, F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal; SI) as advance() takes them, and fill self.values
-        (self.outputs order: the declarations of models.declarations.DEM_OUTPUTS); returns self.values.
+        order (omega, F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal; with drive = 'displacement' omega, x ... theta_y,
+        x_rate ... theta_y_rate, T_oil, dPd_thermal; SI) as advance() takes them, and fill self.values (self.outputs
+        order: the declarations of models.declarations.DEM_OUTPUTS); returns self.values.
 
         Raises InputError for inputs out of range (nothing changed; also with interval 0) and DemUnstableError when
         the monitor stops the step: the state is then restored to the start of the step and self.status keeps the
@@ -405,22 +502,39 @@ class DemModel:
         else:
             # checked without a step too, as the other fidelities' update: the FMU then names an input its
             # first step would refuse when it leaves initialisation
-            self._limits.check(tuple(float(v) for v in u))
+            if self.displacement_driven:
+                omega, end, T_oil, dPd_thermal = self._prescribed_inputs(u)
+                self._limits.check((omega, *NO_LOADS, T_oil, dPd_thermal))
+            else:
+                self._limits.check(tuple(float(v) for v in u))
         self._gather()
         return self.values
 
     def _step_to(self, t_end, u):
         """update()'s step to t_end (s): advance, or on a monitor stop restore the state and raise."""
-        omega, F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal = (float(v) for v in u)
-        loads = (F_x, F_y, F_z, M_x, M_y)
         self.status[s.ST_CODE] = s.STATUS_OK  # a refused input leaves no stale monitor code
         self.warnings = []  # nor stale warnings
-        inputs.check_inputs(self._limits, self.time, t_end, omega, loads, T_oil, dPd_thermal)
+        if self.displacement_driven:
+            omega, end, T_oil, dPd_thermal = self._prescribed_inputs(u)
+            loads = NO_LOADS
+            self._prepare_path(t_end, omega, end, T_oil, dPd_thermal)
+        else:
+            omega, F_x, F_y, F_z, M_x, M_y, T_oil, dPd_thermal = (float(v) for v in u)
+            loads = (F_x, F_y, F_z, M_x, M_y)
+            inputs.check_inputs(self._limits, self.time, t_end, omega, loads, T_oil, dPd_thermal)
         try:
             self._advance(t_end, omega, loads, T_oil, dPd_thermal)
         except DemUnstableError:
             self._restore_start()
             raise
+
+    def _prescribed_inputs(self, u):
+        """A prescribed ring's update() inputs u (omega, x ... theta_y, x_rate ... theta_y_rate, T_oil, dPd_thermal;
+        SI) as omega, the path's end (checked), T_oil and dPd_thermal."""
+        values = tuple(float(v) for v in u)
+        end = values[1 : 1 + len(inputs.PATH_NAMES)]
+        self._path_limits.check(end)
+        return values[0], end, values[-2], values[-1]
 
     def _gather(self):
         if self.scene.stiffness:
@@ -474,14 +588,24 @@ REFERENCE_STEP = 0.5e-3  # s, communication step of the DEM reference experiment
 
 def reference_inputs(scene=None):
     """The DEM reference experiment, one dict per communication point (time = end of the step, s): the 6208
-    at 3 kN radial, 40 C, speed ramp 0 -> 500 rad/s over 5 ms, steady to 6 ms, then a load step to 4 kN
-    held to 8 ms (a step of 0.5 ms). Each row's inputs hold over the step that ends at its time."""
+    at 40 C, speed ramp 0 -> 500 rad/s over 5 ms, steady to 6 ms, held to 8 ms (a step of 0.5 ms); load-driven at
+    3 kN radial, then a load step to 4 kN; with drive = 'displacement' the inner ring moved along x to 15 um in the
+    first step and held there, then moved to 20 um in the step after 6 ms (each end at rest). Each row's inputs hold
+    over the step that ends at its time."""
+    displacement = scene is not None and scene.drive == "displacement"
     rows = []
     for n in range(1, 17):
         t = n * REFERENCE_STEP
-        omega = 500.0 * min(t / 5e-3, 1.0)
-        rows.append({"time": t, "omega": omega, "F_x": 3000.0 if t <= 6e-3 else 4000.0, "T_oil": 313.15})
+        row = {"time": t, "omega": 500.0 * min(t / 5e-3, 1.0)}
+        if displacement:
+            row["x"] = 15e-6 if t <= 6e-3 else 20e-6
+        else:
+            row["F_x"] = 3000.0 if t <= 6e-3 else 4000.0
+        rows.append({**row, "T_oil": 313.15})
     return rows
+
+
+DRIVE_WORDS = {"load": "loads in, displacements out", "displacement": "the inner ring's path in, reaction loads out"}
 
 
 FIDELITY = Fidelity(
@@ -491,5 +615,5 @@ FIDELITY = Fidelity(
     choices=("bearing", "lubricant"),
     reference_step=REFERENCE_STEP,
     reference_inputs=reference_inputs,
-    summary=lambda scene: "DEM (ball dynamics) bearing, loads in, displacements out",
+    summary=lambda scene: f"DEM (ball dynamics) bearing, {DRIVE_WORDS[scene.drive]}",
 )
