@@ -47,11 +47,15 @@ SLOW = {  # test file -> test function names (every parametrisation of them)
     },
 }
 # the numerical EHL solver's long studies (about 4 min of the 55 Annexe D cases, 22 of which fall outside their
-# tolerances, docs/ehl_solver.md, and a heavy contact on levels 3-5, 1-3 min): `make test-ehl-full`, outside
-# `make test`
+# tolerances, docs/ehl_solver.md, a heavy contact on levels 3-5, 1-3 min, and the operating box's sweep, 64 solves on
+# levels 3-4): `make test-ehl-full`, outside `make test`
 EHL_FULL = {
     "tests/validation/test_ehl_annexe_d.py": {"test_every_case_matches_annexe_d"},
     "tests/validation/test_ehl_heavy_contacts.py": {"test_a_heavy_contact_is_solved_on_the_level_its_film_needs"},
+    "tests/validation/test_ehl_operating_box.py": {
+        "test_every_contact_of_the_operating_box_converges_on_its_level",
+        "test_the_6208_at_3_kN_converges_at_every_speed_near_1700_rad_s",
+    },
 }
 BARE_HOST = {  # test file -> test function names that build a pip environment of their own
     "tests/fmu/test_bare_host.py": {"test_thermal_fmu_runs_in_a_host_with_only_fmpy_numpy_numba"},
