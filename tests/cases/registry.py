@@ -1,7 +1,17 @@
 """Every reference case, in the order of the report's table: what every fidelity shares, then the fidelities
-from the cheapest, then the numerical EHL solver (the films' reference)."""
+from the cheapest, then the numerical EHL solver (the films' reference), then the spindle shaft."""
 
-from . import cwru, dem_6208, ehl_annexe_d, guessasma_6208, hertz_thesis, lubricant_and_rating, thrust_218
+from . import (
+    cwru,
+    dem_6208,
+    ehl_annexe_d,
+    guessasma_6208,
+    hertz_thesis,
+    lubricant_and_rating,
+    shaft_closed_form,
+    shaft_ross,
+    thrust_218,
+)
 
 ORDERED = (
     hertz_thesis.CASE,
@@ -13,5 +23,7 @@ ORDERED = (
     thrust_218.CASE,
     *dem_6208.CASES,
     ehl_annexe_d.CASE,
+    shaft_closed_form.CASE,
+    *shaft_ross.CASES,
 )
 CASES = {case.name: case for case in ORDERED}

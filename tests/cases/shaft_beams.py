@@ -76,3 +76,39 @@ def seat_matrix(k_radial, k_axial=0.0, k_moment=0.0, k_cross=0.0):
     K = np.diag([k_radial, k_radial, k_axial, k_moment, k_moment])
     K[0, 1], K[1, 0] = k_cross, -k_cross
     return K
+
+
+def _spring_supported_determinant(lam, kappa):
+    """The frequency determinant of a uniform Euler-Bernoulli beam on two translational springs at its ends (no
+    moment stiffness), lam = beta L, kappa = k L^3 / (E I): w = A cos + B sin + C cosh + D sinh of beta x, with
+    w'' = 0 at both ends, E I w''' = -k w at x = 0 and E I w''' = +k w at x = L (the boundary terms of the energy
+    1/2 int E I w''^2 + 1/2 k w(0)^2 + 1/2 k w(L)^2), the spring rows divided by E I beta^3."""
+    c, s, ch, sh = math.cos(lam), math.sin(lam), math.cosh(lam), math.sinh(lam)
+    r = kappa / lam**3
+    M = np.array(
+        [
+            [-1.0, 0.0, 1.0, 0.0],
+            [r, -1.0, r, 1.0],
+            [-c, -s, ch, sh],
+            [s - r * c, -c - r * s, sh - r * ch, ch - r * sh],
+        ]
+    )
+    return np.linalg.det(M)
+
+
+def euler_bernoulli_spring_supported(count, L, d_o, k, lam_max=20.0):
+    """The first `count` bending frequencies (Hz) of a uniform Euler-Bernoulli beam on two translational springs
+    k (N/m) at its ends: the roots lam = beta L of its frequency determinant (_spring_supported_determinant; bracketed
+    on a fine grid, then brentq to 1e-14), f = (lam / L)^2 sqrt(E I / (rho A)) / 2 pi. The first two are the rigid
+    beam's bounce and rocking on the springs, bent by the beam's flexibility."""
+    from scipy.optimize import brentq
+
+    A, I, _ = section_properties(d_o)
+    kappa = k * L**3 / (E * I)
+    grid = np.linspace(1e-3, lam_max, 20001)
+    values = [_spring_supported_determinant(x, kappa) for x in grid]
+    roots = []
+    for a, b, fa, fb in zip(grid[:-1], grid[1:], values[:-1], values[1:]):
+        if fa * fb < 0.0 and len(roots) < count:
+            roots.append(brentq(_spring_supported_determinant, a, b, args=(kappa,), xtol=1e-14, rtol=1e-15))
+    return [(lam / L) ** 2 * math.sqrt(E * I / (RHO * A)) / (2.0 * math.pi) for lam in roots]
