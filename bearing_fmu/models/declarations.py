@@ -379,6 +379,16 @@ THERMAL_SHIFT = dict(
 )
 
 
+# where z is imposed (the quasi-static fidelity with thermal_inputs, and the DEM with a prescribed ring)
+DZ_THERMAL = Variable(
+    "dz_thermal",
+    "m",
+    "imposed axial shift of the inner ring from thermal growth, added to z (fixed preload)",
+    option="thermal_inputs",
+    drives=_drives(2, 0),
+    **THERMAL_SHIFT,
+)
+
 QUASI_STATIC_INPUTS = (
     OMEGA,
     *_dof_inputs(),
@@ -390,14 +400,7 @@ QUASI_STATIC_INPUTS = (
         option="thermal_inputs",
         **THERMAL_SHIFT,
     ),
-    Variable(
-        "dz_thermal",
-        "m",
-        "imposed axial shift of the inner ring from thermal growth, added to z (fixed preload)",
-        option="thermal_inputs",
-        drives=_drives(2, 0),
-        **THERMAL_SHIFT,
-    ),
+    DZ_THERMAL,
 )
 
 
@@ -690,6 +693,15 @@ DEM_INPUTS = (
     *DEM_PATH_INPUTS,
     T_OIL,
     replace(_BY_NAME["dPd_thermal"], option=""),  # the DEM always has it
+    # a prescribed ring always has it (a shaft's seat motion starts from 0: this offset gives its axial preload
+    # position); a load-driven ring has no imposed z
+    replace(
+        DZ_THERMAL,
+        option="",
+        drives=("displacement",),
+        description="imposed axial shift of the inner ring from thermal growth or preload, added to z at the end "
+        "of the step (not to z_rate: a constant offset)",
+    ),
 )
 DEM_LOAD_INPUTS = tuple(v for v in DEM_INPUTS if "load" in (v.drives or ("load",)))
 

@@ -6,6 +6,7 @@ docs/dem.md, Prescribed ring): a shaft model drives it.
   F_x ... M_y and every output of BearingDEM.fmu but the ring's displacement; no support parameters;
 - held through FMI at the displacement the load-driven DEM reaches under a load, the ring's reaction gives the load
   back (the model's test, tests/unit/test_dem_prescribed_ring.py), and equals the Python model's bit for bit;
+- dz_thermal is added to z (the Python model with z shifted, bit for bit);
 - a refused input names the variable, its value and its range (fmi2Discard), and the instance steps on once it is
   corrected.
 """
@@ -37,10 +38,11 @@ def test_validate_and_variables(dem_disp_fmu):
     by_causality = {}
     for v in md.modelVariables:
         by_causality.setdefault(v.causality, {})[v.name] = v
-    assert set(by_causality["input"]) == {"omega", *DOFS, *RATES, "T_oil", "dPd_thermal"}
+    assert set(by_causality["input"]) == {"omega", *DOFS, *RATES, "T_oil", "dPd_thermal", "dz_thermal"}
     units = {name: v.declaredType.unit if v.declaredType else v.unit for name, v in by_causality["input"].items()}
     assert [units[name] for name in DOFS] == ["m", "m", "m", "rad", "rad"]
     assert [units[name] for name in RATES] == ["m/s", "m/s", "m/s", "rad/s", "rad/s"]
+    assert units["dz_thermal"] == "m"
     outputs = set(by_causality["output"])
     load_driven = DemModel("6208", scene=Scene.from_toml(SCENES_DIR / "dem.toml"))
     assert outputs == set(LOADS) | {v.name for v in load_driven.outputs if v.name not in DOFS}
@@ -80,7 +82,9 @@ def test_ring_held_at_the_equilibrium_gives_back_the_loads(dem_disp_fmu):
     assert np.all(np.abs(error[3:]) < 0.05)
     model = DemModel("6208", scene=scene())
     u = dict.fromkeys(v.name for v in model.inputs)
-    u |= dict(zip(DOFS, position)) | dict.fromkeys(RATES, 0.0) | {"T_oil": 313.15, "dPd_thermal": 0.0}
+    u |= (
+        dict(zip(DOFS, position)) | dict.fromkeys(RATES, 0.0) | {"T_oil": 313.15, "dPd_thermal": 0.0, "dz_thermal": 0.0}
+    )
     slots = [model.output_names.index(name) for name in LOADS]
     for (_, h, omega), got in zip(steps, reactions):
         u["omega"] = omega
@@ -100,16 +104,38 @@ def test_bad_inputs_are_refused_naming_the_variable_and_the_instance_recovers(de
     good = fmu.getReal([vr[name] for name in reals])
     cases = (("y", 1e-3, "y = 0.001 m"), ("z_rate", math.nan, "z_rate = nan m/s"))
     cases += (("theta_x", 0.02, "theta_x = 0.02 rad"), ("omega", 1e5, "omega = 100000.0 rad/s"))
+    cases += (("dz_thermal", 1e-3, "dz_thermal = 0.001 m"),)
     for k, (name, bad, text) in enumerate(cases):
-        fmu.setReal([vr["omega"], vr["y"], vr["z_rate"], vr["theta_x"]], [100.0, 5e-6, 0.0, 0.0])
+        fmu.setReal([vr["omega"], vr["y"], vr["z_rate"], vr["theta_x"], vr["dz_thermal"]], [100.0, 5e-6, 0.0, 0.0, 0.0])
         fmu.setReal([vr[name]], [bad])
         # fmi2Discard; the runtime turns a second refusal of the same (t, h) into fmi2Error: each case its own t
         assert probe.step_status(fmu, H + k * 1e-6, H) == 2, name
         assert fmu.getReal([vr[name] for name in reals]) == good
         messages = [m["message"] for m in probe.messages if m["status"] >= 2]
         assert any(text in m and "allowed range" in m for m in messages), (text, messages)
-    fmu.setReal([vr["omega"], vr["y"], vr["z_rate"], vr["theta_x"]], [100.0, 5e-6, 0.0, 0.0])
+    fmu.setReal([vr["omega"], vr["y"], vr["z_rate"], vr["theta_x"], vr["dz_thermal"]], [100.0, 5e-6, 0.0, 0.0, 0.0])
     assert probe.step_status(fmu, H, H) == 0
     assert fmu.getReal([vr["F_y"]])[0] > 0.0  # the ring pressed along +y: the balls push back, the holding load +y
+    fmu.terminate()
+    fmu.freeInstance()
+
+
+def test_dz_thermal_shifts_z(dem_disp_fmu):
+    """dz_thermal (m) is added to the prescribed z at each step's end: the FMU with z = a, dz_thermal = b gives the
+    reactions of the Python model with z = a + b, bit for bit, and an axial reaction. Before, the FMU had no such
+    input (a shaft model's seat motion, which starts from 0, could not be given the ring's axial preload position)."""
+    a, b = 2e-6, -6e-6  # m
+    fmu, vr, _ = probe.open_fmu(str(dem_disp_fmu))
+    fmu.setReal([vr["y"], vr["z"], vr["dz_thermal"]], [5e-6, a, b])
+    model = DemModel("6208", scene=scene())
+    u = dict.fromkeys((v.name for v in model.inputs), 0.0) | {"y": 5e-6, "z": a + b, "T_oil": 313.15}
+    slots = [model.output_names.index(name) for name in LOADS]
+    for k in range(3):
+        fmu.setReal([vr["omega"]], [100.0])
+        assert probe.step_status(fmu, k * H, H) == 0
+        got = fmu.getReal([vr[name] for name in LOADS])
+        u["omega"] = 100.0
+        assert np.array_equal(model.update(list(u.values()), H)[slots], got)
+    assert abs(got[2]) > 1.0  # F_z: the shift presses the ring axially into the balls
     fmu.terminate()
     fmu.freeInstance()

@@ -167,6 +167,28 @@ def test_prescribed_ring_inputs_are_checked():
         DemModel("6208", drive="shaft")
 
 
+def test_dz_thermal_is_added_to_z():
+    """dz_thermal (m) shifts the prescribed z at the call's end: advance(z=a, dz_thermal=b) gives what
+    advance(z=a + b) gives, bit for bit (its rate is not added: z_rate is the same in both). It is refused outside
+    |dz_thermal| <= 0.02 D naming it, and refused by a load-driven model. Before, advance() had no dz_thermal."""
+    shifted, plain = DemModel("6208", drive="displacement"), DemModel("6208", drive="displacement")
+    a, b = 2e-6, -6.75e-6  # m
+    path = {"y": 12e-6, "z_rate": 1e-4}
+    for k in range(3):
+        t = (k + 1) * 2e-4
+        by_shift = shifted.advance(t, omega=200.0, z=a, dz_thermal=b, **path)
+        by_z = plain.advance(t, omega=200.0, z=a + b, **path)
+    assert abs(by_z["F_z"]) > 1.0  # the shift loads the ring axially
+    assert by_shift == by_z
+    assert np.array_equal(shifted.ring, plain.ring)
+    refused = r"dz_thermal = 0\.001 m is outside the allowed range \[-0\.000252, 0\.000252\] m \(\|value\| <= 0\.02 D\)"
+    with pytest.raises(InputError, match=refused):
+        shifted.advance(shifted.time + 2e-4, omega=200.0, z=a, dz_thermal=1e-3)
+    with pytest.raises(InputError, match=r"dz_thermal = 1e-06 is an input of drive = 'displacement' only"):
+        DemModel("6208").advance(1e-4, dz_thermal=1e-6)
+    assert np.array_equal(shifted.ring, plain.ring)  # the refused call moved nothing
+
+
 DISPLACEMENT_SCENE = Scene(name="dem_displacement", fidelity="dem", drive="displacement", stiffness=True)
 
 
@@ -179,7 +201,8 @@ def test_scene_drive_sets_the_variables():
     load_driven = DemModel("6208", scene=replace(DISPLACEMENT_SCENE, drive="load"))
     assert model.drive == "displacement" and model.displacement_driven
     names = [v.name for v in model.inputs]
-    assert names == ["omega", *DOFS, *(f"{d}_rate" for d in DOFS), "T_oil", "dPd_thermal"]
+    assert names == ["omega", *DOFS, *(f"{d}_rate" for d in DOFS), "T_oil", "dPd_thermal", "dz_thermal"]
+    assert "dz_thermal" not in [v.name for v in load_driven.inputs]
     outputs = [v.name for v in model.outputs]
     assert outputs[:5] == list(LOADS)
     assert outputs[5:] == [v.name for v in load_driven.outputs if v.name not in DOFS]
@@ -196,7 +219,7 @@ def test_update_follows_the_path_as_advance_does():
     by_advance = DemModel("6208", scene=DISPLACEMENT_SCENE)
     by_update = DemModel("6208", scene=DISPLACEMENT_SCENE)
     u = [path.get(v.name, 0.0) for v in by_update.inputs]
-    u[0], u[-2] = 200.0, 323.15  # omega, T_oil
+    u[0], u[-3] = 200.0, 323.15  # omega, T_oil
     for _ in range(3):
         expected = by_advance.advance(by_advance.time + 2e-4, omega=200.0, T_oil=323.15, **path)
         values = by_update.update(u, 2e-4)
@@ -214,7 +237,7 @@ def test_update_refuses_a_path_input_out_of_range():
     step, and changes nothing."""
     model = DemModel("6208", scene=DISPLACEMENT_SCENE)
     u = [0.0] * len(model.inputs)
-    u[-2] = 313.15
+    u[-3] = 313.15  # T_oil
     u[2] = 1e-3  # y
     for interval in (0.0, 1e-4):
         with pytest.raises(InputError, match=r"y = 0\.001 m is outside the allowed range \[-0\.000252, 0\.000252\]"):

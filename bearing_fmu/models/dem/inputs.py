@@ -9,6 +9,7 @@ from ...params import clearance_limits
 from ..declarations import (
     DEM_DT_MAX,
     DEM_DT_MIN,
+    DEM_INPUTS,
     DEM_LOAD_INPUTS,
     DEM_PATH_INPUTS,
     DEM_REFRESH_MAX,
@@ -103,6 +104,30 @@ def path_limits(bearing):
     rate = bound * 2.0 * math.pi * PATH_RATE_FREQUENCY
     narrowed |= {name: (-rate, rate, f"{why}, vibrating at 10 kHz") for name in PATH_NAMES[5:8]}
     return InputLimits(DEM_PATH_INPUTS, narrowed)
+
+
+DZ_THERMAL = next(v for v in DEM_INPUTS if v.name == "dz_thermal")
+
+
+def shift_limits(bearing):
+    """The InputLimits of dz_thermal narrowed to the bearing: |dz_thermal| <= 0.02 D, the quasi-static fidelity's."""
+    limit = 0.02 * bearing.D
+    return InputLimits((DZ_THERMAL,), {"dz_thermal": (-limit, limit, "|value| <= 0.02 D")})
+
+
+def shifted(end, dz_thermal, limits, displacement_driven):
+    """The path's end values `end` (x ... theta_y, then their rates; SI) with dz_thermal (m, checked against limits:
+    shift_limits) added to z; z_rate unchanged (the shift is constant). Refused non-zero when the model is
+    load-driven."""
+    if dz_thermal != 0.0 and not displacement_driven:
+        raise InputError(
+            f"dz_thermal = {dz_thermal} is an input of drive = 'displacement' only (this model is load-driven: "
+            "give F_z)"
+        )
+    limits.check((dz_thermal,))
+    if dz_thermal == 0.0:
+        return end
+    return (*end[:2], end[2] + dz_thermal, *end[3:])
 
 
 def path_values(limits, motion, displacement_driven):

@@ -114,6 +114,7 @@ class DemModel:
         self.displacement_driven = self.drive == "displacement"
         self.par[s.P_DRIVE] = float(self.displacement_driven)
         self._path_limits = inputs.path_limits(b)
+        self._shift_limits = inputs.shift_limits(b)
         # the load that held the prescribed ring over the last call (F_x, F_y, F_z in N, M_x, M_y in N.m), averaged
         self.reaction = np.zeros(5)
         self._path_estimate = 0.0  # N, _path_load_bound of the current call
@@ -267,6 +268,7 @@ class DemModel:
         dPd_thermal=0.0,
         M_x=0.0,
         M_y=0.0,
+        dz_thermal=0.0,
         **path,
     ):
         """Integrate to t_end (s): inner-ring speed from its current value linearly to omega (rad/s; None =
@@ -279,17 +281,21 @@ class DemModel:
         With drive = 'displacement' the loads stay 0 and `path` gives the inner ring's x, y, z (m), theta_x,
         theta_y (rad) at t_end and their rates x_rate ... theta_y_rate (m/s, rad/s; each absent = 0): the ring
         follows the cubic Hermite curve from its state to them, and the outputs add the load that holds it there,
-        F_x, F_y, F_z (N), M_x, M_y (N.m about its centre), averaged over the call.
+        F_x, F_y, F_z (N), M_x, M_y (N.m about its centre), averaged over the call. dz_thermal (m) is added to
+        z at t_end (not to z_rate: a constant offset, such as a preload position or a thermal growth).
 
         Raises InputError for inputs out of range, DemUnstableError when the monitor stops the run (the
         state is then left at the offending step: restore a saved state to retry)."""
         omega = self.omega if omega is None else float(omega)
         loads = (float(F_x), float(F_y), float(F_z), float(M_x), float(M_y))
         t_end = float(t_end)
-        if path and not self.displacement_driven:  # (refused: the path's inputs are a prescribed ring's)
+        dz_thermal = float(dz_thermal)
+        if (path or dz_thermal) and not self.displacement_driven:  # (refused: inputs of a prescribed ring)
             inputs.path_values(self._path_limits, path, False)
+            inputs.shifted((), dz_thermal, self._shift_limits, False)
         if self.displacement_driven:  # (only then: the path's checks are 3 % of a load-driven call)
             end = inputs.path_values(self._path_limits, path, True)
+            end = inputs.shifted(end, dz_thermal, self._shift_limits, True)
             inputs.check_no_loads(loads)
             self._prepare_path(t_end, omega, end, float(T_oil), float(dPd_thermal))
         self._advance(t_end, omega, loads, float(T_oil), float(dPd_thermal))
@@ -529,12 +535,13 @@ class DemModel:
             raise
 
     def _prescribed_inputs(self, u):
-        """A prescribed ring's update() inputs u (omega, x ... theta_y, x_rate ... theta_y_rate, T_oil, dPd_thermal;
-        SI) as omega, the path's end (checked), T_oil and dPd_thermal."""
+        """A prescribed ring's update() inputs u (omega, x ... theta_y, x_rate ... theta_y_rate, T_oil, dPd_thermal,
+        dz_thermal; SI) as omega, the path's end (checked, dz_thermal added to z), T_oil and dPd_thermal."""
         values = tuple(float(v) for v in u)
         end = values[1 : 1 + len(inputs.PATH_NAMES)]
         self._path_limits.check(end)
-        return values[0], end, values[-2], values[-1]
+        end = inputs.shifted(end, values[-1], self._shift_limits, True)
+        return values[0], end, values[-3], values[-2]
 
     def _gather(self):
         if self.scene.stiffness:
