@@ -435,7 +435,7 @@ def scene_variables(scene_file, fmu_name=None, choices=None):
         f"`bearing_fmu/models/declarations.py`; SI units."
     ]
     parameters = select(configured(slave.parameters, choices or {}), scene)
-    return fmu_name, slave.description, about, parameters, model.inputs, model.outputs, scene
+    return fmu_name, slave.described(scene), about, parameters, model.inputs, model.outputs, scene
 
 
 def reference_inputs(scene):

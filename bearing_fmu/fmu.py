@@ -39,6 +39,11 @@ class _BearingSlave(DeclaredSlave):
     scene = Scene()
     parameters = fidelity.parameters  # declarations of the FMU's parameters (models.declarations)
 
+    @classmethod
+    def described(cls, scene):
+        """The FMU's description text with `scene` (its build's)."""
+        return cls.description
+
     def __init_subclass__(cls, **kwargs):
         """A bearing FMU class names its fidelity; its default scene and its parameters follow from it (a class
         that sets them itself, such as a built FMU's with its scene file, keeps its own)."""
@@ -212,12 +217,30 @@ class BearingDEM(_BearingSlave):
     monitor stops returns fmi2Discard with the monitor's message, the instance back at the start of
     the step and `monitor_status` naming the cause; the master may retry with a smaller step."""
 
-    description = (
-        "Ball bearing, DEM fidelity: 6-DOF balls, cage balls and a translating inner ring integrated "
-        "in time, per-contact EHL film, regime, friction and damping, Houpert resistances, capacitance; "
-        "torque and ring heat from the energy dissipated over the step. SI units."
-    )
+    # per drive (scene option): the inner ring integrated under the loads, or moved along the master's path
+    DESCRIPTIONS = {
+        drive: f"Ball bearing, DEM fidelity: {bodies}, per-contact EHL film, regime, friction and damping, Houpert "
+        "resistances, capacitance; torque and ring heat from the energy dissipated over the step. SI units."
+        for drive, bodies in (
+            ("load", "6-DOF balls, cage balls and a translating inner ring integrated in time"),
+            (
+                "displacement",
+                "6-DOF balls and cage balls integrated in time, the inner ring moved along the master's path "
+                "(x ... theta_y and their rates in, reaction loads out)",
+            ),
+        )
+    }
+    description = DESCRIPTIONS["load"]
     fidelity = FIDELITIES["dem"]
+
+    def __init_subclass__(cls, **kwargs):
+        """A built FMU's class (with its scene) takes the description of its scene's drive."""
+        super().__init_subclass__(**kwargs)
+        cls.description = cls.described(cls.scene)
+
+    @classmethod
+    def described(cls, scene):
+        return cls.DESCRIPTIONS[scene.drive]
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)

@@ -829,6 +829,26 @@ DEM_OUTPUTS = (
     ),
 )
 
+
+def _average_state_outputs():
+    """The parameter average_state_outputs of each drive: a prescribed ring's x ... theta_y are inputs, and its
+    reaction loads are always means over the step."""
+    refreshes = (
+        "Q_max_*, p_max, Lambda_*, h_min_*, h_c_* means over its tribology refreshes (for masters that sample slower "
+        "than the ball pass); false: their values at the end of the step"
+    )
+    words = {
+        "load": f"true: x, y, z, theta_x, theta_y are means over the communication step's DEM steps and {refreshes}",
+        "displacement": "true: Q_max_*, p_max, Lambda_*, h_min_*, h_c_* are means over the communication step's "
+        "tribology refreshes (for masters that sample slower than the ball pass); false: their values at the end of "
+        "the step (the reaction loads F_x ... M_y are means over the step either way)",
+    }
+    return tuple(
+        Variable("average_state_outputs", "", text, "boolean", start=False, drives=(drive,))
+        for drive, text in words.items()
+    )
+
+
 DEM_PARAMETERS = (
     replace(_BY_NAME_PARAMETERS["bearing"], start="6208"),
     replace(_BY_NAME_PARAMETERS["lubricant"], start="guessasma_oil"),
@@ -864,16 +884,7 @@ DEM_PARAMETERS = (
         "boolean",
         start=True,
     ),
-    Variable(
-        "average_state_outputs",
-        "",
-        "true: x, y, z, theta_x, theta_y are means over the communication step's DEM steps and Q_max_*, p_max, "
-        "Lambda_*, h_min_*, "
-        "h_c_* means over its tribology refreshes (for masters that sample slower than the ball pass); false: "
-        "their values at the end of the step",
-        "boolean",
-        start=False,
-    ),
+    *_average_state_outputs(),
     # the numeric settings (models.dem_settings): traction_limit and the ring's support
     *(setting.parameter() for setting in DEM_SETTINGS),
     *bearing_parameters("6208", "guessasma_oil"),

@@ -18,6 +18,7 @@ from fmpy import read_model_description
 from fmpy.validation import validate_fmu
 
 from bearing_fmu.build import SCENES_DIR
+from bearing_fmu.fmu import BearingDEM
 from bearing_fmu.models.dem import DemModel
 from bearing_fmu.models.dem_settings import DEM_SETTINGS
 from bearing_fmu.scene import Scene
@@ -43,6 +44,11 @@ def test_validate_and_variables(dem_disp_fmu):
     assert [units[name] for name in DOFS] == ["m", "m", "m", "rad", "rad"]
     assert [units[name] for name in RATES] == ["m/s", "m/s", "m/s", "rad/s", "rad/s"]
     assert units["dz_thermal"] == "m"
+    # its own wording: no integrated ring, no x ... theta_y outputs to average
+    assert md.description == BearingDEM.DESCRIPTIONS["displacement"] != BearingDEM.description
+    assert "moved along the master's path" in md.description
+    averaged = by_causality["parameter"]["average_state_outputs"].description
+    assert "theta_y are means" not in averaged and "reaction loads F_x ... M_y" in averaged
     outputs = set(by_causality["output"])
     load_driven = DemModel("6208", scene=Scene.from_toml(SCENES_DIR / "dem.toml"))
     assert outputs == set(LOADS) | {v.name for v in load_driven.outputs if v.name not in DOFS}
