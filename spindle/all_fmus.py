@@ -164,7 +164,7 @@ def transient_reference_rows(shaft=DEFAULT_SHAFT, step=TRANSIENT_STEP, stop=TRAN
     stepper = TransientStepper(shaft)
     parameters = {v.name: v.start for v in transient_parameter_declarations(shaft, stepper.model.shaft.seat_names)}
     damping = [[parameters[f"c_{kind}_{s}"] for kind, *_ in SEAT_DAMPING] for s in (1, 2)]
-    stepper.configure(parameters["substeps"], damping, parameters["implicit_coupling"])
+    stepper.configure(parameters["substeps"], damping, parameters["implicit_coupling"], parameters["newmark_gamma"])
     inputs = transient_reference_inputs(shaft)
     u = list(inputs.values())
     names = [v.name for v in stepper.outputs]

@@ -9,7 +9,7 @@ generated from them (spindle.all_fmus).
 from bearing_fmu_common.variables import Variable
 
 from .model import N_FREQUENCIES, OMEGA_MAX, SEAT_MATRIX_MAX
-from .transient import FORCE_MAX, SUBSTEPS_MAX
+from .transient import FORCE_MAX, GAMMA_RANGE, SUBSTEPS_MAX
 
 DOF_WORDS = "(F_x, F_y, F_z, M_x, M_y)", "(x, y, z, theta_x, theta_y)"
 SEAT_LIMITS = "orders of magnitude above any bearing's stiffness; a diagonal entry is >= 0 (a bearing resists motion)"
@@ -181,13 +181,16 @@ MOTION_WORDS = ("displacement along x", "displacement along y", "axial displacem
 # of the coupling's example in docs/shaft.md (a bearing's radial damping, 1e3-1e4 N.s/m in measurements)
 SEAT_DAMPING = (("radial", "N.s/m", 2000.0, DAMPING_MAX), ("axial", "N.s/m", 2000.0, DAMPING_MAX))
 SEAT_DAMPING += (("tilt", "N.m.s/rad", 0.2, 1.0e4),)
+# Newmark's gamma of the FMU: 0.6 damps unresolved modes to 0.82 of their amplitude per step; the shaft on two DEM
+# bearings (runs/shaft_transient_dem.toml) grows at 0.5 and settles at 0.55 and 0.6 (docs/shaft.md)
+NEWMARK_GAMMA = 0.6
 SEAT_DAMPING_LIMITS = "0: none; the upper end is far above a bearing's or a squeeze film's damping"
 FORCE_LIMITS = "far above a spindle bearing's load limit"
 
 
 def transient_parameter_declarations(shaft, seat_names):
-    """SpindleShaftTransient.fmu's parameters: `shaft`, the Newmark substeps per communication step, whether the
-    bearings' K is used over a step, and per seat the shaft's own damping there."""
+    """SpindleShaftTransient.fmu's parameters: `shaft`, the Newmark substeps per communication step and gamma,
+    whether the bearings' K is used over a step, and per seat the shaft's own damping there."""
     out = [
         parameter_declarations(shaft, seat_names)[0],
         Variable(
@@ -200,6 +203,19 @@ def transient_parameter_declarations(shaft, seat_names):
             min=1,
             max=SUBSTEPS_MAX,
             limits="1e5 steps of a 27-dof model per communication step is seconds of work",
+        ),
+        Variable(
+            "newmark_gamma",
+            "1",
+            "Newmark's gamma of the time integration (beta = (gamma + 1/2)^2 / 4): 0.5 the average acceleration, "
+            "without numerical damping; above it the modes the step does not resolve are damped, their amplitude "
+            "multiplied per step by at most (3/2 - gamma) / (gamma + 1/2), and a resolved mode gains a damping ratio "
+            "of about (gamma - 1/2) omega h / 2. The start value damps the seat modes a bearing's contact vibration "
+            "excites (BearingDEMDisp.fmu; docs/shaft.md)",
+            start=NEWMARK_GAMMA,
+            min=GAMMA_RANGE[0],
+            max=GAMMA_RANGE[1],
+            limits="below 0.5 the scheme is unstable; 1 is the family's most damping member",
         ),
         Variable(
             "implicit_coupling",

@@ -91,9 +91,9 @@ class SpindleShaftTransient(ShaftSlave):
 
     description = (
         "Rotor finite-element model of a spindle shaft (Timoshenko beams, disks, Craig-Bampton reduction) integrated "
-        "in time (Newmark average acceleration) under the reactions of bearings driven by displacement: per seat the "
-        "bearing's F_x, F_y, F_z, M_x, M_y and 5x5 K in, the inner ring's displacement, tilts and their rates out in "
-        "the bearing's frame; the tool tip's displacement under an external force. SI units."
+        "in time (Newmark's scheme, its gamma a parameter) under the reactions of bearings driven by displacement: "
+        "per seat the bearing's F_x, F_y, F_z, M_x, M_y and 5x5 K in, the inner ring's displacement, tilts and their "
+        "rates out in the bearing's frame; the tool tip's displacement under an external force. SI units."
     )
 
     def __init__(self, **kwargs):
@@ -109,7 +109,7 @@ class SpindleShaftTransient(ShaftSlave):
         _refuse_other_seats(self.shaft, self.default_shaft, stepper, self._stepper)
         seats = range(1, len(stepper.model.shaft.seat_names) + 1)
         damping = [[getattr(self, f"c_{kind}_{s}") for kind, *_ in SEAT_DAMPING] for s in seats]
-        stepper.configure(int(self.substeps), damping, self.implicit_coupling)
+        stepper.configure(int(self.substeps), damping, self.implicit_coupling, self.newmark_gamma)
         self._stepper = stepper
 
     def _start(self):

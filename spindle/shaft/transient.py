@@ -8,9 +8,16 @@ in time under the bearings' forces at its seats, so that bearings computing thei
 
 K and M the shaft's alone (the bearings supply their forces through the inputs; a linear seat stiffness and damping
 may be added for tests and for a damping the bearings do not model), f linear over each communication step. The
-scheme is Newmark's average acceleration (beta = 1/4, gamma = 1/2, the trapezoidal rule; Newmark 1959, ASCE J. Eng.
-Mech. Div. 85, 67-94; Geradin & Rixen, Mechanical Vibrations, ch. 7): unconditionally stable for a linear system,
-no numerical damping, energy conserved to rounding without damping and with the gyroscopic term alone. numpy only.
+scheme is Newmark's (Newmark 1959, ASCE J. Eng. Mech. Div. 85, 67-94; Geradin & Rixen, Mechanical Vibrations,
+ch. 7) with beta = (gamma + 1/2)^2 / 4, unconditionally stable for a linear system for every gamma >= 1/2:
+gamma = 1/2 is the average acceleration (the trapezoidal rule: no numerical damping, energy conserved to rounding
+without damping and with the gyroscopic term alone); gamma > 1/2 damps the modes the step does not resolve, their
+amplitude multiplied per step by at most (3/2 - gamma) / (gamma + 1/2) as omega h grows (Hughes, The Finite Element
+Method, 1987, section 9.1), at the price of a numerical damping ratio of about (gamma - 1/2) omega h / 2 on the
+resolved ones. That is what a bearing whose reaction carries its contacts' vibration (a DEM's mean over the step)
+needs: the average acceleration leaves the unresolved seat modes undamped, the velocity they take goes back to the
+bearing's contact damping, and the loop grows (docs/shaft.md, "Coupled with displacement-driven bearings"). numpy
+only.
 
 Signs and frames. A seat's forces arrive as the bearing outputs them, in the bearing's own frame (docs/
 conventions.md): F_x, F_y, F_z, M_x, M_y are the load on the inner ring needed to hold it at its displacement,
@@ -32,6 +39,7 @@ from .model import ShaftInputError
 FORCE_MAX = 1.0e7  # N (moments N.m): far above a spindle bearing's load limit; a finite bound on an input
 STEP_MAX = 1.0  # s: a communication step of the shaft's dynamics (its first periods are milliseconds)
 SUBSTEPS_MAX = 100_000
+GAMMA_RANGE = (0.5, 1.0)  # Newmark's gamma: 1/2 is the trapezoidal rule, 1 the most damping scheme of the family
 
 
 class ShaftTransient:
@@ -40,16 +48,22 @@ class ShaftTransient:
     K_seats, C_seats (n_seats, 5, 5, in the bearings' frames, as ShaftModel.evaluate takes them; None: none): a linear
     seat stiffness and damping kept inside the model, for tests and for a damping the bearings do not supply; a
     bearing coupled through the seat forces must not also be given here. substeps: Newmark steps per
-    communication step (1 to 1e5). The state starts at rest, undeformed (set_state to change it)."""
+    communication step (1 to 1e5). gamma: Newmark's gamma (0.5 to 1; beta = (gamma + 1/2)^2 / 4): 0.5 the
+    average acceleration, above it a numerical damping of the modes the step does not resolve (module docstring).
+    The state starts at rest, undeformed (set_state to change it)."""
 
-    def __init__(self, model, omega, K_seats=None, C_seats=None, substeps=1):
+    def __init__(self, model, omega, K_seats=None, C_seats=None, substeps=1, gamma=0.5):
         self.model = model
         self.omega = model._check_omega(omega)
         if not (isinstance(substeps, int | np.integer) and 1 <= substeps <= SUBSTEPS_MAX):
             raise ShaftInputError(
                 f"substeps = {substeps} is outside the allowed range [1, {SUBSTEPS_MAX}] (an integer)"
             )
+        if not GAMMA_RANGE[0] <= gamma <= GAMMA_RANGE[1]:
+            raise ShaftInputError(f"gamma = {gamma} is outside the allowed range [{GAMMA_RANGE[0]}, {GAMMA_RANGE[1]}]")
         self.substeps = int(substeps)
+        self.gamma = float(gamma)
+        self.beta = 0.25 * (self.gamma + 0.5) ** 2
         self.K, self._C = model.matrices(K_seats, C_seats)
         self.M = model._M
         self.D = self._C + self.omega * model._G
@@ -141,10 +155,10 @@ class ShaftTransient:
 
     # ------------------------------------------------------------------------------------------ step
     def _effective_inverse(self, h, K):
-        """Inverse of M + h/2 D + h^2/4 K, kept while the substep and the stiffness stay the same."""
+        """Inverse of M + gamma h D + beta h^2 K, kept while the substep and the stiffness stay the same."""
         key = (h, K.tobytes())
         if self._solver[0] != key:
-            self._solver = (key, np.linalg.inv(self.M + 0.5 * h * self.D + 0.25 * h * h * K))
+            self._solver = (key, np.linalg.inv(self.M + self.gamma * h * self.D + self.beta * h * h * K))
         return self._solver[1]
 
     def _coupled_stiffness(self, seat_stiffness):
@@ -177,19 +191,22 @@ class ShaftTransient:
         return self.outputs()
 
     def _advance(self, dt, f0, f1, K):
-        """Newmark's average acceleration over the substeps for M q'' + D q' + K q = f: a_n from the equation of
-        motion at the start (so that a force that jumps between communication steps enters consistently), then
-        (M + dt/2 D + dt^2/4 K) a_{n+1} = f_{n+1} - D (v + dt/2 a) - K (q + dt v + dt^2/4 a),
-        q += dt v + dt^2/4 (a + a_{n+1}), v += dt/2 (a + a_{n+1})."""
+        """Newmark's scheme over the substeps for M q'' + D q' + K q = f: a_n from the equation of motion at the
+        start (so that a force that jumps between communication steps enters consistently), then, with the
+        predictors q* = q + dt v + (1/2 - beta) dt^2 a and v* = v + (1 - gamma) dt a,
+        (M + gamma dt D + beta dt^2 K) a_{n+1} = f_{n+1} - D v* - K q*,
+        q = q* + beta dt^2 a_{n+1}, v = v* + gamma dt a_{n+1}."""
         S_inv = self._effective_inverse(dt, K)
+        g, b = self.gamma, self.beta
         q, v = self.q, self.v
         a = self.model._Minv @ (f0 - self.D @ v - K @ q)
         for i in range(1, self.substeps + 1):
             f = f0 + (f1 - f0) * (i / self.substeps)
-            a_new = S_inv @ (f - self.D @ (v + 0.5 * dt * a) - K @ (q + dt * v + 0.25 * dt * dt * a))
-            q = q + dt * v + 0.25 * dt * dt * (a + a_new)
-            v = v + 0.5 * dt * (a + a_new)
-            a = a_new
+            q_star = q + dt * v + (0.5 - b) * dt * dt * a
+            v_star = v + (1.0 - g) * dt * a
+            a = S_inv @ (f - self.D @ v_star - K @ q_star)
+            q = q_star + b * dt * dt * a
+            v = v_star + g * dt * a
         self.q, self.v = q, v
 
     # ------------------------------------------------------------------------------------------ coupling

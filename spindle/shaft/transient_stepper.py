@@ -14,7 +14,7 @@ import numpy as np
 from bearing_fmu_common.variables import InputLimits
 
 from . import beam
-from .declarations import transient_input_declarations, transient_output_declarations
+from .declarations import NEWMARK_GAMMA, transient_input_declarations, transient_output_declarations
 from .model import ShaftModel
 from .params import DEFAULT_SHAFT
 from .transient import ShaftTransient
@@ -34,16 +34,16 @@ class TransientStepper:
         self._seats = len(self.model.shaft.seat_nodes)
         self.implicit = True
         self.transient = None
-        self.configure(1, np.zeros((self._seats, 3)), True)
+        self.configure(1, np.zeros((self._seats, 3)), True, NEWMARK_GAMMA)
 
-    def configure(self, substeps, damping, implicit):
+    def configure(self, substeps, damping, implicit, gamma):
         """Substeps per communication step, the shaft's own damping per seat ((n_seats, 3): radial N.s/m, axial
-        N.s/m, tilt N.m.s/rad) and whether the bearings' K is used; the state at rest, undeformed."""
+        N.s/m, tilt N.m.s/rad), whether the bearings' K is used and Newmark's gamma; the state at rest, undeformed."""
         damping = np.asarray(damping, dtype=float).reshape(self._seats, 3)
         C = np.zeros((self._seats, beam.NDOF, beam.NDOF))
         for i, column in enumerate((0, 0, 1, 2, 2)):  # x, y radial; z axial; theta_x, theta_y tilt
             C[:, i, i] = damping[:, column]
-        self.transient = ShaftTransient(self.model, 0.0, C_seats=C, substeps=int(substeps))
+        self.transient = ShaftTransient(self.model, 0.0, C_seats=C, substeps=int(substeps), gamma=float(gamma))
         self.implicit = bool(implicit)
 
     def split(self, u):

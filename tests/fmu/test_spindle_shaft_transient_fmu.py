@@ -22,7 +22,7 @@ import pytest
 from fmpy import read_model_description
 from fmpy.validation import validate_fmu
 
-from spindle.shaft.declarations import SEAT_DAMPING
+from spindle.shaft.declarations import NEWMARK_GAMMA, SEAT_DAMPING
 from spindle.shaft.model import ShaftModel
 from spindle.shaft.transient import ShaftTransient
 from spindle.shaft.transient_stepper import TransientStepper
@@ -49,7 +49,7 @@ def test_validate_fmu_and_variables_are_the_declarations(spindle_shaft_transient
     }
     damping = [f"c_{kind}_{s}" for s in (1, 2) for kind, *_ in SEAT_DAMPING]
     assert by_causality == {
-        "parameter": ["shaft", "substeps", "implicit_coupling", *damping],
+        "parameter": ["shaft", "substeps", "newmark_gamma", "implicit_coupling", *damping],
         "input": [v.name for v in stepper.inputs],
         "output": [v.name for v in stepper.outputs],
     }
@@ -95,11 +95,12 @@ def run_closed_loop(fmu, vr, stepper, K, speeds, tip):
 
 
 def reference_loop(K, speeds, tip, implicit=True, damping=(2000.0, 2000.0, 0.2)):
-    """ShaftTransient driven as run_closed_loop drives the FMU (its parameters' start values: 1 substep)."""
+    """ShaftTransient driven as run_closed_loop drives the FMU (its parameters' start values: 1 substep, Newmark's
+    gamma NEWMARK_GAMMA)."""
     C = np.zeros((2, 5, 5))
     for i, column in enumerate((0, 0, 1, 2, 2)):
         C[:, i, i] = damping[column]
-    shaft = ShaftTransient(ShaftModel(), speeds[0], C_seats=C)
+    shaft = ShaftTransient(ShaftModel(), speeds[0], C_seats=C, gamma=NEWMARK_GAMMA)
     rows = []
     for omega in speeds:
         if omega != shaft.omega:
