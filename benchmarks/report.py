@@ -83,6 +83,10 @@ KNOBS = (  # (benchmark, its reference); the title and figures come from the ben
     ("cosim_error", "a monolithic Heun integration of the same loop at a fine step (its refinement check on the page)"),
     ("dem_closed_loop_steps", "the same coupled start-up at H = 0.05 ms, Gauss-Seidel"),
     ("warmup_modes", "the same warm-up with the shaft's modes solved at every step (tolerance 0)"),
+    (
+        "shaft_dem",
+        "the same shaft on quasi-static bearings (runs/shaft_transient_qs.toml), on its nonlinear static equilibrium",
+    ),
 )
 REFERENCES = "reference_table"  # run first: the report's first table
 # The timing benchmarks (their targets are recorded with the metrics).
