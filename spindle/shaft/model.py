@@ -29,6 +29,13 @@ RIGID_RATIO = 1.0e-8  # a mode whose strain-energy frequency^2 is below this sha
 PLANAR = 1.0e-3
 OSCILLATING = 1e-9  # Im lambda / |lambda| above which a root is an oscillating mode, not a real (overdamped) root
 WHIRL_FORWARD, WHIRL_NONE, WHIRL_BACKWARD, WHIRL_AXIAL = 1, 0, -1, 2
+# The synchronous problem projected on the undamped modes of the seated shaft (_projected_speeds): the modes up to
+# SYNC_BAND times the frequency of mode 2 x count, and a root is trusted only below 1 / SYNC_BAND of the first mode
+# left out (a mode basis represents the shapes well below its truncation)
+SYNC_BAND = 3.0
+SYNC_MOVE = 1e-3  # relative move of a projected root in its refinement above which the projection is not trusted
+NEWTON_STEPS = 8  # refinement steps of a projected root; quadratic convergence needs three or four
+NEWTON_TOLERANCE = 1e-12  # relative Newton step below which a root is converged (the next step is at rounding)
 
 __all__ = ["ShaftInputError", "ShaftModel", "shaft_path", "DEFAULT_SHAFT"]
 
@@ -106,6 +113,7 @@ class ShaftModel:
         self._Minv = np.linalg.inv(self._M)
         self._Ms = self._M - 1j * self._G  # the synchronous problem's mass (critical_speeds)
         self._Ms_inv = np.linalg.inv(self._Ms)
+        self._Linv = np.linalg.inv(np.linalg.cholesky(self._M))  # M = L L^T: the undamped modes of _projected_speeds
         seat_dofs = [[beam.NDOF * k + i for i in range(beam.NDOF)] for k in range(len(sf.seat_nodes))]
         self._seat_dofs = np.array(seat_dofs, dtype=np.int64).reshape(-1, beam.NDOF)
         self._tip = beam.NDOF * interface.index(sf.tip_node)
@@ -303,6 +311,12 @@ class ShaftModel:
             return self._critical_speeds(K, C, count)
 
     def _critical_speeds(self, K, C, count):
+        """The first `count` forward critical speeds: from the projected problem when it can be trusted, else from the
+        whole synchronous eigen-solution."""
+        speeds = self._projected_speeds(K, C, count)
+        return self._synchronous_speeds(K, C, count) if speeds is None else speeds
+
+    def _synchronous_speeds(self, K, C, count):
         n = K.shape[0]
         A = np.zeros((2 * n, 2 * n), dtype=complex)
         A[:n, n:] = np.eye(n)
@@ -318,13 +332,80 @@ class ShaftModel:
             if lam[r].imag <= abs(lam[r].real):
                 continue
             q = self._null_vector(lam[r] ** 2 * self._Ms + lam[r] * C + K)
-            if np.real(np.conj(q) @ K @ q) < RIGID_RATIO * self._scale * np.real(np.conj(q) @ self._M @ q):
-                continue
-            if whirl_sense(self._T @ q) == WHIRL_FORWARD:
+            if self._forward_elastic(K, q):
                 speeds.append(lam[r].imag)
                 if len(speeds) == count:
                     break
         return np.array(speeds + [math.nan] * (count - len(speeds)))
+
+    def _forward_elastic(self, K, q):
+        """Whether a shape q of the synchronous problem has strain energy (not rigid) and whirls forward."""
+        if np.real(np.conj(q) @ K @ q) < RIGID_RATIO * self._scale * np.real(np.conj(q) @ self._M @ q):
+            return False
+        return whirl_sense(self._T @ q) == WHIRL_FORWARD
+
+    def _projected_speeds(self, K, C, count):
+        """The critical speeds from the synchronous problem projected on the lowest undamped modes of the seated
+        shaft (K's symmetric part), each forward root refined on the whole model (_refine_root) so that it is the
+        whole problem's root to rounding. The basis holds the modes up to SYNC_BAND times a target frequency, first
+        that of mode 2 x count, then, while a root needed lies above the trusted band, that root's. None where the
+        projection is not trusted: the basis would be the whole model, a refinement moves a root by more than
+        SYNC_MOVE or does not converge, fewer than `count` speeds are found (seats damped so heavily that they pin
+        the shaft are such a case)."""
+        n = K.shape[0]
+        w2, Y = np.linalg.eigh(self._Linv @ (0.5 * (K + K.T)) @ self._Linv.T)
+        w = np.sqrt(np.abs(w2))
+        target = w[min(2 * count, n) - 1]
+        while True:
+            m = int(np.searchsorted(w, SYNC_BAND * target, side="right"))
+            if 2 * m >= n:
+                return None  # no smaller than the whole problem
+            speeds = self._speeds_on_basis(K, C, count, self._Linv.T @ Y[:, :m], w[m] / SYNC_BAND)
+            if not isinstance(speeds, float):
+                return speeds
+            target = speeds
+
+    def _speeds_on_basis(self, K, C, count, P, trusted):
+        """The critical speeds of the synchronous problem projected on the mass-normalised basis P (P^T M P = I),
+        refined; a float, the root's Im lambda, where a root needed lies above `trusted` (rad/s); None where the
+        projection is not trusted (_projected_speeds)."""
+        m = P.shape[1]
+        A = np.zeros((2 * m, 2 * m), dtype=complex)
+        A[:m, m:] = np.eye(m)
+        Ms_inv = np.linalg.inv(np.eye(m) - 1j * (P.T @ self._G @ P))
+        A[m:, :m] = -Ms_inv @ (P.T @ K @ P)
+        A[m:, m:] = -Ms_inv @ (P.T @ C @ P)
+        lam, V = np.linalg.eig(A)
+        speeds = []
+        for r in np.argsort(lam.imag):
+            if lam[r].imag <= abs(lam[r].real):
+                continue
+            if lam[r].imag > trusted:
+                return float(lam[r].imag)
+            q = P @ V[:m, r]
+            if self._forward_elastic(K, q):
+                root = self._refine_root(K, C, lam[r], q)
+                if root is None:
+                    return None
+                speeds.append(root.imag)
+                if len(speeds) == count:
+                    return np.array(speeds)
+        return None
+
+    def _refine_root(self, K, C, lam, q):
+        """Newton's method on (lambda^2 M_s + lambda C + K) q = 0 with u^H q = 1 (nonlinear inverse iteration,
+        Ruhe 1973, SIAM J. Numer. Anal. 10, 674-689) from an approximate root and shape: the root, or None when it
+        does not converge in NEWTON_STEPS, moves by more than SYNC_MOVE, or its shape is not forward and elastic."""
+        u = q.conj() / np.vdot(q, q)
+        root = lam
+        for _ in range(NEWTON_STEPS):
+            x = np.linalg.solve(root * root * self._Ms + root * C + K, (2.0 * root * self._Ms + C) @ q)
+            s = u @ x
+            root, q = root - 1.0 / s, x / s
+            if abs(1.0 / s) <= NEWTON_TOLERANCE * abs(root):
+                moved = abs(root - lam) > SYNC_MOVE * abs(root)
+                return None if moved or not self._forward_elastic(K, q) else root
+        return None
 
     @staticmethod
     def _null_vector(Q):
