@@ -79,19 +79,21 @@ def craig_bampton(K, M, boundary, modes):
     return T
 
 
-def whirl_sense(phys):
-    """Whirl of a complex mode shape over the full dofs (e^{lambda t}, Im lambda > 0): +1 forward (the orbit of
-    the translations turns with the spin, +z), -1 backward, 0 none (a planar shape of a degenerate pair at rest),
-    2 axial (the axial translations outweigh the radial ones); the mean of -2 Im(conj(x) y) / (|x|^2 + |y|^2) over
-    the nodes, weighted by amplitude, decides (+1 for a circular forward orbit, -1 backward, 0 planar). At rest
-    the facade reports no whirl: a pair of an axisymmetric shaft is degenerate, any combination of its shapes
-    (planar, forward, backward) is a mode."""
-    x, y, z = phys[0::5], phys[1::5], phys[2::5]
-    radial = np.sum(np.abs(x) ** 2 + np.abs(y) ** 2)
-    if radial <= np.sum(np.abs(z) ** 2):
-        return WHIRL_AXIAL
-    s = -2.0 * np.sum(np.imag(np.conj(x) * y)) / radial
-    return WHIRL_FORWARD if s > PLANAR else WHIRL_BACKWARD if s < -PLANAR else WHIRL_NONE
+def whirl_senses(shapes):
+    """Whirl of complex mode shapes over the full dofs (one per column, e^{lambda t}, Im lambda > 0): +1 forward
+    (the orbit of the translations turns with the spin, +z), -1 backward, 0 none (a planar shape of a degenerate pair
+    at rest), 2 axial (the axial translations outweigh the radial ones); the mean of -2 Im(conj(x) y) / (|x|^2 +
+    |y|^2) over the nodes, weighted by amplitude, decides (+1 for a circular forward orbit, -1 backward, 0 planar).
+    At rest the facade reports no whirl: a pair of an axisymmetric shaft is degenerate, any combination of its
+    shapes (planar, forward, backward) is a mode. All columns at once: a few array operations, not a few per mode."""
+    nodes = shapes.reshape(-1, beam.NDOF, shapes.shape[1])
+    x, y, z = nodes[:, 0], nodes[:, 1], nodes[:, 2]
+    radial = np.sum(np.abs(x) ** 2 + np.abs(y) ** 2, axis=0)
+    axial = np.sum(np.abs(z) ** 2, axis=0)
+    with np.errstate(divide="ignore", invalid="ignore"):  # a shape without radial motion is axial: its s is unused
+        s = -2.0 * np.sum(np.imag(np.conj(x) * y), axis=0) / radial
+    sense = np.where(s > PLANAR, WHIRL_FORWARD, np.where(s < -PLANAR, WHIRL_BACKWARD, WHIRL_NONE))
+    return np.where(radial <= axial, WHIRL_AXIAL, sense)
 
 
 class ShaftModel:
@@ -211,8 +213,7 @@ class ShaftModel:
         kinetic = np.real(np.sum(Q.conj() * (self._M @ Q), axis=0))
         elastic = strain >= RIGID_RATIO * self._scale * kinetic
         kept = order[elastic][:count]
-        shapes = self._T @ V[:n, kept]
-        whirls = [whirl_sense(shapes[:, j]) for j in range(kept.size)]
+        whirls = [int(w) for w in whirl_senses(self._T @ V[:n, kept])]
         whirls = [w if spinning or w == WHIRL_AXIAL else WHIRL_NONE for w in whirls]
         return kept, whirls, int(np.count_nonzero(~elastic))
 
@@ -332,17 +333,18 @@ class ShaftModel:
             if lam[r].imag <= abs(lam[r].real):
                 continue
             q = self._null_vector(lam[r] ** 2 * self._Ms + lam[r] * C + K)
-            if self._forward_elastic(K, q):
+            if self._forward_elastic(K, q[:, None])[0]:
                 speeds.append(lam[r].imag)
                 if len(speeds) == count:
                     break
         return np.array(speeds + [math.nan] * (count - len(speeds)))
 
-    def _forward_elastic(self, K, q):
-        """Whether a shape q of the synchronous problem has strain energy (not rigid) and whirls forward."""
-        if np.real(np.conj(q) @ K @ q) < RIGID_RATIO * self._scale * np.real(np.conj(q) @ self._M @ q):
-            return False
-        return whirl_sense(self._T @ q) == WHIRL_FORWARD
+    def _forward_elastic(self, K, Q):
+        """Per column of Q, shapes of the synchronous problem, whether it has strain energy (not rigid) and whirls
+        forward."""
+        strain = np.real(np.sum(Q.conj() * (K @ Q), axis=0))
+        kinetic = np.real(np.sum(Q.conj() * (self._M @ Q), axis=0))
+        return (strain >= RIGID_RATIO * self._scale * kinetic) & (whirl_senses(self._T @ Q) == WHIRL_FORWARD)
 
     def _projected_speeds(self, K, C, count):
         """The critical speeds from the synchronous problem projected on the lowest undamped modes of the seated
@@ -376,35 +378,34 @@ class ShaftModel:
         A[m:, :m] = -Ms_inv @ (P.T @ K @ P)
         A[m:, m:] = -Ms_inv @ (P.T @ C @ P)
         lam, V = np.linalg.eig(A)
-        speeds = []
-        for r in np.argsort(lam.imag):
-            if lam[r].imag <= abs(lam[r].real):
-                continue
-            if lam[r].imag > trusted:
-                return float(lam[r].imag)
-            q = P @ V[:m, r]
-            if self._forward_elastic(K, q):
-                root = self._refine_root(K, C, lam[r], q)
-                if root is None:
-                    return None
-                speeds.append(root.imag)
-                if len(speeds) == count:
-                    return np.array(speeds)
-        return None
+        order = np.argsort(lam.imag)
+        order = order[lam.imag[order] > np.abs(lam.real[order])]  # whirling roots (_synchronous_speeds)
+        Q = P @ V[:m, order]
+        wanted = np.flatnonzero(self._forward_elastic(K, Q))[:count]
+        last = wanted[-1] if wanted.size == count else order.size - 1  # the roots examined
+        above = np.flatnonzero(lam.imag[order[: last + 1]] > trusted)
+        if above.size:
+            return float(lam[order[above[0]]].imag)
+        if wanted.size < count:
+            return None
+        roots = self._refine_roots(K, C, lam[order[wanted]], Q[:, wanted])
+        return None if roots is None else roots.imag
 
-    def _refine_root(self, K, C, lam, q):
+    def _refine_roots(self, K, C, lam, Q):
         """Newton's method on (lambda^2 M_s + lambda C + K) q = 0 with u^H q = 1 (nonlinear inverse iteration,
-        Ruhe 1973, SIAM J. Numer. Anal. 10, 674-689) from an approximate root and shape: the root, or None when it
-        does not converge in NEWTON_STEPS, moves by more than SYNC_MOVE, or its shape is not forward and elastic."""
-        u = q.conj() / np.vdot(q, q)
-        root = lam
+        Ruhe 1973, SIAM J. Numer. Anal. 10, 674-689) from approximate roots lam and shapes (the columns of Q), all
+        at once: the roots, or None when one does not converge in NEWTON_STEPS, moves by more than SYNC_MOVE, or
+        its shape is not forward and elastic."""
+        u = Q.conj() / np.sum(np.abs(Q) ** 2, axis=0)
+        q, root = Q.T, lam.copy()  # one shape per row
         for _ in range(NEWTON_STEPS):
-            x = np.linalg.solve(root * root * self._Ms + root * C + K, (2.0 * root * self._Ms + C) @ q)
-            s = u @ x
-            root, q = root - 1.0 / s, x / s
-            if abs(1.0 / s) <= NEWTON_TOLERANCE * abs(root):
-                moved = abs(root - lam) > SYNC_MOVE * abs(root)
-                return None if moved or not self._forward_elastic(K, q) else root
+            r = root[:, None, None]
+            x = np.linalg.solve(r * r * self._Ms + r * C + K, (2.0 * r * self._Ms + C) @ q[:, :, None])[:, :, 0]
+            s = np.sum(u.T * x, axis=1)
+            root, q = root - 1.0 / s, x / s[:, None]
+            if np.all(np.abs(1.0 / s) <= NEWTON_TOLERANCE * np.abs(root)):
+                moved = np.any(np.abs(root - lam) > SYNC_MOVE * np.abs(root))
+                return None if moved or not np.all(self._forward_elastic(K, q.T)) else root
         return None
 
     @staticmethod
