@@ -270,7 +270,15 @@ class ShaftModel:
         H(w) = sum_r V[tip, r] c_r / (i w - lambda_r), c = V^-1 (0, M^-1 e_tip) (residues: these products, if known)."""
         residues = self._residues(V) if residues is None else residues
         w = np.asarray(frequencies, dtype=float)
-        return (residues[None, :] / (1j * w[:, None] - lam[None, :])).sum(axis=1)
+        # in real arithmetic, the sums over the modes as matrix products: r / (a + i b) = r (a - i b) / (a^2 + b^2)
+        # with a = -Re lambda, b = w - Im lambda; half the time of the complex divisions on the peak's grid
+        a = -lam.real
+        b = w[:, None] - lam.imag[None, :]
+        inverse = 1.0 / (b * b + (a * a)[None, :])
+        b *= inverse
+        real = inverse @ (residues.real * a) + b @ residues.imag
+        imag = inverse @ (residues.imag * a) - b @ residues.real
+        return real + 1j * imag
 
     def _residues(self, V):
         n = self._K.shape[0]
