@@ -29,6 +29,13 @@ RIGID_RATIO = 1.0e-8  # a mode whose strain-energy frequency^2 is below this sha
 PLANAR = 1.0e-3
 OSCILLATING = 1e-9  # Im lambda / |lambda| above which a root is an oscillating mode, not a real (overdamped) root
 WHIRL_FORWARD, WHIRL_NONE, WHIRL_BACKWARD, WHIRL_AXIAL = 1, 0, -1, 2
+# The synchronous problem projected on the undamped modes of the seated shaft (_projected_speeds): the modes up to
+# SYNC_BAND times the frequency of mode 2 x count, and a root is trusted only below 1 / SYNC_BAND of the first mode
+# left out (a mode basis represents the shapes well below its truncation)
+SYNC_BAND = 3.0
+SYNC_MOVE = 1e-3  # relative move of a projected root in its refinement above which the projection is not trusted
+NEWTON_STEPS = 8  # refinement steps of a projected root; quadratic convergence needs three or four
+NEWTON_TOLERANCE = 1e-12  # relative Newton step below which a root is converged (the next step is at rounding)
 
 __all__ = ["ShaftInputError", "ShaftModel", "shaft_path", "DEFAULT_SHAFT"]
 
@@ -72,19 +79,21 @@ def craig_bampton(K, M, boundary, modes):
     return T
 
 
-def whirl_sense(phys):
-    """Whirl of a complex mode shape over the full dofs (e^{lambda t}, Im lambda > 0): +1 forward (the orbit of
-    the translations turns with the spin, +z), -1 backward, 0 none (a planar shape of a degenerate pair at rest),
-    2 axial (the axial translations outweigh the radial ones); the mean of -2 Im(conj(x) y) / (|x|^2 + |y|^2) over
-    the nodes, weighted by amplitude, decides (+1 for a circular forward orbit, -1 backward, 0 planar). At rest
-    the facade reports no whirl: a pair of an axisymmetric shaft is degenerate, any combination of its shapes
-    (planar, forward, backward) is a mode."""
-    x, y, z = phys[0::5], phys[1::5], phys[2::5]
-    radial = np.sum(np.abs(x) ** 2 + np.abs(y) ** 2)
-    if radial <= np.sum(np.abs(z) ** 2):
-        return WHIRL_AXIAL
-    s = -2.0 * np.sum(np.imag(np.conj(x) * y)) / radial
-    return WHIRL_FORWARD if s > PLANAR else WHIRL_BACKWARD if s < -PLANAR else WHIRL_NONE
+def whirl_senses(shapes):
+    """Whirl of complex mode shapes over the full dofs (one per column, e^{lambda t}, Im lambda > 0): +1 forward
+    (the orbit of the translations turns with the spin, +z), -1 backward, 0 none (a planar shape of a degenerate pair
+    at rest), 2 axial (the axial translations outweigh the radial ones); the mean of -2 Im(conj(x) y) / (|x|^2 +
+    |y|^2) over the nodes, weighted by amplitude, decides (+1 for a circular forward orbit, -1 backward, 0 planar).
+    At rest the facade reports no whirl: a pair of an axisymmetric shaft is degenerate, any combination of its
+    shapes (planar, forward, backward) is a mode. All columns at once: a few array operations, not a few per mode."""
+    nodes = shapes.reshape(-1, beam.NDOF, shapes.shape[1])
+    x, y, z = nodes[:, 0], nodes[:, 1], nodes[:, 2]
+    radial = np.sum(np.abs(x) ** 2 + np.abs(y) ** 2, axis=0)
+    axial = np.sum(np.abs(z) ** 2, axis=0)
+    with np.errstate(divide="ignore", invalid="ignore"):  # a shape without radial motion is axial: its s is unused
+        s = -2.0 * np.sum(np.imag(np.conj(x) * y), axis=0) / radial
+    sense = np.where(s > PLANAR, WHIRL_FORWARD, np.where(s < -PLANAR, WHIRL_BACKWARD, WHIRL_NONE))
+    return np.where(radial <= axial, WHIRL_AXIAL, sense)
 
 
 class ShaftModel:
@@ -106,6 +115,7 @@ class ShaftModel:
         self._Minv = np.linalg.inv(self._M)
         self._Ms = self._M - 1j * self._G  # the synchronous problem's mass (critical_speeds)
         self._Ms_inv = np.linalg.inv(self._Ms)
+        self._Linv = np.linalg.inv(np.linalg.cholesky(self._M))  # M = L L^T: the undamped modes of _projected_speeds
         seat_dofs = [[beam.NDOF * k + i for i in range(beam.NDOF)] for k in range(len(sf.seat_nodes))]
         self._seat_dofs = np.array(seat_dofs, dtype=np.int64).reshape(-1, beam.NDOF)
         self._tip = beam.NDOF * interface.index(sf.tip_node)
@@ -203,8 +213,7 @@ class ShaftModel:
         kinetic = np.real(np.sum(Q.conj() * (self._M @ Q), axis=0))
         elastic = strain >= RIGID_RATIO * self._scale * kinetic
         kept = order[elastic][:count]
-        shapes = self._T @ V[:n, kept]
-        whirls = [whirl_sense(shapes[:, j]) for j in range(kept.size)]
+        whirls = [int(w) for w in whirl_senses(self._T @ V[:n, kept])]
         whirls = [w if spinning or w == WHIRL_AXIAL else WHIRL_NONE for w in whirls]
         return kept, whirls, int(np.count_nonzero(~elastic))
 
@@ -261,7 +270,15 @@ class ShaftModel:
         H(w) = sum_r V[tip, r] c_r / (i w - lambda_r), c = V^-1 (0, M^-1 e_tip) (residues: these products, if known)."""
         residues = self._residues(V) if residues is None else residues
         w = np.asarray(frequencies, dtype=float)
-        return (residues[None, :] / (1j * w[:, None] - lam[None, :])).sum(axis=1)
+        # in real arithmetic, the sums over the modes as matrix products: r / (a + i b) = r (a - i b) / (a^2 + b^2)
+        # with a = -Re lambda, b = w - Im lambda; half the time of the complex divisions on the peak's grid
+        a = -lam.real
+        b = w[:, None] - lam.imag[None, :]
+        inverse = 1.0 / (b * b + (a * a)[None, :])
+        b *= inverse
+        real = inverse @ (residues.real * a) + b @ residues.imag
+        imag = inverse @ (residues.imag * a) - b @ residues.real
+        return real + 1j * imag
 
     def _residues(self, V):
         n = self._K.shape[0]
@@ -303,6 +320,12 @@ class ShaftModel:
             return self._critical_speeds(K, C, count)
 
     def _critical_speeds(self, K, C, count):
+        """The first `count` forward critical speeds: from the projected problem when it can be trusted, else from the
+        whole synchronous eigen-solution."""
+        speeds = self._projected_speeds(K, C, count)
+        return self._synchronous_speeds(K, C, count) if speeds is None else speeds
+
+    def _synchronous_speeds(self, K, C, count):
         n = K.shape[0]
         A = np.zeros((2 * n, 2 * n), dtype=complex)
         A[:n, n:] = np.eye(n)
@@ -318,13 +341,80 @@ class ShaftModel:
             if lam[r].imag <= abs(lam[r].real):
                 continue
             q = self._null_vector(lam[r] ** 2 * self._Ms + lam[r] * C + K)
-            if np.real(np.conj(q) @ K @ q) < RIGID_RATIO * self._scale * np.real(np.conj(q) @ self._M @ q):
-                continue
-            if whirl_sense(self._T @ q) == WHIRL_FORWARD:
+            if self._forward_elastic(K, q[:, None])[0]:
                 speeds.append(lam[r].imag)
                 if len(speeds) == count:
                     break
         return np.array(speeds + [math.nan] * (count - len(speeds)))
+
+    def _forward_elastic(self, K, Q):
+        """Per column of Q, shapes of the synchronous problem, whether it has strain energy (not rigid) and whirls
+        forward."""
+        strain = np.real(np.sum(Q.conj() * (K @ Q), axis=0))
+        kinetic = np.real(np.sum(Q.conj() * (self._M @ Q), axis=0))
+        return (strain >= RIGID_RATIO * self._scale * kinetic) & (whirl_senses(self._T @ Q) == WHIRL_FORWARD)
+
+    def _projected_speeds(self, K, C, count):
+        """The critical speeds from the synchronous problem projected on the lowest undamped modes of the seated
+        shaft (K's symmetric part), each forward root refined on the whole model (_refine_root) so that it is the
+        whole problem's root to rounding. The basis holds the modes up to SYNC_BAND times a target frequency, first
+        that of mode 2 x count, then, while a root needed lies above the trusted band, that root's. None where the
+        projection is not trusted: the basis would be the whole model, a refinement moves a root by more than
+        SYNC_MOVE or does not converge, fewer than `count` speeds are found (seats damped so heavily that they pin
+        the shaft are such a case)."""
+        n = K.shape[0]
+        w2, Y = np.linalg.eigh(self._Linv @ (0.5 * (K + K.T)) @ self._Linv.T)
+        w = np.sqrt(np.abs(w2))
+        target = w[min(2 * count, n) - 1]
+        while True:
+            m = int(np.searchsorted(w, SYNC_BAND * target, side="right"))
+            if 2 * m >= n:
+                return None  # no smaller than the whole problem
+            speeds = self._speeds_on_basis(K, C, count, self._Linv.T @ Y[:, :m], w[m] / SYNC_BAND)
+            if not isinstance(speeds, float):
+                return speeds
+            target = speeds
+
+    def _speeds_on_basis(self, K, C, count, P, trusted):
+        """The critical speeds of the synchronous problem projected on the mass-normalised basis P (P^T M P = I),
+        refined; a float, the root's Im lambda, where a root needed lies above `trusted` (rad/s); None where the
+        projection is not trusted (_projected_speeds)."""
+        m = P.shape[1]
+        A = np.zeros((2 * m, 2 * m), dtype=complex)
+        A[:m, m:] = np.eye(m)
+        Ms_inv = np.linalg.inv(np.eye(m) - 1j * (P.T @ self._G @ P))
+        A[m:, :m] = -Ms_inv @ (P.T @ K @ P)
+        A[m:, m:] = -Ms_inv @ (P.T @ C @ P)
+        lam, V = np.linalg.eig(A)
+        order = np.argsort(lam.imag)
+        order = order[lam.imag[order] > np.abs(lam.real[order])]  # whirling roots (_synchronous_speeds)
+        Q = P @ V[:m, order]
+        wanted = np.flatnonzero(self._forward_elastic(K, Q))[:count]
+        last = wanted[-1] if wanted.size == count else order.size - 1  # the roots examined
+        above = np.flatnonzero(lam.imag[order[: last + 1]] > trusted)
+        if above.size:
+            return float(lam[order[above[0]]].imag)
+        if wanted.size < count:
+            return None
+        roots = self._refine_roots(K, C, lam[order[wanted]], Q[:, wanted])
+        return None if roots is None else roots.imag
+
+    def _refine_roots(self, K, C, lam, Q):
+        """Newton's method on (lambda^2 M_s + lambda C + K) q = 0 with u^H q = 1 (nonlinear inverse iteration,
+        Ruhe 1973, SIAM J. Numer. Anal. 10, 674-689) from approximate roots lam and shapes (the columns of Q), all
+        at once: the roots, or None when one does not converge in NEWTON_STEPS, moves by more than SYNC_MOVE, or
+        its shape is not forward and elastic."""
+        u = Q.conj() / np.sum(np.abs(Q) ** 2, axis=0)
+        q, root = Q.T, lam.copy()  # one shape per row
+        for _ in range(NEWTON_STEPS):
+            r = root[:, None, None]
+            x = np.linalg.solve(r * r * self._Ms + r * C + K, (2.0 * r * self._Ms + C) @ q[:, :, None])[:, :, 0]
+            s = np.sum(u.T * x, axis=1)
+            root, q = root - 1.0 / s, x / s[:, None]
+            if np.all(np.abs(1.0 / s) <= NEWTON_TOLERANCE * np.abs(root)):
+                moved = np.any(np.abs(root - lam) > SYNC_MOVE * np.abs(root))
+                return None if moved or not np.all(self._forward_elastic(K, q.T)) else root
+        return None
 
     @staticmethod
     def _null_vector(Q):

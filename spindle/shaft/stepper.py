@@ -55,13 +55,10 @@ class ShaftStepper:
         C[:, 0, 0] = C[:, 1, 1] = rows[:, 25]
         return K, C
 
-    def critical_speeds(self, K, C):
-        """The first two forward critical speeds (rad/s), recomputed only when K or C changed (changed())."""
+    def seats_changed(self, K, C):
+        """Whether the seats' K or C changed (changed()) since the critical speeds were last computed."""
         last = self._critical
-        if last is None or changed(K, last[0]) or changed(C, last[1]):
-            self._critical = (K, C, self.model.critical_speeds(K, C, 2))
-            self.critical_evaluations += 1
-        return self._critical[2]
+        return last is None or changed(K, last[0]) or changed(C, last[1])
 
     def _refuse_free(self, K, rigid):
         diagonal = ", ".join(
@@ -105,9 +102,14 @@ class ShaftStepper:
 
     def _solve(self, u):
         K, C = self.seat_matrices(u)
-        out = self.model.evaluate(u[0], K, C, critical_speeds=False)
+        # the critical speeds in the same call as the modes when the seats changed: the seats' matrices assembled once
+        fresh = self.seats_changed(K, C)
+        out = self.model.evaluate(u[0], K, C, critical_speeds=fresh)
         if out["rigid_modes"] or not math.isfinite(out["compliance_radial"] * out["compliance_axial"]):
             self._refuse_free(K, out["rigid_modes"])
+        if fresh:
+            self._critical = (K, C, out["critical_speeds"])
+            self.critical_evaluations += 1
         values = [
             *out["frequencies"].tolist(),
             *out["whirl"].tolist(),
@@ -116,7 +118,7 @@ class ShaftStepper:
             out["compliance_axial"],
             out["peak_compliance"],
             out["peak_frequency"],
-            *self.critical_speeds(K, C).tolist(),
+            *self._critical[2].tolist(),
         ]
         if not all(math.isfinite(v) for v in values):
             self._refuse_non_finite(u, values)

@@ -18,6 +18,7 @@ import pytest
 
 from bearing_fmu_common.paramfile import ParameterError
 from spindle.shaft import ShaftInputError, ShaftModel
+from spindle.shaft.declarations import K_START
 from spindle.shaft.model import WHIRL_AXIAL, WHIRL_BACKWARD, WHIRL_FORWARD, WHIRL_NONE, full_matrices
 from tests.cases import shaft_beams as sb
 
@@ -88,6 +89,29 @@ def test_critical_speeds_are_where_a_forward_frequency_equals_the_speed(models):
         out = model.evaluate(speed, K_SEATS, C_SEATS, critical_speeds=False)
         forward = 2.0 * math.pi * out["frequencies"][out["whirl"] == WHIRL_FORWARD]
         assert np.min(np.abs(forward - speed)) <= 1e-3 * speed
+
+
+@pytest.mark.parametrize("damping", [0.0, 2000.0, 5000.0])
+def test_critical_speeds_from_the_projection_are_the_whole_problems(models, monkeypatch, damping):
+    """On a bearing's damping the critical speeds come from the synchronous problem projected on the lowest undamped
+    modes, each root refined on the whole model: equal to the whole eigen-solution's roots to rounding (1e-9), and
+    that eigen-solution is not needed."""
+    model = models[0]
+    for K_seats in (K_SEATS, np.array([K_START] * 2), np.array([sb.seat_matrix(2e8, 5e7, 1e5, 2e7)] * 2)):
+        K, C = model.matrices(K_seats, C_SEATS * damping / 2000.0)
+        whole = model._synchronous_speeds(K, C, 2)
+        with monkeypatch.context() as patch:
+            patch.setattr(model, "_synchronous_speeds", None)  # calling it fails
+            assert model.critical_speeds(K_seats, C_SEATS * damping / 2000.0) == pytest.approx(whole, rel=1e-9)
+
+
+def test_seats_pinned_by_their_damping_take_the_whole_eigen_solution(models):
+    """Seats damped so heavily that they pin the shaft: the undamped modes do not represent its shapes, the
+    projection is not trusted and the critical speeds are the whole synchronous eigen-solution's."""
+    model = models[0]
+    K, C = model.matrices(K_SEATS, C_SEATS * 1e8 / 2000.0)
+    assert model._projected_speeds(K, C, 2) is None
+    assert np.array_equal(model.critical_speeds(K_SEATS, C_SEATS * 1e8 / 2000.0), model._synchronous_speeds(K, C, 2))
 
 
 def test_inputs_are_refused_with_their_range(models):
