@@ -9,7 +9,7 @@ axial shift for 800 N at 10 000 rpm: -6.3191 um for the DEM, -6.7537 um quasi-st
 Steady state: the DEM run's means over its last 0.2 s against the quasi-static run's end (which settles on the
 nonlinear static equilibrium within 3e-6, tests/cosim/test_shaft_transient_run.py). Spectrum: the Hann-windowed
 amplitude spectrum of the tool tip's x and y over the same window, its strongest lines named by the nearest of the
-bearing's kinematic frequencies (from the DEM's mean cage speed) and the shaft's modes at speed on the bearings' mean
+bearing's own frequencies (the DEM's FTF, BPFO, BPFI, BSF outputs, harmonics and sidebands) and the shaft's modes at speed on the bearings' mean
 K (ShaftModel.evaluate), when one is within 5 %. Cost: CPU time of each FMU's doStep (they run in this process) and
 the rest of the stepping (the master: transfers, schedules, recording), one run.
 Run: python -m benchmarks.shaft_dem -> docs/reports/shaft_dem.md and .png
@@ -20,7 +20,6 @@ from pathlib import Path
 
 import numpy as np
 
-from bearing_fmu.params import load_bearing
 from spindle.cosim.master import Master
 from spindle.cosim.runfile import load_run
 from spindle.shaft import ShaftModel
@@ -110,15 +109,17 @@ def spectrum(t, x):
     return np.fft.rfftfreq(x.size, t[1] - t[0]), 2.0 * np.abs(np.fft.rfft(x * w)) / w.sum()
 
 
-def named_frequencies(columns, rows, omega, spec):
-    """Frequencies (Hz) a line may belong to: the shaft's speed, the cage, the ball passes and their second
-    harmonics, and the shaft's six modes at speed on the bearings' mean K."""
-    bearing = load_bearing(spec.instances["bearing_1"].parameters["bearing"])
+def named_frequencies(columns, rows, omega):
+    """Frequencies (Hz) a line may belong to: the shaft's speed, the bearing's own frequencies as the DEM outputs them
+    (FTF and its harmonics below BPFO, BPFO, BPFI, 2 BSF, the ball passes' harmonics and their sidebands at FTF and at the
+    shaft's speed), and the shaft's six modes at speed on the bearings' mean K."""
     f_shaft = omega / (2.0 * np.pi)
-    f_cage = columns["bearing_1.omega_cage"][rows].mean() / (2.0 * np.pi)
-    names = {"1x shaft": f_shaft, "cage": f_cage, "outer ball pass": bearing.Z * f_cage,
-             "inner ball pass": bearing.Z * (f_shaft - f_cage)}  # fmt: skip
-    names |= {f"2x {k}": 2.0 * f for k, f in list(names.items())[2:]}
+    ftf, bpfo, bpfi, bsf = (columns[f"bearing_1.{n}"][rows].mean() for n in ("FTF", "BPFO", "BPFI", "BSF"))
+    names = {"1x shaft": f_shaft, "2x shaft": 2.0 * f_shaft, "2 BSF": 2.0 * bsf}
+    balls = round(bpfo / ftf)  # BPFO = Z FTF
+    names |= {f"{k} FTF" if k > 1 else "FTF": k * ftf for k in range(1, balls)}  # the cage's comb up to BPFO
+    for name, f, side, side_name in (("BPFO", bpfo, ftf, "FTF"), ("BPFI", bpfi, f_shaft, "1x shaft")):
+        names |= {name: f, f"2 {name}": 2.0 * f, f"{name} - {side_name}": f - side, f"{name} + {side_name}": f + side}
     K = np.array([[[columns[f"bearing_{s}.K[{i},{j}]"][rows].mean() for j in range(1, 6)] for i in range(1, 6)]
                   for s in (1, 2)])  # fmt: skip
     modes = ShaftModel().evaluate(omega, K)
@@ -167,7 +168,7 @@ def measure():
     rows = slice(int(np.searchsorted(t, t[-1] - STEADY)), None)
     omega = float(dem["shaft.omega"][-1])
     table, worst = steady_rows(dem, rows, qs)
-    names = named_frequencies(dem, rows, omega, spec)
+    names = named_frequencies(dem, rows, omega)
     lines = line_rows(t[rows], {k: dem[k][rows] for k in ("shaft.x_tip", "shaft.y_tip")}, names)
     orbit = max(np.ptp(dem[f"shaft.{n}_{s}"][rows]) for n in ("x", "y") for s in (1, 2))
     costs = cost_rows(result, cpu, t[-1] - t[0])
@@ -219,8 +220,8 @@ shaft and the coupling being the same in both runs."""
 WHIRL_TEXT = """The ring alone (no shaft) of this bearing at this speed whirls at about {whirl:.0f} Hz when its \
 support damping is low (docs/dem.md, Whirl thresholds). On the shaft, whose seats carry {damping:.0f} N.s/m and the \
 shaft's mass and stiffness, the seats' and the tool tip's spectra between {band_low:.0f} and {band_high:.0f} Hz peak \
-at {in_band:.3f} nm, against {strongest:.3f} nm for their strongest line: the lines are the bearing's ball passes and \
-the shaft's modes they excite (table above): {verdict}."""
+at {in_band:.3f} nm, against {strongest:.3f} nm for their strongest line: the lines are the bearing's own frequencies \
+(table above): {verdict}."""
 
 COST_TEXT = """{per_second:.1f} s of CPU per simulated second ({steps} steps of {step:.0f} us; {wall:.0f} s wall on the \
 shared machine): the two DEM bearings {dem_share:.0%}, the shaft {shaft_share:.0%}, the master \
