@@ -43,6 +43,7 @@ BASE_UNITS = {
     "h": {"s": 1, "factor": 3600},  # hour: rating lives in hours, as catalogues give them
     "kg": {"kg": 1},
     "kg/m^3": {"kg": 1, "m": -3},
+    "kg.m^2": {"kg": 1, "m": 2},
     "Pa.s": {"kg": 1, "m": -1, "s": -1},
     "m^2/s": {"m": 2, "s": -1},
     "1/Pa": {"kg": -1, "m": 1, "s": 2},

@@ -1,7 +1,8 @@
 """Every input, output and parameter of SpindleShaft.fmu, declared once.
 
 The seat inputs follow the shaft file (one 5x5 stiffness and one radial damping per [[seat]]), so they are declared
-as rules expanded for a shaft. spindle.shaft.stepper fills its outputs in the order of output_declarations(), the FMU
+as rules expanded for a shaft, and so are the numeric parameters shaft_data.* (the shaft file's numbers, for masters
+that set no String parameter). spindle.shaft.stepper fills its outputs in the order of output_declarations(), the FMU
 class (spindle.shaft.fmu) registers its FMI variables from the same declarations, and fmus/SpindleShaft.md is
 generated from them (spindle.all_fmus).
 """
@@ -9,6 +10,7 @@ generated from them (spindle.all_fmus).
 from bearing_fmu_common.variables import Variable
 
 from .model import N_FREQUENCIES, OMEGA_MAX, SEAT_MATRIX_MAX
+from .params import NUMBERS, shaft_numbers
 from .transient import FORCE_MAX, GAMMA_RANGE, SUBSTEPS_MAX
 
 DOF_WORDS = "(F_x, F_y, F_z, M_x, M_y)", "(x, y, z, theta_x, theta_y)"
@@ -44,19 +46,68 @@ def seat_stiffness_name(seat, i, j):
     return f"K_{seat}[{i + 1},{j + 1}]"
 
 
-def parameter_declarations(shaft, seat_names):
-    """The FMU's parameters: `shaft` (start: the file it was built with, whose seats are `seat_names`), then per
-    seat whether its outer ring floats axially, and the inputs' change below which a step keeps its outputs."""
-    out = [
-        Variable(
-            "shaft",
-            "",
-            "shaft: catalogue name or path of a shaft TOML file (docs/shaft.md)",
-            "string",
-            start=shaft,
+SHAFT_FROM_FILE = Variable(
+    "shaft_from_file",
+    "",
+    "true: the shaft's numbers come from the file named by shaft; false: from the parameters shaft_data.* on that "
+    "file's structure (its sections' elements and materials, its disks, seats and tool tip on their nodes)",
+    "boolean",
+    start=True,
+)
+# The shaft file's numbers as parameters (params.NUMBERS), per entry k (1-based) of its [[material]], [[section]] and
+# [[disk]] tables: key -> (description, min, max, why). The ranges are a spindle's: inside the reader's (params.py)
+# and closed where its bounds are open; at their ends the default shaft still runs (its elastic modes stay apart from
+# its rigid-body ones: a section of 2 m, a diameter of 5 mm or 1 m, a disk of 100 kg.m^2 on it, one at a time).
+SHAFT_NUMBERS = {
+    "youngs_modulus": ("Young's modulus", 1e9, 1e12, "polymers to diamond"),
+    "poisson_ratio": ("Poisson's ratio", 0.01, 0.5, "the file's ]0, 0.5], closed at 0.01 (below beryllium's 0.03)"),
+    "density": ("density", 100.0, 30000.0, "foams to beyond osmium"),
+    "length": ("length", 1e-3, 2.0, "a shoulder's width to a long spindle's section (the file's: up to 10 m)"),
+    "outer_diameter": ("outer diameter", 5e-3, 1.0, "a small grinding spindle's shaft to a large machine's"),
+    "inner_diameter": ("inner diameter (0: solid)", 0.0, 1.0, "as the outer diameter; in use below it (file check)"),
+    "mass": ("mass", 0.0, 1e3, "none to a large grinding wheel's"),
+    "polar_inertia": ("polar moment of inertia", 0.0, 100.0, "1 t at a radius of 0.45 m: m r^2 / 2"),
+    "diametral_inertia": ("diametral moment of inertia", 0.0, 100.0, "as the polar moment"),
+}
+
+
+def number_name(table, index, key):
+    """FMI name of the number `key` of entry `index` (0-based, as in params.shaft_numbers) of the shaft file's
+    table: shaft_data.<table>_<index + 1>.<key>, e.g. shaft_data.section_2.outer_diameter."""
+    return f"shaft_data.{table}_{index + 1}.{key}"
+
+
+def number_declarations(shaft):
+    """shaft_from_file and the numbers of the shaft file `shaft` as parameters, their start values the file's."""
+    out = [SHAFT_FROM_FILE]
+    for table, index, entry, key, value in shaft_numbers(shaft):
+        text, low, high, why = SHAFT_NUMBERS[key]
+        out.append(
+            Variable(
+                number_name(table, index, key),
+                {"-": "1"}.get(NUMBERS[table][key].unit, NUMBERS[table][key].unit),  # FMI's dimensionless unit
+                f"{table} {index + 1} ('{entry}'): {text}",
+                start=value,
+                min=min(low, value),  # a file beyond a spindle's range still runs its own numbers
+                max=max(high, value),
+                limits=f"{why}; within the shaft file's range",
+            )
         )
-    ]
-    out.append(
+    return tuple(out)
+
+
+def _shaft_parameter(shaft):
+    return Variable(
+        "shaft", "", "shaft: catalogue name or path of a shaft TOML file (docs/shaft.md)", "string", start=shaft
+    )
+
+
+def parameter_declarations(shaft, seat_names):
+    """The FMU's parameters: `shaft` (start: the file it was built with, whose seats are `seat_names`), the inputs'
+    change below which a step keeps its outputs, per seat whether its outer ring floats axially, then the shaft
+    file's numbers (number_declarations)."""
+    out = [
+        _shaft_parameter(shaft),
         Variable(
             "tolerance",
             "1",
@@ -66,8 +117,8 @@ def parameter_declarations(shaft, seat_names):
             min=0.0,
             max=TOLERANCE_MAX,
             limits="0 solves every step; above 0.1 the kept outputs could lag the seats by several per cent",
-        )
-    )
+        ),
+    ]
     for seat, name in enumerate(seat_names, start=1):
         out.append(
             Variable(
@@ -80,7 +131,7 @@ def parameter_declarations(shaft, seat_names):
                 start=False,
             )
         )
-    return tuple(out)
+    return (*out, *number_declarations(shaft))
 
 
 def _stiffness_inputs(seat, name):
@@ -190,9 +241,10 @@ FORCE_LIMITS = "far above a spindle bearing's load limit"
 
 def transient_parameter_declarations(shaft, seat_names):
     """SpindleShaftTransient.fmu's parameters: `shaft`, the Newmark substeps per communication step and gamma,
-    whether the bearings' K is used over a step, and per seat the shaft's own damping there."""
+    whether the bearings' K is used over a step, per seat the shaft's own damping there, then the shaft file's numbers
+    (number_declarations)."""
     out = [
-        parameter_declarations(shaft, seat_names)[0],
+        _shaft_parameter(shaft),
         Variable(
             "substeps",
             "",
@@ -242,7 +294,7 @@ def transient_parameter_declarations(shaft, seat_names):
                     limits=SEAT_DAMPING_LIMITS,
                 )
             )
-    return tuple(out)
+    return (*out, *number_declarations(shaft))
 
 
 def _force_inputs(suffix, words, start=0.0):

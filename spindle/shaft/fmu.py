@@ -3,7 +3,9 @@
 Thin (docs/architecture.md, FMUs): the model is spindle.shaft.model, stepped by spindle.shaft.stepper, and every
 variable is declared once in spindle.shaft.declarations. This class registers the inputs and outputs from those
 declarations (bearing_fmu_common.fmi.DeclaredSlave) and hands the input list to the stepper in do_step. The shaft is
-read from a TOML file (parameter `shaft`: catalogue name or path) whose seats must be those the FMU was built with.
+read from a TOML file (parameter `shaft`: catalogue name or path) whose seats must be those the FMU was built with;
+with `shaft_from_file` false its numbers are the parameters shaft_data.* (those of the file the FMU was built with,
+for masters that set no String parameter), and the shaft's reduction is done again at initialisation.
 As in the thermal FMU, a refused parameter fails fmi2ExitInitializationMode (fmi2Error), a bad input at
 initialisation is logged there (fmi2Warning) and refused again by the first doStep (fmi2Discard); the outputs keep
 their last accepted values, so the host can correct the input and continue. The outputs hold no history: a step
@@ -17,8 +19,8 @@ state so that a master can reject a step.
 
 from bearing_fmu_common.fmi import DeclaredSlave, check_parameters, declared_parameter
 
-from .declarations import SEAT_DAMPING, parameter_declarations, transient_parameter_declarations
-from .params import DEFAULT_SHAFT
+from .declarations import SEAT_DAMPING, number_name, parameter_declarations, transient_parameter_declarations
+from .params import DEFAULT_SHAFT, shaft_numbers, shaft_with_numbers
 from .stepper import ShaftStepper
 from .transient_stepper import TransientStepper
 
@@ -36,6 +38,27 @@ class ShaftSlave(DeclaredSlave):
             self.register_variable(declared_parameter(var, self))
         self._ready = False  # parameters accepted (exit_initialization_mode)
         self.register_declared(stepper.inputs, stepper.outputs)
+        self._number_keys = tuple((table, i, key) for table, i, _, key, _ in shaft_numbers(self.default_shaft))
+
+    def _built_shaft(self):
+        """Whether the parameters give the shaft the FMU was built with, whose reduction its stepper holds."""
+        return self.shaft == self.default_shaft and self.shaft_from_file
+
+    def _shaft(self):
+        """The shaft of the parameters: the file named by `shaft`; with shaft_from_file false, that file's structure
+        with the numbers shaft_data.* (params.shaft_with_numbers: the file's checks, a refusal naming the parameter).
+        """
+        if self.shaft_from_file:
+            return self.shaft
+        keys = tuple((table, i, key) for table, i, _, key, _ in shaft_numbers(self.shaft))
+        if keys != self._number_keys:
+            raise ValueError(
+                f"shaft = {self.shaft!r} has other materials, sections or disks than the shaft this FMU was built "
+                f"with ({self.default_shaft!r}), whose numbers the shaft_data.* parameters are; allowed with "
+                "shaft_from_file = false: a shaft file with as many materials, sections and disks"
+            )
+        numbers = {key: getattr(self, number_name(*key)) for key in keys}
+        return shaft_with_numbers(self.shaft, numbers, number_name)
 
 
 class SpindleShaft(ShaftSlave):
@@ -59,7 +82,7 @@ class SpindleShaft(ShaftSlave):
         """The stepper for the parameters (raises on a refused one)."""
         check_parameters(self, self._parameters)
         # the file it was built with: its reduction is done (the costly part of the set-up)
-        stepper = self._stepper if self.shaft == self.default_shaft else ShaftStepper(self.shaft)
+        stepper = self._stepper if self._built_shaft() else ShaftStepper(self._shaft())
         _refuse_other_seats(self.shaft, self.default_shaft, stepper, self._stepper)
         seats = range(1, len(stepper.model.shaft.seat_names) + 1)
         stepper.configure([getattr(self, f"floating_{seat}") for seat in seats], float(self.tolerance))
@@ -105,7 +128,7 @@ class SpindleShaftTransient(ShaftSlave):
     def _build(self):
         """The stepper for the parameters, at rest (raises on a refused one)."""
         check_parameters(self, self._parameters)
-        stepper = self._stepper if self.shaft == self.default_shaft else TransientStepper(self.shaft)
+        stepper = self._stepper if self._built_shaft() else TransientStepper(self._shaft())
         _refuse_other_seats(self.shaft, self.default_shaft, stepper, self._stepper)
         seats = range(1, len(stepper.model.shaft.seat_names) + 1)
         damping = [[getattr(self, f"c_{kind}_{s}") for kind, *_ in SEAT_DAMPING] for s in seats]

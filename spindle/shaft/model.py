@@ -17,7 +17,7 @@ from bearing_fmu_common.blas_threads import single_blas_thread
 from bearing_fmu_common.variables import InputError
 
 from . import beam
-from .params import DEFAULT_SHAFT, read_shaft, shaft_path
+from .params import DEFAULT_SHAFT, ShaftFile, read_shaft, shaft_path
 
 N_FREQUENCIES = 6
 MODES_DEFAULT = 12
@@ -101,10 +101,11 @@ class ShaftModel:
     modes plus the seat and tool-tip nodes (None: no reduction). `evaluate(omega, K_seats, C_seats)` gives the
     modal outputs at speed omega (rad/s) with the bearings' 5x5 matrices at the seats, in the file's seat order and
     each in its bearing's frame (the seat's bearing_axis turns it into the shaft's); `floating` (one boolean per
-    seat) marks the seats whose outer ring floats axially under a constant preload force (seat_stiffness)."""
+    seat) marks the seats whose outer ring floats axially under a constant preload force (seat_stiffness). `shaft`
+    may also be a ShaftFile already read (params.shaft_with_numbers: a file's numbers replaced)."""
 
     def __init__(self, shaft=DEFAULT_SHAFT, modes=MODES_DEFAULT, floating=None):
-        self.shaft = read_shaft(shaft)
+        self.shaft = shaft if isinstance(shaft, ShaftFile) else read_shaft(shaft)
         self.set_floating(floating)
         K, M, G = full_matrices(self.shaft)
         sf = self.shaft

@@ -6,6 +6,7 @@ import math
 import numpy as np
 
 from spindle.shaft import beam
+from spindle.shaft.params import DEFAULT_SHAFT, shaft_path
 
 E, NU, RHO = 210.0e9, 0.3, 7850.0
 G = E / (2.0 * (1.0 + NU))
@@ -112,3 +113,12 @@ def euler_bernoulli_spring_supported(count, L, d_o, k, lam_max=20.0):
         if fa * fb < 0.0 and len(roots) < count:
             roots.append(brentq(_spring_supported_determinant, a, b, args=(kappa,), xtol=1e-14, rtol=1e-15))
     return [(lam / L) ** 2 * math.sqrt(E * I / (RHO * A)) / (2.0 * math.pi) for lam in roots]
+
+
+def default_shaft_with(path, old, new):
+    """Write the default shaft file (spindle/shaft/params/rabreau_b7214c.toml) to `path` with the text `old`, found
+    once in it, replaced by `new` (e.g. one value changed)."""
+    text = shaft_path(DEFAULT_SHAFT).read_text()
+    assert text.count(old) == 1, old
+    path.write_text(text.replace(old, new))
+    return path

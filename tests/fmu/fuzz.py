@@ -224,6 +224,7 @@ SWITCHES = (
     ("bearing_2.", "network_from_file", False),
     ("expansion.", "network_from_file", False),
     ("axial.", "network_from_file", False),
+    ("shaft_data.", "shaft_from_file", False),
     ("Pd", "Pd_from_file", False),
 )
 

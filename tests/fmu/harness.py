@@ -10,6 +10,7 @@ from pathlib import Path
 from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Slave
 
+from tests.fmu.fuzz import Host
 from tests.fmu.probe import set_values
 
 PROBE = Path(__file__).with_name("probe.py")
@@ -46,6 +47,21 @@ def opened(fmu_path, name, parameters=None):
     finally:
         fmu.freeInstance()
         shutil.rmtree(unzip, ignore_errors=True)
+
+
+def init_refusal(fmu_path, parameters):
+    """(status of fmi2ExitInitializationMode, its error messages) of a fresh instance with these parameters set (by
+    their declared type)."""
+    host = Host(str(fmu_path))
+    fmu = host.instance()
+    for name, value in parameters.items():
+        if isinstance(value, str):
+            host.set(fmu, host.variable[name], value)
+        else:
+            host.set_value(fmu, name, value)
+    status = host.call(fmu.exitInitializationMode)
+    fmu.freeInstance()
+    return status, [text for level, text in host.messages if level >= 3]
 
 
 def read_outputs(fmu, vr, names, integers):

@@ -8,7 +8,10 @@
 - the critical speeds (a second eigenproblem) are computed again only when a seat's K or c changes;
 - bad inputs (NaN speed, a negative diagonal stiffness, seats that leave the shaft free) are refused with fmi2Discard
   and a message naming the input, its value and the allowed range; a corrected input steps again; an unknown `shaft`
-  fails fmi2ExitInitializationMode with fmi2Error. Run in a fresh process (tests/fmu/probe.py).
+  fails fmi2ExitInitializationMode with fmi2Error. Run in a fresh process (tests/fmu/probe.py);
+- the shaft file's numbers as parameters (shaft_from_file, shaft_data.*): at their start values the file's outputs bit
+  for bit; a changed outer diameter the model of the file with it; with the switch true a changed number changes
+  nothing; a number out of its range or an inner diameter not below the outer refused at initialisation, named.
 """
 
 import json
@@ -23,8 +26,18 @@ import pytest
 from fmpy import read_model_description, simulate_fmu
 from fmpy.validation import validate_fmu
 
+from spindle.shaft.declarations import number_declarations
+from spindle.shaft.params import DEFAULT_SHAFT
 from spindle.shaft.stepper import ShaftStepper
-from tests.fmu.harness import assert_refused_with, assert_variables_documented, bad_input_report, opened, read_outputs
+from tests.cases import shaft_beams as sb
+from tests.fmu.harness import (
+    assert_refused_with,
+    assert_variables_documented,
+    bad_input_report,
+    init_refusal,
+    opened,
+    read_outputs,
+)
 
 OMEGA = 10000.0 * 2.0 * math.pi / 60.0  # rad/s
 
@@ -46,8 +59,15 @@ def test_validate_fmu_and_variables_are_the_declarations(spindle_shaft_fmu, step
     by_causality = {
         c: [v.name for v in md.modelVariables if v.causality == c] for c in ("parameter", "input", "output")
     }
+    numbers = [v.name for v in number_declarations(DEFAULT_SHAFT)]
+    assert numbers[:3] == [
+        "shaft_from_file",
+        "shaft_data.material_1.youngs_modulus",
+        "shaft_data.material_1.poisson_ratio",
+    ]
+    assert len(numbers) == 1 + 3 + 5 * 3 + 2 * 3  # one material, five sections, two disks
     assert by_causality == {
-        "parameter": ["shaft", "tolerance", "floating_1", "floating_2"],
+        "parameter": ["shaft", "tolerance", "floating_1", "floating_2", *numbers],
         "input": [v.name for v in stepper.inputs],
         "output": [v.name for v in stepper.outputs],
     }
@@ -225,3 +245,67 @@ def test_spindle_check_runs_the_reference_experiment(spindle_shaft_fmu, tmp_path
         shutil.copy(spindle_shaft_fmu.with_name(f"SpindleShaft{suffix}"), tmp_path)
     result = check_fmu(tmp_path / "SpindleShaft.fmu")
     assert result.differences == [] and result.rows == 5 and result.outputs == 24
+
+
+def run_at_speed(path, parameters):
+    """fmpy's simulate_fmu at the reference speed with these parameters: two steps of 0.25 s."""
+    return simulate_fmu(str(path), stop_time=0.5, output_interval=0.25, start_values={"omega": OMEGA, **parameters})
+
+
+def assert_rows_are(result, ref):
+    assert len(result) == 3
+    for row in result:
+        assert {n: row[n] for n in ref} == ref
+
+
+def test_numbers_at_their_start_values_give_the_files_outputs_bit_for_bit(spindle_shaft_fmu, stepper):
+    """shaft_from_file = false with every shaft_data.* at its start value: the shaft rebuilt from them (a reduction
+    of its own at initialisation) gives the file's outputs bit for bit."""
+    ref = stepper.outputs_values(list((start_inputs(stepper) | {"omega": OMEGA}).values()))
+    assert_rows_are(run_at_speed(spindle_shaft_fmu, {"shaft_from_file": False}), ref)
+
+
+def test_a_numeric_outer_diameter_gives_the_model_of_the_file_with_it(spindle_shaft_fmu, stepper, tmp_path):
+    """shaft_data.section_3.outer_diameter = 85 mm (the file: 75 mm): the outputs of ShaftStepper built from the file
+    with 85 mm written in it; with shaft_from_file true the same number changes nothing."""
+    path = sb.default_shaft_with(tmp_path / "thick.toml", "value = 0.075, unit", "value = 0.085, unit")
+    thick = ShaftStepper(path)
+    u = list((start_inputs(thick) | {"omega": OMEGA}).values())
+    ref, default = thick.outputs_values(u), stepper.outputs_values(u)
+    assert ref["f_1"] != default["f_1"]
+    numbers = {"shaft_data.section_3.outer_diameter": 0.085}
+    assert_rows_are(run_at_speed(spindle_shaft_fmu, {"shaft_from_file": False, **numbers}), ref)
+    assert_rows_are(run_at_speed(spindle_shaft_fmu, numbers), default)
+
+
+@pytest.mark.parametrize(
+    "parameters,message",
+    [
+        (
+            {"shaft_data.section_3.outer_diameter": 1.5},
+            "shaft_data.section_3.outer_diameter = 1.5 m is outside the allowed range [0.005, 1] m",
+        ),
+        (
+            {"shaft_from_file": False, "shaft_data.section_3.inner_diameter": 0.08},
+            "shaft_data.section_3.inner_diameter = 0.08 m must be below shaft_data.section_3.outer_diameter = 0.075 m "
+            "(section 'between_bearings'); allowed: an inner diameter in [0, 0.075[ m",
+        ),
+    ],
+)
+def test_a_refused_number_fails_the_initialisation_naming_it(spindle_shaft_fmu, parameters, message):
+    """A number out of its declared range is refused whatever the switch; an inner diameter at the outer one by the
+    file's own check with the switch false."""
+    status, errors = init_refusal(spindle_shaft_fmu, parameters)
+    assert status == 3  # fmi2Error from fmi2ExitInitializationMode
+    assert any(message in text for text in errors), errors
+
+
+def test_numbers_on_a_file_of_another_structure_are_refused(spindle_shaft_fmu, tmp_path):
+    """shaft names a file with the same two seats but one section and no disk: the shaft_data.* numbers (five
+    sections, two disks) cannot be its numbers."""
+    other = sb.shaft_file(tmp_path / "plain.toml", [(0.3, 0.05, 0.0, 6)], seats=(0.1, 0.2))
+    status, errors = init_refusal(spindle_shaft_fmu, {"shaft_from_file": False, "shaft": str(other)})
+    assert status == 3
+    message = f"shaft = {str(other)!r} has other materials, sections or disks than the shaft this FMU was built with"
+    assert any(message in text and "allowed with shaft_from_file = false" in text for text in errors), errors
+    assert init_refusal(spindle_shaft_fmu, {"shaft": str(other)})[0] == 0  # the file's own numbers: accepted

@@ -10,7 +10,10 @@ co-simulation FMU, for bearings driven by the inner ring's displacement.
 - bad inputs (NaN speed, a seat reaction or a K entry out of range) are refused with fmi2Discard and a message naming
   the variable, its value and the allowed range, the outputs keep their last values and a corrected input steps
   again; at initialisation a bad input is a warning and the first doStep refuses it; a refused parameter fails
-  fmi2ExitInitializationMode. Run in a fresh process (tests/fmu/probe.py).
+  fmi2ExitInitializationMode. Run in a fresh process (tests/fmu/probe.py);
+- the shaft file's numbers as parameters (shaft_from_file, shaft_data.*): at their start values the file's motion bit
+  for bit; a heavier tool holder ShaftTransient's on the file with it; with the switch true a changed number changes
+  nothing; a number out of its range refused at initialisation, named.
 """
 
 import math
@@ -22,11 +25,13 @@ import pytest
 from fmpy import read_model_description
 from fmpy.validation import validate_fmu
 
-from spindle.shaft.declarations import NEWMARK_GAMMA, SEAT_DAMPING
+from spindle.shaft.declarations import NEWMARK_GAMMA, SEAT_DAMPING, number_declarations
 from spindle.shaft.model import ShaftModel
+from spindle.shaft.params import DEFAULT_SHAFT
 from spindle.shaft.transient import ShaftTransient
 from spindle.shaft.transient_stepper import TransientStepper
-from tests.fmu.harness import assert_refused_with, assert_variables_documented, bad_input_report, opened
+from tests.cases import shaft_beams as sb
+from tests.fmu.harness import assert_refused_with, assert_variables_documented, bad_input_report, init_refusal, opened
 
 OMEGA = 10000.0 * 2.0 * math.pi / 60.0  # rad/s
 H = 1e-4  # s: communication step
@@ -48,8 +53,9 @@ def test_validate_fmu_and_variables_are_the_declarations(spindle_shaft_transient
         c: [v.name for v in md.modelVariables if v.causality == c] for c in ("parameter", "input", "output")
     }
     damping = [f"c_{kind}_{s}" for s in (1, 2) for kind, *_ in SEAT_DAMPING]
+    numbers = [v.name for v in number_declarations(DEFAULT_SHAFT)]  # as SpindleShaft.fmu's (its test)
     assert by_causality == {
-        "parameter": ["shaft", "substeps", "newmark_gamma", "implicit_coupling", *damping],
+        "parameter": ["shaft", "substeps", "newmark_gamma", "implicit_coupling", *damping, *numbers],
         "input": [v.name for v in stepper.inputs],
         "output": [v.name for v in stepper.outputs],
     }
@@ -94,13 +100,13 @@ def run_closed_loop(fmu, vr, stepper, K, speeds, tip):
     return rows
 
 
-def reference_loop(K, speeds, tip, implicit=True, damping=(2000.0, 2000.0, 0.2)):
-    """ShaftTransient driven as run_closed_loop drives the FMU (its parameters' start values: 1 substep, Newmark's
-    gamma NEWMARK_GAMMA)."""
+def reference_loop(K, speeds, tip, implicit=True, damping=(2000.0, 2000.0, 0.2), model=None):
+    """ShaftTransient of `model` (default: ShaftModel() of the default shaft) driven as run_closed_loop drives the
+    FMU (its parameters' start values: 1 substep, Newmark's gamma NEWMARK_GAMMA)."""
     C = np.zeros((2, 5, 5))
     for i, column in enumerate((0, 0, 1, 2, 2)):
         C[:, i, i] = damping[column]
-    shaft = ShaftTransient(ShaftModel(), speeds[0], C_seats=C, gamma=NEWMARK_GAMMA)
+    shaft = ShaftTransient(model or ShaftModel(), speeds[0], C_seats=C, gamma=NEWMARK_GAMMA)
     rows = []
     for omega in speeds:
         if omega != shaft.omega:
@@ -228,3 +234,54 @@ def test_spindle_check_runs_the_reference_experiment(spindle_shaft_transient_fmu
         shutil.copy(spindle_shaft_transient_fmu.with_name(f"SpindleShaftTransient{suffix}"), tmp_path)
     result = check_fmu(tmp_path / "SpindleShaftTransient.fmu")
     assert result.differences == [] and result.rows == 21 and result.outputs == 25
+
+
+def loop_displacements(path, stepper, parameters):
+    """The seats' and the tool tip's displacement after each of 10 closed-loop steps (run_closed_loop, a 500 N tool-tip
+    force) of the FMU with these parameters."""
+    with opened(path, "numbers", parameters) as (fmu, vr):
+        rows = run_closed_loop(fmu, vr, stepper, seat_stiffness(stepper), [OMEGA] * 10, TIP)
+    return [(as_arrays(row)[0], as_arrays(row)[2]) for row in rows]
+
+
+def reference_displacements(stepper, model=None):
+    rows = reference_loop(seat_stiffness(stepper), [OMEGA] * 10, TIP, model=model)
+    return [(row["seat_displacement"], row["tip_displacement"]) for row in rows]
+
+
+def assert_same_motion(a, b):
+    assert len(a) == len(b) == 10
+    for k, ((seats_a, tip_a), (seats_b, tip_b)) in enumerate(zip(a, b, strict=True)):
+        assert np.array_equal(seats_a, seats_b) and np.array_equal(tip_a, tip_b), k
+
+
+TIP = np.array([500.0, 0.0, 0.0, 0.0, 0.0])
+
+
+def test_numbers_at_their_start_values_give_the_files_motion_bit_for_bit(spindle_shaft_transient_fmu, stepper):
+    numeric = loop_displacements(spindle_shaft_transient_fmu, stepper, {"shaft_from_file": False})
+    assert_same_motion(numeric, reference_displacements(stepper))
+
+
+def test_a_numeric_tool_holder_mass_gives_the_motion_of_the_file_with_it(
+    spindle_shaft_transient_fmu, stepper, tmp_path
+):
+    """shaft_data.disk_1.mass = 4 kg (the file's tool holder: 1.5 kg): ShaftTransient of the file with 4 kg written in
+    it; with shaft_from_file true the same number changes nothing."""
+    path = sb.default_shaft_with(tmp_path / "heavy.toml", "value = 1.5, unit", "value = 4.0, unit")
+    heavy = reference_displacements(stepper, ShaftModel(path))
+    default = reference_displacements(stepper)
+    assert not np.array_equal(heavy[-1][1], default[-1][1])
+    numbers = {"shaft_data.disk_1.mass": 4.0}
+    assert_same_motion(
+        loop_displacements(spindle_shaft_transient_fmu, stepper, {"shaft_from_file": False, **numbers}), heavy
+    )
+    assert_same_motion(loop_displacements(spindle_shaft_transient_fmu, stepper, numbers), default)
+
+
+def test_a_number_out_of_its_range_fails_the_initialisation_naming_it(spindle_shaft_transient_fmu):
+    status, errors = init_refusal(spindle_shaft_transient_fmu, {"shaft_data.disk_1.mass": 2000.0})
+    assert status == 3  # fmi2Error from fmi2ExitInitializationMode
+    assert any("shaft_data.disk_1.mass = 2000.0 kg is outside the allowed range [0, 1000] kg" in e for e in errors), (
+        errors
+    )
