@@ -593,8 +593,9 @@ RIGID_OMEGA_GS = 0.8
 # is 10.4 (case 34)
 LINES_MIN_L = 11.0
 LINES_MIN_H = 0.1
-# Solves whose finest grid is this level or finer, at Moes L >= LINES_MIN_L: relaxed by lines whatever the film, and
-# the FAS coarse grids take the full-weighting pressure (SolverSettings.full_weighting, restrict_pressure). The
+# Solves whose finest grid is this level or finer, at Moes L >= LINES_MIN_L: the FAS coarse grids take the
+# full-weighting pressure (SolverSettings.full_weighting, restrict_pressure), and films of at least FINE_LINES_MIN_H
+# Hertz units are relaxed by lines. The
 # Poiseuille coefficient eps / dX^2 grows four times a level, so on level 5 a film of 0.033 Hertz units couples its
 # nodes along X as a film of 0.083 does on level 3 and point Gauss-Seidel, which does not smooth across the weak
 # direction Y (k^2 = 81 times weaker at k = 9), covers the high-pressure zone. Measured at k = 9, M = 13600, L = 18
@@ -604,8 +605,13 @@ LINES_MIN_H = 0.1
 # already) injection left bursts of h_min (level 4: 694-768 nm, p_max up to 6.9 p_h, 68 cycles; level 5 blew up and
 # converged after a cut of the damping), full weighting converges levels 4 and 5 in 15 and 16 cycles
 # (docs/ehl_solver.md, Fine grids). Level 3 and the contacts of smaller L (Annexe D) keep the solver they were
-# validated with.
+# validated with. Thinner films keep the points (with the full weighting): of the operating box's level-4 contacts at
+# 4.2 GPa and L = 11-15 (tests/validation/test_ehl_operating_box.py), those of films 0.018 (6208 outer race, 353 K,
+# 20 m/s; B7214C inner race, 313 K, 3.16 m/s) diverged by lines at cycle 3, with injection or full weighting, and
+# converge by points in 16 and 42 cycles, as do the films 0.015-0.019; the 6208's inner race at 353 K, 20 m/s (film
+# 0.023) did not converge by points and converges by lines, as does the film 0.022
 FINE_GRID_LEVEL = 4
+FINE_LINES_MIN_H = 0.02
 # eps max(1/dX^2, 1/(k dY)^2) from which a Gauss-Seidel node is on a line: with 1 (every Gauss-Seidel node) the
 # heavy contacts at L = 18 diverged; 10 and 100 converge them and the light ones alike (k = 9, M = 30000 and
 # 100-1000 at L = 20-40: 16 / 27 cycles and 10-37 / 8-28)
@@ -720,8 +726,8 @@ def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=3, coarsest=0, s
     default contact_box of the film estimate (film_estimate: Hamrock-Dowson's central film, or the rigid
     regimes' where larger). Without settings, the relaxation runs along lines and takes the density's
     derivative where that box grows or the film is thick at large Moes L (LINES_MIN_L; SolverSettings.xi_lines,
-    density_jac), at every film of large L on levels 4 and 5, whose coarse grids then take the full-weighting
-    pressure (FINE_GRID_LEVEL, SolverSettings.full_weighting), and by points elsewhere."""
+    density_jac), on levels 4 and 5 at large L down to films of FINE_LINES_MIN_H, where the coarse grids take the
+    full-weighting pressure as well (FINE_GRID_LEVEL, SolverSettings.full_weighting), and by points elsewhere."""
     _, U, G, _, b, h_c_guess = contact_estimate(Rx, Ry, load, u_e, E_red, eta0, fluid)
     H_c = h_c_guess * Rx / b**2  # in Hertz units
     own_box = contact_box(H_c)
@@ -730,8 +736,9 @@ def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=3, coarsest=0, s
     rigid = own_box[2] >= 2.0 * BOX_GROWTH_MAX  # the largest box: a nearly rigid contact
     box = box or own_box
     if settings is None:
-        fine = G * (2.0 * U) ** 0.25 >= LINES_MIN_L and finest >= FINE_GRID_LEVEL
-        lines = thick or fine or (G * (2.0 * U) ** 0.25 >= LINES_MIN_L and H_c >= LINES_MIN_H)
+        large_L = G * (2.0 * U) ** 0.25 >= LINES_MIN_L
+        fine = large_L and finest >= FINE_GRID_LEVEL
+        lines = thick or (large_L and H_c >= (FINE_LINES_MIN_H if fine else LINES_MIN_H))
         settings = SolverSettings(
             density_jac=lines,
             xi_lines=XI_LINES if lines else math.inf,

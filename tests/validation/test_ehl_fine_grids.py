@@ -8,8 +8,9 @@ p_h 3.5 GPa, film 0.033 Hertz units) and the 6208's at M = 2500, L = 23 (k = 9.3
 level 4 at cycle 8 and met the criterion on level 5 only in a calm stretch between bursts of h_min (276-533 nm, 84
 cycles), the 6208's, relaxed by lines with the injected coarse pressure, swung on level 4 (h_min 694-768 nm, p_max
 up to 6.9 p_h, 68 cycles) and blew up on level 5 before a cut of the damping. From level 4 on at Moes L >= 11 the
-solver relaxes by lines and gives its coarse grids the full-weighting pressure (FINE_GRID_LEVEL); measured: levels 4
-and 5 converge in 14 and 17 cycles (B7214C) and 15 and 16 (6208), h_min steady from cycle to cycle.
+solver relaxes films of at least 0.02 Hertz units by lines and gives its coarse grids the full-weighting pressure
+(FINE_GRID_LEVEL, FINE_LINES_MIN_H); measured: levels 4 and 5 converge in 14 and 17 cycles (B7214C) and 15 and 16
+(6208), h_min steady from cycle to cycle.
 
 Asserted: levels 3, 4 and 5 converge by the solver's criterion with a positive film below h_c; on levels 4 and 5 no
 cycle swings, i.e. the spread of h_c and h_min over the last four cycles (the criterion's measure, Solution.history)
