@@ -8,7 +8,11 @@ cached). A grid study (`--study`) solves each chosen case on every level of `--s
 observed order and the Richardson estimate of h_c and h_min from the three finest levels.
 
     python -m benchmarks.ehl_solver [--levels 1,2,3] [--cases 1,6,...]      -> docs/reports/ehl_solver.md, .png
-    python -m benchmarks.ehl_solver --study 6,28 [--study-levels 1,2,3,4]   -> docs/reports/ehl_grid_study.md
+    python -m benchmarks.ehl_solver --study 6,28 [--study-levels 1,2,3,4] [--bearing-study]
+                                                                            -> docs/reports/ehl_grid_study.md
+
+With --bearing-study the grid study adds the wide bearing contacts of large Moes L (tests/cases/ehl_bearing_contacts)
+on levels 3, 4 and 5.
 """
 
 import os
@@ -25,6 +29,7 @@ import numpy as np  # noqa: E402
 
 from bearing_fmu.models import ehl_numerical as en  # noqa: E402
 from tests.cases.ehl_annexe_d import FLUID, LEVEL, cases, richardson, solve  # noqa: E402
+from tests.cases.ehl_bearing_contacts import CONTACTS, LUBRICANT, inner_contact  # noqa: E402
 
 from .render import cli, metric  # noqa: E402
 
@@ -108,10 +113,11 @@ INTRO = (
 )
 
 
-def measure(levels=(LEVEL,), chosen=(), study=(), study_levels=(1, 2, 3, 4)):
-    """The solver on the levels (all cases, or those chosen); with study, the grid study of those cases instead."""
+def measure(levels=(LEVEL,), chosen=(), study=(), study_levels=(1, 2, 3, 4), bearing_study=False):
+    """The solver on the levels (all cases, or those chosen); with study, the grid study of those cases instead (and
+    of the bearing contacts with bearing_study)."""
     if study:
-        return grid_study(study, study_levels)
+        return grid_study(study, study_levels, bearing_study)
     runs, loads = {}, []
     for level in levels:
         solved = [run_case(c, level) for c in cases() if not chosen or c["n"] in chosen]
@@ -170,13 +176,50 @@ def study_row(c, levels):
     return row + [" ".join("y" if s.converged else "n" for s in sols)]
 
 
-def grid_study(chosen, levels):
+BEARING_LEVELS = (3, 4, 5)
+
+
+def bearing_row(bearing, M, L):
+    """A bearing contact on BEARING_LEVELS: its node, the films per level, their orders, Richardson estimates and the
+    errors of levels 3 and 4 against them, cycles and convergence."""
+    args, (T, u, Q) = inner_contact(bearing, M, L)
+    sols = [en.solve_contact(*args, finest=level) for level in BEARING_LEVELS]
+    row = [f"{bearing} inner", M, L, T, u, Q]
+    for attr in ("h_c", "h_min"):
+        h = [getattr(s, attr) * 1e9 for s in sols]
+        order, est = richardson(h)
+        row += [" / ".join(f"{v:.1f}" for v in h), order, est, 100.0 * (h[0] - est) / est, 100.0 * (h[1] - est) / est]
+    row.append(" / ".join(f"{'y' if s.converged else 'n'} {s.cycles}" for s in sols))
+    print(row, flush=True)
+    return row
+
+
+def bearing_study():
+    """The blocks and metrics of the bearing contacts' grid study."""
+    films = "per level nm|order|Richardson nm|level 3 error %|level 4 error %".split("|")
+    columns = ["contact", "M", "L", "T K", "u_e m/s", "Q N"] + [f"{q} {c}" for q in ("h_c", "h_min") for c in films]
+    columns.append("converged, cycles per level")
+    formats = "{} {:g} {:g} {:.1f} {:.3g} {:.0f}".split() + "{} {:.2f} {:.1f} {:+.2f} {:+.2f}".split() * 2 + ["{}"]
+    rows = [bearing_row(*contact) for contact in CONTACTS]
+    text = (
+        f"Wide bearing contacts of large Moes L (k = 9.03 and 9.37, {LUBRICANT}, Roelands and Dowson-Higginson through "
+        "the oil's viscosity and pressure-viscosity coefficient, film-table nodes: the oil temperature and speed of "
+        "the node's L, the load of its M) on levels 3, 4 and 5; Richardson estimate and order from the three."
+    )
+    blocks = [{"text": text}, {"table": {"columns": columns, "formats": formats, "rows": rows}}]
+    found = [metric(f"{r[0]} M = {r[1]:g}, L = {r[2]:g}: level {LEVEL} {q} error vs Richardson", r[i] / 100.0, "1",
+                    "error") for r in rows for q, i in (("h_c", 9), ("h_min", 14))]  # fmt: skip
+    return blocks, found
+
+
+def grid_study(chosen, levels, bearings=False):
     films = f"per level nm|order|Richardson nm|level {LEVEL} error %|thesis nm|Richardson vs thesis %".split("|")
     columns = ["case", "k", "M"] + [f"{q} {c}" for q in ("h_c", "h_min") for c in films] + ["converged"]
     formats = "{} {:g} {:g}".split() + "{} {:.2f} {:.1f} {:+.1f} {:g} {:+.1f}".split() * 2 + ["{}"]
     rows = [study_row(c, list(levels)) for c in cases() if c["n"] in chosen]
-    values = dict(cases=",".join(map(str, chosen)), levels=",".join(map(str, levels)), default=LEVEL)
-    text = "`python -m benchmarks.ehl_solver --study {cases} --study-levels {levels}`; the default level is {default}."
+    values = dict(cases=",".join(map(str, chosen)), levels=",".join(map(str, levels)), default=LEVEL,
+                  more=" --bearing-study" if bearings else "")  # fmt: skip
+    text = "`python -m benchmarks.ehl_solver --study {cases} --study-levels {levels}{more}`; the default level is {default}."
     blocks = [{"text": text, "values": values},
               {"table": {"columns": columns, "formats": formats, "rows": rows}}]  # fmt: skip
     title = "Grid convergence of the numerical EHL solver (Annexe D cases)"
@@ -188,6 +231,11 @@ def grid_study(chosen, levels):
     # the default grid's discretisation error of each case against its Richardson estimate (columns 6 and 12)
     found = [metric(f"case {r[0]}: level {LEVEL} {q} error vs Richardson", r[i] / 100.0, "1", "error")
              for r in rows for q, i in (("h_c", 6), ("h_min", 12)) if LEVEL in levels]  # fmt: skip
+    if bearings:
+        more, more_metrics = bearing_study()
+        blocks += more
+        found += more_metrics
+        title = "Grid convergence of the numerical EHL solver (Annexe D cases and bearing contacts)"
     return dict(name="ehl_grid_study", title=title, about=about, blocks=blocks, metrics=found)
 
 
@@ -197,9 +245,12 @@ def main(argv=None):
     ap.add_argument("--cases", default="", help="cases (1..55) to solve; all by default")
     ap.add_argument("--study", default="", help="cases of a grid study (on --study-levels)")
     ap.add_argument("--study-levels", default="1,2,3,4")
-    args = {k: tuple(int(v) for v in text.split(",") if v) for k, text in vars(ap.parse_args(argv)).items()}
+    ap.add_argument("--bearing-study", action="store_true", help="the grid study adds the bearing contacts, levels 3-5")
+    parsed = vars(ap.parse_args(argv))
+    bearings = parsed.pop("bearing_study")
+    args = {k: tuple(int(v) for v in text.split(",") if v) for k, text in parsed.items()}
     cli(measure, "ehl_solver", levels=args["levels"], chosen=args["cases"], study=args["study"],
-        study_levels=args["study_levels"])  # fmt: skip
+        study_levels=args["study_levels"], bearing_study=bearings)  # fmt: skip
 
 
 if __name__ == "__main__":

@@ -157,8 +157,8 @@ GRID_STUDY_CASES = (6, 11, 14, 17, 20, 28, 33, 44, 47)  # a light, a heavy and a
 VARIANTS = {
     "ehl_grid_study": (
         "ehl_solver",
-        dict(study=GRID_STUDY_CASES),
-        "python -m benchmarks.ehl_solver --study " + ",".join(map(str, GRID_STUDY_CASES)),
+        dict(study=GRID_STUDY_CASES, bearing_study=True),
+        "python -m benchmarks.ehl_solver --study " + ",".join(map(str, GRID_STUDY_CASES)) + " --bearing-study",
     ),
 }
 

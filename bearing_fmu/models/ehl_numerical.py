@@ -160,6 +160,9 @@ class SolverSettings:
     # eps max(1/dX^2, 1/(k dY)^2) from which a Gauss-Seidel node with a pressurised star is relaxed on its line
     # along X (kernels.ehl_solver.line_gauss_seidel) instead of point by point; inf: no lines
     xi_lines: float = math.inf
+    # the coarse grid's pressure in the FAS cycle: injection (False), or full weighting at the coarse nodes whose
+    # nine fine nodes are all wet and injection next to a cavitated one (True, restrict_pressure)
+    full_weighting: bool = False
 
 
 @dataclass
@@ -242,6 +245,26 @@ def restrict_full_weighting(r):
         + r[1:-3:2, 1:-3:2] + r[3:-1:2, 1:-3:2] + r[1:-3:2, 3:-1:2] + r[3:-1:2, 3:-1:2]
     ) / 16.0  # fmt: skip
     return c
+
+
+def restrict_pressure(P, full_weighting):
+    """The coarse grid's pressure (-) of the FAS cycle: injection of the fine pressure P, or with full_weighting its
+    full-weighting average at the coarse nodes whose nine fine nodes are all wet (injection next to a cavitated
+    node keeps the free boundary where the fine grid has it; Venner and Lubrecht, Multilevel Methods in
+    Lubrication, 2000). The coarse grid evaluates its film, eps and the FAS right-hand side from this pressure:
+    injected, a fine-grid pressure spike or lateral edge a few nodes wide reaches the coarse grid as a sample the
+    coarse grid cannot represent, and the correction it returns put spikes and bursts of h_min into the fine
+    grids of wide contacts (docs/ehl_solver.md, Fine grids)."""
+    Pc = P[::2, ::2].copy()
+    if full_weighting:
+        wet = P > 0.0
+        stars = np.ones((P.shape[0] - 2, P.shape[1] - 2), bool)  # fine node and its eight neighbours wet
+        for di in range(3):
+            for dj in range(3):
+                stars &= wet[di : di + P.shape[0] - 2, dj : dj + P.shape[1] - 2]
+        interior = stars[1::2, 1::2]  # the fine nodes 2, 4, .. of the coarse interior nodes
+        Pc[1:-1, 1:-1][interior] = restrict_full_weighting(P)[1:-1, 1:-1][interior]
+    return Pc
 
 
 def prolong_bilinear(c):
@@ -349,7 +372,7 @@ def _cycle(levels, l, P, F, target, H0):
     r = F - L.operator(P, H0)
     r[P <= 0.0] = 0.0  # cavitated nodes: the complementarity holds, no defect to correct
     C = levels[l - 1]
-    Pc = P[::2, ::2].copy()
+    Pc = restrict_pressure(P, s.full_weighting)
     Pc_old = Pc.copy()
     Fc = C.operator(Pc, H0) + restrict_full_weighting(r)
     Fc[0, :] = Fc[-1, :] = Fc[:, 0] = Fc[:, -1] = 0.0
@@ -570,6 +593,25 @@ RIGID_OMEGA_GS = 0.8
 # is 10.4 (case 34)
 LINES_MIN_L = 11.0
 LINES_MIN_H = 0.1
+# Solves whose finest grid is this level or finer, at Moes L >= LINES_MIN_L: the FAS coarse grids take the
+# full-weighting pressure (SolverSettings.full_weighting, restrict_pressure), and films of at least FINE_LINES_MIN_H
+# Hertz units are relaxed by lines. The
+# Poiseuille coefficient eps / dX^2 grows four times a level, so on level 5 a film of 0.033 Hertz units couples its
+# nodes along X as a film of 0.083 does on level 3 and point Gauss-Seidel, which does not smooth across the weak
+# direction Y (k^2 = 81 times weaker at k = 9), covers the high-pressure zone. Measured at k = 9, M = 13600, L = 18
+# (B7214C inner race, film 0.033; points): level 4 blew up at cycle 8, level 5 had bursts of h_min (276-533 nm) for
+# 84 cycles; by lines with injection level 5 still swung (h_min 448-544 nm, 23 cycles), by lines with the full
+# weighting levels 4 and 5 converge in 14 and 17 cycles without a swing. At M = 2500, L = 23 (6208 inner race, lines
+# already) injection left bursts of h_min (level 4: 694-768 nm, p_max up to 6.9 p_h, 68 cycles; level 5 blew up and
+# converged after a cut of the damping), full weighting converges levels 4 and 5 in 15 and 16 cycles
+# (docs/ehl_solver.md, Fine grids). Level 3 and the contacts of smaller L (Annexe D) keep the solver they were
+# validated with. Thinner films keep the points (with the full weighting): of the operating box's level-4 contacts at
+# 4.2 GPa and L = 11-15 (tests/validation/test_ehl_operating_box.py), those of films 0.018 (6208 outer race, 353 K,
+# 20 m/s; B7214C inner race, 313 K, 3.16 m/s) diverged by lines at cycle 3, with injection or full weighting, and
+# converge by points in 16 and 42 cycles, as do the films 0.015-0.019; the 6208's inner race at 353 K, 20 m/s (film
+# 0.023) did not converge by points and converges by lines, as does the film 0.022
+FINE_GRID_LEVEL = 4
+FINE_LINES_MIN_H = 0.02
 # eps max(1/dX^2, 1/(k dY)^2) from which a Gauss-Seidel node is on a line: with 1 (every Gauss-Seidel node) the
 # heavy contacts at L = 18 diverged; 10 and 100 converge them and the light ones alike (k = 9, M = 30000 and
 # 100-1000 at L = 20-40: 16 / 27 cycles and 10-37 / 8-28)
@@ -684,7 +726,8 @@ def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=3, coarsest=0, s
     default contact_box of the film estimate (film_estimate: Hamrock-Dowson's central film, or the rigid
     regimes' where larger). Without settings, the relaxation runs along lines and takes the density's
     derivative where that box grows or the film is thick at large Moes L (LINES_MIN_L; SolverSettings.xi_lines,
-    density_jac), and by points elsewhere."""
+    density_jac), on levels 4 and 5 at large L down to films of FINE_LINES_MIN_H, where the coarse grids take the
+    full-weighting pressure as well (FINE_GRID_LEVEL, SolverSettings.full_weighting), and by points elsewhere."""
     _, U, G, _, b, h_c_guess = contact_estimate(Rx, Ry, load, u_e, E_red, eta0, fluid)
     H_c = h_c_guess * Rx / b**2  # in Hertz units
     own_box = contact_box(H_c)
@@ -693,11 +736,14 @@ def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=3, coarsest=0, s
     rigid = own_box[2] >= 2.0 * BOX_GROWTH_MAX  # the largest box: a nearly rigid contact
     box = box or own_box
     if settings is None:
-        lines = thick or (G * (2.0 * U) ** 0.25 >= LINES_MIN_L and H_c >= LINES_MIN_H)
+        large_L = G * (2.0 * U) ** 0.25 >= LINES_MIN_L
+        fine = large_L and finest >= FINE_GRID_LEVEL
+        lines = thick or (large_L and H_c >= (FINE_LINES_MIN_H if fine else LINES_MIN_H))
         settings = SolverSettings(
             density_jac=lines,
             xi_lines=XI_LINES if lines else math.inf,
             omega_gs=RIGID_OMEGA_GS if rigid else (LINES_OMEGA_GS if lines else SolverSettings.omega_gs),
+            full_weighting=fine,
         )
     grids = grid_hierarchy(Rx, Ry, load, u_e, E_red, eta0, fluid, finest, coarsest, box)
     return solve_grids(grids, settings, h_c_guess)

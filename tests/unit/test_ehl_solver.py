@@ -345,3 +345,22 @@ def test_film_level_is_the_coarsest_level_that_resolves_the_film():
         if level > en.COARSEST_RESOLVING_LEVEL:
             assert spacing(H_c, level - 1) > en.RESOLVING_SPACING * H_c
     assert en.film_level(0.16) == 3  # Annexe D's light loads (H_c ~ 0.16, case 6)
+
+
+def test_the_coarse_pressure_is_full_weighting_inside_the_wet_zone_and_injection_next_to_cavitation():
+    """restrict_pressure (the FAS coarse grid's pressure, docs/ehl_solver.md, Fine grids): without full weighting the
+    fine pressure at every other node; with it the full-weighting average (1/16 of the 3 x 3 stencil 1 2 1 / 2 4 2 /
+    1 2 1) wherever the coarse node's nine fine nodes are wet, and still the injected value next to a cavitated
+    node, so the coarse free boundary stays where the fine grid has it."""
+    rng = np.random.default_rng(3)
+    P = rng.uniform(0.5, 1.5, (9, 9))
+    P[0, :] = P[-1, :] = P[:, 0] = P[:, -1] = 0.0
+    P[5, 6] = 0.0  # a cavitated node: the coarse node (3, 3) at fine (6, 6) is its neighbour
+    assert np.array_equal(en.restrict_pressure(P, False), P[::2, ::2])
+    Pc = en.restrict_pressure(P, True)
+    weights = np.outer([1.0, 2.0, 1.0], [1.0, 2.0, 1.0]) / 16.0
+    assert Pc[1, 1] == pytest.approx(np.sum(weights * P[1:4, 1:4]), rel=1e-12)
+    assert Pc[1, 1] != P[2, 2]
+    assert Pc[3, 3] == P[6, 6]  # next to the cavitated node: injection
+    assert Pc[1, 3] == pytest.approx(np.sum(weights * P[1:4, 5:8]), rel=1e-12)  # two nodes from the cavitated one
+    assert np.all(Pc[0, :] == 0.0) and np.all(Pc[:, 0] == 0.0)
