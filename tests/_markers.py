@@ -50,7 +50,10 @@ SLOW = {  # test file -> test function names (every parametrisation of them)
 # tolerances, docs/ehl_solver.md, a heavy contact on levels 3-5, 1-3 min, and the operating box's sweep, 64 solves on
 # levels 3-4): `make test-ehl-full`, outside `make test`
 EHL_FULL = {
-    "tests/validation/test_ehl_annexe_d.py": {"test_every_case_matches_annexe_d"},
+    "tests/validation/test_ehl_annexe_d.py": {
+        "test_every_case_matches_annexe_d",
+        "test_the_cases_outside_converge_and_are_those_documented",
+    },
     "tests/validation/test_ehl_heavy_contacts.py": {"test_a_heavy_contact_is_solved_on_the_level_its_film_needs"},
     "tests/validation/test_ehl_fine_grids.py": {"test_levels_4_and_5_converge_at_wide_contacts_of_large_L"},
     "tests/validation/test_ehl_operating_box.py": {

