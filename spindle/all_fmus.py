@@ -181,15 +181,21 @@ SHAFT_FMUS = {
 }
 
 
+def shaft_kind(name):
+    """The shaft FMU of SHAFT_FMUS that the FMU `name` is: itself, or the generic one of a configured FMU
+    `<Name>_<configuration>`."""
+    return name.split("_", 1)[0]
+
+
 def shaft_reference_inputs_of(name, shaft=DEFAULT_SHAFT):
-    """The constant reference inputs of the shaft FMU `name` (spindle check)."""
-    return transient_reference_inputs(shaft) if name == TRANSIENT_FMU else shaft_reference_inputs(shaft)
+    """The constant reference inputs of the shaft FMU `name` (spindle check; a configured one's too)."""
+    return transient_reference_inputs(shaft) if shaft_kind(name) == TRANSIENT_FMU else shaft_reference_inputs(shaft)
 
 
 def build_shaft_fmu(out_dir=DEFAULT_OUT, shaft=DEFAULT_SHAFT, name=SHAFT_FMU):
-    """Build the shaft FMU `name` (SHAFT_FMUS) exposing the seats of `shaft` (a catalogue name: the start value of
-    `shaft`)."""
-    class_name, reference_rows_of, (stop, step) = SHAFT_FMUS[name]
+    """Build the shaft FMU `name` (SHAFT_FMUS, or `<Name>_<configuration>` for a configured one) exposing the seats
+    of `shaft` (a catalogue name: the start value of `shaft` and of the numeric shaft_data.* parameters)."""
+    class_name, reference_rows_of, (stop, step) = SHAFT_FMUS[shaft_kind(name)]
     rows, inputs = reference_rows_of(shaft)
     held = [{"time": 0.0, **inputs}, {"time": stop, **inputs}]
     in_csv = bearing_build.csv_text(held, lambda v: repr(float(v)))
@@ -213,8 +219,8 @@ def build_shaft_fmu(out_dir=DEFAULT_OUT, shaft=DEFAULT_SHAFT, name=SHAFT_FMU):
 
 
 def shaft_variables(name=SHAFT_FMU, shaft=DEFAULT_SHAFT):
-    """variables_markdown() arguments of the shaft FMU `name` built with `shaft`."""
-    if name == TRANSIENT_FMU:
+    """variables_markdown() arguments of the shaft FMU `name` (a configured one's too) built with `shaft`."""
+    if shaft_kind(name) == TRANSIENT_FMU:
         stepper = TransientStepper(shaft)
         declare, slave = transient_parameter_declarations, SpindleShaftTransient
         connect = (

@@ -441,8 +441,8 @@ def _add_run_commands(sub, raw):
     p.add_argument(
         "--config",
         metavar="FILE",
-        help="a configuration file (bearing, lubricant, race control, network): build the FMUs whose start values "
-        "they are, named <Name>_<name>.fmu (docs/parameters.md, configured FMUs)",
+        help="a configuration file (bearing, lubricant, race control, network, shaft): build the FMUs whose start "
+        "values they are, named <Name>_<name>.fmu (docs/parameters.md, configured FMUs)",
     )
     p = sub.add_parser("run", help="run a run file; write CSV and PNG", epilog=EXIT_CODES, formatter_class=raw)
     p.add_argument("runfile")

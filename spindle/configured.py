@@ -12,9 +12,11 @@ chosen set and a master that sets no parameter at all (or drops String parameter
     lubricant = "iso_vg68_mineral"  # catalogue name or lubricant TOML file (the FMU carries the file)
     race_control = "hybrid"         # quasi-static FMUs: outer | inner | hybrid (default: the scene's)
     spindle = "b7214c_x_pair"       # thermal FMUs: a network of the catalogue (spindle/thermal/params)
+    shaft = "rabreau_b7214c"        # shaft FMUs: a shaft of the catalogue (spindle/shaft/params)
     fmus = ["BearingDEM", "Bearing", "SpindleThermal"]   # which FMUs; default: every one that takes the choices
 
-A bearing FMU is configured with bearing, lubricant (and race_control), a thermal FMU with spindle. Without
+A bearing FMU is configured with bearing, lubricant (and race_control), a thermal FMU with spindle, a shaft FMU
+with shaft. Without
 `fmus`, an FMU whose model refuses the bearing (the analytic fidelity takes deep-groove bearings only) is left
 out with a note; named in `fmus`, the refusal is an error.
 """
@@ -28,10 +30,11 @@ from bearing_fmu.params import ParameterError, catalogue, catalogue_files, load_
 from bearing_fmu.scene import RACE_CONTROLS, Scene
 from bearing_fmu_common.variables import InputError
 
-from .all_fmus import THERMAL_FMUS, build_thermal_fmu
+from .all_fmus import SHAFT_FMUS, THERMAL_FMUS, build_shaft_fmu, build_thermal_fmu
+from .shaft.params import CATALOGUE as SHAFTS
 from .thermal.model import CATALOGUE as NETWORKS
 
-KEYS = ("name", "bearing", "lubricant", "race_control", "spindle", "fmus")
+KEYS = ("name", "bearing", "lubricant", "race_control", "spindle", "shaft", "fmus")
 
 
 def _scene_fmus():
@@ -76,7 +79,10 @@ def read_configuration(path):
         raise ConfigurationError(
             f"{path}: spindle = {table['spindle']!r} is not a network of the catalogue ({networks})"
         )
-    known = sorted(_scene_fmus()) + sorted(THERMAL_FMUS)
+    if "shaft" in table and not (SHAFTS / f"{table['shaft']}.toml").is_file():
+        shafts = ", ".join(sorted(p.stem for p in SHAFTS.glob("*.toml")))
+        raise ConfigurationError(f"{path}: shaft = {table['shaft']!r} is not a shaft of the catalogue ({shafts})")
+    known = sorted(_scene_fmus()) + sorted(THERMAL_FMUS) + sorted(SHAFT_FMUS)
     fmus = table.get("fmus", [])
     if not isinstance(fmus, list) or any(f not in known for f in fmus):
         raise ConfigurationError(f"{path}: fmus = {fmus!r}: a list of FMU names among {', '.join(known)}")
@@ -141,6 +147,10 @@ def build_configured(config_path, out_dir):
         for fmu_name, (_, axial_float) in THERMAL_FMUS.items():
             if not wanted or fmu_name in wanted:
                 paths.append(build_thermal_fmu(f"{fmu_name}_{suffix}", table["spindle"], axial_float, out_dir))
+    if "shaft" in table:
+        for fmu_name in SHAFT_FMUS:
+            if not wanted or fmu_name in wanted:
+                paths.append(build_shaft_fmu(out_dir, table["shaft"], f"{fmu_name}_{suffix}"))
     return paths, notes
 
 
