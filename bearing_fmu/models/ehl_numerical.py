@@ -593,7 +593,7 @@ RIGID_OMEGA_GS = 0.8
 # is 10.4 (case 34)
 LINES_MIN_L = 11.0
 LINES_MIN_H = 0.1
-# Solves whose finest grid is this level or finer, at Moes L >= LINES_MIN_L: the FAS coarse grids take the
+# Solves whose finest grid is this level or finer, at Moes L >= FINE_MIN_L: the FAS coarse grids take the
 # full-weighting pressure (SolverSettings.full_weighting, restrict_pressure), and films of at least FINE_LINES_MIN_H
 # Hertz units are relaxed by lines. The
 # Poiseuille coefficient eps / dX^2 grows four times a level, so on level 5 a film of 0.033 Hertz units couples its
@@ -604,14 +604,22 @@ LINES_MIN_H = 0.1
 # weighting levels 4 and 5 converge in 14 and 17 cycles without a swing. At M = 2500, L = 23 (6208 inner race, lines
 # already) injection left bursts of h_min (level 4: 694-768 nm, p_max up to 6.9 p_h, 68 cycles; level 5 blew up and
 # converged after a cut of the damping), full weighting converges levels 4 and 5 in 15 and 16 cycles
-# (docs/ehl_solver.md, Fine grids). Level 3 and the contacts of smaller L (Annexe D) keep the solver they were
-# validated with. Thinner films keep the points (with the full weighting): of the operating box's level-4 contacts at
+# (docs/ehl_solver.md, Fine grids). Level 3 and the contacts of smaller L keep the solver they were validated with.
+# Thinner films keep the points (with the full weighting): of the operating box's level-4 contacts at
 # 4.2 GPa and L = 11-15 (tests/validation/test_ehl_operating_box.py), those of films 0.018 (6208 outer race, 353 K,
 # 20 m/s; B7214C inner race, 313 K, 3.16 m/s) diverged by lines at cycle 3, with injection or full weighting, and
 # converge by points in 16 and 42 cycles, as do the films 0.015-0.019; the 6208's inner race at 353 K, 20 m/s (film
 # 0.023) did not converge by points and converges by lines, as does the film 0.022
 FINE_GRID_LEVEL = 4
 FINE_LINES_MIN_H = 0.02
+# Moes L (with alpha* at p_h) from which the fine grids take these settings: 10, below LINES_MIN_L. Annexe D cases 34
+# and 35 (k = 5.03 and 3.96, L = 10.4 and 10.0, films 0.19 and 0.18 Hertz units) converge on level 3 by points, but
+# on level 4 they ran 120 cycles by points with injection and on level 5 diverged after two cuts of the damping;
+# with lines and full weighting they converge in 14 and 17-21 cycles, as does the B7214C's inner contact at M = 1000,
+# L = 10.4 (10 and 7 cycles; not on levels 4-5 before). Case 36 (L = 9.6) and every case of smaller L converge on
+# level 4 by points with injection, which they keep; their level 5 is not settled at cases 36-38 (L = 8.6-9.6), to
+# which no level rule sends a film (docs/ehl_solver.md, Fine grids)
+FINE_MIN_L = 10.0
 # eps max(1/dX^2, 1/(k dY)^2) from which a Gauss-Seidel node is on a line: with 1 (every Gauss-Seidel node) the
 # heavy contacts at L = 18 diverged; 10 and 100 converge them and the light ones alike (k = 9, M = 30000 and
 # 100-1000 at L = 20-40: 16 / 27 cycles and 10-37 / 8-28)
@@ -726,8 +734,9 @@ def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=3, coarsest=0, s
     default contact_box of the film estimate (film_estimate: Hamrock-Dowson's central film, or the rigid
     regimes' where larger). Without settings, the relaxation runs along lines and takes the density's
     derivative where that box grows or the film is thick at large Moes L (LINES_MIN_L; SolverSettings.xi_lines,
-    density_jac), on levels 4 and 5 at large L down to films of FINE_LINES_MIN_H, where the coarse grids take the
-    full-weighting pressure as well (FINE_GRID_LEVEL, SolverSettings.full_weighting), and by points elsewhere."""
+    density_jac), on levels 4 and 5 from Moes L = FINE_MIN_L down to films of FINE_LINES_MIN_H, where the coarse
+    grids take the full-weighting pressure as well (FINE_GRID_LEVEL, SolverSettings.full_weighting), and by points
+    elsewhere."""
     _, U, G, _, b, h_c_guess = contact_estimate(Rx, Ry, load, u_e, E_red, eta0, fluid)
     H_c = h_c_guess * Rx / b**2  # in Hertz units
     own_box = contact_box(H_c)
@@ -736,9 +745,9 @@ def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=3, coarsest=0, s
     rigid = own_box[2] >= 2.0 * BOX_GROWTH_MAX  # the largest box: a nearly rigid contact
     box = box or own_box
     if settings is None:
-        large_L = G * (2.0 * U) ** 0.25 >= LINES_MIN_L
-        fine = large_L and finest >= FINE_GRID_LEVEL
-        lines = thick or (large_L and H_c >= (FINE_LINES_MIN_H if fine else LINES_MIN_H))
+        L_star = G * (2.0 * U) ** 0.25  # Moes L with the fluid's alpha* at p_h
+        fine = finest >= FINE_GRID_LEVEL and L_star >= FINE_MIN_L
+        lines = thick or (H_c >= FINE_LINES_MIN_H if fine else (L_star >= LINES_MIN_L and H_c >= LINES_MIN_H))
         settings = SolverSettings(
             density_jac=lines,
             xi_lines=XI_LINES if lines else math.inf,
