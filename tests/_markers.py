@@ -56,6 +56,7 @@ EHL_FULL = {
     },
     "tests/validation/test_ehl_heavy_contacts.py": {"test_a_heavy_contact_is_solved_on_the_level_its_film_needs"},
     "tests/validation/test_ehl_fine_grids.py": {"test_levels_4_and_5_converge_at_wide_contacts_of_large_L"},
+    "tests/validation/test_ehl_thin_films.py": {"test_a_thin_film_is_solved_on_the_level_its_film_needs"},
     "tests/validation/test_ehl_operating_box.py": {
         "test_every_contact_of_the_operating_box_converges_on_its_level",
         "test_the_6208_at_3_kN_converges_at_every_speed_near_1700_rad_s",

@@ -692,7 +692,9 @@ def film_estimate(U, G, W, k, Rx, Ry):
 # thin in h_c / h_min at M = 1.05e4 and 9 / 30 % at M = 3.6e4 against the Richardson estimate of levels 3-5. Every
 # level at a spacing of at most 0.38 film was within 2 % of the estimate at the nine contacts measured, M = 3000-36000
 # at k = 5.9 and 9 (docs/ehl_solver.md, Heavy contacts); 0.35 keeps a margin. FINEST_LEVEL bounds the choice:
-# 1281 x 1025 nodes, 20-60 s a heavy contact on one core.
+# 1281 x 1025 nodes, 20-60 s a heavy contact on one core. The rule is stated to 2 % on h_c and 5 % on h_min: at the
+# thin films of 1.3-3.2 GPa the level it picks (4 and, at the cap, 5) is -1.3 / -4.7 % and -1.4 / -2.8 % off the
+# Richardson estimate of levels 4-6 (docs/ehl_solver.md, Thin films)
 RESOLVING_SPACING = 0.35
 COARSEST_RESOLVING_LEVEL = 3  # level 2 is 1-8 % off on h_c even at light loads (docs/ehl_solver.md, Grid convergence)
 FINEST_LEVEL = 5

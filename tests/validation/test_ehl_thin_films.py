@@ -42,6 +42,37 @@ def test_thin_film_converges_on_the_default_grid_with_a_positive_film(name):
     assert abs(h_c - h_c_estimate) <= tolerance * h_c_estimate, f"{name}: h_c {h_c:.1f} nm, estimate {h_c_estimate}"
 
 
+# name: (the level film_level picks, Richardson estimate of h_c and of h_min from levels 4, 5, 6, nm)
+RESOLVED = {"circular": (5, 99.26, 21.10), "slender": (4, 100.17, 8.97)}
+
+
+@pytest.mark.parametrize("name", sorted(RESOLVED))
+def test_a_thin_film_is_solved_on_the_level_its_film_needs(name):
+    """The level models.ehl_numerical.film_level picks for these films (the coarsest from 3 whose X spacing is at most
+    0.35 times the estimated central film, up to level 5: level 5 for the circular contact, whose film wants level 6,
+    and level 4 for the slender one) is within 2 % on h_c and 5 % on h_min of the Richardson estimate of levels 4-6,
+    the accuracy the rule is stated with (docs/ehl_solver.md, Thin films: the level a thin film needs). Measured
+    (levels 3 / 4 / 5 / 6, nm):
+
+    | contact | h_c | order | estimate | h_min | order | estimate |
+    |---|---|---|---|---|---|---|
+    | circular | 84.25 / 95.27 / 97.90 / 98.80 | 1.55 | 99.26 | 11.53 / 18.28 / 20.51 / 20.97 | 2.27 | 21.10 |
+    | slender | 95.07 / 98.85 / 99.80 / 100.07 | 1.83 | 100.17 | 7.56 / 8.55 / 8.43 / 8.83 | - | 8.97 |
+
+    The picked level is -1.4 / -2.8 % (circular) and -1.3 / -4.7 % (slender) off. The slender's h_min is not monotone
+    over the levels (its side lobes' slow oscillation of 0.1-0.2 nm, and level 6 did not meet the criterion in 120
+    cycles), so its estimate takes order 2 (tests.cases.ehl_annexe_d.richardson); its level 4 is 3.2 % below level
+    6's value. Level 6 took 20 and 32 minutes and is not run here; the picked levels take 1-3 minutes (ehl_full)."""
+    Rx, Ry, load, u_e, *_ = CASES[name]
+    level, h_c_estimate, h_min_estimate = RESOLVED[name]
+    assert en.resolving_level(Rx, Ry, load, u_e, E_RED, ETA0, FLUID) == level
+    sol = en.solve_contact(Rx, Ry, load, u_e, E_RED, ETA0, FLUID, finest=None)
+    assert sol.converged, f"{name}: {sol.reason} (last change {sol.change:.1e} after {sol.cycles} cycles)"
+    h_c, h_min = sol.h_c * 1e9, sol.h_min * 1e9
+    assert abs(h_c / h_c_estimate - 1.0) <= 0.02, f"{name}: h_c {h_c:.2f} nm, estimate {h_c_estimate}"
+    assert abs(h_min / h_min_estimate - 1.0) <= 0.05, f"{name}: h_min {h_min:.2f} nm, estimate {h_min_estimate}"
+
+
 def test_a_table_node_whose_level_does_not_converge_is_solved_on_the_next_finer_one():
     """The film table's heaviest node of the B7214C's outer race (k = 5.86, iso_vg68_mineral at 329.6 K, 3.16 m/s,
     16.17 kN: M = 30000, L = 11.2, p_h ~ 4.2 GPa): on level 3 the side film closes (measured h_min 0.3 nm after 120
