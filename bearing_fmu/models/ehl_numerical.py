@@ -612,13 +612,16 @@ LINES_MIN_H = 0.1
 # 0.023) did not converge by points and converges by lines, as does the film 0.022
 FINE_GRID_LEVEL = 4
 FINE_LINES_MIN_H = 0.02
-# Moes L (with alpha* at p_h) from which the fine grids take these settings: 10, below LINES_MIN_L. Annexe D cases 34
-# and 35 (k = 5.03 and 3.96, L = 10.4 and 10.0, films 0.19 and 0.18 Hertz units) converge on level 3 by points, but
-# on level 4 they ran 120 cycles by points with injection and on level 5 diverged after two cuts of the damping;
-# with lines and full weighting they converge in 14 and 17-21 cycles, as does the B7214C's inner contact at M = 1000,
-# L = 10.4 (10 and 7 cycles; not on levels 4-5 before). Case 36 (L = 9.6) and every case of smaller L converge on
-# level 4 by points with injection, which they keep; their level 5 is not settled at cases 36-38 (L = 8.6-9.6), to
-# which no level rule sends a film (docs/ehl_solver.md, Fine grids)
+# Moes L* (with alpha* at p_h) from which the fine grids relax films of at least FINE_LINES_MIN_H by lines with the
+# full weighting: 10, below LINES_MIN_L. Annexe D cases 34 and 35 (k = 5.03 and 3.96, L* = 10.4 and 10.0, films 0.19
+# and 0.18 Hertz units) converge on level 3 by points, but on level 4 they ran 120 cycles by points with injection and
+# on level 5 diverged after two cuts of the damping; by lines with full weighting they converge in 14 and 17-21
+# cycles, as does the B7214C's inner contact at M = 1000, L = 12 (L* = 10.4; 10 and 7 cycles, not on levels 4-5
+# before). Thinner films keep points with injection below LINES_MIN_L: the 6208's inner film-table node at M = 21437,
+# L = 11.8 (L* = 10.2, film 0.0185) converges on level 4 that way (24 cycles) and ran 120 cycles by points with full
+# weighting. Case 36 (L* = 9.6) and every case of smaller L converge on level 4 by points with injection, which they
+# keep; their level 5 is not settled at cases 36-38 (L* = 8.6-9.6), to which no level rule sends a film
+# (docs/ehl_solver.md, Fine grids)
 FINE_MIN_L = 10.0
 # eps max(1/dX^2, 1/(k dY)^2) from which a Gauss-Seidel node is on a line: with 1 (every Gauss-Seidel node) the
 # heavy contacts at L = 18 diverged; 10 and 100 converge them and the light ones alike (k = 9, M = 30000 and
@@ -737,8 +740,8 @@ def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=3, coarsest=0, s
     regimes' where larger). Without settings, the relaxation runs along lines and takes the density's
     derivative where that box grows or the film is thick at large Moes L (LINES_MIN_L; SolverSettings.xi_lines,
     density_jac), on levels 4 and 5 from Moes L = FINE_MIN_L down to films of FINE_LINES_MIN_H, where the coarse
-    grids take the full-weighting pressure as well (FINE_GRID_LEVEL, SolverSettings.full_weighting), and by points
-    elsewhere."""
+    grids take the full-weighting pressure as well (FINE_GRID_LEVEL, SolverSettings.full_weighting; with the points
+    of thinner films from LINES_MIN_L), and by points elsewhere."""
     _, U, G, _, b, h_c_guess = contact_estimate(Rx, Ry, load, u_e, E_red, eta0, fluid)
     H_c = h_c_guess * Rx / b**2  # in Hertz units
     own_box = contact_box(H_c)
@@ -748,8 +751,10 @@ def solve_contact(Rx, Ry, load, u_e, E_red, eta0, fluid, finest=3, coarsest=0, s
     box = box or own_box
     if settings is None:
         L_star = G * (2.0 * U) ** 0.25  # Moes L with the fluid's alpha* at p_h
-        fine = finest >= FINE_GRID_LEVEL and L_star >= FINE_MIN_L
-        lines = thick or (H_c >= FINE_LINES_MIN_H if fine else (L_star >= LINES_MIN_L and H_c >= LINES_MIN_H))
+        fine_grid = finest >= FINE_GRID_LEVEL
+        fine_lines = fine_grid and L_star >= FINE_MIN_L and H_c >= FINE_LINES_MIN_H
+        fine = fine_lines or (fine_grid and L_star >= LINES_MIN_L)  # full weighting; by points only from LINES_MIN_L
+        lines = thick or fine_lines or (L_star >= LINES_MIN_L and H_c >= LINES_MIN_H)
         settings = SolverSettings(
             density_jac=lines,
             xi_lines=XI_LINES if lines else math.inf,

@@ -12,7 +12,8 @@ solver relaxes films of at least 0.02 Hertz units by lines and gives its coarse 
 (FINE_GRID_LEVEL, FINE_LINES_MIN_H); measured: levels 4 and 5 converge in 14 and 17 cycles (B7214C) and 15 and 16
 (6208), h_min steady from cycle to cycle.
 
-The same holds from Moes L = 10 (FINE_MIN_L), below the lines' threshold of level 3 (11): Annexe D cases 34 and 35
+The same holds for films of at least 0.02 from Moes L = 10 (FINE_MIN_L), below the lines' threshold of level 3 (11):
+Annexe D cases 34 and 35
 (k = 5.03 and 3.96, L with alpha* at p_h 10.4 and 10.0, films 0.19 and 0.18 Hertz units; tests.cases.ehl_annexe_d) and
 the B7214C's inner contact at M = 1000, L = 12 (L* = 10.4, 330.4 K, 3.16 m/s, 354 N, film 0.14) converge on level 3
 by points, but by points on level 4 cases 34 and 35 ran 120 cycles and the B7214C's contact 120 cycles, and on
@@ -71,3 +72,17 @@ def test_levels_4_and_5_converge_at_wide_contacts_of_large_L(name):
         h3, h4, h5 = (getattr(solutions[level], film) for level in (3, 4, 5))
         _, estimate = richardson([h3, h4, h5])
         assert abs(h4 / estimate - 1.0) <= TOLERANCE, f"{film}: level 4 {h4 / estimate - 1.0:+.2%} off the estimate"
+
+
+def test_a_thin_film_below_L_11_keeps_the_injected_coarse_pressure_on_level_4():
+    """The 6208's inner film-table node at M = 21437, L = 11.8 (L* = 10.2 with alpha* at p_h, 336.4 K, 3.16 m/s,
+    4426 N, film 0.0185 Hertz units, below the lines' 0.02): by points with the full-weighting coarse pressure its
+    level 4 ran 120 cycles (h_c 194.0 nm, h_min 175.1 nm) and the film table fell back to level 5, which did not
+    converge either; by points with injection, as the solver relaxes such films below L* = 11, level 4 converges in
+    24 cycles (193.7 / 175.2 nm). Asserted: level 4, the level the node's film needs, converges with a positive film
+    below h_c. About 20 s."""
+    args, _ = inner_contact("6208", 21437.045608412576, 11.811581611276479)
+    assert en.resolving_level(*args) == 4
+    solution = en.solve_contact(*args, finest=4)
+    assert solution.converged, (solution.reason, solution.cycles)
+    assert 0.0 < solution.h_min < solution.h_c
