@@ -20,6 +20,7 @@ import numpy as np
 from bearing_fmu.kernels import contact_outputs as ck
 from bearing_fmu.kernels import jones_harris, radial_bearing
 from bearing_fmu.kernels.capacitance import CAP_ON
+from bearing_fmu.kernels.torque import TL_SIZE
 from bearing_fmu.models.analytic import AnalyticModel
 from bearing_fmu.models.quasi_static import DOF_NAMES, LOAD_NAMES, QuasiStaticModel
 from bearing_fmu.scene import Scene
@@ -98,8 +99,8 @@ def quasi_static_steps(label, bearing, drive, rpm, inputs, gyroscopic):
     for codes in VARIANTS.values():
         qs, cp = m.qs.copy(), m.cp.copy()
         cp[ck.CP_CAPACITANCE_BLOCK + CAP_ON], cp[ck.CP_TORQUE], qs[jones_harris.QS_STIFFNESS] = codes
-        work = (np.zeros(5), np.zeros((2, Z)), np.zeros(5), np.zeros((5, 5)), np.zeros((jones_harris.BQ_SIZE, Z)))
-        outs = (np.zeros(ck.CO_SIZE), np.zeros((ck.PC_SIZE, Z)), np.zeros(4))
+        work = (np.zeros(5), np.zeros_like(X0), np.zeros(5), np.zeros((5, 5)), np.zeros((jones_harris.BQ_SIZE, Z)))
+        outs = (np.zeros(ck.CO_SIZE), np.zeros((ck.PC_SIZE, Z)), np.zeros(TL_SIZE))
         args = (F_applied, m.control, d0, X0, qs, omega, T_OIL, cp, m.lubricant.array, *work, *outs)
         assert _repeat_step(1, *args) == 0, f"{label}: solver failed"
         fns.append(lambda n, args=args: _repeat_step(n, *args))
