@@ -40,12 +40,15 @@ def cases():
     return [{key: float(v) for key, v in r.items()} | {"n": i + 1} for i, r in enumerate(rows)]
 
 
+def contact_args(case):
+    """solve_contact's arguments (Rx, Ry, load, u_e, E', eta0, fluid; SI) of a case (a row of cases())."""
+    return case["Rx_mm"] * 1e-3, case["Ry_mm"] * 1e-3, case["w_N"], case["ue_m_s"], E_RED, ETA0, FLUID
+
+
 def solve(case, level=LEVEL):
     """(solution, wall time in s) of a case (a row of cases()) on the grid of the level."""
     t = time.perf_counter()
-    sol = en.solve_contact(
-        case["Rx_mm"] * 1e-3, case["Ry_mm"] * 1e-3, case["w_N"], case["ue_m_s"], E_RED, ETA0, FLUID, finest=level
-    )
+    sol = en.solve_contact(*contact_args(case), finest=level)
     return sol, time.perf_counter() - t
 
 

@@ -51,9 +51,7 @@ FINE_CONTACTS = {f"{b}-M{M:g}-L{L:g}": (b, M, L) for b, M, L in CONTACTS[:2] + C
 def contact_args(contact):
     """solve_contact's arguments of a bearing contact (bearing, M, L) or an Annexe D case (its number)."""
     if isinstance(contact, int):
-        case = ehl_annexe_d.CASES[contact]
-        return (case["Rx_mm"] * 1e-3, case["Ry_mm"] * 1e-3, case["w_N"], case["ue_m_s"], ehl_annexe_d.E_RED,
-                ehl_annexe_d.ETA0, ehl_annexe_d.FLUID)  # fmt: skip
+        return ehl_annexe_d.contact_args(ehl_annexe_d.CASES[contact])
     return inner_contact(*contact)[0]
 
 
