@@ -16,9 +16,8 @@ report's reference table renders as well); the whole table is marked slow (tests
 
 import pytest
 
-from bearing_fmu.models import ehl_numerical as en
 from tests.cases import ehl_annexe_d, outside
-from tests.cases.ehl_annexe_d import E_RED, ETA0, FLUID, cases, richardson
+from tests.cases.ehl_annexe_d import cases, richardson
 
 CASES = {c["n"]: c for c in cases()}
 
@@ -68,10 +67,7 @@ def test_grid_convergence_is_second_order_and_level_3_within_2_percent(n):
     (the default grid's discretisation error), and that estimate within 5 % of the thesis, whose own mesh
     error is of that order."""
     c = CASES[n]
-    sols = [
-        en.solve_contact(c["Rx_mm"] * 1e-3, c["Ry_mm"] * 1e-3, c["w_N"], c["ue_m_s"], E_RED, ETA0, FLUID, finest=l)
-        for l in (1, 2, 3)
-    ]
+    sols = [ehl_annexe_d.solve(c, level=l)[0] for l in (1, 2, 3)]
     assert all(s.converged for s in sols)
     for attr, want in (("h_c", c["hc_nm"]), ("h_min", c["hm_nm"])):
         h = [getattr(s, attr) * 1e9 for s in sols]
