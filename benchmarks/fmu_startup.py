@@ -78,8 +78,8 @@ def steps_batched():
 state = fmu.getFMUstate()
 # the kernel calls of these steps, recorded once from the same state, then replayed alone
 sys.path.append(sys.argv[5])
-from benchmarks.kernel_replay import BEARING_KERNEL_MODULES, KernelRecorder, replay_time
-with KernelRecorder(BEARING_KERNEL_MODULES) as recorder:
+from benchmarks.kernel_replay import BEARING_PACKAGES, KernelRecorder, replay_time
+with KernelRecorder(BEARING_PACKAGES) as recorder:
     steps()
 # rounds of (fmpy steps, batched steps, replay), each from the same state: the three draw on the same
 # stretch of time (this shared machine's speed drifts by up to 1.5x within a minute); medians over rounds

@@ -1,26 +1,26 @@
 """The compiled-kernel floor of a run: record every kernel call a run makes, then replay the calls alone.
 
-`KernelRecorder(modules)` wraps each numba dispatcher of the given modules for the duration of a `with` block and
-records every call with copies of its array arguments taken before the call (the warm-start state a kernel reads
-is part of its work); facades call kernels through their module (``jones_harris.solve_quasistatic``), so wrapping the
-module attribute sees every call they make. `replay_time(calls)` repeats exactly those calls, in order, on fresh
+`KernelRecorder(packages)` wraps each numba dispatcher in the namespace of every loaded module of the given packages
+for the duration of a `with` block and records every call with copies of its array arguments taken before the call
+(the warm-start state a kernel reads is part of its work). Facades call kernels through their module
+(``jones_harris.solve_quasistatic``) or by a name imported into their own module (``lubricant_state``); wrapping
+every module's attributes sees both, and the modules are looked up among those loaded, so an FMU's own copy of the
+package (what it runs) is the one recorded. `replay_time(calls)` repeats exactly those calls, in order, on fresh
 copies: what the run would cost with no Python between the kernels (no facade, no FMI, no master). Its default
 clock is this process's CPU time, which other processes on shared cores do not lengthen.
 """
 
 import collections
-import importlib
 import statistics
+import sys
 import time
 
 import numpy as np
 from numba.core.dispatcher import Dispatcher
 
-# modules whose kernels a co-simulation step calls (the facades' and the thermal model's entry points)
-BEARING_KERNEL_MODULES = tuple(
-    f"bearing_fmu.kernels.{m}" for m in ("jones_harris", "contacts", "bearing_outputs", "radial_bearing")
-)
-KERNEL_MODULES = (*BEARING_KERNEL_MODULES, "spindle.thermal.network")
+# packages whose kernels a co-simulation step calls: the bearing model's, and with the spindle's thermal model
+BEARING_PACKAGES = ("bearing_fmu",)
+PRODUCT_PACKAGES = (*BEARING_PACKAGES, "spindle")
 
 
 def _snapshot(args):
@@ -28,10 +28,18 @@ def _snapshot(args):
 
 
 class KernelRecorder:
-    """Context manager recording (dispatcher, argument copies) of every call to a kernel of `modules`."""
+    """Context manager recording (dispatcher, argument copies) of every call to a kernel reached through a loaded
+    module of `packages` (names of top-level packages)."""
 
-    def __init__(self, modules=KERNEL_MODULES):
-        self.modules, self.calls, self._saved = [importlib.import_module(name) for name in modules], [], []
+    def __init__(self, packages=PRODUCT_PACKAGES):
+        self.calls, self._saved = [], []
+        self.modules = [
+            module
+            for name, module in list(sys.modules.items())
+            if module is not None and any(name == p or name.startswith(p + ".") for p in packages)
+        ]
+        if not self.modules:
+            raise ValueError(f"no module of {packages} is loaded: nothing to record")
 
     def __enter__(self):
         calls = self.calls
