@@ -536,7 +536,7 @@ def _add_film_commands(sub):
         type=_level,
         default=None,
         help="grid level of the numerical solver, 0-5 (default: the level each contact's film needs, 3-5, within "
-        "~2 %% of the grid-converged film; docs/ehl_solver.md)",
+        "~2 %% of the grid-converged film, or the next finer where that one does not converge; docs/ehl_solver.md)",
     )
     p.add_argument("--plot", default="film_map.png", metavar="PNG",
                    help="the film map's figure, written when one input is a range (default film_map.png)")  # fmt: skip

@@ -31,6 +31,7 @@ SLOW = {  # test file -> test function names (every parametrisation of them)
         "test_fixed_10000_runs_away_and_stops_with_a_message",
     },
     "tests/cosim/test_sweep.py": {"test_dask_sweep_equals_sequential_table"},
+    "tests/unit/test_film_check.py": {"test_a_contact_its_level_does_not_converge_is_solved_on_the_next_finer"},
     "tests/cosim/test_shaft_transient_run.py": {"test_the_time_domain_run_settles_on_the_static_equilibrium"},
     "tests/cosim/test_libcosim_master.py": {"test_fresh_processes_exit_0"},
     "tests/cosim/test_teardown.py": {"test_fresh_processes_exit_0_through_the_normal_teardown"},

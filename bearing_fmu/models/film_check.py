@@ -23,6 +23,7 @@ from bearing_fmu.kernels import ehl_solver as es
 from bearing_fmu.kernels.lubricant import lubricant_state
 
 from . import ehl_numerical as en
+from .film_table_build import solve_numerical
 from .quasi_static import QuasiStaticModel
 
 FORMULAS = {
@@ -62,7 +63,7 @@ class ContactFilm:
     converged: bool = False
     reason: str = ""  # why the numerical film is not converged ("" when it is)
     level: int = 0  # grid level of the numerical solve (models.ehl_numerical.grid_hierarchy)
-    seconds: float = 0.0  # wall time of the numerical solve (s)
+    seconds: float = 0.0  # wall time of the numerical solve (s), both levels where the first did not converge
 
 
 def _film(h_c, h_min, sigma):
@@ -75,8 +76,9 @@ def film_check(bearing, lubricant, omega, loads, T_oil=313.15, finest=None):
     omega (rad/s), loads = dict of the quasi-static inputs (F_x, F_y, F_z in N, M_x, M_y in N.m) and oil
     temperature T_oil (K), each with its film by every formula and by the numerical solver on grid level `finest`,
     by default the level each contact's film needs (models.ehl_numerical.film_level, docs/ehl_solver.md: within
-    ~2 % of the grid-converged film). Returns [ContactFilm inner, ContactFilm outer]; a race without a loaded
-    contact is left out."""
+    ~2 % of the grid-converged film), or the next finer where that one does not converge, as the film table's nodes
+    are solved (models.film_table_build.solve_numerical). Returns [ContactFilm inner, ContactFilm outer]; a race
+    without a loaded contact is left out."""
     model = QuasiStaticModel(bearing, lubricant)
     model.evaluate(omega=omega, T_oil=T_oil, **loads)
     eta, xi, _ = lubricant_state(T_oil, model.lubricant.array)
@@ -97,9 +99,11 @@ def film_check(bearing, lubricant, omega, loads, T_oil=313.15, finest=None):
         check = ContactFilm(name, ball, Q, u, Rx, Ry, k, 0.0, sigma)
         for formula, code in FORMULAS.items():
             check.formulas[formula] = _film(*ehl.film_thickness(code, eta, xi, E_red, u, Q, Rx, Ry, k), sigma)
-        check.level = en.resolving_level(Rx, Ry, Q, u, E_red, eta, fluid) if finest is None else finest
         start = time.perf_counter()
-        solution = en.solve_contact(Rx, Ry, Q, u, E_red, eta, fluid, finest=check.level)
+        if finest is None:  # the level the film needs, or the next finer where that one does not converge
+            solution, check.level = solve_numerical(Rx, Ry, Q, u, E_red, eta, xi)
+        else:
+            solution, check.level = en.solve_contact(Rx, Ry, Q, u, E_red, eta, fluid, finest=finest), finest
         check.seconds = time.perf_counter() - start
         check.p_h = solution.grid.p_h
         # a film that closes (h <= 0) is no solution: the grid does not resolve this contact's film

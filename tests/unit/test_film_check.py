@@ -121,3 +121,16 @@ def test_a_film_map_over_speed_prints_every_point_and_plots(capsys, tmp_path):
     assert len(lines) == 4 and rc == (5 if any("NOT converged" in line for line in lines) else 0)
     assert all(" level 1: numerical h_c " in line for line in lines)
     assert png.stat().st_size > 10000
+
+
+def test_a_contact_its_level_does_not_converge_is_solved_on_the_next_finer():
+    """The 6208 at 3 kN radial and 100 rad/s with guessasma_oil (the first operating point of
+    docs/reports/film_check.md): its inner contact (M = 8000, L = 16.8, a film of 0.048 Hertz units, relaxed by
+    points) gets level 3 by its film, where it ran 120 cycles without meeting the criterion while its neighbours at
+    +-3 % of the speed converge in 9-59 (docs/ehl_solver.md, Operating box). By default the check then solves it on
+    the next finer level, as the film table's nodes are solved, and reports that level and a converged film."""
+    inner, outer = film_check("6208", "guessasma_oil", 100.0, {"F_y": 3000.0})
+    assert inner.converged and inner.reason == "", inner.reason
+    assert inner.level == 4
+    assert 0.0 < inner.numerical.h_min <= inner.numerical.h_c
+    assert outer.converged and outer.level == 3

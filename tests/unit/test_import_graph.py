@@ -86,7 +86,7 @@ def test_the_product_has_no_import_cycle():
 
 TESTS = ROOT / "tests"
 # the tests of the report's own code: they test benchmarks/, so they import it
-REPORT_TESTS = {"tests/unit/test_report.py", "tests/unit/test_reference_table.py"}
+REPORT_TESTS = {"tests/unit/test_report.py", "tests/unit/test_reference_table.py", "tests/unit/test_kernel_replay.py"}
 
 
 def imports_benchmarks(source):
