@@ -34,13 +34,17 @@ def _point(bearing, omega, loads, race):
 
 
 def row(point, c):
-    """A table row of one contact, and its metrics (each formula's h_c and h_min error against the numerical)."""
+    """A table row of one contact, and its metrics (each formula's h_c and h_min error against the numerical; left
+    out where the numerical film did not converge, as `spindle film` leaves them out)."""
     n = c.numerical
     if n is None:
         return [point, c.load, None, None, None, "no positive film on the solver's grid"] + [None] * 4, []
     numerical = f"{n.h_c * 1e9:.1f} / {n.h_min * 1e9:.1f}, {n.lam:.2f}, {n.regime} (level {c.level})"
-    cells = [point, c.load, c.u_e, c.k, c.p_h / 1e9, numerical + ("" if c.converged else " (not converged)")]
+    numerical += "" if c.converged else f" (not converged: {c.reason})"
+    cells = [point, c.load, c.u_e, c.k, c.p_h / 1e9, numerical]
     metrics = []
+    if not c.converged:
+        return cells + ["left out"] * len(c.formulas) + [c.seconds], metrics
     for name, f in c.formulas.items():
         cells.append(f"{100 * (f.h_c / n.h_c - 1):+.1f}, {100 * (f.h_min / n.h_min - 1):+.1f}, {f.regime}")
         metrics += [metric(f"{point}: {name} {q}", getattr(f, q) / getattr(n, q) - 1.0, "1", "error") for q in FILMS]
