@@ -1,5 +1,6 @@
 """The report assembler (benchmarks/report.py): targets beside medians judged with the run's noise, the not-met
-ones named, the stability table from the cases' docstrings, and the run-to-run comparison."""
+ones named, the stability table from the cases' docstrings, and the run-to-run comparison; and the film check page's
+rows of an unconverged film (benchmarks/film_check.py)."""
 
 import json
 
@@ -116,3 +117,21 @@ def test_stability_table_quotes_each_cases_outcome():
     row = next(line for line in lines if function in line)
     assert row.startswith(f"| {case} | {fidelities} | ") and "passed (0.5 s)" in row
     assert report.outcome_of(path, function) in row
+
+
+def test_the_film_check_page_leaves_the_differences_of_an_unconverged_film_out():
+    """benchmarks/film_check.row: a converged contact gets each formula's differences (+10.0, +6.7 %) and their
+    metrics; an unconverged one gets the solver's reason, "left out" for every formula and no metric, as
+    `spindle film` prints it (docs/ehl_solver.md, The film at your contacts)."""
+    from bearing_fmu.models.film_check import ContactFilm, _film
+    from benchmarks import film_check
+
+    c = ContactFilm("inner", 0, 1000.0, 5.0, 5e-3, 0.1, 9.0, 1.5e9, 1e-7, converged=True)
+    c.formulas["hamrock_dowson"] = _film(2.2e-7, 1.6e-7, 1e-7)
+    c.numerical = _film(2.0e-7, 1.5e-7, 1e-7)
+    cells, metrics = film_check.row("6208, inner", c)
+    assert cells[6] == "+10.0, +6.7, mixed" and len(metrics) == 2
+    c.converged, c.reason = False, "120 cycles without meeting the criterion"
+    cells, metrics = film_check.row("6208, inner", c)
+    assert cells[5].endswith("(not converged: 120 cycles without meeting the criterion)")
+    assert cells[6] == "left out" and metrics == []
