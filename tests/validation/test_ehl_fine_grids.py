@@ -13,12 +13,12 @@ solver relaxes films of at least 0.02 Hertz units by lines and gives its coarse 
 (6208), h_min steady from cycle to cycle.
 
 The same holds for films of at least 0.02 from Moes L = 10 (FINE_MIN_L), below the lines' threshold of level 3 (11):
-Annexe D cases 34 and 35
-(k = 5.03 and 3.96, L with alpha* at p_h 10.4 and 10.0, films 0.19 and 0.18 Hertz units; tests.cases.ehl_annexe_d) and
-the B7214C's inner contact at M = 1000, L = 12 (L* = 10.4, 330.4 K, 3.16 m/s, 354 N, film 0.14) converge on level 3
-by points, but by points on level 4 cases 34 and 35 ran 120 cycles and the B7214C's contact 120 cycles, and on
-level 5 the cases diverged after two cuts of the damping (the contact stopped after the cuts); with the fine grids'
-settings levels 4 and 5 converge in 14 / 17 (case 34), 14 / 21 (case 35) and 10 / 7 cycles.
+Annexe D cases 34 and 35 (k = 5.03 and 3.96, L with alpha* at p_h 10.4 and 10.0, films 0.19 and 0.18 Hertz units;
+tests.cases.ehl_annexe_d) and the B7214C's inner contact at M = 1000, L = 12 (L* = 10.4, 330.4 K, 3.16 m/s, 354 N,
+film 0.14) converge on level 3 by points, but by points on level 4 cases 34 and 35 ran 120 cycles and the B7214C's
+contact 120 cycles, and on level 5 the cases diverged after two cuts of the damping (the contact stopped after the
+cuts); with the fine grids' settings levels 4 and 5 converge in 14 / 17 (case 34), 14 / 21 (case 35) and 10 / 7
+cycles.
 
 Asserted: levels 3, 4 and 5 converge by the solver's criterion with a positive film below h_c; on levels 4 and 5 no
 cycle swings, i.e. the spread of h_c and h_min over the last four cycles (the criterion's measure, Solution.history)
